@@ -1,0 +1,545 @@
+"""The Autolev workspace: names, their right-hand sides, settings and responses.
+
+A generated module creates one :class:`Workspace` and calls it once per Autolev
+statement.  The workspace reproduces how Autolev treats names:
+
+* Declared constants are real sympy ``Symbol`` objects, variables and specified
+  quantities are functions of time (``dynamicsymbols``), both named exactly as
+  Autolev prints them (``QA``, ``U1``).
+* An assigned scalar quantity (``E = ...``) is a ``Symbol`` with a right-hand
+  side (RHS).  Later expressions refer to the symbol, as Autolev's responses do;
+  ``D``, ``Dt``, ``Evaluate``, ``Taylor``, ``Solve`` and ``Explicit`` see
+  through symbols to their RHS.  ``AutoRHS`` decides which RHS are substituted
+  when an expression is assigned (see ``docs/semantics.md``).
+* Matrices, vectors and dyadics are stored as values.
+
+>>> ws = Workspace("demo.al")
+>>> A, B = ws.constants("A", "B")
+>>> X = ws.assign("X", 4 * (A + B) - 3 * (A - B), line=2)
+>>> ws["X"]
+A + 7*B
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+from sympy.physics.mechanics import dynamicsymbols
+
+from .names import Key, parse_key
+
+__all__ = ["Workspace", "Settings", "Response", "t"]
+
+#: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
+t = dynamicsymbols._t
+
+_ON_OFF = {"ON": True, "OFF": False}
+
+
+@dataclass
+class Settings:
+    """Autolev settings (tutorial §6.5 and the Summary's "Default settings")."""
+
+    digits: int = 7
+    degrees: bool = False
+    autorhs: str = "ON"  # OFF | ON | ALL
+    factoring: bool = True
+    autoepsilon: float = 1.0e-7
+    complex: str = "OFF"  # OFF | ON | AUTO
+    autoz: bool = False
+    overwrite: bool = True
+    autoexpress: bool = False
+
+    def set(self, name: str, value: Any = None) -> None:
+        """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
+        key = name.lower()
+        word = str(value).upper() if value is not None else "ON"
+        if key == "digits":
+            n = int(value)
+            if not 1 <= n <= 17:
+                raise ValueError(f"Digits must be between 1 and 17, not {n}")
+            self.digits = n
+        elif key == "autoepsilon":
+            self.autoepsilon = float(value)
+        elif key == "autorhs":
+            if word not in ("ON", "OFF", "ALL"):
+                raise ValueError(f"AutoRHS takes ON, OFF or ALL, not {value}")
+            self.autorhs = word
+        elif key == "complex":
+            if word not in ("ON", "OFF", "AUTO"):
+                raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
+            self.complex = word
+        elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
+            if word not in _ON_OFF:
+                raise ValueError(f"{name} takes ON or OFF, not {value}")
+            setattr(self, key, _ON_OFF[word])
+        else:
+            raise ValueError(f"unknown setting {name}")
+
+
+@dataclass(frozen=True)
+class Response:
+    """One ``-> (n) NAME = value`` line, kept symbolic until printed."""
+
+    line: int | None
+    label: str
+    value: Any
+    digits: int
+
+
+@dataclass
+class _Entry:
+    """What a name is: ``kind`` and the sympy/mechanics object standing for it."""
+
+    kind: str
+    obj: Any
+    sign: str | None = None
+    order: int = 0  # highest declared derivative for variables
+    extra: dict = field(default_factory=dict)
+
+
+class Workspace(Mapping):
+    """Names, values and responses of one Autolev script.
+
+    The workspace is a read-only mapping from Autolev spellings to current
+    values, e.g. ``ws["ZERO[2]"]`` or ``ws["STRETCH'"]`` (case-insensitive).
+    """
+
+    def __init__(self, filename: str = "<autolev>") -> None:
+        self.filename = filename
+        self.settings = Settings()
+        self.responses: list[Response] = []
+        self._names: dict[str, _Entry] = {}
+        self._rhs: dict[sp.Basic, Any] = {}
+        self._values: dict[str, Any] = {}
+        self._entries_by_obj: dict[sp.Basic, str] = {}
+        self._declare("T", "variable", t)
+        self._declare("PI", "constant", sp.pi)
+        self._declare("I", "imaginary", sp.I)
+
+    # ------------------------------------------------------------ mapping API
+
+    def __getitem__(self, name: str) -> Any:
+        return self.value(name)
+
+    def __iter__(self) -> Iterator[str]:
+        seen = []
+        for name, entry in self._names.items():
+            if name in ("T", "PI", "I"):
+                continue
+            seen.append(name)
+            if entry.kind == "variable":
+                for k in range(1, entry.order + 1):
+                    if self._rhs_key(name, k) in self._rhs:
+                        seen.append(name + "'" * k)
+        seen.extend(n for n in self._values if n not in self._names)
+        return iter(seen)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+    def __contains__(self, name: object) -> bool:
+        if not isinstance(name, str):
+            return False
+        try:
+            self.value(name)
+        except KeyError:
+            return False
+        return True
+
+    # ----------------------------------------------------------- declarations
+
+    def _declare(self, name: str, kind: str, obj: Any, **kw: Any) -> Any:
+        key = name.upper()
+        self._names[key] = _Entry(kind, obj, **kw)
+        if isinstance(obj, sp.Basic):
+            self._entries_by_obj[obj] = key
+        return obj
+
+    def _assumptions(self, sign: str | None) -> dict[str, bool]:
+        if self.settings.complex == "ON":
+            return {}
+        if sign == "+":
+            return {"nonnegative": True}
+        if sign == "-":
+            return {"nonpositive": True}
+        return {"real": True}
+
+    def constants(self, *names: str) -> Any:
+        """``Constants A, B+, C-``: real symbols (``+`` non-negative, ``-``
+        non-positive).  Returns one symbol or a tuple, in order."""
+        out = []
+        for spec in names:
+            name, sign = _split_sign(spec)
+            sym = sp.Symbol(name.upper(), **self._assumptions(sign))
+            out.append(self._declare(name, "constant", sym, sign=sign))
+        return _one_or_tuple(out)
+
+    def variables(self, *names: str) -> Any:
+        """``Variables X', Y''``: functions of time; primes give the order."""
+        return self._time_functions(names, "variable")
+
+    def specified(self, *names: str) -> Any:
+        """``Specified PHI``: a function of time given by the user."""
+        return self._time_functions(names, "specified")
+
+    def _time_functions(self, names: Iterable[str], kind: str) -> Any:
+        out = []
+        for spec in names:
+            base = spec.rstrip("'")
+            order = len(spec) - len(base)
+            func = dynamicsymbols(base.upper(), **self._assumptions(None))
+            out.append(self._declare(base, kind, func, order=order))
+        return _one_or_tuple(out)
+
+    def imaginary(self, name: str) -> Any:
+        """``Imaginary j``: ``j`` is the imaginary unit."""
+        return self._declare(name, "imaginary", sp.I)
+
+    # -------------------------------------------------------------- lookups
+
+    def kind(self, name: str) -> str | None:
+        """The kind of a declared or assigned name, or None."""
+        entry = self._names.get(parse_key(name).name)
+        if entry is not None:
+            return entry.kind
+        if parse_key(name).name in self._values:
+            return "value"
+        return None
+
+    def symbol(self, name: str) -> Any:
+        """The sympy object standing for ``name`` (``"X'"`` -> ``X(t).diff(t)``)."""
+        key = parse_key(name)
+        entry = self._names.get(key.name)
+        if entry is None:
+            raise KeyError(f"{name!r} is not declared")
+        obj = entry.obj
+        if key.primes:
+            obj = sp.Derivative(obj, t, key.primes) if obj is not t else None
+            if obj is None:
+                raise KeyError(f"{name!r}: T has no derivatives")
+        return obj
+
+    def value(self, name: str) -> Any:
+        """The current value of an Autolev name, element or derivative."""
+        key = parse_key(name)
+        if key.name in self._values:
+            val = self._values[key.name]
+            if key.index:
+                return _element(val, key.index, name)
+            if key.primes:
+                raise KeyError(f"{name!r}: only scalars have derivatives here")
+            return val
+        entry = self._names.get(key.name)
+        if entry is None:
+            raise KeyError(f"{name!r} is not defined")
+        if key.index:
+            raise KeyError(f"{name!r}: {key.name} is not a matrix")
+        rhs_key = self._rhs_key(key.name, key.primes)
+        if rhs_key in self._rhs:
+            return self._rhs[rhs_key]
+        return self.symbol(name)
+
+    def _rhs_key(self, name: str, primes: int = 0) -> Any:
+        obj = self._names[name].obj
+        return sp.Derivative(obj, t, primes) if primes else obj
+
+    def rhs(self, x: Any) -> Any:
+        """``Rhs(y)``: the right-hand side of a name (or ``y`` itself)."""
+        if isinstance(x, str):
+            return self.value(x)
+        return self._rhs.get(x, x)
+
+    def val(self, x: Any) -> Any:
+        """The value behind a quantity symbol (used by dual functions)."""
+        if isinstance(x, sp.Basic) and x in self._rhs:
+            return self._rhs[x]
+        return x
+
+    # ------------------------------------------------------------ resolution
+
+    def explicit(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
+        """Substitute right-hand sides until none is left (``Explicit``).
+
+        Objects in ``keep`` are left alone, so ``D(y, x)`` can see through every
+        name except ``x`` itself.
+        """
+        keep = {sp.sympify(k) for k in keep}
+        table = {k: v for k, v in self._rhs.items() if k not in keep}
+        if not table:
+            return expr
+        for _ in range(100):
+            new = _xreplace(expr, table)
+            if _same(new, expr):
+                break
+            expr = new
+        else:  # pragma: no cover - cycles are prevented by assign()
+            raise RecursionError("right-hand sides refer to each other in a cycle")
+        return _doit_derivatives(expr)
+
+    # ------------------------------------------------------------ assignment
+
+    def assign(self, target: str, value: Any, *, line: int | None = None) -> Any:
+        """``target = value``: store, respond, and return the Python binding.
+
+        Scalar quantities bind to their symbol; matrices, vectors and dyadics
+        bind to their value.  Settings (AutoRHS, Degrees, AutoEpsilon,
+        Factoring) shape the stored value as in Autolev.
+        """
+        return self._store(target, value, line=line, rearrange=self.settings.factoring)
+
+    def update(self, target: str, value: Any, *, line: int | None = None) -> Any:
+        """Like :meth:`assign` but without automatic factoring (dual functions)."""
+        return self._store(target, value, line=line, rearrange=False)
+
+    def assign_all(
+        self, targets: Iterable[str], values: Iterable[Any], *, line: int | None = None
+    ) -> Any:
+        """Assign several results (``Solve``, ``Eig(M, L, V)``); returns bindings."""
+        targets = list(targets)
+        values = list(values)
+        if len(targets) != len(values):
+            raise ValueError(f"{len(targets)} names for {len(values)} values")
+        out = [self.assign(n, v, line=line) for n, v in zip(targets, values, strict=True)]
+        return _one_or_tuple(out)
+
+    def _store(self, target: str, value: Any, *, line: int | None, rearrange: bool) -> Any:
+        key = parse_key(target)
+        value = self.normalize(value, rearrange=rearrange)
+        if key.index:
+            binding = self._store_element(key, value)
+            label = str(Key(key.name, 0, key.index))
+        elif key.name.endswith(">") or _is_nonscalar(value):
+            if key.primes:
+                raise ValueError(f"cannot assign to derivative {target} of a non-scalar")
+            old = self._names.get(key.name)
+            if old is not None and old.kind == "quantity":
+                del self._names[key.name]
+            self._values[key.name] = value
+            binding = value
+            label = key.name
+        else:
+            binding = self._store_scalar(key, value)
+            label = key.name + "'" * key.primes
+        self.respond(label, self.value(label), line=line)
+        return binding
+
+    def _store_scalar(self, key: Key, value: Any) -> Any:
+        entry = self._names.get(key.name)
+        self._values.pop(key.name, None)
+        if entry is None or entry.kind == "quantity":
+            if key.primes:
+                raise ValueError(f"{key.name} is not a variable; cannot assign {key}")
+            if entry is None:
+                sym = sp.Symbol(key.name, **self._assumptions(None))
+                entry = _Entry("quantity", sym)
+                self._names[key.name] = entry
+                self._entries_by_obj[sym] = key.name
+            sym = entry.obj
+            old = self._rhs.get(sym)
+            if old is not None and isinstance(value, sp.Basic) and value.has(sym):
+                value = value.xreplace({sym: old})
+            elif isinstance(value, sp.Basic) and value.has(sym):
+                raise ValueError(f"{key.name} is defined in terms of itself")
+            self._rhs[sym] = value
+            return sym
+        if entry.kind in ("frame", "body", "particle", "point", "newtonian"):
+            raise ValueError(f"{key.name} is a {entry.kind}, not a scalar")
+        rkey = self._rhs_key(key.name, key.primes)
+        if isinstance(value, sp.Basic) and value.has(rkey) and rkey in self._rhs:
+            value = value.xreplace({rkey: self._rhs[rkey]})
+        if key.primes > entry.order:
+            entry.order = key.primes
+        self._rhs[rkey] = value
+        return self.symbol(str(key))
+
+    def _store_element(self, key: Key, value: Any) -> Any:
+        if _is_nonscalar(value) and not isinstance(value, sp.Basic | int | float):
+            pass
+        current = self._values.get(key.name)
+        if current is None:
+            current = sp.zeros(*_shape_for(key.index))
+        elif not isinstance(current, sp.MatrixBase):
+            raise ValueError(f"{key.name} is not a matrix")
+        current = sp.Matrix(current)
+        if len(key.index) == 1:
+            (i,) = key.index
+            if current.cols == 1 or current.rows == 0:
+                if i > current.rows:
+                    current = current.col_join(sp.zeros(i - current.rows, max(current.cols, 1)))
+                current[i - 1, 0] = value
+            elif current.rows == 1:
+                if i > current.cols:
+                    current = current.row_join(sp.zeros(1, i - current.cols))
+                current[0, i - 1] = value
+            else:
+                raise ValueError(f"{key.name} has {current.rows} rows and {current.cols}"
+                                 " columns; use two indices")
+        else:
+            i, j = key.index
+            if i > current.rows:
+                current = current.col_join(sp.zeros(i - current.rows, current.cols))
+            if j > current.cols:
+                current = current.row_join(sp.zeros(current.rows, j - current.cols))
+            current[i - 1, j - 1] = value
+        old = self._names.get(key.name)
+        if old is not None and old.kind == "quantity":
+            del self._names[key.name]
+        self._values[key.name] = current
+        return current
+
+    # ---------------------------------------------------------- normalizing
+
+    def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
+        """Apply Autolev's automatic treatment of a new value."""
+        if isinstance(value, list | tuple):
+            value = sp.Matrix(value)
+        if isinstance(value, sp.MatrixBase):
+            return sp.Matrix(value).applyfunc(lambda e: self.normalize(e, rearrange=rearrange))
+        if not isinstance(value, sp.Basic):
+            try:
+                value = sp.sympify(value)
+            except (sp.SympifyError, TypeError):
+                return value
+        if not isinstance(value, sp.Expr):
+            return value
+        value = self._numbers(value)
+        mode = self.settings.autorhs
+        if mode == "ALL":
+            value = self.explicit(value)
+        elif mode == "ON":
+            simple = {k: v for k, v in self._rhs.items() if _is_simple(v)}
+            if simple:
+                value = _xreplace(value, simple)
+        if rearrange and self.settings.factoring and value.is_Add:
+            value = sp.factor_terms(value)
+        return value
+
+    def _numbers(self, value: sp.Expr) -> sp.Expr:
+        floats = value.atoms(sp.Float)
+        if not floats:
+            return value
+        eps = self.settings.autoepsilon
+        table = {}
+        for f in floats:
+            nearest = round(float(f))
+            if abs(float(f) - nearest) <= eps:
+                table[f] = sp.Integer(nearest)
+            else:
+                text = sp.sstr(f, full_prec=False)
+                digits = text.lstrip("-").replace(".", "").lstrip("0").split("e")[0]
+                if len(digits.rstrip("0")) <= 12:
+                    table[f] = sp.Rational(text)
+        return value.xreplace(table) if table else value
+
+    # ------------------------------------------------------------ responses
+
+    def respond(self, label: str, value: Any, *, line: int | None = None) -> None:
+        """Record a ``-> (n) LABEL = value`` response (printed by ``transcript``)."""
+        self.responses.append(Response(line, label.upper(), value, self.settings.digits))
+
+    def set(self, name: str, value: Any = None) -> None:
+        """A settings line: ``Digits 7``, ``AutoRHS ALL``, ``Degrees ON``."""
+        self.settings.set(name, value)
+
+
+# ---------------------------------------------------------------- helpers
+
+
+def _split_sign(spec: str) -> tuple[str, str | None]:
+    if spec.endswith(("+", "-")):
+        return spec[:-1], spec[-1]
+    return spec, None
+
+
+def _one_or_tuple(items: list[Any]) -> Any:
+    return items[0] if len(items) == 1 else tuple(items)
+
+
+def _is_nonscalar(value: Any) -> bool:
+    if isinstance(value, sp.MatrixBase):
+        return True
+    return not isinstance(value, sp.Basic | int | float | complex)
+
+
+def _is_simple(value: Any) -> bool:
+    """AutoRHS ON substitutes numbers (see docs/semantics.md)."""
+    return isinstance(value, sp.Expr) and value.is_number
+
+
+def _shape_for(index: tuple[int, ...]) -> tuple[int, int]:
+    return (0, 1) if len(index) == 1 else (0, 0)
+
+
+def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
+    if not isinstance(val, sp.MatrixBase):
+        raise KeyError(f"{name!r}: not a matrix")
+    try:
+        if len(index) == 1:
+            if val.cols == 1:
+                return val[index[0] - 1, 0]
+            if val.rows == 1:
+                return val[0, index[0] - 1]
+            raise KeyError(f"{name!r}: matrix is not a row or column; use two indices")
+        i, j = index
+        if i < 1 or j < 1:
+            raise IndexError
+        return val[i - 1, j - 1]
+    except IndexError:
+        raise KeyError(f"{name!r}: index out of range for a {val.rows}x{val.cols} matrix") from None
+
+
+def _xreplace(expr: Any, table: dict) -> Any:
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: _xreplace(e, table))
+    if hasattr(expr, "xreplace"):
+        return expr.xreplace(table)
+    return expr
+
+
+def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, sp.MatrixBase) or isinstance(b, sp.MatrixBase):
+        return isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a == b
+    return a == b
+
+
+def _doit_derivatives(expr: Any) -> Any:
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(_doit_derivatives)
+    if isinstance(expr, sp.Basic) and expr.has(sp.Derivative):
+        return expr.replace(
+            lambda e: isinstance(e, sp.Derivative) and not _is_plain_derivative(e),
+            lambda e: e.doit(),
+        )
+    return expr
+
+
+def _is_plain_derivative(e: sp.Derivative) -> bool:
+    return isinstance(e.expr, sp.core.function.AppliedUndef)
+
+
+_TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
+_ATRIG = (sp.asin, sp.acos, sp.atan, sp.acot, sp.atan2)
+
+
+def degrees_pass(expr: sp.Expr) -> sp.Expr:
+    """With ``Degrees ON``, numeric trig arguments and results are in degrees.
+
+    Used by ``Evaluate``: substituting numbers can make a trig argument numeric.
+    """
+    if not expr.has(*_TRIG, *_ATRIG):
+        return expr
+
+    def convert(e: sp.Basic) -> sp.Basic:
+        # Evaluate numerically so a value is never converted twice.
+        if isinstance(e, _TRIG) and e.args[0].is_number:
+            out = e.func(e.args[0] * sp.pi / 180)
+            return out if out.is_Rational else out.evalf(20)
+        if isinstance(e, _ATRIG) and all(a.is_number for a in e.args):
+            return (e * 180 / sp.pi).evalf(20)
+        return e
+
+    return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)

@@ -1,0 +1,74 @@
+"""Errors that al2py reports to users, and the one it must never show them.
+
+User-facing errors (:class:`AutolevError` and subclasses) know where in the
+``.al`` source they happened and format as::
+
+    tutor1.al:9:5: error: undeclared name 'Q'
+        E = Q + 1
+            ^
+
+:class:`InternalError` marks a bug in al2py itself; the command line reports
+it without a traceback and with a request to file an issue.
+"""
+
+from __future__ import annotations
+
+from .ir import Span
+
+__all__ = [
+    "AutolevError",
+    "ParseError",
+    "SemanticError",
+    "UnsupportedError",
+    "MacroError",
+    "InternalError",
+]
+
+
+class AutolevError(Exception):
+    """An error in the user's ``.al`` input, located by a :class:`Span`."""
+
+    kind = "error"
+
+    def __init__(self, message: str, span: Span | None = None, *, line_text: str = ""):
+        super().__init__(message)
+        self.message = message
+        self.span = span
+        self.line_text = line_text
+
+    def format(self, lines: tuple[str, ...] | list[str] | None = None) -> str:
+        """``file:line:col: error: message`` plus the source line and a caret."""
+        if self.span is None:
+            return f"error: {self.message}"
+        text = self.line_text
+        if not text and lines and 0 < self.span.line <= len(lines):
+            text = lines[self.span.line - 1]
+        out = f"{self.span}: error: {self.message}"
+        if text:
+            text = text.rstrip("\n").expandtabs(1)
+            caret = " " * max(self.span.col - 1, 0) + "^"
+            out += f"\n    {text}\n    {caret}"
+        return out
+
+    def __str__(self) -> str:
+        return self.format()
+
+
+class ParseError(AutolevError):
+    """The text is not valid Autolev syntax."""
+
+
+class SemanticError(AutolevError):
+    """Valid syntax with a meaning error: undeclared name, wrong argument count."""
+
+
+class UnsupportedError(AutolevError):
+    """Valid Autolev that al2py does not translate (yet); never silently dropped."""
+
+
+class MacroError(AutolevError):
+    """A ``.a``/``.r`` macro or ``RUN`` file could not be found or expanded."""
+
+
+class InternalError(Exception):
+    """A bug in al2py. Never raised for bad input."""

@@ -1,0 +1,420 @@
+"""Typed intermediate representation of an Autolev script.
+
+Every node is a frozen, slotted dataclass that carries the :class:`Span` of the
+source text it came from, so every later stage can report ``file:line:col``.
+Nodes validate their own fields in ``__post_init__`` (LibCST style): a node that
+exists is well formed.
+
+Names are stored exactly as written (Autolev is case-insensitive; use
+:func:`canon` to compare them).  The ``>`` suffix of vectors/dyadics is kept
+in :attr:`Name.name`; primes are counted in :attr:`Name.primes`.
+
+>>> n = Name(Span("f.al", 1, 1), "Qa", primes=1)
+>>> n.key, n.autolev
+('QA', "QA'")
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+__all__ = [
+    "Span",
+    "canon",
+    "Node",
+    "Expr",
+    "Number",
+    "Name",
+    "Element",
+    "IndexedNames",
+    "Call",
+    "BinOp",
+    "UnaryOp",
+    "MatrixLit",
+    "Range",
+    "Equation",
+    "String",
+    "Stmt",
+    "Comment",
+    "Assign",
+    "ExprStmt",
+    "DeclItem",
+    "Declaration",
+    "Setting",
+    "UnitExpr",
+    "InputItem",
+    "InputStmt",
+    "OutputItem",
+    "OutputStmt",
+    "UnitSystemStmt",
+    "Sweep",
+    "CodeStmt",
+    "FileCommand",
+    "MacroCall",
+    "Script",
+]
+
+
+def canon(name: str) -> str:
+    """Canonical (upper-case) spelling used to compare Autolev names."""
+    return name.upper()
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """Where a node came from: 1-based line and column of its first character."""
+
+    file: str
+    line: int
+    col: int
+    end_line: int = 0
+    end_col: int = 0
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.col}"
+
+
+@dataclass(frozen=True, slots=True)
+class Node:
+    span: Span
+
+
+# ---------------------------------------------------------------- expressions
+
+
+@dataclass(frozen=True, slots=True)
+class Expr(Node):
+    pass
+
+
+@dataclass(frozen=True, slots=True)
+class Number(Expr):
+    """A numeric literal, kept as its source text (``"1.0E-07"``)."""
+
+    text: str
+
+    def __post_init__(self) -> None:
+        if not self.text:
+            raise ValueError("empty number literal")
+
+    @property
+    def is_integer(self) -> bool:
+        return self.text.isdigit()
+
+    @property
+    def value(self) -> Fraction:
+        """Exact value of the literal (decimals are exact rationals)."""
+        return Fraction(self.text.lower())
+
+
+@dataclass(frozen=True, slots=True)
+class Name(Expr):
+    """A name, possibly primed: ``X``, ``X''``, ``V_P_N>``, ``I_B_P>>``, ``0>``."""
+
+    name: str
+    primes: int = 0
+
+    def __post_init__(self) -> None:
+        if not self.name:
+            raise ValueError("empty name")
+        if self.primes < 0:
+            raise ValueError("negative prime count")
+
+    @property
+    def key(self) -> str:
+        """Canonical spelling without primes (``V_P_N>``)."""
+        return canon(self.name)
+
+    @property
+    def rank(self) -> int:
+        """0 scalar/matrix, 1 vector, 2 dyadic, 3 polyadic (number of ``>``)."""
+        return len(self.name) - len(self.name.rstrip(">"))
+
+    @property
+    def autolev(self) -> str:
+        return self.key + "'" * self.primes
+
+
+@dataclass(frozen=True, slots=True)
+class Element(Expr):
+    """``X[7]``, ``M0[2,2]`` or ``DEPENDENT[U2,U3]``: a name with subscripts."""
+
+    base: Name
+    indices: tuple[Expr, ...]
+
+    def __post_init__(self) -> None:
+        if not self.indices:
+            raise ValueError("element reference without an index")
+
+
+@dataclass(frozen=True, slots=True)
+class IndexedNames(Expr):
+    """``U{1:3}'`` or ``a{1:2,1:2}``: a family of names, expanded by the analyzer.
+
+    Each entry of ``ranges`` is ``(first, last)``; ``U{3}`` is ``((1, 3),)``.
+    """
+
+    stem: str
+    ranges: tuple[tuple[int, int], ...]
+    primes: int = 0
+
+    def __post_init__(self) -> None:
+        if not self.ranges:
+            raise ValueError("index braces need at least one range")
+        for lo, hi in self.ranges:
+            if lo > hi:
+                raise ValueError(f"empty index range {lo}:{hi}")
+
+    def expand(self) -> tuple[str, ...]:
+        """Names in Autolev order: ``a{1:2,1:2}`` -> ``a11, a12, a21, a22``."""
+        names = [self.stem]
+        for lo, hi in self.ranges:
+            names = [f"{n}{i}" for n in names for i in range(lo, hi + 1)]
+        return tuple(names)
+
+
+@dataclass(frozen=True, slots=True)
+class Call(Expr):
+    """``Func(arg, ...)``; keyword-style arguments are :class:`Equation`."""
+
+    func: str
+    args: tuple[Expr, ...] = ()
+
+    @property
+    def key(self) -> str:
+        return canon(self.func)
+
+
+@dataclass(frozen=True, slots=True)
+class BinOp(Expr):
+    op: str  # one of + - * / ^
+    left: Expr
+    right: Expr
+
+    def __post_init__(self) -> None:
+        if self.op not in ("+", "-", "*", "/", "^"):
+            raise ValueError(f"unknown binary operator {self.op!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class UnaryOp(Expr):
+    op: str  # + or -
+    operand: Expr
+
+    def __post_init__(self) -> None:
+        if self.op not in ("+", "-"):
+            raise ValueError(f"unknown unary operator {self.op!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class MatrixLit(Expr):
+    """``[a, b; c, d]``: rows of entries; entries may themselves be matrices."""
+
+    rows: tuple[tuple[Expr, ...], ...]
+
+    def __post_init__(self) -> None:
+        if not self.rows or not all(self.rows):
+            raise ValueError("empty matrix row")
+
+
+@dataclass(frozen=True, slots=True)
+class Range(Expr):
+    """``lo:hi`` as a function argument (``Expand(E, 1:2)``, ``X=0:dX``)."""
+
+    lo: Expr
+    hi: Expr
+
+
+@dataclass(frozen=True, slots=True)
+class Equation(Expr):
+    """``lhs = rhs`` inside an argument list (``Evaluate(E, X=1)``)."""
+
+    lhs: Expr
+    rhs: Expr
+
+
+@dataclass(frozen=True, slots=True)
+class String(Expr):
+    value: str
+
+
+# ----------------------------------------------------------------- statements
+
+
+@dataclass(frozen=True, slots=True)
+class Stmt(Node):
+    """A statement; ``comment`` is the trailing ``% ...`` text, if any."""
+
+    comment: str | None = field(default=None, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Comment(Stmt):
+    """A line that holds only a comment (``text`` excludes the ``%``).
+
+    ``code_comment`` is True for ``%%`` comments, which Autolev copies into
+    generated code.
+    """
+
+    text: str
+    code_comment: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Assign(Stmt):
+    """``target op value``; ``op`` is one of ``= := += -= *= /= ^=``."""
+
+    target: Expr  # Name | Element
+    op: str
+    value: Expr
+
+    def __post_init__(self) -> None:
+        if self.op not in ("=", ":=", "+=", "-=", "*=", "/=", "^="):
+            raise ValueError(f"unknown assignment operator {self.op!r}")
+        if not isinstance(self.target, Name | Element):
+            raise ValueError("assignment target must be a name or an element")
+
+
+@dataclass(frozen=True, slots=True)
+class ExprStmt(Stmt):
+    """A bare expression or a stand-alone command: ``Solve(Zero, X, Y)``."""
+
+    expr: Expr
+
+
+@dataclass(frozen=True, slots=True)
+class DeclItem(Node):
+    """One item of a declaration.
+
+    ``Constants B=3``        -> target B, values (3,)
+    ``Constants C+``          -> target C, sign "+"
+    ``Mass A=M=12``           -> target A, values (M, 12)
+    ``Variables Y{3}'``       -> target IndexedNames(Y, ((1,3),), primes=1)
+    ``Inertia B, IB=..., 0``  -> every item after the first is a DeclItem too
+    ``values`` may carry their own sign as ``signs`` (``Mass A=MA+``).
+    """
+
+    target: Expr
+    values: tuple[Expr, ...] = ()
+    sign: str | None = None
+    value_signs: tuple[str | None, ...] = ()
+
+    def __post_init__(self) -> None:
+        if self.sign not in (None, "+", "-"):
+            raise ValueError(f"bad sign suffix {self.sign!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class Declaration(Stmt):
+    """``Constants``, ``Variables``, ``Specified``, ``Imaginary``, ``Newtonian``,
+    ``Frames``, ``Bodies``, ``Particles``, ``Points``, ``Mass``, ``Inertia``.
+
+    ``keyword`` is the canonical declaration kind (``"CONSTANTS"``, ...), not
+    the spelling (``Constant``/``CONSTANTS``/``MotionVariables``...).
+    """
+
+    keyword: str
+    items: tuple[DeclItem, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Setting(Stmt):
+    """``Digits 7``, ``AutoRHS ALL``, ``Degrees ON``, ``Exit``...
+
+    ``name`` is canonical upper case; ``value`` is the word/number text as
+    written (or None for settings that take no value).
+    """
+
+    name: str
+    value: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class UnitExpr(Node):
+    """A unit such as ``m``, ``deg``, ``n*sec/m``, ``m/sec^2``.
+
+    ``factors`` is a tuple of (unit word, exponent); division gives negative
+    exponents: ``m/sec^2`` -> (("m", 1), ("sec", -2)).
+    """
+
+    factors: tuple[tuple[str, int], ...]
+    text: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class InputItem(Node):
+    name: Expr  # Name | Element | IndexedNames
+    value: Expr
+    unit: UnitExpr | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class InputStmt(Stmt):
+    items: tuple[InputItem, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class OutputItem(Node):
+    expr: Expr
+    unit: UnitExpr | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class OutputStmt(Stmt):
+    items: tuple[OutputItem, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class UnitSystemStmt(Stmt):
+    units: tuple[str, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Sweep(Node):
+    """``[PHI deg=0,360,1]`` in a CODE statement."""
+
+    name: Name
+    unit: UnitExpr | None
+    start: Expr
+    stop: Expr
+    step: Expr
+
+
+@dataclass(frozen=True, slots=True)
+class CodeStmt(Stmt):
+    """``CODE Dynamics() tutor6.c`` / ``CODE Nonlinear(CONFIG, QB, QC) t.for``."""
+
+    option: str  # canonical: DYNAMICS, ODE, NONLINEAR, ALGEBRAIC
+    args: tuple[Expr, ...]
+    sweep: Sweep | None
+    filename: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class FileCommand(Stmt):
+    """``Save tutor2.all``, ``Run other.al``: a command word and a file name."""
+
+    command: str  # canonical: SAVE, RUN
+    filename: str
+
+
+@dataclass(frozen=True, slots=True)
+class MacroCall(Stmt):
+    """A statement produced by expanding a ``.a`` macro or ``RUN`` file.
+
+    ``body`` holds the statements of the expansion; ``source`` is the macro
+    file's path; ``span`` is the invoking statement's span.
+    """
+
+    name: str
+    source: str
+    body: tuple[Stmt, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Script(Node):
+    """A whole file: ``statements`` in order; ``lines`` are the physical lines."""
+
+    statements: tuple[Stmt, ...]
+    lines: tuple[str, ...] = field(default=(), repr=False)
