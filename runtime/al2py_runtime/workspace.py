@@ -116,6 +116,7 @@ class Workspace(Mapping):
         self._rhs: dict[sp.Basic, Any] = {}
         self._values: dict[str, Any] = {}
         self._entries_by_obj: dict[sp.Basic, str] = {}
+        self._saves: list[str] = []
         self._declare("T", "variable", t)
         self._declare("PI", "constant", sp.pi)
         self._declare("I", "imaginary", sp.I)
@@ -261,8 +262,16 @@ class Workspace(Mapping):
 
     # ------------------------------------------------------------ resolution
 
-    def explicit(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
-        """Substitute right-hand sides until none is left (``Explicit``).
+    def explicit(self, y: Any, x: Any = None) -> Any:
+        """``Explicit(y)``: ``y`` with every right-hand side substituted.
+
+        (``Explicit(y, x)`` gives the same result: substituting everything makes
+        ``y`` an explicit function of ``x``.)
+        """
+        return self.resolve(self.val(y))
+
+    def resolve(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
+        """Substitute right-hand sides until none is left.
 
         Objects in ``keep`` are left alone, so ``D(y, x)`` can see through every
         name except ``x`` itself.
@@ -303,10 +312,14 @@ class Workspace(Mapping):
         values = list(values)
         if len(targets) != len(values):
             raise ValueError(f"{len(targets)} names for {len(values)} values")
-        out = [self.assign(n, v, line=line) for n, v in zip(targets, values, strict=True)]
+        out = [
+            self.assign(n, v, line=line) for n, v in zip(targets, values, strict=True)
+        ]
         return _one_or_tuple(out)
 
-    def _store(self, target: str, value: Any, *, line: int | None, rearrange: bool) -> Any:
+    def _store(
+        self, target: str, value: Any, *, line: int | None, rearrange: bool
+    ) -> Any:
         key = parse_key(target)
         value = self.normalize(value, rearrange=rearrange)
         if key.index:
@@ -314,7 +327,9 @@ class Workspace(Mapping):
             label = str(Key(key.name, 0, key.index))
         elif key.name.endswith(">") or _is_nonscalar(value):
             if key.primes:
-                raise ValueError(f"cannot assign to derivative {target} of a non-scalar")
+                raise ValueError(
+                    f"cannot assign to derivative {target} of a non-scalar"
+                )
             old = self._names.get(key.name)
             if old is not None and old.kind == "quantity":
                 del self._names[key.name]
@@ -369,15 +384,19 @@ class Workspace(Mapping):
             (i,) = key.index
             if current.cols == 1 or current.rows == 0:
                 if i > current.rows:
-                    current = current.col_join(sp.zeros(i - current.rows, max(current.cols, 1)))
+                    current = current.col_join(
+                        sp.zeros(i - current.rows, max(current.cols, 1))
+                    )
                 current[i - 1, 0] = value
             elif current.rows == 1:
                 if i > current.cols:
                     current = current.row_join(sp.zeros(1, i - current.cols))
                 current[0, i - 1] = value
             else:
-                raise ValueError(f"{key.name} has {current.rows} rows and {current.cols}"
-                                 " columns; use two indices")
+                raise ValueError(
+                    f"{key.name} has {current.rows} rows and {current.cols}"
+                    " columns; use two indices"
+                )
         else:
             i, j = key.index
             if i > current.rows:
@@ -398,7 +417,9 @@ class Workspace(Mapping):
         if isinstance(value, list | tuple):
             value = sp.Matrix(value)
         if isinstance(value, sp.MatrixBase):
-            return sp.Matrix(value).applyfunc(lambda e: self.normalize(e, rearrange=rearrange))
+            return sp.Matrix(value).applyfunc(
+                lambda e: self.normalize(e, rearrange=rearrange)
+            )
         if not isinstance(value, sp.Basic):
             try:
                 value = sp.sympify(value)
@@ -409,7 +430,7 @@ class Workspace(Mapping):
         value = self._numbers(value)
         mode = self.settings.autorhs
         if mode == "ALL":
-            value = self.explicit(value)
+            value = self.resolve(value)
         elif mode == "ON":
             simple = {k: v for k, v in self._rhs.items() if _is_simple(v)}
             if simple:
@@ -439,11 +460,166 @@ class Workspace(Mapping):
 
     def respond(self, label: str, value: Any, *, line: int | None = None) -> None:
         """Record a ``-> (n) LABEL = value`` response (printed by ``transcript``)."""
-        self.responses.append(Response(line, label.upper(), value, self.settings.digits))
+        self.responses.append(
+            Response(line, label.upper(), value, self.settings.digits)
+        )
 
     def set(self, name: str, value: Any = None) -> None:
         """A settings line: ``Digits 7``, ``AutoRHS ALL``, ``Degrees ON``."""
         self.settings.set(name, value)
+
+    def show(self, label: str, value: Any, *, line: int | None = None) -> Any:
+        """A bare expression statement: respond with its value."""
+        value = self.normalize(value)
+        self.respond(label, value, line=line)
+        return value
+
+    def names(self) -> Mapping[str, Any]:
+        """A read-only, case-insensitive view: Autolev name -> current value."""
+        return AutolevNames(self)
+
+    def name_of(self, obj: Any) -> str:
+        """The Autolev spelling of a declared symbol or derivative (``"X'"``)."""
+        primes = 0
+        if (
+            isinstance(obj, sp.Derivative)
+            and len(obj.variables)
+            and set(obj.variables) == {t}
+        ):
+            primes = len(obj.variables)
+            obj = obj.expr
+        name = self._entries_by_obj.get(obj)
+        if name is None:
+            raise KeyError(f"{obj} is not an Autolev name")
+        return name + "'" * primes
+
+    # ------------------------------------------------------------- files
+
+    def save(self, filename: str) -> None:
+        """``SAVE file.all``/``SAVE file.al``: written by ``python module.py``."""
+        self._saves.append(filename)
+
+    def transcript(self, source: Iterable[str]) -> list[str]:
+        """The transcript lines Autolev would print for ``source``."""
+        from .transcript import transcript_lines
+
+        return transcript_lines(list(source), self.responses)
+
+    def print_transcript(self, source: Iterable[str]) -> None:
+        for line in self.transcript(source):
+            print(line)
+
+    def write_saved_files(self, source: Iterable[str]) -> list[str]:
+        """Write the files named by ``SAVE`` (never overwriting an ``.al`` file)."""
+        import os
+
+        written = []
+        source = list(source)
+        for name in self._saves:
+            if name.lower().endswith(".all"):
+                text = "\n".join(self.transcript(source)) + "\n"
+            elif os.path.exists(name):
+                print(f"note: not overwriting existing {name}")
+                continue
+            else:
+                text = "\n".join(source) + "\n"
+            with open(name, "w", encoding="utf-8") as f:
+                f.write(text)
+            written.append(name)
+        return written
+
+    # ------------------------------------------------ mathematical commands
+
+    def d(self, y: Any, x: Any, frame: Any = None) -> Any:
+        """``D(y, x)``: partial derivative, seeing through right-hand sides.
+
+        With a matrix ``x`` (``D(Xp, Xm)``) the result is the Jacobian whose
+        row i, column j is the derivative of element i of ``y`` by element j.
+        """
+        if frame is not None:
+            raise NotImplementedError(
+                "D(vector, x, frame) arrives with the physics commands"
+            )
+        if isinstance(x, sp.MatrixBase):
+            xs = list(x)
+            y = self.resolve(self.val(y), keep=xs)
+            ys = list(y) if isinstance(y, sp.MatrixBase) else [y]
+            return sp.Matrix(len(ys), len(xs), lambda i, j: _diff(ys[i], xs[j]))
+        y = self.resolve(self.val(y), keep=[x])
+        if isinstance(y, sp.MatrixBase):
+            return y.applyfunc(lambda e: _diff(e, x))
+        return _diff(y, x)
+
+    def dt(self, y: Any, frame: Any = None) -> Any:
+        """``Dt(y)``: total time derivative, seeing through right-hand sides."""
+        if frame is not None:
+            raise NotImplementedError(
+                "Dt(vector, frame) arrives with the physics commands"
+            )
+        y = self.resolve(self.val(y))
+        if isinstance(y, sp.MatrixBase):
+            return y.applyfunc(lambda e: sp.diff(e, t))
+        return sp.diff(y, t)
+
+    def evaluate(self, y: Any, subs: Mapping[Any, Any] | None = None) -> Any:
+        """``Evaluate(y, a=x, b=2)``: substitute, seeing through other names."""
+        subs = {sp.sympify(k): sp.sympify(v) for k, v in (subs or {}).items()}
+        y = self.resolve(self.val(y), keep=subs)
+        y = _doit_derivatives(_xreplace(y, subs))
+        if self.settings.degrees:
+            y = (
+                y.applyfunc(degrees_pass)
+                if isinstance(y, sp.MatrixBase)
+                else degrees_pass(y)
+            )
+        return y
+
+    def taylor(self, y: Any, order: Any, points: Iterable[tuple[Any, ...]]) -> Any:
+        """``Taylor(y, 0:2, w=a, x=0:dx)``; see :func:`algebra.taylor`."""
+        from . import algebra
+
+        pts = [(p[0], p[1], p[2] if len(p) > 2 else None) for p in points]
+        orders = tuple(order) if isinstance(order, tuple | list) else (0, int(order))
+        y = self.resolve(self.val(y), keep=[p[0] for p in pts])
+        return algebra.taylor(y, orders, pts)
+
+    def solve(
+        self, eqs: Any, unknowns: Iterable[Any], *, line: int | None = None
+    ) -> tuple:
+        """``Solve(A, x1, x2)``: solve linear equations and assign the unknowns."""
+        from . import algebra
+
+        unknowns = list(unknowns)
+        if isinstance(eqs, sp.MatrixBase):
+            eqs = sp.Matrix(eqs)
+        else:
+            eqs = sp.Matrix([self.val(eqs)])
+        eqs = self.resolve(eqs, keep=unknowns)
+        solutions = algebra.solve_linear(eqs, unknowns)
+        names = [self.name_of(u) for u in unknowns]
+        return self.assign_all(names, solutions, line=line)
+
+    def eig(self, m: Any) -> Any:
+        from . import algebra
+
+        return algebra.eig(self.val(m))
+
+    def eig_vectors(self, m: Any) -> tuple[Any, Any]:
+        from . import algebra
+
+        return algebra.eig_vectors(self.val(m))
+
+    def zee(self, y: Any, x: Any = None) -> Any:
+        """``Zee(y)``: Autolev's display with Z variables; values are unchanged
+        (numerical code always uses common subexpressions)."""
+        return self.val(y)
+
+    autoz = zee
+
+    def block(self, rows: Any) -> Any:
+        from .matrices import block
+
+        return block(rows)
 
 
 # ---------------------------------------------------------------- helpers
@@ -489,7 +665,9 @@ def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
             raise IndexError
         return val[i - 1, j - 1]
     except IndexError:
-        raise KeyError(f"{name!r}: index out of range for a {val.rows}x{val.cols} matrix") from None
+        raise KeyError(
+            f"{name!r}: index out of range for a {val.rows}x{val.cols} matrix"
+        ) from None
 
 
 def _xreplace(expr: Any, table: dict) -> Any:
@@ -543,3 +721,59 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
         return e
 
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
+
+
+def _diff(y: Any, x: Any) -> Any:
+    if isinstance(y, sp.Basic):
+        return sp.diff(y, x)
+    return sp.Integer(0)
+
+
+def _delegate(module: str, func: str) -> Any:
+    """A workspace method that resolves its first argument, then calls
+    ``al2py_runtime.<module>.<func>``."""
+
+    def method(self: Workspace, y: Any, *args: Any) -> Any:
+        import importlib
+
+        target = getattr(importlib.import_module(f"al2py_runtime.{module}"), func)
+        return target(self.val(y), *args)
+
+    method.__name__ = func
+    method.__qualname__ = f"Workspace.{func}"
+    method.__doc__ = (
+        f"Autolev ``{func.title()}``: see :func:`al2py_runtime.{module}.{func}`."
+    )
+    return method
+
+
+for _module, _names in {
+    "algebra": "expand factor polynomial roots coef exclude include arrange replace epsilon",
+    "matrices": "rows cols det diagmat element inv trace transpose",
+}.items():
+    for _name in _names.split():
+        setattr(Workspace, _name, _delegate(_module, _name))
+
+
+class AutolevNames(Mapping):
+    """Read-only view of a workspace: ``AUTOLEV["ZERO[2]"]``, ``AUTOLEV["X'"]``."""
+
+    __slots__ = ("_ws",)
+
+    def __init__(self, ws: Workspace) -> None:
+        self._ws = ws
+
+    def __getitem__(self, name: str) -> Any:
+        return self._ws.value(name)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._ws)
+
+    def __len__(self) -> int:
+        return len(self._ws)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._ws
+
+    def __repr__(self) -> str:
+        return f"<Autolev names of {self._ws.filename}: {', '.join(self)}>"

@@ -1,0 +1,66 @@
+"""Autolev transcripts: numbered input lines interleaved with ``->`` responses.
+
+Autolev numbers every input line and every response line in one sequence::
+
+    (1) Constants A, B
+    (2) X = 4*(A+B) - 3*(a-b)
+    -> (3) X = A + 7*B
+
+Blank lines are not numbered; a statement continued with ``&`` is one input
+line.  Responses are attached to the physical line their statement starts on.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable, Iterator, Sequence
+
+from .workspace import Response
+
+__all__ = ["logical_lines", "transcript_lines"]
+
+
+def logical_lines(source: Sequence[str]) -> Iterator[tuple[int, str]]:
+    """``(first physical line, text)`` for each non-blank logical line."""
+    pending: list[str] = []
+    start = 0
+    for number, line in enumerate(source, start=1):
+        if not pending:
+            start = number
+            if not line.strip():
+                continue
+        code = line.split("%", 1)[0].rstrip()
+        if code.endswith("&"):
+            pending.append(line.rstrip())
+            continue
+        pending.append(line.rstrip())
+        yield start, " ".join(
+            p.strip() if i else p.rstrip() for i, p in enumerate(pending)
+        )
+        pending = []
+    if pending:
+        yield start, " ".join(p.strip() for p in pending)
+
+
+def transcript_lines(source: Sequence[str], responses: Iterable[Response]) -> list[str]:
+    """The full transcript as text lines."""
+    from .printing import format_response
+
+    by_line: dict[int | None, list[Response]] = defaultdict(list)
+    for r in responses:
+        by_line[r.line].append(r)
+    out: list[str] = []
+    n = 0
+    for start, text in logical_lines(source):
+        n += 1
+        out.append(f"({n}) {text.strip()}")
+        for r in by_line.pop(start, []):
+            for line in format_response(r.label, r.value, r.digits):
+                n += 1
+                out.append(f"-> ({n}) {line}")
+    for key in sorted(by_line, key=lambda k: -1 if k is None else k):
+        for r in by_line[key]:
+            for line in format_response(r.label, r.value, r.digits):
+                n += 1
+                out.append(f"-> ({n}) {line}")
+    return out

@@ -1,0 +1,842 @@
+"""Semantic analysis: one symbol table, name checks, kinds, macro expansion.
+
+Autolev scripts run top to bottom with no control flow, so analysis is a single
+ordered walk.  :meth:`Analysis.enter` checks one statement against the symbol
+table as it stands at that point, updates the table, and returns the facts the
+generator needs.  Python identifiers are fixed before the walk by a pre-pass,
+so a name keeps one identifier for the whole module.
+
+Macro files (``.a``/``.r``) and ``RUN`` files are expanded by :func:`expand`
+before the walk.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import ir
+from .builtins import BUILTINS, DUAL_FUNCTIONS, Kind, Style
+from .errors import MacroError, ParseError, SemanticError, UnsupportedError
+from .naming import PHYSICAL_KINDS, Namer
+
+__all__ = ["Symbol", "SymbolTable", "Analysis", "StmtFacts", "expand", "walk_expr"]
+
+SCALAR_KINDS = frozenset(
+    {"constant", "variable", "specified", "imaginary", "scalar", "time"}
+)
+_DECL_KIND = {
+    "CONSTANTS": "constant",
+    "VARIABLES": "variable",
+    "SPECIFIED": "specified",
+    "IMAGINARY": "imaginary",
+    "NEWTONIAN": "newtonian",
+    "FRAMES": "frame",
+    "BODIES": "body",
+    "PARTICLES": "particle",
+    "POINTS": "point",
+}
+_PHYSICS_DECLS = frozenset(
+    {"NEWTONIAN", "FRAMES", "BODIES", "PARTICLES", "POINTS", "MASS", "INERTIA"}
+)
+_PHYSICS_MSG = "physics commands (bodies, kinematics, Kane's method)"
+_NUMERICS_MSG = "numerical CODE jobs (Input, Output, UnitSystem, CODE)"
+
+#: Settings accepted by the runtime, with the values they take.
+SETTINGS: dict[str, tuple[str, ...] | str] = {
+    "DIGITS": "int",
+    "DEGREES": ("ON", "OFF"),
+    "AUTORHS": ("ON", "OFF", "ALL"),
+    "FACTORING": ("ON", "OFF"),
+    "AUTOEPSILON": "number",
+    "COMPLEX": ("ON", "OFF", "AUTO"),
+    "AUTOZ": ("ON", "OFF"),
+    "OVERWRITE": ("ON", "OFF"),
+    "AUTOEXPRESS": ("ON", "OFF"),
+}
+#: Names that stop reading the script (Autolev ends the session).
+STOP_WORDS = frozenset({"EXIT", "QUIT"})
+#: Python names every generated module uses; user names avoid them.
+RESERVED_IDENTIFIERS = frozenset(
+    {"al", "t", "pi", "I", "Matrix", "Rational", "AUTOLEV", "AL_SOURCE", "main", "sys"}
+)
+
+
+@dataclass
+class Symbol:
+    """Everything the analysis knows about one Autolev name."""
+
+    key: str  # canonical spelling
+    kind: str  # constant, variable, specified, imaginary, scalar, matrix, vector, ...
+    ident: str
+    span: ir.Span | None = None
+    order: int = 0  # highest derivative order, for variables/specified
+    sign: str | None = None
+    has_rhs: bool = False
+
+    @property
+    def value_kind(self) -> Kind:
+        if self.kind in SCALAR_KINDS:
+            return Kind.SCALAR
+        try:
+            return Kind(self.kind)
+        except ValueError:
+            return Kind.UNKNOWN
+
+
+class SymbolTable:
+    """Canonical name -> :class:`Symbol`; physical objects live alongside."""
+
+    def __init__(self, namer: Namer) -> None:
+        self.namer = namer
+        self._symbols: dict[str, Symbol] = {}
+        self._physical: dict[str, Symbol] = {}
+        self.define("T", "time", "t")
+        self.define("PI", "constant", "pi")
+        self.define("I", "imaginary", "I")
+
+    def define(self, key: str, kind: str, ident: str, **kw: object) -> Symbol:
+        sym = Symbol(key, kind, ident, **kw)  # type: ignore[arg-type]
+        if kind in PHYSICAL_KINDS:
+            self._physical[key] = sym
+        else:
+            self._symbols[key] = sym
+        return sym
+
+    def get(self, key: str) -> Symbol | None:
+        key = key.upper()
+        return self._symbols.get(key) or self._physical.get(key)
+
+    def quantity(self, key: str) -> Symbol | None:
+        return self._symbols.get(key.upper())
+
+    def physical(self, key: str) -> Symbol | None:
+        return self._physical.get(key.upper())
+
+    def __iter__(self) -> Iterator[Symbol]:
+        yield from self._symbols.values()
+        yield from self._physical.values()
+
+
+@dataclass(frozen=True)
+class StmtFacts:
+    """What the generator needs to know about one statement."""
+
+    degrees: bool = False
+    target: Symbol | None = None  # symbol assigned by an Assign
+    stop: bool = False  # EXIT/QUIT: nothing after this runs
+
+
+# ------------------------------------------------------------------ helpers
+
+
+def walk_expr(expr: ir.Expr) -> Iterator[ir.Expr]:
+    """Every expression node below (and including) ``expr``, parents first."""
+    yield expr
+    for f in dataclasses.fields(expr):
+        value = getattr(expr, f.name)
+        if isinstance(value, ir.Expr):
+            yield from walk_expr(value)
+        elif isinstance(value, tuple):
+            for item in value:
+                if isinstance(item, ir.Expr):
+                    yield from walk_expr(item)
+                elif isinstance(item, tuple):
+                    for sub in item:
+                        if isinstance(sub, ir.Expr):
+                            yield from walk_expr(sub)
+
+
+def map_expr(expr: ir.Expr, fn: Callable[[ir.Expr], ir.Expr | None]) -> ir.Expr:
+    """Rebuild ``expr`` bottom-up, replacing nodes for which ``fn`` returns a node."""
+    changes = {}
+    for f in dataclasses.fields(expr):
+        value = getattr(expr, f.name)
+        if isinstance(value, ir.Expr):
+            changes[f.name] = map_expr(value, fn)
+        elif (
+            isinstance(value, tuple) and value and isinstance(value[0], ir.Expr | tuple)
+        ):
+            changes[f.name] = tuple(
+                (
+                    map_expr(v, fn)
+                    if isinstance(v, ir.Expr)
+                    else (
+                        tuple(
+                            map_expr(s, fn) if isinstance(s, ir.Expr) else s for s in v
+                        )
+                        if isinstance(v, tuple)
+                        else v
+                    )
+                )
+                for v in value
+            )
+    if changes:
+        expr = dataclasses.replace(expr, **changes)
+    out = fn(expr)
+    return expr if out is None else out
+
+
+def stmt_exprs(stmt: ir.Stmt) -> Iterator[ir.Expr]:
+    """The expressions directly held by a statement."""
+    for f in dataclasses.fields(stmt):
+        value = getattr(stmt, f.name)
+        if isinstance(value, ir.Expr):
+            yield value
+        elif isinstance(value, tuple):
+            for item in value:
+                if isinstance(item, ir.Expr):
+                    yield item
+                elif isinstance(item, ir.Node):
+                    for g in dataclasses.fields(item):
+                        sub = getattr(item, g.name)
+                        if isinstance(sub, ir.Expr):
+                            yield sub
+                        elif isinstance(sub, tuple):
+                            yield from (s for s in sub if isinstance(s, ir.Expr))
+
+
+# ------------------------------------------------------------ macro expansion
+
+
+@dataclass
+class _Expander:
+    parse: Callable[[str, str], ir.Script]
+    script_dir: Path
+    autolevpath: str | None
+    lines: tuple[str, ...]
+    newtonian: str | None = None
+    degrees: bool = False
+    depth: int = 0
+    run_stack: tuple[str, ...] = field(default_factory=tuple)
+
+    def statements(self, stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
+        for stmt in stmts:
+            yield from self.statement(stmt)
+
+    def statement(self, stmt: ir.Stmt) -> Iterator[ir.Stmt]:
+        if (
+            isinstance(stmt, ir.Declaration)
+            and stmt.keyword == "NEWTONIAN"
+            and stmt.items
+        ):
+            target = stmt.items[0].target
+            if isinstance(target, ir.Name):
+                self.newtonian = target.name
+        if isinstance(stmt, ir.Setting) and stmt.name == "DEGREES":
+            self.degrees = (stmt.value or "").upper() == "ON"
+        if isinstance(stmt, ir.FileCommand) and stmt.command == "RUN":
+            yield self.run(stmt)
+            return
+        if isinstance(stmt, ir.ExprStmt) and isinstance(stmt.expr, ir.Call):
+            call = stmt.expr
+            if call.key not in BUILTINS:
+                path = self._find(call.func, "a")
+                if path is not None:
+                    yield self.macro_statement(stmt, call, path)
+                    return
+        yield self.expand_results(stmt)
+
+    def _find(self, name: str, kind: str) -> Path | None:
+        from .macros import find_macro
+
+        return find_macro(name, kind, self.script_dir, self.autolevpath)
+
+    def _arg_texts(self, call: ir.Call) -> list[str]:
+        from .parser import span_text
+
+        return [span_text(self.lines, a.span) for a in call.args]
+
+    def _expand_text(self, path: Path, call: ir.Call) -> str:
+        from .macros import expand_macro
+
+        if self.depth > 20:
+            raise MacroError(f"macro {call.func} calls itself too deeply", call.span)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError as exc:
+            raise MacroError(
+                f"cannot read macro file {path}: {exc.strerror}", call.span
+            ) from None
+        try:
+            expansion = expand_macro(
+                text,
+                self._arg_texts(call),
+                newtonian=self.newtonian,
+                degrees=self.degrees,
+                path=str(path),
+            )
+        except MacroError as exc:
+            raise MacroError(exc.message, call.span) from None
+        if expansion.echoes:
+            raise MacroError(f"{path.name}: " + " ".join(expansion.echoes), call.span)
+        return expansion.text
+
+    def _parse_nested(self, text: str, path: Path, call_span: ir.Span) -> ir.Script:
+        try:
+            return self.parse(text, str(path))
+        except ParseError as exc:
+            where = f"line {exc.span.line}" if exc.span else "text"
+            raise MacroError(
+                f"in {path.name} ({where} of the expansion): {exc.message}", call_span
+            ) from None
+
+    def macro_statement(
+        self, stmt: ir.ExprStmt, call: ir.Call, path: Path
+    ) -> ir.MacroCall:
+        text = self._expand_text(path, call)
+        script = self._parse_nested(text, path, call.span)
+        inner = _Expander(
+            self.parse,
+            self.script_dir,
+            self.autolevpath,
+            script.lines,
+            self.newtonian,
+            self.degrees,
+            self.depth + 1,
+            self.run_stack,
+        )
+        body = tuple(
+            _respan_stmt(s, call.span) for s in inner.statements(script.statements)
+        )
+        return ir.MacroCall(stmt.span, call.func, str(path), body, comment=stmt.comment)
+
+    def run(self, stmt: ir.FileCommand) -> ir.MacroCall:
+        path = _resolve(stmt.filename, self.script_dir, self.autolevpath)
+        if path is None:
+            raise MacroError(f"RUN: cannot find {stmt.filename}", stmt.span)
+        key = str(path.resolve())
+        if key in self.run_stack:
+            raise MacroError(f"RUN {stmt.filename} runs itself", stmt.span)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError as exc:
+            raise MacroError(f"cannot read {path}: {exc.strerror}", stmt.span) from None
+        script = self.parse(text, str(path))
+        inner = _Expander(
+            self.parse,
+            path.parent,
+            self.autolevpath,
+            script.lines,
+            self.newtonian,
+            self.degrees,
+            self.depth + 1,
+            (*self.run_stack, key),
+        )
+        body = tuple(inner.statements(script.statements))
+        self.newtonian, self.degrees = inner.newtonian, inner.degrees
+        return ir.MacroCall(stmt.span, "RUN", str(path), body, comment=stmt.comment)
+
+    def expand_results(self, stmt: ir.Stmt) -> ir.Stmt:
+        """Replace calls of ``.r`` macros inside the statement's expressions."""
+        changes = {}
+        for f in dataclasses.fields(stmt):
+            value = getattr(stmt, f.name)
+            if isinstance(value, ir.Expr):
+                new = map_expr(value, self._result_macro)
+                if new is not value:
+                    changes[f.name] = new
+        return dataclasses.replace(stmt, **changes) if changes else stmt
+
+    def _result_macro(self, node: ir.Expr) -> ir.Expr | None:
+        if not isinstance(node, ir.Call) or node.key in BUILTINS:
+            return None
+        path = self._find(node.func, "r")
+        if path is None:
+            return None
+        text = self._expand_text(path, node).strip()
+        script = self._parse_nested(f"MACRO_RESULT_ = {text}", path, node.span)
+        stmts = [s for s in script.statements if not isinstance(s, ir.Comment)]
+        if len(stmts) != 1 or not isinstance(stmts[0], ir.Assign):
+            raise MacroError(
+                f"{path.name} does not expand to one expression", node.span
+            )
+        value = _respan_expr(stmts[0].value, node.span)
+        inner = _Expander(
+            self.parse,
+            self.script_dir,
+            self.autolevpath,
+            script.lines,
+            self.newtonian,
+            self.degrees,
+            self.depth + 1,
+            self.run_stack,
+        )
+        return map_expr(value, inner._result_macro)
+
+
+def _resolve(filename: str, script_dir: Path, autolevpath: str | None) -> Path | None:
+    candidates = [script_dir / filename]
+    for d in (autolevpath or "").split(os.pathsep):
+        if d:
+            candidates.append(Path(d) / filename)
+    for c in candidates:
+        if c.is_file():
+            return c
+    return None
+
+
+def _respan_expr(expr: ir.Expr, span: ir.Span) -> ir.Expr:
+    return map_expr(expr, lambda n: dataclasses.replace(n, span=span))
+
+
+def _respan_stmt(stmt: ir.Stmt, span: ir.Span) -> ir.Stmt:
+    changes: dict[str, object] = {"span": span}
+    for f in dataclasses.fields(stmt):
+        value = getattr(stmt, f.name)
+        if isinstance(value, ir.Expr):
+            changes[f.name] = _respan_expr(value, span)
+    return dataclasses.replace(stmt, **changes)
+
+
+def expand(
+    script: ir.Script,
+    parse: Callable[[str, str], ir.Script],
+    *,
+    script_dir: Path,
+    autolevpath: str | None = None,
+) -> tuple[ir.Stmt, ...]:
+    """Statements of ``script`` with ``.a`` macros, ``.r`` macros and ``RUN``
+    files expanded (as :class:`ir.MacroCall` nodes or inline expressions)."""
+    if autolevpath is None:
+        autolevpath = os.environ.get("AUTOLEVPATH")
+    expander = _Expander(parse, script_dir, autolevpath, script.lines)
+    return tuple(expander.statements(script.statements))
+
+
+def flatten(stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
+    """Statements with macro bodies inlined (for pre-passes)."""
+    for s in stmts:
+        if isinstance(s, ir.MacroCall):
+            yield from flatten(s.body)
+        else:
+            yield s
+
+
+# ------------------------------------------------------------------ analysis
+
+
+class Analysis:
+    """Checks statements in order against one :class:`SymbolTable`."""
+
+    def __init__(
+        self, stmts: tuple[ir.Stmt, ...], reserved: frozenset[str] = frozenset()
+    ) -> None:
+        self.namer = Namer(reserved=set(RESERVED_IDENTIFIERS) | set(reserved))
+        self.table = SymbolTable(self.namer)
+        self.degrees = False
+        self._plan_identifiers(stmts)
+
+    # ---------------------------------------------------------- identifiers
+
+    def _plan_identifiers(self, stmts: tuple[ir.Stmt, ...]) -> None:
+        """Fix every Python identifier up front (see :mod:`al2py.naming`)."""
+        flat = list(flatten(stmts))
+        for s in flat:
+            if isinstance(s, ir.Declaration) and s.keyword in _DECL_KIND:
+                kind = _DECL_KIND[s.keyword]
+                if kind in PHYSICAL_KINDS:
+                    for name in self._decl_names(s):
+                        self.namer.note_physical(name)
+        for s in flat:
+            if isinstance(s, ir.Declaration) and s.keyword in _DECL_KIND:
+                kind = _DECL_KIND[s.keyword]
+                for name in self._decl_names(s):
+                    self._ident(name, kind)
+            for e in stmt_exprs(s):
+                for node in walk_expr(e):
+                    if isinstance(node, ir.Name):
+                        self._ident(node.name, _kind_from_spelling(node.name))
+                    elif isinstance(node, ir.IndexedNames):
+                        for n in node.expand():
+                            self._ident(n, "scalar")
+
+    def _decl_names(self, s: ir.Declaration) -> Iterator[str]:
+        for item in s.items:
+            if isinstance(item.target, ir.Name):
+                yield item.target.name
+            elif isinstance(item.target, ir.IndexedNames):
+                yield from item.target.expand()
+
+    def _ident(self, spelling: str, kind: str) -> str:
+        key = spelling.upper()
+        if key in ("T", "PI", "I", "0>", "1>>"):
+            return {"T": "t", "PI": "pi", "I": "I"}.get(key, key)
+        ns = ("phys:" if kind in PHYSICAL_KINDS else "") + key
+        return self.namer.assign(ns, spelling, kind)
+
+    def ident(self, spelling: str, kind: str = "scalar") -> str:
+        """The Python identifier for an Autolev name."""
+        return self._ident(spelling, kind)
+
+    # -------------------------------------------------------------- lookup
+
+    def lookup(self, node: ir.Name) -> Symbol:
+        sym = self.table.quantity(node.name)
+        if sym is None:
+            sym = self.table.physical(node.name)
+        if sym is None:
+            if node.rank and node.key not in ("0>", "1>>"):
+                raise UnsupportedError(
+                    f"vector/dyadic name '{node.name}' needs {_PHYSICS_MSG}, not supported yet",
+                    node.span,
+                )
+            if node.key in ("0>", "1>>"):
+                raise UnsupportedError(
+                    f"'{node.name}' needs {_PHYSICS_MSG}, not supported yet", node.span
+                )
+            raise SemanticError(f"undeclared name '{node.name}'", node.span)
+        if sym.kind in PHYSICAL_KINDS:
+            raise UnsupportedError(
+                f"'{node.name}' is a {sym.kind}; {_PHYSICS_MSG} are not supported yet",
+                node.span,
+            )
+        if node.primes and sym.kind not in ("variable", "specified", "scalar"):
+            raise SemanticError(
+                f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
+            )
+        return sym
+
+    # --------------------------------------------------------------- kinds
+
+    def kind_of(self, expr: ir.Expr) -> Kind:
+        """The kind of value ``expr`` produces, checking names on the way."""
+        method = getattr(self, "_kind_" + type(expr).__name__, None)
+        if method is None:
+            raise SemanticError(
+                f"{type(expr).__name__.lower()} is not allowed here", expr.span
+            )
+        return method(expr)
+
+    def _kind_Number(self, expr: ir.Number) -> Kind:
+        return Kind.SCALAR
+
+    def _kind_String(self, expr: ir.String) -> Kind:
+        raise SemanticError("a string is not a value here", expr.span)
+
+    def _kind_Name(self, expr: ir.Name) -> Kind:
+        sym = self.lookup(expr)
+        return sym.value_kind
+
+    def _kind_Element(self, expr: ir.Element) -> Kind:
+        sym = self.lookup(expr.base)
+        if sym.kind != "matrix":
+            raise SemanticError(f"'{expr.base.name}' is not a matrix", expr.base.span)
+        if len(expr.indices) > 2:
+            raise SemanticError("a matrix element takes one or two indices", expr.span)
+        for i in expr.indices:
+            self._expect_scalar(i)
+        return Kind.SCALAR
+
+    def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
+        return self.kind_of(expr.operand)
+
+    def _kind_BinOp(self, expr: ir.BinOp) -> Kind:
+        left, right = self.kind_of(expr.left), self.kind_of(expr.right)
+        if expr.op in "+-":
+            if (
+                Kind.SCALAR in (left, right)
+                and left != right
+                and Kind.UNKNOWN not in (left, right)
+            ):
+                raise SemanticError(
+                    f"cannot {'add' if expr.op == '+' else 'subtract'} a {right.value} "
+                    f"and a {left.value}",
+                    expr.span,
+                )
+            return left if left is not Kind.UNKNOWN else right
+        if expr.op == "^":
+            if right is not Kind.SCALAR:
+                raise SemanticError("an exponent must be a scalar", expr.right.span)
+            return left
+        if expr.op == "/":
+            if right not in (Kind.SCALAR, Kind.UNKNOWN):
+                raise SemanticError(
+                    f"cannot divide by a {right.value}", expr.right.span
+                )
+            return left
+        if left is Kind.MATRIX or right is Kind.MATRIX:
+            return Kind.MATRIX
+        if left is Kind.SCALAR:
+            return right
+        return left
+
+    def _kind_MatrixLit(self, expr: ir.MatrixLit) -> Kind:
+        for row in expr.rows:
+            for entry in row:
+                k = self.kind_of(entry)
+                if k not in (Kind.SCALAR, Kind.MATRIX, Kind.UNKNOWN):
+                    raise SemanticError(
+                        f"a matrix entry cannot be a {k.value}", entry.span
+                    )
+        return Kind.MATRIX
+
+    def _kind_Call(self, expr: ir.Call) -> Kind:
+        b = BUILTINS.get(expr.key)
+        if b is None:
+            raise SemanticError(f"unknown function or command '{expr.func}'", expr.span)
+        if b.style is Style.PENDING:
+            raise UnsupportedError(
+                f"'{expr.func}' ({b.issue}) is not supported yet", expr.span
+            )
+        message = b.arity_error(len(expr.args))
+        if message:
+            raise SemanticError(message, expr.span)
+        kinds = [self._arg_kind(a) for a in expr.args]
+        return b.result(kinds)
+
+    def _arg_kind(self, arg: ir.Expr) -> Kind:
+        if isinstance(arg, ir.Range):
+            self._expect_scalar(arg.lo)
+            self._expect_scalar(arg.hi)
+            return Kind.SCALAR
+        if isinstance(arg, ir.Equation):
+            self.kind_of(arg.lhs)
+            rhs = arg.rhs
+            if isinstance(rhs, ir.Range):
+                self._expect_scalar(rhs.lo)
+                self._expect_scalar(rhs.hi)
+            else:
+                self.kind_of(rhs)
+            return Kind.SCALAR
+        if isinstance(arg, ir.IndexedNames):
+            for n in arg.expand():
+                self.lookup(ir.Name(arg.span, n, arg.primes))
+            return Kind.MATRIX
+        return self.kind_of(arg)
+
+    def _expect_scalar(self, expr: ir.Expr) -> None:
+        k = self.kind_of(expr)
+        if k not in (Kind.SCALAR, Kind.UNKNOWN):
+            raise SemanticError(f"expected a scalar here, not a {k.value}", expr.span)
+
+    def _kind_Range(self, expr: ir.Range) -> Kind:
+        raise SemanticError(
+            "a range 'a:b' is only allowed as a function argument", expr.span
+        )
+
+    def _kind_Equation(self, expr: ir.Equation) -> Kind:
+        raise SemanticError(
+            "'name=value' is only allowed as a function argument", expr.span
+        )
+
+    def _kind_IndexedNames(self, expr: ir.IndexedNames) -> Kind:
+        raise SemanticError(
+            "'name{...}' is only allowed in declarations and arguments", expr.span
+        )
+
+    # ---------------------------------------------------------- statements
+
+    def enter(self, stmt: ir.Stmt) -> StmtFacts:
+        """Check ``stmt``, update the symbol table, return generator facts."""
+        method = getattr(self, "_enter_" + type(stmt).__name__)
+        return method(stmt)
+
+    def _facts(self, **kw: object) -> StmtFacts:
+        return StmtFacts(degrees=self.degrees, **kw)  # type: ignore[arg-type]
+
+    def _enter_Comment(self, stmt: ir.Comment) -> StmtFacts:
+        return self._facts()
+
+    def _enter_MacroCall(self, stmt: ir.MacroCall) -> StmtFacts:
+        return self._facts()
+
+    def _enter_Setting(self, stmt: ir.Setting) -> StmtFacts:
+        allowed = SETTINGS.get(stmt.name)
+        if allowed is None:
+            raise UnsupportedError(
+                f"setting '{stmt.name}' is not supported yet", stmt.span
+            )
+        value = (stmt.value or "").upper()
+        if allowed == "int":
+            if not value.isdigit() or not 1 <= int(value) <= 17:
+                raise SemanticError(
+                    f"{stmt.name} takes a whole number from 1 to 17", stmt.span
+                )
+        elif allowed == "number":
+            try:
+                float(value)
+            except ValueError:
+                raise SemanticError(f"{stmt.name} takes a number", stmt.span) from None
+        elif value not in allowed:
+            raise SemanticError(f"{stmt.name} takes {', '.join(allowed)}", stmt.span)
+        if stmt.name == "DEGREES":
+            self.degrees = value == "ON"
+        return self._facts()
+
+    def _enter_Declaration(self, stmt: ir.Declaration) -> StmtFacts:
+        if stmt.keyword in _PHYSICS_DECLS:
+            raise UnsupportedError(
+                f"{stmt.keyword.title()} declarations ({_PHYSICS_MSG}) are not supported yet",
+                stmt.span,
+            )
+        kind = _DECL_KIND.get(stmt.keyword)
+        if kind is None:
+            raise UnsupportedError(
+                f"declaration {stmt.keyword} is not supported", stmt.span
+            )
+        for item in stmt.items:
+            names, primes = self._decl_target(item, kind)
+            if item.values and kind not in ("constant", "specified"):
+                raise SemanticError(
+                    f"{stmt.keyword.title()} cannot assign values", item.values[0].span
+                )
+            if len(item.values) > 1:
+                raise SemanticError("one value per declared name", item.values[1].span)
+            for name in names:
+                key = name.upper()
+                old = self.table.quantity(key)
+                if old is not None and old.kind == "time":
+                    raise SemanticError(
+                        f"'{name}' is reserved (time)", item.target.span
+                    )
+                order = primes if kind in ("variable", "specified") else 0
+                self.table.define(
+                    key,
+                    kind,
+                    self._ident(name, kind),
+                    span=item.target.span,
+                    order=order,
+                    sign=item.sign,
+                    has_rhs=bool(item.values),
+                )
+            if item.values:
+                self.kind_of(item.values[0])
+        return self._facts()
+
+    def _decl_target(self, item: ir.DeclItem, kind: str) -> tuple[tuple[str, ...], int]:
+        target = item.target
+        if isinstance(target, ir.Name):
+            if target.rank:
+                raise SemanticError(
+                    f"cannot declare '{target.name}' this way", target.span
+                )
+            if target.primes and kind not in ("variable", "specified"):
+                raise SemanticError(
+                    f"only variables and specified quantities take primes ('{target.autolev}')",
+                    target.span,
+                )
+            return (target.name,), target.primes
+        if isinstance(target, ir.IndexedNames):
+            return target.expand(), target.primes
+        raise SemanticError("expected a name to declare", target.span)
+
+    def _enter_Assign(self, stmt: ir.Assign) -> StmtFacts:
+        value_kind = self.kind_of(stmt.value)
+        target = stmt.target
+        if stmt.op != "=" and stmt.op != ":=":
+            self.kind_of(target)
+        if isinstance(target, ir.Element):
+            for i in target.indices:
+                self._expect_scalar(i)
+            if len(target.indices) > 2:
+                raise SemanticError(
+                    "a matrix element takes one or two indices", target.span
+                )
+            if value_kind not in (Kind.SCALAR, Kind.UNKNOWN):
+                raise SemanticError(
+                    f"a matrix element must be a scalar, not a {value_kind.value}",
+                    stmt.value.span,
+                )
+            sym = self._assign_name(target.base, "matrix")
+            return self._facts(target=sym)
+        if target.rank:
+            raise UnsupportedError(
+                f"assigning '{target.name}' needs {_PHYSICS_MSG}, not supported yet",
+                target.span,
+            )
+        if target.primes:
+            sym = self.table.quantity(target.name)
+            if sym is None:
+                raise SemanticError(f"undeclared name '{target.name}'", target.span)
+            if sym.kind not in ("variable", "specified"):
+                raise SemanticError(
+                    f"'{target.name}' is a {sym.kind}; only variables have derivatives",
+                    target.span,
+                )
+            if value_kind not in (Kind.SCALAR, Kind.UNKNOWN):
+                raise SemanticError(
+                    f"{target.autolev} must be a scalar", stmt.value.span
+                )
+            sym.order = max(sym.order, target.primes)
+            sym.has_rhs = True
+            return self._facts(target=sym)
+        kind = "matrix" if value_kind is Kind.MATRIX else "scalar"
+        sym = self._assign_name(target, kind)
+        return self._facts(target=sym)
+
+    def _assign_name(self, target: ir.Name, kind: str) -> Symbol:
+        sym = self.table.quantity(target.name)
+        if sym is not None and sym.kind in ("time", "imaginary") or target.key == "PI":
+            raise SemanticError(
+                f"'{target.name}' is reserved and cannot be assigned", target.span
+            )
+        if sym is not None and sym.kind in ("constant", "variable", "specified"):
+            if kind == "matrix":
+                raise SemanticError(
+                    f"'{target.name}' is a declared {sym.kind}, not a matrix",
+                    target.span,
+                )
+            sym.has_rhs = True
+            return sym
+        if sym is None or sym.kind != kind:
+            sym = self.table.define(
+                target.key,
+                kind,
+                self._ident(target.name, kind),
+                span=target.span,
+                has_rhs=True,
+            )
+        return sym
+
+    def _enter_ExprStmt(self, stmt: ir.ExprStmt) -> StmtFacts:
+        expr = stmt.expr
+        if isinstance(expr, ir.Name) and not expr.primes and expr.key in STOP_WORDS:
+            return self._facts(stop=True)
+        if isinstance(expr, ir.Call):
+            b = BUILTINS.get(expr.key)
+            if b is not None and b.name in DUAL_FUNCTIONS and expr.args:
+                first = expr.args[0]
+                self.kind_of(expr)
+                if isinstance(first, ir.Name) and not first.primes:
+                    sym = self.lookup(first)
+                    return self._facts(target=sym)
+                return self._facts()
+            if b is not None and b.name == "EIG" and len(expr.args) >= 2:
+                self.kind_of(expr.args[0])
+                for out in expr.args[1:]:
+                    if not isinstance(out, ir.Name) or out.primes or out.rank:
+                        raise SemanticError(
+                            "Eig(A, values, vectors) needs names", out.span
+                        )
+                    self._assign_name(out, "matrix")
+                return self._facts()
+            if b is not None and b.name == "SOLVE":
+                self.kind_of(expr)
+                return self._facts()
+        self.kind_of(expr)
+        return self._facts()
+
+    def _enter_FileCommand(self, stmt: ir.FileCommand) -> StmtFacts:
+        if stmt.command != "SAVE":
+            raise UnsupportedError(f"{stmt.command} is not supported", stmt.span)
+        return self._facts()
+
+    def _pending_numerics(self, stmt: ir.Stmt) -> StmtFacts:
+        word = type(stmt).__name__.removesuffix("Stmt")
+        raise UnsupportedError(
+            f"{word} ({_NUMERICS_MSG}) is not supported yet", stmt.span
+        )
+
+    _enter_InputStmt = _pending_numerics
+    _enter_OutputStmt = _pending_numerics
+    _enter_UnitSystemStmt = _pending_numerics
+    _enter_CodeStmt = _pending_numerics
+
+
+def _kind_from_spelling(name: str) -> str:
+    rank = len(name) - len(name.rstrip(">"))
+    return {0: "scalar", 1: "vector", 2: "dyadic"}.get(rank, "polyadic")

@@ -1,0 +1,196 @@
+"""The table of Autolev's built-in functions and commands.
+
+Each entry says how many arguments a built-in takes, what kind of value it
+returns, and how the generator spells it in Python:
+
+* ``FUNC``: a library function imported from ``al2py_runtime.functions``
+  (``SIN`` -> ``sin``).
+* ``METHOD``: a workspace method (``EXPAND`` -> ``al.expand``); the runtime
+  resolves the first argument's right-hand side, as Autolev does.
+* ``SPECIAL``: emitted by a dedicated generator method (``Solve``, ``Eig`` with
+  three arguments, ``Evaluate``...).
+* ``PENDING``: valid Autolev that al2py does not translate yet; using it is a
+  clear ``not supported yet`` error, never silently dropped.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from enum import Enum
+
+__all__ = ["Style", "Kind", "Builtin", "BUILTINS", "DUAL_FUNCTIONS", "lookup"]
+
+
+class Kind(Enum):
+    """What an expression evaluates to."""
+
+    SCALAR = "scalar"
+    MATRIX = "matrix"
+    VECTOR = "vector"
+    DYADIC = "dyadic"
+    POLYADIC = "polyadic"
+    UNKNOWN = "unknown"
+
+
+class Style(Enum):
+    FUNC = "func"
+    METHOD = "method"
+    SPECIAL = "special"
+    PENDING = "pending"
+
+
+#: A rule giving the result kind from the argument kinds.
+KindRule = Callable[[list[Kind]], Kind]
+
+
+def _scalar(_: list[Kind]) -> Kind:
+    return Kind.SCALAR
+
+
+def _matrix(_: list[Kind]) -> Kind:
+    return Kind.MATRIX
+
+
+def _first(kinds: list[Kind]) -> Kind:
+    return kinds[0] if kinds else Kind.UNKNOWN
+
+
+def _matrix_if_many(kinds: list[Kind]) -> Kind:
+    return Kind.SCALAR if len(kinds) == 1 else Kind.MATRIX
+
+
+def _d(kinds: list[Kind]) -> Kind:
+    if len(kinds) >= 2 and kinds[1] is Kind.MATRIX:
+        return Kind.MATRIX
+    return _first(kinds)
+
+
+def _polynomial(kinds: list[Kind]) -> Kind:
+    return Kind.SCALAR if kinds and kinds[0] is Kind.MATRIX else Kind.MATRIX
+
+
+def _coef(kinds: list[Kind]) -> Kind:
+    if any(k is Kind.MATRIX for k in kinds[:2]):
+        return Kind.MATRIX
+    return _first(kinds)
+
+
+@dataclass(frozen=True, slots=True)
+class Builtin:
+    name: str  # canonical Autolev spelling
+    style: Style
+    python: str  # function or method name in the runtime
+    min_args: int
+    max_args: int | None  # None: no limit
+    result: KindRule = _scalar
+    dual: bool = False  # ``Expand(E)`` alone means ``E := Expand(E)``
+    issue: str = ""  # for PENDING: what brings it
+
+    def arity_error(self, n: int) -> str | None:
+        """A plain-English message if ``n`` arguments are wrong, else None."""
+        lo, hi = self.min_args, self.max_args
+        if lo <= n and (hi is None or n <= hi):
+            return None
+        if hi is None:
+            want = f"at least {lo}"
+        elif lo == hi:
+            want = f"exactly {lo}"
+        else:
+            want = f"{lo} to {hi}"
+        plural = "" if (hi == 1 and lo == 1) else "s"
+        return f"{self.name} takes {want} argument{plural}, not {n}"
+
+
+def _func(name: str, python: str, n: int = 1, hi: int | None = -1) -> Builtin:
+    return Builtin(name, Style.FUNC, python, n, n if hi == -1 else hi, _first)
+
+
+_PHYSICS = "physics commands (bodies, kinematics, Kane's method)"
+_NUMERICS = "numerical CODE jobs"
+
+
+def _pending(name: str, issue: str, lo: int = 0, hi: int | None = None) -> Builtin:
+    return Builtin(name, Style.PENDING, name.lower(), lo, hi, issue=issue)
+
+
+_TABLE: list[Builtin] = [
+    # -- library functions (tutorial Summary: operators and library functions)
+    _func("ABS", "Abs"),
+    _func("SIN", "sin"),
+    _func("COS", "cos"),
+    _func("TAN", "tan"),
+    _func("SINH", "sinh"),
+    _func("COSH", "cosh"),
+    _func("TANH", "tanh"),
+    _func("ASIN", "asin"),
+    _func("ACOS", "acos"),
+    _func("ATAN", "atan"),
+    _func("ATAN2", "atan2", 2),
+    _func("LOG", "log"),
+    _func("LOG10", "log10"),
+    _func("EXP", "exp"),
+    _func("SQR", "sqr"),
+    _func("SQRT", "sqrt"),
+    _func("FACTORIAL", "factorial"),
+    _func("CEIL", "ceil"),
+    _func("FLOOR", "floor"),
+    _func("INT", "trunc"),
+    _func("ROUND", "nint"),
+    _func("MAX", "maxof", 2, None),
+    _func("MIN", "minof", 2, None),
+    _func("SIGN", "sign"),
+    # -- mathematical commands
+    Builtin("D", Style.METHOD, "d", 2, 3, _d),
+    Builtin("DT", Style.METHOD, "dt", 1, 2, _first),
+    Builtin("EVALUATE", Style.SPECIAL, "evaluate", 1, None, _first),
+    Builtin("TAYLOR", Style.SPECIAL, "taylor", 3, None, _first),
+    Builtin("POLYNOMIAL", Style.METHOD, "polynomial", 2, 3, _polynomial),
+    Builtin("ROOTS", Style.METHOD, "roots", 1, 3, _matrix),
+    Builtin("SOLVE", Style.SPECIAL, "solve", 2, None),
+    Builtin("REPLACE", Style.SPECIAL, "replace", 2, None, _first),
+    Builtin("RHS", Style.METHOD, "rhs", 1, 1, _first),
+    Builtin("EXPLICIT", Style.METHOD, "explicit", 1, 2, _first, dual=True),
+    # -- matrix commands
+    Builtin("COLS", Style.METHOD, "cols", 1, None, _matrix_if_many),
+    Builtin("ROWS", Style.METHOD, "rows", 1, None, _matrix_if_many),
+    Builtin("DET", Style.METHOD, "det", 1, 1),
+    Builtin("DIAGMAT", Style.METHOD, "diagmat", 2, 3, _matrix),
+    Builtin("EIG", Style.SPECIAL, "eig", 1, 3, _matrix),
+    Builtin("ELEMENT", Style.METHOD, "element", 2, 3),
+    Builtin("INV", Style.METHOD, "inv", 1, 1, _matrix),
+    Builtin("TRACE", Style.METHOD, "trace", 1, 1),
+    Builtin("TRANSPOSE", Style.METHOD, "transpose", 1, 1, _matrix),
+    # -- simplification commands (dual functions marked)
+    Builtin("ARRANGE", Style.METHOD, "arrange", 3, 3, _first, dual=True),
+    Builtin("COEF", Style.METHOD, "coef", 2, 2, _coef),
+    Builtin("EPSILON", Style.METHOD, "epsilon", 1, 2, _first),
+    Builtin("EXCLUDE", Style.METHOD, "exclude", 2, 2, _first),
+    Builtin("EXPAND", Style.METHOD, "expand", 1, 2, _first, dual=True),
+    Builtin("FACTOR", Style.METHOD, "factor", 1, None, _first, dual=True),
+    Builtin("INCLUDE", Style.METHOD, "include", 2, 2, _first),
+    Builtin("ZEE", Style.METHOD, "zee", 1, 2, _first, dual=True),
+    Builtin("AUTOZ", Style.METHOD, "autoz", 1, 2, _first),
+    # -- physical commands: next milestone
+    *(
+        _pending(n, _PHYSICS)
+        for n in (
+            "MASS INERTIA CM KE MOMENTUM TSTAR GRAVITY FORCE TORQUE FR FRSTAR "
+            "KANE CONSTRAIN NICHECK GYROSTAT SIMPROT DIRCOS ANGVEL KINDIFFS "
+            "V2PTS A2PTS V1PT A1PT EXPRESS REPRESENT DOT CROSS MAG MAGSQ "
+            "UNITVEC VECTOR DYADIC MATRIX PARTIALS REMAINDER"
+        ).split()
+    ),
+    *(_pending(n, _NUMERICS) for n in ("INPUT", "UNITS", "SPLINE", "AUTOTAYLOR")),
+]
+
+BUILTINS: dict[str, Builtin] = {b.name: b for b in _TABLE}
+
+#: Built-ins that, used alone on a line with a name as first argument, assign
+#: the result back to that name (tutorial §6.3).
+DUAL_FUNCTIONS = frozenset(b.name for b in _TABLE if b.dual) | {"EXPRESS"}
+
+
+def lookup(name: str) -> Builtin | None:
+    """The built-in called ``name`` (any case), or None."""
+    return BUILTINS.get(name.upper())

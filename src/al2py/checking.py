@@ -1,0 +1,310 @@
+"""Compare a converted module's responses with an Autolev transcript (``.all``).
+
+Comparison is mathematical, never textual: Autolev's printed response is parsed
+with al2py's own parser, evaluated into sympy in the module's workspace, and
+compared with our value at random points (numbers within the ``Digits`` that
+were in force).  A response matches *strictly* when it is equal with every
+named quantity left as a symbol, and *after resolving* when it is equal once
+right-hand sides are substituted on both sides (Autolev and al2py may keep
+different intermediate names).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from . import ir
+from .errors import AutolevError
+from .parser import parse
+
+__all__ = [
+    "TranscriptEntry",
+    "parse_transcript",
+    "ResponseCheck",
+    "check_responses",
+    "evaluate_text",
+    "compare",
+]
+
+_INPUT = re.compile(r"^\s*\((\d+)\)\s?(.*)$")
+_RESPONSE = re.compile(r"^\s*->\s*\((\d+)\)\s*(.*)$")
+
+
+@dataclass(frozen=True)
+class TranscriptEntry:
+    """One numbered line of a transcript."""
+
+    number: int
+    is_response: bool
+    text: str
+
+    @property
+    def label(self) -> str:
+        """``"M5[1,1]"`` for ``M5[1,1] = D/(A*D-B*C)`` (upper case, no spaces)."""
+        return re.sub(r"\s+", "", self.text.split("=", 1)[0]).upper()
+
+    @property
+    def value_text(self) -> str:
+        return self.text.split("=", 1)[1].strip() if "=" in self.text else ""
+
+
+def parse_transcript(text: str) -> list[TranscriptEntry]:
+    """Entries of an ``.all`` file, in order (unnumbered lines are ignored)."""
+    out = []
+    for line in text.splitlines():
+        m = _RESPONSE.match(line)
+        if m:
+            out.append(TranscriptEntry(int(m.group(1)), True, m.group(2).strip()))
+            continue
+        m = _INPUT.match(line)
+        if m:
+            out.append(TranscriptEntry(int(m.group(1)), False, m.group(2).rstrip()))
+    return out
+
+
+# ------------------------------------------------------------- evaluation
+
+
+_FUNCS = {
+    "SIN": sp.sin,
+    "COS": sp.cos,
+    "TAN": sp.tan,
+    "SINH": sp.sinh,
+    "COSH": sp.cosh,
+    "TANH": sp.tanh,
+    "ASIN": sp.asin,
+    "ACOS": sp.acos,
+    "ATAN": sp.atan,
+    "ATAN2": sp.atan2,
+    "LOG": sp.log,
+    "EXP": sp.exp,
+    "SQRT": sp.sqrt,
+    "ABS": sp.Abs,
+    "SIGN": sp.sign,
+    "LOG10": lambda x: sp.log(x, 10),
+    "SQR": lambda x: x**2,
+}
+
+
+class _Evaluator:
+    """Evaluates an expression IR in a workspace (names -> its symbols/values)."""
+
+    def __init__(self, ws: object) -> None:
+        self.ws = ws
+
+    def __call__(self, node: ir.Expr) -> object:
+        return getattr(self, type(node).__name__)(node)
+
+    def Number(self, node: ir.Number) -> object:  # noqa: N802 - dispatch on node type
+        return sp.Rational(node.text.lower())
+
+    def Name(self, node: ir.Name) -> object:  # noqa: N802
+        key = node.key
+        if key == "I" and node.primes == 0:
+            return sp.I
+        ws = self.ws
+        try:
+            kind = ws.kind(key)  # type: ignore[attr-defined]
+            if kind in (None, "value"):
+                return ws.value(node.autolev)  # type: ignore[attr-defined]
+            return ws.symbol(node.autolev)  # type: ignore[attr-defined]
+        except KeyError:
+            return sp.Symbol(node.autolev)
+
+    def Element(self, node: ir.Element) -> object:  # noqa: N802
+        base = self(node.base)
+        idx = [int(self(i)) - 1 for i in node.indices]
+        if isinstance(base, sp.MatrixBase):
+            return base[idx[0]] if len(idx) == 1 else base[idx[0], idx[1]]
+        raise ValueError(f"{node.base.name} is not a matrix")
+
+    def UnaryOp(self, node: ir.UnaryOp) -> object:  # noqa: N802
+        v = self(node.operand)
+        return -v if node.op == "-" else v
+
+    def BinOp(self, node: ir.BinOp) -> object:  # noqa: N802
+        a, b = self(node.left), self(node.right)
+        if node.op == "+":
+            return a + b
+        if node.op == "-":
+            return a - b
+        if node.op == "*":
+            return a * b
+        if node.op == "/":
+            return a / b
+        return a**b
+
+    def Call(self, node: ir.Call) -> object:  # noqa: N802
+        f = _FUNCS.get(node.key)
+        if f is None:
+            raise ValueError(f"cannot evaluate {node.func}(...) in a response")
+        return f(*(self(a) for a in node.args))
+
+    def MatrixLit(self, node: ir.MatrixLit) -> object:  # noqa: N802
+        rows = [[self(e) for e in row] for row in node.rows]
+        if any(isinstance(e, sp.MatrixBase) for row in rows for e in row):
+            return sp.BlockMatrix(rows).as_explicit()
+        return sp.Matrix(rows)
+
+
+def evaluate_text(text: str, ws: object) -> object:
+    """Evaluate Autolev expression ``text`` with names taken from ``ws``."""
+    script = parse(f"CHECKED_VALUE_ = {text}\n", "<response>")
+    stmts = [s for s in script.statements if isinstance(s, ir.Assign)]
+    if len(stmts) != 1:
+        raise ValueError(f"not one expression: {text!r}")
+    return _Evaluator(ws)(stmts[0].value)
+
+
+# ------------------------------------------------------------- comparison
+
+
+def _leaves(expr: sp.Basic) -> list[sp.Basic]:
+    """Things to replace by random numbers: derivatives first, then functions
+    of time, then symbols."""
+    derivs = sorted(expr.atoms(sp.Derivative), key=sp.default_sort_key, reverse=True)
+    funcs = sorted(expr.atoms(sp.core.function.AppliedUndef), key=sp.default_sort_key)
+    syms = sorted(expr.free_symbols, key=sp.default_sort_key)
+    return [*derivs, *funcs, *syms]
+
+
+def _as_matrix(value: object) -> sp.Matrix:
+    if isinstance(value, sp.MatrixBase):
+        return sp.Matrix(value)
+    return sp.Matrix([[sp.sympify(value)]])
+
+
+def compare(
+    expected: object, ours: object, digits: int = 7, *, trials: int = 3, seed: int = 1
+) -> str | None:
+    """None if equal (within ``digits``) at random points, else a reason."""
+    a, b = _as_matrix(expected), _as_matrix(ours)
+    if a.shape != b.shape:
+        if a.shape == b.T.shape and 1 in a.shape:
+            b = b.T
+        else:
+            return (
+                f"shape {b.shape[0]}x{b.shape[1]} instead of {a.shape[0]}x{a.shape[1]}"
+            )
+    rtol = 5 * 10.0 ** (1 - digits)
+    rng = random.Random(seed)
+    for _ in range(trials):
+        values: dict[sp.Basic, sp.Basic] = {}
+        for m in (a, b):
+            for e in m:
+                for leaf in _leaves(sp.sympify(e)):
+                    if leaf not in values:
+                        values[leaf] = sp.Float(rng.uniform(0.5, 1.5), 30)
+        for i, (x, y) in enumerate(zip(a, b, strict=True)):
+            x, y = sp.sympify(x), sp.sympify(y)
+            xv = complex(x.xreplace(values).evalf(30))
+            yv = complex(y.xreplace(values).evalf(30))
+            if x.is_number and y.is_number:
+                # A printed number: equal to within one unit in its last digit.
+                tol = _last_digit(max(abs(xv.real), abs(xv.imag)), digits)
+            else:
+                tol = rtol * max(abs(xv), abs(yv), 1.0)
+            if abs(xv.real - yv.real) > tol or abs(xv.imag - yv.imag) > tol:
+                where = f" (element {i + 1})" if len(a) > 1 else ""
+                return f"differs{where}: expected {xv:.8g}, got {yv:.8g}"
+    return None
+
+
+def _last_digit(magnitude: float, digits: int) -> float:
+    """One unit in the last of ``digits`` significant digits of ``magnitude``."""
+    if magnitude == 0:
+        return 10.0 ** (-digits)
+    return 10.0 ** (math.floor(math.log10(magnitude)) - digits + 1)
+
+
+# ----------------------------------------------------------------- checks
+
+
+@dataclass(frozen=True)
+class ResponseCheck:
+    """The verdict for one expected response."""
+
+    entry: TranscriptEntry
+    ok: bool
+    how: str  # "strict", "resolved", or the reason for failure
+    ours: str = ""
+
+
+def _our_value(
+    label: str, responses: Sequence[object], start: int
+) -> tuple[object, int, int]:
+    """Find our response for ``label`` at or after ``start``.
+
+    Returns (value, digits, where the next search starts).  A matrix response
+    also answers element labels (``M5[1,1]``), so it stays current."""
+    m = re.match(r"^(.*?)(?:\[(\d+)(?:,(\d+))?\])?$", label)
+    assert m is not None
+    base = m.group(1)
+    idx = [int(g) for g in m.groups()[1:] if g]
+    for k in range(start, len(responses)):
+        r = responses[k]
+        rl = r.label.upper().replace(" ", "")  # type: ignore[attr-defined]
+        if rl == label:
+            return r.value, r.digits, k + 1  # type: ignore[attr-defined]
+        if idx and rl == base and isinstance(r.value, sp.MatrixBase):  # type: ignore[attr-defined]
+            v = r.value  # type: ignore[attr-defined]
+            try:
+                if len(idx) == 1:
+                    return v[idx[0] - 1], r.digits, k  # type: ignore[attr-defined]
+                return v[idx[0] - 1, idx[1] - 1], r.digits, k  # type: ignore[attr-defined]
+            except IndexError:
+                continue
+    raise LookupError(label)
+
+
+def check_responses(
+    entries: Iterable[TranscriptEntry],
+    ws: object,
+    responses: Sequence[object] | None = None,
+) -> list[ResponseCheck]:
+    """Check every response of a transcript against a workspace's responses."""
+    if responses is None:
+        responses = ws.responses  # type: ignore[attr-defined]
+    out = []
+    cursor = 0
+    for entry in entries:
+        if not entry.is_response:
+            continue
+        try:
+            ours, digits, k = _our_value(entry.label, responses, cursor)
+        except LookupError:
+            out.append(ResponseCheck(entry, False, "no such response from the module"))
+            continue
+        cursor = k
+        out.append(_check_one(entry, ours, digits, ws))
+    return out
+
+
+def _check_one(
+    entry: TranscriptEntry, ours: object, digits: int, ws: object
+) -> ResponseCheck:
+    from al2py_runtime.printing import autolev_str
+
+    shown = autolev_str(ours, digits)
+    try:
+        expected = evaluate_text(entry.value_text, ws)
+    except (AutolevError, ValueError, TypeError, KeyError) as exc:
+        return ResponseCheck(
+            entry, False, f"cannot read Autolev's response: {exc}", shown
+        )
+    reason = compare(expected, ours, digits)
+    if reason is None:
+        return ResponseCheck(entry, True, "strict", shown)
+    resolve = ws.resolve  # type: ignore[attr-defined]
+    if (
+        compare(resolve(_as_matrix(expected)), resolve(_as_matrix(ours)), digits)
+        is None
+    ):
+        return ResponseCheck(entry, True, "resolved", shown)
+    return ResponseCheck(entry, False, reason, shown)

@@ -1,0 +1,517 @@
+"""Code generation: one small emitter per IR node, found by node type.
+
+Statement emitters (``stmt_<Node>``) return lines of Python; expression
+emitters (``expr_<Node>``) return ``(code, precedence)`` so parentheses appear
+only where Python needs them.  Built-in functions are spelled through the
+table in :mod:`al2py.builtins`.  Every string that comes from the ``.al``
+file reaches the output through :func:`repr` or a ``#`` comment, so a script
+cannot inject code.
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+from collections import defaultdict
+from collections.abc import Iterator
+
+from . import ir
+from .analysis import Analysis, StmtFacts, Symbol, walk_expr
+from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
+from .errors import InternalError, SemanticError
+
+__all__ = ["Generator", "Imports"]
+
+# Python operator precedence (higher binds tighter).
+ATOM, POWER, UNARY, MUL, ADD = 100, 90, 80, 70, 60
+
+_RUNTIME = "al2py_runtime"
+_FUNCTIONS = "al2py_runtime.functions"
+_DEGREE_VARIANTS = {
+    "SIN": "sin_deg",
+    "COS": "cos_deg",
+    "TAN": "tan_deg",
+    "ASIN": "asin_deg",
+    "ACOS": "acos_deg",
+    "ATAN": "atan_deg",
+    "ATAN2": "atan2_deg",
+}
+_SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
+_COMMENT_WIDTH = 84
+
+
+class Imports:
+    """The names a generated module imports, by module."""
+
+    def __init__(self) -> None:
+        self._by_module: dict[str, set[str]] = defaultdict(set)
+
+    def use(self, module: str, name: str) -> str:
+        self._by_module[module].add(name)
+        return name
+
+    def lines(self) -> list[str]:
+        out = []
+        for module in sorted(self._by_module):
+            names = ", ".join(
+                sorted(self._by_module[module], key=lambda n: (n.lower(), n))
+            )
+            out.append(f"from {module} import {names}")
+        return out
+
+
+class Generator:
+    """Turns analysed statements into the body of a Python module."""
+
+    def __init__(self, analysis: Analysis, lines: tuple[str, ...]) -> None:
+        self.an = analysis
+        self.lines = lines
+        self.imports = Imports()
+        self.imports.use(_RUNTIME, "Workspace")
+        self._facts = StmtFacts()
+        self._line = 0
+        self.stopped_at: int | None = None
+
+    # ------------------------------------------------------------ driving
+
+    def body(self, stmts: tuple[ir.Stmt, ...]) -> list[str]:
+        """Python lines for ``stmts`` (checked in order by the analysis)."""
+        out: list[str] = []
+        for stmt in stmts:
+            if self.stopped_at is not None:
+                break
+            out.extend(self.statement(stmt))
+        return out
+
+    def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
+        self._facts = self.an.enter(stmt)
+        self._line = line if line is not None else stmt.span.line
+        emit = getattr(self, "stmt_" + type(stmt).__name__, None)
+        if emit is None:
+            raise InternalError(f"no emitter for {type(stmt).__name__}")
+        code = emit(stmt)
+        if isinstance(stmt, ir.Comment) or line is not None:
+            return code
+        return [*self.echo(stmt), *code]
+
+    def echo(self, stmt: ir.Stmt) -> list[str]:
+        """The ``.al`` source of a statement, as Python comments."""
+        first, last = stmt.span.line, max(stmt.span.end_line, stmt.span.line)
+        text = [
+            self.lines[i - 1].strip()
+            for i in range(first, last + 1)
+            if i <= len(self.lines)
+        ]
+        return [c for t in text if t for c in comment_lines(t)]
+
+    # -------------------------------------------------------- statements
+
+    def stmt_Comment(self, stmt: ir.Comment) -> list[str]:
+        text = stmt.text.strip()
+        if stmt.code_comment:
+            text = "%" + text
+        return comment_lines(text) if text else ["#"]
+
+    def stmt_Setting(self, stmt: ir.Setting) -> list[str]:
+        value = stmt.value or ""
+        arg = value if re.fullmatch(r"\d+", value) else repr(value.upper())
+        if stmt.name == "AUTOEPSILON":
+            arg = _number_code(value)
+        return [f"al.set({stmt.name.title()!r}, {arg})"]
+
+    def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
+        method = {
+            "CONSTANTS": "constants",
+            "VARIABLES": "variables",
+            "SPECIFIED": "specified",
+            "IMAGINARY": "imaginary",
+        }[stmt.keyword]
+        names: list[str] = []
+        specs: list[str] = []
+        assigns: list[str] = []
+        for item in stmt.items:
+            target = item.target
+            if isinstance(target, ir.IndexedNames):
+                spellings = target.expand()
+                primes = target.primes
+            else:
+                assert isinstance(target, ir.Name)
+                spellings = (target.name,)
+                primes = target.primes
+            for spelling in spellings:
+                sym = self._symbol(spelling)
+                names.append(sym.ident)
+                specs.append(repr(sym.key + "'" * primes + (item.sign or "")))
+            if item.values:
+                sym = self._symbol(spellings[-1])
+                value = self.expr(item.values[0])
+                assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
+        call = f"al.{method}({', '.join(specs)})"
+        return [f"{', '.join(names)} = {call}", *assigns]
+
+    def stmt_Assign(self, stmt: ir.Assign) -> list[str]:
+        target = stmt.target
+        sym = self._facts.target
+        if sym is None:
+            raise InternalError("assignment without a target symbol")
+        value = self.expr(stmt.value)
+        if stmt.op not in ("=", ":="):
+            current = (
+                self.expr(target)
+                if isinstance(target, ir.Element)
+                else self._current(sym)
+            )
+            op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
+            value = f"{current} {op} ({value})"
+        label = self._label(target)
+        call = f"al.assign({label!r}, {value}, line={self._line})"
+        if isinstance(target, ir.Name) and (
+            target.primes or sym.kind in ("constant", "variable", "specified")
+        ):
+            return [call]
+        return [f"{sym.ident} = {call}"]
+
+    def _current(self, sym: Symbol) -> str:
+        if sym.kind == "matrix":
+            return sym.ident
+        return f"al.val({sym.ident})"
+
+    def _label(self, target: ir.Expr) -> str:
+        if isinstance(target, ir.Element):
+            idx = []
+            for i in target.indices:
+                if not isinstance(i, ir.Number) or not i.is_integer:
+                    raise SemanticError(
+                        "an assigned element needs whole-number indices", i.span
+                    )
+                idx.append(str(int(i.text)))
+            return f"{target.base.key}[{','.join(idx)}]"
+        assert isinstance(target, ir.Name)
+        return target.autolev
+
+    def stmt_ExprStmt(self, stmt: ir.ExprStmt) -> list[str]:
+        expr = stmt.expr
+        if self._facts.stop:
+            self.stopped_at = stmt.span.line
+            return [f"# {expr.name.title()}: Autolev stops reading the script here."]  # type: ignore[union-attr]
+        if isinstance(expr, ir.Call):
+            b = BUILTINS.get(expr.key)
+            if (
+                b is not None
+                and b.name in DUAL_FUNCTIONS
+                and self._facts.target is not None
+            ):
+                sym = self._facts.target
+                value = self.expr(expr)
+                bind = (
+                    ""
+                    if sym.kind in ("constant", "variable", "specified")
+                    else f"{sym.ident} = "
+                )
+                return [f"{bind}al.update({sym.key!r}, {value}, line={self._line})"]
+            if b is not None and b.name == "EIG" and len(expr.args) >= 2:
+                return self._eig_outputs(expr)
+            if b is not None and b.name == "SOLVE":
+                return [self._solve(expr)]
+        label = re.sub(r"\s+", "", span_source(self.lines, expr.span)).upper()
+        return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
+
+    def _eig_outputs(self, call: ir.Call) -> list[str]:
+        outs = [self._symbol_for_name(a) for a in call.args[1:]]
+        idents = ", ".join(s.ident for s in outs)
+        keys = ", ".join(repr(s.key) for s in outs)
+        matrix = self.expr(call.args[0])
+        source = (
+            f"al.eig_vectors({matrix})" if len(outs) == 2 else f"[al.eig({matrix})]"
+        )
+        lhs = idents if len(outs) > 1 else idents + ","
+        return [
+            f"{lhs} = al.assign_all(({keys}{',' if len(outs) == 1 else ''}), {source}, line={self._line})"
+        ]
+
+    def _solve(self, call: ir.Call) -> str:
+        args = list(call.args)
+        if (
+            isinstance(args[0], ir.Name)
+            and args[0].key in _SOLVE_OPTIONS
+            and self.an.table.quantity(args[0].name) is None
+        ):
+            args = args[1:]
+        if len(args) < 2:
+            raise SemanticError(
+                "Solve needs equations and at least one unknown", call.span
+            )
+        eqs = self.expr(args[0])
+        unknowns: list[str] = []
+        for a in args[1:]:
+            if isinstance(a, ir.IndexedNames):
+                unknowns.extend(self._indexed(a))
+            else:
+                unknowns.append(self.expr(a))
+        return f"al.solve({eqs}, [{', '.join(unknowns)}], line={self._line})"
+
+    def stmt_MacroCall(self, stmt: ir.MacroCall) -> list[str]:
+        name = stmt.source.replace("\\", "/").rsplit("/", 1)[-1]
+        what = "runs" if stmt.name == "RUN" else "expands macro"
+        out = [f"# ... {what} {name}:"]
+        for inner in stmt.body:
+            if self.stopped_at is not None:
+                break
+            out.extend(self.statement(inner, line=self._line))
+        out.append(f"# ... end of {name}")
+        return out
+
+    def stmt_FileCommand(self, stmt: ir.FileCommand) -> list[str]:
+        return [f"al.save({stmt.filename!r})"]
+
+    # -------------------------------------------------------- expressions
+
+    def expr(self, node: ir.Expr) -> str:
+        return self._expr(node)[0]
+
+    def _expr(self, node: ir.Expr) -> tuple[str, int]:
+        emit = getattr(self, "expr_" + type(node).__name__, None)
+        if emit is None:
+            raise SemanticError(
+                f"{type(node).__name__.lower()} is not allowed here", node.span
+            )
+        return emit(node)
+
+    def _wrap(self, node: ir.Expr, min_prec: int) -> str:
+        code, prec = self._expr(node)
+        return f"({code})" if prec < min_prec else code
+
+    def expr_Number(self, node: ir.Number) -> tuple[str, int]:
+        return _number_code(node.text), ATOM
+
+    def expr_Name(self, node: ir.Name) -> tuple[str, int]:
+        sym = self.an.lookup(node)
+        ident = sym.ident
+        if sym.kind == "time":
+            self.imports.use(_RUNTIME, "t")
+        elif ident == "pi":
+            self.imports.use("sympy", "pi")
+        elif ident == "I":
+            self.imports.use("sympy", "I")
+        if not node.primes:
+            return ident, ATOM
+        if sym.kind == "scalar":
+            code = f"al.dt({ident})"
+            for _ in range(node.primes - 1):
+                code = f"al.dt({code})"
+            return code, ATOM
+        self.imports.use(_RUNTIME, "t")
+        order = "" if node.primes == 1 else f", {node.primes}"
+        return f"{ident}.diff(t{order})", ATOM
+
+    def expr_Element(self, node: ir.Element) -> tuple[str, int]:
+        base = self.an.lookup(node.base).ident
+        idx = ", ".join(self._index(i) for i in node.indices)
+        return f"{base}[{idx}]", ATOM
+
+    def _index(self, node: ir.Expr) -> str:
+        if isinstance(node, ir.Number) and node.is_integer:
+            return str(int(node.text) - 1)
+        return f"int({self.expr(node)}) - 1"
+
+    def expr_UnaryOp(self, node: ir.UnaryOp) -> tuple[str, int]:
+        return f"{node.op}{self._wrap(node.operand, UNARY)}", UNARY
+
+    def expr_BinOp(self, node: ir.BinOp) -> tuple[str, int]:
+        if node.op == "^":
+            base = self._exact(node.left) or self._wrap(node.left, POWER + 1)
+            return f"{base} ** {self._wrap(node.right, UNARY)}", POWER
+        if (
+            node.op == "/"
+            and _is_int_literal(node.left)
+            and _is_int_literal(node.right)
+        ):
+            self.imports.use("sympy", "Rational")
+            return f"Rational({self.expr(node.left)}, {self.expr(node.right)})", ATOM
+        prec = ADD if node.op in "+-" else MUL
+        left = self._exact(node.left) if node.op == "/" else None
+        left = left or self._wrap(node.left, prec)
+        right = self._wrap(node.right, prec + 1)
+        op = {"+": "+", "-": "-", "*": "*", "/": "/"}[node.op]
+        return f"{left} {op} {right}", prec
+
+    def _exact(self, node: ir.Expr) -> str | None:
+        """``Integer(n)`` for a pure-number left operand, so Python keeps exactness."""
+        if not any(
+            isinstance(n, ir.Name | ir.Call | ir.Element) for n in walk_expr(node)
+        ):
+            if isinstance(node, ir.Number) and node.is_integer:
+                self.imports.use("sympy", "Integer")
+                return f"Integer({int(node.text)})"
+        return None
+
+    def expr_MatrixLit(self, node: ir.MatrixLit) -> tuple[str, int]:
+        blocks = any(
+            self.an.kind_of(e) is Kind.MATRIX for row in node.rows for e in row
+        )
+        rows = ["[" + ", ".join(self.expr(e) for e in row) + "]" for row in node.rows]
+        if blocks:
+            return f"al.block([{', '.join(rows)}])", ATOM
+        self.imports.use("sympy", "Matrix")
+        if all(len(r) == 1 for r in node.rows) and len(node.rows) > 1:
+            return f"Matrix([{', '.join(self.expr(r[0]) for r in node.rows)}])", ATOM
+        return f"Matrix([{', '.join(rows)}])", ATOM
+
+    def expr_String(self, node: ir.String) -> tuple[str, int]:
+        raise SemanticError("a string is not a value here", node.span)
+
+    def expr_Range(self, node: ir.Range) -> tuple[str, int]:
+        return f"({self.expr(node.lo)}, {self.expr(node.hi)})", ATOM
+
+    def expr_Equation(self, node: ir.Equation) -> tuple[str, int]:
+        raise SemanticError("'name=value' is not allowed in this argument", node.span)
+
+    def expr_IndexedNames(self, node: ir.IndexedNames) -> tuple[str, int]:
+        return f"[{', '.join(self._indexed(node))}]", ATOM
+
+    def _indexed(self, node: ir.IndexedNames) -> list[str]:
+        return [self.expr(ir.Name(node.span, n, node.primes)) for n in node.expand()]
+
+    def expr_Call(self, node: ir.Call) -> tuple[str, int]:
+        b = BUILTINS.get(node.key)
+        if b is None:
+            raise SemanticError(f"unknown function or command '{node.func}'", node.span)
+        emit = getattr(self, "call_" + b.python, None)
+        if emit is not None:
+            return emit(node, b), ATOM
+        if b.style is Style.FUNC:
+            name = b.python
+            if self._facts.degrees and b.name in _DEGREE_VARIANTS:
+                name = _DEGREE_VARIANTS[b.name]
+            self.imports.use(_FUNCTIONS, name)
+            return f"{name}({self._args(node.args)})", ATOM
+        if b.style is Style.METHOD:
+            return f"al.{b.python}({self._args(node.args)})", ATOM
+        if b.name == "SOLVE":
+            raise SemanticError(
+                "Solve is a stand-alone command; use it alone on a line", node.span
+            )
+        raise InternalError(f"no emitter for built-in {b.name}")
+
+    def _args(self, args: tuple[ir.Expr, ...]) -> str:
+        return ", ".join(self.expr(a) for a in args)
+
+    def call_evaluate(self, node: ir.Call, b: Builtin) -> str:
+        subject, *pairs = node.args
+        if not pairs:
+            return f"al.evaluate({self.expr(subject)})"
+        return f"al.evaluate({self.expr(subject)}, {self._substitutions(pairs, 'Evaluate')})"
+
+    def call_replace(self, node: ir.Call, b: Builtin) -> str:
+        subject, *pairs = node.args
+        items = []
+        for p in pairs:
+            if not isinstance(p, ir.Equation) or isinstance(p.rhs, ir.Range):
+                raise SemanticError("Replace takes old=new pairs", p.span)
+            items.append(f"({self.expr(p.lhs)}, {self.expr(p.rhs)})")
+        return f"al.replace({self.expr(subject)}, [{', '.join(items)}])"
+
+    def call_taylor(self, node: ir.Call, b: Builtin) -> str:
+        subject, order, *points = node.args
+        if isinstance(order, ir.Equation):
+            raise SemanticError(
+                "Taylor's second argument is the order, e.g. 0:2", order.span
+            )
+        items = []
+        for p in points:
+            if not isinstance(p, ir.Equation):
+                raise SemanticError(
+                    "Taylor expands about name=value or name=value:increment", p.span
+                )
+            self._check_substitutable(p.lhs)
+            if isinstance(p.rhs, ir.Range):
+                items.append(
+                    f"({self.expr(p.lhs)}, {self.expr(p.rhs.lo)}, {self.expr(p.rhs.hi)})"
+                )
+            else:
+                items.append(f"({self.expr(p.lhs)}, {self.expr(p.rhs)})")
+        return (
+            f"al.taylor({self.expr(subject)}, {self.expr(order)}, [{', '.join(items)}])"
+        )
+
+    def call_eig(self, node: ir.Call, b: Builtin) -> str:
+        if len(node.args) != 1:
+            raise SemanticError(
+                "Eig(A, values, vectors) is a stand-alone command", node.span
+            )
+        return f"al.eig({self.expr(node.args[0])})"
+
+    def call_solve(self, node: ir.Call, b: Builtin) -> str:
+        raise SemanticError(
+            "Solve is a stand-alone command; use it alone on a line", node.span
+        )
+
+    def _substitutions(self, pairs: list[ir.Expr], command: str) -> str:
+        items = []
+        for p in pairs:
+            if not isinstance(p, ir.Equation) or isinstance(p.rhs, ir.Range):
+                raise SemanticError(f"{command} takes name=value pairs", p.span)
+            self._check_substitutable(p.lhs)
+            items.append(f"{self.expr(p.lhs)}: {self.expr(p.rhs)}")
+        return "{" + ", ".join(items) + "}"
+
+    def _check_substitutable(self, lhs: ir.Expr) -> None:
+        if not isinstance(lhs, ir.Name):
+            raise SemanticError("expected a name on the left of '='", lhs.span)
+
+    # ------------------------------------------------------------- helpers
+
+    def _symbol(self, spelling: str) -> Symbol:
+        sym = self.an.table.get(spelling)
+        if sym is None:
+            raise InternalError(f"{spelling} missing from the symbol table")
+        return sym
+
+    def _symbol_for_name(self, node: ir.Expr) -> Symbol:
+        assert isinstance(node, ir.Name)
+        return self._symbol(node.name)
+
+
+def _is_int_literal(node: ir.Expr) -> bool:
+    if isinstance(node, ir.UnaryOp):
+        return _is_int_literal(node.operand)
+    return isinstance(node, ir.Number) and node.is_integer
+
+
+def _number_code(text: str) -> str:
+    """A Python literal for an Autolev number (``1.0E-07`` -> ``1.0e-07``)."""
+    text = text.strip().lower()
+    if text.isdigit():
+        return str(int(text))
+    if text.startswith("."):
+        text = "0" + text
+    text = text.replace(".e", ".0e")
+    if text.endswith("."):
+        text += "0"
+    return text
+
+
+def comment_lines(text: str) -> list[str]:
+    """``text`` as ``#`` comment lines, wrapped, never able to end the comment."""
+    out = []
+    for raw in text.splitlines() or [""]:
+        raw = raw.replace("\r", " ").expandtabs(4).rstrip()
+        chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
+        out.extend(f"# {c}".rstrip() for c in chunks)
+    return out
+
+
+def span_source(lines: tuple[str, ...], span: ir.Span) -> str:
+    """The source text under ``span`` (single- or multi-line)."""
+    if not span.end_line or span.line < 1 or span.line > len(lines):
+        return ""
+    if span.end_line == span.line:
+        return lines[span.line - 1][span.col - 1 : span.end_col - 1]
+    parts = [lines[span.line - 1][span.col - 1 :]]
+    parts += [lines[i - 1] for i in range(span.line + 1, span.end_line)]
+    parts.append(lines[span.end_line - 1][: span.end_col - 1])
+    return " ".join(p.rstrip("& ") for p in parts)
+
+
+def iter_stmts(stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
+    yield from stmts

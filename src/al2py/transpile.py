@@ -1,0 +1,95 @@
+"""The pipeline: parse -> expand macros -> analyse + generate -> template -> black."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+import black
+import jinja2
+
+from . import __version__
+from .analysis import Analysis, expand
+from .errors import AutolevError, InternalError
+from .generator import Generator
+from .parser import parse
+
+__all__ = ["convert", "Conversion"]
+
+
+@dataclass(frozen=True)
+class Conversion:
+    """The result of converting one ``.al`` file."""
+
+    code: str
+    module: str
+
+
+@cache
+def _template() -> jinja2.Template:
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("al2py", "templates"),
+        autoescape=False,
+        keep_trailing_newline=True,
+        undefined=jinja2.StrictUndefined,
+    )
+    return env.get_template("module.py.j2")
+
+
+def module_name(filename: str) -> str:
+    """A Python module name for ``filename`` (``tutor6.al`` -> ``tutor6``)."""
+    stem = Path(filename).stem or "autolev"
+    name = re.sub(r"\W", "_", stem)
+    return name if not name[0].isdigit() else "m_" + name
+
+
+def convert(
+    text: str,
+    filename: str = "<stdin>",
+    *,
+    script_dir: Path | None = None,
+    autolevpath: str | None = None,
+) -> Conversion:
+    """Convert Autolev source ``text`` into the source of a Python module.
+
+    Raises :class:`al2py.errors.AutolevError` (with a source span) for input
+    that is malformed or not supported.
+    """
+    script = parse(text, filename)
+    if script_dir is None:
+        script_dir = (
+            Path(filename).parent if filename not in ("-", "<stdin>") else Path.cwd()
+        )
+    stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
+    analysis = Analysis(stmts)
+    generator = Generator(analysis, script.lines)
+    try:
+        body = generator.body(stmts)
+    except AutolevError as exc:
+        if not exc.line_text and exc.span is not None and exc.span.file == filename:
+            line = exc.span.line
+            if 0 < line <= len(script.lines):
+                exc.line_text = script.lines[line - 1]
+        raise
+    source_name = (
+        Path(filename).name if filename not in ("-", "<stdin>") else "stdin.al"
+    )
+    module = module_name(source_name)
+    safe_name = re.sub(r"[^\w.\-]", "_", source_name)
+    code = _template().render(
+        title=f"Autolev script {safe_name}, converted to Python.",
+        source_name=safe_name,
+        source_name_repr=repr(source_name),
+        module=module,
+        version=__version__,
+        imports=generator.imports.lines(),
+        body="\n".join(body),
+        source_lines=repr(script.lines),
+    )
+    try:
+        code = black.format_str(code, mode=black.Mode())
+    except black.InvalidInput as exc:  # the generator wrote invalid Python
+        raise InternalError(f"generated code does not parse: {exc}") from None
+    return Conversion(code, module)

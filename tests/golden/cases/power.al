@@ -1,0 +1,3 @@
+POWER(3,A)
+Constants A,B
+POWER(A+B,ED)
