@@ -29,7 +29,9 @@ from typing import Any
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from .mechanics import MechanicsMixin
 from .names import Key, parse_key
+from .numerics import NumericsMixin
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
@@ -101,7 +103,7 @@ class _Entry:
     extra: dict = field(default_factory=dict)
 
 
-class Workspace(Mapping):
+class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     """Names, values and responses of one Autolev script.
 
     The workspace is a read-only mapping from Autolev spellings to current
