@@ -1,0 +1,486 @@
+"""Print sympy values in Autolev's syntax, as Autolev prints its responses.
+
+>>> import sympy as sp
+>>> from sympy.physics.mechanics import dynamicsymbols
+>>> X, Y = dynamicsymbols("X Y")
+>>> autolev_str(-sp.pi + (X + 2*Y)**2 + 3*X.diff()**2)
+"-3.141593 + (X+2*Y)^2 + 3*X'^2"
+>>> autolev_str(sp.Matrix([[1, sp.pi], [X.diff(), sp.Rational(1, 12)]]))
+"[1, 3.141593; X', 0.08333333]"
+
+Conventions (see ``docs/semantics.md``):
+
+* names print in upper case, variables ``X(t)`` as ``X``, derivatives with
+  primes (``X''``), ``t`` as ``T`` and the imaginary unit as ``i``;
+* integers print exactly; every other number (rationals, floats, ``pi``,
+  ``sqrt(2)``, complex numbers) prints with ``digits`` significant digits and
+  numeric subexpressions collapse to one number (``-pi + C*X`` prints
+  ``-3.141593 + C*X``);
+* sums print with spaces around ``+``/``-`` at the top level only, as Autolev
+  does (``A^2 + B*C`` but ``B*(A+D)``);
+* powers use ``^``; ``sqrt(y)`` prints ``y^0.5``; negative powers go into a
+  denominator (``D/(A*D-B*C)``).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import mpmath
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.physics.mechanics import dynamicsymbols
+
+__all__ = ["autolev_str", "format_response", "format_number"]
+
+_t = dynamicsymbols._t
+
+# Precedence levels: a child printed with a lower level than its context needs
+# parentheses.
+_ADD, _MUL, _NEG, _POW, _ATOM = 10, 20, 15, 30, 40
+
+_FUNCTION_NAMES = {
+    "Abs": "ABS",
+    "ceiling": "CEIL",
+    "trunc": "INT",
+    "nint": "ROUND",
+    "Max": "MAX",
+    "Min": "MIN",
+    "factorial": "FACTORIAL",
+}
+
+
+def format_number(value: Any, digits: int = 7) -> str:
+    """Print a real number like Autolev: ``digits`` significant digits.
+
+    Integers print exactly; trailing zeros are dropped; very small or large
+    magnitudes use ``1.0E-07`` style.
+
+    >>> format_number(sp.pi), format_number(sp.Rational(1, 720)), format_number(1e-7)
+    ('3.141593', '0.001388889', '1.0E-07')
+    """
+    value = sp.sympify(value)
+    if isinstance(value, sp.Integer):
+        return str(int(value))
+    mpf = mpmath.mpf(value.evalf(digits + 10)._mpf_)
+    if mpf == 0:
+        return "0"
+    x = float(mpf)
+    if math.isfinite(x) and x != 0:
+        text = format(x, f".{digits}g")
+    else:  # beyond double range
+        text = mpmath.nstr(mpf, digits, min_fixed=-4, max_fixed=digits)
+    return _exponent_style(text)
+
+
+def _exponent_style(text: str) -> str:
+    """``1e-07`` -> ``1.0E-07``; ``1.234568e+07`` -> ``1.234568E+07``."""
+    if "e" not in text:
+        return text
+    mantissa, exp = text.split("e")
+    if "." not in mantissa:
+        mantissa += ".0"
+    sign = "-" if exp.startswith("-") else "+"
+    return f"{mantissa}E{sign}{exp.lstrip('+-').zfill(2)}"
+
+
+class _AutolevPrinter:
+    """Recursive printer; each method returns ``(text, precedence)``."""
+
+    def __init__(self, digits: int) -> None:
+        if not 1 <= digits <= 17:
+            raise ValueError(f"digits must be between 1 and 17, not {digits}")
+        self.digits = digits
+
+    # ------------------------------------------------------------ dispatch
+
+    def text(self, expr: Any, top: bool = False) -> str:
+        return self.show(expr, top)[0]
+
+    def paren(self, expr: Any, level: int) -> str:
+        """Print ``expr`` (nested), parenthesized if it binds looser than level."""
+        text, prec = self.show(expr, False)
+        return f"({text})" if prec < level else text
+
+    def show(self, expr: Any, top: bool) -> tuple[str, int]:
+        if isinstance(expr, sp.MatrixBase):
+            return self.matrix(expr), _ATOM
+        if not isinstance(expr, sp.Basic):
+            try:
+                expr = sp.sympify(expr)
+            except (sp.SympifyError, TypeError):
+                return str(expr), _ATOM
+        if isinstance(expr, sp.Expr) and expr.is_number and not expr.has(AppliedUndef):
+            return self.number(expr, top)
+        if isinstance(expr, sp.Symbol):
+            return ("T" if expr == _t else expr.name.upper()), _ATOM
+        if isinstance(expr, sp.Add):
+            return self.add(expr, top)
+        if isinstance(expr, sp.Mul):
+            return self.mul(expr)
+        if isinstance(expr, sp.Pow):
+            return self.power(expr)
+        if isinstance(expr, sp.Derivative):
+            return self.derivative(expr), _ATOM
+        if isinstance(expr, AppliedUndef):
+            name = expr.func.__name__.upper()
+            if expr.args == (_t,):
+                return name, _ATOM
+            return f"{name}({self.args(expr.args)})", _ATOM
+        if isinstance(expr, sp.Function | sp.Max | sp.Min):
+            return self.function(expr), _ATOM
+        if isinstance(expr, sp.Equality):
+            return f"{self.text(expr.lhs, top)} = {self.text(expr.rhs, top)}", 0
+        return str(expr), _ATOM
+
+    def args(self, args: Any) -> str:
+        return ", ".join(self.text(a) for a in args)
+
+    # ------------------------------------------------------------- numbers
+
+    def number(self, expr: sp.Expr, top: bool) -> tuple[str, int]:
+        if isinstance(expr, sp.Integer):
+            return str(int(expr)), (_NEG if expr < 0 else _ATOM)
+        value = expr.evalf(self.digits + 10)
+        re, im = value.as_real_imag()
+        if not (re.is_number and im.is_number):
+            return str(expr), _ATOM
+        re = self.round_part(re)
+        im = self.round_part(im)
+        if im == 0:
+            text = format_number(re, self.digits)
+            return text, (_NEG if text.startswith("-") else _ATOM)
+        imag = self.imaginary(im)
+        if re == 0:
+            return imag, (_NEG if imag.startswith("-") else _MUL)
+        sep = " " if top else ""
+        real = format_number(re, self.digits)
+        if imag.startswith("-"):
+            return f"{real}{sep}-{sep}{imag[1:]}", _ADD
+        return f"{real}{sep}+{sep}{imag}", _ADD
+
+    def round_part(self, x: sp.Expr) -> sp.Expr:
+        """Exact integers stay exact (``2.0`` from evalf prints ``2``)."""
+        if x == 0:
+            return sp.Integer(0)
+        return x
+
+    def imaginary(self, im: sp.Expr) -> str:
+        mag = format_number(abs(im), self.digits)
+        body = "i" if mag == "1" else f"{mag}*i"
+        return "-" + body if im < 0 else body
+
+    # ---------------------------------------------------------------- sums
+
+    def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
+        numeric = [a for a in expr.args if a.is_number and not a.has(AppliedUndef)]
+        others = [a for a in expr.args if a not in numeric]
+        terms = sorted(others, key=_term_key)
+        if numeric:
+            const = sp.Add(*numeric)
+            if const != 0:
+                terms.insert(0, const)
+        sep = " " if top else ""
+        out = ""
+        for k, term in enumerate(terms):
+            text, prec = self.show(term, top)
+            if prec < _NEG and term is not terms[0]:
+                text = f"({text})"
+            if k == 0:
+                out = text
+            elif text.startswith("-"):
+                out += f"{sep}-{sep}{text[1:]}"
+            else:
+                out += f"{sep}+{sep}{text}"
+        return out or "0", _ADD
+
+    # ------------------------------------------------------------ products
+
+    def mul(self, expr: sp.Mul) -> tuple[str, int]:
+        numeric = [a for a in expr.args if a.is_number and not a.has(AppliedUndef)]
+        coeff = sp.Mul(*numeric)
+        num, den = [], []
+        for factor in expr.args:
+            if factor in numeric:
+                continue
+            base, exp = factor.as_base_exp()
+            if exp.is_number and exp.is_extended_negative and not factor.is_Function:
+                den.append(sp.Pow(base, -exp))
+            else:
+                num.append(factor)
+        num, flips = self.flip_signs(num)
+        den, flips_den = self.flip_signs(den)
+        if (flips + flips_den) % 2:
+            coeff = -coeff
+        num.sort(key=_factor_key)
+        den.sort(key=_factor_key)
+        sign, coeff_text = self.coefficient(coeff)
+        parts = [self.paren(f, _MUL) for f in num]
+        if coeff_text:
+            parts.insert(0, coeff_text)
+        text = "*".join(parts) if parts else "1"
+        if den:
+            dens = [self.paren(f, _POW if len(den) == 1 else _MUL) for f in den]
+            if len(den) == 1:
+                text += "/" + dens[0]
+            else:
+                text += "/(" + "*".join(dens) + ")"
+        return sign + text, (_NEG if sign else _MUL)
+
+    def flip_signs(self, factors: list[sp.Expr]) -> tuple[list[sp.Expr], int]:
+        """Negate sums that would print with a leading minus: ``-(B-D)/A``."""
+        out, flips = [], 0
+        for factor in factors:
+            if isinstance(factor, sp.Add) and _leading_negative(factor):
+                factor = sp.Add(*[-a for a in factor.args])
+                flips += 1
+            out.append(factor)
+        return out, flips
+
+    def coefficient(self, coeff: sp.Expr) -> tuple[str, str]:
+        """Split a numeric coefficient into its sign and magnitude text."""
+        if coeff == 1:
+            return "", ""
+        if coeff == -1:
+            return "-", ""
+        value = coeff.evalf(self.digits + 10)
+        re, im = value.as_real_imag()
+        if im == 0 and re.is_number:
+            text = format_number(
+                abs(coeff) if coeff.is_Integer else abs(re), self.digits
+            )
+            return ("-" if re < 0 else ""), text
+        if re == 0:
+            imag = self.imaginary(im)
+            return ("-", imag[1:]) if imag.startswith("-") else ("", imag)
+        text, _ = self.number(coeff, False)
+        return "", f"({text})"
+
+    # -------------------------------------------------------------- powers
+
+    def power(self, expr: sp.Pow) -> tuple[str, int]:
+        base, exp = expr.as_base_exp()
+        if exp.is_number and exp.is_extended_negative:
+            return self.mul(sp.Mul(1, expr, evaluate=False))
+        base_text, base_prec = self.show(base, False)
+        if base_prec <= _POW or base_text.startswith("-"):
+            base_text = f"({base_text})"
+        exp_text, exp_prec = self.show(exp, False)
+        if exp_prec < _ATOM and not exp_text.startswith("-"):
+            exp_text = f"({exp_text})"
+        elif exp_text.startswith("-") and not exp.is_number:
+            exp_text = f"({exp_text})"
+        return f"{base_text}^{exp_text}", _POW
+
+    # -------------------------------------------------------- derivatives
+
+    def derivative(self, expr: sp.Derivative) -> str:
+        inner = expr.expr
+        counts = expr.variable_count
+        if isinstance(inner, AppliedUndef) and inner.args == (_t,):
+            if all(v == _t for v, _ in counts):
+                return self.text(inner) + "'" * sum(int(n) for _, n in counts)
+        text = self.text(inner)
+        for var, n in counts:
+            for _ in range(int(n)):
+                if var == _t:
+                    text = f"DT({text})"
+                else:
+                    text = f"D({text}, {self.text(var)})"
+        return text
+
+    # ----------------------------------------------------------- functions
+
+    def function(self, expr: sp.Function) -> str:
+        name = type(expr).__name__
+        label = _FUNCTION_NAMES.get(name, name.upper())
+        args = expr.args
+        if name in ("Max", "Min") and len(args) > 2:
+            head = type(expr)(*args[1:])
+            return f"{label}({self.text(args[0])}, {self.function(head)})"
+        return f"{label}({self.args(args)})"
+
+    # ------------------------------------------------------------ matrices
+
+    def matrix(self, m: sp.MatrixBase) -> str:
+        rows = []
+        for i in range(m.rows):
+            rows.append(", ".join(self.text(m[i, j], True) for j in range(m.cols)))
+        return "[" + "; ".join(rows) + "]"
+
+
+def _leading_negative(expr: sp.Add) -> bool:
+    """Whether the sum prints with a leading minus (first term negative)."""
+    numeric = [a for a in expr.args if a.is_number]
+    const = sp.Add(*numeric)
+    if const != 0:
+        first = const
+    else:
+        first = min((a for a in expr.args if not a.is_number), key=_term_key)
+    coeff = first.as_coeff_Mul()[0] if not first.is_number else first
+    re = coeff.evalf(5).as_real_imag()[0] if coeff.is_number else sp.Integer(1)
+    return bool(re.is_negative)
+
+
+def _factor_key(factor: sp.Expr) -> tuple:
+    """Order factors of a product: names and functions first, sums last."""
+    base = factor.as_base_exp()[0]
+    return (isinstance(base, sp.Add), sp.default_sort_key(factor))
+
+
+def _term_key(term: sp.Expr) -> tuple:
+    """Order terms of a sum roughly as Autolev does: by degree, then by the
+    number of factors (``4*X^2 + 7*X*Y``), then by name."""
+    degree = 0
+    for factor in sp.Mul.make_args(term):
+        if factor.is_number:
+            continue
+        _, exp = factor.as_base_exp()
+        degree += int(exp) if exp.is_Integer and exp > 0 else 1
+    factors = [f for f in sp.Mul.make_args(term) if not f.is_number]
+    return (degree, len(factors), sp.default_sort_key(sp.Mul(*factors)))
+
+
+# ------------------------------------------------------- vectors, dyadics
+
+
+def _is_vector(value: Any) -> bool:
+    from sympy.physics.vector import Vector
+
+    return isinstance(value, Vector)
+
+
+def _is_dyadic(value: Any) -> bool:
+    from sympy.physics.vector import Dyadic
+
+    return isinstance(value, Dyadic)
+
+
+def _unit_name(frame: Any, index: int) -> str:
+    return f"{str(frame.name).upper()}{index + 1}>"
+
+
+def _unit_vector_name(vec: Any) -> str:
+    (components, frame), *_ = vec.args
+    for k in range(3):
+        if components[k] != 0:
+            return _unit_name(frame, k)
+    raise ValueError("not a unit vector")
+
+
+def _join_terms(
+    printer: _AutolevPrinter, terms: list[tuple[Any, str]], zero: str
+) -> str:
+    out = ""
+    for coef, tail in terms:
+        coef = sp.sympify(coef)
+        if coef == 1:
+            text = tail
+        elif coef == -1:
+            text = "-" + tail
+        else:
+            ctext, prec = printer.show(coef, False)
+            if prec < _NEG or (prec == _ADD):
+                ctext = f"({ctext})"
+            text = f"{ctext}*{tail}"
+        if not out:
+            out = text
+        elif text.startswith("-"):
+            out += " - " + text[1:]
+        else:
+            out += " + " + text
+    return out or zero
+
+
+def _vector_str(printer: _AutolevPrinter, vec: Any) -> str:
+    terms = []
+    for components, frame in vec.args:
+        for k in range(3):
+            if components[k] != 0:
+                terms.append((components[k], _unit_name(frame, k)))
+    return _join_terms(printer, terms, "0>")
+
+
+def _dyadic_str(printer: _AutolevPrinter, dyad: Any) -> str:
+    terms = []
+    for coef, v1, v2 in dyad.args:
+        if coef != 0:
+            terms.append((coef, f"{_unit_vector_name(v1)}*{_unit_vector_name(v2)}"))
+    return _join_terms(printer, terms, "0>>")
+
+
+# ------------------------------------------------------------------ API
+
+
+def autolev_str(value: Any, digits: int = 7) -> str:
+    """Return ``value`` written in Autolev syntax.
+
+    >>> import sympy as sp
+    >>> A, B, C, D = sp.symbols("A B C D")
+    >>> autolev_str(D/(A*D - B*C))
+    'D/(A*D-B*C)'
+    >>> autolev_str(sp.Matrix([-1.650629, -0.1746854 - 1.546869*sp.I]))
+    '[-1.650629; -0.1746854 - 1.546869*i]'
+    """
+    printer = _AutolevPrinter(digits)
+    if _is_vector(value):
+        return _vector_str(printer, value)
+    if _is_dyadic(value):
+        return _dyadic_str(printer, value)
+    if isinstance(value, str):
+        return value
+    if not isinstance(value, sp.Basic | sp.MatrixBase) and hasattr(value, "name"):
+        return str(value.name).upper()
+    if isinstance(value, bool):
+        return "ON" if value else "OFF"
+    return printer.text(value, True)
+
+
+def format_response(
+    label: str, value: Any, digits: int = 7, width: int = 80
+) -> list[str]:
+    """Lines of an Autolev response ``LABEL = value`` (without ``-> (n)``).
+
+    A matrix whose one-line form is longer than ``width``, or which has an
+    element with a symbolic denominator (as Autolev's ``Inv`` and ``Roots``
+    responses), prints one element per line.
+
+    >>> import sympy as sp
+    >>> A, B = sp.symbols("A B")
+    >>> format_response("M", sp.Matrix([[A, B]]))
+    ['M = [A, B]']
+    >>> format_response("R", sp.Matrix([1/A, 2/B]))
+    ['R[1] = 1/A', 'R[2] = 2/B']
+    """
+    if isinstance(value, sp.MatrixBase):
+        line = f"{label} = {autolev_str(value, digits)}"
+        if value.rows * value.cols > 1 and (
+            len(line) > width or _has_denominator(value)
+        ):
+            return _element_lines(label, value, digits)
+        return [line]
+    return [f"{label} = {autolev_str(value, digits)}"]
+
+
+def _element_lines(label: str, value: sp.MatrixBase, digits: int) -> list[str]:
+    lines = []
+    vector_like = value.rows == 1 or value.cols == 1
+    for i in range(value.rows):
+        for j in range(value.cols):
+            if vector_like:
+                index = f"[{max(i, j) + 1}]"
+            else:
+                index = f"[{i + 1},{j + 1}]"
+            lines.append(f"{label}{index} = {autolev_str(value[i, j], digits)}")
+    return lines
+
+
+def _has_denominator(value: sp.MatrixBase) -> bool:
+    for element in value:
+        if not isinstance(element, sp.Expr) or element.is_number:
+            continue
+        _, den = sp.fraction(element)
+        if not den.is_number:
+            return True
+    return False
