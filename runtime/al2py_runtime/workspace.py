@@ -229,6 +229,9 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     def value(self, name: str) -> Any:
         """The current value of an Autolev name, element or derivative."""
         key = parse_key(name)
+        form = self._form_value(key)
+        if form is not NotImplemented:
+            return form
         if key.name in self._values:
             val = self._values[key.name]
             if key.index:
@@ -324,6 +327,9 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     ) -> Any:
         key = parse_key(target)
         value = self.normalize(value, rearrange=rearrange)
+        form = self._assign_form(key, value, line=line)
+        if form is not NotImplemented:
+            return form
         if key.index:
             binding = self._store_element(key, value)
             label = str(Key(key.name, 0, key.index))
@@ -538,10 +544,8 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         With a matrix ``x`` (``D(Xp, Xm)``) the result is the Jacobian whose
         row i, column j is the derivative of element i of ``y`` by element j.
         """
-        if frame is not None:
-            raise NotImplementedError(
-                "D(vector, x, frame) arrives with the physics commands"
-            )
+        if frame is not None or _is_vectorial(self.val(y)):
+            return self._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
         if isinstance(x, sp.MatrixBase):
             xs = list(x)
             y = self.resolve(self.val(y), keep=xs)
@@ -554,10 +558,8 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
 
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides."""
-        if frame is not None:
-            raise NotImplementedError(
-                "Dt(vector, frame) arrives with the physics commands"
-            )
+        if frame is not None or _is_vectorial(self.val(y)):
+            return self._vector_dt(self.resolve(self.val(y)), frame)
         y = self.resolve(self.val(y))
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: sp.diff(e, t))
@@ -725,6 +727,12 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
 
 
+def _is_vectorial(value: Any) -> bool:
+    from sympy.physics.vector import Dyadic, Vector
+
+    return isinstance(value, Vector | Dyadic)
+
+
 def _diff(y: Any, x: Any) -> Any:
     if isinstance(y, sp.Basic):
         return sp.diff(y, x)
@@ -751,7 +759,7 @@ def _delegate(module: str, func: str) -> Any:
 
 for _module, _names in {
     "algebra": "expand factor polynomial roots coef exclude include arrange replace epsilon",
-    "matrices": "rows cols det diagmat element inv trace transpose",
+    "matrices": "rows cols det diagmat element inv transpose",
 }.items():
     for _name in _names.split():
         setattr(Workspace, _name, _delegate(_module, _name))
