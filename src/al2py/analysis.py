@@ -19,8 +19,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import ir
-from .builtins import BUILTINS, DUAL_FUNCTIONS, Kind, Style
+from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import MacroError, ParseError, SemanticError, UnsupportedError
+from .forms import FORM_KINDS, Form, match
 from .naming import PHYSICAL_KINDS, Namer
 
 __all__ = ["Symbol", "SymbolTable", "Analysis", "StmtFacts", "expand", "walk_expr"]
@@ -39,11 +40,8 @@ _DECL_KIND = {
     "PARTICLES": "particle",
     "POINTS": "point",
 }
-_PHYSICS_DECLS = frozenset(
-    {"NEWTONIAN", "FRAMES", "BODIES", "PARTICLES", "POINTS", "MASS", "INERTIA"}
-)
-_PHYSICS_MSG = "physics commands (bodies, kinematics, Kane's method)"
-_NUMERICS_MSG = "numerical CODE jobs (Input, Output, UnitSystem, CODE)"
+_FRAME_KINDS = frozenset({"newtonian", "frame", "body"})
+_POINT_KINDS = frozenset({"point", "particle"})
 
 #: Settings accepted by the runtime, with the values they take.
 SETTINGS: dict[str, tuple[str, ...] | str] = {
@@ -57,6 +55,11 @@ SETTINGS: dict[str, tuple[str, ...] | str] = {
     "OVERWRITE": ("ON", "OFF"),
     "AUTOEXPRESS": ("ON", "OFF"),
 }
+#: Integration parameters that ``Input`` sets without a declaration.
+INTEGRATION_PARAMETERS = frozenset(
+    {"TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR"}
+)
+CODE_OPTIONS = frozenset({"DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC"})
 #: Names that stop reading the script (Autolev ends the session).
 STOP_WORDS = frozenset({"EXIT", "QUIT"})
 #: Python names every generated module uses; user names avoid them.
@@ -81,6 +84,10 @@ class Symbol:
     def value_kind(self) -> Kind:
         if self.kind in SCALAR_KINDS:
             return Kind.SCALAR
+        if self.kind in _FRAME_KINDS:
+            return Kind.FRAME
+        if self.kind in _POINT_KINDS:
+            return Kind.POINT
         try:
             return Kind(self.kind)
         except ValueError:
@@ -128,6 +135,8 @@ class StmtFacts:
     degrees: bool = False
     target: Symbol | None = None  # symbol assigned by an Assign
     stop: bool = False  # EXIT/QUIT: nothing after this runs
+    form: Form | None = None  # syntactical form assigned (``P_O_P> = ...``)
+    new_constants: tuple[Symbol, ...] = ()  # declared by Mass/Inertia items
 
 
 # ------------------------------------------------------------------ helpers
@@ -428,6 +437,8 @@ class Analysis:
         self.namer = Namer(reserved=set(RESERVED_IDENTIFIERS) | set(reserved))
         self.table = SymbolTable(self.namer)
         self.degrees = False
+        #: Object names appearing anywhere, also inside forms (``P_O_Ao>``).
+        self.mentioned: set[str] = set()
         self._plan_identifiers(stmts)
 
     # ---------------------------------------------------------- identifiers
@@ -441,6 +452,8 @@ class Analysis:
                 if kind in PHYSICAL_KINDS:
                     for name in self._decl_names(s):
                         self.namer.note_physical(name)
+                        if kind in _FRAME_KINDS:
+                            self.namer.note_physical(name + "O")
         for s in flat:
             if isinstance(s, ir.Declaration) and s.keyword in _DECL_KIND:
                 kind = _DECL_KIND[s.keyword]
@@ -450,6 +463,7 @@ class Analysis:
                 for node in walk_expr(e):
                     if isinstance(node, ir.Name):
                         self._ident(node.name, _kind_from_spelling(node.name))
+                        self.mentioned.update(_parts(node.name))
                     elif isinstance(node, ir.IndexedNames):
                         for n in node.expand():
                             self._ident(n, "scalar")
@@ -474,26 +488,36 @@ class Analysis:
 
     # -------------------------------------------------------------- lookup
 
+    def is_frame(self, name: str) -> bool:
+        sym = self.table.physical(name)
+        return sym is not None and sym.kind in _FRAME_KINDS
+
+    def is_point(self, name: str) -> bool:
+        sym = self.table.physical(name)
+        return sym is not None and sym.kind in _POINT_KINDS
+
+    def is_body(self, name: str) -> bool:
+        sym = self.table.physical(name)
+        return sym is not None and sym.kind in ("body", "particle")
+
+    def form(self, node: ir.Name) -> Form | None:
+        """The syntactical form ``node`` spells (``V_P_N>``, ``A1>``), if any."""
+        if node.key in ("0>", "1>>") or "_" not in node.name and not node.rank:
+            return None
+        return match(node.name, self.is_frame, self.is_point, self.is_body)
+
     def lookup(self, node: ir.Name) -> Symbol:
+        """The symbol a (non-form) name refers to; errors for undeclared names."""
         sym = self.table.quantity(node.name)
         if sym is None:
             sym = self.table.physical(node.name)
         if sym is None:
-            if node.rank and node.key not in ("0>", "1>>"):
-                raise UnsupportedError(
-                    f"vector/dyadic name '{node.name}' needs {_PHYSICS_MSG}, not supported yet",
+            if node.rank:
+                raise SemanticError(
+                    f"'{node.name}' is not defined (assign it before using it)",
                     node.span,
                 )
-            if node.key in ("0>", "1>>"):
-                raise UnsupportedError(
-                    f"'{node.name}' needs {_PHYSICS_MSG}, not supported yet", node.span
-                )
             raise SemanticError(f"undeclared name '{node.name}'", node.span)
-        if sym.kind in PHYSICAL_KINDS:
-            raise UnsupportedError(
-                f"'{node.name}' is a {sym.kind}; {_PHYSICS_MSG} are not supported yet",
-                node.span,
-            )
         if node.primes and sym.kind not in ("variable", "specified", "scalar"):
             raise SemanticError(
                 f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
@@ -518,8 +542,16 @@ class Analysis:
         raise SemanticError("a string is not a value here", expr.span)
 
     def _kind_Name(self, expr: ir.Name) -> Kind:
-        sym = self.lookup(expr)
-        return sym.value_kind
+        if expr.key == "0>":
+            return Kind.VECTOR
+        if expr.key == "1>>":
+            return Kind.DYADIC
+        form = self.form(expr)
+        if form is not None:
+            if expr.primes:
+                raise SemanticError(f"'{expr.name}' has no time derivative", expr.span)
+            return FORM_KINDS[form.kind]
+        return self.lookup(expr).value_kind
 
     def _kind_Element(self, expr: ir.Element) -> Kind:
         sym = self.lookup(expr.base)
@@ -559,10 +591,21 @@ class Analysis:
                 )
             return left
         if left is Kind.MATRIX or right is Kind.MATRIX:
+            if Kind.VECTOR in (left, right) or Kind.DYADIC in (left, right):
+                raise SemanticError("cannot multiply a matrix and a vector", expr.span)
             return Kind.MATRIX
+        if left is Kind.VECTOR and right is Kind.VECTOR:
+            return Kind.DYADIC
+        if {left, right} & {Kind.FRAME, Kind.POINT, Kind.WORD}:
+            raise SemanticError("frames and points are not values", expr.span)
         if left is Kind.SCALAR:
             return right
-        return left
+        if right is Kind.SCALAR or right is Kind.UNKNOWN:
+            return left
+        raise SemanticError(
+            f"cannot multiply a {left.value} by a {right.value} (use Dot or Cross)",
+            expr.span,
+        )
 
     def _kind_MatrixLit(self, expr: ir.MatrixLit) -> Kind:
         for row in expr.rows:
@@ -585,8 +628,60 @@ class Analysis:
         message = b.arity_error(len(expr.args))
         if message:
             raise SemanticError(message, expr.span)
-        kinds = [self._arg_kind(a) for a in expr.args]
-        return b.result(kinds)
+        if b.statement:
+            raise SemanticError(
+                f"{expr.func} is a stand-alone command; use it alone on a line",
+                expr.span,
+            )
+        return b.result(self.arg_kinds(expr))
+
+    def arg_kinds(self, call: ir.Call) -> list[Kind]:
+        """Check a call's arguments; option words (``ANGULAR``) are WORD."""
+        b = BUILTINS[call.key]
+        kinds = []
+        for i, a in enumerate(call.args):
+            if i in b.words:
+                if not isinstance(a, ir.Name) or a.primes or a.rank:
+                    raise SemanticError(f"{b.name} expects an option word here", a.span)
+                kinds.append(Kind.WORD)
+            elif b.name in ("FORCE", "TORQUE") and i == 0:
+                kinds.append(self._load_target(a, b.name))
+            elif b.name == "CONSTRAIN":
+                kinds.append(self._constraint(a))
+            else:
+                kinds.append(self._arg_kind(a))
+        return kinds
+
+    def _load_target(self, arg: ir.Expr, command: str) -> Kind:
+        want = Kind.POINT if command == "FORCE" else Kind.FRAME
+        names = (
+            [arg.left, arg.right]
+            if isinstance(arg, ir.BinOp) and arg.op == "/"
+            else [arg]
+        )
+        for n in names:
+            if not isinstance(n, ir.Name) or self.kind_of(n) is not want:
+                noun = "point or particle" if want is Kind.POINT else "frame or body"
+                raise SemanticError(f"{command.title()} needs a {noun} here", n.span)
+        return want
+
+    def _constraint(self, arg: ir.Expr) -> Kind:
+        if not (
+            isinstance(arg, ir.Element)
+            and arg.base.key in ("DEPENDENT", "AUXILIARY")
+            and all(isinstance(i, ir.Name) for i in arg.indices)
+        ):
+            raise SemanticError(
+                "Constrain takes DEPENDENT[speeds] or AUXILIARY[speeds]", arg.span
+            )
+        sym = self.table.quantity(arg.base.key)
+        if sym is None or sym.kind != "matrix":
+            raise SemanticError(f"{arg.base.name} has not been assigned", arg.span)
+        for i in arg.indices:
+            assert isinstance(i, ir.Name)
+            if self.lookup(i).kind != "variable":
+                raise SemanticError(f"'{i.name}' is not a generalized speed", i.span)
+        return Kind.MATRIX
 
     def _arg_kind(self, arg: ir.Expr) -> Kind:
         if isinstance(arg, ir.Range):
@@ -668,11 +763,10 @@ class Analysis:
         return self._facts()
 
     def _enter_Declaration(self, stmt: ir.Declaration) -> StmtFacts:
-        if stmt.keyword in _PHYSICS_DECLS:
-            raise UnsupportedError(
-                f"{stmt.keyword.title()} declarations ({_PHYSICS_MSG}) are not supported yet",
-                stmt.span,
-            )
+        if stmt.keyword == "MASS":
+            return self._enter_mass(stmt)
+        if stmt.keyword == "INERTIA":
+            return self._enter_inertia(stmt)
         kind = _DECL_KIND.get(stmt.keyword)
         if kind is None:
             raise UnsupportedError(
@@ -686,26 +780,103 @@ class Analysis:
                 )
             if len(item.values) > 1:
                 raise SemanticError("one value per declared name", item.values[1].span)
+            if kind in PHYSICAL_KINDS and primes:
+                raise SemanticError("objects have no derivatives", item.target.span)
             for name in names:
-                key = name.upper()
-                old = self.table.quantity(key)
-                if old is not None and old.kind == "time":
-                    raise SemanticError(
-                        f"'{name}' is reserved (time)", item.target.span
-                    )
-                order = primes if kind in ("variable", "specified") else 0
-                self.table.define(
-                    key,
-                    kind,
-                    self._ident(name, kind),
-                    span=item.target.span,
-                    order=order,
-                    sign=item.sign,
-                    has_rhs=bool(item.values),
-                )
+                self._declare(name, kind, item, primes)
             if item.values:
                 self.kind_of(item.values[0])
         return self._facts()
+
+    def _declare(
+        self, name: str, kind: str, item: ir.DeclItem, primes: int = 0
+    ) -> Symbol:
+        key = name.upper()
+        old = self.table.quantity(key)
+        if old is not None and old.kind == "time":
+            raise SemanticError(f"'{name}' is reserved (time)", item.target.span)
+        if kind in PHYSICAL_KINDS and "_" in name:
+            raise SemanticError(
+                f"object names cannot contain underscores ('{name}')", item.target.span
+            )
+        order = primes if kind in ("variable", "specified") else 0
+        sym = self.table.define(
+            key,
+            kind,
+            self._ident(name, kind),
+            span=item.target.span,
+            order=order,
+            sign=item.sign,
+            has_rhs=bool(item.values),
+        )
+        if kind in _FRAME_KINDS:
+            point = "particle" if kind == "body" else "point"
+            self.table.define(
+                key + "O", point, self._ident(name + "o", point), span=item.target.span
+            )
+        return sym
+
+    def _new_constant(self, node: ir.Expr, sign: str | None) -> Symbol | None:
+        """Declare ``node`` as a constant if it is a fresh bare name."""
+        if not isinstance(node, ir.Name) or node.primes or node.rank:
+            return None
+        if self.table.get(node.name) is not None:
+            return None
+        item = ir.DeclItem(node.span, node, sign=sign)
+        return self._declare(node.name, "constant", item)
+
+    def _enter_mass(self, stmt: ir.Declaration) -> StmtFacts:
+        new: list[Symbol] = []
+        for item in stmt.items:
+            target = item.target
+            if not isinstance(target, ir.Name) or not self.is_body(target.name):
+                raise SemanticError("Mass takes body or particle names", target.span)
+            if not item.values or len(item.values) > 2:
+                raise SemanticError(
+                    "write Mass A=mA or Mass A=mA=value", item.target.span
+                )
+            first = item.values[0]
+            sym = self._new_constant(first, "+")
+            if sym is not None:
+                new.append(sym)
+            elif len(item.values) == 2:
+                raise SemanticError(
+                    "in Mass A=m=value, m must be a new name", first.span
+                )
+            else:
+                self._expect_scalar(first)
+            if len(item.values) == 2:
+                self._expect_scalar(item.values[1])
+                new[-1].has_rhs = True
+        return self._facts(new_constants=tuple(new))
+
+    def _enter_inertia(self, stmt: ir.Declaration) -> StmtFacts:
+        body, *rest = stmt.items
+        if not isinstance(body.target, ir.Name) or not self.is_body(body.target.name):
+            raise SemanticError("Inertia starts with a body name", body.target.span)
+        if (
+            rest
+            and isinstance(rest[0].target, ir.Name)
+            and self.is_point(rest[0].target.name)
+        ):
+            rest = rest[1:]
+        if not 1 <= len(rest) <= 6:
+            raise SemanticError("Inertia takes 1 to 6 inertia scalars", stmt.span)
+        new: list[Symbol] = []
+        for k, item in enumerate(rest):
+            sym = self._new_constant(item.target, "+" if k < 3 else None)
+            if sym is not None:
+                new.append(sym)
+            else:
+                self._expect_scalar(item.target)
+            if item.values:
+                if sym is None:
+                    raise SemanticError(
+                        "only a new name can be given a value here", item.target.span
+                    )
+                self._expect_scalar(item.values[0])
+                sym.has_rhs = True
+        return self._facts(new_constants=tuple(new))
 
     def _decl_target(self, item: ir.DeclItem, kind: str) -> tuple[tuple[str, ...], int]:
         target = item.target
@@ -727,8 +898,10 @@ class Analysis:
     def _enter_Assign(self, stmt: ir.Assign) -> StmtFacts:
         value_kind = self.kind_of(stmt.value)
         target = stmt.target
-        if stmt.op != "=" and stmt.op != ":=":
+        if stmt.op not in ("=", ":="):
             self.kind_of(target)
+            if stmt.op in ("*=", "/=", "^=") and value_kind is not Kind.SCALAR:
+                raise SemanticError(f"{stmt.op} needs a scalar", stmt.value.span)
         if isinstance(target, ir.Element):
             for i in target.indices:
                 self._expect_scalar(i)
@@ -743,10 +916,37 @@ class Analysis:
                 )
             sym = self._assign_name(target.base, "matrix")
             return self._facts(target=sym)
+        form = self.form(target)
+        if form is not None:
+            want = FORM_KINDS[form.kind]
+            if form.kind == "unit" or target.primes:
+                raise SemanticError(f"'{target.name}' cannot be assigned", target.span)
+            if value_kind not in (want, Kind.UNKNOWN) and not (
+                want is Kind.VECTOR
+                and value_kind is Kind.SCALAR
+                and _is_zero(stmt.value)
+            ):
+                raise SemanticError(
+                    f"{target.name} must be a {want.value}, not a {value_kind.value}",
+                    stmt.value.span,
+                )
+            return self._facts(form=form)
         if target.rank:
-            raise UnsupportedError(
-                f"assigning '{target.name}' needs {_PHYSICS_MSG}, not supported yet",
-                target.span,
+            if target.key in ("0>", "1>>"):
+                raise SemanticError(f"'{target.name}' is reserved", target.span)
+            want = {1: Kind.VECTOR, 2: Kind.DYADIC}.get(target.rank, Kind.POLYADIC)
+            if value_kind not in (want, Kind.UNKNOWN):
+                raise SemanticError(
+                    f"{target.name} must be a {want.value}, not a {value_kind.value}",
+                    stmt.value.span,
+                )
+            sym = self._assign_name(target, want.value)
+            return self._facts(target=sym)
+        if value_kind in (Kind.VECTOR, Kind.DYADIC, Kind.FRAME, Kind.POINT, Kind.WORD):
+            raise SemanticError(
+                f"{target.name} names a scalar or matrix; a {value_kind.value} "
+                f"needs a name ending in '>'",
+                stmt.value.span,
             )
         if target.primes:
             sym = self.table.quantity(target.name)
@@ -798,12 +998,19 @@ class Analysis:
             return self._facts(stop=True)
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
+            if b is not None and b.statement:
+                return self._enter_command(expr, b)
             if b is not None and b.name in DUAL_FUNCTIONS and expr.args:
                 first = expr.args[0]
                 self.kind_of(expr)
-                if isinstance(first, ir.Name) and not first.primes:
+                if (
+                    isinstance(first, ir.Name)
+                    and not first.primes
+                    and not self.form(first)
+                ):
                     sym = self.lookup(first)
-                    return self._facts(target=sym)
+                    if sym.kind not in ("time", "imaginary") and sym.key != "PI":
+                        return self._facts(target=sym)
                 return self._facts()
             if b is not None and b.name == "EIG" and len(expr.args) >= 2:
                 self.kind_of(expr.args[0])
@@ -820,21 +1027,149 @@ class Analysis:
         self.kind_of(expr)
         return self._facts()
 
+    #: Argument kinds of stand-alone kinematics commands.
+    _COMMAND_ARGS = {
+        "SIMPROT": (Kind.FRAME, Kind.FRAME, Kind.SCALAR, Kind.SCALAR),
+        "V2PTS": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
+        "A2PTS": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
+        "V1PT": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
+        "A1PT": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
+        "GRAVITY": (Kind.VECTOR,),
+    }
+
+    def _enter_command(self, call: ir.Call, b: Builtin) -> StmtFacts:
+        message = b.arity_error(len(call.args))
+        if message:
+            raise SemanticError(message, call.span)
+        kinds = self.arg_kinds(call)
+        want = self._COMMAND_ARGS.get(b.name)
+        if b.name in ("DIRCOS", "ANGVEL", "KINDIFFS"):
+            want = (Kind.FRAME, Kind.FRAME, Kind.WORD) + (Kind.SCALAR,) * (
+                len(kinds) - 3
+            )
+        if b.name in ("FORCE", "TORQUE"):
+            want = (kinds[0], Kind.VECTOR)
+        if b.name == "KANE":
+            want = (Kind.SCALAR,) * len(kinds)
+            for a in call.args:
+                if not isinstance(a, ir.Name) or a.primes:
+                    raise SemanticError(
+                        "Kane takes names of force measure numbers", a.span
+                    )
+        if want is not None:
+            for a, got, need in zip(call.args, kinds, want, strict=False):
+                if got is not need and got is not Kind.UNKNOWN:
+                    raise SemanticError(
+                        f"{call.func} expects a {need.value} here, not a {got.value}",
+                        a.span,
+                    )
+        if b.name == "SIMPROT":
+            axis = call.args[2]
+            value = _int_literal(axis)
+            if value is None or abs(value) not in (1, 2, 3):
+                raise SemanticError(
+                    "Simprot's axis is 1, 2, 3, -1, -2 or -3", axis.span
+                )
+        return self._facts()
+
     def _enter_FileCommand(self, stmt: ir.FileCommand) -> StmtFacts:
         if stmt.command != "SAVE":
             raise UnsupportedError(f"{stmt.command} is not supported", stmt.span)
         return self._facts()
 
-    def _pending_numerics(self, stmt: ir.Stmt) -> StmtFacts:
-        word = type(stmt).__name__.removesuffix("Stmt")
-        raise UnsupportedError(
-            f"{word} ({_NUMERICS_MSG}) is not supported yet", stmt.span
-        )
+    def _enter_UnitSystemStmt(self, stmt: ir.UnitSystemStmt) -> StmtFacts:
+        return self._facts()
 
-    _enter_InputStmt = _pending_numerics
-    _enter_OutputStmt = _pending_numerics
-    _enter_UnitSystemStmt = _pending_numerics
-    _enter_CodeStmt = _pending_numerics
+    def _enter_InputStmt(self, stmt: ir.InputStmt) -> StmtFacts:
+        for item in stmt.items:
+            names = self._input_names(item.name)
+            for n in names:
+                if n.key in INTEGRATION_PARAMETERS and not n.primes:
+                    continue
+                sym = self.lookup(n)
+                if sym.kind not in ("constant", "variable", "specified"):
+                    raise SemanticError(
+                        f"Input takes constants and variables, not a {sym.kind}", n.span
+                    )
+            if _free_names(item.value):
+                raise SemanticError("an Input value must be a number", item.value.span)
+            self._expect_scalar(item.value)
+        return self._facts()
+
+    def _input_names(self, node: ir.Expr) -> list[ir.Name]:
+        if isinstance(node, ir.Name):
+            return [node]
+        if isinstance(node, ir.IndexedNames):
+            return [ir.Name(node.span, n, node.primes) for n in node.expand()]
+        raise SemanticError("Input assigns names: Input X=1, Y=2 deg", node.span)
+
+    def _enter_OutputStmt(self, stmt: ir.OutputStmt) -> StmtFacts:
+        for item in stmt.items:
+            self._expect_scalar(item.expr)
+        return self._facts()
+
+    def _enter_CodeStmt(self, stmt: ir.CodeStmt) -> StmtFacts:
+        if stmt.option not in CODE_OPTIONS:
+            raise SemanticError(
+                f"CODE option must be one of {', '.join(sorted(CODE_OPTIONS))}",
+                stmt.span,
+            )
+        if stmt.args:
+            if stmt.option not in ("NONLINEAR", "ALGEBRAIC"):
+                raise SemanticError(
+                    f"CODE {stmt.option.title()}() takes no arguments", stmt.span
+                )
+            eqs, *unknowns = stmt.args
+            if self.kind_of(eqs) is not Kind.MATRIX:
+                raise SemanticError(
+                    "the first CODE argument is a matrix of equations", eqs.span
+                )
+            if not unknowns:
+                raise SemanticError("name the unknowns after the equations", eqs.span)
+            for u in unknowns:
+                for n in self._input_names(u):
+                    if self.lookup(n).kind not in ("variable", "constant", "specified"):
+                        raise SemanticError(f"'{n.name}' cannot be an unknown", n.span)
+        elif stmt.option in ("NONLINEAR",):
+            raise SemanticError(
+                "CODE Nonlinear(equations, unknowns...) needs arguments", stmt.span
+            )
+        if stmt.sweep is not None:
+            self.lookup(stmt.sweep.name)
+            for e in (stmt.sweep.start, stmt.sweep.stop, stmt.sweep.step):
+                self._expect_scalar(e)
+        if stmt.filename is not None:
+            ext = (
+                stmt.filename.rsplit(".", 1)[-1].lower() if "." in stmt.filename else ""
+            )
+            if ext not in ("c", "m", "for", "f"):
+                raise SemanticError(
+                    "the CODE file name ends in .c, .m, .for or .f", stmt.span
+                )
+        return self._facts()
+
+
+def _free_names(expr: ir.Expr) -> list[ir.Name]:
+    return [
+        n for n in walk_expr(expr) if isinstance(n, ir.Name) and n.key not in ("PI",)
+    ]
+
+
+def _int_literal(expr: ir.Expr) -> int | None:
+    if isinstance(expr, ir.UnaryOp) and expr.op == "-":
+        inner = _int_literal(expr.operand)
+        return None if inner is None else -inner
+    if isinstance(expr, ir.Number) and expr.is_integer:
+        return int(expr.text)
+    return None
+
+
+def _is_zero(expr: ir.Expr) -> bool:
+    return isinstance(expr, ir.Number) and expr.value == 0
+
+
+def _parts(name: str) -> set[str]:
+    return {p for p in name.upper().rstrip(">").split("_") if p}
 
 
 def _kind_from_spelling(name: str) -> str:

@@ -30,6 +30,9 @@ class Kind(Enum):
     VECTOR = "vector"
     DYADIC = "dyadic"
     POLYADIC = "polyadic"
+    FRAME = "frame"
+    POINT = "point"
+    WORD = "word"
     UNKNOWN = "unknown"
 
 
@@ -50,6 +53,33 @@ def _scalar(_: list[Kind]) -> Kind:
 
 def _matrix(_: list[Kind]) -> Kind:
     return Kind.MATRIX
+
+
+def _vector(_: list[Kind]) -> Kind:
+    return Kind.VECTOR
+
+
+def _dyadic(_: list[Kind]) -> Kind:
+    return Kind.DYADIC
+
+
+def _dot(kinds: list[Kind]) -> Kind:
+    if Kind.DYADIC in kinds:
+        return Kind.DYADIC if kinds.count(Kind.DYADIC) == 2 else Kind.VECTOR
+    return Kind.SCALAR
+
+
+def _represent(kinds: list[Kind]) -> Kind:
+    # A vector or dyadic gives its matrix; a matrix gives a vector or dyadic.
+    return Kind.UNKNOWN if kinds and kinds[0] is Kind.MATRIX else Kind.MATRIX
+
+
+def _momentum(kinds: list[Kind]) -> Kind:
+    return Kind.UNKNOWN  # LINEAR/ANGULAR give vectors, GENERALIZED a matrix
+
+
+def _gyrostat(kinds: list[Kind]) -> Kind:
+    return Kind.UNKNOWN  # FRSTAR: matrix, ANGMOM: vector, KE: scalar
 
 
 def _first(kinds: list[Kind]) -> Kind:
@@ -86,6 +116,8 @@ class Builtin:
     result: KindRule = _scalar
     dual: bool = False  # ``Expand(E)`` alone means ``E := Expand(E)``
     issue: str = ""  # for PENDING: what brings it
+    statement: bool = False  # a stand-alone command that responds (``V2pts``)
+    words: tuple[int, ...] = ()  # argument positions holding option words
 
     def arity_error(self, n: int) -> str | None:
         """A plain-English message if ``n`` arguments are wrong, else None."""
@@ -106,8 +138,13 @@ def _func(name: str, python: str, n: int = 1, hi: int | None = -1) -> Builtin:
     return Builtin(name, Style.FUNC, python, n, n if hi == -1 else hi, _first)
 
 
-_PHYSICS = "physics commands (bodies, kinematics, Kane's method)"
 _NUMERICS = "numerical CODE jobs"
+
+
+def _command(
+    name: str, python: str, lo: int, hi: int | None, words: tuple[int, ...] = ()
+) -> Builtin:
+    return Builtin(name, Style.METHOD, python, lo, hi, statement=True, words=words)
 
 
 def _pending(name: str, issue: str, lo: int = 0, hi: int | None = None) -> Builtin:
@@ -171,17 +208,47 @@ _TABLE: list[Builtin] = [
     Builtin("INCLUDE", Style.METHOD, "include", 2, 2, _first),
     Builtin("ZEE", Style.METHOD, "zee", 1, 2, _first, dual=True),
     Builtin("AUTOZ", Style.METHOD, "autoz", 1, 2, _first),
-    # -- physical commands: next milestone
-    *(
-        _pending(n, _PHYSICS)
-        for n in (
-            "MASS INERTIA CM KE MOMENTUM TSTAR GRAVITY FORCE TORQUE FR FRSTAR "
-            "KANE CONSTRAIN NICHECK GYROSTAT SIMPROT DIRCOS ANGVEL KINDIFFS "
-            "V2PTS A2PTS V1PT A1PT EXPRESS REPRESENT DOT CROSS MAG MAGSQ "
-            "UNITVEC VECTOR DYADIC MATRIX PARTIALS REMAINDER"
-        ).split()
-    ),
-    *(_pending(n, _NUMERICS) for n in ("INPUT", "UNITS", "SPLINE", "AUTOTAYLOR")),
+    # -- vectors and dyadics
+    Builtin("DOT", Style.METHOD, "dot", 2, 2, _dot),
+    Builtin("CROSS", Style.METHOD, "cross", 2, 2, _vector),
+    Builtin("MAG", Style.METHOD, "mag", 1, 1),
+    Builtin("MAGSQ", Style.METHOD, "magsq", 1, 1),
+    Builtin("UNITVEC", Style.METHOD, "unitvec", 1, 1, _vector),
+    Builtin("EXPRESS", Style.METHOD, "express", 2, 2, _first, dual=True),
+    Builtin("REPRESENT", Style.METHOD, "represent", 2, 2, _represent),
+    Builtin("VECTOR", Style.METHOD, "vector", 2, 4, _vector),
+    Builtin("DYADIC", Style.METHOD, "dyadic", 2, None, _dyadic),
+    Builtin("MATRIX", Style.METHOD, "matrix", 2, 2, _matrix),
+    Builtin("PARTIALS", Style.METHOD, "partials", 1, None, _matrix),
+    Builtin("REMAINDER", Style.METHOD, "remainder", 1, 1, _vector),
+    # -- mass distribution, loads, dynamics (values)
+    Builtin("MASS", Style.METHOD, "mass_of", 0, None),
+    Builtin("CM", Style.METHOD, "cm", 1, None, _vector),
+    Builtin("INERTIA", Style.METHOD, "inertia", 1, None, _dyadic),
+    Builtin("KE", Style.METHOD, "ke", 0, 0),
+    Builtin("MOMENTUM", Style.METHOD, "momentum", 1, 2, _momentum, words=(0,)),
+    Builtin("TSTAR", Style.METHOD, "tstar", 1, 2, _vector),
+    Builtin("FR", Style.METHOD, "fr", 0, 0, _matrix),
+    Builtin("FRSTAR", Style.METHOD, "frstar", 0, 0, _matrix),
+    Builtin("NICHECK", Style.METHOD, "nicheck", 0, 0),
+    Builtin("GYROSTAT", Style.METHOD, "gyrostat", 5, 5, _gyrostat, words=(0, 1)),
+    # -- stand-alone physics commands (statements; they respond)
+    _command("SIMPROT", "simprot", 4, 4),
+    _command("DIRCOS", "dircos", 4, None, words=(2,)),
+    _command("ANGVEL", "angvel", 4, None, words=(2,)),
+    _command("KINDIFFS", "kindiffs", 4, None, words=(2,)),
+    _command("V2PTS", "v2pts", 4, 4),
+    _command("A2PTS", "a2pts", 4, 4),
+    _command("V1PT", "v1pt", 4, 4),
+    _command("A1PT", "a1pt", 4, 4),
+    _command("GRAVITY", "gravity", 1, 1),
+    _command("FORCE", "add_force", 2, 2),
+    _command("TORQUE", "add_torque", 2, 2),
+    _command("CONSTRAIN", "constrain", 1, 1),
+    _command("KANE", "kane", 0, None),
+    Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2),
+    Builtin("UNITS", Style.SPECIAL, "units", 2, 2),
+    *(_pending(n, _NUMERICS) for n in ("SPLINE", "AUTOTAYLOR")),
 ]
 
 BUILTINS: dict[str, Builtin] = {b.name: b for b in _TABLE}

@@ -16,9 +16,10 @@ from collections import defaultdict
 from collections.abc import Iterator
 
 from . import ir
-from .analysis import Analysis, StmtFacts, Symbol, walk_expr
+from .analysis import INTEGRATION_PARAMETERS, Analysis, StmtFacts, Symbol, walk_expr
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
+from .forms import Form
 
 __all__ = ["Generator", "Imports"]
 
@@ -37,6 +38,31 @@ _DEGREE_VARIANTS = {
     "ATAN2": "atan2_deg",
 }
 _SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
+_VECTOR = "sympy.physics.vector"
+#: Python spelling of each syntactical form's value (see al2py.forms).
+_FORM_GETTERS = {
+    "pos": "al.pos({0}, {1})",
+    "vel": "al.vel({0}, {1})",
+    "acc": "al.acc({0}, {1})",
+    "angvel": "al.ang_vel({0}, {1})",
+    "angacc": "al.ang_acc({0}, {1})",
+    "inertia": "al.inertia_dyadic({0}, {1})",
+    "force": "al.force_on({0})",
+    "torque": "al.torque_on({0})",
+    "dcm": "al.dcm({0}, {1})",
+}
+_UNIT_AXES = {"1": "x", "2": "y", "3": "z"}
+#: Stand-alone commands that print a response (they take ``line=``).
+_RESPONDING = frozenset(
+    "SIMPROT DIRCOS ANGVEL KINDIFFS V2PTS A2PTS V1PT A1PT CONSTRAIN KANE".split()
+)
+_OBJECT_DECLS = {
+    "NEWTONIAN": "newtonian",
+    "FRAMES": "frames",
+    "BODIES": "bodies",
+    "PARTICLES": "particles",
+    "POINTS": "points",
+}
 _COMMENT_WIDTH = 84
 
 
@@ -102,7 +128,7 @@ class Generator:
             for i in range(first, last + 1)
             if i <= len(self.lines)
         ]
-        return [c for t in text if t for c in comment_lines(t)]
+        return [c for t in text if t for c in comment_lines(t, prefix="al> ")]
 
     # -------------------------------------------------------- statements
 
@@ -120,6 +146,12 @@ class Generator:
         return [f"al.set({stmt.name.title()!r}, {arg})"]
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
+        if stmt.keyword in _OBJECT_DECLS:
+            return self._objects(stmt)
+        if stmt.keyword == "MASS":
+            return self._mass(stmt)
+        if stmt.keyword == "INERTIA":
+            return self._inertia(stmt)
         method = {
             "CONSTANTS": "constants",
             "VARIABLES": "variables",
@@ -149,8 +181,75 @@ class Generator:
         call = f"al.{method}({', '.join(specs)})"
         return [f"{', '.join(names)} = {call}", *assigns]
 
+    def _objects(self, stmt: ir.Declaration) -> list[str]:
+        names = [n for item in stmt.items for n in _target_names(item.target)]
+        syms = [self.an.table.physical(n) for n in names]
+        if any(s is None for s in syms):
+            raise InternalError("object missing from the symbol table")
+        idents = ", ".join(s.ident for s in syms)  # type: ignore[union-attr]
+        keys = ", ".join(repr(s.key) for s in syms)  # type: ignore[union-attr]
+        out = [f"{idents} = al.{_OBJECT_DECLS[stmt.keyword]}({keys})"]
+        if stmt.keyword in ("NEWTONIAN", "FRAMES", "BODIES"):
+            for s in syms:
+                point = self.an.table.physical(s.key + "O")  # type: ignore[union-attr]
+                if point is not None and point.key in self.an.mentioned:
+                    out.append(f"{point.ident} = al.point({point.key!r})")
+        return out
+
+    def _declare_new(self) -> list[str]:
+        """``constants(...)`` for names a Mass/Inertia declaration introduced."""
+        new = self._facts.new_constants
+        if not new:
+            return []
+        idents = ", ".join(s.ident for s in new)
+        specs = ", ".join(repr(s.key + (s.sign or "")) for s in new)
+        return [f"{idents} = al.constants({specs})"]
+
+    def _mass(self, stmt: ir.Declaration) -> list[str]:
+        out = self._declare_new()
+        for item in stmt.items:
+            assert isinstance(item.target, ir.Name)
+            obj = self.an.table.physical(item.target.name)
+            assert obj is not None
+            first = item.values[0]
+            if len(item.values) == 2:
+                sym = self._symbol_for_name(first)
+                value = self.expr(item.values[1])
+                out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
+            out.append(f"al.set_mass({obj.ident}, {self.expr(first)})")
+        return out
+
+    def _inertia(self, stmt: ir.Declaration) -> list[str]:
+        out = self._declare_new()
+        body, *rest = stmt.items
+        assert isinstance(body.target, ir.Name)
+        obj = self.an.table.physical(body.target.name)
+        assert obj is not None
+        about = ""
+        first = rest[0].target if rest else None
+        if isinstance(first, ir.Name) and self.an.is_point(first.name):
+            point = self.an.table.physical(first.name)
+            assert point is not None
+            about = f", about={point.ident}"
+            rest = rest[1:]
+        for item in rest:
+            if item.values:
+                sym = self._symbol_for_name(item.target)
+                value = self.expr(item.values[0])
+                out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
+        scalars = ", ".join(self.expr(item.target) for item in rest)
+        out.append(f"al.set_inertia({obj.ident}, {scalars}{about})")
+        return out
+
     def stmt_Assign(self, stmt: ir.Assign) -> list[str]:
         target = stmt.target
+        if self._facts.form is not None:
+            assert isinstance(target, ir.Name)
+            value = self._form_value(stmt.value)
+            if stmt.op not in ("=", ":="):
+                op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
+                value = f"{self.expr(target)} {op} ({value})"
+            return [f"al.assign({target.key!r}, {value}, line={self._line})"]
         sym = self._facts.target
         if sym is None:
             raise InternalError("assignment without a target symbol")
@@ -171,8 +270,14 @@ class Generator:
             return [call]
         return [f"{sym.ident} = {call}"]
 
+    def _form_value(self, node: ir.Expr) -> str:
+        if isinstance(node, ir.Number) and node.value == 0:
+            self.imports.use(_VECTOR, "Vector")
+            return "Vector(0)"
+        return self.expr(node)
+
     def _current(self, sym: Symbol) -> str:
-        if sym.kind == "matrix":
+        if sym.kind in ("matrix", "vector", "dyadic"):
             return sym.ident
         return f"al.val({sym.ident})"
 
@@ -196,6 +301,8 @@ class Generator:
             return [f"# {expr.name.title()}: Autolev stops reading the script here."]  # type: ignore[union-attr]
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
+            if b is not None and b.statement:
+                return [self._command(expr, b)]
             if (
                 b is not None
                 and b.name in DUAL_FUNCTIONS
@@ -215,6 +322,25 @@ class Generator:
                 return [self._solve(expr)]
         label = re.sub(r"\s+", "", span_source(self.lines, expr.span)).upper()
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
+
+    def _command(self, call: ir.Call, b: Builtin) -> str:
+        args = list(call.args)
+        method = b.python
+        if b.name in ("FORCE", "TORQUE") and isinstance(args[0], ir.BinOp):
+            method = "force_between" if b.name == "FORCE" else "torque_between"
+            pair = args.pop(0)
+            assert isinstance(pair, ir.BinOp)
+            args = [pair.left, pair.right, *args]
+        if b.name == "CONSTRAIN":
+            element = args[0]
+            assert isinstance(element, ir.Element)
+            speeds = ", ".join(self.expr(i) for i in element.indices)
+            code = f"{element.base.key!r}, [{speeds}]"
+        else:
+            code = self._args(tuple(args), b)
+        if b.name in _RESPONDING:
+            code += f"{', ' if code else ''}line={self._line}"
+        return f"al.{method}({code})"
 
     def _eig_outputs(self, call: ir.Call) -> list[str]:
         outs = [self._symbol_for_name(a) for a in call.args[1:]]
@@ -264,6 +390,42 @@ class Generator:
     def stmt_FileCommand(self, stmt: ir.FileCommand) -> list[str]:
         return [f"al.save({stmt.filename!r})"]
 
+    def stmt_UnitSystemStmt(self, stmt: ir.UnitSystemStmt) -> list[str]:
+        return [f"al.unit_system({', '.join(repr(u) for u in stmt.units)})"]
+
+    def stmt_InputStmt(self, stmt: ir.InputStmt) -> list[str]:
+        items = []
+        for item in stmt.items:
+            value = self.expr(item.value)
+            if item.unit is not None:
+                value = f"({value}, {item.unit.text!r})"
+            for name in self.an._input_names(item.name):
+                items.append(f"{name.autolev!r}: {value}")
+        return [f"al.input({{{', '.join(items)}}}, line={self._line})"]
+
+    def stmt_OutputStmt(self, stmt: ir.OutputStmt) -> list[str]:
+        columns = []
+        for item in stmt.items:
+            label = re.sub(r"\s+", "", span_source(self.lines, item.expr.span)).upper()
+            unit = repr(item.unit.text) if item.unit is not None else "None"
+            columns.append(f"({label!r}, {self.expr(item.expr)}, {unit})")
+        return [f"al.output([{', '.join(columns)}], line={self._line})"]
+
+    def stmt_CodeStmt(self, stmt: ir.CodeStmt) -> list[str]:
+        args = [repr(stmt.option)]
+        if stmt.args:
+            eqs, *unknowns = stmt.args
+            names = [self.expr(n) for u in unknowns for n in self.an._input_names(u)]
+            args += [f"eqs={self.expr(eqs)}", f"unknowns=[{', '.join(names)}]"]
+        if stmt.sweep is not None:
+            sw = stmt.sweep
+            unit = repr(sw.unit.text) if sw.unit is not None else "None"
+            parts = [self.expr(sw.name), unit, self.expr(sw.start), self.expr(sw.stop)]
+            args.append(f"sweep=({', '.join(parts)}, {self.expr(sw.step)})")
+        if stmt.filename is not None:
+            args.append(f"file={stmt.filename!r}")
+        return [f"al.code({', '.join(args)}, line={self._line})"]
+
     # -------------------------------------------------------- expressions
 
     def expr(self, node: ir.Expr) -> str:
@@ -285,6 +447,14 @@ class Generator:
         return _number_code(node.text), ATOM
 
     def expr_Name(self, node: ir.Name) -> tuple[str, int]:
+        if node.key == "0>":
+            self.imports.use(_VECTOR, "Vector")
+            return "Vector(0)", ATOM
+        if node.key == "1>>":
+            return "al.unit_dyadic()", ATOM
+        form = self.an.form(node)
+        if form is not None:
+            return self._form(form), ATOM
         sym = self.an.lookup(node)
         ident = sym.ident
         if sym.kind == "time":
@@ -303,6 +473,19 @@ class Generator:
         self.imports.use(_RUNTIME, "t")
         order = "" if node.primes == 1 else f", {node.primes}"
         return f"{ident}.diff(t{order})", ATOM
+
+    def _form(self, form: Form) -> str:
+        if form.kind == "unit":
+            frame = self._object(form.parts[0])
+            return f"{frame}.{_UNIT_AXES[form.parts[1]]}"
+        objs = [self._object(p) for p in form.parts]
+        return _FORM_GETTERS[form.kind].format(*objs)
+
+    def _object(self, name: str) -> str:
+        sym = self.an.table.physical(name)
+        if sym is None:
+            raise InternalError(f"object {name} missing from the symbol table")
+        return sym.ident
 
     def expr_Element(self, node: ir.Element) -> tuple[str, int]:
         base = self.an.lookup(node.base).ident
@@ -328,6 +511,11 @@ class Generator:
         ):
             self.imports.use("sympy", "Rational")
             return f"Rational({self.expr(node.left)}, {self.expr(node.right)})", ATOM
+        if node.op == "*" and self.an.kind_of(node) is Kind.DYADIC:
+            kinds = (self.an.kind_of(node.left), self.an.kind_of(node.right))
+            if kinds == (Kind.VECTOR, Kind.VECTOR):
+                self.imports.use(_VECTOR, "outer")
+                return f"outer({self.expr(node.left)}, {self.expr(node.right)})", ATOM
         prec = ADD if node.op in "+-" else MUL
         left = self._exact(node.left) if node.op == "/" else None
         left = left or self._wrap(node.left, prec)
@@ -386,15 +574,19 @@ class Generator:
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
-            return f"al.{b.python}({self._args(node.args)})", ATOM
+            return f"al.{b.python}({self._args(node.args, b)})", ATOM
         if b.name == "SOLVE":
             raise SemanticError(
                 "Solve is a stand-alone command; use it alone on a line", node.span
             )
         raise InternalError(f"no emitter for built-in {b.name}")
 
-    def _args(self, args: tuple[ir.Expr, ...]) -> str:
-        return ", ".join(self.expr(a) for a in args)
+    def _args(self, args: tuple[ir.Expr, ...], b: Builtin | None = None) -> str:
+        words = b.words if b is not None else ()
+        return ", ".join(
+            repr(a.key) if i in words and isinstance(a, ir.Name) else self.expr(a)
+            for i, a in enumerate(args)
+        )
 
     def call_evaluate(self, node: ir.Call, b: Builtin) -> str:
         subject, *pairs = node.args
@@ -434,6 +626,18 @@ class Generator:
             f"al.taylor({self.expr(subject)}, {self.expr(order)}, [{', '.join(items)}])"
         )
 
+    def call_input_value(self, node: ir.Call, b: Builtin) -> str:
+        name = node.args[0]
+        if not isinstance(name, ir.Name):
+            raise SemanticError("Input(X) takes a name", name.span)
+        self.an.lookup(name) if name.key not in INTEGRATION_PARAMETERS else None
+        extra = ", unit_system=True" if len(node.args) == 2 else ""
+        return f"al.input_value({name.autolev!r}{extra})"
+
+    def call_units(self, node: ir.Call, b: Builtin) -> str:
+        texts = [re.sub(r"\s+", "", span_source(self.lines, a.span)) for a in node.args]
+        return f"al.units({texts[0]!r}, {texts[1]!r})"
+
     def call_eig(self, node: ir.Call, b: Builtin) -> str:
         if len(node.args) != 1:
             raise SemanticError(
@@ -472,6 +676,13 @@ class Generator:
         return self._symbol(node.name)
 
 
+def _target_names(target: ir.Expr) -> tuple[str, ...]:
+    if isinstance(target, ir.IndexedNames):
+        return target.expand()
+    assert isinstance(target, ir.Name)
+    return (target.name,)
+
+
 def _is_int_literal(node: ir.Expr) -> bool:
     if isinstance(node, ir.UnaryOp):
         return _is_int_literal(node.operand)
@@ -491,13 +702,17 @@ def _number_code(text: str) -> str:
     return text
 
 
-def comment_lines(text: str) -> list[str]:
-    """``text`` as ``#`` comment lines, wrapped, never able to end the comment."""
+def comment_lines(text: str, prefix: str = "") -> list[str]:
+    """``text`` as ``#`` comment lines, wrapped, never able to end the comment.
+
+    ``prefix`` marks the first line (``al> `` for echoed Autolev statements)."""
     out = []
     for raw in text.splitlines() or [""]:
         raw = raw.replace("\r", " ").expandtabs(4).rstrip()
         chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
-        out.extend(f"# {c}".rstrip() for c in chunks)
+        for k, c in enumerate(chunks):
+            lead = prefix if k == 0 else " " * len(prefix)
+            out.append(f"# {lead}{c}".rstrip())
     return out
 
 
