@@ -1,0 +1,67 @@
+"""Pure algebra behind ``Constrain`` and ``Kane`` (no workspace state).
+
+``ZERO`` after ``Kane()`` (see :func:`arrange`): one row per independent
+generalized speed ``Ui``, in declaration order,
+
+    ZERO[i] = F[i] + M[i,1]*U1' + ... + M[i,n]*Un'
+
+where ``F`` holds no speed derivatives.  ``ZERO[i] = 0`` is Kane's equation
+``Fr + Fr* = 0`` for speed ``i`` (so ``-M`` is the mass matrix).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import sympy as sp
+
+from .kinematics import tidy
+
+__all__ = ["solve_speeds", "arrange", "split_linear"]
+
+
+def split_linear(
+    exprs: Sequence[Any], unknowns: Sequence[Any]
+) -> tuple[sp.Matrix, sp.Matrix]:
+    """``exprs = A*x + b``: return ``(A, b)``; raise if not linear in ``x``."""
+    a = sp.Matrix(len(exprs), len(unknowns), lambda i, j: 0)
+    b = sp.zeros(len(exprs), 1)
+    zero = {u: 0 for u in unknowns}
+    for i, e in enumerate(exprs):
+        e = sp.expand(sp.sympify(e))
+        for j, u in enumerate(unknowns):
+            c = sp.diff(e, u)
+            if any(c.has(v) for v in unknowns):
+                raise ValueError(f"equation {i + 1} is not linear in {u}")
+            a[i, j] = c
+        b[i, 0] = e.xreplace(zero)
+    return a, b
+
+
+def solve_speeds(eqs: Sequence[Any], unknowns: Sequence[Any]) -> list[Any]:
+    """Solve linear equations ``eqs = 0`` for ``unknowns`` (tidied results)."""
+    if len(eqs) != len(unknowns):
+        raise ValueError(f"{len(eqs)} equations for {len(unknowns)} unknowns")
+    a, b = split_linear(eqs, unknowns)
+    a = a.applyfunc(tidy)
+    det = tidy(a.det(method="berkowitz"))
+    if det == 0:
+        raise ValueError("the equations cannot be solved for " + str(list(unknowns)))
+    adj = a.adjugate(method="berkowitz")
+    sol = -(adj * b)
+    return [tidy(sp.together(tidy(s) / det)) for s in sol]
+
+
+def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> list:
+    """Arrange each row as ``F + sum(M_k * accel_k)`` (see module doc)."""
+    out = []
+    for row in rows:
+        row = sp.expand(row)
+        coefs = [tidy(sp.diff(row, a)) for a in accels]
+        rest = sp.expand(row - sum(c * a for c, a in zip(coefs, accels, strict=True)))
+        rest = rest.xreplace({a: 0 for a in accels})
+        out.append(
+            tidy(rest, gens) + sum(c * a for c, a in zip(coefs, accels, strict=True))
+        )
+    return out

@@ -1,0 +1,225 @@
+"""Vector helpers and rotation kinematics for :mod:`al2py_runtime.mechanics`.
+
+Everything here is pure: functions of sympy expressions, ``Vector``/``Dyadic``
+objects and ``ReferenceFrame``s, with no workspace state.
+
+Conventions (Kane & Levinson, as Autolev):
+
+* ``A_B[i, j] = Dot(Ai>, Bj>)`` -- sympy's ``A.dcm(B)``.
+* Euler parameters ``e1, e2, e3, e4``: ``e1..e3`` are the vector part
+  (``lambda_i*sin(theta/2)``), ``e4 = cos(theta/2)`` the scalar part.
+* Rodrigues parameters ``r_i = lambda_i*tan(theta/2)``.
+* Angular velocities from ``Angvel``/``Kindiffs`` are expressed in ``B``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
+
+__all__ = [
+    "vmap",
+    "is_vector",
+    "is_dyadic",
+    "as_vector",
+    "tidy",
+    "tidy_vector",
+    "vdot",
+    "vcross",
+    "rotation_dcm",
+    "angvel_from_dcm",
+    "euler_parameter_rates",
+]
+
+t = dynamicsymbols._t
+
+#: Size above which ``tidy`` does not try ``trigsimp`` (it gets slow).
+TRIGSIMP_LIMIT = 400
+
+
+def is_vector(x: Any) -> bool:
+    return isinstance(x, Vector)
+
+
+def is_dyadic(x: Any) -> bool:
+    return isinstance(x, Dyadic)
+
+
+def as_vector(x: Any) -> Vector:
+    """``0`` (Autolev's ``0>`` after normalization) or a Vector -> Vector."""
+    if isinstance(x, Vector):
+        return x
+    if x == 0:
+        return Vector(0)
+    raise TypeError(f"expected a vector, not {x!r}")
+
+
+def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
+    """Apply ``f`` to every scalar of a Vector, Dyadic, Matrix or scalar."""
+    if isinstance(x, Vector):
+        return Vector([(m.applyfunc(f), frame) for m, frame in x.args])
+    if isinstance(x, Dyadic):
+        out = Dyadic(0)
+        for c, a, b in x.args:
+            out += f(c) * (a | b)
+        return out
+    if isinstance(x, sp.MatrixBase):
+        return sp.Matrix(x).applyfunc(f)
+    return f(x)
+
+
+def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
+    """A light, bounded simplification used for responses and results.
+
+    With ``gens`` (speeds and their derivatives), the expression is collected
+    on monomials of ``gens`` and each coefficient is simplified separately.
+    """
+    if not isinstance(expr, sp.Expr) or expr.is_number:
+        return expr
+    gens = [g for g in gens if expr.has(g)]
+    if gens:
+        parts = sp.collect(sp.expand(expr), gens, evaluate=False)
+        return sp.Add(*[_tidy_one(c) * m for m, c in parts.items()])
+    return _tidy_one(expr)
+
+
+def _tidy_one(expr: sp.Expr) -> sp.Expr:
+    if not isinstance(expr, sp.Expr) or expr.is_number:
+        return expr
+    if expr.has(sp.sin, sp.cos) and sp.count_ops(expr) <= TRIGSIMP_LIMIT:
+        try:
+            new = sp.trigsimp(expr)
+        except Exception:  # pragma: no cover - trigsimp is best effort
+            new = expr
+        if sp.count_ops(new) <= sp.count_ops(expr):
+            expr = new
+    return sp.factor_terms(expr)
+
+
+def tidy_vector(v: Any) -> Any:
+    return vmap(v, tidy)
+
+
+def vdot(a: Any, b: Any) -> Any:
+    """Autolev ``Dot``: vectors, dyadics (either side) or plain scalars."""
+    if isinstance(a, Vector | Dyadic) and isinstance(b, Vector | Dyadic):
+        return a & b
+    if isinstance(a, Vector | Dyadic):
+        if b == 0:
+            return sp.Integer(0)
+        raise TypeError("Dot of a vector and a scalar")
+    if isinstance(b, Vector | Dyadic):
+        if a == 0:
+            return sp.Integer(0)
+        raise TypeError("Dot of a scalar and a vector")
+    return sp.sympify(a) * sp.sympify(b)
+
+
+def vcross(a: Any, b: Any) -> Any:
+    """Autolev ``Cross`` of vectors (or a vector and a dyadic)."""
+    if isinstance(a, Vector | Dyadic) and isinstance(b, Vector | Dyadic):
+        return a ^ b
+    if (not isinstance(a, Vector | Dyadic) and a == 0) or (
+        not isinstance(b, Vector | Dyadic) and b == 0
+    ):
+        return Vector(0)
+    raise TypeError("Cross needs two vectors")
+
+
+# ------------------------------------------------------------ rotations
+
+
+def _skew(v: sp.Matrix) -> sp.Matrix:
+    return sp.Matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+
+def simprot_dcm(axis: int, angle: Any) -> sp.Matrix:
+    """``A_B`` for ``Simprot(A, B, axis, angle)`` (axis in +-1, +-2, +-3)."""
+    if axis not in (1, 2, 3, -1, -2, -3):
+        raise ValueError(f"Simprot axis must be 1, 2, 3, -1, -2 or -3, not {axis}")
+    if axis < 0:
+        angle = -angle
+    k = abs(axis) - 1
+    c, s = sp.cos(angle), sp.sin(angle)
+    m = sp.eye(3)
+    i, j = (k + 1) % 3, (k + 2) % 3
+    m[i, i] = c
+    m[j, j] = c
+    m[i, j] = -s
+    m[j, i] = s
+    return m
+
+
+def rotation_dcm(kind: str, qs: list[Any]) -> sp.Matrix:
+    """``A_B`` for ``Dircos(A, B, kind, q1, q2, q3[, q4])``.
+
+    ``kind`` is ``BODYijk``, ``SPACEijk``, ``EULER`` (4 parameters) or
+    ``RODRIGUES`` (3 parameters)."""
+    kind = kind.upper()
+    if kind.startswith(("BODY", "SPACE")):
+        order = kind[4:] if kind.startswith("BODY") else kind[5:]
+        if len(order) != 3 or any(ch not in "123" for ch in order):
+            raise ValueError(f"unknown rotation sequence {kind}")
+        if order[0] == order[1] or order[1] == order[2]:
+            raise ValueError(f"{kind}: consecutive axes must differ")
+        if len(qs) != 3:
+            raise ValueError(f"{kind} needs 3 angles")
+        mats = [simprot_dcm(int(ch), q) for ch, q in zip(order, qs, strict=True)]
+        if kind.startswith("BODY"):
+            return mats[0] * mats[1] * mats[2]
+        return mats[2] * mats[1] * mats[0]
+    if kind == "EULER":
+        if len(qs) != 4:
+            raise ValueError("EULER needs 4 Euler parameters e1, e2, e3, e4")
+        e = sp.Matrix(qs[:3])
+        e4 = qs[3]
+        return (
+            (e4**2 - (e.T * e)[0]) * sp.eye(3) + 2 * e * e.T + 2 * e4 * _skew(e)
+        ).applyfunc(sp.expand)
+    if kind == "RODRIGUES":
+        if len(qs) != 3:
+            raise ValueError("RODRIGUES needs 3 Rodrigues parameters")
+        r = sp.Matrix(qs)
+        rr = (r.T * r)[0]
+        return ((1 - rr) * sp.eye(3) + 2 * r * r.T + 2 * _skew(r)) / (1 + rr)
+    raise ValueError(f"unknown orientation type {kind}")
+
+
+def angvel_from_dcm(dcm: sp.Matrix) -> list[Any]:
+    """Measure numbers in ``B`` of ``W_B_A>`` given ``A_B`` (functions of t)."""
+    c = sp.Matrix(dcm)
+    w = (c.T * c.diff(t)).applyfunc(sp.expand)
+    return [tidy(w[2, 1]), tidy(w[0, 2]), tidy(w[1, 0])]
+
+
+def euler_parameter_rates(es: list[Any], w: list[Any]) -> list[Any]:
+    """``e1'..e4'`` from the ``B`` measure numbers ``w`` of ``W_B_A>``."""
+    e1, e2, e3, e4 = es
+    w1, w2, w3 = w
+    half = sp.Rational(1, 2)
+    return [
+        half * (w1 * e4 - w2 * e3 + w3 * e2),
+        half * (w1 * e3 + w2 * e4 - w3 * e1),
+        half * (-w1 * e2 + w2 * e1 + w3 * e4),
+        -half * (w1 * e1 + w2 * e2 + w3 * e3),
+    ]
+
+
+def frame_vector(frame: ReferenceFrame, measures: Iterable[Any]) -> Vector:
+    m = list(measures)
+    if len(m) != 3:
+        raise ValueError(f"a vector needs 3 measure numbers, not {len(m)}")
+    return m[0] * frame.x + m[1] * frame.y + m[2] * frame.z
+
+
+def frame_dyadic(frame: ReferenceFrame, m: sp.Matrix) -> Dyadic:
+    units = (frame.x, frame.y, frame.z)
+    out = Dyadic(0)
+    for i in range(3):
+        for j in range(3):
+            if m[i, j] != 0:
+                out += m[i, j] * (units[i] | units[j])
+    return out
