@@ -74,6 +74,8 @@ class Settings:
             if word not in ("ON", "OFF", "AUTO"):
                 raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
             self.complex = word
+        elif key in ("beepsound", "pause"):
+            pass  # interactive conveniences: nothing to do in a batch run
         elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
             if word not in _ON_OFF:
                 raise ValueError(f"{name} takes ON or OFF, not {value}")

@@ -54,6 +54,9 @@ SETTINGS: dict[str, tuple[str, ...] | str] = {
     "AUTOZ": ("ON", "OFF"),
     "OVERWRITE": ("ON", "OFF"),
     "AUTOEXPRESS": ("ON", "OFF"),
+    # Interactive conveniences; accepted and recorded, nothing to do in batch.
+    "BEEPSOUND": ("ON", "OFF"),
+    "PAUSE": "number",
 }
 #: Integration parameters that ``Input`` sets without a declaration.
 INTEGRATION_PARAMETERS = frozenset(
@@ -1029,7 +1032,7 @@ class Analysis:
 
     #: Argument kinds of stand-alone kinematics commands.
     _COMMAND_ARGS = {
-        "SIMPROT": (Kind.FRAME, Kind.FRAME, Kind.SCALAR, Kind.SCALAR),
+        "SIMPROT": (Kind.FRAME, Kind.FRAME, Kind.UNKNOWN, Kind.SCALAR),
         "V2PTS": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
         "A2PTS": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
         "V1PT": (Kind.FRAME, Kind.FRAME, Kind.POINT, Kind.POINT),
@@ -1058,7 +1061,7 @@ class Analysis:
                     )
         if want is not None:
             for a, got, need in zip(call.args, kinds, want, strict=False):
-                if got is not need and got is not Kind.UNKNOWN:
+                if got is not need and Kind.UNKNOWN not in (got, need):
                     raise SemanticError(
                         f"{call.func} expects a {need.value} here, not a {got.value}",
                         a.span,
@@ -1066,9 +1069,10 @@ class Analysis:
         if b.name == "SIMPROT":
             axis = call.args[2]
             value = _int_literal(axis)
-            if value is None or abs(value) not in (1, 2, 3):
+            bad = value is None or abs(value) not in (1, 2, 3)
+            if kinds[2] is not Kind.VECTOR and bad:
                 raise SemanticError(
-                    "Simprot's axis is 1, 2, 3, -1, -2 or -3", axis.span
+                    "Simprot's axis is 1, 2, 3, -1, -2, -3 or a vector", axis.span
                 )
         return self._facts()
 
