@@ -1,13 +1,243 @@
 """Numerical CODE jobs: Input/Output with units, Dynamics/ODE/Nonlinear/Algebraic.
 
-:class:`NumericsMixin` adds ``Input``, ``Output``, ``UnitSystem``, ``CODE`` and
-``run()`` to :class:`Workspace`.
+:class:`NumericsMixin` adds ``UnitSystem``, ``Input``, ``Output``, ``CODE``,
+``Input(X)``, ``Units(a, b)``, :meth:`~NumericsMixin.run` and
+:meth:`~NumericsMixin.main` to :class:`Workspace`.
+
+Recording (``unit_system``, ``input``, ``output``, ``code``) only stores what
+the statements say, so importing a generated module does no numerical work.
+``CODE`` takes a snapshot of the right-hand sides in force; later statements
+do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
+
+>>> from al2py_runtime import Workspace, t
+>>> al = Workspace("odexy.al")
+>>> a, b = al.constants("A", "B")
+>>> x, y = al.variables("X'", "Y'")
+>>> _ = al.assign("X'", -a * x - b * y)
+>>> _ = al.assign("Y'", -y - t * x**2)
+>>> al.input({"A": 1, "B": 2, "X": 2, "Y": 3, "TFINAL": 5, "INTEGSTP": 0.1})
+>>> al.output([("T", t, None), ("X", x, None), ("Y", y, None)])
+>>> job = al.code("ODE", file="odexy.c")
+>>> result = al.run()
+>>> round(float(result["X"][-1]), 6), len(result.tables[0])
+(0.497489, 51)
 """
 
 from __future__ import annotations
 
-__all__ = ["NumericsMixin"]
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import PurePath
+from typing import Any
+
+import sympy as sp
+
+from .jobs import (
+    KINDS,
+    InputValue,
+    Job,
+    NumericsError,
+    OutputItem,
+    OutputSpec,
+    Result,
+    normalize_name,
+    run_job,
+)
+from .units import UnitSystem, units_factor
+
+__all__ = ["NumericsMixin", "NumericsError", "Result"]
+
+
+@dataclass
+class _NumericsState:
+    unit_system: UnitSystem = field(default_factory=UnitSystem)
+    inputs: dict[str, InputValue] = field(default_factory=dict)
+    outputs: list[OutputSpec] = field(default_factory=list)
+    jobs: list[Job] = field(default_factory=list)
 
 
 class NumericsMixin:
     """Inputs, outputs, units and the numerical job of a script."""
+
+    @property
+    def _numerics(self) -> _NumericsState:
+        state = self.__dict__.get("_numerics_state")
+        if state is None:
+            state = _NumericsState()
+            self.__dict__["_numerics_state"] = state
+        return state
+
+    # ------------------------------------------------------------ recording
+
+    def unit_system(
+        self, mass: str = "kg", length: str = "m", time: str = "sec", *, line=None
+    ) -> None:
+        """``UnitSystem kg, meter, sec``: the units values have inside a run."""
+        self._numerics.unit_system = UnitSystem(mass, length, time)
+
+    def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
+        """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
+        store = self._numerics.inputs
+        for name, spec in values.items():
+            value, unit = spec if isinstance(spec, tuple) else (spec, None)
+            try:
+                number = float(sp.sympify(value))
+            except (TypeError, ValueError, sp.SympifyError):
+                raise ValueError(
+                    f"Input {name} (line {line}): {value!r} is not a number"
+                ) from None
+            store[normalize_name(name)] = InputValue(
+                number, unit if unit else None, line
+            )
+
+    def output(
+        self,
+        items: Iterable[tuple[str, Any, str | None]],
+        *,
+        line: int | None = None,
+    ) -> None:
+        """``Output T, X m, QA deg``: one output table (file ``STEM.n``)."""
+        spec = OutputSpec(
+            tuple(
+                OutputItem(str(lab), expr, unit or None) for lab, expr, unit in items
+            ),
+            line,
+        )
+        self._numerics.outputs.append(spec)
+
+    def code(
+        self,
+        kind: str,
+        eqs: Any = None,
+        unknowns: Iterable[Any] | None = None,
+        *,
+        sweep: tuple | None = None,
+        file: str | None = None,
+        line: int | None = None,
+    ) -> Job:
+        """``CODE Dynamics() file.c`` (also ``ODE``, ``Nonlinear(eqs, x, y)``,
+        ``Algebraic(eqs, x, y)`` and ``Algebraic() [PHI deg=0,360,1]``).
+
+        Records the job; ``run()`` performs it.  ``file``'s stem names the
+        output files; its extension (.c, .m, .for, .f) is ignored."""
+        kind = kind.upper()
+        if kind not in KINDS:
+            raise ValueError(f"CODE option must be one of {', '.join(KINDS)}")
+        state = self._numerics
+        eq_matrix, eqs_name = None, None
+        if eqs is not None:
+            eqs_name = self._matrix_name(eqs)
+            if isinstance(eqs, sp.MatrixBase):
+                eq_matrix = sp.Matrix(list(eqs))
+            elif isinstance(eqs, list | tuple):
+                eq_matrix = sp.Matrix(list(eqs))
+            else:
+                eq_matrix = sp.Matrix([self.val(eqs)])
+        objs = [self.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+        if sweep is not None:
+            obj, unit, start, stop, step = sweep
+            if isinstance(obj, str):
+                obj = self.symbol(obj)
+            sweep = (obj, unit or None, float(start), float(stop), float(step))
+            if float(step) == 0:
+                raise ValueError("CODE sweep step must not be 0")
+        zero = None
+        if kind in ("DYNAMICS", "ODE"):
+            value = self._values.get("ZERO")
+            if isinstance(value, sp.MatrixBase):
+                zero = sp.Matrix(value)
+        stem = PurePath(file).stem if file else PurePath(self.filename).stem
+        job = Job(
+            kind=kind,
+            stem=stem or "autolev",
+            filename=file,
+            line=line,
+            source=self.filename,
+            eqs=eq_matrix,
+            eqs_name=eqs_name,
+            unknowns=objs,
+            sweep=sweep,
+            rhs=dict(self._rhs),
+            zero=zero,
+            outputs=list(state.outputs),
+            inputs=dict(state.inputs),
+            unit_system=state.unit_system,
+            digits=self.settings.digits,
+            variables=[
+                (name, e.obj, e.order)
+                for name, e in self._names.items()
+                if e.kind in ("variable", "specified") and name != "T"
+            ],
+            names=dict(self._entries_by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._names.items()},
+        )
+        state.jobs.append(job)
+        return job
+
+    def _matrix_name(self, value: Any) -> str | None:
+        for name, stored in self._values.items():
+            if stored is value:
+                return name
+        if isinstance(value, sp.MatrixBase):
+            for name, stored in self._values.items():
+                if isinstance(stored, sp.MatrixBase) and stored == value:
+                    return name
+        return None
+
+    # ------------------------------------------------------------ functions
+
+    def input_value(self, name: str, unit_system: bool = False) -> Any:
+        """Autolev ``Input(X)``; ``Input(X, UnitSystem)`` with ``unit_system``
+        converts it to the units of the ``UnitSystem``."""
+        item = self._numerics.inputs.get(normalize_name(name))
+        if item is None:
+            raise KeyError(f"{name} has no Input value")
+        if unit_system:
+            factor = self._numerics.unit_system.to_internal(item.unit)
+            return sp.Float(item.value * factor)
+        value = item.value
+        return sp.Integer(int(value)) if float(value).is_integer() else sp.Float(value)
+
+    def units(self, a: str, b: str) -> Any:
+        """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to
+        ``b`` (``Units("n*m", "lbf*ft")`` is 0.7375621...)."""
+        return sp.Float(units_factor(a, b))
+
+    # -------------------------------------------------------------- running
+
+    @property
+    def jobs(self) -> list[Job]:
+        """The recorded ``CODE`` jobs, in script order."""
+        return list(self._numerics.jobs)
+
+    @property
+    def inputs(self) -> dict[str, InputValue]:
+        """The ``Input`` values recorded so far (upper-case names)."""
+        return dict(self._numerics.inputs)
+
+    def run(
+        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+    ) -> Result:
+        """Perform the script's ``CODE`` job (the last one if there are several).
+
+        Keyword names are Autolev names in any case, in the Input's own
+        units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
+        ``run({"X'": 1})``."""
+        jobs = self._numerics.jobs
+        if not jobs:
+            raise NumericsError(f"{self.filename} has no CODE statement")
+        merged = dict(values or {})
+        merged.update(overrides)
+        return run_job(jobs[-1], merged)
+
+    def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
+        """Perform one recorded job with optional overrides."""
+        return run_job(job, dict(values or {}))
+
+    def main(
+        self, source_lines: Sequence[str], argv: Sequence[str] | None = None
+    ) -> int:
+        """The ``python module.py`` entry point (see :mod:`.cli`)."""
+        from .cli import main
+
+        return main(self, source_lines, argv)

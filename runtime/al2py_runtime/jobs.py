@@ -1,0 +1,1020 @@
+"""The numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+
+A :class:`Job` is a snapshot taken at the ``CODE`` statement: the equations,
+the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
+statements, unit system and ``Digits``.  :func:`run_job` turns it into scalar
+Python functions (``sympy.lambdify(..., cse=True, modules="math")``, built once
+and cached per job) and integrates or solves with SciPy.  Values inside a run
+are in internal units (see :mod:`al2py_runtime.units`); ``Input`` values are
+converted in, ``Output`` values are converted out.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from .units import UnitError, UnitSystem
+
+__all__ = [
+    "NumericsError",
+    "InputValue",
+    "OutputItem",
+    "OutputSpec",
+    "Job",
+    "Column",
+    "Table",
+    "Result",
+    "INTEGRATION_DEFAULTS",
+    "run_job",
+    "check_overrides",
+    "normalize_name",
+]
+
+t = sp.Symbol("t")  # replaced below by the workspace's time symbol
+try:  # the same object dynamicsymbols use
+    from sympy.physics.mechanics import dynamicsymbols
+
+    t = dynamicsymbols._t
+except ImportError:  # pragma: no cover
+    pass
+
+
+class NumericsError(ValueError):
+    """A numerical job cannot run: bad input, no convergence, failed step."""
+
+
+#: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
+#: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
+#: TINITIAL)/100, PRINTINT = INTEGSTP).
+INTEGRATION_DEFAULTS: dict[str, float | None] = {
+    "TINITIAL": 0.0,
+    "TFINAL": None,
+    "INTEGSTP": None,
+    "PRINTINT": None,
+    "ABSERR": 1.0e-8,
+    "RELERR": 1.0e-7,
+}
+
+KINDS = ("DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC")
+
+
+def normalize_name(name: str) -> str:
+    """``"config[ 1 ]"`` -> ``"CONFIG[1]"``, ``"x'"`` -> ``"X'"``."""
+    return re.sub(r"\s+", "", str(name)).upper()
+
+
+# ------------------------------------------------------------------ records
+
+
+@dataclass(frozen=True)
+class InputValue:
+    """One ``Input NAME = value unit`` item."""
+
+    value: float
+    unit: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class OutputItem:
+    label: str
+    expr: Any
+    unit: str | None = None
+
+
+@dataclass(frozen=True)
+class OutputSpec:
+    """One ``Output`` statement: its items, in order."""
+
+    items: tuple[OutputItem, ...]
+    line: int | None = None
+
+
+@dataclass
+class Job:
+    """Everything a ``CODE`` statement needs, captured when it is recorded."""
+
+    kind: str
+    stem: str
+    filename: str | None
+    line: int | None
+    source: str
+    eqs: sp.Matrix | None
+    eqs_name: str | None
+    unknowns: list[Any]
+    sweep: tuple | None
+    rhs: dict
+    zero: sp.Matrix | None
+    outputs: list[OutputSpec]
+    inputs: dict[str, InputValue]
+    unit_system: UnitSystem
+    digits: int
+    variables: list[tuple[str, Any, int]]
+    names: dict[Any, str]
+    entries: dict[str, tuple[str, Any]]
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def where(self) -> str:
+        what = f"CODE {self.kind.title()}"
+        if self.filename:
+            what += f" {self.filename}"
+        if self.line is not None:
+            what += f" (line {self.line})"
+        return what
+
+
+# ------------------------------------------------------------------ results
+
+
+@dataclass(frozen=True)
+class Column:
+    label: str
+    unit: str | None = None
+
+
+@dataclass
+class Table:
+    """One output table: one ``Output`` statement evaluated at every row."""
+
+    number: int
+    columns: list[Column]
+    data: np.ndarray
+    line: int | None = None
+
+    @property
+    def names(self) -> list[str]:
+        return [c.label for c in self.columns]
+
+    def __len__(self) -> int:
+        return self.data.shape[0]
+
+    def __getitem__(self, label: str) -> np.ndarray:
+        key = normalize_name(label)
+        for j, col in enumerate(self.columns):
+            if normalize_name(col.label) == key:
+                return self.data[:, j]
+        raise KeyError(f"{label!r} is not a column of table {self.number}")
+
+    def __contains__(self, label: object) -> bool:
+        if not isinstance(label, str):
+            return False
+        key = normalize_name(label)
+        return any(normalize_name(c.label) == key for c in self.columns)
+
+
+@dataclass
+class Result:
+    """The outcome of :meth:`Workspace.run`.
+
+    ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
+    ``result.tables`` holds one :class:`Table` per ``Output`` statement.
+    """
+
+    kind: str
+    stem: str
+    tables: list[Table]
+    digits: int
+    solution: dict[str, np.ndarray] = field(default_factory=dict)
+    solution_units: dict[str, str | None] = field(default_factory=dict)
+    states: dict[str, np.ndarray] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    time_unit: str | None = None
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        for table in self.tables:
+            if name in table:
+                return table[name]
+        key = normalize_name(name)
+        for source in (self.solution, self.states):
+            if key in source:
+                return source[key]
+        raise KeyError(f"{name!r} is neither an output nor a solved quantity")
+
+    def __contains__(self, name: object) -> bool:
+        try:
+            self[name]  # type: ignore[index]
+        except (KeyError, TypeError):
+            return False
+        return True
+
+    def files(self) -> list[str]:
+        """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
+        return [f"{self.stem}.{table.number}" for table in self.tables]
+
+    def write(self, directory: str | Path = ".") -> list[Path]:
+        """Write each table as ``STEM.n``: a ``%`` header naming columns and
+        units, then one row per line with ``Digits`` significant digits
+        (``numpy.loadtxt(path, comments="%")`` reads them back)."""
+        directory = Path(directory)
+        directory.mkdir(parents=True, exist_ok=True)
+        written = []
+        for table, name in zip(self.tables, self.files(), strict=True):
+            path = directory / name
+            path.write_text(
+                format_table(table, self.digits, name, self.time_unit),
+                encoding="utf-8",
+            )
+            written.append(path)
+        return written
+
+    def plot(self, directory: str | Path = ".") -> list[Path]:
+        """Write ``STEM.n.png`` per table: each column against the first."""
+        try:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+            from matplotlib.figure import Figure
+        except ImportError:
+            raise NumericsError(
+                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
+            ) from None
+        directory = Path(directory)
+        directory.mkdir(parents=True, exist_ok=True)
+        written = []
+        for table, name in zip(self.tables, self.files(), strict=True):
+            cols = table.columns
+            if len(cols) < 2 or len(table) == 0:
+                continue
+            n = len(cols) - 1
+            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
+            FigureCanvasAgg(fig)
+            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
+            x = table.data[:, 0]
+            for ax, j in zip(axes, range(1, len(cols)), strict=True):
+                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
+                ax.set_ylabel(_heading(cols[j], self.time_unit))
+                ax.grid(True, alpha=0.3)
+            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
+            fig.suptitle(name)
+            fig.tight_layout()
+            path = directory / f"{name}.png"
+            fig.savefig(path, dpi=100)
+            written.append(path)
+        return written
+
+    def solution_lines(self) -> list[str]:
+        """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""
+        out = []
+        for name, values in self.solution.items():
+            unit = self.solution_units.get(name)
+            suffix = f" {unit}" if unit else ""
+            if len(values) == 1:
+                out.append(f"{name} = {fmt_number(values[0], self.digits)}{suffix}")
+        return out
+
+
+def _heading(col: Column, time_unit: str | None) -> str:
+    unit = col.unit
+    if unit is None and normalize_name(col.label) == "T" and time_unit:
+        unit = time_unit
+    return f"{col.label} ({unit})" if unit else col.label
+
+
+def fmt_number(x: float, digits: int) -> str:
+    return f"{x:.{digits}g}"
+
+
+def format_table(
+    table: Table, digits: int, name: str, time_unit: str | None = None
+) -> str:
+    """The text of one output file."""
+    width = max(digits + 8, 12)
+    labels, units = [], []
+    for col in table.columns:
+        unit = col.unit
+        if unit is None and normalize_name(col.label) == "T" and time_unit:
+            unit = time_unit
+        labels.append(col.label)
+        units.append(f"({unit})" if unit else "(UNITS)")
+    width = max([width] + [len(s) + 2 for s in labels + units])
+    lines = [
+        f"% FILE: {name}",
+        "%",
+        "%" + "".join(s.center(width) for s in labels).rstrip(),
+        "%" + "".join(s.center(width) for s in units).rstrip(),
+        "",
+    ]
+    for row in table.data:
+        lines.append(
+            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
+        )
+    return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------- resolving
+
+
+def _resolve(expr: Any, table: Mapping) -> Any:
+    """Substitute right-hand sides from ``table`` until none is left."""
+    if not table:
+        return expr
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: _resolve(e, table))
+    if not isinstance(expr, sp.Basic):
+        return sp.sympify(expr)
+    for _ in range(200):
+        new = expr.xreplace(table)
+        if new == expr:
+            break
+        expr = new
+    else:
+        raise NumericsError("right-hand sides refer to each other in a cycle")
+    if expr.has(sp.Derivative):
+        expr = expr.replace(
+            lambda e: isinstance(e, sp.Derivative)
+            and not isinstance(e.expr, AppliedUndef),
+            lambda e: e.doit(),
+        )
+        if expr.has(sp.Derivative):  # derivatives of names inside may have RHS
+            again = expr.xreplace(table)
+            if again != expr:
+                return _resolve(again, table)
+    return expr
+
+
+def _deriv(obj: Any, k: int) -> Any:
+    return sp.Derivative(obj, t, k) if k else obj
+
+
+def _base(obj: Any) -> tuple[Any, int]:
+    if isinstance(obj, sp.Derivative):
+        return obj.expr, sum(c for _, c in obj.variable_count)
+    return obj, 0
+
+
+# ---------------------------------------------------------- numeric functions
+
+_NAMESPACE = {
+    "trunc": lambda x: float(math.trunc(x)),
+    "nint": lambda x: math.copysign(math.floor(abs(x) + 0.5), x),
+}
+
+
+def _lambdify(args: list[Any], exprs: list[Any]) -> Any:
+    """A scalar function ``f(*args) -> list of floats`` (math module, CSE)."""
+    if not exprs:
+        return lambda *a: []
+    return sp.lambdify(args, list(exprs), modules=[_NAMESPACE, "math"], cse=True)
+
+
+class _Slots:
+    """Sympy objects -> positional arguments of the numeric functions."""
+
+    def __init__(self, job: Job) -> None:
+        self.job = job
+        self.time = sp.Dummy("T")
+        self.known: dict[Any, sp.Dummy] = {}
+        self.params: list[Any] = []  # objects, in argument order
+        self.param_dummies: list[sp.Dummy] = []
+
+    def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
+        out = []
+        for obj in objs:
+            d = sp.Dummy(f"{prefix}{len(self.known)}")
+            self.known[obj] = d
+            out.append(d)
+        return out
+
+    def numeric(self, expr: Any, what: str) -> Any:
+        """``expr`` with every object replaced by an argument dummy; new
+        constants, specified quantities and unknown derivatives become
+        parameters."""
+        expr = sp.sympify(expr).xreplace(self.known)
+        for kind in (sp.Derivative, AppliedUndef):
+            found = [a for a in expr.atoms(kind) if a not in self.known]
+            for obj in sorted(found, key=sp.default_sort_key):
+                if isinstance(obj, sp.Derivative):
+                    base, _k = _base(obj)
+                    if base in self.known or not isinstance(base, AppliedUndef):
+                        raise NumericsError(
+                            f"{self.job.where}: cannot evaluate {self.label(obj)}"
+                            f" in {what}: it has no right-hand side"
+                        )
+                self._param(obj)
+            expr = expr.xreplace(self.known)
+        for sym in sorted(expr.free_symbols, key=sp.default_sort_key):
+            if sym in self.known.values() or sym is self.time:
+                continue
+            if sym == t:
+                continue
+            self._param(sym)
+        expr = expr.xreplace(self.known).xreplace({t: self.time})
+        if expr.has(sp.Derivative):
+            raise NumericsError(f"{self.job.where}: cannot evaluate {what}")
+        return expr
+
+    def _param(self, obj: Any) -> None:
+        d = sp.Dummy(f"p{len(self.params)}")
+        self.known[obj] = d
+        self.params.append(obj)
+        self.param_dummies.append(d)
+
+    def label(self, obj: Any) -> str:
+        return label_of(obj, self.job.names)
+
+
+def label_of(obj: Any, names: Mapping[Any, str]) -> str:
+    base, k = _base(obj)
+    name = names.get(base)
+    if name is None:
+        name = base.func.__name__ if isinstance(base, AppliedUndef) else str(base)
+    return name + "'" * k
+
+
+# -------------------------------------------------------------- input values
+
+
+@dataclass
+class _Values:
+    """Input values in internal units, plus what was defaulted."""
+
+    job: Job
+    values: dict[str, float]
+    units: dict[str, str | None]
+    notes: list[str]
+    given: set[str] = field(default_factory=set)
+
+    def unused(self, used: Iterable[str]) -> None:
+        """Note overrides that the job never reads."""
+        used = {normalize_name(n) for n in used} | set(INTEGRATION_DEFAULTS)
+        if self.job.sweep is not None:
+            used.add(normalize_name(label_of(self.job.sweep[0], self.job.names)))
+        for key in sorted(self.given - used):
+            self.notes.append(
+                f"{key} does not appear in the equations or outputs of this job"
+                " (a value given in its declaration is substituted when"
+                " equations are formed); setting it has no effect"
+            )
+
+    def get(self, name: str, default: float = 0.0, note: bool = True) -> float:
+        key = normalize_name(name)
+        if key in self.values:
+            return self.values[key]
+        if note and default == 0.0:
+            self.notes.append(f"{name} has no Input value; using 0")
+        return default
+
+    def param(self, obj: Any) -> float:
+        return self.get(label_of(obj, self.job.names))
+
+
+def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]:
+    """Convert Input values (with overrides) to internal units; return the
+    constants whose numeric RHS the Input or an override replaces."""
+    us = job.unit_system
+    values: dict[str, float] = {}
+    units: dict[str, str | None] = {}
+    given: set[str] = set()
+    raw = {k: (v.value, v.unit) for k, v in job.inputs.items()}
+    for name, value in overrides.items():
+        key = normalize_name(name)
+        _check_override(job, key, name)
+        unit = job.inputs[key].unit if key in job.inputs else None
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            raise NumericsError(f"{name} = {value!r} is not a number") from None
+        raw[key] = (number, unit)
+        given.add(key)
+    for key, (number, unit) in raw.items():
+        try:
+            values[key] = number * us.to_internal(unit)
+        except UnitError as exc:
+            raise NumericsError(f"Input {key}: {exc}") from None
+        units[key] = unit
+    keep = set()
+    for key in raw:
+        entry = job.entries.get(key)
+        if entry is None or "'" in key:
+            continue
+        kind, obj = entry
+        value = job.rhs.get(obj)
+        if value is not None and kind == "constant":
+            if isinstance(value, sp.Basic) and value.is_number:
+                keep.add(obj)
+    return _Values(job, values, units, [], given), keep
+
+
+def check_overrides(job: Job, overrides: Mapping[str, Any]) -> None:
+    """Raise :class:`NumericsError` for a name that cannot be set."""
+    for name in overrides:
+        _check_override(job, normalize_name(name), name)
+
+
+def _check_override(job: Job, key: str, name: str) -> None:
+    if key in INTEGRATION_DEFAULTS or key in job.inputs:
+        return
+    m = re.fullmatch(r"([A-Z][A-Z0-9_]*)('*)", key)
+    entry = job.entries.get(m.group(1)) if m else None
+    if entry is None:
+        raise NumericsError(f"{name} is not an Input or a declared name of the script")
+    kind, obj = entry
+    if kind == "quantity":
+        raise NumericsError(f"{name} is defined by an equation; it cannot be set")
+    if kind not in ("constant", "variable", "specified"):
+        raise NumericsError(f"{name} is a {kind}; it cannot be set")
+    rhs = job.rhs.get(_deriv(obj, len(m.group(2))))
+    if rhs is not None and not (isinstance(rhs, sp.Basic) and rhs.is_number):
+        raise NumericsError(f"{name} is defined by an equation; it cannot be set")
+
+
+def _integration(vals: _Values) -> dict[str, float]:
+    p = {}
+    for key, default in INTEGRATION_DEFAULTS.items():
+        if key in vals.values:
+            p[key] = vals.values[key]
+        else:
+            p[key] = default  # type: ignore[assignment]
+    if p["TFINAL"] is None:
+        p["TFINAL"] = p["TINITIAL"] + 10.0
+    span = p["TFINAL"] - p["TINITIAL"]
+    if p["INTEGSTP"] is None or p["INTEGSTP"] == 0:
+        p["INTEGSTP"] = abs(span) / 100 if span else 0.1
+    if p["PRINTINT"] is None or p["PRINTINT"] == 0:
+        p["PRINTINT"] = p["INTEGSTP"]
+    for key in ("INTEGSTP", "PRINTINT", "ABSERR", "RELERR"):
+        if p[key] <= 0:
+            raise NumericsError(f"{key} must be positive, not {p[key]}")
+    return p
+
+
+def output_times(t0: float, t1: float, step: float) -> np.ndarray:
+    """``t0, t0+step, ...`` up to and including ``t1`` (``t1`` is always the
+    last row)."""
+    span = t1 - t0
+    if span == 0:
+        return np.array([t0])
+    step = math.copysign(step, span)
+    n = int(math.floor(span / step + 1e-9))
+    times = t0 + step * np.arange(n + 1)
+    if abs(times[-1] - t1) > 1e-9 * max(1.0, abs(t1)):
+        times = np.append(times, t1)
+    else:
+        times[-1] = t1
+    return times
+
+
+# --------------------------------------------------------------------- runs
+
+
+def run_job(job: Job, overrides: Mapping[str, Any] | None = None) -> Result:
+    """Perform ``job`` with its Input values, changed by ``overrides``."""
+    vals, keep = _input_values(job, overrides or {})
+    if job.kind in ("DYNAMICS", "ODE"):
+        return _run_dynamics(job, vals, keep)
+    if job.kind == "NONLINEAR":
+        return _run_nonlinear(job, vals, keep)
+    if job.kind == "ALGEBRAIC":
+        return _run_algebraic(job, vals, keep)
+    raise NumericsError(f"unknown CODE option {job.kind}")  # pragma: no cover
+
+
+def _without(table: dict, keep: Iterable[Any]) -> dict:
+    keep = set(keep)
+    return {k: v for k, v in table.items() if k not in keep}
+
+
+def _output_exprs(job: Job, table: dict, slots: _Slots) -> list[list[Any]]:
+    out = []
+    for spec in job.outputs:
+        row = []
+        for item in spec.items:
+            value = _resolve(item.expr, table)
+            if isinstance(value, sp.MatrixBase):
+                raise NumericsError(
+                    f"Output {item.label} (line {spec.line}) is a matrix;"
+                    " output its elements"
+                )
+            row.append(slots.numeric(value, f"Output {item.label}"))
+        out.append(row)
+    return out
+
+
+def _output_factors(job: Job, vals: _Values) -> list[list[float]]:
+    us = job.unit_system
+    factors = []
+    for spec in job.outputs:
+        row = []
+        for item in spec.items:
+            try:
+                row.append(1.0 / us.to_internal(item.unit))
+            except UnitError as exc:
+                raise NumericsError(
+                    f"Output {item.label} (line {spec.line}): {exc}"
+                ) from None
+        factors.append(row)
+    return factors
+
+
+def _columns(job: Job) -> list[list[Column]]:
+    return [[Column(i.label, i.unit) for i in spec.items] for spec in job.outputs]
+
+
+# ---------------------------------------------------------------- dynamics
+
+
+@dataclass
+class _Dynamics:
+    state_objs: list[Any]
+    state_names: list[str]
+    ud_objs: list[Any]
+    mf: Any  # (T, *y, *p) -> M (row-major) + f
+    deriv: Any  # (T, *y, *ud, *p) -> y'
+    outputs: list[Any]  # per table: (T, *y, *ud, *p) -> row
+    params: list[Any]
+
+
+def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
+    table = _without(job.rhs, keep)
+    explicit: list[tuple[Any, int]] = []
+    implicit: dict[Any, int] = {}
+    candidates = []
+    for _name, obj, order in job.variables:
+        if obj in table:
+            continue  # computed from its own RHS (dependent speeds, specified)
+        ks = [k for k in range(max(order, 1), 0, -1) if _deriv(obj, k) in table]
+        if ks:
+            explicit.append((obj, ks[0]))
+        else:
+            candidates.append(obj)
+    zero = None
+    if job.zero is not None:
+        zero = _resolve(sp.Matrix(job.zero), table)
+        cand = set(candidates)
+        for d in zero.atoms(sp.Derivative):
+            base, k = _base(d)
+            if base in cand and d not in table:
+                implicit[base] = max(implicit.get(base, 0), k)
+        if not implicit:
+            zero = None
+    if zero is not None and len(zero) != len(implicit):
+        names = ", ".join(
+            label_of(_deriv(b, k), job.names) for b, k in implicit.items()
+        )
+        raise NumericsError(
+            f"{job.where}: ZERO has {len(zero)} equations but {len(implicit)}"
+            f" unknown derivatives ({names})"
+        )
+    # states in declaration order
+    order_of = {obj: i for i, (_n, obj, _o) in enumerate(job.variables)}
+    layout = sorted(
+        [(obj, k, False) for obj, k in explicit]
+        + [(obj, k, True) for obj, k in implicit.items()],
+        key=lambda e: order_of[e[0]],
+    )
+    if not layout:
+        raise NumericsError(
+            f"{job.where}: nothing to integrate (no variable has an equation"
+            " for its derivative)"
+        )
+    state_objs = [_deriv(obj, j) for obj, k, _i in layout for j in range(k)]
+    ud_objs = [_deriv(obj, k) for obj, k, imp in layout if imp]
+    slots = _Slots(job)
+    ys = slots.add(state_objs, "y")
+    uds = slots.add(ud_objs, "ud")
+    derivs = []
+    for obj, k, imp in layout:
+        for j in range(k - 1):
+            derivs.append(slots.known[_deriv(obj, j + 1)])
+        if imp:
+            derivs.append(slots.known[_deriv(obj, k)])
+        else:
+            label = label_of(_deriv(obj, k), job.names)
+            derivs.append(slots.numeric(_resolve(table[_deriv(obj, k)], table), label))
+    mf_exprs: list[Any] = []
+    if zero is not None:
+        numeric_zero = [slots.numeric(e, "ZERO") for e in zero]
+        mass = sp.Matrix(numeric_zero).jacobian(uds)
+        if any(e.has(*uds) for e in mass):
+            raise NumericsError(
+                f"{job.where}: ZERO is not linear in "
+                + ", ".join(label_of(d, job.names) for d in ud_objs)
+            )
+        zero_at_0 = [e.xreplace(dict.fromkeys(uds, 0)) for e in numeric_zero]
+        mf_exprs = list(mass) + [-e for e in zero_at_0]
+    outputs = _output_exprs(job, table, slots)
+    args_y = [slots.time, *ys]
+    params = list(slots.param_dummies)
+    mf = _lambdify([*args_y, *params], mf_exprs)
+    deriv = _lambdify([*args_y, *uds, *params], derivs)
+    out_funcs = [_lambdify([*args_y, *uds, *params], row) for row in outputs]
+    return _Dynamics(
+        state_objs,
+        [label_of(o, job.names) for o in state_objs],
+        ud_objs,
+        mf,
+        deriv,
+        out_funcs,
+        list(slots.params),
+    )
+
+
+def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+    from scipy.integrate import solve_ivp
+
+    key = ("dyn", frozenset(keep))
+    if key not in job._cache:
+        job._cache[key] = _compile_dynamics(job, frozenset(keep))
+    c: _Dynamics = job._cache[key]
+    ip = _integration(vals)
+    vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
+    p = [vals.param(obj) for obj in c.params]
+    y0 = [vals.get(name) for name in c.state_names]
+    n = len(c.ud_objs)
+    mf, deriv = c.mf, c.deriv
+    nn = n * n
+
+    def accelerations(tt: float, yl: list[float]) -> list[float]:
+        if not n:
+            return []
+        vals_mf = mf(tt, *yl, *p)
+        if n == 1:
+            return [vals_mf[1] / vals_mf[0]]
+        m = np.array(vals_mf[:nn]).reshape(n, n)
+        return np.linalg.solve(m, vals_mf[nn:]).tolist()
+
+    def fun(tt: float, y: np.ndarray) -> list[float]:
+        yl = y.tolist()
+        return deriv(tt, *yl, *accelerations(tt, yl), *p)
+
+    times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
+    try:
+        if len(times) == 1:
+            ys = np.array(y0, dtype=float).reshape(-1, 1)
+        else:
+            sol = solve_ivp(
+                fun,
+                (times[0], times[-1]),
+                y0,
+                method="DOP853",
+                t_eval=times,
+                rtol=ip["RELERR"],
+                atol=ip["ABSERR"],
+                max_step=ip["INTEGSTP"],
+            )
+            if sol.status != 0:
+                raise NumericsError(
+                    f"{job.where}: integration failed at t = {sol.t[-1] if len(sol.t) else times[0]:g}:"
+                    f" {sol.message}"
+                )
+            ys = sol.y
+        tables = []
+        factors = _output_factors(job, vals)
+        rows_all = [[] for _ in c.outputs]
+        for i, tt in enumerate(times):
+            yl = ys[:, i].tolist()
+            ud = accelerations(float(tt), yl)
+            for rows, func in zip(rows_all, c.outputs, strict=True):
+                rows.append(func(float(tt), *yl, *ud, *p))
+    except (ZeroDivisionError, np.linalg.LinAlgError) as exc:
+        raise NumericsError(
+            f"{job.where}: the mass matrix of ZERO is singular ({exc})"
+        ) from None
+    except (ValueError, OverflowError) as exc:
+        if isinstance(exc, NumericsError):
+            raise
+        raise NumericsError(f"{job.where}: {exc}") from None
+    for number, (cols, rows, fac, spec) in enumerate(
+        zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
+    ):
+        data = np.array(rows, dtype=float).reshape(len(rows), len(cols)) * fac
+        tables.append(Table(number, cols, data, spec.line))
+    states = {"T": np.asarray(times, dtype=float)}
+    for j, name in enumerate(c.state_names):
+        unit = vals.units.get(name)
+        states[name] = ys[j] / job.unit_system.to_internal(unit)
+    return Result(
+        job.kind,
+        job.stem,
+        tables,
+        job.digits,
+        states=states,
+        notes=_unique(vals.notes),
+        time_unit=job.unit_system.time_unit,
+    )
+
+
+def _unique(items: list[str]) -> list[str]:
+    return list(dict.fromkeys(items))
+
+
+# ------------------------------------------------------ nonlinear, algebraic
+
+
+@dataclass
+class _Static:
+    unknown_names: list[str]
+    residual: Any  # (T, *x, *p) -> F
+    jacobian: Any  # (T, *x, *p) -> J row-major (Nonlinear), A (Algebraic)
+    rhs: Any  # Algebraic: (T, *p) -> b
+    outputs: list[Any]
+    params: list[Any]
+
+
+def _eq_labels(job: Job) -> list[str]:
+    n = len(job.eqs) if job.eqs is not None else 0
+    if job.eqs_name:
+        return [f"{job.eqs_name}[{i + 1}]" for i in range(n)]
+    return [f"equation {i + 1}" for i in range(n)]
+
+
+def _compile_static(job: Job, keep: frozenset) -> _Static:
+    unknowns = list(job.unknowns)
+    table = _without(job.rhs, set(keep) | set(unknowns))
+    slots = _Slots(job)
+    xs = slots.add(unknowns, "x")
+    eqs = []
+    if job.eqs is not None:
+        resolved = _resolve(sp.Matrix(job.eqs), table)
+        eqs = [slots.numeric(e, "the equations") for e in resolved]
+    if len(eqs) != len(unknowns):
+        raise NumericsError(
+            f"{job.where}: {len(eqs)} equations for {len(unknowns)} unknowns"
+        )
+    outputs = _output_exprs(job, table, slots)
+    args = [slots.time, *xs]
+    jac = sp.Matrix(eqs).jacobian(xs) if eqs else sp.Matrix()
+    residual = _lambdify([*args, *slots.param_dummies], eqs)
+    rhs = None
+    if job.kind == "ALGEBRAIC":
+        bad = [u for u, x in zip(unknowns, xs, strict=True) if jac.has(x)]
+        if bad:
+            raise NumericsError(
+                f"{job.where}: the equations are not linear in "
+                + ", ".join(label_of(u, job.names) for u in bad)
+                + "; use CODE Nonlinear"
+            )
+        at0 = dict.fromkeys(xs, 0)
+        rhs = _lambdify(
+            [slots.time, *slots.param_dummies], [-e.xreplace(at0) for e in eqs]
+        )
+        jacobian = _lambdify([slots.time, *slots.param_dummies], list(jac))
+    else:
+        jacobian = _lambdify([*args, *slots.param_dummies], list(jac))
+    out_funcs = [_lambdify([*args, *slots.param_dummies], row) for row in outputs]
+    return _Static(
+        [label_of(u, job.names) for u in unknowns],
+        residual,
+        jacobian,
+        rhs,
+        out_funcs,
+        list(slots.params),
+    )
+
+
+def _static(job: Job, keep: set, vals: _Values) -> _Static:
+    key = ("static", frozenset(keep))
+    if key not in job._cache:
+        job._cache[key] = _compile_static(job, frozenset(keep))
+    c = job._cache[key]
+    vals.unused([label_of(o, job.names) for o in c.params] + c.unknown_names)
+    return c
+
+
+def _static_result(
+    job: Job,
+    vals: _Values,
+    c: _Static,
+    t0: float,
+    rows: list[tuple[list[float], list[float]]],
+) -> Result:
+    """Tables from ``rows`` of (unknown values, parameter values)."""
+    us = job.unit_system
+    solution = {}
+    units = {}
+    for j, name in enumerate(c.unknown_names):
+        unit = vals.units.get(name)
+        units[name] = unit
+        solution[name] = np.array([x[j] for x, _p in rows]) / us.to_internal(unit)
+    tables = []
+    if job.outputs:
+        factors = _output_factors(job, vals)
+        for number, (cols, func, fac, spec) in enumerate(
+            zip(_columns(job), c.outputs, factors, job.outputs, strict=True), start=1
+        ):
+            try:
+                data = [func(t0, *x, *p) for x, p in rows]
+            except (ValueError, ZeroDivisionError, OverflowError) as exc:
+                raise NumericsError(f"{job.where}: Output: {exc}") from None
+            arr = np.array(data, dtype=float).reshape(len(rows), len(cols)) * fac
+            tables.append(Table(number, cols, arr, spec.line))
+    elif c.unknown_names:
+        cols = [Column(n, units[n]) for n in c.unknown_names]
+        data = np.column_stack([solution[n] for n in c.unknown_names])
+        tables.append(Table(1, cols, data, job.line))
+    return Result(
+        job.kind,
+        job.stem,
+        tables,
+        job.digits,
+        solution=solution,
+        solution_units=units,
+        notes=_unique(vals.notes),
+        time_unit=us.time_unit,
+    )
+
+
+def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
+    from scipy.optimize import root
+
+    c = _static(job, keep, vals)
+    ip = _integration(vals)
+    t0 = ip["TINITIAL"]
+    p = [vals.param(obj) for obj in c.params]
+    x0 = [vals.get(name) for name in c.unknown_names]
+    n = len(x0)
+    labels = _eq_labels(job)
+
+    def fun(x: np.ndarray) -> list[float]:
+        return c.residual(t0, *x.tolist(), *p)
+
+    def jac(x: np.ndarray) -> np.ndarray:
+        return np.array(c.jacobian(t0, *x.tolist(), *p)).reshape(n, n)
+
+    try:
+        f0 = np.abs(fun(np.array(x0, dtype=float)))
+        scale = max(1.0, float(f0.max()) if n else 1.0)
+        tol = ip["ABSERR"] * scale
+        best = None
+        for method in ("hybr", "lm"):
+            sol = root(fun, x0, jac=jac, method=method, tol=min(ip["RELERR"], 1e-10))
+            res = np.abs(fun(sol.x))
+            if best is None or res.max() < best[1].max():
+                best = (sol.x, res)
+            if res.max() <= tol:
+                break
+    except (ValueError, ZeroDivisionError, OverflowError) as exc:
+        raise NumericsError(f"{job.where}: {exc}") from None
+    x, res = best
+    if not np.all(np.isfinite(res)) or res.max() > tol:
+        worst = int(np.nanargmax(res)) if np.any(np.isfinite(res)) else 0
+        at = ", ".join(
+            f"{name} = {fmt_number(v / job.unit_system.to_internal(vals.units.get(name)), 6)}"
+            + (f" {vals.units[name]}" if vals.units.get(name) else "")
+            for name, v in zip(c.unknown_names, x, strict=True)
+        )
+        raise NumericsError(
+            f"{job.where}: no solution found from the Input guesses;"
+            f" residual |{labels[worst]}| = {res[worst]:.3g} at {at}."
+            " Try other guesses."
+        )
+    return _static_result(job, vals, c, t0, [(x.tolist(), p)])
+
+
+def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
+    c = _static(job, keep, vals)
+    ip = _integration(vals)
+    t0 = ip["TINITIAL"]
+    sweep_obj = job.sweep[0] if job.sweep is not None else None
+    base = [0.0 if obj == sweep_obj else vals.param(obj) for obj in c.params]
+    n = len(c.unknown_names)
+    param_rows: list[list[float]] = []
+    if job.sweep is not None:
+        obj, unit, start, stop, step = job.sweep
+        try:
+            factor = job.unit_system.to_internal(unit)
+        except UnitError as exc:
+            raise NumericsError(f"{job.where}: {exc}") from None
+        values = output_times(float(start), float(stop), float(step))
+        try:
+            index = c.params.index(obj)
+        except ValueError:
+            index = None
+        for v in values:
+            p = list(base)
+            if index is not None:
+                p[index] = v * factor
+            param_rows.append(p)
+    else:
+        param_rows.append(base)
+    rows = []
+    for p in param_rows:
+        if n:
+            a = np.array(c.jacobian(t0, *p), dtype=float).reshape(n, n)
+            b = np.array(c.rhs(t0, *p), dtype=float)
+            try:
+                x = np.linalg.solve(a, b).tolist()
+            except np.linalg.LinAlgError:
+                raise NumericsError(
+                    f"{job.where}: the equations are singular (no unique solution)"
+                ) from None
+        else:
+            x = []
+        rows.append((x, p))
+    result = _static_result(job, vals, c, t0, rows)
+    if job.sweep is not None:
+        obj, unit, start, stop, step = job.sweep
+        name = label_of(obj, job.names)
+        result.solution.setdefault(
+            name, output_times(float(start), float(stop), float(step))
+        )
+        result.solution_units.setdefault(name, unit)
+    return result
