@@ -37,7 +37,7 @@ __all__ = [
 t = dynamicsymbols._t
 
 #: Size above which ``tidy`` does not try ``trigsimp`` (it gets slow).
-TRIGSIMP_LIMIT = 400
+TRIGSIMP_LIMIT = 300
 
 
 def is_vector(x: Any) -> bool:
@@ -89,14 +89,27 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
 def _tidy_one(expr: sp.Expr) -> sp.Expr:
     if not isinstance(expr, sp.Expr) or expr.is_number:
         return expr
-    if expr.has(sp.sin, sp.cos) and sp.count_ops(expr) <= TRIGSIMP_LIMIT:
-        try:
-            new = sp.trigsimp(expr)
-        except Exception:  # pragma: no cover - trigsimp is best effort
-            new = expr
-        if sp.count_ops(new) <= sp.count_ops(expr):
-            expr = new
+    if expr.has(sp.sin, sp.cos):
+        ops = sp.count_ops(expr)
+        if ops <= TRIGSIMP_LIMIT:
+            new = _trig(expr)
+            if sp.count_ops(new) <= ops:
+                expr = new
     return sp.factor_terms(expr)
+
+
+def _trig(expr: sp.Expr) -> sp.Expr:
+    """Combine products of sines and cosines of different angles
+    (``cos(a)*cos(b) + sin(a)*sin(b)`` -> ``cos(a - b)``), cheaply."""
+    from sympy.simplify.fu import TR10i
+
+    try:
+        num, den = sp.fraction(sp.together(expr))
+        if den == 1:
+            return TR10i(sp.expand(num))
+        return TR10i(sp.expand(num)) / TR10i(sp.expand(den))
+    except Exception:  # pragma: no cover - best effort
+        return expr
 
 
 def tidy_vector(v: Any) -> Any:

@@ -266,6 +266,8 @@ class MechanicsMixin:
             raise ValueError(f"cannot assign to {key}: assign all of {key.name}")
         kind, *objs = form
         st = self._mech
+        if isinstance(value, Vector | Dyadic):
+            value = kin.vmap(value, self.normalize)
         if kind == "DCM":
             a, b = objs
             m = sp.Matrix(value)
