@@ -121,6 +121,9 @@ class Job:
     variables: list[tuple[str, Any, int]]
     names: dict[Any, str]
     entries: dict[str, tuple[str, Any]]
+    #: initial values of variables the script never inputs (``NiCheck``'s
+    #: work variable starts at 0), by name
+    initials: dict[str, float] = field(default_factory=dict)
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -458,8 +461,8 @@ class _Values:
         key = normalize_name(name)
         if key in self.values:
             return self.values[key]
-        if note and default == 0.0:
-            self.notes.append(f"{name} has no Input value; using 0")
+        if note:
+            self.notes.append(f"{name} has no Input value; using {default:g}")
         return default
 
     def param(self, obj: Any) -> float:
@@ -727,7 +730,10 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     ip = _integration(vals)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
-    y0 = [vals.get(name) for name in c.state_names]
+    y0 = [
+        vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
+        for name in c.state_names
+    ]
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n

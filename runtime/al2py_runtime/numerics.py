@@ -170,6 +170,12 @@ class NumericsMixin:
             ],
             names=dict(self._entries_by_obj),
             entries={name: (e.kind, e.obj) for name, e in self._names.items()},
+            initials={
+                name: float(getattr(e, "extra", {}).get("initial", 0.0))
+                for name, e in self._names.items()
+                if "initial" in getattr(e, "extra", {})
+                or name.startswith("NICHECK_WORK")
+            },
         )
         state.jobs.append(job)
         return job

@@ -151,8 +151,8 @@ def tutor6(*, digits: int | None = None) -> Workspace:
         - la * (k * stretch + c * sdot) * s / loq
     )
     ws.assign("ZERO", sp.Matrix([zero1, zero2]))
-    work = ws.variables("WORK'")
-    ws.assign("WORK'", fp * u1 - c * sdot**2)
+    work = ws.variables("NICHECK_WORK'")  # as NiCheck() declares it
+    ws.assign("NICHECK_WORK'", fp * u1 - c * sdot**2)
     ke = (mp * u1**2 + mq * (u1**2 + u2**2 + 2 * u1 * u2 * sp.cos(qa - qb))) / 2
     pe = -g * (mp * la * sp.cos(qa) + mq * (la * sp.cos(qa) + lb * sp.cos(qb)))
     echeck = ws.assign("ECHECK", ke + pe + k * stretch**2 / 2 - work)
@@ -305,7 +305,8 @@ def test_tutor6_dynamics():
     assert result["QB"][-1] == pytest.approx(-35.150, abs=1e-3)
     # the energy check stays constant while WORK is integrated alongside
     assert np.ptp(result["ECHECK"]) < 1e-5
-    assert "WORK" in result.states
+    assert "NICHECK_WORK" in result.states
+    assert result.notes == []  # NiCheck's work variable starts at 0 silently
     # stretch is the RHS of STRETCH in metres
     qa, qb = np.radians(result["QA"]), np.radians(result["QB"])
     loq = np.sqrt(1 + 4 + 4 * np.cos(qa - qb))
@@ -566,3 +567,22 @@ def test_main_without_code_statement(capsys):
     assert ws.main(["Constants A"], []) == 0
     assert capsys.readouterr().out == "(1) Constants A\n"
     assert ws.main(["Constants A"], ["--set", "A=1"]) == 2
+
+
+def test_english_unit_system_converts_inputs_and_outputs(tmp_path):
+    ws = Workspace("feet.al")
+    x = ws.variables("X'")
+    v = ws.constants("V")
+    ws.assign("X'", v)
+    ws.unit_system("slug", "ft", "sec")
+    ws.input({"V": (1, "m/sec"), "X": (0, "m"), "TFINAL": (2, "sec")})
+    ws.input({"PRINTINT": 1})
+    ws.output([("T", t, None), ("X", x, "m"), ("XFT", x, None), ("XIN", x, "in")])
+    ws.code("ODE", file="feet.m")
+    result = ws.run(V=2)  # m/sec, the Input's unit
+    assert np.allclose(result["X"], [0, 2, 4])
+    assert np.allclose(result["XFT"], np.array([0, 2, 4]) / 0.3048)
+    assert np.allclose(result["XIN"], np.array([0, 2, 4]) / 0.0254)
+    assert np.allclose(result.states["X"], [0, 2, 4])  # in the Input's unit
+    (path,) = result.write(tmp_path)
+    assert "(sec)" in path.read_text()
