@@ -103,11 +103,20 @@ def _trig(expr: sp.Expr) -> sp.Expr:
     (``cos(a)*cos(b) + sin(a)*sin(b)`` -> ``cos(a - b)``), cheaply."""
     from sympy.simplify.fu import TR10i
 
+    def combine(e: sp.Expr) -> sp.Expr:
+        out = TR10i(sp.expand(e))
+        # TR10i also writes sin(x) + cos(x) as sqrt(2)*sin(x + pi/4): undo that
+        # (Degrees ON would misread the pi, and it is not what Autolev prints)
+        return out.replace(
+            lambda f: isinstance(f, sp.sin | sp.cos) and f.args[0].has(sp.pi),
+            lambda f: sp.expand_trig(f),
+        )
+
     try:
         num, den = sp.fraction(sp.together(expr))
         if den == 1:
-            return TR10i(sp.expand(num))
-        return TR10i(sp.expand(num)) / TR10i(sp.expand(den))
+            return combine(num)
+        return combine(num) / combine(den)
     except Exception:  # pragma: no cover - best effort
         return expr
 

@@ -8,8 +8,10 @@ substitution after resolving right-hand sides), never as text.
 
 from __future__ import annotations
 
+import math
 import random
 
+import pytest
 import sympy as sp
 from al2py_runtime import Workspace, t
 from sympy.physics.vector import Vector
@@ -328,3 +330,434 @@ def test_tutor7_against_sympy_kanes_method():
     fr, frstar = km.kanes_equations(bodies, loads)
     ref = al._speed_subs((fr + frstar)[0])
     assert same(al["ZERO[1]"], ref)
+
+
+# ------------------------------------------------------ tutor6 / tutor6f
+
+
+def tutor6(contact_forces=False):
+    al = Workspace("tutor6.al")
+    N = al.newtonian("N")
+    A, B = al.frames("A", "B")
+    P, Q = al.particles("P", "Q")
+    O = al.points("O")
+    us = al.variables(*[f"U{i}'" for i in range(1, 5 if contact_forces else 3)])
+    U1, U2 = us[:2]
+    QA, QB = al.variables("QA'", "QB'")
+    F1, F2 = al.variables("F1", "F2")
+    G, LA, LB = al.constants("G", "LA", "LB")
+    K, LO = al.constants("K", "LO")
+    C, DD = al.constants("C", "D")
+    STRETCH = al.specified("STRETCH'")
+    FP = al.specified("FP")
+    al.assign("FP", -DD * D(QA, t))
+    MP, MQ = al.constants("MP+", "MQ+")
+    al.set_mass(P, MP)
+    al.set_mass(Q, MQ)
+    al.simprot(N, A, 3, QA)
+    al.simprot(N, B, 3, QB)
+    al.assign("P_O_P>", LA * A.x)
+    al.assign("P_P_Q>", LB * B.x)
+    al.assign("QA'", U1 / LA)
+    al.assign("QB'", U2 / LB)
+    al.assign("W_A_N>", D(QA, t) * A.z)
+    al.assign("W_B_N>", D(QB, t) * B.z)
+    if contact_forces:
+        al.assign("V_O_N>", us[2] * N.x + us[3] * N.y)
+    else:
+        al.assign("V_O_N>", Vector(0))
+    al.v2pts(N, A, O, P)
+    al.v2pts(N, B, P, Q)
+    if contact_forces:
+        al.assign("AUXILIARY[1]", al.dot(al["V_O_N>"], N.x))
+        al.assign("AUXILIARY[2]", al.dot(al["V_O_N>"], N.y))
+        al.constrain("AUXILIARY", [us[2], us[3]])
+    al.gravity(G * N.x)
+    al.assign("FORCE_P>", al["FORCE_P>"] + FP * A.y)
+    LOQ = al.assign("LOQ", al.mag(al["P_O_Q>"]))
+    al.assign("STRETCH", LOQ - LO)
+    UVEC = al.assign("UVEC>", al["P_O_Q>"] / LOQ)
+    al.assign("STRETCH'", al.dot(al["V_Q_N>"], UVEC))
+    al.force_between(O, Q, (-K * STRETCH - C * D(STRETCH, t)) * UVEC)
+    al.assign("FORCE_O>", al["FORCE_O>"] + F1 * N.x + F2 * N.y)
+    al.assign("ZERO", al.fr() + al.frstar(), line=62)
+    zero_before_kane = al["ZERO"]
+    if contact_forces:
+        al.kane(F1, F2, line=64)
+    else:
+        al.kane(line=64)
+    return al, locals()
+
+
+def test_tutor6_equations_of_motion():
+    al, v = tutor6()
+    LA, LB, QA, QB, U1, U2 = (v[k] for k in ("LA", "LB", "QA", "QB", "U1", "U2"))
+    K, C, G, MP, MQ, FP = (v[k] for k in ("K", "C", "G", "MP", "MQ", "FP"))
+    LOQ, STRETCH = v["LOQ"], v["STRETCH"]
+    s, c = sp.sin, sp.cos
+    loq = sp.sqrt(LA**2 + LB**2 + 2 * LA * LB * c(QA - QB))
+    assert same(al["LOQ"], loq)
+    sdot = s(QA - QB) * (LA * U2 - LB * U1) / LOQ
+    assert same(al["STRETCH'"], sdot, al)
+    ks = K * STRETCH + C * D(STRETCH, t)
+    z1 = (
+        FP
+        + s(QA - QB) * (LB**2 * ks / LOQ - MQ * U2**2) / LB
+        - G * (MP + MQ) * s(QA)
+        - (MP + MQ) * D(U1, t)
+        - MQ * c(QA - QB) * D(U2, t)
+    )
+    z2 = (
+        MQ * s(QA - QB) * U1**2 / LA
+        - G * MQ * s(QB)
+        - MQ * D(U2, t)
+        - MQ * c(QA - QB) * D(U1, t)
+        - LA * ks * s(QA - QB) / LOQ
+    )
+    before = v["zero_before_kane"]
+    assert same(before[0], z1, al) and same(before[1], z2, al)
+    assert same(al["ZERO[1]"], z1, al) and same(al["ZERO[2]"], z2, al)
+    # after Kane: linear in U1', U2' and free of QA', QB'
+    for row in al["ZERO"]:
+        assert not row.has(D(QA, t), D(QB, t))
+        for u in (U1, U2):
+            assert not sp.diff(row, D(u, t)).has(D(U1, t), D(U2, t))
+
+
+def test_tutor6f_contact_forces():
+    al, v = tutor6(contact_forces=True)
+    LA, LB, QA, QB, U1, U2 = (v[k] for k in ("LA", "LB", "QA", "QB", "U1", "U2"))
+    G, MP, MQ, FP = (v[k] for k in ("G", "MP", "MQ", "FP"))
+    s, c = sp.sin, sp.cos
+    d1, d2 = D(U1, t), D(U2, t)
+    f1 = (
+        FP * s(QA)
+        - G * (MP + MQ)
+        - MP * c(QA) * U1**2 / LA
+        - MQ * s(QB) * d2
+        - (MP + MQ) * s(QA) * d1
+        - MQ * (c(QA) * U1**2 / LA + c(QB) * U2**2 / LB)
+    )
+    f2 = (
+        MQ * c(QB) * d2
+        + (MP + MQ) * c(QA) * d1
+        - FP * c(QA)
+        - MP * s(QA) * U1**2 / LA
+        - MQ * (s(QA) * U1**2 / LA + s(QB) * U2**2 / LB)
+    )
+    assert same(al.rhs(v["F1"]), f1, al)
+    assert same(al.rhs(v["F2"]), f2, al)
+    # the remaining equations are tutor6's
+    ref, _ = tutor6()
+    assert al["ZERO"].shape == (2, 1)
+    assert same(al["ZERO[1]"], ref["ZERO[1]"], al)
+    assert same(al["ZERO[2]"], ref["ZERO[2]"], al)
+    assert al.rhs(v["us"][2]) == 0 and al["U4'"] == 0
+
+
+# ---------------------------------------------------------------- tutor8
+
+
+def tutor8():
+    al = Workspace("tutor8.al")
+    al.set("Digits", 2)
+    N = al.newtonian("N")
+    A, B = al.bodies("A", "B")
+    O = al.points("O")
+    U1, U2 = al.variables("U1'", "U2'")
+    X, THETA = al.variables("X'", "THETA'")
+    L = al.constants("L")
+    G = al.constants("G")
+    K1, K2, K3, K4 = al.constants("K1", "K2", "K3", "K4")
+    F = al.specified("F")
+    al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2)
+    MA, MB = al.constants("MA+", "MB+")
+    al.set_mass(A, MA)
+    al.set_mass(B, MB)
+    IB = al.constants("IB")
+    al.assign("IB", MB * L**2 / 12)
+    al.set_inertia(B, IB, 0, IB)
+    al.simprot(N, B, 3, THETA)
+    AO, BO = al.point("AO"), al.point("BO")
+    al.assign("P_O_AO>", X * N.x)
+    al.assign("P_AO_BO>", 0.5 * L * B.y)
+    al.assign("X'", U1)
+    al.assign("THETA'", U2)
+    al.assign("W_A_N>", Vector(0))
+    al.assign("W_B_N>", D(THETA, t) * B.z)
+    al.assign("V_AO_N>", al.dt(al["P_O_AO>"], N))
+    al.v2pts(N, B, AO, BO)
+    al.gravity(-G * N.y)
+    al.assign("FORCE_AO>", al["FORCE_AO>"] + F * N.x)
+    al.assign("ZERO", al.fr() + al.frstar())
+    al.kane(line=49)
+    kane_zero = al["ZERO"]
+    al.assign("ZERO", al.evaluate(al["ZERO"], {L: 1, MA: 10, MB: 1, G: 9.81}))
+    dU1, dU2 = al.variables("dU1'", "dU2'")
+    dX, dTHETA = al.variables("dX'", "dTHETA'")
+    nominal = {X: 0, THETA: 0, U1: 0, U2: 0, D(U1, t): 0, D(U2, t): 0}
+    al.assign("CHECK", al.evaluate(al["ZERO"], nominal))
+    pts = [(X, 0, dX), (THETA, 0, dTHETA), (U1, 0, dU1), (U2, 0, dU2)]
+    al.assign("DX'", al.taylor(al["X'"], 1, pts))
+    al.assign("DTHETA'", al.taylor(al["THETA'"], 1, pts))
+    pts += [(D(U1, t), 0, D(dU1, t)), (D(U2, t), 0, D(dU2, t))]
+    al.assign("PERTURB", al.taylor(al["ZERO"], 1, pts))
+    al.solve(al["PERTURB"], [D(dU1, t), D(dU2, t)])
+    xm = al.assign("XM", sp.Matrix([[dX, dTHETA, dU1, dU2]]))
+    xp = al.assign("XP", sp.Matrix([D(x, t) for x in (dX, dTHETA, dU1, dU2)]))
+    al.assign("A", al.d(xp, xm))
+    al.assign("ROOTS1", al.eig(al.evaluate(al["A"], {K1: 0, K2: 0, K3: 0, K4: 0})))
+    return al, locals()
+
+
+def test_tutor8_cart_pendulum():
+    al, v = tutor8()
+    L, MA, MB, G, IB, F = (v[k] for k in ("L", "MA", "MB", "G", "IB", "F"))
+    THETA, U1, U2 = v["THETA"], v["U1"], v["U2"]
+    K1, K2, K3, K4 = v["K1"], v["K2"], v["K3"], v["K4"]
+    s, c = sp.sin, sp.cos
+    half = sp.Rational(1, 2)
+    # the printed ZERO[1] has U2'^2 where U2^2 is meant
+    z1 = (
+        F
+        + half * L * MB * c(THETA) * D(U2, t)
+        - half * L * MB * s(THETA) * U2**2
+        - (MA + MB) * D(U1, t)
+    )
+    z2 = (
+        half * G * L * MB * s(THETA)
+        + half * L * MB * c(THETA) * D(U1, t)
+        - sp.Rational(1, 4) * (4 * IB + MB * L**2) * D(U2, t)
+    )
+    zk = v["kane_zero"]
+    assert same(zk[0], z1, al) and same(zk[1], z2, al)
+    assert al["CHECK"] == sp.Matrix([0, 0])
+    a = al["A"]
+    assert a[:2, :] == sp.Matrix([[0, 0, 1, 0], [0, 0, 0, 1]])
+    g = sp.Rational(981, 100)
+    expected = sp.Matrix(
+        [
+            [
+                sp.Rational(4, 41) * K1,
+                sp.Rational(4, 41) * K2 + 3 * g / 41,
+                sp.Rational(4, 41) * K3,
+                sp.Rational(4, 41) * K4,
+            ],
+            [
+                sp.Rational(6, 41) * K1,
+                sp.Rational(6, 41) * K2 + 66 * g / 41,
+                sp.Rational(6, 41) * K3,
+                sp.Rational(6, 41) * K4,
+            ],
+        ]
+    )
+    assert (a[2:, :] - expected).applyfunc(sp.simplify) == sp.zeros(2, 4)
+    assert abs(float(a[2, 1].subs(K2, 0)) - 0.717805) < 1e-6
+    assert abs(float(a[3, 1].subs(K2, 0)) - 15.7917) < 1e-4
+    roots = sorted(complex(r).real for r in al["ROOTS1"])
+    assert roots == pytest.approx([-3.97388, 0, 0, 3.97388], abs=1e-5)
+
+
+# ---------------------------------------------------------------- tutor9
+
+
+def tutor9():
+    al = Workspace("tutor9.al")
+    N = al.newtonian("N")
+    A = al.bodies("A")
+    B = al.frames("B")
+    U1, U2, U3 = al.variables("U1'", "U2'", "U3'")
+    OMEGA = al.constants("OMEGA")
+    J = al.constants("J")
+    M = al.constants("M+")
+    al.set_mass(A, M)
+    I1, I2, I3 = al.constants("I1+", "I2+", "I3+")
+    al.set_inertia(A, I1, I2, I3)
+    al.assign("W_A_N>", U1 * A.x + U2 * A.y + U3 * A.z)
+    al.assign("W_B_A>", OMEGA * A.z)
+    al.assign("ALF_A_N>", al.dt(al["W_A_N>"], N))
+    al.assign("ALF_B_A>", al.dt(al["W_B_A>"], A))
+    AO = al.point("AO")
+    al.assign("A_AO_N>", Vector(0))
+    al.assign(
+        "ZERO", al.fr() + al.frstar() + al.gyrostat("FRSTAR", "CYLINDER", A, B, J)
+    )
+    al.kane(line=31)
+    h = al.assign(
+        "H>",
+        al.momentum("ANGULAR", AO) + al.gyrostat("ANGMOM", "CYLINDER", A, B, J),
+    )
+    al.assign("H", al.mag(h))
+    al.assign("PHI", sp.acos(al.dot(al.unitvec(h), A.z)))
+    dU1, dU2, dU3 = al.variables("dU1'", "dU2'", "dU3'")
+    nU3 = al.constants("nU3")
+    nominal = {U1: 0, D(U1, t): 0, U2: 0, D(U2, t): 0, U3: nU3, D(U3, t): 0}
+    al.assign("CHECK", al.evaluate(al["ZERO"], nominal))
+    pts = [
+        (U1, 0, dU1),
+        (D(U1, t), 0, D(dU1, t)),
+        (U2, 0, dU2),
+        (D(U2, t), 0, D(dU2, t)),
+        (U3, nU3, dU3),
+        (D(U3, t), 0, D(dU3, t)),
+    ]
+    al.assign("PETURB", al.taylor(al["ZERO"], 1, pts))
+    al.solve(al["PETURB"], [D(dU1, t), D(dU2, t), D(dU3, t)])
+    xm = al.assign("XM", sp.Matrix([[dU1, dU2, dU3]]))
+    xp = al.assign("XP", sp.Matrix([D(dU1, t), D(dU2, t), D(dU3, t)]))
+    am = al.assign("AM", al.d(xp, xm))
+    LAMBDA = al.variables("LAMBDA")
+    det = al.assign("DET", al.det(LAMBDA * sp.eye(3) - am))
+    al.assign("DET", det / LAMBDA)
+    al.assign(
+        "DET",
+        al.evaluate(al["DET"], {J: 0.07634, I1: 1.25, I2: 4.25, I3: 5, nU3: 1}),
+    )
+    return al, locals()
+
+
+def test_tutor9_gyrostat():
+    al, v = tutor9()
+    U1, U2, U3, J, OMEGA = (v[k] for k in ("U1", "U2", "U3", "J", "OMEGA"))
+    I1, I2, I3, LAMBDA = (v[k] for k in ("I1", "I2", "I3", "LAMBDA"))
+    z = al["ZERO"]
+    assert sp.expand(z[0] - (-U2 * (J * OMEGA - (I2 - I3) * U3) - I1 * D(U1, t))) == 0
+    assert sp.expand(z[1] - (U1 * (J * OMEGA - (I1 - I3) * U3) - I2 * D(U2, t))) == 0
+    assert sp.expand(z[2] - ((I1 - I2) * U1 * U2 - I3 * D(U3, t))) == 0
+    assert al["CHECK"] == sp.zeros(3, 1)
+    expected = 0.001096997 * (9.824469 + OMEGA) * (49.12235 + OMEGA) + LAMBDA**2
+    got = sp.expand(al["DET"])
+    diff = sp.Poly(sp.expand(got - expected), OMEGA, LAMBDA)
+    assert all(abs(float(c)) < 1e-6 for c in diff.coeffs())
+    # angular momentum of the gyrostat
+    h = al["H>"]
+    A = v["A"]
+    assert sp.expand(al.dot(h, A.z) - (I3 * U3 + J * OMEGA)) == 0
+    assert sp.expand(al.dot(h, A.x) - I1 * U1) == 0
+
+
+# ------------------------------------------------- tutor2 and transcripts
+
+
+def tutor2():
+    al = Workspace("tutor2.al")
+    al.set("Degrees", "ON")
+    A, B, C = al.bodies("A", "B", "C")
+    O, P = al.points("O", "P")
+    CM = al.points("CM")
+    PHI = al.variables("PHI")
+    W = al.constants("W")
+    al.assign("W", 1)
+    M = al.constants("M+")
+    al.assign("M", 12)
+    for body in (A, B, C):
+        al.set_mass(body, M)
+    al.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+    al.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+    al.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
+    al.simprot(A, B, -2, PHI)
+    al.assign("A_C", sp.eye(3))
+    al.assign("P_O_AO>", -0.5 * W * A.x + 0.5 * W * A.y)
+    al.assign("P_O_BO>", -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x)
+    al.assign("P_O_CO>", W * A.y - 0.5 * W * C.x - 0.5 * W * C.z)
+    al.assign("P_O_P>", W * A.y - W * C.z)
+    al.assign("P_O_CM>", al.cm(O))
+    al.assign("DISTANCE", al.mag(al["P_O_CM>"]))
+    al.assign("I_SYSTEM_CM>>", al.inertia(CM, A, B, C))
+    al.assign("I_SYSTEM_CM", al.represent(al["I_SYSTEM_CM>>"], A))
+    lam, vecs = al.eig_vectors(al.evaluate(al["I_SYSTEM_CM"], {PHI: 90}))
+    al.assign("LAMBDA", lam)
+    al.assign("EIGENVECS", vecs)
+    al.assign("I_SYSTEM_O>>", al.inertia(O))
+    al.assign("L>", al.unitvec(al["P_O_P>"]))
+    il = al.assign("IL", al.dot(al["L>"], al.dot(al["I_SYSTEM_O>>"], al["L>"])))
+    mt = al.assign("MTOTAL", al.mass_of())
+    al.assign("GYRATION", (il / mt) ** 0.5)
+    return al, locals()
+
+
+def test_tutor2_mass_center_and_inertia():
+    al, v = tutor2()
+    PHI = v["PHI"]
+    for deg in (0, 14, 90, 200, 340):
+        phi = math.radians(deg)
+        expected = (0.94444 - 0.22222 * math.cos(phi) - 0.055556 * math.sin(phi)) ** 0.5
+        got = float(al["DISTANCE"].subs(PHI, phi))
+        assert got == pytest.approx(expected, abs=2e-5)
+    lam = sorted(float(x) for x in al["LAMBDA"])
+    assert lam == pytest.approx([5, 13, 14])
+    vecs = al["EIGENVECS"]
+    lams = [float(x) for x in al["LAMBDA"]]
+    row = vecs.row(lams.index(min(lams)))
+    evec = al.represent(row, v["A"])
+    cosang = float(al.dot(evec, v["A"].y)) / float(al.mag(evec))
+    angle = math.degrees(math.acos(cosang))
+    assert min(abs(angle - 65.90516), abs(angle - 114.09484)) < 1e-4
+    assert al["MTOTAL"] == 36
+    # radius of gyration about OP: minimum 0.696 m near PHI = 340 degrees
+    gyr = [
+        float(al.resolve(al["GYRATION"]).subs(PHI, math.radians(d))) for d in range(361)
+    ]
+    assert min(range(361), key=gyr.__getitem__) == 340
+    assert min(gyr) == pytest.approx(0.696, abs=1e-3)
+
+
+def test_mass_transcript():
+    al = Workspace("mass.al")
+    A, B = al.bodies("A", "B")
+    C = al.particles("C")
+    MB = al.constants("MB+")
+    MC = al.constants("MC+")
+    al.set_mass(A, 12.5)
+    al.set_mass(B, MB)
+    al.assign("MC", 10, line=4)
+    al.set_mass(C, MC)
+    assert al.assign("MASS_A", al.mass_of(A), line=6) is not None
+    assert sp.nsimplify(al["MASS_A"]) == sp.Rational(25, 2)
+    al.assign("MASS_AB", al.mass_of(A, B), line=8)
+    al.assign("TOTAL", al.mass_of(), line=10)
+    assert sp.expand(al.resolve(al["MASS_AB"]) - (sp.Rational(25, 2) + MB)) == 0
+    assert sp.expand(al.resolve(al["TOTAL"]) - (sp.Rational(45, 2) + MB)) == 0
+    got = {r.label: r for r in al.responses}
+    assert got["MASS_AB"].line == 8 and got["TOTAL"].line == 10
+
+
+def test_inertia_transcript():
+    al = Workspace("inertia.al")
+    P = al.points("P")
+    B = al.bodies("B")
+    MB = al.constants("MB+")
+    al.set_mass(B, MB)
+    I, J, L = al.constants("I", "J", "L")
+    al.assign("P_BO_P>", L * B.x, line=5)
+    ib = al.assign(
+        "I_B_P>>", I * (B.x | B.x) + I * (B.y | B.y) + J * (B.z | B.z), line=7
+    )
+    assert al.inertia_dyadic(B, P) == ib
+    got = al.assign("I_B_BO>>", al.inertia(al.point("BO"), B), line=9)
+    expected = (
+        I * (B.x | B.x) + (I - MB * L**2) * (B.y | B.y) + (J - MB * L**2) * (B.z | B.z)
+    )
+    assert (got - expected).to_matrix(B).applyfunc(sp.expand) == sp.zeros(3, 3)
+    labels = [(r.line, r.label) for r in al.responses]
+    assert labels == [(5, "P_BO_P>"), (7, "I_B_P>>"), (9, "I_B_BO>>")]
+    # the transfer theorem back to P gives the given dyadic
+    back = al.inertia(P, B) - ib
+    assert back.to_matrix(B).applyfunc(sp.expand) == sp.zeros(3, 3)
+
+
+def test_inertia_about_a_point():
+    """``Inertia A, about=O``: the dyadic is about O; the central one follows."""
+    al = Workspace()
+    al.newtonian("N")
+    A = al.bodies("A")
+    O = al.points("O")
+    m, length = al.constants("M", "L")
+    al.set_mass(A, m)
+    al.assign("P_O_AO>", length / 2 * A.x)
+    al.set_inertia(A, 0, m * length**2 / 3, m * length**2 / 3, about=O)
+    central = al.central_inertia(A).to_matrix(A)
+    assert central.applyfunc(sp.expand) == sp.diag(
+        0, m * length**2 / 12, m * length**2 / 12
+    )
+    assert al["I_A_O>>"].to_matrix(A)[1, 1] == m * length**2 / 3
