@@ -737,17 +737,31 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n
+    clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
+
+    def singular() -> NumericsError:
+        return NumericsError(
+            f"{job.where}: the coefficient matrix of "
+            + ", ".join(label_of(d, job.names) for d in c.ud_objs)
+            + f" in ZERO is singular at t = {clock[0]:g}"
+        )
 
     def accelerations(tt: float, yl: list[float]) -> list[float]:
         if not n:
             return []
         vals_mf = mf(tt, *yl, *p)
         if n == 1:
+            if vals_mf[0] == 0:
+                raise singular()
             return [vals_mf[1] / vals_mf[0]]
         m = np.array(vals_mf[:nn]).reshape(n, n)
-        return np.linalg.solve(m, vals_mf[nn:]).tolist()
+        try:
+            return np.linalg.solve(m, vals_mf[nn:]).tolist()
+        except np.linalg.LinAlgError:
+            raise singular() from None
 
     def fun(tt: float, y: np.ndarray) -> list[float]:
+        clock[0] = tt
         yl = y.tolist()
         return deriv(tt, *yl, *accelerations(tt, yl), *p)
 
@@ -768,7 +782,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             )
             if sol.status != 0:
                 raise NumericsError(
-                    f"{job.where}: integration failed at t = {sol.t[-1] if len(sol.t) else times[0]:g}:"
+                    f"{job.where}: integration failed at t = {clock[0]:g}:"
                     f" {sol.message}"
                 )
             ys = sol.y
@@ -776,18 +790,16 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         factors = _output_factors(job, vals)
         rows_all = [[] for _ in c.outputs]
         for i, tt in enumerate(times):
+            clock[0] = float(tt)
             yl = ys[:, i].tolist()
             ud = accelerations(float(tt), yl)
             for rows, func in zip(rows_all, c.outputs, strict=True):
                 rows.append(func(float(tt), *yl, *ud, *p))
-    except (ZeroDivisionError, np.linalg.LinAlgError) as exc:
-        raise NumericsError(
-            f"{job.where}: the mass matrix of ZERO is singular ({exc})"
-        ) from None
-    except (ValueError, OverflowError) as exc:
-        if isinstance(exc, NumericsError):
-            raise
-        raise NumericsError(f"{job.where}: {exc}") from None
+    except NumericsError:
+        raise
+    except (ValueError, ZeroDivisionError, OverflowError) as exc:
+        hint = "; check the Input values" if vals.notes else ""
+        raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None
     for number, (cols, rows, fac, spec) in enumerate(
         zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
     ):
@@ -1023,4 +1035,8 @@ def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
             name, output_times(float(start), float(stop), float(step))
         )
         result.solution_units.setdefault(name, unit)
+        if not job.outputs and result.tables:  # default table: sweep, unknowns
+            table = result.tables[0]
+            table.columns.insert(0, Column(name, unit))
+            table.data = np.column_stack([result.solution[name], table.data])
     return result

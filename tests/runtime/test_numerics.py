@@ -586,3 +586,51 @@ def test_english_unit_system_converts_inputs_and_outputs(tmp_path):
     assert np.allclose(result.states["X"], [0, 2, 4])  # in the Input's unit
     (path,) = result.write(tmp_path)
     assert "(sec)" in path.read_text()
+
+
+def test_nonlinear_outputs_are_evaluated_at_the_solution():
+    ws = katy()
+    x, y = ws.symbol("X"), ws.symbol("Y")
+    ws.output([("X", x, None), ("R2", x**2 + y**2, None), ("XD", x, "deg")])
+    ws.code("NONLINEAR", eqs=ws["EQN"], unknowns=[x, y], file="katy2.m")
+    result = ws.run()
+    (table,) = result.tables
+    assert table.names == ["X", "R2", "XD"]
+    assert table["R2"][0] == pytest.approx(1.0)
+    assert table["XD"][0] == pytest.approx(math.degrees(0.739085), abs=1e-4)
+    assert ws.jobs[-1].eqs_name == "EQN"
+
+
+def test_algebraic_sweep_with_unknowns():
+    ws = Workspace("sweep.al")
+    x = ws.variables("X")
+    s, a = ws.constants("S", "A")
+    eqs = ws.assign("E", sp.Matrix([a * x - s]))
+    ws.input({"A": 4})
+    ws.code("ALGEBRAIC", eqs=eqs, unknowns=[x], sweep=(s, None, 0, 2, 0.5))
+    result = ws.run()
+    assert result.tables[0].names == ["S", "X"]
+    assert np.allclose(result["X"], [0, 0.125, 0.25, 0.375, 0.5])
+    assert np.allclose(result["S"], [0, 0.5, 1, 1.5, 2])
+    assert result.notes == []
+
+
+def test_division_by_a_defaulted_input_is_reported():
+    ws = Workspace("div.al")
+    ws.variables("X'")
+    la = ws.constants("LA")
+    ws.assign("X'", 1 / la)
+    ws.code("ODE", file="div.m")
+    with pytest.raises(NumericsError, match="at t = 0; check the Input values"):
+        ws.run()
+
+
+def test_singular_mass_matrix():
+    ws = Workspace("sing.al")
+    u = ws.variables("U'")
+    m = ws.constants("M")
+    ws.assign("ZERO", sp.Matrix([-m * u.diff(t) + 1]))
+    ws.code("DYNAMICS", file="sing.c")
+    with pytest.raises(NumericsError, match="matrix of U' in ZERO is singular"):
+        ws.run()
+    assert ws.run(M=2).states["U"][-1] == pytest.approx(5)
