@@ -213,8 +213,17 @@ def rotation_dcm(kind: str, qs: list[Any]) -> sp.Matrix:
 def angvel_from_dcm(dcm: sp.Matrix) -> list[Any]:
     """Measure numbers in ``B`` of ``W_B_A>`` given ``A_B`` (functions of t)."""
     c = sp.Matrix(dcm)
-    w = (c.T * c.diff(t)).applyfunc(sp.expand)
-    return [tidy(w[2, 1]), tidy(w[0, 2]), tidy(w[1, 0])]
+    w = c.T * c.diff(t)
+    return [simplify_small(w[2, 1]), simplify_small(w[0, 2]), simplify_small(w[1, 0])]
+
+
+def simplify_small(expr: Any) -> Any:
+    """Thorough simplification for the few, small expressions of rotation
+    kinematics (``trigsimp`` for angles, ``factor`` for parameters)."""
+    expr = sp.sympify(expr)
+    if expr.has(sp.sin, sp.cos):
+        return sp.factor_terms(sp.trigsimp(sp.expand(expr)))
+    return sp.factor_terms(sp.factor(sp.cancel(expr)))
 
 
 def euler_parameter_rates(es: list[Any], w: list[Any]) -> list[Any]:

@@ -526,7 +526,8 @@ class MechanicsMixin:
             rates = solve_speeds(eqs, qdots)
         out = []
         for q, r in zip(qs, rates, strict=True):
-            out.append(self.assign(self.name_of(q) + "'", kin.tidy(r), line=line))
+            r = kin.simplify_small(r)
+            out.append(self.assign(self.name_of(q) + "'", r, line=line))
         return tuple(out)
 
     # ------------------------------------------------- velocity formulas
