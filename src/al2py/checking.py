@@ -7,6 +7,11 @@ were in force).  A response matches *strictly* when it is equal with every
 named quantity left as a symbol, and *after resolving* when it is equal once
 right-hand sides are substituted on both sides (Autolev and al2py may keep
 different intermediate names).
+
+Vectors and dyadics (``LA*QA'*A2>``, ``A1>*A1>``) are compared through their
+components in one frame (the first frame Autolev's response names), so
+``LA*A1>`` equals ``LA*COS(QA)*N1> + LA*SIN(QA)*N2>`` when ``A`` is oriented
+in ``N``.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.physics.vector import Dyadic, Vector
 
 from . import ir
 from .errors import AutolevError
@@ -43,6 +49,7 @@ class TranscriptEntry:
     number: int
     is_response: bool
     text: str
+    line: int = 0  # 1-based line in the transcript file (0: unknown)
 
     @property
     def label(self) -> str:
@@ -55,21 +62,49 @@ class TranscriptEntry:
 
 
 def parse_transcript(text: str) -> list[TranscriptEntry]:
-    """Entries of an ``.all`` file, in order (unnumbered lines are ignored)."""
-    out = []
-    for line in text.splitlines():
+    """Entries of an ``.all`` file, in order.
+
+    Unnumbered lines are ignored, except that a response whose text is
+    visibly unfinished (an open bracket, or a trailing operator) continues on
+    the following unnumbered lines, as Autolev wraps long responses."""
+    out: list[TranscriptEntry] = []
+    for lineno, line in enumerate(text.splitlines(), start=1):
         m = _RESPONSE.match(line)
         if m:
-            out.append(TranscriptEntry(int(m.group(1)), True, m.group(2).strip()))
+            out.append(
+                TranscriptEntry(int(m.group(1)), True, m.group(2).strip(), lineno)
+            )
             continue
         m = _INPUT.match(line)
         if m:
-            out.append(TranscriptEntry(int(m.group(1)), False, m.group(2).rstrip()))
+            out.append(
+                TranscriptEntry(int(m.group(1)), False, m.group(2).rstrip(), lineno)
+            )
+            continue
+        last = out[-1] if out else None
+        if last is not None and last.is_response and line.strip():
+            if _unfinished(last.text):
+                joined = f"{last.text} {line.strip()}"
+                out[-1] = TranscriptEntry(last.number, True, joined, last.line)
     return out
+
+
+def _unfinished(text: str) -> bool:
+    """True if a response's text cannot end here (wrapped onto the next line)."""
+    depth = 0
+    for ch in text:
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+    stripped = text.rstrip()
+    return depth > 0 or stripped.endswith(("+", "-", "*", "/", "^", ",", ";", "="))
 
 
 # ------------------------------------------------------------- evaluation
 
+
+_UNIT_VECTOR = re.compile(r"^(\w+?)([123])>$")
 
 _FUNCS = {
     "SIN": sp.sin,
@@ -92,6 +127,13 @@ _FUNCS = {
 }
 
 
+def _declared(ws: object, name: str) -> bool:
+    try:
+        return ws.kind(name) is not None  # type: ignore[attr-defined]
+    except (KeyError, AttributeError):
+        return False
+
+
 class _Evaluator:
     """Evaluates an expression IR in a workspace (names -> its symbols/values)."""
 
@@ -106,9 +148,19 @@ class _Evaluator:
 
     def Name(self, node: ir.Name) -> object:  # noqa: N802
         key = node.key
-        if key == "I" and node.primes == 0:
-            return sp.I
         ws = self.ws
+        if key == "I" and node.primes == 0 and not _declared(ws, "I"):
+            return sp.I
+        if key == "0>":
+            return Vector(0)
+        unit = _UNIT_VECTOR.match(key)
+        if unit and node.primes == 0:
+            try:
+                frame = ws.frame(unit.group(1))  # type: ignore[attr-defined]
+            except (KeyError, AttributeError):
+                pass
+            else:
+                return (frame.x, frame.y, frame.z)[int(unit.group(2)) - 1]
         try:
             kind = ws.kind(key)  # type: ignore[attr-defined]
             if kind in (None, "value"):
@@ -135,6 +187,8 @@ class _Evaluator:
         if node.op == "-":
             return a - b
         if node.op == "*":
+            if isinstance(a, Vector) and isinstance(b, Vector):
+                return a | b  # Autolev writes the dyadic A1>A2> as A1>*A2>
             return a * b
         if node.op == "/":
             return a / b
@@ -174,17 +228,49 @@ def _leaves(expr: sp.Basic) -> list[sp.Basic]:
     return [*derivs, *funcs, *syms]
 
 
-def _as_matrix(value: object) -> sp.Matrix:
+def _frames_of(value: object) -> list[object]:
+    """The reference frames a vector or dyadic is written in, in order."""
+    if isinstance(value, Vector):
+        return [frame for _, frame in value.args]
+    if isinstance(value, Dyadic):
+        return [frame for _, v1, v2 in value.args for frame in _frames_of(v1 + v2)]
+    return []
+
+
+def _as_matrix(value: object, frame: object = None) -> sp.Matrix:
+    """A value as a matrix: vectors as 3x1 and dyadics as 3x3 components in
+    ``frame`` (by default the first frame the value is written in)."""
+    if isinstance(value, Vector | Dyadic):
+        frames = _frames_of(value)
+        if frame is None and frames:
+            frame = frames[0]
+        if frame is None:  # the zero vector or dyadic
+            return sp.zeros(3, 1) if isinstance(value, Vector) else sp.zeros(3, 3)
+        return sp.Matrix(value.to_matrix(frame))
     if isinstance(value, sp.MatrixBase):
         return sp.Matrix(value)
     return sp.Matrix([[sp.sympify(value)]])
+
+
+def _as_matrices(expected: object, ours: object) -> tuple[sp.Matrix, sp.Matrix]:
+    """Both values as matrices; vectors and dyadics in one common frame."""
+    frames = _frames_of(expected) + _frames_of(ours)
+    frame = frames[0] if frames else None
+    a, b = _as_matrix(expected, frame), _as_matrix(ours, frame)
+    # 0 and 0> (or 0>>) are the same response
+    if a.shape != b.shape:
+        if a.shape == (1, 1) and a[0] == 0:
+            a = sp.zeros(*b.shape)
+        elif b.shape == (1, 1) and b[0] == 0:
+            b = sp.zeros(*a.shape)
+    return a, b
 
 
 def compare(
     expected: object, ours: object, digits: int = 7, *, trials: int = 3, seed: int = 1
 ) -> str | None:
     """None if equal (within ``digits``) at random points, else a reason."""
-    a, b = _as_matrix(expected), _as_matrix(ours)
+    a, b = _as_matrices(expected, ours)
     if a.shape != b.shape:
         if a.shape == b.T.shape and 1 in a.shape:
             b = b.T
@@ -211,9 +297,22 @@ def compare(
             else:
                 tol = rtol * max(abs(xv), abs(yv), 1.0)
             if abs(xv.real - yv.real) > tol or abs(xv.imag - yv.imag) > tol:
-                where = f" (element {i + 1})" if len(a) > 1 else ""
-                return f"differs{where}: expected {xv:.8g}, got {yv:.8g}"
+                where = ""
+                if len(a) > 1:
+                    r, c = divmod(i, a.shape[1])
+                    k = f"{r + 1},{c + 1}" if 1 not in a.shape else f"{i + 1}"
+                    where = f" at [{k}]"
+                at = "" if x.is_number and y.is_number else " at a random point"
+                return f"differs{where}: expected {_num(xv)}, got {_num(yv)}{at}"
     return None
+
+
+def _num(z: complex) -> str:
+    """``0.80169343`` for a real number, ``1.5-2i`` for a complex one."""
+    if z.imag == 0:
+        return f"{z.real:.8g}"
+    sign = "+" if z.imag >= 0 else "-"
+    return f"{z.real:.8g}{sign}{abs(z.imag):.8g}i"
 
 
 def _last_digit(magnitude: float, digits: int) -> float:
@@ -291,20 +390,30 @@ def _check_one(
 ) -> ResponseCheck:
     from al2py_runtime.printing import autolev_str
 
-    shown = autolev_str(ours, digits)
+    try:
+        shown = autolev_str(ours, digits)
+    except Exception:  # noqa: BLE001 - only for the report
+        shown = str(ours)
     try:
         expected = evaluate_text(entry.value_text, ws)
-    except (AutolevError, ValueError, TypeError, KeyError) as exc:
+    except AutolevError as exc:
+        return ResponseCheck(
+            entry, False, f"cannot read Autolev's response: {exc.message}", shown
+        )
+    except Exception as exc:  # noqa: BLE001 - a verdict, never a crash
         return ResponseCheck(
             entry, False, f"cannot read Autolev's response: {exc}", shown
         )
-    reason = compare(expected, ours, digits)
-    if reason is None:
-        return ResponseCheck(entry, True, "strict", shown)
-    resolve = ws.resolve  # type: ignore[attr-defined]
-    if (
-        compare(resolve(_as_matrix(expected)), resolve(_as_matrix(ours)), digits)
-        is None
-    ):
-        return ResponseCheck(entry, True, "resolved", shown)
+    try:
+        reason = compare(expected, ours, digits)
+        if reason is None:
+            return ResponseCheck(entry, True, "strict", shown)
+        resolve = ws.resolve  # type: ignore[attr-defined]
+        a, b = _as_matrices(expected, ours)
+        if compare(resolve(a), resolve(b), digits) is None:
+            return ResponseCheck(entry, True, "resolved", shown)
+    except Exception as exc:  # noqa: BLE001 - a verdict, never a crash
+        return ResponseCheck(
+            entry, False, f"cannot compare: {type(exc).__name__}: {exc}", shown
+        )
     return ResponseCheck(entry, False, reason, shown)
