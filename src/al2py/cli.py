@@ -2,26 +2,33 @@
 
     al2py tutor6.al -o tutor6.py     convert one script
     al2py - < tutor6.al              read standard input, write standard output
+    al2py check models/ -j 4         convert, import and compare with .all files
+    al2py convert models/ -o py/     convert a library, keeping its layout
+
+The first argument ``check`` or ``convert`` selects a subcommand; a script
+literally named ``check`` is given as ``./check``.
 
 Exit status: 0 on success, 2 for errors in the input (``file:line:col:
-error: ...``), 3 for a bug in al2py itself.  No traceback reaches the user.
+error: ...``) or files that fail their check, 3 for a bug in al2py itself,
+130 when interrupted.  No traceback reaches the user.
 """
 
 from __future__ import annotations
 
 import argparse
-import os
+import os  # noqa: F401 - part of the module interface (tests patch cli.os)
 import sys
-import tempfile
+import time
 from pathlib import Path
 
-from . import __version__
+from . import __version__, batch
 from .errors import AutolevError, InternalError
 from .transpile import convert
 
 __all__ = ["main"]
 
-EXIT_OK, EXIT_INPUT, EXIT_BUG = 0, 2, 3
+EXIT_OK, EXIT_INPUT, EXIT_BUG, EXIT_INTERRUPTED = 0, 2, 3, 130
+SUBCOMMANDS = ("check", "convert")
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -30,7 +37,10 @@ def _parser() -> argparse.ArgumentParser:
         description="Convert an Autolev (.al) script into a readable Python module "
         "built on sympy.physics.mechanics.",
         epilog="Run the result with 'python OUT.py' to print Autolev's transcript, "
-        "or 'import' it to use the model.",
+        "or 'import' it to use the model.  For whole libraries: "
+        "'al2py check PATH...' converts, imports and compares each script with "
+        "its .all transcript; 'al2py convert DIR -o OUTDIR' converts a folder "
+        "tree (see 'al2py check --help', 'al2py convert --help').",
     )
     p.add_argument("input", help="the .al file to convert ('-' reads standard input)")
     p.add_argument(
@@ -43,10 +53,121 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv: list[str] | None = None) -> int:
-    args = _parser().parse_args(argv)
+def _jobs(text: str) -> int:
     try:
-        return _convert_file(args.input, args.output)
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError("must be at least 1")
+    return n
+
+
+def _seconds(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not x > 0:
+        raise argparse.ArgumentTypeError("must be positive")
+    return x
+
+
+def _library_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "-j",
+        "--jobs",
+        type=_jobs,
+        default=1,
+        metavar="N",
+        help="work on N files at a time, in separate processes (default 1)",
+    )
+    p.add_argument(
+        "--exclude",
+        action="append",
+        default=[],
+        metavar="GLOB",
+        help="skip scripts whose path, path below the folder given, or name "
+        "matches GLOB (repeatable), e.g. 'include/*' or 'slow_*.al'",
+    )
+    p.add_argument(
+        "-q", "--quiet", action="store_true", help="no progress lines on stderr"
+    )
+
+
+def _check_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="al2py check",
+        description="Check Autolev scripts: convert each .al file, import the "
+        "generated module in a fresh process, and where a transcript NAME.all "
+        "sits beside NAME.al, compare every response mathematically (numbers "
+        "within Digits, expressions at random points).  A script without a "
+        "transcript passes if it converts and imports.",
+        epilog="Prints a table (passed/failed/errored, responses matched/total) "
+        "and a report for each failing response.  Exit status 0 if every file "
+        "passed, 2 if any failed or errored.",
+    )
+    p.add_argument(
+        "paths", nargs="+", metavar="PATH", help=".al files or folders (recursive)"
+    )
+    _library_options(p)
+    p.add_argument(
+        "--timeout",
+        type=_seconds,
+        default=batch.DEFAULT_TIMEOUT,
+        metavar="SECONDS",
+        help="give up on a file after SECONDS (default %(default)g)",
+    )
+    p.add_argument(
+        "--junit", metavar="FILE", help="also write the results as JUnit XML"
+    )
+    return p
+
+
+def _convert_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="al2py convert",
+        description="Convert every .al script under the given folders into "
+        "OUTDIR, keeping the folder layout (a/b/x.al -> OUTDIR/a/b/x.py).  "
+        "Macros (.a, .r) and RUN files are found beside each script, then in "
+        "AUTOLEVPATH.  A bad file is reported and the rest are still converted.",
+        epilog="Exit status 0 if every file converted, 2 if any failed.",
+    )
+    p.add_argument(
+        "paths", nargs="+", metavar="PATH", help=".al files or folders (recursive)"
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        required=True,
+        metavar="OUTDIR",
+        help="folder for the modules (created if needed)",
+    )
+    _library_options(p)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    if argv is None:
+        argv = sys.argv[1:]
+    argv = list(argv)
+    if argv and argv[0] in SUBCOMMANDS:
+        command = argv[0]
+        parser = _check_parser() if command == "check" else _convert_parser()
+        args = parser.parse_args(argv[1:])
+        run = _check if command == "check" else _convert_library
+        return _guarded(lambda: run(args))
+    args = _parser().parse_args(argv)
+    return _guarded(lambda: _convert_file(args.input, args.output))
+
+
+def _guarded(run) -> int:
+    """Run a command; map every exception to a message and an exit status."""
+    try:
+        return run()
+    except KeyboardInterrupt:
+        print("al2py: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     except AutolevError as exc:
         print(exc.format(), file=sys.stderr)
         return EXIT_INPUT
@@ -63,6 +184,95 @@ def main(argv: list[str] | None = None) -> int:
             file=sys.stderr,
         )
         return EXIT_BUG
+
+
+def _progress(quiet: bool):
+    if quiet:
+        return None
+
+    def show(line: str) -> None:
+        print(line, file=sys.stderr, flush=True)
+
+    return show
+
+
+def _find(paths: list[str], exclude: list[str]) -> list[batch.Script] | None:
+    try:
+        scripts = batch.find_scripts(paths, exclude)
+    except FileNotFoundError as exc:
+        print(f"al2py: error: no such file or folder: {exc}", file=sys.stderr)
+        return None
+    if not scripts:
+        print(
+            f"al2py: error: no .al scripts found in {' '.join(paths)}",
+            file=sys.stderr,
+        )
+        return None
+    return scripts
+
+
+def _check(args: argparse.Namespace) -> int:
+    scripts = _find(args.paths, args.exclude)
+    if scripts is None:
+        return EXIT_INPUT
+    show = _progress(args.quiet)
+    orphans = batch.orphan_transcripts(args.paths)
+    if orphans and show:
+        names = ", ".join(batch.display_path(p) for p in orphans[:5])
+        more = f" and {len(orphans) - 5} more" if len(orphans) > 5 else ""
+        show(f"note: transcripts without a script are not checked: {names}{more}")
+    start = time.perf_counter()
+    results = batch.check_files(
+        scripts,
+        jobs=args.jobs,
+        timeout=args.timeout,
+        progress=(lambda k, n, r: show(batch.progress_line(k, n, r))) if show else None,
+    )
+    elapsed = time.perf_counter() - start
+    sys.stdout.write(batch.format_report(results, elapsed))
+    sys.stdout.flush()
+    if args.junit:
+        try:
+            batch.write_atomically(Path(args.junit), batch.junit_xml(results, elapsed))
+        except OSError as exc:
+            print(
+                f"al2py: error: cannot write {args.junit}: {exc.strerror}",
+                file=sys.stderr,
+            )
+            return EXIT_INPUT
+    ok = all(r.status == batch.PASSED for r in results)
+    return EXIT_OK if ok else EXIT_INPUT
+
+
+def _convert_library(args: argparse.Namespace) -> int:
+    scripts = _find(args.paths, args.exclude)
+    if scripts is None:
+        return EXIT_INPUT
+    outdir = Path(args.output)
+    if outdir.exists() and not outdir.is_dir():
+        print(f"al2py: error: {args.output} is not a folder", file=sys.stderr)
+        return EXIT_INPUT
+    show = _progress(args.quiet)
+
+    def progress(k: int, n: int, r: batch.ConvertResult) -> None:
+        if show is not None:
+            show(f"[{k}/{n}] {r.path} -> {r.output} ... {'ok' if r.ok else 'error'}")
+        if not r.ok:  # errors are shown even with --quiet
+            print(r.message, file=sys.stderr, flush=True)
+
+    results = batch.convert_files(scripts, outdir, jobs=args.jobs, progress=progress)
+    failed = [r for r in results if not r.ok]
+    print(
+        f"al2py: converted {len(results) - len(failed)} of {len(results)} "
+        f"scripts into {args.output}"
+        + (
+            f"; {len(failed)} failed: {', '.join(r.path for r in failed)}"
+            if failed
+            else ""
+        ),
+        file=sys.stderr,
+    )
+    return EXIT_INPUT if failed else EXIT_OK
 
 
 def _convert_file(source: str, output: str | None) -> int:
@@ -93,17 +303,4 @@ def _convert_file(source: str, output: str | None) -> int:
     return EXIT_OK
 
 
-def _write_atomically(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` via a temporary file and an atomic rename."""
-    directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(text)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+_write_atomically = batch.write_atomically
