@@ -470,7 +470,8 @@ class MechanicsMixin:
     ) -> sp.Matrix:
         """``Simprot(A, B, 3, Q)``: B rotated relative to A about A3 (= B3)."""
         m = kin.simprot_dcm(int(axis), angle)
-        self._orient(a, b, m)
+        unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
+        b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
         self.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
@@ -480,11 +481,28 @@ class MechanicsMixin:
         """``Dircos(A, B, BODY123, Q1, Q2, Q3)`` (also SPACEijk, EULER with 4
         parameters, RODRIGUES): forms ``A_B``."""
         m = kin.rotation_dcm(kind, list(qs))
-        self._orient(a, b, m)
+        kind = kind.upper()
+        if kind.startswith("BODY"):
+            b.orient_body_fixed(a, tuple(qs), kind[4:])
+        elif kind.startswith("SPACE"):
+            b.orient_space_fixed(a, tuple(qs), kind[5:])
+        else:
+            self._orient(a, b, m)
         self.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     def _dcm_angvel(self, a, b, kind, qs) -> list:
+        """B measure numbers of the angular velocity implied by the
+        orientation (sympy's closed forms for Euler angles)."""
+        kind = kind.upper()
+        if kind.startswith(("BODY", "SPACE")) and len(qs) == 3:
+            pa, pb = ReferenceFrame("_PA"), ReferenceFrame("_PB")
+            if kind.startswith("BODY"):
+                pb.orient_body_fixed(pa, tuple(qs), kind[4:])
+            else:
+                pb.orient_space_fixed(pa, tuple(qs), kind[5:])
+            w = pb.ang_vel_in(pa)
+            return [kin.simplify_small(w.dot(e)) for e in (pb.x, pb.y, pb.z)]
         m = kin.rotation_dcm(kind, list(qs))
         return kin.angvel_from_dcm(m)
 
