@@ -97,6 +97,7 @@ class Generator:
         self._facts = StmtFacts()
         self._line = 0
         self.stopped_at: int | None = None
+        self.has_job = False  # a CODE statement was generated
 
     # ------------------------------------------------------------ driving
 
@@ -412,6 +413,7 @@ class Generator:
         return [f"al.output([{', '.join(columns)}], line={self._line})"]
 
     def stmt_CodeStmt(self, stmt: ir.CodeStmt) -> list[str]:
+        self.has_job = True
         args = [repr(stmt.option)]
         if stmt.args:
             eqs, *unknowns = stmt.args

@@ -87,6 +87,7 @@ def convert(
         imports=generator.imports.lines(),
         body="\n".join(body),
         source_lines=repr(script.lines),
+        has_job=generator.has_job,
     )
     try:
         code = black.format_str(code, mode=black.Mode())
