@@ -113,10 +113,7 @@ def _trig(expr: sp.Expr) -> sp.Expr:
         )
 
     try:
-        num, den = sp.fraction(sp.together(expr))
-        if den == 1:
-            return combine(num)
-        return combine(num) / combine(den)
+        return combine(expr)
     except Exception:  # pragma: no cover - best effort
         return expr
 
