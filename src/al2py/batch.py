@@ -396,6 +396,8 @@ def _stop_all() -> None:
             os.killpg(proc.pid, signal.SIGKILL)
         except (ProcessLookupError, PermissionError):
             pass
+        except AttributeError:  # no process groups (Windows)
+            proc.kill()
 
 
 def _kill_group(proc: subprocess.Popen) -> None:
