@@ -424,7 +424,13 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
 
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
+        if _is_vectorial(value):
+            from .kinematics import vmap
+
+            return vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
         if isinstance(value, list | tuple):
+            if any(_is_vectorial(v) for v in value):
+                return tuple(self.normalize(v, rearrange=rearrange) for v in value)
             value = sp.Matrix(value)
         if isinstance(value, sp.MatrixBase):
             return sp.Matrix(value).applyfunc(
