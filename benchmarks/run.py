@@ -23,6 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pendulum import autolev_source, hand_derive, hand_simulate  # noqa: E402
 
+import al2py_runtime  # noqa: E402,F401  (library import is not model derivation)
 from al2py import convert  # noqa: E402
 
 

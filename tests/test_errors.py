@@ -48,11 +48,11 @@ CASES = [
     ),
     ("undeclared_after_tab", "Constants A\nE = A +\tQ\n", 2, 9, "undeclared name 'Q'"),
     # argument counts
-    ("rows_no_args", "M = [1,2;3,4]\nN = Rows()\n", 2, 5, "ROWS takes"),
-    ("det_two_args", "M = [1,2;3,4]\nN = Det(M, M)\n", 2, 5, "DET takes exactly 1"),
-    ("sin_two_args", "Constants A\nE = 2 + Sin(A, A)\n", 2, 9, "SIN takes exactly 1"),
-    ("taylor_one_arg", "Constants A\nZ = Taylor(A)\n", 2, 5, "TAYLOR takes"),
-    ("solve_indented", "Constants A\n  Solve(A)\n", 2, 3, "SOLVE takes"),
+    ("rows_no_args", "M = [1,2;3,4]\nN = Rows()\n", 2, 5, "Rows takes"),
+    ("det_two_args", "M = [1,2;3,4]\nN = Det(M, M)\n", 2, 5, "Det takes exactly 1"),
+    ("sin_two_args", "Constants A\nE = 2 + Sin(A, A)\n", 2, 9, "Sin takes exactly 1"),
+    ("taylor_one_arg", "Constants A\nZ = Taylor(A)\n", 2, 5, "Taylor takes"),
+    ("solve_indented", "Constants A\n  Solve(A)\n", 2, 3, "Solve takes"),
     # unknown functions
     ("unknown_function", "E = Foo(1)\n", 1, 5, "unknown function or command 'Foo'"),
     (

@@ -31,21 +31,7 @@ IDS = [f"{p.parent.name}/{p.name}" for p in SCRIPTS]
 # these modules fail ruff with I001 (``from al2py_runtime import t, Workspace``
 # is unsorted) and E741/F811 (Autolev names ``O``, ``I`` used as-is, ``I``
 # also shadowing ``from sympy import I``).
-RUFF_KNOWN_BUGS = {
-    "odexy.al",
-    "tutor2.al",
-    "tutor3.al",
-    "tutor4.al",
-    "tutor5.al",
-    "tutor6.al",
-    "tutor6f.al",
-    "tutor7.al",
-    "tutor7a.al",
-    "tutor7c.al",
-    "tutor8.al",
-    "tutor9.al",
-    "inertia.al",
-}
+RUFF_KNOWN_BUGS: set[str] = set()  # every module must be ruff-clean
 RUFF_SCRIPTS = [p for p in SCRIPTS if p.name not in RUFF_KNOWN_BUGS]
 RUFF_IDS = [f"{p.parent.name}/{p.name}" for p in RUFF_SCRIPTS]
 # Scripts whose transcript ``python mod.py`` prints (no CODE jobs to run).

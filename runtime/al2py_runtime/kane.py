@@ -16,7 +16,7 @@ from typing import Any
 
 import sympy as sp
 
-from .kinematics import tidy
+from .kinematics import SMALL_GENS, tidy
 
 __all__ = ["solve_speeds", "arrange", "split_linear"]
 
@@ -54,14 +54,18 @@ def solve_speeds(eqs: Sequence[Any], unknowns: Sequence[Any]) -> list[Any]:
 
 
 def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> list:
-    """Arrange each row as ``F + sum(M_k * accel_k)`` (see module doc)."""
+    """Arrange each row as ``F + sum(M_k * accel_k)`` (see module doc).
+
+    Rows are linear in the accelerations, so the coefficients are derivatives
+    and the rest is the row with the accelerations set to zero: no expansion,
+    which keeps large models fast."""
+    zero = {a: 0 for a in accels}
+    # Tidying is cosmetic; with many speeds it would dominate the derivation.
+    polish = tidy if len(accels) <= SMALL_GENS else (lambda e, gens=(): e)
     out = []
     for row in rows:
-        row = sp.expand(row)
-        coefs = [tidy(sp.diff(row, a)) for a in accels]
-        rest = sp.expand(row - sum(c * a for c, a in zip(coefs, accels, strict=True)))
-        rest = rest.xreplace({a: 0 for a in accels})
-        out.append(
-            tidy(rest, gens) + sum(c * a for c, a in zip(coefs, accels, strict=True))
-        )
+        row = sp.sympify(row)
+        coefs = [polish(sp.diff(row, a)) for a in accels]
+        rest = polish(row.xreplace(zero), gens)
+        out.append(rest + sum(c * a for c, a in zip(coefs, accels, strict=True)))
     return out

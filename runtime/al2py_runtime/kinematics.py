@@ -71,6 +71,20 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
+#: Expressions with more nodes, or more speeds, than these are not simplified
+#: for display: the simplification is cosmetic and large models must stay fast.
+SMALL_NODES = 160
+SMALL_GENS = 6
+
+
+def is_small(expr: Any, limit: int = SMALL_NODES) -> bool:
+    """True if ``expr`` has at most ``limit`` nodes (stops counting early)."""
+    for count, _ in enumerate(sp.preorder_traversal(expr), start=1):
+        if count > limit:
+            return False
+    return True
+
+
 def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
     """A light, bounded simplification used for responses and results.
 
@@ -79,7 +93,11 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
     """
     if not isinstance(expr, sp.Expr) or expr.is_number:
         return expr
+    if not is_small(expr):
+        return expr  # cosmetic only: large models stay fast
     gens = [g for g in gens if expr.has(g)]
+    if len(gens) > SMALL_GENS:
+        return expr
     if gens:
         parts = sp.collect(sp.expand(expr), gens, evaluate=False)
         return sp.Add(*[_tidy_one(c) * m for m, c in parts.items()])

@@ -29,6 +29,7 @@ from typing import Any
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from .kinematics import is_small
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
 from .numerics import NumericsMixin
@@ -121,6 +122,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         self._values: dict[str, Any] = {}
         self._entries_by_obj: dict[sp.Basic, str] = {}
         self._saves: list[str] = []
+        self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
         self._declare("T", "variable", t)
         self._declare("PI", "constant", sp.pi)
         self._declare("I", "imaginary", sp.I)
@@ -444,6 +446,13 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         if not isinstance(value, sp.Expr):
             return value
         value = self._numbers(value)
+        if self._autotaylor is not None:
+            from .algebra import taylor
+
+            orders, points = self._autotaylor
+            value = taylor(
+                self.resolve(value, keep=[p[0] for p in points]), orders, points
+            )
         mode = self.settings.autorhs
         if mode == "ALL":
             value = self.resolve(value)
@@ -451,7 +460,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
             simple = {k: v for k, v in self._rhs.items() if _is_simple(v)}
             if simple:
                 value = _xreplace(value, simple)
-        if rearrange and self.settings.factoring and value.is_Add:
+        if rearrange and self.settings.factoring and value.is_Add and is_small(value):
             value = sp.factor_terms(value)
         return value
 
@@ -620,6 +629,13 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         from . import algebra
 
         return algebra.eig_vectors(self.val(m))
+
+    def autotaylor(self, order: Any, points: Iterable[tuple[Any, ...]]) -> None:
+        """``AutoTaylor(0:2, w=a, x=0)``: expand every later assigned value in a
+        Taylor series about these points (linearization)."""
+        pts = [(p[0], p[1], p[2] if len(p) > 2 else None) for p in points]
+        orders = tuple(order) if isinstance(order, tuple | list) else (0, int(order))
+        self._autotaylor = (orders, pts)
 
     def zee(self, y: Any, x: Any = None) -> Any:
         """``Zee(y)``: Autolev's display with Z variables; values are unchanged

@@ -58,6 +58,12 @@ SETTINGS: dict[str, tuple[str, ...] | str] = {
     "BEEPSOUND": ("ON", "OFF"),
     "PAUSE": "number",
 }
+_SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
+_MATRIX_FIRST = frozenset({"DET", "INV", "TRANSPOSE", "EIG", "ROWS", "COLS", "ELEMENT"})
+_OBJECT_ARGS = frozenset({"MASS", "CM", "INERTIA"})
+_NEEDS_NEWTONIAN = frozenset(
+    {"FR", "FRSTAR", "KANE", "NICHECK", "GRAVITY", "KE", "MOMENTUM", "GYROSTAT"}
+)
 #: Integration parameters that ``Input`` sets without a declaration.
 INTEGRATION_PARAMETERS = frozenset(
     {"TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR"}
@@ -65,9 +71,36 @@ INTEGRATION_PARAMETERS = frozenset(
 CODE_OPTIONS = frozenset({"DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC"})
 #: Names that stop reading the script (Autolev ends the session).
 STOP_WORDS = frozenset({"EXIT", "QUIT"})
+
+
 #: Python names every generated module uses; user names avoid them.
-RESERVED_IDENTIFIERS = frozenset(
-    {"al", "t", "pi", "I", "Matrix", "Rational", "AUTOLEV", "AL_SOURCE", "main", "sys"}
+def _runtime_names() -> frozenset[str]:
+    from al2py_runtime.functions import AUTOLEV_FUNCTIONS, DEGREE_VARIANTS
+
+    return frozenset(AUTOLEV_FUNCTIONS.values()) | frozenset(DEGREE_VARIANTS.values())
+
+
+RESERVED_IDENTIFIERS = (
+    frozenset(
+        {
+            "al",
+            "t",
+            "pi",
+            "I",
+            "Matrix",
+            "Rational",
+            "Integer",
+            "Vector",
+            "outer",
+            "Workspace",
+            "AUTOLEV",
+            "AL_SOURCE",
+            "main",
+            "run",
+            "sys",
+        }
+    )
+    | _runtime_names()
 )
 
 
@@ -82,6 +115,8 @@ class Symbol:
     order: int = 0  # highest derivative order, for variables/specified
     sign: str | None = None
     has_rhs: bool = False
+    seq: int = 0  # definition order: the latest definition of a name wins
+    shape: tuple[int, int] | None = None  # matrices, when known statically
 
     @property
     def value_kind(self) -> Kind:
@@ -104,12 +139,14 @@ class SymbolTable:
         self.namer = namer
         self._symbols: dict[str, Symbol] = {}
         self._physical: dict[str, Symbol] = {}
+        self._seq = 0
         self.define("T", "time", "t")
         self.define("PI", "constant", "pi")
         self.define("I", "imaginary", "I")
 
     def define(self, key: str, kind: str, ident: str, **kw: object) -> Symbol:
-        sym = Symbol(key, kind, ident, **kw)  # type: ignore[arg-type]
+        self._seq += 1
+        sym = Symbol(key, kind, ident, seq=self._seq, **kw)  # type: ignore[arg-type]
         if kind in PHYSICAL_KINDS:
             self._physical[key] = sym
         else:
@@ -117,8 +154,10 @@ class SymbolTable:
         return sym
 
     def get(self, key: str) -> Symbol | None:
+        """The latest definition of ``key``: a quantity or an object."""
         key = key.upper()
-        return self._symbols.get(key) or self._physical.get(key)
+        found = [s for s in (self._symbols.get(key), self._physical.get(key)) if s]
+        return max(found, key=lambda s: s.seq) if found else None
 
     def quantity(self, key: str) -> Symbol | None:
         return self._symbols.get(key.upper())
@@ -480,7 +519,7 @@ class Analysis:
 
     def _ident(self, spelling: str, kind: str) -> str:
         key = spelling.upper()
-        if key in ("T", "PI", "I", "0>", "1>>"):
+        if key in ("T", "PI", "0>", "1>>") or (key == "I" and kind == "imaginary"):
             return {"T": "t", "PI": "pi", "I": "I"}.get(key, key)
         ns = ("phys:" if kind in PHYSICAL_KINDS else "") + key
         return self.namer.assign(ns, spelling, kind)
@@ -511,9 +550,7 @@ class Analysis:
 
     def lookup(self, node: ir.Name) -> Symbol:
         """The symbol a (non-form) name refers to; errors for undeclared names."""
-        sym = self.table.quantity(node.name)
-        if sym is None:
-            sym = self.table.physical(node.name)
+        sym = self.table.get(node.name)
         if sym is None:
             if node.rank:
                 raise SemanticError(
@@ -556,8 +593,17 @@ class Analysis:
             return FORM_KINDS[form.kind]
         return self.lookup(expr).value_kind
 
+    def _check_indices(self, indices: tuple[ir.Expr, ...]) -> None:
+        for i in indices:
+            self._expect_scalar(i)
+            value = _int_literal(i)
+            if value is not None and value < 1:
+                raise SemanticError("matrix indices start at 1", i.span)
+
     def _kind_Element(self, expr: ir.Element) -> Kind:
+        self._check_indices(expr.indices)
         sym = self.lookup(expr.base)
+        self._check_bounds(sym, expr)
         if sym.kind != "matrix":
             raise SemanticError(f"'{expr.base.name}' is not a matrix", expr.base.span)
         if len(expr.indices) > 2:
@@ -565,6 +611,25 @@ class Analysis:
         for i in expr.indices:
             self._expect_scalar(i)
         return Kind.SCALAR
+
+    def _check_bounds(self, sym: Symbol, expr: ir.Element) -> None:
+        idx = [_int_literal(i) for i in expr.indices]
+        if sym.shape is None or None in idx:
+            return
+        rows, cols = sym.shape
+        if len(idx) == 1:
+            size = rows * cols if 1 in (rows, cols) else None
+            if size is not None and idx[0] > size:
+                raise SemanticError(
+                    f"{expr.base.name} has {size} elements; there is no element {idx[0]}",
+                    expr.span,
+                )
+        elif idx[0] > rows or idx[1] > cols:
+            raise SemanticError(
+                f"{expr.base.name} is {rows}x{cols}; there is no element "
+                f"[{idx[0]},{idx[1]}]",
+                expr.span,
+            )
 
     def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
         return self.kind_of(expr.operand)
@@ -611,9 +676,17 @@ class Analysis:
         )
 
     def _kind_MatrixLit(self, expr: ir.MatrixLit) -> Kind:
-        for row in expr.rows:
-            for entry in row:
-                k = self.kind_of(entry)
+        kinds = [[self.kind_of(e) for e in row] for row in expr.rows]
+        if all(k is Kind.SCALAR for row in kinds for k in row):
+            widths = {len(row) for row in expr.rows}
+            if len(widths) > 1:
+                raise SemanticError(
+                    "the rows of this matrix have different lengths "
+                    f"({', '.join(str(len(r)) for r in expr.rows)})",
+                    expr.span,
+                )
+        for row, row_kinds in zip(expr.rows, kinds, strict=True):
+            for entry, k in zip(row, row_kinds, strict=True):
                 if k not in (Kind.SCALAR, Kind.MATRIX, Kind.UNKNOWN):
                     raise SemanticError(
                         f"a matrix entry cannot be a {k.value}", entry.span
@@ -641,8 +714,24 @@ class Analysis:
     def arg_kinds(self, call: ir.Call) -> list[Kind]:
         """Check a call's arguments; option words (``ANGULAR``) are WORD."""
         b = BUILTINS[call.key]
+        if b.name in _NEEDS_NEWTONIAN and not self._has_newtonian():
+            raise SemanticError(
+                f"{call.func} needs a Newtonian frame: declare one first", call.span
+            )
         kinds = []
         for i, a in enumerate(call.args):
+            if b.name == "UNITS":
+                kinds.append(Kind.WORD)  # unit expressions, read as text
+                continue
+            if (
+                b.name == "SOLVE"
+                and i == 0
+                and isinstance(a, ir.Name)
+                and a.key in _SOLVE_OPTIONS
+                and self.table.get(a.key) is None
+            ):
+                kinds.append(Kind.WORD)
+                continue
             if i in b.words:
                 if not isinstance(a, ir.Name) or a.primes or a.rank:
                     raise SemanticError(f"{b.name} expects an option word here", a.span)
@@ -653,7 +742,25 @@ class Analysis:
                 kinds.append(self._constraint(a))
             else:
                 kinds.append(self._arg_kind(a))
+        self._check_arg_kinds(call, b, kinds)
         return kinds
+
+    def _check_arg_kinds(self, call: ir.Call, b: Builtin, kinds: list[Kind]) -> None:
+        ok = (Kind.UNKNOWN,)
+        if b.name in _MATRIX_FIRST and kinds and kinds[0] not in (Kind.MATRIX, *ok):
+            raise SemanticError(
+                f"{call.func} needs a matrix, not a {kinds[0].value}", call.args[0].span
+            )
+        if b.name in _OBJECT_ARGS:
+            for a, k in zip(call.args, kinds, strict=True):
+                if k not in (Kind.FRAME, Kind.POINT, *ok):
+                    raise SemanticError(
+                        f"{call.func} takes bodies, particles or points, not a {k.value}",
+                        a.span,
+                    )
+
+    def _has_newtonian(self) -> bool:
+        return any(s.kind == "newtonian" for s in self.table)
 
     def _load_target(self, arg: ir.Expr, command: str) -> Kind:
         want = Kind.POINT if command == "FORCE" else Kind.FRAME
@@ -906,8 +1013,7 @@ class Analysis:
             if stmt.op in ("*=", "/=", "^=") and value_kind is not Kind.SCALAR:
                 raise SemanticError(f"{stmt.op} needs a scalar", stmt.value.span)
         if isinstance(target, ir.Element):
-            for i in target.indices:
-                self._expect_scalar(i)
+            self._check_indices(target.indices)
             if len(target.indices) > 2:
                 raise SemanticError(
                     "a matrix element takes one or two indices", target.span
@@ -918,6 +1024,21 @@ class Analysis:
                     stmt.value.span,
                 )
             sym = self._assign_name(target.base, "matrix")
+            idx = [_int_literal(i) for i in target.indices]
+            if sym.shape is not None and None not in idx:
+                if len(idx) == 1:
+                    rows, cols = sym.shape
+                    sym.shape = (max(rows, idx[0]), cols) if cols == 1 else None
+                else:
+                    sym.shape = (max(sym.shape[0], idx[0]), max(sym.shape[1], idx[1]))
+            elif sym.shape is None and len(idx) == 1 and idx[0] == 1:
+                sym.shape = (
+                    (1, 1)
+                    if stmt.op in ("=", ":=") and sym.seq == self.table._seq
+                    else None
+                )
+            else:
+                sym.shape = None
             return self._facts(target=sym)
         form = self.form(target)
         if form is not None:
@@ -969,6 +1090,7 @@ class Analysis:
             return self._facts(target=sym)
         kind = "matrix" if value_kind is Kind.MATRIX else "scalar"
         sym = self._assign_name(target, kind)
+        sym.shape = _literal_shape(stmt.value) if stmt.op in ("=", ":=") else None
         return self._facts(target=sym)
 
     def _assign_name(self, target: ir.Name, kind: str) -> Symbol:
@@ -1046,6 +1168,12 @@ class Analysis:
             raise SemanticError(message, call.span)
         kinds = self.arg_kinds(call)
         want = self._COMMAND_ARGS.get(b.name)
+        if b.name == "AUTOTAYLOR":
+            want = None
+            if any(not isinstance(a, ir.Equation) for a in call.args[1:]):
+                raise SemanticError(
+                    "AutoTaylor(0:2, X=0, ...) expands about name=value", call.span
+                )
         if b.name in ("DIRCOS", "ANGVEL", "KINDIFFS"):
             want = (Kind.FRAME, Kind.FRAME, Kind.WORD) + (Kind.SCALAR,) * (
                 len(kinds) - 3
@@ -1157,6 +1285,15 @@ def _free_names(expr: ir.Expr) -> list[ir.Name]:
     return [
         n for n in walk_expr(expr) if isinstance(n, ir.Name) and n.key not in ("PI",)
     ]
+
+
+def _literal_shape(expr: ir.Expr) -> tuple[int, int] | None:
+    """The shape of a matrix literal of scalars, else None (unknown)."""
+    if not isinstance(expr, ir.MatrixLit):
+        return None
+    if any(isinstance(e, ir.MatrixLit) for row in expr.rows for e in row):
+        return None
+    return len(expr.rows), len(expr.rows[0])
 
 
 def _int_literal(expr: ir.Expr) -> int | None:

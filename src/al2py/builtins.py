@@ -74,6 +74,10 @@ def _represent(kinds: list[Kind]) -> Kind:
     return Kind.UNKNOWN if kinds and kinds[0] is Kind.MATRIX else Kind.MATRIX
 
 
+def _unknown(_: list[Kind]) -> Kind:
+    return Kind.UNKNOWN  # decided at run time (Partials: one vector or several)
+
+
 def _momentum(kinds: list[Kind]) -> Kind:
     return Kind.UNKNOWN  # LINEAR/ANGULAR give vectors, GENERALIZED a matrix
 
@@ -125,13 +129,13 @@ class Builtin:
         if lo <= n and (hi is None or n <= hi):
             return None
         if hi is None:
-            want = f"at least {lo}"
+            want, top = f"at least {lo}", lo
         elif lo == hi:
-            want = f"exactly {lo}"
+            want, top = f"exactly {lo}", lo
         else:
-            want = f"{lo} to {hi}"
-        plural = "" if (hi == 1 and lo == 1) else "s"
-        return f"{self.name} takes {want} argument{plural}, not {n}"
+            want, top = f"{lo} to {hi}", hi
+        plural = "" if top == 1 else "s"
+        return f"{self.name.title()} takes {want} argument{plural}, not {n}"
 
 
 def _func(name: str, python: str, n: int = 1, hi: int | None = -1) -> Builtin:
@@ -183,6 +187,8 @@ _TABLE: list[Builtin] = [
     Builtin("EVALUATE", Style.SPECIAL, "evaluate", 1, None, _first),
     Builtin("TAYLOR", Style.SPECIAL, "taylor", 3, None, _first),
     Builtin("POLYNOMIAL", Style.METHOD, "polynomial", 2, 3, _polynomial),
+    # The Summary lists Polynomial1(A, x), most likely a footnote marker.
+    Builtin("POLYNOMIAL1", Style.METHOD, "polynomial", 2, 2, _polynomial),
     Builtin("ROOTS", Style.METHOD, "roots", 1, 3, _matrix),
     Builtin("SOLVE", Style.SPECIAL, "solve", 2, None),
     Builtin("REPLACE", Style.SPECIAL, "replace", 2, None, _first),
@@ -219,7 +225,7 @@ _TABLE: list[Builtin] = [
     Builtin("VECTOR", Style.METHOD, "vector", 2, 4, _vector),
     Builtin("DYADIC", Style.METHOD, "dyadic", 2, None, _dyadic),
     Builtin("MATRIX", Style.METHOD, "matrix", 2, 2, _matrix),
-    Builtin("PARTIALS", Style.METHOD, "partials", 1, None, _matrix),
+    Builtin("PARTIALS", Style.METHOD, "partials", 1, None, _unknown),
     Builtin("REMAINDER", Style.METHOD, "remainder", 1, 1, _vector),
     # -- mass distribution, loads, dynamics (values)
     Builtin("MASS", Style.METHOD, "mass_of", 0, None),
@@ -248,7 +254,8 @@ _TABLE: list[Builtin] = [
     _command("KANE", "kane", 0, None),
     Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2),
     Builtin("UNITS", Style.SPECIAL, "units", 2, 2),
-    *(_pending(n, _NUMERICS) for n in ("SPLINE", "AUTOTAYLOR")),
+    Builtin("AUTOTAYLOR", Style.SPECIAL, "autotaylor", 2, None, statement=True),
+    *(_pending(n, _NUMERICS) for n in ("SPLINE",)),
 ]
 
 BUILTINS: dict[str, Builtin] = {b.name: b for b in _TABLE}

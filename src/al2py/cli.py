@@ -277,7 +277,9 @@ def _convert_library(args: argparse.Namespace) -> int:
 
 def _convert_file(source: str, output: str | None) -> int:
     if source == "-":
-        text, filename = sys.stdin.read(), "<stdin>"
+        raw = getattr(sys.stdin, "buffer", None)  # bytes, so bad UTF-8 is replaced
+        text = raw.read().decode("utf-8", "replace") if raw else sys.stdin.read()
+        filename = "<stdin>"
     else:
         path = Path(source)
         try:
@@ -299,7 +301,16 @@ def _convert_file(source: str, output: str | None) -> int:
             file=sys.stderr,
         )
         return EXIT_INPUT
-    _write_atomically(out, result.code)
+    if out.is_dir():
+        print(
+            f"al2py: error: cannot write {output}: it is a directory", file=sys.stderr
+        )
+        return EXIT_INPUT
+    try:
+        _write_atomically(out, result.code)
+    except OSError as exc:
+        print(f"al2py: error: cannot write {output}: {exc.strerror}", file=sys.stderr)
+        return EXIT_INPUT
     return EXIT_OK
 
 

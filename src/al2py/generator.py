@@ -79,9 +79,7 @@ class Imports:
     def lines(self) -> list[str]:
         out = []
         for module in sorted(self._by_module):
-            names = ", ".join(
-                sorted(self._by_module[module], key=lambda n: (n.lower(), n))
-            )
+            names = ", ".join(sorted(self._by_module[module], key=_isort_key))
             out.append(f"from {module} import {names}")
         return out
 
@@ -107,7 +105,12 @@ class Generator:
         for stmt in stmts:
             if self.stopped_at is not None:
                 break
-            out.extend(self.statement(stmt))
+            try:
+                out.extend(self.statement(stmt))
+            except RecursionError:
+                raise SemanticError(
+                    "this statement is too deeply nested to convert", stmt.span
+                ) from None
         return out
 
     def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
@@ -325,6 +328,9 @@ class Generator:
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
 
     def _command(self, call: ir.Call, b: Builtin) -> str:
+        if b.name == "AUTOTAYLOR":
+            order, *points = call.args
+            return f"al.autotaylor({self.expr(order)}, {self._points(points)})"
         args = list(call.args)
         method = b.python
         if b.name in ("FORCE", "TORQUE") and isinstance(args[0], ir.BinOp):
@@ -373,6 +379,8 @@ class Generator:
         for a in args[1:]:
             if isinstance(a, ir.IndexedNames):
                 unknowns.extend(self._indexed(a))
+            elif isinstance(a, ir.MatrixLit):
+                unknowns.extend(self.expr(e) for row in a.rows for e in row)
             else:
                 unknowns.append(self.expr(a))
         return f"al.solve({eqs}, [{', '.join(unknowns)}], line={self._line})"
@@ -611,22 +619,23 @@ class Generator:
             raise SemanticError(
                 "Taylor's second argument is the order, e.g. 0:2", order.span
             )
+        return f"al.taylor({self.expr(subject)}, {self.expr(order)}, {self._points(points)})"
+
+    def _points(self, points: list[ir.Expr]) -> str:
+        """Expansion points ``X=0`` / ``X=0:dX`` as ``[(X, 0), (X, 0, dX)]``."""
         items = []
         for p in points:
             if not isinstance(p, ir.Equation):
                 raise SemanticError(
-                    "Taylor expands about name=value or name=value:increment", p.span
+                    "expand about name=value or name=value:increment", p.span
                 )
             self._check_substitutable(p.lhs)
             if isinstance(p.rhs, ir.Range):
-                items.append(
-                    f"({self.expr(p.lhs)}, {self.expr(p.rhs.lo)}, {self.expr(p.rhs.hi)})"
-                )
+                lo, hi = self.expr(p.rhs.lo), self.expr(p.rhs.hi)
+                items.append(f"({self.expr(p.lhs)}, {lo}, {hi})")
             else:
                 items.append(f"({self.expr(p.lhs)}, {self.expr(p.rhs)})")
-        return (
-            f"al.taylor({self.expr(subject)}, {self.expr(order)}, [{', '.join(items)}])"
-        )
+        return f"[{', '.join(items)}]"
 
     def call_input_value(self, node: ir.Call, b: Builtin) -> str:
         name = node.args[0]
@@ -676,6 +685,12 @@ class Generator:
     def _symbol_for_name(self, node: ir.Expr) -> Symbol:
         assert isinstance(node, ir.Name)
         return self._symbol(node.name)
+
+
+def _isort_key(name: str) -> tuple[int, str]:
+    """isort's order-by-type: CONSTANTS, then Classes, then functions."""
+    kind = 0 if name.isupper() else 1 if name[0].isupper() else 2
+    return kind, name.lower()
 
 
 def _target_names(target: ir.Expr) -> tuple[str, ...]:

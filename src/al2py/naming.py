@@ -10,8 +10,9 @@ The rule (also in the README):
 3. Frames, bodies, particles and points keep their name.  A scalar or matrix
    that shares its name with one of them gains ``_val``: tutor8's body ``A``
    stays ``A`` and its matrix ``A`` is ``A_val``.
-4. A Python keyword, builtin, or a name the generated module itself uses
-   (``al``, ``t``, imported functions) gains a trailing ``_``.
+4. A Python keyword, builtin, a name the generated module itself uses
+   (``al``, ``t``, ``run``, runtime functions such as ``cos``), or one of the
+   ambiguous single letters ``l``, ``O``, ``I`` gains a trailing ``_``.
 5. Any remaining clash (e.g. a scalar literally called ``H_vec`` next to
    ``H>``) is broken by appending ``_2``, ``_3``, ... in order of first
    appearance.
@@ -35,7 +36,10 @@ PHYSICAL_KINDS = frozenset({"newtonian", "frame", "body", "particle", "point"})
 _SUFFIX = {"vector": "_vec", "dyadic": "_dyad", "polyadic": "_poly"}
 _VALID = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _PYTHON_NAMES = (
-    frozenset(keyword.kwlist) | frozenset(keyword.softkwlist) | frozenset(dir(builtins))
+    frozenset(keyword.kwlist)
+    | frozenset(keyword.softkwlist)
+    | frozenset(dir(builtins))
+    | {"l", "O", "I"}  # ambiguous letters (pycodestyle E741)
 )
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import sys
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -38,6 +39,21 @@ def _template() -> jinja2.Template:
     return env.get_template("module.py.j2")
 
 
+_CHUNK = 70  # characters of source per string literal in AL_SOURCE
+
+
+def _source_literal(lines: tuple[str, ...]) -> str:
+    """``AL_SOURCE`` as a tuple literal whose lines all fit in 88 columns."""
+    items = []
+    for line in lines:
+        if len(repr(line)) <= _CHUNK + 10:
+            items.append(repr(line))
+            continue
+        chunks = [line[i : i + _CHUNK] for i in range(0, len(line), _CHUNK)]
+        items.append("(\n" + "\n".join(repr(c) for c in chunks) + "\n)")
+    return "(\n" + "".join(item + ",\n" for item in items) + ")"
+
+
 def module_name(filename: str) -> str:
     """A Python module name for ``filename`` (``tutor6.al`` -> ``tutor6``)."""
     stem = Path(filename).stem or "autolev"
@@ -57,6 +73,9 @@ def convert(
     Raises :class:`al2py.errors.AutolevError` (with a source span) for input
     that is malformed or not supported.
     """
+    text = text.removeprefix("\ufeff")  # a byte-order mark (Windows editors)
+    # Long flat sums make deep (left-leaning) trees; give the walk room.
+    sys.setrecursionlimit(max(sys.getrecursionlimit(), 20_000))
     script = parse(text, filename)
     if script_dir is None:
         script_dir = (
@@ -86,7 +105,7 @@ def convert(
         version=__version__,
         imports=generator.imports.lines(),
         body="\n".join(body),
-        source_lines=repr(script.lines),
+        source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
     )
     try:
