@@ -21,9 +21,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import al2py_runtime  # noqa: E402,F401  (library import is not model derivation)
 from pendulum import autolev_source, hand_derive, hand_simulate  # noqa: E402
 
-import al2py_runtime  # noqa: E402,F401  (library import is not model derivation)
 from al2py import convert  # noqa: E402
 
 
