@@ -49,12 +49,21 @@ def measure(n: int, workdir: Path) -> dict[str, float]:
     module, t_import = _timed(_import, path, f"pendulum{n}")
     (kane, q, u, consts), t_kane = _timed(hand_derive, n)
 
-    run, t_run = _timed(module.run)
-    (states, calls), t_hand = _timed(hand_simulate, kane, q, u, consts)
+    def fresh_run():
+        for job in module.al.jobs:  # each run() regenerates its functions
+            job._cache.clear()
+        return module.run()
+
+    # Best of three: the machine may be busy with other work.
+    run, t_run = min((_timed(fresh_run) for _ in range(3)), key=lambda r: r[1])
+    (states, calls), t_hand = min(
+        (_timed(hand_simulate, kane, q, u, consts) for _ in range(3)),
+        key=lambda r: r[1],
+    )
     ours_final = [float(run[f"Q{k}"][-1]) for k in range(1, n + 1)]
     hand_final = [math.degrees(x) for x in states[:n, -1]]
     drift = max(abs(a - b) for a, b in zip(ours_final, hand_final, strict=True))
-    nfev = getattr(run, "nfev", None) or calls
+    nfev = run.nfev
     return {
         "n": n,
         "convert_s": t_convert,

@@ -192,6 +192,7 @@ class Result:
     states: dict[str, np.ndarray] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     time_unit: str | None = None
+    nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
 
     def __getitem__(self, name: str) -> np.ndarray:
         for table in self.tables:
@@ -633,6 +634,10 @@ class _Dynamics:
     deriv: Any  # (T, *y, *ud, *p) -> y'
     outputs: list[Any]  # per table: (T, *y, *ud, *p) -> row
     params: list[Any]
+    # Fast path when no state derivative other than the accelerations themselves
+    # depends on the accelerations: one call gives M, f and those derivatives.
+    step: Any = None  # (T, *y, *p) -> M (row-major) + f + known y'
+    plan: tuple[tuple[bool, int], ...] = ()  # per state: (from solve?, index)
 
 
 def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
@@ -695,29 +700,63 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
     mf_exprs: list[Any] = []
     if zero is not None:
         numeric_zero = [slots.numeric(e, "ZERO") for e in zero]
-        mass = sp.Matrix(numeric_zero).jacobian(uds)
+        split = [_split_linear(e, uds) for e in numeric_zero]
+        if all(part is not None for part in split):
+            mass = sp.Matrix([coefs for coefs, _rest in split])
+            zero_at_0 = [rest for _coefs, rest in split]
+        else:
+            mass = sp.Matrix(numeric_zero).jacobian(uds)
+            zero_at_0 = [e.xreplace(dict.fromkeys(uds, 0)) for e in numeric_zero]
         if any(e.has(*uds) for e in mass):
             raise NumericsError(
                 f"{job.where}: ZERO is not linear in "
                 + ", ".join(label_of(d, job.names) for d in ud_objs)
             )
-        zero_at_0 = [e.xreplace(dict.fromkeys(uds, 0)) for e in numeric_zero]
         mf_exprs = list(mass) + [-e for e in zero_at_0]
     outputs = _output_exprs(job, table, slots)
     args_y = [slots.time, *ys]
     params = list(slots.param_dummies)
+    out_funcs = [_lambdify([*args_y, *uds, *params], row) for row in outputs]
+    names = [label_of(o, job.names) for o in state_objs]
+    position = {u: j for j, u in enumerate(uds)}
+    known = [d for d in derivs if d not in position]
+    if not any(sp.sympify(d).has(*uds) for d in known):
+        # One generated function gives M, f and the other derivatives.
+        plan, k = [], 0
+        for d in derivs:
+            if d in position:
+                plan.append((True, position[d]))
+            else:
+                plan.append((False, k))
+                k += 1
+        step = _lambdify([*args_y, *params], [*mf_exprs, *known])
+        dynamics = _Dynamics(
+            state_objs, names, ud_objs, step, None, out_funcs, list(slots.params)
+        )
+        dynamics.step, dynamics.plan = step, tuple(plan)
+        return dynamics
     mf = _lambdify([*args_y, *params], mf_exprs)
     deriv = _lambdify([*args_y, *uds, *params], derivs)
-    out_funcs = [_lambdify([*args_y, *uds, *params], row) for row in outputs]
     return _Dynamics(
-        state_objs,
-        [label_of(o, job.names) for o in state_objs],
-        ud_objs,
-        mf,
-        deriv,
-        out_funcs,
-        list(slots.params),
+        state_objs, names, ud_objs, mf, deriv, out_funcs, list(slots.params)
     )
+
+
+def _split_linear(expr: Any, unknowns: list[Any]) -> tuple[list[Any], Any] | None:
+    """``expr = sum(c_k * x_k) + rest`` read term by term (no differentiation),
+    or None when a term is not of that form (then the caller differentiates)."""
+    position = {u: k for k, u in enumerate(unknowns)}
+    coefs: list[Any] = [sp.Integer(0)] * len(unknowns)
+    rest = []
+    for term in sp.Add.make_args(sp.sympify(expr)):
+        if not term.has(*unknowns):
+            rest.append(term)
+            continue
+        factor, var = term.as_independent(*unknowns, as_Add=False)
+        if var not in position or factor.has(*unknowns):
+            return None
+        coefs[position[var]] += factor
+    return coefs, sp.Add(*rest)
 
 
 def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
@@ -756,7 +795,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             return [vals_mf[1] / vals_mf[0]]
         m = np.array(vals_mf[:nn]).reshape(n, n)
         try:
-            return np.linalg.solve(m, vals_mf[nn:]).tolist()
+            return np.linalg.solve(m, vals_mf[nn : nn + n]).tolist()
         except np.linalg.LinAlgError:
             raise singular() from None
 
@@ -765,8 +804,31 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         yl = y.tolist()
         return deriv(tt, *yl, *accelerations(tt, yl), *p)
 
+    if c.step is not None:
+        step, plan, nf = c.step, c.plan, nn + n
+
+        def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
+            clock[0] = tt
+            v = step(tt, *y.tolist(), *p)
+            if n == 1:
+                if v[0] == 0:
+                    raise singular()
+                acc = [v[1] / v[0]]
+            elif n:
+                try:
+                    acc = np.linalg.solve(
+                        np.array(v[:nn]).reshape(n, n), v[nn:nf]
+                    ).tolist()
+                except np.linalg.LinAlgError:
+                    raise singular() from None
+            else:
+                acc = []
+            known = v[nf:]
+            return [acc[i] if solved else known[i] for solved, i in plan]
+
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
     try:
+        nfev = 0
         if len(times) == 1:
             ys = np.array(y0, dtype=float).reshape(-1, 1)
         else:
@@ -785,7 +847,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
                     f"{job.where}: integration failed at t = {clock[0]:g}:"
                     f" {sol.message}"
                 )
-            ys = sol.y
+            ys, nfev = sol.y, sol.nfev
         tables = []
         factors = _output_factors(job, vals)
         rows_all = [[] for _ in c.outputs]
@@ -817,6 +879,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         states=states,
         notes=_unique(vals.notes),
         time_unit=job.unit_system.time_unit,
+        nfev=nfev,
     )
 
 
