@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   ?= .venv
 PY     := $(VENV)/bin/python
 PIP    := $(PY) -m pip
-EXAMPLE ?= examples/tutor1.al
+EXAMPLE ?= examples/tutor6.al
 ANTLR  := $(VENV)/bin/antlr4
 
 .PHONY: install run test grammar bench lint clean
