@@ -162,6 +162,8 @@ class Generator:
             "SPECIFIED": "specified",
             "IMAGINARY": "imaginary",
         }[stmt.keyword]
+        if stmt.motion:
+            method = "motion_variables"
         names: list[str] = []
         specs: list[str] = []
         assigns: list[str] = []
@@ -302,7 +304,11 @@ class Generator:
         expr = stmt.expr
         if self._facts.stop:
             self.stopped_at = stmt.span.line
-            return [f"# {expr.name.title()}: Autolev stops reading the script here."]  # type: ignore[union-attr]
+            word = expr.name.title()  # type: ignore[union-attr]
+            return [
+                f"# {word}: Autolev stops reading the script here.",
+                f"al.exit(line={self._line})",
+            ]
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
@@ -548,6 +554,8 @@ class Generator:
             self.an.kind_of(e) is Kind.MATRIX for row in node.rows for e in row
         )
         rows = ["[" + ", ".join(self.expr(e) for e in row) + "]" for row in node.rows]
+        if node in self.an.vector_matrices:
+            return f"al.vector_matrix([{', '.join(rows)}])", ATOM
         if blocks:
             return f"al.block([{', '.join(rows)}])", ATOM
         self.imports.use("sympy", "Matrix")
