@@ -155,6 +155,54 @@ def vdot(a: Any, b: Any) -> Any:
     return sp.sympify(a) * sp.sympify(b)
 
 
+class VectorMatrix:
+    """A matrix of vectors (``[V1>; 2*V2>]``); ``Dot`` makes it scalars."""
+
+    def __init__(self, rows: list[list[Vector]]) -> None:
+        self.rows = rows
+
+    def __repr__(self) -> str:
+        return f"VectorMatrix({self.rows!r})"
+
+
+def vdot_matrix(a: Any, b: Any) -> sp.Matrix:
+    """``Dot`` with a matrix of vectors on either side: elementwise."""
+    if isinstance(a, VectorMatrix) and isinstance(b, VectorMatrix):
+        raise TypeError("Dot of two matrices of vectors")
+    if isinstance(a, VectorMatrix):
+        return sp.Matrix([[vdot(e, b) for e in row] for row in a.rows])
+    return sp.Matrix([[vdot(a, e) for e in row] for row in b.rows])
+
+
+def unit_dyadic(frame: ReferenceFrame) -> Dyadic:
+    """``1>>`` in terms of ``frame``'s unit vectors."""
+    return (frame.x | frame.x) + (frame.y | frame.y) + (frame.z | frame.z)
+
+
+def is_unit_dyadic(d: Dyadic) -> bool:
+    """True if ``d`` is ``1>>``, written in terms of a single frame."""
+    frames = {f for _, a, b in d.args for f in _frames_of(a) | _frames_of(b)}
+    if len(frames) != 1:
+        return False
+    m = d.to_matrix(frames.pop())
+    return all(sp.simplify(x) == 0 for x in m - sp.eye(3))
+
+
+def _frames_of(v: Vector) -> set:
+    return {frame for _, frame in v.args}
+
+
+def axis_dcm(axis: sp.Matrix, angle: Any) -> sp.Matrix:
+    """``A_B`` for B rotated by ``angle`` about the direction whose A measure
+    numbers are ``axis`` (Rodrigues' rotation formula)."""
+    k = sp.Matrix(axis)
+    norm = sp.sqrt(sum(x**2 for x in k))
+    k = (k / norm).applyfunc(sp.simplify)
+    c, s = sp.cos(angle), sp.sin(angle)
+    m = c * sp.eye(3) + (1 - c) * k * k.T + s * _skew(k)
+    return m.applyfunc(sp.simplify)
+
+
 def vcross(a: Any, b: Any) -> Any:
     """Autolev ``Cross`` of vectors (or a vector and a dyadic)."""
     if isinstance(a, Vector | Dyadic) and isinstance(b, Vector | Dyadic):

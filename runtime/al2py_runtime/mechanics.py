@@ -81,6 +81,9 @@ class _State:
     dependent: list = field(default_factory=list)
     auxiliary: list = field(default_factory=list)
     speed_dt: dict = field(default_factory=dict)  # U' -> expression (Constrain)
+    deferred_vel: dict = field(default_factory=dict)  # (P, N) -> (A, O): V2pts
+    deferred_acc: dict = field(default_factory=dict)  # (P, N) -> (A, O): A2pts
+    motion: list = field(default_factory=list)  # MotionVariables, in order
     fr_speeds: list | None = None
     kane: dict | None = None
 
@@ -252,6 +255,8 @@ class MechanicsMixin:
         if arrows == 2 and len(parts) == 3 and head == "I":
             if parts[1] in frs and frs[parts[1]] in st.bodies and parts[2] in pts:
                 return ("INERTIA", frs[parts[1]], pts[parts[2]])
+            if parts[1] in pts and pts[parts[1]] in st.particles and parts[2] in pts:
+                return ("INERTIA", pts[parts[1]], pts[parts[2]])
         return None
 
     def _assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
@@ -396,6 +401,8 @@ class MechanicsMixin:
         st = self._mech
         if (p, frame) in st.vel:
             return st.vel[(p, frame)]
+        if (p, frame) in st.deferred_vel:
+            return self._deferred("V", p, frame)
         if st.fixed_in.get(p) is frame:
             return Vector(0)
         return None
@@ -428,6 +435,8 @@ class MechanicsMixin:
             return st.acc[(p, frame)]
         if st.fixed_in.get(p) is frame:
             return Vector(0)
+        if (p, frame) in st.deferred_acc:
+            return self._deferred("A", p, frame)
         try:
             v = self.vel(p, frame)
         except ValueError:
@@ -466,12 +475,24 @@ class MechanicsMixin:
         b.orient_explicit(a, m)
 
     def simprot(
-        self, a: ReferenceFrame, b: ReferenceFrame, axis: int, angle: Any, *, line=None
+        self, a: ReferenceFrame, b: ReferenceFrame, axis: Any, angle: Any, *, line=None
     ) -> sp.Matrix:
-        """``Simprot(A, B, 3, Q)``: B rotated relative to A about A3 (= B3)."""
-        m = kin.simprot_dcm(int(axis), angle)
-        unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
-        b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
+        """``Simprot(A, B, 3, Q)``: B rotated relative to A about A3 (= B3).
+
+        The axis may also be a vector (``Simprot(N, A, N1>, X)``, or any
+        direction): B is rotated by ``angle`` about it, right-handed."""
+        axis = self.val(axis)
+        if isinstance(axis, Vector):
+            if axis == Vector(0):
+                raise ValueError("Simprot: the axis vector is zero")
+            m = kin.axis_dcm(axis.to_matrix(a), angle)
+            b.orient_explicit(a, m)
+            rate = sp.diff(sp.sympify(angle), t)
+            b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
+        else:
+            m = kin.simprot_dcm(int(axis), angle)
+            unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
+            b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
         self.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
@@ -507,9 +528,19 @@ class MechanicsMixin:
         return kin.angvel_from_dcm(m)
 
     def angvel(
-        self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
+        self,
+        a: ReferenceFrame,
+        b: ReferenceFrame,
+        kind: str | None = None,
+        *qs: Any,
+        line=None,
     ) -> Vector:
-        """``Angvel(A, B, BODY123, Q1, Q2, Q3)``: forms ``W_B_A>`` (in B)."""
+        """``Angvel(A, B, BODY123, Q1, Q2, Q3)``: forms ``W_B_A>`` (in B).
+        ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
+        if kind is None:
+            w = self.ang_vel(b, a)
+            self.respond(f"W_{b.name}_{a.name}>", w, line=line)
+            return w
         w = kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs))
         b.set_ang_vel(a, w)
         self.respond(f"W_{b.name}_{a.name}>", w, line=line)
@@ -550,18 +581,59 @@ class MechanicsMixin:
 
     # ------------------------------------------------- velocity formulas
 
-    def v2pts(self, n, a, o, p, *, line=None) -> Vector:
-        """``V2pts(N, A, O, P)``: O and P fixed on A;
-        ``V_P_N> = V_O_N> + Cross(W_A_N>, P_O_P>)``."""
+    def _v2pts(self, n, a, o, p) -> Vector:
         v = self.vel(o, n) + (self.ang_vel(a, n) ^ self.pos(o, p))
-        return self._set_formed("V", p, n, kin.tidy_vector(v), line)
+        return kin.tidy_vector(v)
 
-    def a2pts(self, n, a, o, p, *, line=None) -> Vector:
-        """``A2pts(N, A, O, P)``: O and P fixed on A."""
+    def _a2pts(self, n, a, o, p) -> Vector:
         w = self.ang_vel(a, n)
         r = self.pos(o, p)
         v = self.acc(o, n) + (self.ang_acc(a, n) ^ r) + (w ^ (w ^ r))
-        return self._set_formed("A", p, n, kin.tidy_vector(v), line)
+        return kin.tidy_vector(v)
+
+    def _deferred(self, which: str, p: Point, n: ReferenceFrame) -> Vector:
+        """A velocity/acceleration stated by ``V2pts``/``A2pts`` before the
+        other point's was known: formed now (an error if it still is not)."""
+        st = self._mech
+        table = st.deferred_vel if which == "V" else st.deferred_acc
+        a, o = table.pop((p, n))  # no cycles: each rule is used once
+        try:
+            v = (self._v2pts if which == "V" else self._a2pts)(n, a, o, p)
+        except ValueError:
+            table[(p, n)] = (a, o)
+            raise ValueError(
+                f"{which}_{p.name}_{n.name}> is not defined: {which}2pts("
+                f"{n.name}, {a.name}, {o.name}, {p.name}) needs "
+                f"{which}_{o.name}_{n.name}>, P_{o.name}_{p.name}> and "
+                f"W_{a.name}_{n.name}>"
+            ) from None
+        table[(p, n)] = (a, o)
+        return v
+
+    def _two_points(self, which: str, n, a, o, p, line) -> Vector | None:
+        try:
+            v = (self._v2pts if which == "V" else self._a2pts)(n, a, o, p)
+        except ValueError:
+            # Not all of it is known yet (the other point's motion, the
+            # position, W_A_N>): keep the relation and form the value when it
+            # is used (an error then if it still cannot be formed).
+            st = self._mech
+            table = st.deferred_vel if which == "V" else st.deferred_acc
+            table[(p, n)] = (a, o)
+            (st.vel if which == "V" else st.acc).pop((p, n), None)
+            return None
+        return self._set_formed(which, p, n, v, line)
+
+    def v2pts(self, n, a, o, p, *, line=None) -> Vector | None:
+        """``V2pts(N, A, O, P)``: O and P fixed on A;
+        ``V_P_N> = V_O_N> + Cross(W_A_N>, P_O_P>)``.  If a term is not
+        known yet (``V_O_N>``...) the relation is kept (no response) and
+        used when ``V_P_N>`` is needed."""
+        return self._two_points("V", n, a, o, p, line)
+
+    def a2pts(self, n, a, o, p, *, line=None) -> Vector | None:
+        """``A2pts(N, A, O, P)``: O and P fixed on A (deferred as V2pts)."""
+        return self._two_points("A", n, a, o, p, line)
 
     def v1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
@@ -601,10 +673,14 @@ class MechanicsMixin:
     # ------------------------------------------------ vector operations
 
     def express(self, v: Any, frame: ReferenceFrame) -> Any:
-        """``Express(v>, A)``: ``v>`` in terms of A1>, A2>, A3>."""
+        """``Express(v>, A)``: ``v>`` in terms of A1>, A2>, A3>.  The unit
+        dyadic ``1>>`` is the identity in every frame, whether or not A is
+        oriented relative to the frame it was written in."""
         if isinstance(v, Vector):
             return kin.tidy_vector(v.express(frame))
         if isinstance(v, Dyadic):
+            if kin.is_unit_dyadic(v):
+                return kin.unit_dyadic(frame)
             return kin.vmap(v.express(frame, frame), kin.tidy)
         return v
 
@@ -656,7 +732,10 @@ class MechanicsMixin:
         return kin.frame_dyadic(frame, mat)
 
     def dot(self, a: Any, b: Any) -> Any:
-        return kin.tidy(kin.vdot(self.val(a), self.val(b)))
+        a, b = self.val(a), self.val(b)
+        if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
+            return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
+        return kin.tidy(kin.vdot(a, b))
 
     def cross(self, a: Any, b: Any) -> Any:
         return kin.vmap(kin.vcross(self.val(a), self.val(b)), kin.tidy)
@@ -681,9 +760,17 @@ class MechanicsMixin:
         return kin.vmap(v, lambda e: e / m)
 
     def unit_dyadic(self) -> Dyadic:
-        """``1>>`` (expressed in the Newtonian frame)."""
-        n = self._n()
-        return (n.x | n.x) + (n.y | n.y) + (n.z | n.z)
+        """``1>>``, expressed in the Newtonian frame (without one, in the first
+        declared frame; ``Express(1>>, A)`` gives it in any frame)."""
+        st = self._mech
+        n = st.newtonian or next(iter(st.frames.values()), None)
+        if n is None:
+            raise ValueError("1>> needs a frame: declare one first")
+        return kin.unit_dyadic(n)
+
+    def vector_matrix(self, rows: list) -> kin.VectorMatrix:
+        """A matrix literal of vectors, ``[V1>; V2>]`` (an argument of Dot)."""
+        return kin.VectorMatrix([[kin.as_vector(self.val(e)) for e in r] for r in rows])
 
     def trace(self, y: Any) -> Any:
         """``Trace(A)`` of a matrix or a dyadic."""
@@ -779,8 +866,10 @@ class MechanicsMixin:
         r = self.pos(b.inertia_point, b.point)
         return kin.vmap(b.inertia - m * self._transfer(r, body), kin.tidy)
 
-    def inertia_dyadic(self, body: ReferenceFrame, p: Point) -> Dyadic:
-        """``I_B_P>>``: inertia dyadic of body B about point P."""
+    def inertia_dyadic(self, body: Any, p: Point) -> Dyadic:
+        """``I_B_P>>``: inertia dyadic of body (or particle) B about point P."""
+        if isinstance(body, Point):
+            return self.inertia(p, body)
         b = self._body(body)
         if b.inertia is not None and p is b.inertia_point:
             return b.inertia
@@ -852,14 +941,56 @@ class MechanicsMixin:
 
     # ------------------------------------------------------- speeds
 
+    def motion_variables(self, *names: str) -> Any:
+        """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
+        that also describe the motion (see :meth:`_speeds`)."""
+        out = self.variables(*names)
+        objs = out if isinstance(out, tuple) else (out,)
+        st = self._mech
+        st.motion.extend(o for o in objs if o not in st.motion)
+        return out
+
     def _speeds(self) -> list:
-        """Generalized speeds: the declared variables U1, U2... in order."""
+        """Generalized speeds.
+
+        The declared variables U1, U2... in order, if there are any.  Otherwise
+        the motion variables (``MotionVariables'``) say, in declaration order:
+        one with a right-hand side of its own (``OMEGA = THETA'``) is a name
+        for an expression, not a speed; one whose derivative has a right-hand
+        side (``POSITION' = SPEED``, a kinematical equation) is a coordinate
+        whose speeds are in that equation; one appearing in such an equation
+        (``SPEED``) is a speed; any other (``THETA''``) is a coordinate whose
+        first derivative ``THETA'`` serves as the generalized speed.  Speeds
+        solved by Constrain keep their place."""
         found = []
         for name, entry in self._names.items():
             m = _SPEED.match(name)
             if m and entry.kind == "variable":
                 found.append((int(m.group(1)), entry.obj))
-        return [obj for _, obj in sorted(found, key=lambda x: x[0])]
+        if found:
+            return [obj for _, obj in sorted(found, key=lambda x: x[0])]
+        st = self._mech
+        solved = set(st.dependent) | set(st.auxiliary)
+        rhs = self._rhs
+        kin_eqs = [
+            rhs[sp.Derivative(q, t)]
+            for q in st.motion
+            if q not in rhs
+            and sp.Derivative(q, t) in rhs
+            and sp.Derivative(q, t) not in solved
+        ]
+        out = []
+        for q in st.motion:
+            dq = sp.Derivative(q, t)
+            if q in rhs and q not in solved:
+                continue
+            if dq in rhs and dq not in solved:
+                continue
+            if any(sp.sympify(e).has(q) for e in kin_eqs):
+                out.append(q)
+            else:
+                out.append(dq)
+        return out
 
     def _fr_speeds(self) -> list:
         """Speeds with a row in Fr/Fr*: independent and auxiliary speeds."""
@@ -875,11 +1006,13 @@ class MechanicsMixin:
         v = self._actual(v, keep)
         return [kin.vmap(v, lambda e, u=u: sp.diff(e, u)) for u in speeds]
 
-    def partials(self, v: Any, *speeds: Any) -> tuple:
-        """``Partials(V_P_N>, U1, U2)``: partial velocities, a tuple of vectors
-        (no speeds: with respect to each independent/auxiliary speed)."""
+    def partials(self, v: Any, *speeds: Any) -> Any:
+        """``Partials(V_P_N>, U1, U2)``: partial velocities (no speeds: with
+        respect to each independent/auxiliary speed).  One speed gives one
+        vector; several give a tuple of vectors, in order."""
         speeds = list(speeds) or self._fr_speeds()
-        return tuple(kin.tidy_vector(x) for x in self._partials(self.val(v), speeds))
+        out = [kin.tidy_vector(x) for x in self._partials(self.val(v), speeds)]
+        return out[0] if len(out) == 1 else tuple(out)
 
     def remainder(self, v: Any) -> Vector:
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
@@ -983,7 +1116,8 @@ class MechanicsMixin:
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
             name = self.name_of(u)
-            if self._names[name].order >= 1:
+            base = name.rstrip("'")
+            if self._names[base].order > len(name) - len(base):
                 self.assign(name + "'", ds, line=line)
         target = st.dependent if which == "DEPENDENT" else st.auxiliary
         for u in speeds:

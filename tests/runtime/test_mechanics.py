@@ -959,3 +959,149 @@ def test_errors_and_non_forms():
     al.assign("FORCE_P>", N.x)
     al.assign("FORCE_P>", al["FORCE_P>"] + N.y)
     assert al.force_on(P) == N.x + N.y
+
+
+# ------------------------------------------- SymPy's examples: runtime rules
+
+
+def test_simprot_about_a_vector_rotates_about_it():
+    al = Workspace()
+    N = al.newtonian("N")
+    A, B = al.frames("A", "B")
+    X = al.variables("X")
+    al.simprot(N, A, N.x + N.y, X, line=1)
+    B.orient_axis(N, (N.x + N.y).normalize(), X)
+    assert sp.simplify(A.dcm(N) - B.dcm(N)) == sp.zeros(3, 3)
+    w = (A.ang_vel_in(N) - B.ang_vel_in(N)).to_matrix(N)
+    assert sp.simplify(w) == sp.zeros(3, 1)
+    # a numeric angle about a unit vector: the 1-axis
+    m = al.simprot(N, A, N.x, sp.pi / 2, line=2)
+    assert m == sp.Matrix([[1, 0, 0], [0, 0, -1], [0, 1, 0]])
+    with pytest.raises(ValueError, match="zero"):
+        al.simprot(N, A, Vector(0), X, line=3)
+
+
+def test_partials_one_speed_is_one_vector_several_a_tuple():
+    al = Workspace()
+    A = al.frames("A")
+    P = al.particles("P")
+    U1, U2 = al.variables("U1", "U2")
+    al.assign("V_P_A>", U1 * A.x + 3 * U2 * A.y, line=1)
+    v = al.vel(P, A)
+    assert al.partials(v, U1) == A.x
+    assert al.partials(v, U1, U2) == (A.x, 3 * A.y)
+
+
+def test_unit_dyadic_is_the_identity_in_any_frame():
+    al = Workspace()
+    A = al.frames("A")  # no Newtonian frame, no orientation
+    one = al.express(al.unit_dyadic(), A)
+    assert one.to_matrix(A) == sp.eye(3)
+    al2 = Workspace()
+    N = al2.newtonian("N")
+    B = al2.frames("B")  # not oriented relative to N
+    assert al2.express(al2.unit_dyadic(), B).to_matrix(B) == sp.eye(3)
+    # a dyadic that is not 1>> still needs the orientation
+    with pytest.raises(ValueError):
+        al2.express(2 * (N.x | N.x) + (N.y | N.y) + (N.z | N.z), B)
+
+
+def test_dot_with_a_matrix_of_vectors_is_a_matrix():
+    al = Workspace()
+    A = al.frames("A")
+    v1 = 2 * A.x - 3 * A.y
+    v2 = A.x + A.y
+    m = al.dot(v1, al.vector_matrix([[v2], [2 * v2]]))
+    assert m == sp.Matrix([[-1], [-2]])
+
+
+def test_angvel_with_two_frames_shows_the_angular_velocity():
+    al = Workspace()
+    N = al.newtonian("N")
+    A = al.frames("A")
+    C3 = al.constants("C3")
+    al.assign("W_A_N>", C3 * A.z, line=1)
+    assert al.angvel(A, N, line=2) == -C3 * A.z  # W_N_A>
+    assert al.responses[-1].label == "W_N_A>"
+
+
+def test_v2pts_waits_for_the_other_point():
+    al = Workspace()
+    N = al.newtonian("N")
+    A = al.frames("A")
+    O, P = al.points("O", "P")
+    C1, C3 = al.constants("C1", "C3")
+    al.assign("W_A_N>", C3 * A.z, line=1)
+    al.v2pts(N, A, O, P, line=2)  # P_O_P> and V_O_N> are not known yet
+    with pytest.raises(ValueError, match="V2pts"):
+        al.vel(P, N)
+    al.assign("P_O_P>", C1 * A.x, line=3)
+    al.assign("V_O_N>", Vector(0), line=4)
+    assert al.vel(P, N) == C1 * C3 * A.y
+
+
+def test_quantity_may_share_its_name_with_a_frame():
+    al = Workspace()
+    A = al.frames("A")
+    x = al.assign("A", 3, line=1)
+    assert al["A"] == 3 and x == sp.Symbol("A", real=True)
+    assert al.frame("A") is A
+
+
+def test_particle_inertia_about_a_point():
+    al = Workspace()
+    A = al.frames("A")
+    P1 = al.particles("P1")
+    O = al.points("O")
+    C1, M1 = al.constants("C1", "M1")
+    al.set_mass(P1, M1)
+    al.assign("P_P1_O>", C1 * A.x, line=1)
+    i = al["I_P1_O>>"].to_matrix(A)
+    assert i == sp.diag(0, M1 * C1**2, M1 * C1**2)
+    assert al.inertia_dyadic(P1, O).to_matrix(A) == i
+
+
+def _motion_pendulum(with_kin_eq: bool):
+    """A pendulum with MotionVariables' and no U variables."""
+    al = Workspace()
+    N = al.newtonian("N")
+    A = al.frames("A")
+    P = al.particles("P")
+    L, M, G = al.constants("L", "M", "G")
+    if with_kin_eq:  # MotionVariables' Q', W'  with  Q' = W
+        Q, W = al.motion_variables("Q'", "W'")
+        al.assign("Q'", W, line=1)
+    else:  # MotionVariables' Q''
+        Q = al.motion_variables("Q''")
+        W = D(Q, t)
+    al.simprot(N, A, 3, Q, line=2)
+    al.assign("W_A_N>", D(Q, t) * A.z, line=3)
+    al.assign("P_NO_P>", L * A.x, line=4)
+    al.set_mass(P, M)
+    al.gravity(G * N.x)
+    al.assign("ZERO", al.fr() + al.frstar(), line=5)
+    al.kane(line=6)
+    return al, Q, W
+
+
+def test_speeds_from_motion_variables():
+    al, Q, W = _motion_pendulum(with_kin_eq=False)
+    assert al._speeds() == [D(Q, t)]
+    zero = al["ZERO"]
+    L, M, G = (sp.Symbol(n, real=True) for n in ("L", "M", "G"))
+    expected = -M * L**2 * D(Q, (t, 2)) - M * G * L * sp.sin(Q)
+    assert sp.simplify(zero[0] - expected) == 0
+    al2, Q2, W2 = _motion_pendulum(with_kin_eq=True)
+    assert al2._speeds() == [W2]  # Q' = W: W is the speed, Q a coordinate
+    expected2 = expected.subs(Q, Q2).subs(D(Q2, (t, 2)), D(W2, t))
+    assert sp.simplify(al2.resolve(al2["ZERO"][0]) - expected2) == 0
+
+
+def test_motion_variable_named_for_a_rate_is_not_a_speed():
+    al = Workspace()
+    TH, OM = al.motion_variables("TH''", "OM'")
+    al.assign("OM", D(TH, t), line=1)
+    assert al._speeds() == [D(TH, t)]
+    # declared U variables take precedence
+    U1 = al.variables("U1")
+    assert al._speeds() == [U1]
