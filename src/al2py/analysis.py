@@ -481,6 +481,14 @@ class Analysis:
         self.degrees = False
         #: Object names appearing anywhere, also inside forms (``P_O_Ao>``).
         self.mentioned: set[str] = set()
+        #: Name nodes used as operands of arithmetic: there a name that is both
+        #: a quantity and a (later declared) object means the quantity, since
+        #: frames and points are never values (``Constants L`` ...
+        #: ``Particles L`` ... ``L*N1>``).
+        self._as_value: set[ir.Name] = set()
+        #: Matrix literals of vectors, allowed as arguments of Dot
+        #: (``Dot(V1>, [V2>; 2*V2>])`` is the column of the dot products).
+        self.vector_matrices: set[ir.MatrixLit] = set()
         self._plan_identifiers(stmts)
 
     # ---------------------------------------------------------- identifiers
@@ -551,6 +559,8 @@ class Analysis:
     def lookup(self, node: ir.Name) -> Symbol:
         """The symbol a (non-form) name refers to; errors for undeclared names."""
         sym = self.table.get(node.name)
+        if node in self._as_value:
+            sym = self.table.quantity(node.name) or sym
         if sym is None:
             if node.rank:
                 raise SemanticError(
@@ -631,11 +641,22 @@ class Analysis:
                 expr.span,
             )
 
+    def _operand(self, expr: ir.Expr) -> Kind:
+        """The kind of an operand of arithmetic (see ``_as_value``)."""
+        if (
+            isinstance(expr, ir.Name)
+            and self.form(expr) is None
+            and self.table.quantity(expr.name) is not None
+            and self.table.physical(expr.name) is not None
+        ):
+            self._as_value.add(expr)
+        return self.kind_of(expr)
+
     def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
-        return self.kind_of(expr.operand)
+        return self._operand(expr.operand)
 
     def _kind_BinOp(self, expr: ir.BinOp) -> Kind:
-        left, right = self.kind_of(expr.left), self.kind_of(expr.right)
+        left, right = self._operand(expr.left), self._operand(expr.right)
         if expr.op in "+-":
             if (
                 Kind.SCALAR in (left, right)
@@ -740,10 +761,31 @@ class Analysis:
                 kinds.append(self._load_target(a, b.name))
             elif b.name == "CONSTRAIN":
                 kinds.append(self._constraint(a))
+            elif b.name == "DOT" and isinstance(a, ir.MatrixLit):
+                kinds.append(self._vector_matrix(a))
             else:
                 kinds.append(self._arg_kind(a))
         self._check_arg_kinds(call, b, kinds)
         return kinds
+
+    def _vector_matrix(self, expr: ir.MatrixLit) -> Kind:
+        """A matrix literal as an argument of Dot: all scalars, or all vectors."""
+        kinds = [self.kind_of(e) for row in expr.rows for e in row]
+        if any(k is Kind.VECTOR for k in kinds):
+            widths = {len(row) for row in expr.rows}
+            for row in expr.rows:
+                for e in row:
+                    if self.kind_of(e) not in (Kind.VECTOR, Kind.UNKNOWN):
+                        raise SemanticError(
+                            "a matrix of vectors holds only vectors", e.span
+                        )
+            if len(widths) > 1:
+                raise SemanticError(
+                    "the rows of this matrix have different lengths", expr.span
+                )
+            self.vector_matrices.add(expr)
+            return Kind.MATRIX
+        return self.kind_of(expr)
 
     def _check_arg_kinds(self, call: ir.Call, b: Builtin, kinds: list[Kind]) -> None:
         ok = (Kind.UNKNOWN,)
@@ -1164,6 +1206,10 @@ class Analysis:
 
     def _enter_command(self, call: ir.Call, b: Builtin) -> StmtFacts:
         message = b.arity_error(len(call.args))
+        if b.name == "ANGVEL" and len(call.args) == 3:
+            message = (
+                "Angvel takes 2 arguments (Angvel(A, B) shows W_B_A>) or at least 4"
+            )
         if message:
             raise SemanticError(message, call.span)
         kinds = self.arg_kinds(call)

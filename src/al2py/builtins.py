@@ -64,6 +64,8 @@ def _dyadic(_: list[Kind]) -> Kind:
 
 
 def _dot(kinds: list[Kind]) -> Kind:
+    if Kind.MATRIX in kinds:
+        return Kind.MATRIX  # Dot(v>, [v1>; v2>]): a matrix of vectors
     if Kind.DYADIC in kinds:
         return Kind.DYADIC if kinds.count(Kind.DYADIC) == 2 else Kind.VECTOR
     return Kind.SCALAR
@@ -241,7 +243,7 @@ _TABLE: list[Builtin] = [
     # -- stand-alone physics commands (statements; they respond)
     _command("SIMPROT", "simprot", 4, 4),
     _command("DIRCOS", "dircos", 4, None, words=(2,)),
-    _command("ANGVEL", "angvel", 4, None, words=(2,)),
+    _command("ANGVEL", "angvel", 2, None, words=(2,)),
     _command("KINDIFFS", "kindiffs", 4, None, words=(2,)),
     _command("V2PTS", "v2pts", 4, 4),
     _command("A2PTS", "a2pts", 4, 4),

@@ -162,6 +162,8 @@ class Generator:
             "SPECIFIED": "specified",
             "IMAGINARY": "imaginary",
         }[stmt.keyword]
+        if stmt.motion:
+            method = "motion_variables"
         names: list[str] = []
         specs: list[str] = []
         assigns: list[str] = []
@@ -552,6 +554,8 @@ class Generator:
             self.an.kind_of(e) is Kind.MATRIX for row in node.rows for e in row
         )
         rows = ["[" + ", ".join(self.expr(e) for e in row) + "]" for row in node.rows]
+        if node in self.an.vector_matrices:
+            return f"al.vector_matrix([{', '.join(rows)}])", ATOM
         if blocks:
             return f"al.block([{', '.join(rows)}])", ATOM
         self.imports.use("sympy", "Matrix")

@@ -311,11 +311,14 @@ class Declaration(Stmt):
     ``Frames``, ``Bodies``, ``Particles``, ``Points``, ``Mass``, ``Inertia``.
 
     ``keyword`` is the canonical declaration kind (``"CONSTANTS"``, ...), not
-    the spelling (``Constant``/``CONSTANTS``/``MotionVariables``...).
+    the spelling (``Constant``/``CONSTANTS``/``MotionVariables``...);
+    ``motion`` records the ``MotionVariables`` spelling of ``VARIABLES``.
     """
 
     keyword: str
     items: tuple[DeclItem, ...]
+    #: ``MotionVariables`` (with or without a prime) rather than ``Variables``.
+    motion: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -367,7 +367,8 @@ class _IRBuilder(AutolevVisitor):
         keyword = _DECL_KEYWORDS[ctx.declKeyword().start.type]
         items = [self.visit(ctx.firstDeclItem())]
         items.extend(self.visit(item) for item in ctx.declItem())
-        return ir.Declaration(self._ctx_span(ctx), keyword, tuple(items))
+        motion = ctx.declKeyword().getText().upper().startswith("MOTION")
+        return ir.Declaration(self._ctx_span(ctx), keyword, tuple(items), motion)
 
     def visitFirstDeclItem(self, ctx: AutolevParser.FirstDeclItemContext):
         return self._decl_item(ctx, self.visit(ctx.declHead()), ctx.declTail())
