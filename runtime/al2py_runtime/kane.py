@@ -57,15 +57,43 @@ def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> 
     """Arrange each row as ``F + sum(M_k * accel_k)`` (see module doc).
 
     Rows are linear in the accelerations, so the coefficients are derivatives
-    and the rest is the row with the accelerations set to zero: no expansion,
-    which keeps large models fast."""
-    zero = {a: 0 for a in accels}
+    and the rest is the row with the accelerations set to zero: no expansion.
+    The accelerations are swapped for plain symbols once, because sympy
+    differentiates by a ``Derivative`` through a substitution on every call,
+    which dominated the derivation of large models."""
+    plain = [sp.Dummy(f"a{k}") for k in range(len(accels))]
+    swap = dict(zip(accels, plain, strict=True))
+    back = dict(zip(plain, accels, strict=True))
+    zero = dict.fromkeys(plain, 0)
     # Tidying is cosmetic; with many speeds it would dominate the derivation.
     polish = tidy if len(accels) <= SMALL_GENS else (lambda e, gens=(): e)
     out = []
     for row in rows:
-        row = sp.sympify(row)
-        coefs = [polish(sp.diff(row, a)) for a in accels]
-        rest = polish(row.xreplace(zero), gens)
+        row = sp.sympify(row).xreplace(swap)
+        split = _read_terms(row, plain)
+        if split is not None:  # FrStar builds rows already arranged
+            coefs, rest = split
+        else:
+            coefs = [row.diff(a) for a in plain]
+            rest = row.xreplace(zero)
+        coefs = [polish(c.xreplace(back)) for c in coefs]
+        rest = polish(rest.xreplace(back), gens)
         out.append(rest + sum(c * a for c, a in zip(coefs, accels, strict=True)))
     return out
+
+
+def _read_terms(expr: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
+    """``expr = sum(c_k * x_k) + rest`` read term by term, or None if a term
+    is not of that form."""
+    position = {x: k for k, x in enumerate(xs)}
+    coefs: list[Any] = [sp.Integer(0)] * len(xs)
+    rest = []
+    for term in sp.Add.make_args(expr):
+        if not term.has(*xs):
+            rest.append(term)
+            continue
+        factor, var = term.as_independent(*xs, as_Add=False)
+        if var not in position or factor.has(*xs):
+            return None
+        coefs[position[var]] += factor
+    return coefs, sp.Add(*rest)

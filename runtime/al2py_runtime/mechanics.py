@@ -1059,33 +1059,39 @@ class MechanicsMixin:
         return kin.tidy_vector(self._inertia_torque(b, n or self._n()))
 
     def frstar(self) -> sp.Matrix:
-        """``FrStar()``: generalized inertia forces (rows as :meth:`fr`)."""
+        """``FrStar()``: generalized inertia forces (rows as :meth:`fr`).
+
+        As sympy's KanesMethod does, accelerations are split into
+        ``rest + sum(coef_k * Uk')`` before they are dotted with the partial
+        velocities, so each row is built already arranged in the speeds'
+        derivatives (large models never differentiate whole rows)."""
         n = self._n()
         st = self._mech
         speeds = self._fr_speeds()
         st.fr_speeds = speeds
-        rows = [sp.Integer(0)] * len(speeds)
+        accels = [sp.Derivative(u, t) for u in self._speeds()]
+        rows: list[list[Any]] = [[] for _ in speeds]
+
+        def add(vec: Vector, parts: list) -> None:
+            rest, coefs = kin.split_linear_vector(vec, accels)
+            for r, part in zip(rows, parts, strict=True):
+                if part == Vector(0):
+                    continue
+                r.append(rest.dot(part))
+                r.extend(c.dot(part) * a for a, c in coefs.items())
+
         for o in st.massive:
             m = self._mass(o, strict=False)
             p = self._center(o)
             if m != 0:
                 a = self._actual(self.acc(p, n))
                 if a != Vector(0):
-                    parts = self._partials(self.vel(p, n), speeds)
-                    rows = [
-                        r + d
-                        for r, d in zip(
-                            rows, self._dot_rows(-m * a, parts), strict=True
-                        )
-                    ]
+                    add(-m * a, self._partials(self.vel(p, n), speeds))
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
                 tq = self._inertia_torque(o, n)
-                parts = self._partials(self.ang_vel(o, n), speeds)
-                rows = [
-                    r + d for r, d in zip(rows, self._dot_rows(tq, parts), strict=True)
-                ]
+                add(tq, self._partials(self.ang_vel(o, n), speeds))
         gens = self._gens()
-        return sp.Matrix([kin.tidy(r, gens) for r in rows])
+        return sp.Matrix([kin.tidy(sp.Add(*r), gens) for r in rows])
 
     # ------------------------------------------------------ Constrain
 
