@@ -17,6 +17,7 @@ import time
 from pathlib import Path
 
 import al2py_runtime  # noqa: F401  (library import is not model derivation)
+
 from al2py import convert
 
 
