@@ -35,6 +35,7 @@ grammar: install
 
 bench: install
 	$(PY) benchmarks/run.py
+	$(PY) benchmarks/large.py
 
 clean:
 	rm -rf out .pytest_cache .ruff_cache

@@ -4,7 +4,7 @@ A chain of n rigid bodies in 3-D, each joined to the previous one by a
 spherical joint and oriented by body-fixed 1-2-3 angles, so the model has 3n
 generalized speeds (n = 8 gives 24, the size of a detailed bicycle model).
 
-    python benchmarks/large.py          # n = 2, 4, 8
+    python benchmarks/large.py          # n = 2, 3, 4
     python benchmarks/large.py 6 10     # chosen sizes
 """
 
@@ -17,6 +17,8 @@ import time
 from pathlib import Path
 
 import al2py_runtime  # noqa: F401  (library import is not model derivation)
+import sympy as sp  # noqa: E402  (after al2py_runtime, as users would)
+from sympy.physics import mechanics as me  # noqa: E402
 
 from al2py import convert
 
@@ -56,6 +58,35 @@ def chain_source(n: int) -> str:
     return "\n".join(lines) + "\n"
 
 
+def kanesmethod_seconds(n: int) -> float:
+    """The same chain written directly with ``KanesMethod`` (for comparison)."""
+    start = time.perf_counter()
+    q = me.dynamicsymbols(f"q1:{3 * n + 1}")
+    u = me.dynamicsymbols(f"u1:{3 * n + 1}")
+    length, mass, ia, it, g = sp.symbols("L M IA IT G")
+    frame_n = me.ReferenceFrame("N")
+    origin = me.Point("O")
+    origin.set_vel(frame_n, 0)
+    parent, previous = frame_n, origin
+    bodies, loads, kd = [], [], []
+    for k in range(n):
+        qs, us = q[3 * k : 3 * k + 3], u[3 * k : 3 * k + 3]
+        frame = me.ReferenceFrame(f"B{k + 1}")
+        frame.orient_body_fixed(parent, qs, "123")
+        w = us[0] * frame.x + us[1] * frame.y + us[2] * frame.z
+        kd += list((frame.ang_vel_in(parent) - w).to_matrix(frame))
+        frame.set_ang_vel(parent, w)
+        center = previous.locatenew(f"P{k + 1}", length * frame.z)
+        center.v2pt_theory(previous, frame_n, frame)
+        inertia = me.inertia(frame, it, it, ia)
+        bodies.append(me.RigidBody(f"R{k + 1}", center, frame, mass, (inertia, center)))
+        loads.append((center, -mass * g * frame_n.z))
+        parent, previous = frame, center
+    kane = me.KanesMethod(frame_n, q_ind=q, u_ind=u, kd_eqs=kd)
+    kane.kanes_equations(bodies, loads)
+    return time.perf_counter() - start
+
+
 def measure(n: int, workdir: Path) -> tuple[float, float, int]:
     source = chain_source(n)
     path = workdir / f"chain{n}.al"
@@ -75,14 +106,19 @@ def measure(n: int, workdir: Path) -> tuple[float, float, int]:
 
 
 def main(argv: list[str]) -> int:
-    sizes = [int(a) for a in argv] or [2, 4, 8]
-    print(f"{'bodies':>6} {'speeds':>6} {'lines':>6} {'convert s':>10} {'import s':>9}")
+    sizes = [int(a) for a in argv] or [2, 3, 4]
+    print(
+        f"{'bodies':>6} {'speeds':>6} {'lines':>6} {'convert s':>10} "
+        f"{'import s':>9} {'Kanes s':>8} {'ratio':>6}"
+    )
     with tempfile.TemporaryDirectory() as tmp:
         for n in sizes:
             t_convert, t_import, equations = measure(n, Path(tmp))
+            t_kane = kanesmethod_seconds(n)
             lines = len(chain_source(n).splitlines())
             print(
-                f"{n:>6} {equations:>6} {lines:>6} {t_convert:>10.2f} {t_import:>9.2f}",
+                f"{n:>6} {equations:>6} {lines:>6} {t_convert:>10.2f} "
+                f"{t_import:>9.2f} {t_kane:>8.2f} {t_import / t_kane:>6.2f}",
                 flush=True,
             )
     return 0

@@ -31,9 +31,7 @@ IDS = [f"{p.parent.name}/{p.name}" for p in SCRIPTS]
 # these modules fail ruff with I001 (``from al2py_runtime import t, Workspace``
 # is unsorted) and E741/F811 (Autolev names ``O``, ``I`` used as-is, ``I``
 # also shadowing ``from sympy import I``).
-RUFF_KNOWN_BUGS: set[str] = set()  # every module must be ruff-clean
-RUFF_SCRIPTS = [p for p in SCRIPTS if p.name not in RUFF_KNOWN_BUGS]
-RUFF_IDS = [f"{p.parent.name}/{p.name}" for p in RUFF_SCRIPTS]
+RUFF_IDS = [f"{p.parent.name}/{p.name}" for p in SCRIPTS]
 # Scripts whose transcript ``python mod.py`` prints (no CODE jobs to run).
 GOLDEN_SCRIPTS = sorted(GOLDEN.glob("*.al"))
 
@@ -48,38 +46,25 @@ def _convert(path: Path):
 
 
 def _converted_or_skip_unsupported(path: Path):
+    """The conversion of ``path``; every tutorial and golden script converts."""
     result = _convert(path)
-    if isinstance(result, AutolevError):
-        assert "not supported yet" in result.message, str(result)
-        assert result.span is not None
-        pytest.skip(f"{path.name}: {result.message}")
+    assert not isinstance(result, AutolevError), str(result)
     return result
 
 
 def test_there_are_scripts():
     assert len(SCRIPTS) >= 20
-    converted = [p for p in SCRIPTS if not isinstance(_convert(p), AutolevError)]
-    # the mathematical tutorial scripts convert
-    assert RUFF_KNOWN_BUGS <= {p.name for p in SCRIPTS}
-    assert {p.name for p in converted} >= {
-        "tutor1.al",
-        "intro.al",
-        "solve.al",
-        "power.al",
-        "sum.al",
-    }
+    failed = [p.name for p in SCRIPTS if isinstance(_convert(p), AutolevError)]
+    # every script of the tutorial (mathematics, physics, CODE jobs) converts
+    assert failed == []
 
 
 @pytest.mark.parametrize("path", SCRIPTS, ids=IDS)
-def test_converts_or_is_not_supported_yet(path):
+def test_converts_and_compiles(path):
     result = _convert(path)
-    if isinstance(result, AutolevError):
-        assert "not supported yet" in result.message, str(result)
-        first = str(result).splitlines()[0]
-        assert first.startswith(f"{path}:{result.span.line}:{result.span.col}: error:")
-    else:
-        assert result.module == path.stem
-        compile(result.code, str(path), "exec")
+    assert not isinstance(result, AutolevError), str(result)
+    assert result.module == path.stem
+    compile(result.code, str(path), "exec")
 
 
 @pytest.mark.parametrize("path", SCRIPTS, ids=IDS)
@@ -103,7 +88,7 @@ def test_black_check_command(path, tmp_path):
     assert run.returncode == 0, run.stderr
 
 
-@pytest.mark.parametrize("path", RUFF_SCRIPTS, ids=RUFF_IDS)
+@pytest.mark.parametrize("path", SCRIPTS, ids=RUFF_IDS)
 def test_ruff_finds_nothing(path, tmp_path):
     code = _converted_or_skip_unsupported(path).code
     target = tmp_path / f"{path.stem}.py"

@@ -7,7 +7,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from test_generated_modules import RUFF_KNOWN_BUGS, SCRIPTS, _convert
 
 from al2py import convert
 
@@ -32,14 +31,6 @@ def _ruff(code, tmp_path):
         cwd=tmp_path,
         timeout=300,
     )
-
-
-@pytest.mark.parametrize(
-    "path", [p for p in SCRIPTS if p.name in RUFF_KNOWN_BUGS], ids=lambda p: p.name
-)
-def test_ruff_clean(path, tmp_path):
-    run = _ruff(_convert(path).code, tmp_path)
-    assert run.returncode == 0, run.stdout
 
 
 @pytest.mark.parametrize(

@@ -16,7 +16,7 @@ from typing import Any
 
 import sympy as sp
 
-from .kinematics import SMALL_GENS, tidy
+from .kinematics import tidy
 
 __all__ = ["solve_speeds", "arrange", "split_linear"]
 
@@ -65,8 +65,8 @@ def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> 
     swap = dict(zip(accels, plain, strict=True))
     back = dict(zip(plain, accels, strict=True))
     zero = dict.fromkeys(plain, 0)
-    # Tidying is cosmetic; with many speeds it would dominate the derivation.
-    polish = tidy if len(accels) <= SMALL_GENS else (lambda e, gens=(): e)
+    # No tidying here: it is cosmetic and done when responses are printed.
+    polish = _as_is
     out = []
     for row in rows:
         row = sp.sympify(row).xreplace(swap)
@@ -80,6 +80,10 @@ def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> 
         rest = polish(rest.xreplace(back), gens)
         out.append(rest + sum(c * a for c, a in zip(coefs, accels, strict=True)))
     return out
+
+
+def _as_is(expr: Any, gens: Sequence[Any] = ()) -> Any:
+    return expr
 
 
 def _read_terms(expr: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:

@@ -997,6 +997,13 @@ class MechanicsMixin:
         dep = set(self._mech.dependent)
         return [u for u in self._speeds() if u not in dep]
 
+    def _display(self, value: Any) -> Any:
+        """A response value simplified for printing (cosmetic, size-gated)."""
+        if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
+            return value
+        gens = self._gens()
+        return kin.vmap(value, lambda e: kin.tidy(e, gens))
+
     def _gens(self) -> list:
         us = self._speeds()
         return [sp.Derivative(u, t) for u in us] + us
@@ -1045,8 +1052,7 @@ class MechanicsMixin:
                 continue
             parts = self._partials(self.ang_vel(b, n), speeds)
             rows = [r + d for r, d in zip(rows, self._dot_rows(tq, parts), strict=True)]
-        gens = self._gens()
-        return sp.Matrix([kin.tidy(r, gens) for r in rows])
+        return sp.Matrix(rows)
 
     def _inertia_torque(self, b: ReferenceFrame, n: ReferenceFrame) -> Vector:
         inertia = self.central_inertia(b)
@@ -1090,8 +1096,7 @@ class MechanicsMixin:
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
                 tq = self._inertia_torque(o, n)
                 add(tq, self._partials(self.ang_vel(o, n), speeds))
-        gens = self._gens()
-        return sp.Matrix([kin.tidy(sp.Add(*r), gens) for r in rows])
+        return sp.Matrix([sp.Add(*r) for r in rows])
 
     # ------------------------------------------------------ Constrain
 

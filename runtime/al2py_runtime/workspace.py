@@ -23,7 +23,7 @@ A + 7*B
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import sympy as sp
@@ -541,7 +541,8 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        return transcript_lines(lines, self.responses)
+        shown = [replace(r, value=self._display(r.value)) for r in self.responses]
+        return transcript_lines(lines, shown)
 
     def print_transcript(self, source: Iterable[str]) -> None:
         for line in self.transcript(source):
