@@ -20,6 +20,7 @@ from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 
 import pytest
+import sympy
 
 from al2py import cli
 
@@ -76,9 +77,16 @@ NAME = re.compile(r"[A-Za-z_]\w*")
 ERROR_HEAD = re.compile(r"^.+:\d+:\d+: error: \S")
 
 
+LIBRARY = ROOT / "tests" / "library"
+SYMPY_EXAMPLES = Path(sympy.__file__).parent / "parsing" / "autolev" / "test-examples"
+
+
 def _seed_files() -> list[Path]:
+    """The tutorial, the golden cases, the multi-file library and SymPy's own
+    Autolev examples: every command al2py supports appears in some seed."""
     files = sorted(SHARED.glob("*.al")) + sorted(GOLDEN.glob("*.al"))
     assert len(files) >= 10, "tutorial scripts not found"
+    files += sorted(LIBRARY.rglob("*.al")) + sorted(SYMPY_EXAMPLES.rglob("*.al"))
     return files
 
 
