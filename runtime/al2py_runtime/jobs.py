@@ -759,6 +759,18 @@ def _split_linear(expr: Any, unknowns: list[Any]) -> tuple[list[Any], Any] | Non
     return coefs, sp.Add(*rest)
 
 
+def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
+    """States that a declared name stands for: ``OMEGA = THETA'`` makes an
+    Input of ``OMEGA`` the initial value of the state ``THETA'``."""
+    states = dict(zip(c.state_objs, c.state_names, strict=True))
+    aliases = {}
+    for name, obj, _order in job.variables:
+        rhs = job.rhs.get(obj)
+        if rhs is not None and rhs in states:
+            aliases[states[rhs]] = normalize_name(name)
+    return aliases
+
+
 def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     from scipy.integrate import solve_ivp
 
@@ -769,10 +781,15 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     ip = _integration(vals)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
-    y0 = [
-        vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
-        for name in c.state_names
-    ]
+    aliases = _state_aliases(job, c)
+    y0 = []
+    for name in c.state_names:
+        alias = aliases.get(name)
+        if normalize_name(name) not in vals.values and alias in vals.values:
+            name = alias  # ``OMEGA = THETA'`` with ``Input OMEGA=0``
+        y0.append(
+            vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
+        )
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n
