@@ -52,6 +52,12 @@ _FORM_GETTERS = {
     "dcm": "al.dcm({0}, {1})",
 }
 _UNIT_AXES = {"1": "x", "2": "y", "3": "z"}
+_POINT_THEORIES = {
+    "V2PTS": "v2pt_theory",
+    "A2PTS": "a2pt_theory",
+    "V1PT": "v1pt_theory",
+    "A1PT": "a1pt_theory",
+}
 #: Stand-alone commands that print a response (they take ``line=``).
 _RESPONDING = frozenset(
     "SIMPROT DIRCOS ANGVEL KINDIFFS V2PTS A2PTS V1PT A1PT CONSTRAIN KANE".split()
@@ -312,7 +318,7 @@ class Generator:
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
-                return [self._command(expr, b)]
+                return [*self._sympy_hint(expr, b), self._command(expr, b)]
             if (
                 b is not None
                 and b.name in DUAL_FUNCTIONS
@@ -332,6 +338,27 @@ class Generator:
                 return [self._solve(expr)]
         label = re.sub(r"\s+", "", span_source(self.lines, expr.span)).upper()
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
+
+    def _sympy_hint(self, call: ir.Call, b: Builtin) -> list[str]:
+        """A comment with the sympy.physics.mechanics call a command amounts to."""
+        args = call.args
+        if b.name in _POINT_THEORIES and all(isinstance(a, ir.Name) for a in args):
+            n, a, o, p = (self.expr(x) for x in args)
+            return [f"# sympy: {p}.{_POINT_THEORIES[b.name]}({o}, {n}, {a})"]
+        if b.name == "SIMPROT":
+            axis = _int_literal(args[2])
+            if axis is not None and isinstance(args[0], ir.Name):
+                parent, child, angle = (
+                    self.expr(args[0]),
+                    self.expr(args[1]),
+                    self.expr(args[3]),
+                )
+                sign = "-" if axis < 0 else ""
+                unit = f"{parent}.{'xyz'[abs(axis) - 1]}"
+                return [
+                    f"# sympy: {child}.orient_axis({parent}, {sign}{unit}, {angle})"
+                ]
+        return []
 
     def _command(self, call: ir.Call, b: Builtin) -> str:
         if b.name == "AUTOTAYLOR":
@@ -706,6 +733,15 @@ def _target_names(target: ir.Expr) -> tuple[str, ...]:
         return target.expand()
     assert isinstance(target, ir.Name)
     return (target.name,)
+
+
+def _int_literal(node: ir.Expr) -> int | None:
+    if isinstance(node, ir.UnaryOp) and node.op == "-":
+        inner = _int_literal(node.operand)
+        return None if inner is None else -inner
+    if isinstance(node, ir.Number) and node.is_integer:
+        return int(node.text)
+    return None
 
 
 def _is_int_literal(node: ir.Expr) -> bool:
