@@ -43,3 +43,18 @@ def convert_and_import(tmp_path):
         return load_module(result.code, tmp_path, result.module), result.code
 
     return run
+
+
+_tutorial_modules: dict[str, object] = {}
+
+
+@pytest.fixture
+def tutorial(convert_and_import):
+    """``tutorial("tutor6")``: the converted tutorial module, imported once per run."""
+
+    def get(name: str):
+        if name not in _tutorial_modules:
+            _tutorial_modules[name], _ = convert_and_import(SHARED / f"{name}.al")
+        return _tutorial_modules[name]
+
+    return get

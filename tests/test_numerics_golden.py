@@ -13,18 +13,6 @@ import numpy as np
 import pytest
 from conftest import SHARED
 
-_modules: dict[str, object] = {}
-
-
-@pytest.fixture
-def tutorial(convert_and_import):
-    def get(name: str):
-        if name not in _modules:
-            _modules[name], _ = convert_and_import(SHARED / f"{name}.al")
-        return _modules[name]
-
-    return get
-
 
 def test_tutor2_sweep(tutorial):
     r = tutorial("tutor2").run()

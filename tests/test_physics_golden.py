@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
-from conftest import SHARED
 
 from al2py.checking import compare, evaluate_text
 
@@ -97,18 +96,6 @@ PRINTED = [
     ),
     ("tutor9", "DET", "0.001096997*(9.824469+OMEGA)*(49.12235+OMEGA) + LAMBDA^2", 7),
 ]
-
-_modules: dict[str, object] = {}
-
-
-@pytest.fixture
-def tutorial(convert_and_import):
-    def get(name: str):
-        if name not in _modules:
-            _modules[name], _ = convert_and_import(SHARED / f"{name}.al")
-        return _modules[name]
-
-    return get
 
 
 def _resolved(ws, value):

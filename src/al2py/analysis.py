@@ -335,21 +335,25 @@ class _Expander:
                 f"in {path.name} ({where} of the expansion): {exc.message}", call_span
             ) from None
 
-    def macro_statement(
-        self, stmt: ir.ExprStmt, call: ir.Call, path: Path
-    ) -> ir.MacroCall:
-        text = self._expand_text(path, call)
-        script = self._parse_nested(text, path, call.span)
-        inner = _Expander(
+    def _child(self, lines: tuple[str, ...]) -> _Expander:
+        """An expander for a macro's text, one level deeper."""
+        return _Expander(
             self.parse,
             self.script_dir,
             self.autolevpath,
-            script.lines,
+            lines,
             self.newtonian,
             self.degrees,
             self.depth + 1,
             self.run_stack,
         )
+
+    def macro_statement(
+        self, stmt: ir.ExprStmt, call: ir.Call, path: Path
+    ) -> ir.MacroCall:
+        text = self._expand_text(path, call)
+        script = self._parse_nested(text, path, call.span)
+        inner = self._child(script.lines)
         body = tuple(
             _respan_stmt(s, call.span) for s in inner.statements(script.statements)
         )
@@ -406,16 +410,7 @@ class _Expander:
                 f"{path.name} does not expand to one expression", node.span
             )
         value = _respan_expr(stmts[0].value, node.span)
-        inner = _Expander(
-            self.parse,
-            self.script_dir,
-            self.autolevpath,
-            script.lines,
-            self.newtonian,
-            self.degrees,
-            self.depth + 1,
-            self.run_stack,
-        )
+        inner = self._child(script.lines)
         return map_expr(value, inner._result_macro)
 
 

@@ -15,6 +15,8 @@ import textwrap
 from collections import defaultdict
 from collections.abc import Iterator
 
+from al2py_runtime.functions import DEGREE_VARIANTS
+
 from . import ir
 from .analysis import INTEGRATION_PARAMETERS, Analysis, StmtFacts, Symbol, walk_expr
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
@@ -28,15 +30,6 @@ ATOM, POWER, UNARY, MUL, ADD = 100, 90, 80, 70, 60
 
 _RUNTIME = "al2py_runtime"
 _FUNCTIONS = "al2py_runtime.functions"
-_DEGREE_VARIANTS = {
-    "SIN": "sin_deg",
-    "COS": "cos_deg",
-    "TAN": "tan_deg",
-    "ASIN": "asin_deg",
-    "ACOS": "acos_deg",
-    "ATAN": "atan_deg",
-    "ATAN2": "atan2_deg",
-}
 _SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
 _VECTOR = "sympy.physics.vector"
 #: Python spelling of each syntactical form's value (see al2py.forms).
@@ -614,8 +607,8 @@ class Generator:
             return emit(node, b), ATOM
         if b.style is Style.FUNC:
             name = b.python
-            if self._facts.degrees and b.name in _DEGREE_VARIANTS:
-                name = _DEGREE_VARIANTS[b.name]
+            if self._facts.degrees and b.name in DEGREE_VARIANTS:
+                name = DEGREE_VARIANTS[b.name]
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
