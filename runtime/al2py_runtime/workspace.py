@@ -390,8 +390,6 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         return self.symbol(str(key))
 
     def _store_element(self, key: Key, value: Any) -> Any:
-        if _is_nonscalar(value) and not isinstance(value, sp.Basic | int | float):
-            pass
         current = self._values.get(key.name)
         if current is None:
             current = sp.zeros(*_shape_for(key.index))

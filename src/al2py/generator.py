@@ -13,7 +13,6 @@ from __future__ import annotations
 import re
 import textwrap
 from collections import defaultdict
-from collections.abc import Iterator
 
 from al2py_runtime.functions import DEGREE_VARIANTS
 
@@ -22,6 +21,7 @@ from .analysis import INTEGRATION_PARAMETERS, Analysis, StmtFacts, Symbol, walk_
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
 from .forms import Form
+from .parser import span_text
 
 __all__ = ["Generator", "Imports"]
 
@@ -329,7 +329,7 @@ class Generator:
                 return self._eig_outputs(expr)
             if b is not None and b.name == "SOLVE":
                 return [self._solve(expr)]
-        label = re.sub(r"\s+", "", span_source(self.lines, expr.span)).upper()
+        label = re.sub(r"\s+", "", _source(self.lines, expr.span)).upper()
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
 
     def _sympy_hint(self, call: ir.Call, b: Builtin) -> list[str]:
@@ -441,7 +441,7 @@ class Generator:
     def stmt_OutputStmt(self, stmt: ir.OutputStmt) -> list[str]:
         columns = []
         for item in stmt.items:
-            label = re.sub(r"\s+", "", span_source(self.lines, item.expr.span)).upper()
+            label = re.sub(r"\s+", "", _source(self.lines, item.expr.span)).upper()
             unit = repr(item.unit.text) if item.unit is not None else "None"
             columns.append(f"({label!r}, {self.expr(item.expr)}, {unit})")
         return [f"al.output([{', '.join(columns)}], line={self._line})"]
@@ -674,7 +674,7 @@ class Generator:
         return f"al.input_value({name.autolev!r}{extra})"
 
     def call_units(self, node: ir.Call, b: Builtin) -> str:
-        texts = [re.sub(r"\s+", "", span_source(self.lines, a.span)) for a in node.args]
+        texts = [re.sub(r"\s+", "", _source(self.lines, a.span)) for a in node.args]
         return f"al.units({texts[0]!r}, {texts[1]!r})"
 
     def call_eig(self, node: ir.Call, b: Builtin) -> str:
@@ -770,17 +770,6 @@ def comment_lines(text: str, prefix: str = "") -> list[str]:
     return out
 
 
-def span_source(lines: tuple[str, ...], span: ir.Span) -> str:
-    """The source text under ``span`` (single- or multi-line)."""
-    if not span.end_line or span.line < 1 or span.line > len(lines):
-        return ""
-    if span.end_line == span.line:
-        return lines[span.line - 1][span.col - 1 : span.end_col - 1]
-    parts = [lines[span.line - 1][span.col - 1 :]]
-    parts += [lines[i - 1] for i in range(span.line + 1, span.end_line)]
-    parts.append(lines[span.end_line - 1][: span.end_col - 1])
-    return " ".join(p.rstrip("& ") for p in parts)
-
-
-def iter_stmts(stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
-    yield from stmts
+def _source(lines: tuple[str, ...], span: ir.Span) -> str:
+    """The source text under ``span``, continuation ampersands removed."""
+    return span_text(lines, span).replace("&", " ")
