@@ -21,6 +21,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
+from .matrices import as_matrix
+
 __all__ = [
     "expand",
     "factor",
@@ -133,14 +135,6 @@ def _degree(term: sp.Expr, gens: set) -> int:
 
 def _numeric(m: sp.MatrixBase) -> bool:
     return all(sp.sympify(e).is_number for e in m)
-
-
-def _as_matrix(m: Any, what: str) -> sp.Matrix:
-    if isinstance(m, sp.MatrixBase):
-        return sp.Matrix(m)
-    if isinstance(m, list | tuple):
-        return sp.Matrix(m)
-    raise TypeError(f"{what}: expected a matrix, not {type(m).__name__}")
 
 
 def _clean(x: complex, tol: float = 1e-12) -> sp.Expr:
@@ -363,7 +357,7 @@ def roots(y: Any, x: Any = None, n: int | None = None) -> sp.Matrix:
     if x is None:
         if n is not None:
             raise TypeError("Roots(A) takes no degree; use Roots(y, x, n)")
-        coeffs = list(_as_matrix(y, "Roots(A)"))
+        coeffs = list(as_matrix(y, "Roots(A)"))
     else:
         if isinstance(y, sp.MatrixBase):
             raise TypeError("Roots(y, x, n): y must be a polynomial, not a matrix")
@@ -466,7 +460,7 @@ def _numeric_eig(a: sp.Matrix, vectors: bool) -> tuple[sp.Matrix, sp.Matrix | No
 
 
 def _square(m: Any, what: str) -> sp.Matrix:
-    a = _as_matrix(m, what)
+    a = as_matrix(m, what)
     if a.rows != a.cols or a.rows == 0:
         raise ValueError(f"{what}: expected a square matrix, not {a.rows}x{a.cols}")
     return a

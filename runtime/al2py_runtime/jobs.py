@@ -22,6 +22,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .kane import linear_terms
 from .units import UnitError, UnitSystem
 
 __all__ = [
@@ -700,7 +701,7 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
     mf_exprs: list[Any] = []
     if zero is not None:
         numeric_zero = [slots.numeric(e, "ZERO") for e in zero]
-        split = [_split_linear(e, uds) for e in numeric_zero]
+        split = [linear_terms(e, uds) for e in numeric_zero]
         if all(part is not None for part in split):
             mass = sp.Matrix([coefs for coefs, _rest in split])
             zero_at_0 = [rest for _coefs, rest in split]
@@ -740,23 +741,6 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
     return _Dynamics(
         state_objs, names, ud_objs, mf, deriv, out_funcs, list(slots.params)
     )
-
-
-def _split_linear(expr: Any, unknowns: list[Any]) -> tuple[list[Any], Any] | None:
-    """``expr = sum(c_k * x_k) + rest`` read term by term (no differentiation),
-    or None when a term is not of that form (then the caller differentiates)."""
-    position = {u: k for k, u in enumerate(unknowns)}
-    coefs: list[Any] = [sp.Integer(0)] * len(unknowns)
-    rest = []
-    for term in sp.Add.make_args(sp.sympify(expr)):
-        if not term.has(*unknowns):
-            rest.append(term)
-            continue
-        factor, var = term.as_independent(*unknowns, as_Add=False)
-        if var not in position or factor.has(*unknowns):
-            return None
-        coefs[position[var]] += factor
-    return coefs, sp.Add(*rest)
 
 
 def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:

@@ -18,7 +18,7 @@ import sympy as sp
 
 from .kinematics import tidy
 
-__all__ = ["solve_speeds", "arrange", "split_linear"]
+__all__ = ["solve_speeds", "arrange", "split_linear", "linear_terms"]
 
 
 def split_linear(
@@ -70,7 +70,7 @@ def arrange(rows: Iterable[Any], accels: Sequence[Any], gens: Sequence[Any]) -> 
     out = []
     for row in rows:
         row = sp.sympify(row).xreplace(swap)
-        split = _read_terms(row, plain)
+        split = linear_terms(row, plain)
         if split is not None:  # FrStar builds rows already arranged
             coefs, rest = split
         else:
@@ -86,9 +86,9 @@ def _as_is(expr: Any, gens: Sequence[Any] = ()) -> Any:
     return expr
 
 
-def _read_terms(expr: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
-    """``expr = sum(c_k * x_k) + rest`` read term by term, or None if a term
-    is not of that form."""
+def linear_terms(expr: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
+    """``expr = sum(c_k * x_k) + rest`` read term by term (no differentiation,
+    no expansion), or None if a term is not of that form."""
     position = {x: k for k, x in enumerate(xs)}
     coefs: list[Any] = [sp.Integer(0)] * len(xs)
     rest = []

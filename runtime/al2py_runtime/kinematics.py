@@ -44,6 +44,25 @@ def is_vector(x: Any) -> bool:
     return isinstance(x, Vector)
 
 
+def doit_derivatives(expr: Any) -> Any:
+    """Evaluate derivatives of expressions, keeping derivatives of declared
+    functions of time (``U1'``); matrices elementwise."""
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(doit_derivatives)
+    if isinstance(expr, sp.Basic) and expr.has(sp.Derivative):
+        return expr.replace(
+            lambda e: isinstance(e, sp.Derivative)
+            and not isinstance(e.expr, sp.core.function.AppliedUndef),
+            lambda e: e.doit(),
+        )
+    return expr
+
+
+def one_or_tuple(items: list[Any]) -> Any:
+    """One value, or a tuple of several (how declarations bind names)."""
+    return items[0] if len(items) == 1 else tuple(items)
+
+
 def is_dyadic(x: Any) -> bool:
     return isinstance(x, Dyadic)
 

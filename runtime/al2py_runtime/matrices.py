@@ -32,7 +32,8 @@ __all__ = [
 Selector = int | tuple[int, int]
 
 
-def _matrix(a: Any, what: str) -> sp.Matrix:
+def as_matrix(a: Any, what: str) -> sp.Matrix:
+    """``a`` as a mutable Matrix (lists accepted), or a TypeError naming ``what``."""
     if isinstance(a, sp.MatrixBase):
         return sp.Matrix(a)
     if isinstance(a, list | tuple):
@@ -41,7 +42,7 @@ def _matrix(a: Any, what: str) -> sp.Matrix:
 
 
 def _square(a: Any, what: str) -> sp.Matrix:
-    m = _matrix(a, what)
+    m = as_matrix(a, what)
     if m.rows != m.cols or m.rows == 0:
         raise ValueError(
             f"{what}: expected a square matrix, not a {m.rows}x{m.cols} matrix"
@@ -127,7 +128,7 @@ def rows(a: Any, *sel: Selector) -> Any:
     >>> rows(sp.Matrix([[1, 2], [3, 4]]), 2)
     Matrix([[3, 4]])
     """
-    m = _matrix(a, "Rows(A)")
+    m = as_matrix(a, "Rows(A)")
     if not sel:
         return sp.Integer(m.rows)
     what = f"Rows(A, ...) with a {m.rows}x{m.cols} matrix"
@@ -142,7 +143,7 @@ def cols(a: Any, *sel: Selector) -> Any:
     [1],
     [3]])
     """
-    m = _matrix(a, "Cols(A)")
+    m = as_matrix(a, "Cols(A)")
     if not sel:
         return sp.Integer(m.cols)
     what = f"Cols(A, ...) with a {m.rows}x{m.cols} matrix"
@@ -205,7 +206,7 @@ def transpose(a: Any) -> sp.Matrix:
     >>> transpose(sp.Matrix([1, 2]))
     Matrix([[1, 2]])
     """
-    return _matrix(a, "Transpose(A)").T
+    return as_matrix(a, "Transpose(A)").T
 
 
 def trace(a: Any) -> sp.Expr:
@@ -223,7 +224,7 @@ def element(a: Any, i: Any, j: Any = None) -> sp.Expr:
     >>> element(sp.Matrix([[1, 2], [3, 4]]), 2, 1)
     3
     """
-    m = _matrix(a, "Element(A)")
+    m = as_matrix(a, "Element(A)")
     i = _index(i, "Element(A, i)")
     if j is None:
         if m.cols != 1 and m.rows != 1:

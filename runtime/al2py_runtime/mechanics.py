@@ -131,7 +131,7 @@ class MechanicsMixin:
 
     def frames(self, *names: str) -> Any:
         """``Frames A, B``: frames and their fixed points AO, BO."""
-        return _one_or_tuple([self._new_frame(n, "frame") for n in names])
+        return kin.one_or_tuple([self._new_frame(n, "frame") for n in names])
 
     def bodies(self, *names: str) -> Any:
         """``Bodies A, B``: frames and mass centers AO, BO."""
@@ -142,7 +142,7 @@ class MechanicsMixin:
             st.bodies[f] = _Body(f, self.point(n.upper() + "O"))
             st.massive.append(f)
             out.append(f)
-        return _one_or_tuple(out)
+        return kin.one_or_tuple(out)
 
     def particles(self, *names: str) -> Any:
         """``Particles P, Q``: massive points."""
@@ -153,11 +153,11 @@ class MechanicsMixin:
             st.particles[p] = None
             st.massive.append(p)
             out.append(p)
-        return _one_or_tuple(out)
+        return kin.one_or_tuple(out)
 
     def points(self, *names: str) -> Any:
         """``Points O, P``."""
-        return _one_or_tuple([self._new_point(n) for n in names])
+        return kin.one_or_tuple([self._new_point(n) for n in names])
 
     def point(self, name: str) -> Point:
         """The declared point, particle or mass center named ``name``."""
@@ -385,7 +385,7 @@ class MechanicsMixin:
     def _actual(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         keep = list(keep)
-        return kin.vmap(x, lambda e: _doit(self.resolve(e, keep=keep)))
+        return kin.vmap(x, self._resolver(keep))
 
     def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
         v = self._actual(v)
@@ -1134,7 +1134,7 @@ class MechanicsMixin:
         for u in speeds:
             if u not in target:
                 target.append(u)
-        return _one_or_tuple(out)
+        return kin.one_or_tuple(out)
 
     # ----------------------------------------------------------- Kane
 
@@ -1155,7 +1155,7 @@ class MechanicsMixin:
             if new == expr:
                 break
             expr = new
-        return _doit(expr)
+        return kin.doit_derivatives(expr)
 
     def kane(self, *forces: Any, line: int | None = None) -> sp.Matrix:
         """``Kane()`` / ``Kane(F1, F2)``: arrange ``ZERO`` for integration.
@@ -1337,24 +1337,9 @@ class MechanicsMixin:
 # ---------------------------------------------------------------- helpers
 
 
-def _one_or_tuple(items: list) -> Any:
-    return items[0] if len(items) == 1 else tuple(items)
-
-
 def _as_dyadic(value: Any) -> Dyadic:
     if isinstance(value, Dyadic):
         return value
     if value == 0:
         return Dyadic(0)
     raise TypeError(f"expected a dyadic, not {value!r}")
-
-
-def _doit(expr: Any) -> Any:
-    """Evaluate derivatives of expressions (keep ``U1'``-style derivatives)."""
-    if isinstance(expr, sp.Basic) and expr.has(sp.Derivative):
-        return expr.replace(
-            lambda e: isinstance(e, sp.Derivative)
-            and not isinstance(e.expr, sp.core.function.AppliedUndef),
-            lambda e: e.doit(),
-        )
-    return expr

@@ -22,14 +22,14 @@ A + 7*B
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
-from .kinematics import is_small
+from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
 from .numerics import NumericsMixin
@@ -187,7 +187,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
             name, sign = _split_sign(spec)
             sym = sp.Symbol(name.upper(), **self._assumptions(sign))
             out.append(self._declare(name, "constant", sym, sign=sign))
-        return _one_or_tuple(out)
+        return one_or_tuple(out)
 
     def variables(self, *names: str) -> Any:
         """``Variables X', Y''``: functions of time; primes give the order."""
@@ -204,7 +204,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
             order = len(spec) - len(base)
             func = dynamicsymbols(base.upper(), **self._assumptions(None))
             out.append(self._declare(base, kind, func, order=order))
-        return _one_or_tuple(out)
+        return one_or_tuple(out)
 
     def imaginary(self, name: str) -> Any:
         """``Imaginary j``: ``j`` is the imaginary unit."""
@@ -289,18 +289,26 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         Objects in ``keep`` are left alone, so ``D(y, x)`` can see through every
         name except ``x`` itself.
         """
+        return self._resolver(keep)(expr)
+
+    def _resolver(self, keep: Iterable[Any] = ()) -> Callable[[Any], Any]:
+        """:meth:`resolve` with the substitution table built once, for applying
+        to many expressions (the measure numbers of a vector)."""
         keep = {sp.sympify(k) for k in keep}
         table = {k: v for k, v in self._rhs.items() if k not in keep}
-        if not table:
-            return expr
-        for _ in range(100):
-            new = _xreplace(expr, table)
-            if _same(new, expr):
-                break
-            expr = new
-        else:  # pragma: no cover - cycles are prevented by assign()
-            raise RecursionError("right-hand sides refer to each other in a cycle")
-        return _doit_derivatives(expr)
+
+        def apply(expr: Any) -> Any:
+            for _ in range(100 if table else 0):
+                new = _xreplace(expr, table)
+                if _same(new, expr):
+                    break
+                expr = new
+            else:
+                if table:  # pragma: no cover - assign() prevents cycles
+                    raise RecursionError("right-hand sides refer to each other")
+            return doit_derivatives(expr)
+
+        return apply
 
     # ------------------------------------------------------------ assignment
 
@@ -328,7 +336,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         out = [
             self.assign(n, v, line=line) for n, v in zip(targets, values, strict=True)
         ]
-        return _one_or_tuple(out)
+        return one_or_tuple(out)
 
     def _store(
         self, target: str, value: Any, *, line: int | None, rearrange: bool
@@ -598,7 +606,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         """``Evaluate(y, a=x, b=2)``: substitute, seeing through other names."""
         subs = {sp.sympify(k): sp.sympify(v) for k, v in (subs or {}).items()}
         y = self.resolve(self.val(y), keep=subs)
-        y = _doit_derivatives(_xreplace(y, subs))
+        y = doit_derivatives(_xreplace(y, subs))
         if self.settings.degrees:
             y = (
                 y.applyfunc(degrees_pass)
@@ -671,10 +679,6 @@ def _split_sign(spec: str) -> tuple[str, str | None]:
     return spec, None
 
 
-def _one_or_tuple(items: list[Any]) -> Any:
-    return items[0] if len(items) == 1 else tuple(items)
-
-
 def _is_nonscalar(value: Any) -> bool:
     if isinstance(value, sp.MatrixBase):
         return True
@@ -722,21 +726,6 @@ def _same(a: Any, b: Any) -> bool:
     if isinstance(a, sp.MatrixBase) or isinstance(b, sp.MatrixBase):
         return isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a == b
     return a == b
-
-
-def _doit_derivatives(expr: Any) -> Any:
-    if isinstance(expr, sp.MatrixBase):
-        return expr.applyfunc(_doit_derivatives)
-    if isinstance(expr, sp.Basic) and expr.has(sp.Derivative):
-        return expr.replace(
-            lambda e: isinstance(e, sp.Derivative) and not _is_plain_derivative(e),
-            lambda e: e.doit(),
-        )
-    return expr
-
-
-def _is_plain_derivative(e: sp.Derivative) -> bool:
-    return isinstance(e.expr, sp.core.function.AppliedUndef)
 
 
 _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
