@@ -58,7 +58,7 @@ SETTINGS: dict[str, tuple[str, ...] | str] = {
     "BEEPSOUND": ("ON", "OFF"),
     "PAUSE": "number",
 }
-_SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
+SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
 _MATRIX_FIRST = frozenset({"DET", "INV", "TRANSPOSE", "EIG", "ROWS", "COLS", "ELEMENT"})
 _OBJECT_ARGS = frozenset({"MASS", "CM", "INERTIA"})
 _NEEDS_NEWTONIAN = frozenset(
@@ -601,7 +601,7 @@ class Analysis:
     def _check_indices(self, indices: tuple[ir.Expr, ...]) -> None:
         for i in indices:
             self._expect_scalar(i)
-            value = _int_literal(i)
+            value = int_literal(i)
             if value is not None and value < 1:
                 raise SemanticError("matrix indices start at 1", i.span)
 
@@ -617,8 +617,19 @@ class Analysis:
             self._expect_scalar(i)
         return Kind.SCALAR
 
+    @staticmethod
+    def _grow_shape(sym: Symbol, idx: list[int | None]) -> None:
+        """Track a known shape through ``M[i] = ...`` / ``M[i,j] = ...``."""
+        if sym.shape is None or None in idx:
+            sym.shape = None
+        elif len(idx) == 1:
+            rows, cols = sym.shape
+            sym.shape = (max(rows, idx[0]), cols) if cols == 1 else None
+        else:
+            sym.shape = (max(sym.shape[0], idx[0]), max(sym.shape[1], idx[1]))
+
     def _check_bounds(self, sym: Symbol, expr: ir.Element) -> None:
-        idx = [_int_literal(i) for i in expr.indices]
+        idx = [int_literal(i) for i in expr.indices]
         if sym.shape is None or None in idx:
             return
         rows, cols = sym.shape
@@ -743,7 +754,7 @@ class Analysis:
                 b.name == "SOLVE"
                 and i == 0
                 and isinstance(a, ir.Name)
-                and a.key in _SOLVE_OPTIONS
+                and a.key in SOLVE_OPTIONS
                 and self.table.get(a.key) is None
             ):
                 kinds.append(Kind.WORD)
@@ -1061,21 +1072,7 @@ class Analysis:
                     stmt.value.span,
                 )
             sym = self._assign_name(target.base, "matrix")
-            idx = [_int_literal(i) for i in target.indices]
-            if sym.shape is not None and None not in idx:
-                if len(idx) == 1:
-                    rows, cols = sym.shape
-                    sym.shape = (max(rows, idx[0]), cols) if cols == 1 else None
-                else:
-                    sym.shape = (max(sym.shape[0], idx[0]), max(sym.shape[1], idx[1]))
-            elif sym.shape is None and len(idx) == 1 and idx[0] == 1:
-                sym.shape = (
-                    (1, 1)
-                    if stmt.op in ("=", ":=") and sym.seq == self.table._seq
-                    else None
-                )
-            else:
-                sym.shape = None
+            self._grow_shape(sym, [int_literal(i) for i in target.indices])
             return self._facts(target=sym)
         form = self.form(target)
         if form is not None:
@@ -1237,7 +1234,7 @@ class Analysis:
                     )
         if b.name == "SIMPROT":
             axis = call.args[2]
-            value = _int_literal(axis)
+            value = int_literal(axis)
             bad = value is None or abs(value) not in (1, 2, 3)
             if kinds[2] is not Kind.VECTOR and bad:
                 raise SemanticError(
@@ -1337,10 +1334,10 @@ def _literal_shape(expr: ir.Expr) -> tuple[int, int] | None:
     return len(expr.rows), len(expr.rows[0])
 
 
-def _int_literal(expr: ir.Expr) -> int | None:
-    if isinstance(expr, ir.UnaryOp) and expr.op == "-":
-        inner = _int_literal(expr.operand)
-        return None if inner is None else -inner
+def int_literal(expr: ir.Expr) -> int | None:
+    if isinstance(expr, ir.UnaryOp):
+        inner = int_literal(expr.operand)
+        return None if inner is None else (-inner if expr.op == "-" else inner)
     if isinstance(expr, ir.Number) and expr.is_integer:
         return int(expr.text)
     return None

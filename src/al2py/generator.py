@@ -17,7 +17,15 @@ from collections import defaultdict
 from al2py_runtime.functions import DEGREE_VARIANTS
 
 from . import ir
-from .analysis import INTEGRATION_PARAMETERS, Analysis, StmtFacts, Symbol, walk_expr
+from .analysis import (
+    INTEGRATION_PARAMETERS,
+    SOLVE_OPTIONS,
+    Analysis,
+    StmtFacts,
+    Symbol,
+    int_literal,
+    walk_expr,
+)
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
 from .forms import Form
@@ -30,7 +38,6 @@ ATOM, POWER, UNARY, MUL, ADD = 100, 90, 80, 70, 60
 
 _RUNTIME = "al2py_runtime"
 _FUNCTIONS = "al2py_runtime.functions"
-_SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
 _VECTOR = "sympy.physics.vector"
 #: Python spelling of each syntactical form's value (see al2py.forms).
 _FORM_GETTERS = {
@@ -339,7 +346,7 @@ class Generator:
             n, a, o, p = (self.expr(x) for x in args)
             return [f"# sympy: {p}.{_POINT_THEORIES[b.name]}({o}, {n}, {a})"]
         if b.name == "SIMPROT":
-            axis = _int_literal(args[2])
+            axis = int_literal(args[2])
             if axis is not None and isinstance(args[0], ir.Name):
                 parent, child, angle = (
                     self.expr(args[0]),
@@ -392,7 +399,7 @@ class Generator:
         args = list(call.args)
         if (
             isinstance(args[0], ir.Name)
-            and args[0].key in _SOLVE_OPTIONS
+            and args[0].key in SOLVE_OPTIONS
             and self.an.table.quantity(args[0].name) is None
         ):
             args = args[1:]
@@ -542,8 +549,8 @@ class Generator:
             return f"{base} ** {self._wrap(node.right, UNARY)}", POWER
         if (
             node.op == "/"
-            and _is_int_literal(node.left)
-            and _is_int_literal(node.right)
+            and int_literal(node.left) is not None
+            and int_literal(node.right) is not None
         ):
             self.imports.use("sympy", "Rational")
             return f"Rational({self.expr(node.left)}, {self.expr(node.right)})", ATOM
@@ -726,21 +733,6 @@ def _target_names(target: ir.Expr) -> tuple[str, ...]:
         return target.expand()
     assert isinstance(target, ir.Name)
     return (target.name,)
-
-
-def _int_literal(node: ir.Expr) -> int | None:
-    if isinstance(node, ir.UnaryOp) and node.op == "-":
-        inner = _int_literal(node.operand)
-        return None if inner is None else -inner
-    if isinstance(node, ir.Number) and node.is_integer:
-        return int(node.text)
-    return None
-
-
-def _is_int_literal(node: ir.Expr) -> bool:
-    if isinstance(node, ir.UnaryOp):
-        return _is_int_literal(node.operand)
-    return isinstance(node, ir.Number) and node.is_integer
 
 
 def _number_code(text: str) -> str:
