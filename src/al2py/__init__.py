@@ -2,13 +2,39 @@
 
 >>> from al2py import convert
 >>> code = convert("Constants A, B\\nX = 4*(A+B) - 3*(a-b)\\n", "intro.al").code
->>> "al.assign('X'" in code
+>>> 'al.assign("X"' in code
 True
+
+The transpiler (and sympy with it) is imported on first use of ``convert``,
+so ``al2py --version`` and ``--help`` start quickly.
 """
+
+from __future__ import annotations
+
+from typing import Any
 
 __version__ = "0.1.0"
 
-from .errors import AutolevError, InternalError  # noqa: E402
-from .transpile import Conversion, convert  # noqa: E402
-
 __all__ = ["convert", "Conversion", "AutolevError", "InternalError", "__version__"]
+
+_LAZY = {
+    "convert": "transpile",
+    "Conversion": "transpile",
+    "AutolevError": "errors",
+    "InternalError": "errors",
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'al2py' has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"al2py.{module}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

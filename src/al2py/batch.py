@@ -15,6 +15,7 @@ it in every test session.
 
 from __future__ import annotations
 
+import errno
 import fnmatch
 import json
 import os
@@ -710,9 +711,23 @@ def convert_files(
 
 
 def write_atomically(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` via a temporary file and an atomic rename."""
+    """Write ``text`` to ``path`` via a temporary file and an atomic rename.
+
+    The temporary file is ``.NAME.PID.XXXXXX.tmp`` beside ``path``; it is
+    removed on any exception (including ``KeyboardInterrupt`` and the
+    ``Terminated`` that the command line raises on SIGTERM/SIGHUP).  Temporary
+    files of this naming left by a killed process (``kill -9``) are removed
+    first.  A target that exists and is not a regular file (``/dev/full``, a
+    named pipe) is refused: the rename would replace it.
+    """
+    path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    if path.exists() and not path.is_file():
+        raise OSError(errno.EEXIST, "it exists and is not a regular file", str(path))
+    remove_stale_temp_files(path)
+    fd, tmp = tempfile.mkstemp(
+        prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=directory
+    )
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             f.write(text)
@@ -723,3 +738,53 @@ def write_atomically(path: Path, text: str) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+#: a temporary file without a live owner is stale after this many seconds
+#: (older al2py versions did not put their process id in the name)
+STALE_AFTER = 600.0
+
+
+def remove_stale_temp_files(path: Path) -> list[Path]:
+    """Remove ``.NAME.PID.*.tmp`` beside ``path`` whose process is gone
+    (and ``.NAME.*.tmp`` without a process id, once older than
+    :data:`STALE_AFTER`).  Returns the files removed."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    removed = []
+    try:
+        candidates = list(directory.glob(f".{glob_escape(path.name)}.*.tmp"))
+    except OSError:
+        return removed
+    for tmp in candidates:
+        middle = tmp.name[len(path.name) + 2 : -len(".tmp")]
+        pid_text = middle.split(".", 1)[0]
+        try:
+            if pid_text.isdigit() and "." in middle:
+                if _alive(int(pid_text)):
+                    continue
+            elif time.time() - tmp.stat().st_mtime < STALE_AFTER:
+                continue
+            tmp.unlink()
+            removed.append(tmp)
+        except OSError:
+            pass
+    return removed
+
+
+def glob_escape(name: str) -> str:
+    import glob
+
+    return glob.escape(name)
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid() or os.name == "nt":
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OSError):
+        return True
+    return True

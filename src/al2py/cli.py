@@ -16,14 +16,13 @@ error: ...``) or files that fail their check, 3 for a bug in al2py itself,
 from __future__ import annotations
 
 import argparse
-import os  # noqa: F401 - part of the module interface (tests patch cli.os)
+import os  # part of the module interface (tests patch cli.os)
 import sys
 import time
 from pathlib import Path
 
 from . import __version__, batch
 from .errors import AutolevError, InternalError
-from .transpile import convert
 
 __all__ = ["main"]
 
@@ -161,13 +160,58 @@ def main(argv: list[str] | None = None) -> int:
     return _guarded(lambda: _convert_file(args.input, args.output))
 
 
+class Terminated(BaseException):
+    """SIGTERM or SIGHUP arrived: unwind (removing temporary files) and exit."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _raise_terminated(signum: int, frame: object) -> None:
+    raise Terminated(signum)
+
+
+def _terminating_signals() -> dict[int, object]:
+    """Make SIGTERM/SIGHUP raise :class:`Terminated`; returns the old handlers."""
+    import signal
+
+    old: dict[int, object] = {}
+    for name in ("SIGTERM", "SIGHUP"):
+        signum = getattr(signal, name, None)
+        if signum is None:
+            continue
+        try:
+            old[signum] = signal.signal(signum, _raise_terminated)
+        except (ValueError, OSError):  # not the main thread
+            pass
+    return old
+
+
 def _guarded(run) -> int:
     """Run a command; map every exception to a message and an exit status."""
+    import signal
+
+    old = _terminating_signals()
+    try:
+        return _guarded_inner(run)
+    finally:
+        for signum, handler in old.items():
+            signal.signal(signum, handler)  # type: ignore[arg-type]
+
+
+def _guarded_inner(run) -> int:
     try:
         return run()
     except KeyboardInterrupt:
         print("al2py: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except Terminated as exc:
+        print("al2py: terminated", file=sys.stderr)
+        return 128 + exc.signum
+    except BrokenPipeError:
+        _quiet_broken_pipe()
+        return EXIT_OK
     except AutolevError as exc:
         print(exc.format(), file=sys.stderr)
         return EXIT_INPUT
@@ -184,6 +228,17 @@ def _guarded(run) -> int:
             file=sys.stderr,
         )
         return EXIT_BUG
+
+
+def _quiet_broken_pipe() -> None:
+    """The reader of standard output went away (``al2py x.al | head``): stop
+    quietly; point stdout at /dev/null so the interpreter's final flush
+    does not complain either."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
 
 
 def _progress(quiet: bool):
@@ -290,6 +345,8 @@ def _convert_file(source: str, output: str | None) -> int:
             )
             return EXIT_INPUT
         filename = source
+    from .transpile import convert  # sympy: only when a command needs it
+
     result = convert(text, filename)
     if output is None or output == "-":
         sys.stdout.write(result.code)
@@ -301,10 +358,9 @@ def _convert_file(source: str, output: str | None) -> int:
             file=sys.stderr,
         )
         return EXIT_INPUT
-    if out.is_dir():
-        print(
-            f"al2py: error: cannot write {output}: it is a directory", file=sys.stderr
-        )
+    problem = _output_problem(out)
+    if problem:
+        print(f"al2py: error: cannot write {output}: {problem}", file=sys.stderr)
         return EXIT_INPUT
     try:
         _write_atomically(out, result.code)
@@ -312,6 +368,24 @@ def _convert_file(source: str, output: str | None) -> int:
         print(f"al2py: error: cannot write {output}: {exc.strerror}", file=sys.stderr)
         return EXIT_INPUT
     return EXIT_OK
+
+
+def _output_problem(out: Path) -> str:
+    """Why ``out`` must not be the target of ``-o`` ('' if it may)."""
+    if out.is_dir():
+        return "it is a directory"
+    if out.exists() and not out.is_file():
+        # /dev/full, a named pipe, a socket: an atomic rename would replace it
+        return "it exists and is not a regular file (use '-o -' for standard output)"
+    if out.suffix == ".py" and not out.stem.isidentifier():
+        from .transpile import module_name
+
+        better = module_name(out.stem + ".al")
+        return (
+            f"'{out.stem}' is not a Python identifier, so 'import {out.stem}' "
+            f"cannot load it; name the output {better}.py"
+        )
+    return ""
 
 
 _write_atomically = batch.write_atomically
