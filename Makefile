@@ -11,6 +11,7 @@ ANTLR  := $(VENV)/bin/antlr4
 $(VENV)/.installed: pyproject.toml runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
+	$(PIP) install --quiet -e "./runtime[plot]"
 	$(PIP) install --quiet -e ".[dev,plot]"
 	touch $@
 

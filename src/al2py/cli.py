@@ -223,6 +223,15 @@ def _guarded_inner(run) -> int:
         return EXIT_INPUT
     except Exception as exc:  # noqa: BLE001 - last line of defence: no traceback
         name = type(exc).__name__
+        if isinstance(exc, ModuleNotFoundError) and (exc.name or "").startswith(
+            "al2py_runtime"
+        ):
+            print(
+                "al2py: error: the al2py-runtime distribution is not installed "
+                "(al2py depends on it): pip install al2py-runtime",
+                file=sys.stderr,
+            )
+            return EXIT_BUG
         print(
             f"al2py: internal error: {name}: {exc} (please report this bug)",
             file=sys.stderr,
