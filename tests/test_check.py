@@ -83,7 +83,7 @@ def test_library_passes_with_junit_and_jobs(tmp_path):
     assert row(run.stdout, "pendulum/main.al")[:2] == ["passed", "18/18"]
     assert row(run.stdout, "algebra/linear.al")[:2] == ["passed", "9/9"]
     # RUN-only kinematics file without a transcript: converts and imports
-    assert row(run.stdout, "pendulum/frames.al")[:2] == ["passed", "-"]
+    assert row(run.stdout, "pendulum/frames.al")[:2] == ["passed", "none"]
     assert "3 files: 3 passed, 0 failed, 0 errored" in run.stdout
     # progress on stderr, one line per file
     progress = [ln for ln in run.stderr.splitlines() if ln.startswith("[")]
@@ -174,7 +174,7 @@ def test_bad_file_is_reported_and_others_still_checked(tmp_path):
     (lib / "algebra" / "bad.al").write_text(BAD_SCRIPT)
     run = al2py("check", ".", "--exclude", "pendulum/*", cwd=lib)
     assert run.returncode == 2
-    assert row(run.stdout, "algebra/bad.al")[:2] == ["errored", "-"]
+    assert row(run.stdout, "algebra/bad.al")[:2] == ["errored", "none"]
     assert row(run.stdout, "algebra/linear.al")[:2] == ["passed", "9/9"]
     assert "algebra/bad.al:2:9: error: undeclared name 'Q'" in run.stdout
     assert "2 files: 1 passed, 0 failed, 1 errored" in run.stdout
@@ -195,7 +195,7 @@ def test_file_without_transcript_passes_if_it_imports(tmp_path, capsys):
     out, err = capsys.readouterr()
     assert status == 0, out + err
     assert err == ""
-    assert row(out, "x.al")[:2] == ["passed", "-"]
+    assert row(out, "x.al")[:2] == ["passed", "none"]
 
 
 def test_worker_that_dies_is_an_error(tmp_path, monkeypatch):

@@ -249,7 +249,7 @@ def test_failed_conversion_creates_no_target(tmp_path, capsys, monkeypatch):
     assert status == 2
     assert out == ""
     assert err.splitlines()[0] == (
-        "bad.al:2:7: error: unknown function or command 'Foo'"
+        "bad.al:2:7: error: unknown function or command 'Foo' (did you mean Floor?)"
     )
     assert files_in(tmp_path) == {"bad.al"}
 

@@ -7,7 +7,8 @@ optional, for plots) and installs without the transpiler::
     pip install ./runtime
 """
 
+from .safety import AutolevRuntimeError
 from .workspace import Response, Settings, Workspace, t
 
-__all__ = ["Workspace", "Settings", "Response", "t"]
+__all__ = ["Workspace", "Settings", "Response", "AutolevRuntimeError", "t"]
 __version__ = "0.1.0"

@@ -16,7 +16,9 @@ from collections.abc import Sequence
 from pathlib import Path, PurePath
 from typing import Any
 
+from . import budget
 from .jobs import INTEGRATION_DEFAULTS, NumericsError, check_overrides
+from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser"]
 
@@ -55,9 +57,14 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         default=[],
         help="change an Input value (repeatable); VALUE is in the Input's unit",
     )
-    parser.add_argument("--tfinal", type=float, help="final time (sets TFINAL)")
     parser.add_argument(
-        "--outdir", default=".", help="directory for output files (default: .)"
+        "--tfinal", type=float, help="final time (sets TFINAL; Dynamics/ODE jobs)"
+    )
+    parser.add_argument(
+        "--outdir",
+        default=".",
+        help="directory for every file the script writes: Save files, output "
+        "tables and plots, under their base names (default: .)",
     )
     parser.add_argument(
         "--plot", action="store_true", help="also write STEM.n.png plots"
@@ -65,9 +72,33 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
     parser.add_argument(
         "--no-run",
         action="store_true",
-        help="only print the transcript; do not perform the CODE job",
+        help="only print the transcript; perform no CODE job and write no file",
+    )
+    parser.add_argument(
+        "--max-seconds",
+        type=_positive,
+        metavar="S",
+        help=f"time budget of one integration (default {budget.LIMITS['seconds']:g};"
+        " or AL2PY_MAX_SECONDS)",
+    )
+    parser.add_argument(
+        "--max-evals",
+        type=_positive,
+        metavar="N",
+        help="right-hand-side evaluations allowed in one integration (default "
+        f"{budget.LIMITS['evaluations']:g}; or AL2PY_MAX_EVALS)",
     )
     return parser
+
+
+def _positive(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not x > 0:
+        raise argparse.ArgumentTypeError("must be positive")
+    return x
 
 
 def _overrides(items: Sequence[str], tfinal: float | None) -> dict[str, float]:
@@ -88,6 +119,32 @@ def _overrides(items: Sequence[str], tfinal: float | None) -> dict[str, float]:
 def main(
     ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None = None
 ) -> int:
+    """Print the transcript, write Save files, run the CODE jobs; 0, or 2 on
+    an error (printed as ``FILE.al:LINE: error: ...``, never a traceback)."""
+    try:
+        return _main(ws, source_lines, argv)
+    except BrokenPipeError:  # python model.py | head
+        _quiet_stdout()
+        return 0
+
+
+def _quiet_stdout() -> None:
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
+
+
+def _error(ws: Any, message: str, line: int | None = None) -> int:
+    where = f"{ws.filename}:{line}" if line else ws.filename
+    print(f"{where}: error: {message}", file=sys.stderr)
+    return 2
+
+
+def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> int:
     parser = build_parser(ws)
     try:
         args = parser.parse_args(argv)
@@ -100,19 +157,35 @@ def main(
             raise NumericsError(
                 f"{ws.filename} has no CODE statement; --set/--tfinal do nothing"
             )
+        if args.tfinal is not None:
+            for job in jobs:
+                if job.kind not in ("DYNAMICS", "ODE"):
+                    raise NumericsError(
+                        f"--tfinal: {job.where} has no time (only Dynamics and "
+                        "ODE jobs integrate)"
+                    )
         for job in jobs:
             check_overrides(job, overrides)
     except NumericsError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     ws.print_transcript(source_lines)
-    ws.write_saved_files(source_lines)
     if args.no_run:
-        return 0
+        return 0  # --no-run writes nothing
     outdir = Path(args.outdir)
+    try:
+        ws.write_saved_files(source_lines, outdir)
+    except OSError as exc:
+        return _error(ws, f"Save: cannot write into {outdir}: {exc.strerror}")
+    if args.max_seconds is not None:
+        budget.LIMITS["seconds"] = args.max_seconds
+    if args.max_evals is not None:
+        budget.LIMITS["evaluations"] = args.max_evals
+    budget.PROGRESS = _is_terminal(sys.stdout)
     for job in jobs:
         try:
             result = ws.run_job(job, overrides)
+            budget.clear_progress()
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
             written = result.write(outdir)
@@ -122,12 +195,37 @@ def main(
             for line in result.solution_lines():
                 print(line)
             if args.plot:
+                if job.kind not in ("DYNAMICS", "ODE") and all(
+                    len(table) <= 1 for table in result.tables
+                ):
+                    print(
+                        f"note: no plot: {job.where} solves for one point "
+                        "(plots need a time history or a sweep)",
+                        file=sys.stderr,
+                    )
+                    continue
                 for path in result.plot(outdir):
                     print(f"Wrote {path}")
-        except NumericsError as exc:
-            print(f"error: {exc}", file=sys.stderr)
-            return 2
+        except BrokenPipeError:
+            raise
+        except (AutolevRuntimeError, NumericsError) as exc:
+            budget.clear_progress()
+            text = str(exc)
+            if text.startswith(job.where + ": "):
+                text = text[len(job.where) + 2 :]
+            return _error(ws, f"{job.where}: {text}", job.line)
         except OSError as exc:
-            print(f"error: {exc}", file=sys.stderr)
-            return 2
+            budget.clear_progress()
+            name = f" {exc.filename}" if exc.filename else ""
+            return _error(ws, f"cannot write{name}: {exc.strerror}", job.line)
+        except Exception as exc:  # noqa: BLE001 - no traceback reaches the user
+            budget.clear_progress()
+            return _error(ws, f"{job.where} failed: {describe(exc)}", job.line)
     return 0
+
+
+def _is_terminal(stream: Any) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):
+        return False

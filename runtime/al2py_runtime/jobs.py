@@ -22,7 +22,10 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from . import budget
 from .kane import linear_terms
+from .results import ResultViews, TableViews
+from .safety import AutolevRuntimeError
 from .units import UnitError, UnitSystem
 
 __all__ = [
@@ -49,7 +52,7 @@ except ImportError:  # pragma: no cover
     pass
 
 
-class NumericsError(ValueError):
+class NumericsError(AutolevRuntimeError, ValueError):
     """A numerical job cannot run: bad input, no convergence, failed step."""
 
 
@@ -146,8 +149,8 @@ class Column:
     unit: str | None = None
 
 
-@dataclass
-class Table:
+@dataclass(repr=False)
+class Table(TableViews):
     """One output table: one ``Output`` statement evaluated at every row."""
 
     number: int
@@ -176,8 +179,8 @@ class Table:
         return any(normalize_name(c.label) == key for c in self.columns)
 
 
-@dataclass
-class Result:
+@dataclass(repr=False)
+class Result(ResultViews):
     """The outcome of :meth:`Workspace.run`.
 
     ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
@@ -540,6 +543,7 @@ def _integration(vals: _Values) -> dict[str, float]:
             p[key] = default  # type: ignore[assignment]
     if p["TFINAL"] is None:
         p["TFINAL"] = p["TINITIAL"] + 10.0
+    budget.check_span(p["TINITIAL"], p["TFINAL"])
     span = p["TFINAL"] - p["TINITIAL"]
     if p["INTEGSTP"] is None or p["INTEGSTP"] == 0:
         p["INTEGSTP"] = abs(span) / 100 if span else 0.1
@@ -828,6 +832,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             return [acc[i] if solved else known[i] for solved, i in plan]
 
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
+    fun = budget.guard(fun, job.where, ip["TINITIAL"], ip["TFINAL"])
     try:
         nfev = 0
         if len(times) == 1:

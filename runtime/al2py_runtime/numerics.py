@@ -236,6 +236,13 @@ class NumericsMixin:
         merged.update(overrides)
         return run_job(jobs[-1], merged)
 
+    def document_run(self, run: Any) -> Any:
+        """Give a module's ``run`` function its Inputs as keyword parameters
+        (with their values, in their units) for ``help()`` and tab completion."""
+        from .results import document_run
+
+        return document_run(self, run)
+
     def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
         """Perform one recorded job with optional overrides."""
         return run_job(job, dict(values or {}))

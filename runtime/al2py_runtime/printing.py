@@ -63,6 +63,9 @@ def format_number(value: Any, digits: int = 7) -> str:
     value = sp.sympify(value)
     if isinstance(value, sp.Integer):
         return str(int(value))
+    special = _special_number(value)
+    if special is not None:
+        return special
     mpf = mpmath.mpf(value.evalf(digits + 10)._mpf_)
     if mpf == 0:
         return "0"
@@ -72,6 +75,25 @@ def format_number(value: Any, digits: int = 7) -> str:
     else:  # beyond double range
         text = mpmath.nstr(mpf, digits, min_fixed=-4, max_fixed=digits)
     return _exponent_style(text)
+
+
+def _special_number(value: Any) -> str | None:
+    """``INF``, ``-INF`` or ``NAN`` (as C's printf, upper case, which is how
+    Autolev's numerical output spells them) for sympy's ``oo``, ``-oo``,
+    ``zoo`` (complex infinity, from ``1/0``) and ``nan`` (``0/0``)."""
+    if value is sp.nan:
+        return "NAN"
+    if value is sp.oo or value is sp.zoo:
+        return "INF"
+    if value is sp.S.NegativeInfinity:
+        return "-INF"
+    if isinstance(value, sp.Basic) and value.has(sp.nan, sp.oo, sp.zoo, -sp.oo):
+        x = complex(value.evalf()) if value.is_number else None
+        if x is not None:
+            if math.isnan(x.real) or math.isnan(x.imag):
+                return "NAN"
+            return "-INF" if x.real < 0 and not x.imag else "INF"
+    return None
 
 
 def _exponent_style(text: str) -> str:
@@ -142,6 +164,9 @@ class _AutolevPrinter:
     def number(self, expr: sp.Expr, top: bool) -> tuple[str, int]:
         if isinstance(expr, sp.Integer):
             return str(int(expr)), (_NEG if expr < 0 else _ATOM)
+        special = _special_number(expr)
+        if special is not None:
+            return special, (_NEG if special.startswith("-") else _ATOM)
         value = expr.evalf(self.digits + 10)
         re, im = value.as_real_imag()
         if not (re.is_number and im.is_number):

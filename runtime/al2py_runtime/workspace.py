@@ -22,6 +22,7 @@ A + 7*B
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -33,6 +34,8 @@ from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
 from .numerics import NumericsMixin
+from .safety import guard_methods
+from .safety import register as register_module
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
@@ -93,6 +96,9 @@ class Response:
     label: str
     value: Any
     digits: int
+    #: printed exactly as computed: the user's own Factor/Expand/... result,
+    #: which display simplification must not undo
+    verbatim: bool = False
 
 
 _OBJECT_KINDS = ("frame", "body", "particle", "point", "newtonian")
@@ -118,6 +124,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
 
     def __init__(self, filename: str = "<autolev>") -> None:
         self.filename = filename
+        register_module(filename, sys._getframe(1))  # errors name the .al line
         self.settings = Settings()
         self.responses: list[Response] = []
         self._names: dict[str, _Entry] = {}
@@ -322,8 +329,14 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         return self._store(target, value, line=line, rearrange=self.settings.factoring)
 
     def update(self, target: str, value: Any, *, line: int | None = None) -> Any:
-        """Like :meth:`assign` but without automatic factoring (dual functions)."""
-        return self._store(target, value, line=line, rearrange=False)
+        """Like :meth:`assign` but without automatic factoring (dual functions);
+        the response prints the value as the command produced it."""
+        count = len(self.responses)
+        out = self._store(target, value, line=line, rearrange=False)
+        self.responses[count:] = [
+            replace(r, verbatim=True) for r in self.responses[count:]
+        ]
+        return out
 
     def assign_all(
         self, targets: Iterable[str], values: Iterable[Any], *, line: int | None = None
@@ -547,30 +560,40 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [replace(r, value=self._display(r.value)) for r in self.responses]
+        shown = [
+            r if r.verbatim else replace(r, value=self._display(r.value))
+            for r in self.responses
+        ]
         return transcript_lines(lines, shown)
 
     def print_transcript(self, source: Iterable[str]) -> None:
         for line in self.transcript(source):
             print(line)
 
-    def write_saved_files(self, source: Iterable[str]) -> list[str]:
-        """Write the files named by ``SAVE`` (never overwriting an ``.al`` file)."""
-        import os
+    def write_saved_files(self, source: Iterable[str], outdir: str = ".") -> list[str]:
+        """Write the files named by ``SAVE`` into ``outdir`` under their base
+        names (``Save ../x.all`` writes ``OUTDIR/x.all``), never overwriting an
+        existing ``.al`` file."""
+        from .safety import output_path
 
         written = []
         source = list(source)
         for name in self._saves:
+            path = output_path(outdir, name)
+            if path is None:
+                print(f"note: Save {name}: not a file name; nothing written")
+                continue
             if name.lower().endswith(".all"):
                 text = "\n".join(self.transcript(source)) + "\n"
-            elif os.path.exists(name):
-                print(f"note: not overwriting existing {name}")
+            elif path.exists():
+                print(f"note: not overwriting existing {path}")
                 continue
             else:
                 text = "\n".join(source) + "\n"
-            with open(name, "w", encoding="utf-8") as f:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            with open(path, "w", encoding="utf-8") as f:
                 f.write(text)
-            written.append(name)
+            written.append(str(path))
         return written
 
     # ------------------------------------------------ mathematical commands
@@ -812,3 +835,6 @@ class AutolevNames(Mapping):
 
     def __repr__(self) -> str:
         return f"<Autolev names of {self._ws.filename}: {', '.join(self)}>"
+
+
+guard_methods(Workspace)  # failures inside a generated module name the .al line

@@ -22,7 +22,9 @@ from . import ir
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import MacroError, ParseError, SemanticError, UnsupportedError
 from .forms import FORM_KINDS, Form, match
+from .macros import check_confined
 from .naming import PHYSICAL_KINDS, Namer
+from .static_checks import unknown_call_message
 
 __all__ = ["Symbol", "SymbolTable", "Analysis", "StmtFacts", "expand", "walk_expr"]
 
@@ -363,6 +365,9 @@ class _Expander:
         path = _resolve(stmt.filename, self.script_dir, self.autolevpath)
         if path is None:
             raise MacroError(f"RUN: cannot find {stmt.filename}", stmt.span)
+        check_confined(
+            path, stmt.filename, self.script_dir, self.autolevpath, stmt.span
+        )
         key = str(path.resolve())
         if key in self.run_stack:
             raise MacroError(f"RUN {stmt.filename} runs itself", stmt.span)
@@ -723,7 +728,7 @@ class Analysis:
     def _kind_Call(self, expr: ir.Call) -> Kind:
         b = BUILTINS.get(expr.key)
         if b is None:
-            raise SemanticError(f"unknown function or command '{expr.func}'", expr.span)
+            raise SemanticError(unknown_call_message(expr.func), expr.span)
         if b.style is Style.PENDING:
             raise UnsupportedError(
                 f"'{expr.func}' ({b.issue}) is not supported yet", expr.span

@@ -19,6 +19,7 @@ import errno
 import fnmatch
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -51,6 +52,7 @@ __all__ = [
 
 DEFAULT_TIMEOUT = 300.0
 PASSED, FAILED, ERRORED = "passed", "failed", "errored"
+NO_TRANSCRIPT = "none"  # responses column of a file without a transcript
 
 
 # ------------------------------------------------------------- discovery
@@ -178,10 +180,17 @@ class FileResult:
     message: str = ""  # for ERRORED: what went wrong
     failures: list[ResponseFailure] = field(default_factory=list)
     seconds: float = 0.0
+    jobs_run: int = 0  # CODE jobs performed (0 with --no-run or without CODE)
 
     @property
     def responses(self) -> str:
-        return f"{self.matched}/{self.total}" if self.transcript else "-"
+        return f"{self.matched}/{self.total}" if self.transcript else NO_TRANSCRIPT
+
+    @property
+    def compared(self) -> bool:
+        """Whether a transcript was compared (otherwise the file only had to
+        convert, import and run its CODE jobs)."""
+        return self.transcript is not None
 
     @classmethod
     def from_json(cls, data: dict) -> FileResult:
@@ -194,12 +203,17 @@ class FileResult:
 
 
 def _check_in_this_process(
-    source: Path, display: str, transcript: Path | None, workdir: Path
+    source: Path,
+    display: str,
+    transcript: Path | None,
+    workdir: Path,
+    run_jobs: bool = True,
 ) -> FileResult:
     """Convert, import and check one script (runs inside the worker)."""
     import importlib.util
 
     from .errors import AutolevError, InternalError
+    from .static_checks import with_source_line
     from .transpile import convert
 
     shown_transcript = display_path(transcript) if transcript else None
@@ -212,7 +226,7 @@ def _check_in_this_process(
     try:
         conversion = convert(text, display, script_dir=source.parent)
     except AutolevError as exc:
-        result.message = exc.format()
+        result.message = with_source_line(exc, display, text.splitlines()).format()
         return result
     except InternalError as exc:
         result.message = f"al2py: internal error: {exc} (please report this bug)"
@@ -240,6 +254,12 @@ def _check_in_this_process(
         result.message = _import_failure(exc, module_path, display)
         return result
 
+    if run_jobs:
+        failure = _run_jobs(module, display, workdir / "outputs")
+        result.jobs_run = len(getattr(module.al, "jobs", []))
+        if failure:
+            result.message = failure
+            return result
     if transcript is None:
         result.status = PASSED
         return result
@@ -271,6 +291,30 @@ def _check_in_this_process(
     return result
 
 
+def _run_jobs(module, display: str, outdir: Path) -> str:
+    """Perform every CODE job of an imported module ('' or what failed)."""
+    jobs = list(getattr(module.al, "jobs", []))
+    for job in jobs:
+        try:
+            result = module.al.run_job(job)
+            result.write(outdir)
+        except BaseException as exc:  # noqa: BLE001 - a verdict, never a traceback
+            where = getattr(job, "where", "CODE")
+            line = getattr(job, "line", None)
+            located = f"{display}:{line}" if line else display
+            text = str(exc)
+            if text.startswith(where + ": "):
+                text = text[len(where) + 2 :]
+            name = "" if _is_user_error(exc) else f"{type(exc).__name__}: "
+            return f"{located}: error: {where} failed: {name}{text}"
+    return ""
+
+
+def _is_user_error(exc: BaseException) -> bool:
+    """Errors the runtime words for users (NumericsError, located errors)."""
+    return type(exc).__name__ in ("NumericsError", "AutolevRuntimeError", "BudgetError")
+
+
 def _import_failure(exc: BaseException, module_path: Path, display: str) -> str:
     """``importing the module raised X: msg`` and where in the generated code."""
     import traceback
@@ -288,11 +332,16 @@ def _import_failure(exc: BaseException, module_path: Path, display: str) -> str:
 
 
 def _worker_main(argv: Sequence[str]) -> int:
-    """``python -c ... SOURCE DISPLAY TRANSCRIPT RESULT.json WORKDIR``."""
-    source, display, transcript, out, workdir = argv
+    """``python -c ... SOURCE DISPLAY TRANSCRIPT RESULT.json WORKDIR RUN``."""
+    source, display, transcript, out, workdir, *rest = argv
+    run_jobs = not rest or rest[0] != "no-run"
     start = time.perf_counter()
     result = _check_in_this_process(
-        Path(source), display, Path(transcript) if transcript else None, Path(workdir)
+        Path(source),
+        display,
+        Path(transcript) if transcript else None,
+        Path(workdir),
+        run_jobs,
     )
     result.seconds = time.perf_counter() - start
     Path(out).write_text(json.dumps(asdict(result)), encoding="utf-8")
@@ -309,9 +358,13 @@ _WORKER = (
 
 
 def check_file(
-    script: Script | Path | str, timeout: float | None = DEFAULT_TIMEOUT
+    script: Script | Path | str,
+    timeout: float | None = DEFAULT_TIMEOUT,
+    run_jobs: bool = True,
 ) -> FileResult:
-    """Check one script in a fresh Python process, within ``timeout`` seconds."""
+    """Check one script in a fresh Python process, within ``timeout`` seconds:
+    convert, import, perform its CODE jobs (unless ``run_jobs`` is false) and
+    compare with its transcript."""
     if not isinstance(script, Script):
         path = Path(script)
         script = Script(path, Path(path.name))
@@ -328,6 +381,7 @@ def check_file(
             str(transcript.resolve()) if transcript else "",
             str(out),
             tmp,
+            "run" if run_jobs else "no-run",
         ]
         with _RUNNING_LOCK:
             if _STOPPING.is_set():
@@ -424,18 +478,45 @@ def check_files(
     jobs: int = 1,
     timeout: float | None = DEFAULT_TIMEOUT,
     progress: Callable[[int, int, FileResult], None] | None = None,
+    run_jobs: bool = True,
+    heartbeat: Callable[[list[tuple[str, float]]], None] | None = None,
+    heartbeat_every: float = 15.0,
 ) -> list[FileResult]:
     """Check ``scripts`` with up to ``jobs`` worker processes at a time.
 
     Results come back in the order of ``scripts``; ``progress(k, n, result)``
-    is called as each finishes."""
+    is called as each finishes, and ``heartbeat([(file, seconds so far)])``
+    every ``heartbeat_every`` seconds while files are being checked."""
     results: list[FileResult | None] = [None] * len(scripts)
     _STOPPING.clear()
+    running: dict[str, float] = {}
+    running_lock = threading.Lock()
+    stop_beat = threading.Event()
+
+    def one(script: Script) -> FileResult:
+        with running_lock:
+            running[script.display] = time.perf_counter()
+        try:
+            return check_file(script, timeout, run_jobs)
+        finally:
+            with running_lock:
+                running.pop(script.display, None)
+
+    def beat() -> None:
+        while not stop_beat.wait(heartbeat_every):
+            now = time.perf_counter()
+            with running_lock:
+                current = [(name, now - t0) for name, t0 in running.items()]
+            if current and heartbeat is not None:
+                heartbeat(current)
+
+    beater = None
+    if heartbeat is not None:
+        beater = threading.Thread(target=beat, daemon=True)
+        beater.start()
     pool = ThreadPoolExecutor(max_workers=max(1, jobs))
     try:
-        futures = {
-            pool.submit(check_file, s, timeout): i for i, s in enumerate(scripts)
-        }
+        futures = {pool.submit(one, s): i for i, s in enumerate(scripts)}
         for done, future in enumerate(as_completed(futures), start=1):
             i = futures[future]
             results[i] = future.result()
@@ -445,6 +526,8 @@ def check_files(
         _stop_all()
         pool.shutdown(wait=True, cancel_futures=True)
         raise
+    finally:
+        stop_beat.set()
     pool.shutdown(wait=True)
     return [r for r in results if r is not None]
 
@@ -454,15 +537,44 @@ def check_files(
 
 def _outcome(result: FileResult) -> str:
     if result.status == PASSED and not result.transcript:
-        return "ok (no transcript)"
+        ran = " and ran its CODE job" if result.jobs_run else ""
+        return f"passed (no transcript to compare: converted, imported{ran})"
     if result.transcript:
-        return f"{result.status} ({result.responses})"
+        return f"{result.status} ({result.responses} responses)"
     return result.status
 
 
-def progress_line(k: int, n: int, result: FileResult) -> str:
-    """``[3/12] models/arm.al ... passed (18/18) 2.1s``"""
-    return f"[{k}/{n}] {result.path} ... {_outcome(result)} {result.seconds:.1f}s"
+def _duration(seconds: float) -> str:
+    seconds = max(0, round(seconds))
+    if seconds < 60:
+        return f"{seconds}s"
+    m, s = divmod(seconds, 60)
+    if m < 60:
+        return f"{m}m{s:02d}s"
+    h, m = divmod(m, 60)
+    return f"{h}h{m:02d}m"
+
+
+def progress_line(k: int, n: int, result: FileResult, eta: float | None = None) -> str:
+    """``[3/12] models/arm.al ... passed (18/18 responses) 2.1s, ETA 40s``"""
+    line = f"[{k}/{n}] {result.path} ... {_outcome(result)} {result.seconds:.1f}s"
+    if eta is not None and k < n:
+        line += f", ETA {_duration(eta)}"
+    return line
+
+
+def eta_seconds(k: int, n: int, elapsed: float) -> float | None:
+    """Time left after ``k`` of ``n`` files took ``elapsed`` seconds."""
+    if k <= 0 or k >= n:
+        return None
+    return elapsed / k * (n - k)
+
+
+def heartbeat_line(current: Sequence[tuple[str, float]]) -> str:
+    """``still checking: models/arm.al (45s)``"""
+    return "still checking: " + ", ".join(
+        f"{name} ({_duration(seconds)})" for name, seconds in current
+    )
 
 
 def format_table(results: Sequence[FileResult]) -> str:
@@ -511,7 +623,17 @@ def summary_line(results: Sequence[FileResult], seconds: float | None = None) ->
         f"{n} file{'s' if n != 1 else ''}: {counts[PASSED]} passed, "
         f"{counts[FAILED]} failed, {counts[ERRORED]} errored"
     )
-    return text + (f" in {seconds:.1f}s" if seconds is not None else "")
+    text += f" in {seconds:.1f}s" if seconds is not None else ""
+    bare = [r.path for r in results if r.status == PASSED and not r.transcript]
+    if bare:
+        shown = ", ".join(bare[:5]) + (
+            f" and {len(bare) - 5} more" if len(bare) > 5 else ""
+        )
+        text += (
+            f"\n{len(bare)} passed with no transcript to compare (they only had to "
+            f"convert, import and run): {shown}"
+        )
+    return text
 
 
 def format_report(results: Sequence[FileResult], seconds: float | None = None) -> str:
@@ -522,6 +644,14 @@ def format_report(results: Sequence[FileResult], seconds: float | None = None) -
         parts.append("\n\n".join(bad))
     parts.append(summary_line(results, seconds))
     return "\n\n".join(parts) + "\n"
+
+
+_XML_FORBIDDEN = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+
+
+def xml_safe(text: str) -> str:
+    """``text`` with the characters XML 1.0 forbids shown as ``\\xNN``."""
+    return _XML_FORBIDDEN.sub(lambda m: f"\\x{ord(m.group()):02x}", text)
 
 
 def junit_xml(
@@ -585,6 +715,11 @@ def junit_xml(
         elif r.transcript:
             out = ET.SubElement(case, "system-out")
             out.text = f"{r.responses} responses match {r.transcript}"
+    for el in suites.iter():
+        if el.text:
+            el.text = xml_safe(el.text)
+        for key, value in el.attrib.items():
+            el.set(key, xml_safe(value))
     ET.indent(suites)
     return ET.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
 
@@ -614,16 +749,19 @@ def output_path(script: Script, outdir: Path, module: str | None = None) -> Path
 def convert_file(script: Script, outdir: Path) -> ConvertResult:
     """Convert one script into its place under ``outdir`` (never raises)."""
     from .errors import AutolevError, InternalError
+    from .static_checks import with_source_line
     from .transpile import convert
 
     target = output_path(script, outdir)
     shown = display_path(target)
+    text = ""
     try:
         text = script.path.read_text(encoding="utf-8", errors="replace")
         conversion = convert(text, script.display, script_dir=script.path.parent)
         target.parent.mkdir(parents=True, exist_ok=True)
         write_atomically(target, conversion.code)
     except AutolevError as exc:
+        exc = with_source_line(exc, script.display, text.splitlines())
         return ConvertResult(script.display, shown, False, exc.format())
     except InternalError as exc:
         message = f"al2py: internal error: {exc} (please report this bug)"

@@ -98,10 +98,11 @@ def _check_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="al2py check",
         description="Check Autolev scripts: convert each .al file, import the "
-        "generated module in a fresh process, and where a transcript NAME.all "
-        "sits beside NAME.al, compare every response mathematically (numbers "
-        "within Digits, expressions at random points).  A script without a "
-        "transcript passes if it converts and imports.",
+        "generated module in a fresh process, perform its CODE jobs, and where "
+        "a transcript NAME.all sits beside NAME.al, compare every response "
+        "mathematically (numbers within Digits, expressions at random points).  "
+        "A script without a transcript passes if it converts, imports and its "
+        "jobs run; the report names these files, which had nothing to compare.",
         epilog="Prints a table (passed/failed/errored, responses matched/total) "
         "and a report for each failing response.  Exit status 0 if every file "
         "passed, 2 if any failed or errored.",
@@ -119,6 +120,12 @@ def _check_parser() -> argparse.ArgumentParser:
     )
     p.add_argument(
         "--junit", metavar="FILE", help="also write the results as JUnit XML"
+    )
+    p.add_argument(
+        "--no-run",
+        action="store_true",
+        help="do not perform the scripts' CODE jobs (by default each job runs, "
+        "within the --timeout of its file, and a failing job fails the file)",
     )
     return p
 
@@ -286,11 +293,18 @@ def _check(args: argparse.Namespace) -> int:
         more = f" and {len(orphans) - 5} more" if len(orphans) > 5 else ""
         show(f"note: transcripts without a script are not checked: {names}{more}")
     start = time.perf_counter()
+
+    def progress(k: int, n: int, r: batch.FileResult) -> None:
+        eta = batch.eta_seconds(k, n, time.perf_counter() - start)
+        show(batch.progress_line(k, n, r, eta))
+
     results = batch.check_files(
         scripts,
         jobs=args.jobs,
         timeout=args.timeout,
-        progress=(lambda k, n, r: show(batch.progress_line(k, n, r))) if show else None,
+        progress=progress if show else None,
+        run_jobs=not args.no_run,
+        heartbeat=(lambda cur: show(batch.heartbeat_line(cur))) if show else None,
     )
     elapsed = time.perf_counter() - start
     sys.stdout.write(batch.format_report(results, elapsed))
@@ -354,9 +368,13 @@ def _convert_file(source: str, output: str | None) -> int:
             )
             return EXIT_INPUT
         filename = source
+    from .static_checks import with_source_line
     from .transpile import convert  # sympy: only when a command needs it
 
-    result = convert(text, filename)
+    try:
+        result = convert(text, filename)
+    except AutolevError as exc:
+        raise with_source_line(exc, filename, text.splitlines()) from None
     if output is None or output == "-":
         sys.stdout.write(result.code)
         return EXIT_OK

@@ -30,6 +30,7 @@ from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
 from .forms import Form
 from .parser import span_text
+from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
 
@@ -608,7 +609,7 @@ class Generator:
     def expr_Call(self, node: ir.Call) -> tuple[str, int]:
         b = BUILTINS.get(node.key)
         if b is None:
-            raise SemanticError(f"unknown function or command '{node.func}'", node.span)
+            raise SemanticError(unknown_call_message(node.func), node.span)
         emit = getattr(self, "call_" + b.python, None)
         if emit is not None:
             return emit(node, b), ATOM

@@ -28,7 +28,7 @@ from pathlib import Path
 
 from .errors import MacroError
 
-__all__ = ["MacroExpansion", "find_macro", "expand_macro"]
+__all__ = ["MacroExpansion", "find_macro", "expand_macro", "check_confined"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -81,6 +81,29 @@ def _find_in(directory: Path, wanted: str) -> Path | None:
         if entry.name.lower() == lowered and entry.is_file():
             return entry
     return None
+
+
+def check_confined(
+    path: Path, given: str, script_dir: Path, autolevpath: str | None, span
+) -> None:
+    """A ``RUN`` file (or macro) must resolve inside the script's folder tree
+    or a folder on ``AUTOLEVPATH`` (``RUN ../../etc/x.al`` is refused), so a
+    script cannot pull in files from anywhere on disk."""
+    if autolevpath is None:
+        autolevpath = os.environ.get("AUTOLEVPATH")
+    roots = [Path(script_dir)]
+    roots += [Path(d) for d in (autolevpath or "").split(os.pathsep) if d]
+    try:
+        target = Path(path).resolve()
+        if any(target.is_relative_to(root.resolve()) for root in roots):
+            return
+    except (OSError, RuntimeError):  # a symlink loop
+        pass
+    raise MacroError(
+        f"RUN {given}: the file lies outside the script's folder and "
+        "AUTOLEVPATH; copy it beside the script or add its folder to AUTOLEVPATH",
+        span,
+    )
 
 
 # --------------------------------------------------------------- expansion

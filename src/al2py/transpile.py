@@ -11,7 +11,7 @@ from pathlib import Path
 import black
 import jinja2
 
-from . import __version__
+from . import __version__, static_checks
 from .analysis import Analysis, expand
 from .errors import AutolevError, InternalError
 from .generator import Generator
@@ -76,12 +76,14 @@ def convert(
     text = text.removeprefix("\ufeff")  # a byte-order mark (Windows editors)
     # Long flat sums make deep (left-leaning) trees; give the walk room.
     sys.setrecursionlimit(max(sys.getrecursionlimit(), 20_000))
+    static_checks.check_text(text, filename)
     script = parse(text, filename)
     if script_dir is None:
         script_dir = (
             Path(filename).parent if filename not in ("-", "<stdin>") else Path.cwd()
         )
     stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
+    static_checks.check_statements(stmts)
     analysis = Analysis(stmts)
     generator = Generator(analysis, script.lines)
     try:

@@ -1,0 +1,152 @@
+"""Dictionary views, a short ``repr`` and pandas export for job results.
+
+``run()`` returns a :class:`~al2py_runtime.jobs.Result`; these mixins give it
+(and each of its tables) the habits of a mapping from column names to numpy
+arrays::
+
+    r = model.run()
+    list(r.keys())          # ['T', 'STRETCH', 'QA', 'QB', 'ECHECK']
+    dict(r.items())         # name -> numpy array
+    r                       # <Result of CODE Dynamics tutor6: 21 rows of T, ...>
+    r.to_pandas()           # a pandas.DataFrame (pandas is optional)
+    r.tables[0].to_pandas()
+
+pandas is imported only by ``to_pandas``; it is never a dependency.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+__all__ = ["ResultViews", "TableViews", "document_run"]
+
+
+def _pandas() -> Any:
+    try:
+        import pandas
+    except ImportError:
+        raise ImportError(
+            "to_pandas() needs pandas, which al2py does not install: "
+            "pip install pandas"
+        ) from None
+    return pandas
+
+
+def _names(names: list[str], limit: int = 6) -> str:
+    shown = ", ".join(names[:limit])
+    return shown + (f", ... ({len(names)} columns)" if len(names) > limit else "")
+
+
+class TableViews:
+    """Mapping habits of a :class:`~al2py_runtime.jobs.Table`."""
+
+    def keys(self) -> list[str]:
+        return list(self.names)  # type: ignore[attr-defined]
+
+    def values(self) -> list[Any]:
+        return [self[k] for k in self.keys()]  # type: ignore[index]
+
+    def items(self) -> list[tuple[str, Any]]:
+        return [(k, self[k]) for k in self.keys()]  # type: ignore[index]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.keys())
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{column name: numpy array}``: ``pandas.DataFrame(t.to_dict())``."""
+        return dict(self.items())
+
+    def to_pandas(self) -> Any:
+        """The table as a ``pandas.DataFrame`` (one column per output)."""
+        return _pandas().DataFrame(self.to_dict())
+
+    def __repr__(self) -> str:
+        return (
+            f"<Table {self.number}: {len(self)} rows of "  # type: ignore[attr-defined]
+            f"{_names(self.keys())}>"
+        )
+
+
+class ResultViews:
+    """Mapping habits of a :class:`~al2py_runtime.jobs.Result`: keys are every
+    output column (in table order), then solved and state quantities."""
+
+    def keys(self) -> list[str]:
+        out: list[str] = []
+        seen: set[str] = set()
+        groups = [t.names for t in self.tables]  # type: ignore[attr-defined]
+        groups.append(list(self.solution))  # type: ignore[attr-defined]
+        groups.append(list(self.states))  # type: ignore[attr-defined]
+        for names in groups:
+            for name in names:
+                key = name.upper()
+                if key not in seen:
+                    seen.add(key)
+                    out.append(name)
+        return out
+
+    def values(self) -> list[Any]:
+        return [self[k] for k in self.keys()]  # type: ignore[index]
+
+    def items(self) -> list[tuple[str, Any]]:
+        return [(k, self[k]) for k in self.keys()]  # type: ignore[index]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.keys())
+
+    def __len__(self) -> int:
+        return len(self.keys())
+
+    def to_pandas(self) -> Any:
+        """All outputs as one ``pandas.DataFrame`` (columns of equal length:
+        every output table; a Nonlinear/Algebraic solution adds its values)."""
+        pandas = _pandas()
+        columns = {}
+        rows = None
+        for name, values in self.items():
+            if rows is None:
+                rows = len(values)
+            if len(values) == rows:
+                columns[name] = values
+        return pandas.DataFrame(columns)
+
+    def __repr__(self) -> str:
+        kind = self.kind.title()  # type: ignore[attr-defined]
+        tables = self.tables  # type: ignore[attr-defined]
+        rows = len(tables[0]) if tables else len(next(iter(self.values()), []))
+        return (
+            f"<Result of CODE {kind} {self.stem}: {rows} rows of "  # type: ignore[attr-defined]
+            f"{_names(self.keys())}>"
+        )
+
+
+def document_run(ws: Any, run: Any) -> Any:
+    """Set ``run.__signature__`` to ``run(values=None, /, *, QA=20, ...)`` and
+    list the Inputs with their units in ``run.__doc__``."""
+    import inspect
+
+    params = [
+        inspect.Parameter("values", inspect.Parameter.POSITIONAL_ONLY, default=None)
+    ]
+    lines = []
+    for name, item in ws.inputs.items():
+        unit = f" {item.unit}" if getattr(item, "unit", None) else ""
+        lines.append(f"    {name} = {item.value:g}{unit}")
+        if name.isidentifier():
+            params.append(
+                inspect.Parameter(
+                    name, inspect.Parameter.KEYWORD_ONLY, default=item.value
+                )
+            )
+    try:
+        run.__signature__ = inspect.Signature(params)
+        if lines:
+            run.__doc__ = (run.__doc__ or "").rstrip() + (
+                "\n\n    Inputs (keyword arguments, in these units):\n\n"
+                + "\n".join(lines)
+                + "\n"
+            )
+    except (AttributeError, TypeError, ValueError):
+        pass
+    return run

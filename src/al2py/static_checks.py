@@ -1,0 +1,209 @@
+"""Checks at conversion time for input that would otherwise fail only when the
+generated module runs (issue 12): every failure found here is a located
+``file:line:col: error: ...``, never a traceback later.
+
+* characters a Python module cannot hold (a NUL byte, even in a comment);
+* number literals beyond double precision (``1e400``, ``1e-400``);
+* unit names in ``Input``, ``Output``, ``UnitSystem`` and CODE sweeps
+  (``furlong``), with the nearest known unit suggested;
+* unknown commands get "did you mean ...?" and Autolev commands that al2py
+  does not translate say "not supported" (:func:`unknown_call_message`).
+
+Also :func:`with_source_line`, which gives an error its source line and caret
+wherever the error happened (the main script, a ``RUN`` file or a macro call).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from collections.abc import Iterable
+from pathlib import Path
+
+from . import ir
+from .errors import AutolevError, ParseError, SemanticError
+
+__all__ = [
+    "check_text",
+    "check_statements",
+    "unknown_call_message",
+    "with_source_line",
+]
+
+# ------------------------------------------------------------------ text
+
+_FORBIDDEN = re.compile(r"\x00")
+
+
+def check_text(text: str, filename: str) -> None:
+    """Refuse a NUL byte: Python cannot load a module holding one, even in a
+    comment, and Autolev text has no use for it."""
+    m = _FORBIDDEN.search(text)
+    if m is None:
+        return
+    line = text.count("\n", 0, m.start()) + 1
+    col = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
+    line_text = text.splitlines()[line - 1] if text.splitlines() else ""
+    raise ParseError(
+        "a NUL character (\\x00) cannot appear in a script, not even in a comment",
+        ir.Span(filename, line, col),
+        line_text=line_text.replace("\x00", " "),
+    )
+
+
+# ------------------------------------------------------------ statements
+
+
+def check_statements(stmts: Iterable[ir.Stmt]) -> None:
+    """Numbers and unit names of (macro-expanded) statements."""
+    for stmt in _flatten(stmts):
+        if isinstance(stmt, ir.UnitSystemStmt):
+            for name in stmt.units:
+                _check_unit_word(name, stmt.span)
+        for node in _nodes(stmt):
+            if isinstance(node, ir.Number):
+                _check_number(node)
+            elif isinstance(node, ir.UnitExpr):
+                _check_unit(node)
+
+
+def _flatten(stmts: Iterable[ir.Stmt]) -> Iterable[ir.Stmt]:
+    for s in stmts:
+        if isinstance(s, ir.MacroCall):
+            yield from _flatten(s.body)
+        else:
+            yield s
+
+
+def _nodes(root: ir.Node) -> Iterable[ir.Node]:
+    """Every node below ``root`` (iteratively: deep nesting is fine)."""
+    import dataclasses
+
+    stack: list[object] = [root]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, tuple):
+            stack.extend(item)
+            continue
+        if not isinstance(item, ir.Node):
+            continue
+        if item is not root:
+            yield item
+        for f in dataclasses.fields(item):
+            if f.name != "span":
+                value = getattr(item, f.name)
+                if isinstance(value, ir.Node | tuple):
+                    stack.append(value)
+
+
+def _check_number(node: ir.Number) -> None:
+    text = node.text
+    try:
+        x = float(text)
+    except ValueError:
+        return
+    if math.isinf(x):
+        raise SemanticError(
+            f"the number {text} is too large: beyond double precision "
+            "(about 1.8E+308), it would become infinity",
+            node.span,
+        )
+    mantissa = re.split(r"[eEdD]", text)[0]
+    if x == 0 and any(c in "123456789" for c in mantissa):
+        raise SemanticError(
+            f"the number {text} is too small: below double precision "
+            "(about 4.9E-324), it would become 0",
+            node.span,
+        )
+
+
+def _unit_names() -> dict:
+    from al2py_runtime.units import UNIT_NAMES
+
+    return UNIT_NAMES
+
+
+def _check_unit(node: ir.UnitExpr) -> None:
+    for word, _power in node.factors:
+        _check_unit_word(word, node.span)
+    if node.text:
+        from al2py_runtime.units import UnitError, parse_unit
+
+        try:
+            parse_unit(node.text)
+        except UnitError as exc:
+            raise SemanticError(str(exc), node.span) from None
+
+
+def _check_unit_word(word: str, span: ir.Span) -> None:
+    if re.fullmatch(r"[\d.]+(?:[eE][-+]?\d+)?", word):
+        return
+    names = _unit_names()
+    if word.lower() in names:
+        return
+    close = difflib.get_close_matches(word.lower(), list(names), n=1, cutoff=0.6)
+    hint = f"; did you mean {close[0]}?" if close else ""
+    raise SemanticError(f"unknown unit '{word}'{hint}", span)
+
+
+# ------------------------------------------------------ unknown commands
+
+#: Autolev commands of the tutorial that al2py does not translate
+UNSUPPORTED_COMMANDS = {
+    "ANIMATE": "it drives Autolev's animation program",
+    "CLEAR": "a script cannot restart its own workspace",
+    "HELP": "it is interactive",
+    "LIST": "it is interactive",
+    "MEMORY": "it is interactive",
+    "WHAT": "it is interactive",
+    "DEFAULTS": "it is interactive",
+    "STEPPING": "it only changes screen spacing",
+    "SIMPLIFY": "it only places scratch files",
+    "OPTION": "CODE options of generated C/Fortran do not apply to Python",
+}
+
+
+def unknown_call_message(name: str) -> str:
+    """The error for a call of ``name``, which is neither a builtin nor a
+    macro found on disk."""
+    key = name.upper()
+    if key in UNSUPPORTED_COMMANDS:
+        return (
+            f"the Autolev command '{name}' is not supported by al2py "
+            f"({UNSUPPORTED_COMMANDS[key]})"
+        )
+    from .builtins import BUILTINS
+
+    pool = {b.lower(): b for b in BUILTINS}
+    close = difflib.get_close_matches(name.lower(), list(pool), n=1, cutoff=0.6)
+    hint = f" (did you mean {pool[close[0]].title()}?)" if close else ""
+    return f"unknown function or command '{name}'{hint}"
+
+
+# ------------------------------------------------------------ locations
+
+
+def with_source_line(
+    exc: AutolevError, filename: str, lines: Iterable[str] | None = None
+) -> AutolevError:
+    """Give ``exc`` the text of its line (for the caret), reading a ``RUN``
+    file or macro from disk when the error is located there."""
+    if exc.line_text or exc.span is None:
+        return exc
+    line = exc.span.line
+    text_lines: list[str] | None = None
+    if exc.span.file == filename and lines is not None:
+        text_lines = list(lines)
+    else:
+        try:
+            path = Path(exc.span.file)
+            if path.is_file() and path.stat().st_size < 50_000_000:
+                text_lines = path.read_text(
+                    encoding="utf-8", errors="replace"
+                ).splitlines()
+        except (OSError, ValueError):
+            text_lines = None
+    if text_lines and 0 < line <= len(text_lines):
+        exc.line_text = text_lines[line - 1]
+    return exc
