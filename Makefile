@@ -37,6 +37,7 @@ grammar: install
 bench: install
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/large.py
+	$(PY) benchmarks/startup.py
 
 clean:
 	rm -rf out .pytest_cache .ruff_cache

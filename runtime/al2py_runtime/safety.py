@@ -95,8 +95,9 @@ def output_path(outdir: str | os.PathLike, name: str) -> Any:
     ``/abs/x.py`` stay inside ``outdir``.  None if no base name is left."""
     from pathlib import Path
 
-    base = re.split(r"[\\/]", str(name).strip())[-1]
-    if base in ("", ".", "..") or ":" in base:
+    seps = "".join(re.escape(c) for c in {"/", os.sep, os.altsep or "/"})
+    base = re.split(f"[{seps}]", str(name).strip())[-1]
+    if base in ("", ".", "..") or (os.name == "nt" and ":" in base):
         return None
     return Path(outdir) / base
 

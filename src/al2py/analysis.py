@@ -24,7 +24,7 @@ from .errors import MacroError, ParseError, SemanticError, UnsupportedError
 from .forms import FORM_KINDS, Form, match
 from .macros import check_confined
 from .naming import PHYSICAL_KINDS, Namer
-from .static_checks import unknown_call_message
+from .static_checks import matrix_sum_error, unknown_call_message
 
 __all__ = ["Symbol", "SymbolTable", "Analysis", "StmtFacts", "expand", "walk_expr"]
 
@@ -187,20 +187,26 @@ class StmtFacts:
 
 
 def walk_expr(expr: ir.Expr) -> Iterator[ir.Expr]:
-    """Every expression node below (and including) ``expr``, parents first."""
-    yield expr
-    for f in dataclasses.fields(expr):
-        value = getattr(expr, f.name)
-        if isinstance(value, ir.Expr):
-            yield from walk_expr(value)
-        elif isinstance(value, tuple):
-            for item in value:
-                if isinstance(item, ir.Expr):
-                    yield from walk_expr(item)
-                elif isinstance(item, tuple):
-                    for sub in item:
-                        if isinstance(sub, ir.Expr):
-                            yield from walk_expr(sub)
+    """Every expression node below (and including) ``expr``, parents first.
+
+    Iterative, so a deep tree costs linear time (nested generators would make
+    it quadratic) and no recursion."""
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        yield node
+        children: list[ir.Expr] = []
+        for f in dataclasses.fields(node):
+            value = getattr(node, f.name)
+            if isinstance(value, ir.Expr):
+                children.append(value)
+            elif isinstance(value, tuple):
+                for item in value:
+                    if isinstance(item, ir.Expr):
+                        children.append(item)
+                    elif isinstance(item, tuple):
+                        children.extend(s for s in item if isinstance(s, ir.Expr))
+        stack.extend(reversed(children))
 
 
 def map_expr(expr: ir.Expr, fn: Callable[[ir.Expr], ir.Expr | None]) -> ir.Expr:
@@ -666,6 +672,16 @@ class Analysis:
     def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
         return self._operand(expr.operand)
 
+    def _check_matrix_sum(self, expr: ir.BinOp) -> None:
+        """Matrices of statically known, different sizes (issue 12)."""
+        message = matrix_sum_error(
+            expr,
+            lambda n: getattr(self.table.get(n.name), "shape", None),
+            lambda e: self._operand(e) is Kind.SCALAR,
+        )
+        if message:
+            raise SemanticError(message, expr.span)
+
     def _kind_BinOp(self, expr: ir.BinOp) -> Kind:
         left, right = self._operand(expr.left), self._operand(expr.right)
         if expr.op in "+-":
@@ -679,6 +695,8 @@ class Analysis:
                     f"and a {left.value}",
                     expr.span,
                 )
+            if left is Kind.MATRIX and right is Kind.MATRIX:
+                self._check_matrix_sum(expr)
             return left if left is not Kind.UNKNOWN else right
         if expr.op == "^":
             if right is not Kind.SCALAR:

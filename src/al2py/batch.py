@@ -213,7 +213,7 @@ def _check_in_this_process(
     import importlib.util
 
     from .errors import AutolevError, InternalError
-    from .static_checks import with_source_line
+    from .static_checks import too_deep, with_source_line
     from .transpile import convert
 
     shown_transcript = display_path(transcript) if transcript else None
@@ -232,7 +232,7 @@ def _check_in_this_process(
         result.message = f"al2py: internal error: {exc} (please report this bug)"
         return result
     except RecursionError:
-        result.message = f"{display}: error: the input is nested too deeply"
+        result.message = too_deep(display, text).format()
         return result
     except Exception as exc:  # noqa: BLE001 - a verdict, never a traceback
         result.message = (
@@ -630,8 +630,8 @@ def summary_line(results: Sequence[FileResult], seconds: float | None = None) ->
             f" and {len(bare) - 5} more" if len(bare) > 5 else ""
         )
         text += (
-            f"\n{len(bare)} passed with no transcript to compare (they only had to "
-            f"convert, import and run): {shown}"
+            f"\n{len(bare)} passed with no transcript, so nothing was compared: "
+            f"{shown}"
         )
     return text
 
@@ -749,7 +749,7 @@ def output_path(script: Script, outdir: Path, module: str | None = None) -> Path
 def convert_file(script: Script, outdir: Path) -> ConvertResult:
     """Convert one script into its place under ``outdir`` (never raises)."""
     from .errors import AutolevError, InternalError
-    from .static_checks import with_source_line
+    from .static_checks import too_deep, with_source_line
     from .transpile import convert
 
     target = output_path(script, outdir)
@@ -767,7 +767,7 @@ def convert_file(script: Script, outdir: Path) -> ConvertResult:
         message = f"al2py: internal error: {exc} (please report this bug)"
         return ConvertResult(script.display, shown, False, message)
     except RecursionError:
-        message = f"{script.display}: error: the input is nested too deeply"
+        message = too_deep(script.display, text).format()
         return ConvertResult(script.display, shown, False, message)
     except OSError as exc:
         message = f"al2py: error: {exc.filename or script.display}: {exc.strerror}"

@@ -368,13 +368,15 @@ def _convert_file(source: str, output: str | None) -> int:
             )
             return EXIT_INPUT
         filename = source
-    from .static_checks import with_source_line
+    from .static_checks import too_deep, with_source_line
     from .transpile import convert  # sympy: only when a command needs it
 
     try:
         result = convert(text, filename)
     except AutolevError as exc:
         raise with_source_line(exc, filename, text.splitlines()) from None
+    except RecursionError:
+        raise too_deep(filename, text) from None
     if output is None or output == "-":
         sys.stdout.write(result.code)
         return EXIT_OK

@@ -75,6 +75,10 @@ _NEEDS_OPERAND = frozenset(
 )
 
 
+#: sums with more terms than this are built as balanced trees (issue 12)
+_LONG_SUM = 64
+
+
 # ------------------------------------------------------------------ public API
 
 
@@ -92,8 +96,13 @@ def parse(text: str, filename: str = "<input>") -> ir.Script:
     except AutolevError:
         raise
     except RecursionError:
+        from .static_checks import deepest_nesting
+
+        span = deepest_nesting(filename, lines)
         raise ParseError(
-            "expression nested too deeply", ir.Span(filename, 1, 1)
+            "expression nested too deeply",
+            span,
+            line_text=lines[span.line - 1] if lines else "",
         ) from None
     except Exception as exc:  # a bug in al2py, not in the input
         raise InternalError(f"parser failed on {filename}: {exc!r}") from exc
@@ -503,12 +512,32 @@ class _IRBuilder(AutolevVisitor):
     def _fold(self, ctx) -> ir.Expr:
         """Left-associative chain ``operand (op operand)*``."""
         children = ctx.children
+        if len(children) > 2 * _LONG_SUM and children[1].getText() in "+-":
+            return self._balanced_sum(children)
         result = self.visit(children[0])
         for i in range(1, len(children), 2):
             right = self.visit(children[i + 1])
             span = self._join(result.span, right.span)
             result = ir.BinOp(span, children[i].getText(), result, right)
         return result
+
+    def _balanced_sum(self, children) -> ir.Expr:
+        """A long sum ``a + b - c + ...`` as a balanced tree of ``+`` with
+        ``-c`` negated: depth log2(n) instead of n, so later passes (and
+        Python's compiler) need no deep recursion and time stays linear."""
+        nodes = [self.visit(children[0])]
+        for i in range(1, len(children), 2):
+            term = self.visit(children[i + 1])
+            if children[i].getText() == "-":
+                term = ir.UnaryOp(term.span, "-", term)
+            nodes.append(term)
+        while len(nodes) > 1:
+            paired = [
+                ir.BinOp(self._join(a.span, b.span), "+", a, b)
+                for a, b in zip(nodes[::2], nodes[1::2], strict=False)
+            ]
+            nodes = paired + ([nodes[-1]] if len(nodes) % 2 else [])
+        return nodes[0]
 
     def visitAdditive(self, ctx: AutolevParser.AdditiveContext) -> ir.Expr:
         return self._fold(ctx)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 from . import ir
@@ -147,6 +147,67 @@ def _check_unit_word(word: str, span: ir.Span) -> None:
     raise SemanticError(f"unknown unit '{word}'{hint}", span)
 
 
+# ------------------------------------------------------ matrix shapes
+
+
+def matrix_sum_error(
+    expr: ir.BinOp,
+    shape_of_name: Callable[[ir.Name], tuple[int, int] | None],
+    is_scalar: Callable[[ir.Expr], bool],
+) -> str | None:
+    """For ``M + a*[1, 2, 3]`` whose operand shapes are known statically and
+    differ: the error message (else None)."""
+    a = static_shape(expr.left, shape_of_name, is_scalar)
+    b = static_shape(expr.right, shape_of_name, is_scalar)
+    if a is None or b is None or a == b:
+        return None
+    verb = "add" if expr.op == "+" else "subtract"
+    return (
+        f"cannot {verb} a {a[0]}x{a[1]} matrix and a {b[0]}x{b[1]} matrix "
+        "(their sizes differ)"
+    )
+
+
+def static_shape(
+    expr: ir.Expr,
+    shape_of_name: Callable[[ir.Name], tuple[int, int] | None],
+    is_scalar: Callable[[ir.Expr], bool],
+    depth: int = 0,
+) -> tuple[int, int] | None:
+    """The (rows, cols) of a matrix expression when known without running it."""
+    if depth > 50:
+        return None
+    if isinstance(expr, ir.MatrixLit):
+        if any(isinstance(e, ir.MatrixLit) for row in expr.rows for e in row):
+            return None
+        widths = {len(row) for row in expr.rows}
+        return (len(expr.rows), widths.pop()) if len(widths) == 1 else None
+    if isinstance(expr, ir.Name):
+        return shape_of_name(expr)
+    if isinstance(expr, ir.UnaryOp):
+        return static_shape(expr.operand, shape_of_name, is_scalar, depth + 1)
+    if isinstance(expr, ir.BinOp):
+        left = lambda: static_shape(  # noqa: E731
+            expr.left, shape_of_name, is_scalar, depth + 1
+        )
+        right = lambda: static_shape(  # noqa: E731
+            expr.right, shape_of_name, is_scalar, depth + 1
+        )
+        if expr.op in "+-":
+            return left() or right()
+        if expr.op == "/" and is_scalar(expr.right):
+            return left()
+        if expr.op == "*":
+            if is_scalar(expr.left):
+                return right()
+            if is_scalar(expr.right):
+                return left()
+            a, b = left(), right()
+            if a and b and a[1] == b[0]:
+                return (a[0], b[1])
+    return None
+
+
 # ------------------------------------------------------ unknown commands
 
 #: Autolev commands of the tutorial that al2py does not translate
@@ -182,6 +243,33 @@ def unknown_call_message(name: str) -> str:
 
 
 # ------------------------------------------------------------ locations
+
+
+def too_deep(filename: str, text: str) -> ParseError:
+    """The located error for input nested too deeply to convert."""
+    lines = text.splitlines()
+    span = deepest_nesting(filename, lines)
+    return ParseError(
+        "this expression is nested too deeply to convert",
+        span,
+        line_text=lines[span.line - 1] if lines else "",
+    )
+
+
+def deepest_nesting(filename: str, lines: Iterable[str]) -> ir.Span:
+    """Where the brackets of ``lines`` nest deepest (the place to blame when
+    an expression is nested too deeply to convert)."""
+    depth = best = 0
+    where = (1, 1)
+    for number, line in enumerate(lines, start=1):
+        for col, char in enumerate(line.split("%", 1)[0], start=1):
+            if char in "([{":
+                depth += 1
+                if depth > best:
+                    best, where = depth, (number, col)
+            elif char in ")]}":
+                depth = max(0, depth - 1)
+    return ir.Span(filename, *where)
 
 
 def with_source_line(

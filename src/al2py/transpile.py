@@ -111,7 +111,15 @@ def convert(
         has_job=generator.has_job,
     )
     try:
-        code = black.format_str(code, mode=black.Mode())
-    except black.InvalidInput as exc:  # the generator wrote invalid Python
+        if len(code) <= BLACK_LIMIT:
+            code = black.format_str(code, mode=black.Mode())
+        else:  # black would take minutes; the code is valid, just not pretty
+            compile(code, f"{module}.py", "exec")
+    except (black.InvalidInput, SyntaxError) as exc:  # invalid generated code
         raise InternalError(f"generated code does not parse: {exc}") from None
     return Conversion(code, module)
+
+
+#: generated modules larger than this (characters) skip black, which needs
+#: about 1.5 ms per term of a long sum (docs/semantics.md)
+BLACK_LIMIT = 300_000
