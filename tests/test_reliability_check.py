@@ -226,3 +226,15 @@ def test_long_flat_sum_converts_and_runs(tmp_path):
     assert run.returncode == 0, run.stderr
     responses = [line for line in run.stdout.splitlines() if line.startswith("->")]
     assert responses == ["-> (3) B = 4000 - A", "-> (5) C = 0.5*B"]
+
+
+def test_check_reports_a_run_time_failure_at_its_line(tmp_path):
+    lib = tmp_path / "lib"
+    lib.mkdir()
+    (lib / "mag.al").write_text("Newtonian N\nPoints P, Q\nD = Mag(P_P_Q>)\n")
+    run = run_check("lib", "-q", cwd=tmp_path)
+    assert run.returncode == 2
+    assert "  lib/mag.al:3: error: P_P_Q> is not defined\n      D = Mag(P_P_Q>)" in (
+        run.stdout
+    )
+    assert "Traceback" not in run.stdout + run.stderr

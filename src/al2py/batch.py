@@ -316,8 +316,16 @@ def _is_user_error(exc: BaseException) -> bool:
 
 
 def _import_failure(exc: BaseException, module_path: Path, display: str) -> str:
-    """``importing the module raised X: msg`` and where in the generated code."""
+    """``importing the module raised X: msg`` and where in the generated code
+    (a located ``AutolevRuntimeError`` names the script's line instead)."""
     import traceback
+
+    if type(exc).__name__ == "AutolevRuntimeError" and getattr(exc, "filename", None):
+        line = getattr(exc, "line", None)
+        where = f"{display}:{line}" if line else display
+        text = f"{where}: error: {exc.message}"  # type: ignore[attr-defined]
+        source = getattr(exc, "source", "")
+        return text + (f"\n    {source.strip()}" if source.strip() else "")
 
     where = ""
     frames = traceback.extract_tb(exc.__traceback__)
