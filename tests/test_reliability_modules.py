@@ -311,7 +311,7 @@ def test_results_fit_the_ecosystem(tmp_path):
     text = """\
     Variables X'
     X' = -X
-    Input X = 2, tFinal = 1, integStp = 0.25, printInt = 0.5
+    Input X = 2, tFinal = 1, integStp = 0.25, printInt = 2
     Output T, X
     CODE ODE() decay.c
     """
@@ -402,3 +402,26 @@ def test_unknown_and_unsupported_commands(tmp_path):
         "the Autolev command 'Animate' is not supported by al2py"
     )
     assert "unknown" not in info.value.message
+
+
+def test_long_integration_shows_progress_on_a_terminal(monkeypatch, capsys):
+    from al2py_runtime import budget
+
+    clock = [100.0]
+    monkeypatch.setattr(budget.time, "monotonic", lambda: clock[0])
+    monkeypatch.setattr(budget, "PROGRESS", True)
+    rhs = budget.guard(lambda tt, y: -y, "CODE Ode x.c (line 5)", 0.0, 10.0)
+    for i in range(2048):
+        clock[0] += 0.01  # 20 s of integration, t from 0 to 2.047
+        assert rhs(i / 1000, 1.0) == -1.0
+    budget.clear_progress()
+    err = capsys.readouterr().err
+    assert "\rintegrating: t = 0.255 of 10 (3%)" in err
+    assert "\rintegrating: t = 2.047 of 10 (20%)" in err
+    assert err.endswith("\r")  # the line is erased at the end
+    monkeypatch.setattr(budget, "PROGRESS", False)
+    quiet = budget.guard(lambda tt, y: y, "CODE", 0.0, 1.0)
+    for _ in range(1024):
+        clock[0] += 0.01
+        quiet(0.5, 1.0)
+    assert capsys.readouterr().err == ""
