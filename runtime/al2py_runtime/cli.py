@@ -31,7 +31,11 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         lines.append("Input values (change with --set NAME=VALUE, in these units):")
         for key, item in inputs.items():
             unit = f" {item.unit}" if item.unit else ""
-            lines.append(f"  {key} = {item.value:g}{unit}")
+            try:
+                shown = format(float(item.value), "g")
+            except (TypeError, ValueError):  # an Input given as an expression
+                shown = str(item.value)
+            lines.append(f"  {key} = {shown}{unit}")
     jobs = ws.jobs
     if jobs:
         kinds = ", ".join(f"CODE {j.kind.title()} -> {j.stem}.1, ..." for j in jobs)

@@ -121,6 +121,14 @@ class ResultViews:
         )
 
 
+def _number(value: Any) -> float | None:
+    """``value`` as a float, or None for an Input given as an expression."""
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return None
+
+
 def document_run(ws: Any, run: Any) -> Any:
     """Set ``run.__signature__`` to ``run(values=None, /, *, QA=20, ...)`` and
     list the Inputs with their units in ``run.__doc__``."""
@@ -132,11 +140,15 @@ def document_run(ws: Any, run: Any) -> Any:
     lines = []
     for name, item in ws.inputs.items():
         unit = f" {item.unit}" if getattr(item, "unit", None) else ""
-        lines.append(f"    {name} = {item.value:g}{unit}")
+        value = _number(item.value)
+        shown = format(value, "g") if value is not None else str(item.value)
+        lines.append(f"    {name} = {shown}{unit}")
         if name.isidentifier():
             params.append(
                 inspect.Parameter(
-                    name, inspect.Parameter.KEYWORD_ONLY, default=item.value
+                    name,
+                    inspect.Parameter.KEYWORD_ONLY,
+                    default=value if value is not None else shown,
                 )
             )
     try:
