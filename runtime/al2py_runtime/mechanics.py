@@ -538,10 +538,10 @@ class MechanicsMixin:
         """``Angvel(A, B, BODY123, Q1, Q2, Q3)``: forms ``W_B_A>`` (in B).
         ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
         if kind is None:
-            w = self.ang_vel(b, a)
+            w = self._kinematic(self.ang_vel(b, a))
             self.respond(f"W_{b.name}_{a.name}>", w, line=line)
             return w
-        w = kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs))
+        w = self._kinematic(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
         b.set_ang_vel(a, w)
         self.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
@@ -665,6 +665,7 @@ class MechanicsMixin:
         return self._set_formed("A", p, n, kin.tidy_vector(v), line)
 
     def _set_formed(self, which, p, n, v, line) -> Vector:
+        v = self._kinematic(v)
         table = self._mech.vel if which == "V" else self._mech.acc
         table[(p, n)] = v
         self.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
@@ -972,13 +973,7 @@ class MechanicsMixin:
         st = self._mech
         solved = set(st.dependent) | set(st.auxiliary)
         rhs = self._rhs
-        kin_eqs = [
-            rhs[sp.Derivative(q, t)]
-            for q in st.motion
-            if q not in rhs
-            and sp.Derivative(q, t) in rhs
-            and sp.Derivative(q, t) not in solved
-        ]
+        kin_eqs = [rhs[dq] for dq in self._kinematical_equations()]
         out = []
         for q in st.motion:
             dq = sp.Derivative(q, t)
@@ -986,9 +981,37 @@ class MechanicsMixin:
                 continue
             if dq in rhs and dq not in solved:
                 continue
-            if any(sp.sympify(e).has(q) for e in kin_eqs):
+            if self._names[self.name_of(q)].order == 1 or any(
+                sp.sympify(e).has(q) for e in kin_eqs
+            ):
                 out.append(q)
             else:
+                out.append(dq)
+        return out
+
+    def _kinematic(self, x: Any) -> Any:
+        """``x`` with the kinematical differential equations applied (each
+        ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
+        terms of the generalized speeds."""
+        table = {dq: self._rhs[dq] for dq in self._kinematical_equations()}
+        if not table:
+            return x
+        return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
+
+    def _kinematical_equations(self) -> list:
+        """The derivatives ``Q'`` of declared variables (motion variables or
+        not) that have a right-hand side while ``Q`` itself has none: the
+        kinematical differential equations ``Q' = ...``, in declaration
+        order."""
+        rhs = self._rhs
+        solved = set(self._mech.dependent) | set(self._mech.auxiliary)
+        out = []
+        for entry in self._names.values():
+            q = entry.obj
+            if entry.kind != "variable" or q is t or q in rhs:
+                continue
+            dq = sp.Derivative(q, t)
+            if dq in rhs and dq not in solved and q not in solved:
                 out.append(dq)
         return out
 
