@@ -1020,6 +1020,19 @@ class MechanicsMixin:
         dep = set(self._mech.dependent)
         return [u for u in self._speeds() if u not in dep]
 
+    def _rows_speeds(self, what: str) -> list:
+        """:meth:`_fr_speeds` for ``Fr()``/``FrStar()``: an error when there
+        are none (never an empty, silently zero ``ZERO``)."""
+        speeds = self._fr_speeds()
+        if not speeds:
+            raise ValueError(
+                f"{what}: there are no generalized speeds; declare them with"
+                " Variables U{n}' or MotionVariables' (with kinematical"
+                " differential equations such as Q' = U)"
+            )
+        self._mech.fr_speeds = speeds
+        return speeds
+
     def _display(self, value: Any) -> Any:
         """A response value simplified for printing (cosmetic, size-gated)."""
         if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
@@ -1062,8 +1075,7 @@ class MechanicsMixin:
         auxiliary speed; dependent speeds are eliminated)."""
         n = self._n()
         st = self._mech
-        speeds = self._fr_speeds()
-        st.fr_speeds = speeds
+        speeds = self._rows_speeds("Fr()")
         rows = [sp.Integer(0)] * len(speeds)
         for p, f in st.forces.items():
             if f == Vector(0):
@@ -1096,16 +1108,17 @@ class MechanicsMixin:
         derivatives (large models never differentiate whole rows)."""
         n = self._n()
         st = self._mech
-        speeds = self._fr_speeds()
-        st.fr_speeds = speeds
+        speeds = self._rows_speeds("FrStar()")
         accels = [sp.Derivative(u, t) for u in self._speeds()]
         rows: list[list[Any]] = [[] for _ in speeds]
+        moved = [False] * len(speeds)  # some velocity depends on the speed
 
         def add(vec: Vector, parts: list) -> None:
             rest, coefs = kin.split_linear_vector(vec, accels)
-            for r, part in zip(rows, parts, strict=True):
+            for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
                 if part == Vector(0):
                     continue
+                moved[k] = True
                 r.append(rest.dot(part))
                 r.extend(c.dot(part) * a for a, c in coefs.items())
 
@@ -1119,6 +1132,13 @@ class MechanicsMixin:
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
                 tq = self._inertia_torque(o, n)
                 add(tq, self._partials(self.ang_vel(o, n), speeds))
+        if st.massive and not all(moved):
+            still = [self.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m]
+            raise ValueError(
+                "FrStar(): no velocity or angular velocity of a massive object"
+                f" depends on the generalized speed {', '.join(still)}; is a"
+                " kinematical differential equation (Q' = ...) missing?"
+            )
         return sp.Matrix([sp.Add(*r) for r in rows])
 
     # ------------------------------------------------------ Constrain
