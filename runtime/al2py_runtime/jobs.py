@@ -755,14 +755,35 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
-    from scipy.integrate import solve_ivp
+@dataclass
+class OdeSystem:
+    """The numeric equations of a dynamics job: ``fun(t, y)`` for
+    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
+    names, in internal units (the UnitSystem's, SI by default; radians).
+    ``accelerations(t, y)`` gives the derivatives solved from ``ZERO``."""
 
+    fun: Any
+    y0: list[float]
+    names: list[str]
+    accelerations: Any
+    compiled: _Dynamics
+    params: list[float]
+    clock: list[float]
+
+
+def _compiled(job: Job, keep: Iterable[Any]) -> _Dynamics:
     key = ("dyn", frozenset(keep))
     if key not in job._cache:
         job._cache[key] = _compile_dynamics(job, frozenset(keep))
-    c: _Dynamics = job._cache[key]
-    ip = _integration(vals)
+    return job._cache[key]
+
+
+def ode_system(
+    job: Job, vals: _Values, keep: set, t0: float = 0.0
+) -> OdeSystem:
+    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
+    where ``run()`` turns the equations into a numeric function)."""
+    c = _compiled(job, keep)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
     aliases = _state_aliases(job, c)
@@ -777,7 +798,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n
-    clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
+    clock = [t0]  # time of the latest evaluation, for messages
 
     def singular() -> NumericsError:
         return NumericsError(
@@ -802,7 +823,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
     def fun(tt: float, y: np.ndarray) -> list[float]:
         clock[0] = tt
-        yl = y.tolist()
+        yl = _floats(y)
         return deriv(tt, *yl, *accelerations(tt, yl), *p)
 
     if c.step is not None:
@@ -810,7 +831,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
         def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
             clock[0] = tt
-            v = step(tt, *y.tolist(), *p)
+            v = step(tt, *_floats(y), *p)
             if n == 1:
                 if v[0] == 0:
                     raise singular()
@@ -827,6 +848,34 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             known = v[nf:]
             return [acc[i] if solved else known[i] for solved, i in plan]
 
+    return OdeSystem(fun, y0, list(c.state_names), accelerations, c, p, clock)
+
+
+def _floats(y: Any) -> list[float]:
+    return y.tolist() if isinstance(y, np.ndarray) else [float(v) for v in y]
+
+
+def ode_function(
+    job: Job, overrides: Mapping[str, Any] | None = None
+) -> tuple[Any, list[float], list[str]]:
+    """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
+    equations of motion in internal units, with Inputs changed by
+    ``overrides`` (as ``run()``)."""
+    if job.kind not in ("DYNAMICS", "ODE"):
+        raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
+    vals, keep = _input_values(job, overrides or {})
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    return system.fun, list(system.y0), list(system.names)
+
+
+def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+    from scipy.integrate import solve_ivp
+
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    c, p, y0, fun = system.compiled, system.params, system.y0, system.fun
+    accelerations, clock = system.accelerations, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
     try:
         nfev = 0

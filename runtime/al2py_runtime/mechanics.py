@@ -84,6 +84,7 @@ class _State:
     deferred_vel: dict = field(default_factory=dict)  # (P, N) -> (A, O): V2pts
     deferred_acc: dict = field(default_factory=dict)  # (P, N) -> (A, O): A2pts
     motion: list = field(default_factory=list)  # MotionVariables, in order
+    checks: list = field(default_factory=list)  # NiCheck's work variables
     fr_speeds: list | None = None
     kane: dict | None = None
 
@@ -293,8 +294,10 @@ class MechanicsMixin:
             self._set_pos(objs[0], objs[1], value)
         elif kind == "VEL":
             st.vel[(objs[0], objs[1])] = value
+            objs[0].set_vel(objs[1], value)
         elif kind == "ACC":
             st.acc[(objs[0], objs[1])] = value
+            objs[0].set_acc(objs[1], value)
         elif kind == "ANGVEL":
             objs[0].set_ang_vel(objs[1], value)
         elif kind == "ANGACC":
@@ -668,6 +671,7 @@ class MechanicsMixin:
         v = self._kinematic(v)
         table = self._mech.vel if which == "V" else self._mech.acc
         table[(p, n)] = v
+        (p.set_vel if which == "V" else p.set_acc)(n, v)
         self.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v
 
@@ -1267,6 +1271,117 @@ class MechanicsMixin:
         }
         return arranged
 
+    # ------------------------------------------------ sympy's KanesMethod
+
+    def _coordinates(self, keep: list) -> list:
+        """Variables with a kinematical differential equation in the speeds
+        (NiCheck's work variables and perturbation variables are not)."""
+        checks = set(self._mech.checks)
+        out = []
+        for dq in self._kinematical_equations():
+            q = dq.expr
+            if q in checks:
+                continue
+            rhs = self._actual(self._rhs[dq], keep)
+            if sp.sympify(rhs).has(*keep):
+                out.append((q, rhs))
+        return out
+
+    def kane_inputs(self) -> Any:
+        """The script's model as ``KanesMethod`` inputs (see
+        :class:`al2py_runtime.model.KaneInputs`).
+
+        Velocities, accelerations, masses, inertias and loads are the actual
+        ones, with every right-hand side substituted except the speeds; the
+        sympy points and frames of the script are given these velocities
+        (``mod.Q.vel(mod.N)`` is ``V_Q_N>``)."""
+        from sympy.physics.mechanics import Particle, RigidBody
+
+        from .model import KaneInputs
+
+        n = self._n()
+        st = self._mech
+        speeds = self._speeds()
+        if not speeds:
+            raise ValueError(
+                "kanes_method(): there are no generalized speeds; declare them"
+                " with Variables U{n}' or MotionVariables'"
+            )
+        # Speeds that are derivatives (MotionVariables' Q'') become functions.
+        swap: dict = {}
+        names: dict = {}
+        for u in speeds:
+            if isinstance(u, sp.Derivative):
+                q = u.expr
+                new = dynamicsymbols(f"{self.name_of(q)}_U", real=True)
+                swap[sp.Derivative(q, (t, 2))] = sp.Derivative(new, t)
+                swap[u] = new
+                names[new] = self.name_of(u)
+            else:
+                names[u] = self.name_of(u)
+
+        def fix(x: Any) -> Any:
+            x = self._actual(x, speeds)
+            return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
+
+        us = [swap.get(u, u) for u in speeds]
+        dep = [swap.get(u, u) for u in st.dependent]
+        aux = [swap.get(u, u) for u in st.auxiliary]
+        ind = [u for u in us if u not in dep and u not in aux]
+        coords = self._coordinates(speeds)
+        q_ind = [q for q, _rhs in coords]
+        kd_eqs = [sp.Derivative(q, t) - fix(rhs) for q, rhs in coords]
+        for u, new in swap.items():
+            if isinstance(u, sp.Derivative) and u.derivative_count == 1:
+                q_ind.append(u.expr)
+                kd_eqs.append(u - new)
+        constraints = [
+            swap.get(u, u) - fix(self._rhs[u]) for u in st.dependent if u in self._rhs
+        ]
+        bodies = []
+        for o in st.massive:
+            m = fix(self._mass(o, strict=False))
+            p = self._center(o)
+            p.set_vel(n, fix(self.vel(p, n)))
+            p.set_acc(n, fix(self.acc(p, n)))
+            if isinstance(o, ReferenceFrame):
+                o.set_ang_vel(n, fix(self.ang_vel(o, n)))
+                o.set_ang_acc(n, fix(self.ang_acc(o, n)))
+                inertia = fix(self.central_inertia(o))
+                if inertia == 0:
+                    inertia = Dyadic(0)
+                bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
+            else:
+                bodies.append(Particle(p.name, p, m))
+        loads = []
+        for p, f in st.forces.items():
+            if f != Vector(0):
+                p.set_vel(n, fix(self.vel(p, n)))
+                loads.append((p, fix(f)))
+        for b, tq in st.torques.items():
+            if tq != Vector(0):
+                b.set_ang_vel(n, fix(self.ang_vel(b, n)))
+                loads.append((b, fix(tq)))
+        return KaneInputs(
+            frame=n,
+            q_ind=q_ind,
+            u_ind=ind,
+            kd_eqs=kd_eqs,
+            bodies=bodies,
+            loads=loads,
+            u_dependent=dep,
+            velocity_constraints=constraints,
+            u_auxiliary=aux,
+            speed_names=names,
+        )
+
+    def kanes_method(self) -> Any:
+        """``sympy.physics.mechanics.KanesMethod`` for this script, with its
+        equations formed (``mass_matrix_full``, ``forcing_full``)."""
+        from .model import kanes_method
+
+        return kanes_method(self.kane_inputs())
+
     # ---------------------------------------------- energy and momentum
 
     def ke(self) -> Any:
@@ -1372,6 +1487,7 @@ class MechanicsMixin:
             k += 1
             name = f"NICHECK_WORK{k}"
         work = dynamicsymbols(name, real=True)
+        self._mech.checks.append(work)
         self._declare(name, "variable", work, order=1)
         self._rhs[sp.Derivative(work, t)] = self.power()
         return self.ke() - work

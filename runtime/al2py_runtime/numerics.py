@@ -41,6 +41,7 @@ from .jobs import (
     OutputSpec,
     Result,
     normalize_name,
+    ode_function,
     run_job,
 )
 from .units import UnitSystem, units_factor
@@ -235,6 +236,21 @@ class NumericsMixin:
         merged = dict(values or {})
         merged.update(overrides)
         return run_job(jobs[-1], merged)
+
+    def ode_function(
+        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+    ) -> tuple[Any, list[float], list[str]]:
+        """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
+        ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
+        UnitSystem's, SI by default; angles in radians).  Overrides are given
+        as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
+        the same function."""
+        jobs = self._numerics.jobs
+        if not jobs:
+            raise NumericsError(f"{self.filename} has no CODE statement")
+        merged = dict(values or {})
+        merged.update(overrides)
+        return ode_function(jobs[-1], merged)
 
     def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
         """Perform one recorded job with optional overrides."""

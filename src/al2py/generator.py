@@ -102,6 +102,7 @@ class Generator:
         self._line = 0
         self.stopped_at: int | None = None
         self.has_job = False  # a CODE statement was generated
+        self.has_kane = False  # Fr() or FrStar() was generated
 
     # ------------------------------------------------------------ driving
 
@@ -619,6 +620,8 @@ class Generator:
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
+            if b.python in ("fr", "frstar"):
+                self.has_kane = True  # the module offers kanes_method()
             return f"al.{b.python}({self._args(node.args, b)})", ATOM
         if b.name == "SOLVE":
             raise SemanticError(
