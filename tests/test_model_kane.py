@@ -14,9 +14,8 @@ import random
 import numpy as np
 import pytest
 import sympy as sp
-from sympy.physics.mechanics import KanesMethod, Particle, RigidBody
-
 from al2py_runtime import t
+from sympy.physics.mechanics import KanesMethod, Particle, RigidBody
 
 # tutor8 evaluates ZERO with these numbers before CODE (they are not Inputs).
 FIXED = {"tutor6": {}, "tutor8": {"L": 1, "MA": 10, "MB": 1, "G": 9.81}}

@@ -19,11 +19,10 @@ import random
 
 import pytest
 import sympy as sp
+from al2py_runtime import t
+from conftest import load_module
 
 from al2py import convert
-from al2py_runtime import t
-
-from conftest import load_module
 
 # The body of every script: {kde} is the kinematical differential equation,
 # {w} the angular velocity's source.

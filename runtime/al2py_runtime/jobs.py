@@ -778,9 +778,7 @@ def _compiled(job: Job, keep: Iterable[Any]) -> _Dynamics:
     return job._cache[key]
 
 
-def ode_system(
-    job: Job, vals: _Values, keep: set, t0: float = 0.0
-) -> OdeSystem:
+def ode_system(job: Job, vals: _Values, keep: set, t0: float = 0.0) -> OdeSystem:
     """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
     where ``run()`` turns the equations into a numeric function)."""
     c = _compiled(job, keep)

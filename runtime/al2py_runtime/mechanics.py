@@ -1137,7 +1137,9 @@ class MechanicsMixin:
                 tq = self._inertia_torque(o, n)
                 add(tq, self._partials(self.ang_vel(o, n), speeds))
         if st.massive and not all(moved):
-            still = [self.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m]
+            still = [
+                self.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
+            ]
             raise ValueError(
                 "FrStar(): no velocity or angular velocity of a massive object"
                 f" depends on the generalized speed {', '.join(still)}; is a"
