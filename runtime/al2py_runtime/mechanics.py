@@ -85,6 +85,7 @@ class _State:
     deferred_acc: dict = field(default_factory=dict)  # (P, N) -> (A, O): A2pts
     motion: list = field(default_factory=list)  # MotionVariables, in order
     checks: list = field(default_factory=list)  # NiCheck's work variables
+    gyrostat: bool = False  # Gyrostat(FRSTAR...) terms were formed
     fr_speeds: list | None = None
     kane: dict | None = None
 
@@ -271,6 +272,13 @@ class MechanicsMixin:
         if key.primes or key.index:
             raise ValueError(f"cannot assign to {key}: assign all of {key.name}")
         kind, *objs = form
+        return self._set_form(kind, objs, value, key.name, line)
+
+    def _set_form(
+        self, kind: str, objs: list, value: Any, label: str, line: int | None
+    ) -> Any:
+        """Give a frame, point or body one of its kinematic or mass
+        properties (``value`` already normalized) and respond with ``label``."""
         st = self._mech
         if isinstance(value, Vector | Dyadic):
             value = kin.vmap(value, self.normalize)
@@ -278,16 +286,16 @@ class MechanicsMixin:
             a, b = objs
             m = sp.Matrix(value)
             if m.shape != (3, 3):
-                raise ValueError(f"{key.name} must be a 3x3 matrix")
+                raise ValueError(f"{label} must be a 3x3 matrix")
             b.orient_explicit(a, m)
-            self.respond(key.name, m, line=line)
+            self.respond(label, m, line=line)
             return m
         if kind == "INERTIA":
             body, p = objs
             value = _as_dyadic(value)
             b = self._body(body)
             b.inertia, b.inertia_point = value, p
-            self.respond(key.name, value, line=line)
+            self.respond(label, value, line=line)
             return value
         value = kin.as_vector(value)
         if kind == "POS":
@@ -297,7 +305,6 @@ class MechanicsMixin:
             objs[0].set_vel(objs[1], value)
         elif kind == "ACC":
             st.acc[(objs[0], objs[1])] = value
-            objs[0].set_acc(objs[1], value)
         elif kind == "ANGVEL":
             objs[0].set_ang_vel(objs[1], value)
         elif kind == "ANGACC":
@@ -307,8 +314,53 @@ class MechanicsMixin:
             st.forces[objs[0]] = value
         elif kind == "TORQUE":
             st.torques[objs[0]] = value
-        self.respond(key.name, value, line=line)
+        self.respond(label, value, line=line)
         return value
+
+    def _set(self, kind: str, objs: list, value: Any, label: str, line: Any) -> Any:
+        value = self.normalize(value, rearrange=self.settings.factoring)
+        return self._set_form(kind, objs, value, label, line)
+
+    # Autolev's assignments to syntactical forms, named after the sympy
+    # calls they make (``P_O_P> = v`` is ``set_pos(P, O, v)``: sympy's
+    # ``P.set_pos(O, v)``).  Each also records Autolev's response.
+
+    def set_pos(self, p: Point, o: Point, value: Any, *, line=None) -> Vector:
+        """``P_O_P> = v``: P's position from O (``P.set_pos(O, v)``); Autolev
+        positions reverse and chain."""
+        return self._set("POS", [o, p], value, f"P_{o.name}_{p.name}>", line)
+
+    def set_vel(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
+        """``V_P_N> = v`` (``P.set_vel(N, v)``)."""
+        return self._set("VEL", [p, frame], value, f"V_{p.name}_{frame.name}>", line)
+
+    def set_acc(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
+        """``A_P_N> = v`` (``P.set_acc(N, v)``)."""
+        return self._set("ACC", [p, frame], value, f"A_{p.name}_{frame.name}>", line)
+
+    def set_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
+        """``W_B_A> = w`` (``B.set_ang_vel(A, w)``)."""
+        return self._set("ANGVEL", [b, a], value, f"W_{b.name}_{a.name}>", line)
+
+    def set_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
+        """``ALF_B_A> = v`` (``B.set_ang_acc(A, v)``)."""
+        return self._set("ANGACC", [b, a], value, f"ALF_{b.name}_{a.name}>", line)
+
+    def set_force(self, p: Point, value: Any, *, line=None) -> Vector:
+        """``Force_P> = v``: the resultant force on P (a load ``(P, v)``)."""
+        return self._set("FORCE", [p], value, f"FORCE_{p.name}>", line)
+
+    def set_torque(self, b: ReferenceFrame, value: Any, *, line=None) -> Vector:
+        """``Torque_B> = v``: the resultant torque on B (a load ``(B, v)``)."""
+        return self._set("TORQUE", [b], value, f"TORQUE_{b.name}>", line)
+
+    def set_dcm(self, a: ReferenceFrame, b: ReferenceFrame, value, *, line=None):
+        """``A_B = M`` (``B.orient_explicit(A, M)``)."""
+        return self._set("DCM", [a, b], value, f"{a.name}_{b.name}", line)
+
+    def set_inertia_about(self, body: Any, p: Point, value: Any, *, line=None):
+        """``I_B_P>> = d``: the inertia dyadic of body B about P."""
+        return self._set("INERTIA", [body, p], value, f"I_{body.name}_{p.name}>>", line)
 
     def _form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""
@@ -671,7 +723,8 @@ class MechanicsMixin:
         v = self._kinematic(v)
         table = self._mech.vel if which == "V" else self._mech.acc
         table[(p, n)] = v
-        (p.set_vel if which == "V" else p.set_acc)(n, v)
+        if which == "V":
+            p.set_vel(n, v)
         self.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v
 
@@ -1303,6 +1356,11 @@ class MechanicsMixin:
 
         n = self._n()
         st = self._mech
+        if st.gyrostat:
+            raise ValueError(
+                "kanes_method(): Gyrostat(FRSTAR, ...) terms have no sympy"
+                " RigidBody; the model would miss the rotor"
+            )
         speeds = self._speeds()
         if not speeds:
             raise ValueError(
@@ -1322,13 +1380,22 @@ class MechanicsMixin:
             else:
                 names[u] = self.name_of(u)
 
+        # Constraint forces solved by Kane(F1, F2) stay unknowns: their
+        # right-hand sides hold the accelerations.
+        keep = [*speeds, *(st.kane["forces"] if st.kane else ())]
+
         def fix(x: Any) -> Any:
-            x = self._actual(x, speeds)
+            x = self._actual(x, keep)
             return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
 
+        # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
+        # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
+        zero_aux = [u for u in st.auxiliary if self.resolve(self._rhs.get(u, u)) == 0]
+        solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
+        solved = [u for u in solved if u not in zero_aux]
         us = [swap.get(u, u) for u in speeds]
-        dep = [swap.get(u, u) for u in st.dependent]
-        aux = [swap.get(u, u) for u in st.auxiliary]
+        dep = [swap.get(u, u) for u in solved]
+        aux = [swap.get(u, u) for u in zero_aux]
         ind = [u for u in us if u not in dep and u not in aux]
         coords = self._coordinates(speeds)
         q_ind = [q for q, _rhs in coords]
@@ -1337,18 +1404,21 @@ class MechanicsMixin:
             if isinstance(u, sp.Derivative) and u.derivative_count == 1:
                 q_ind.append(u.expr)
                 kd_eqs.append(u - new)
-        constraints = [
-            swap.get(u, u) - fix(self._rhs[u]) for u in st.dependent if u in self._rhs
-        ]
+        constraints = [swap.get(u, u) - fix(self._rhs[u]) for u in solved]
         bodies = []
         for o in st.massive:
             m = fix(self._mass(o, strict=False))
             p = self._center(o)
-            p.set_vel(n, fix(self.vel(p, n)))
-            p.set_acc(n, fix(self.acc(p, n)))
+            # Accelerations are the velocities' derivatives with every speed
+            # kept (an Autolev A2pts result has dependent speeds' derivatives
+            # substituted, which KanesMethod's constraints would count twice).
+            v = fix(self.vel(p, n))
+            p.set_vel(n, v)
+            p.set_acc(n, v.dt(n))
             if isinstance(o, ReferenceFrame):
-                o.set_ang_vel(n, fix(self.ang_vel(o, n)))
-                o.set_ang_acc(n, fix(self.ang_acc(o, n)))
+                w = fix(self.ang_vel(o, n))
+                o.set_ang_vel(n, w)
+                o.set_ang_acc(n, w.dt(o))
                 inertia = fix(self.central_inertia(o))
                 if inertia == 0:
                     inertia = Dyadic(0)
@@ -1456,6 +1526,7 @@ class MechanicsMixin:
             raise ValueError("Gyrostat option must be FRSTAR, ANGMOM or KE")
         speeds = self._fr_speeds()
         self._mech.fr_speeds = speeds
+        self._mech.gyrostat = True
         carrier = -j * (self._dt(wba, a) + (wa ^ wba))
         alf_b = self._dt(wa + wba, n)
         pa = self._partials(self.ang_vel(a, n), speeds)
