@@ -1051,7 +1051,7 @@ class MechanicsMixin:
         ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
         terms of the generalized speeds."""
         table = {dq: self._rhs[dq] for dq in self._kinematical_equations()}
-        if not table:
+        if not table or not _mentions(x, list(table)):
             return x
         return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
 
@@ -1567,6 +1567,13 @@ class MechanicsMixin:
 
 
 # ---------------------------------------------------------------- helpers
+
+
+def _mentions(x: Any, objs: list) -> bool:
+    """Whether a vector (or scalar) contains any of ``objs``."""
+    if isinstance(x, Vector):
+        return any(m.has(*objs) for m, _frame in x.args)
+    return isinstance(x, sp.Basic) and x.has(*objs)
 
 
 def _as_dyadic(value: Any) -> Dyadic:
