@@ -29,71 +29,17 @@ from typing import Any
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from . import algebra, matrices
 from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
 from .numerics import NumericsMixin
+from .settings import Response, Settings
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
 #: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
 t = dynamicsymbols._t
-
-_ON_OFF = {"ON": True, "OFF": False}
-
-
-@dataclass
-class Settings:
-    """Autolev settings (tutorial §6.5 and the Summary's "Default settings")."""
-
-    digits: int = 7
-    degrees: bool = False
-    autorhs: str = "ON"  # OFF | ON | ALL
-    factoring: bool = True
-    autoepsilon: float = 1.0e-7
-    complex: str = "OFF"  # OFF | ON | AUTO
-    autoz: bool = False
-    overwrite: bool = True
-    autoexpress: bool = False
-
-    def set(self, name: str, value: Any = None) -> None:
-        """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
-        key = name.lower()
-        word = str(value).upper() if value is not None else "ON"
-        if key == "digits":
-            n = int(value)
-            if not 1 <= n <= 17:
-                raise ValueError(f"Digits must be between 1 and 17, not {n}")
-            self.digits = n
-        elif key == "autoepsilon":
-            self.autoepsilon = float(value)
-        elif key == "autorhs":
-            if word not in ("ON", "OFF", "ALL"):
-                raise ValueError(f"AutoRHS takes ON, OFF or ALL, not {value}")
-            self.autorhs = word
-        elif key == "complex":
-            if word not in ("ON", "OFF", "AUTO"):
-                raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
-            self.complex = word
-        elif key in ("beepsound", "pause"):
-            pass  # interactive conveniences: nothing to do in a batch run
-        elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
-            if word not in _ON_OFF:
-                raise ValueError(f"{name} takes ON or OFF, not {value}")
-            setattr(self, key, _ON_OFF[word])
-        else:
-            raise ValueError(f"unknown setting {name}")
-
-
-@dataclass(frozen=True)
-class Response:
-    """One ``-> (n) NAME = value`` line, kept symbolic until printed."""
-
-    line: int | None
-    label: str
-    value: Any
-    digits: int
-
 
 _OBJECT_KINDS = ("frame", "body", "particle", "point", "newtonian")
 
@@ -664,6 +610,76 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
 
     autoz = zee
 
+    # Autolev's algebra and matrix commands (their first argument resolved)
+
+    def expand(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Expand``: see :func:`al2py_runtime.algebra.expand`."""
+        return algebra.expand(self.val(y), *args)
+
+    def factor(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Factor``: see :func:`al2py_runtime.algebra.factor`."""
+        return algebra.factor(self.val(y), *args)
+
+    def polynomial(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Polynomial``: see :func:`al2py_runtime.algebra.polynomial`."""
+        return algebra.polynomial(self.val(y), *args)
+
+    def roots(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Roots``: see :func:`al2py_runtime.algebra.roots`."""
+        return algebra.roots(self.val(y), *args)
+
+    def coef(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Coef``: see :func:`al2py_runtime.algebra.coef`."""
+        return algebra.coef(self.val(y), *args)
+
+    def exclude(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Exclude``: see :func:`al2py_runtime.algebra.exclude`."""
+        return algebra.exclude(self.val(y), *args)
+
+    def include(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Include``: see :func:`al2py_runtime.algebra.include`."""
+        return algebra.include(self.val(y), *args)
+
+    def arrange(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Arrange``: see :func:`al2py_runtime.algebra.arrange`."""
+        return algebra.arrange(self.val(y), *args)
+
+    def replace(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Replace``: see :func:`al2py_runtime.algebra.replace`."""
+        return algebra.replace(self.val(y), *args)
+
+    def epsilon(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Epsilon``: see :func:`al2py_runtime.algebra.epsilon`."""
+        return algebra.epsilon(self.val(y), *args)
+
+    def rows(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Rows``: see :func:`al2py_runtime.matrices.rows`."""
+        return matrices.rows(self.val(y), *args)
+
+    def cols(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Cols``: see :func:`al2py_runtime.matrices.cols`."""
+        return matrices.cols(self.val(y), *args)
+
+    def det(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Det``: see :func:`al2py_runtime.matrices.det`."""
+        return matrices.det(self.val(y), *args)
+
+    def diagmat(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Diagmat``: see :func:`al2py_runtime.matrices.diagmat`."""
+        return matrices.diagmat(self.val(y), *args)
+
+    def element(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Element``: see :func:`al2py_runtime.matrices.element`."""
+        return matrices.element(self.val(y), *args)
+
+    def inv(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Inv``: see :func:`al2py_runtime.matrices.inv`."""
+        return matrices.inv(self.val(y), *args)
+
+    def transpose(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Transpose``: see :func:`al2py_runtime.matrices.transpose`."""
+        return matrices.transpose(self.val(y), *args)
+
     def block(self, rows: Any) -> Any:
         from .matrices import block
 
@@ -762,32 +778,6 @@ def _diff(y: Any, x: Any) -> Any:
     if isinstance(y, sp.Basic):
         return sp.diff(y, x)
     return sp.Integer(0)
-
-
-def _delegate(module: str, func: str) -> Any:
-    """A workspace method that resolves its first argument, then calls
-    ``al2py_runtime.<module>.<func>``."""
-
-    def method(self: Workspace, y: Any, *args: Any) -> Any:
-        import importlib
-
-        target = getattr(importlib.import_module(f"al2py_runtime.{module}"), func)
-        return target(self.val(y), *args)
-
-    method.__name__ = func
-    method.__qualname__ = f"Workspace.{func}"
-    method.__doc__ = (
-        f"Autolev ``{func.title()}``: see :func:`al2py_runtime.{module}.{func}`."
-    )
-    return method
-
-
-for _module, _names in {
-    "algebra": "expand factor polynomial roots coef exclude include arrange replace epsilon",
-    "matrices": "rows cols det diagmat element inv transpose",
-}.items():
-    for _name in _names.split():
-        setattr(Workspace, _name, _delegate(_module, _name))
 
 
 class AutolevNames(Mapping):
