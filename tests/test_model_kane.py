@@ -79,6 +79,7 @@ def test_kanes_method_matches_ode_function(tutorial, name):
     assert kinds <= {RigidBody, Particle} and inputs.bodies
     assert all(isinstance(load, tuple) and len(load) == 2 for load in inputs.loads)
     assert len(inputs.kd_eqs) == len(inputs.q_ind) >= 2
+    assert mod.al.kd_eqs == inputs.kd_eqs
     f, y0, names = mod.ode_function()
     assert len(y0) == len(names)
     params = {}

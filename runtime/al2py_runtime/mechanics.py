@@ -1344,108 +1344,17 @@ class MechanicsMixin:
 
     def kane_inputs(self) -> Any:
         """The script's model as ``KanesMethod`` inputs (see
-        :class:`al2py_runtime.model.KaneInputs`).
+        :func:`al2py_runtime.model.kane_inputs`)."""
+        from .model import kane_inputs
 
-        Velocities, accelerations, masses, inertias and loads are the actual
-        ones, with every right-hand side substituted except the speeds; the
-        sympy points and frames of the script are given these velocities
-        (``mod.Q.vel(mod.N)`` is ``V_Q_N>``)."""
-        from sympy.physics.mechanics import Particle, RigidBody
+        return kane_inputs(self)
 
-        from .model import KaneInputs
-
-        n = self._n()
-        st = self._mech
-        if st.gyrostat:
-            raise ValueError(
-                "kanes_method(): Gyrostat(FRSTAR, ...) terms have no sympy"
-                " RigidBody; the model would miss the rotor"
-            )
+    @property
+    def kd_eqs(self) -> list:
+        """The kinematical differential equations ``Q' - rhs`` (coordinates
+        in declaration order), as ``KanesMethod`` takes them."""
         speeds = self._speeds()
-        if not speeds:
-            raise ValueError(
-                "kanes_method(): there are no generalized speeds; declare them"
-                " with Variables U{n}' or MotionVariables'"
-            )
-        # Speeds that are derivatives (MotionVariables' Q'') become functions.
-        swap: dict = {}
-        names: dict = {}
-        for u in speeds:
-            if isinstance(u, sp.Derivative):
-                q = u.expr
-                new = dynamicsymbols(f"{self.name_of(q)}_U", real=True)
-                swap[sp.Derivative(q, (t, 2))] = sp.Derivative(new, t)
-                swap[u] = new
-                names[new] = self.name_of(u)
-            else:
-                names[u] = self.name_of(u)
-
-        # Constraint forces solved by Kane(F1, F2) stay unknowns: their
-        # right-hand sides hold the accelerations.
-        keep = [*speeds, *(st.kane["forces"] if st.kane else ())]
-
-        def fix(x: Any) -> Any:
-            x = self._actual(x, keep)
-            return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
-
-        # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
-        # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
-        zero_aux = [u for u in st.auxiliary if self.resolve(self._rhs.get(u, u)) == 0]
-        solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
-        solved = [u for u in solved if u not in zero_aux]
-        us = [swap.get(u, u) for u in speeds]
-        dep = [swap.get(u, u) for u in solved]
-        aux = [swap.get(u, u) for u in zero_aux]
-        ind = [u for u in us if u not in dep and u not in aux]
-        coords = self._coordinates(speeds)
-        q_ind = [q for q, _rhs in coords]
-        kd_eqs = [sp.Derivative(q, t) - fix(rhs) for q, rhs in coords]
-        for u, new in swap.items():
-            if isinstance(u, sp.Derivative) and u.derivative_count == 1:
-                q_ind.append(u.expr)
-                kd_eqs.append(u - new)
-        constraints = [swap.get(u, u) - fix(self._rhs[u]) for u in solved]
-        bodies = []
-        for o in st.massive:
-            m = fix(self._mass(o, strict=False))
-            p = self._center(o)
-            # Accelerations are the velocities' derivatives with every speed
-            # kept (an Autolev A2pts result has dependent speeds' derivatives
-            # substituted, which KanesMethod's constraints would count twice).
-            v = fix(self.vel(p, n))
-            p.set_vel(n, v)
-            p.set_acc(n, v.dt(n))
-            if isinstance(o, ReferenceFrame):
-                w = fix(self.ang_vel(o, n))
-                o.set_ang_vel(n, w)
-                o.set_ang_acc(n, w.dt(o))
-                inertia = fix(self.central_inertia(o))
-                if inertia == 0:
-                    inertia = Dyadic(0)
-                bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
-            else:
-                bodies.append(Particle(p.name, p, m))
-        loads = []
-        for p, f in st.forces.items():
-            if f != Vector(0):
-                p.set_vel(n, fix(self.vel(p, n)))
-                loads.append((p, fix(f)))
-        for b, tq in st.torques.items():
-            if tq != Vector(0):
-                b.set_ang_vel(n, fix(self.ang_vel(b, n)))
-                loads.append((b, fix(tq)))
-        return KaneInputs(
-            frame=n,
-            q_ind=q_ind,
-            u_ind=ind,
-            kd_eqs=kd_eqs,
-            bodies=bodies,
-            loads=loads,
-            u_dependent=dep,
-            velocity_constraints=constraints,
-            u_auxiliary=aux,
-            speed_names=names,
-        )
+        return [sp.Derivative(q, t) - rhs for q, rhs in self._coordinates(speeds)]
 
     def kanes_method(self) -> Any:
         """``sympy.physics.mechanics.KanesMethod`` for this script, with its

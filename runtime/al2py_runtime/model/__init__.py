@@ -4,6 +4,6 @@
 differential equations and constraints become a ``KanesMethod``
 (:class:`KaneInputs`, :func:`kanes_method`)."""
 
-from .kane import KaneInputs, kanes_method
+from .kane import KaneInputs, kane_inputs, kanes_method
 
-__all__ = ["KaneInputs", "kanes_method"]
+__all__ = ["KaneInputs", "kane_inputs", "kanes_method"]
