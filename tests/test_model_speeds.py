@@ -176,3 +176,47 @@ def test_speed_nothing_depends_on_is_an_error(tmp_path):
     )
     with pytest.raises(ValueError, match="OMEGA"):
         _load(text, tmp_path, "pend_forgotten")
+
+
+DOUBLE = """
+Newtonian N
+Bodies A, B
+Constants G, L{2}, M{2}, I{2}
+Variables THETA{2}'
+MotionVariables' OMEGA{2}'
+Mass A=M1, B=M2
+Inertia A, 0, 0, I1
+Inertia B, 0, 0, I2
+Simprot(N, A, 3, THETA1)
+Simprot(A, B, 3, THETA2)
+THETA1' = OMEGA1
+THETA2' = OMEGA2
+P_NO_AO> = L1/2*A2>
+P_NO_BO> = L1*A2> + L2/2*B2>
+Angvel(N, A)
+Angvel(N, B)
+V_AO_N> = Dt(P_NO_AO>, N)
+V_BO_N> = Dt(P_NO_BO>, N)
+Gravity(G*N2>)
+Zero = Fr() + FrStar()
+Solve(Zero, OMEGA1', OMEGA2')
+"""
+
+
+def test_double_pendulum_matches_sympy_kanes_method(tmp_path):
+    """Two motion-variable speeds (DoublePendulum.al's style): the solved
+    OMEGA1', OMEGA2' equal sympy's KanesMethod at random states."""
+    mod = _load(DOUBLE, tmp_path, "double_pendulum")
+    km = mod.al.kanes_method()
+    w1, w2 = mod.al.symbol("OMEGA1"), mod.al.symbol("OMEGA2")
+    assert list(km.u) == [w1, w2]
+    assert list(km.q) == [mod.al.symbol("THETA1"), mod.al.symbol("THETA2")]
+    names = ["G", "L1", "L2", "M1", "M2", "I1", "I2", "THETA1", "THETA2"]
+    names += ["OMEGA1", "OMEGA2"]
+    for point in _points(mod, names, n=3):
+        mm = km.mass_matrix_full.subs(point).evalf()
+        ff = km.forcing_full.subs(point).evalf()
+        xdot = mm.LUsolve(ff)
+        for k, name in ((2, "OMEGA1'"), (3, "OMEGA2'")):
+            ours = complex(mod.al.resolve(mod.AUTOLEV[name]).subs(point).evalf())
+            assert abs(ours - complex(xdot[k])) <= 1e-9 * max(1, abs(ours)), name

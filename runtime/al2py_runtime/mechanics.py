@@ -86,6 +86,7 @@ class _State:
     motion: list = field(default_factory=list)  # MotionVariables, in order
     checks: list = field(default_factory=list)  # NiCheck's work variables
     gyrostat: bool = False  # Gyrostat(FRSTAR...) terms were formed
+    speeds: list | None = None  # the speeds, fixed when Fr/FrStar are formed
     fr_speeds: list | None = None
     kane: dict | None = None
 
@@ -1020,6 +1021,8 @@ class MechanicsMixin:
         (``SPEED``) is a speed; any other (``THETA''``) is a coordinate whose
         first derivative ``THETA'`` serves as the generalized speed.  Speeds
         solved by Constrain keep their place."""
+        if self._mech.speeds is not None:
+            return list(self._mech.speeds)
         found = []
         for name, entry in self._names.items():
             m = _SPEED.match(name)
@@ -1050,7 +1053,12 @@ class MechanicsMixin:
         """``x`` with the kinematical differential equations applied (each
         ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
         terms of the generalized speeds."""
-        table = {dq: self._rhs[dq] for dq in self._kinematical_equations()}
+        speeds = set(self._speeds())
+        table = {
+            dq: self._rhs[dq]
+            for dq in self._kinematical_equations()
+            if dq.expr not in speeds and dq not in speeds
+        }
         if not table or not _mentions(x, list(table)):
             return x
         return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
@@ -1081,6 +1089,10 @@ class MechanicsMixin:
         """:meth:`_fr_speeds` for ``Fr()``/``FrStar()``: an error when there
         are none (never an empty, silently zero ``ZERO``)."""
         speeds = self._fr_speeds()
+        if speeds and self._mech.speeds is None:
+            # Fixed from now on: a later Solve(Zero, OMEGA') gives OMEGA' a
+            # right-hand side, which must not make OMEGA a coordinate.
+            self._mech.speeds = self._speeds()
         if not speeds:
             raise ValueError(
                 f"{what}: there are no generalized speeds; declare them with"
@@ -1335,7 +1347,7 @@ class MechanicsMixin:
         out = []
         for dq in self._kinematical_equations():
             q = dq.expr
-            if q in checks:
+            if q in checks or q in keep or dq in keep:
                 continue
             rhs = self._actual(self._rhs[dq], keep)
             if sp.sympify(rhs).has(*keep):
@@ -1365,11 +1377,12 @@ class MechanicsMixin:
 
     # ---------------------------------------------- energy and momentum
 
-    def ke(self) -> Any:
-        """``KE()``: kinetic energy of all particles and bodies in N."""
+    def ke(self, *objs: Any) -> Any:
+        """``KE()``: kinetic energy of all particles and bodies in N;
+        ``KE(A, P)`` of the bodies and particles named."""
         n = self._n()
         total = sp.Integer(0)
-        for o in self._mech.massive:
+        for o in self._objects(objs):
             m = self._mass(o, strict=False)
             p = self._center(o)
             if m != 0:

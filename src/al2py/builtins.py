@@ -233,7 +233,7 @@ _TABLE: list[Builtin] = [
     Builtin("MASS", Style.METHOD, "mass_of", 0, None),
     Builtin("CM", Style.METHOD, "cm", 1, None, _vector),
     Builtin("INERTIA", Style.METHOD, "inertia", 1, None, _dyadic),
-    Builtin("KE", Style.METHOD, "ke", 0, 0),
+    Builtin("KE", Style.METHOD, "ke", 0, None),
     Builtin("MOMENTUM", Style.METHOD, "momentum", 1, 2, _momentum, words=(0,)),
     Builtin("TSTAR", Style.METHOD, "tstar", 1, 2, _vector),
     Builtin("FR", Style.METHOD, "fr", 0, 0, _matrix),
