@@ -1,8 +1,8 @@
 """Numerical CODE jobs: Input/Output with units, Dynamics/ODE/Nonlinear/Algebraic.
 
-:class:`NumericsMixin` adds ``UnitSystem``, ``Input``, ``Output``, ``CODE``,
-``Input(X)``, ``Units(a, b)``, :meth:`~NumericsMixin.run` and
-:meth:`~NumericsMixin.main` to :class:`Workspace`.
+:class:`Numerics` records ``UnitSystem``, ``Input``, ``Output`` and ``CODE``
+for a :class:`Workspace` (its ``numerics`` part; the workspace offers these
+commands, ``Input(X)``, ``Units(a, b)``, ``run()`` and ``main()``).
 
 Recording (``unit_system``, ``input``, ``output``, ``code``) only stores what
 the statements say, so importing a generated module does no numerical work.
@@ -25,7 +25,7 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
 from typing import Any
@@ -46,7 +46,7 @@ from .jobs import (
 )
 from .units import UnitSystem, units_factor
 
-__all__ = ["NumericsMixin", "NumericsError", "Result"]
+__all__ = ["Numerics", "NumericsError", "Result"]
 
 
 @dataclass
@@ -57,16 +57,15 @@ class _NumericsState:
     jobs: list[Job] = field(default_factory=list)
 
 
-class NumericsMixin:
-    """Inputs, outputs, units and the numerical job of a script."""
+class Numerics:
+    """Inputs, outputs, units and the numerical jobs of a script.
 
-    @property
-    def _numerics(self) -> _NumericsState:
-        state = self.__dict__.get("_numerics_state")
-        if state is None:
-            state = _NumericsState()
-            self.__dict__["_numerics_state"] = state
-        return state
+    It reads the script's names (``ws``: the workspace's name table and
+    settings) when ``CODE`` takes its snapshot; nothing else refers back."""
+
+    def __init__(self, ws: Any) -> None:
+        self._ws = ws
+        self._numerics = _NumericsState()
 
     # ------------------------------------------------------------ recording
 
@@ -133,47 +132,47 @@ class NumericsMixin:
             elif isinstance(eqs, list | tuple):
                 eq_matrix = sp.Matrix(list(eqs))
             else:
-                eq_matrix = sp.Matrix([self.val(eqs)])
-        objs = [self.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+                eq_matrix = sp.Matrix([self._ws.val(eqs)])
+        objs = [self._ws.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
         if sweep is not None:
             obj, unit, start, stop, step = sweep
             if isinstance(obj, str):
-                obj = self.symbol(obj)
+                obj = self._ws.symbol(obj)
             sweep = (obj, unit or None, float(start), float(stop), float(step))
             if float(step) == 0:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._values.get("ZERO")
+            value = self._ws._values.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
-        stem = PurePath(file).stem if file else PurePath(self.filename).stem
+        stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
         job = Job(
             kind=kind,
             stem=stem or "autolev",
             filename=file,
             line=line,
-            source=self.filename,
+            source=self._ws.filename,
             eqs=eq_matrix,
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._rhs),
+            rhs=dict(self._ws._rhs),
             zero=zero,
             outputs=list(state.outputs),
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
-            digits=self.settings.digits,
+            digits=self._ws.settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._entries_by_obj),
-            entries={name: (e.kind, e.obj) for name, e in self._names.items()},
+            names=dict(self._ws._entries_by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -182,11 +181,11 @@ class NumericsMixin:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._values.items():
+        for name, stored in self._ws._values.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._values.items():
+            for name, stored in self._ws._values.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -232,7 +231,7 @@ class NumericsMixin:
         ``run({"X'": 1})``."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self.filename} has no CODE statement")
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
         return run_job(jobs[-1], merged)
@@ -247,7 +246,7 @@ class NumericsMixin:
         the same function."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self.filename} has no CODE statement")
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
         return ode_function(jobs[-1], merged)
@@ -255,11 +254,3 @@ class NumericsMixin:
     def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
         """Perform one recorded job with optional overrides."""
         return run_job(job, dict(values or {}))
-
-    def main(
-        self, source_lines: Sequence[str], argv: Sequence[str] | None = None
-    ) -> int:
-        """The ``python module.py`` entry point (see :mod:`.cli`)."""
-        from .cli import main
-
-        return main(self, source_lines, argv)

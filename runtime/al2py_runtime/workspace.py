@@ -33,7 +33,7 @@ from . import algebra, matrices
 from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
-from .numerics import NumericsMixin
+from .numerics import Numerics
 from .settings import Response, Settings
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
@@ -55,7 +55,7 @@ class _Entry:
     extra: dict = field(default_factory=dict)
 
 
-class Workspace(MechanicsMixin, NumericsMixin, Mapping):
+class Workspace(MechanicsMixin, Mapping):
     """Names, values and responses of one Autolev script.
 
     The workspace is a read-only mapping from Autolev spellings to current
@@ -73,9 +73,68 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         self._saves: list[str] = []
         self._exit_line: int | None = None
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
+        #: Inputs, Outputs, UnitSystem and CODE jobs (``run()``).
+        self.numerics = Numerics(self)
         self._declare("T", "variable", t)
         self._declare("PI", "constant", sp.pi)
         self._declare("I", "imaginary", sp.I)
+
+    # ------------------------------------------- numerical jobs (numerics.py)
+
+    def unit_system(self, *units: str, line: int | None = None) -> None:
+        """``UnitSystem kg, meter, sec`` (see :class:`Numerics`)."""
+        self.numerics.unit_system(*units, line=line)
+
+    def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
+        """``Input A=1, QA=30 deg`` (see :class:`Numerics`)."""
+        self.numerics.input(values, line=line)
+
+    def output(self, items: Iterable[Any], *, line: int | None = None) -> None:
+        """``Output T, X m`` (see :class:`Numerics`)."""
+        self.numerics.output(items, line=line)
+
+    def code(self, kind: str, *args: Any, **kw: Any) -> Any:
+        """``CODE Dynamics() file.c`` (see :meth:`Numerics.code`)."""
+        return self.numerics.code(kind, *args, **kw)
+
+    def input_value(self, name: str, unit_system: bool = False) -> Any:
+        """Autolev ``Input(X)`` (see :meth:`Numerics.input_value`)."""
+        return self.numerics.input_value(name, unit_system)
+
+    def units(self, a: str, b: str) -> Any:
+        """Autolev ``Units(a, b)`` (see :meth:`Numerics.units`)."""
+        return self.numerics.units(a, b)
+
+    @property
+    def jobs(self) -> list:
+        """The recorded ``CODE`` jobs, in script order."""
+        return self.numerics.jobs
+
+    @property
+    def inputs(self) -> dict:
+        """The ``Input`` values recorded so far (upper-case names)."""
+        return self.numerics.inputs
+
+    def run(self, values: Mapping[str, Any] | None = None, /, **overrides: Any):
+        """Perform the script's ``CODE`` job (see :meth:`Numerics.run`)."""
+        return self.numerics.run(values, **overrides)
+
+    def ode_function(
+        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+    ) -> tuple:
+        """``(f, y0, names)`` for ``solve_ivp`` (see
+        :meth:`Numerics.ode_function`)."""
+        return self.numerics.ode_function(values, **overrides)
+
+    def run_job(self, job: Any, values: Mapping[str, Any] | None = None) -> Any:
+        """Perform one recorded job with optional overrides."""
+        return self.numerics.run_job(job, values)
+
+    def main(self, source_lines: Any, argv: Any = None) -> int:
+        """The ``python module.py`` entry point (see :mod:`.cli`)."""
+        from .cli import main
+
+        return main(self, source_lines, argv)
 
     # ------------------------------------------------------------ mapping API
 
