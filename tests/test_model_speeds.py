@@ -132,7 +132,7 @@ def test_each_declaration_style_gives_the_pendulum(style, tmp_path):
     theta = mod.al.symbol(theta_name)
     u = mod.al.symbol(speed)
     G, L, M, I = (mod.al.symbol(k) for k in ("G", "L", "M", "I"))  # noqa: E741
-    assert mod.al._speeds() == [u]
+    assert mod.al.model._speeds() == [u]
     zero = mod.AUTOLEV["ZERO"]
     assert zero.shape == (1, 1)
     a = sp.Symbol("a")  # u'

@@ -1,6 +1,7 @@
 """Physical entities and Kane's method (tutorial §3, §4.4-4.5, §5.2-5.9).
 
-:class:`MechanicsMixin` adds the physics commands to :class:`Workspace`.
+:class:`Model` holds the physics of a script; the :class:`Workspace` offers
+its commands (:data:`MODEL_COMMANDS`) to generated modules.
 
 Objects.  A frame or body *is* its ``sympy.physics.vector.ReferenceFrame``
 (named with the Autolev name, ``A1>`` is ``A.x``); points, particles and mass
@@ -47,7 +48,7 @@ from sympy.physics.vector import (
 from . import kinematics as kin
 from .kane import arrange, solve_speeds
 
-__all__ = ["MechanicsMixin"]
+__all__ = ["Model", "MODEL_COMMANDS"]
 
 t = dynamicsymbols._t
 
@@ -95,31 +96,30 @@ def _undef(label: str) -> KeyError:
     return KeyError(f"{label} is not defined")
 
 
-class MechanicsMixin:
-    """Frames, bodies, points, kinematics, mass, loads and Kane's method."""
+class Model:
+    """Frames, bodies, points, kinematics, mass, loads and Kane's method of
+    one script: the workspace's ``model`` part.
 
-    # ------------------------------------------------------------ registry
+    ``ws`` is the script's name table (declarations, right-hand sides,
+    settings and responses); the model reads and writes names through it."""
 
-    @property
-    def _mech(self) -> _State:
-        st = self.__dict__.get("_mech_state")
-        if st is None:
-            st = self.__dict__["_mech_state"] = _State()
-        return st
+    def __init__(self, ws: Any) -> None:
+        self.ws = ws
+        self._mech = _State()
 
     def _new_point(self, name: str, kind: str = "point") -> Point:
         st = self._mech
         p = Point(name.upper())
         st.points[name.upper()] = p
         st.edges.setdefault(p, {})
-        self._declare(name, kind, p)
+        self.ws._declare(name, kind, p)
         return p
 
     def _new_frame(self, name: str, kind: str) -> ReferenceFrame:
         st = self._mech
         f = ReferenceFrame(name.upper())
         st.frames[name.upper()] = f
-        self._declare(name, kind, f)
+        self.ws._declare(name, kind, f)
         origin = self._new_point(name.upper() + "O", "point")
         st.fixed_in[origin] = f
         return f
@@ -183,7 +183,7 @@ class MechanicsMixin:
         return n
 
     def _scalar(self, value: Any) -> Any:
-        return self.normalize(value)
+        return self.ws.normalize(value)
 
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
@@ -282,21 +282,21 @@ class MechanicsMixin:
         properties (``value`` already normalized) and respond with ``label``."""
         st = self._mech
         if isinstance(value, Vector | Dyadic):
-            value = kin.vmap(value, self.normalize)
+            value = kin.vmap(value, self.ws.normalize)
         if kind == "DCM":
             a, b = objs
             m = sp.Matrix(value)
             if m.shape != (3, 3):
                 raise ValueError(f"{label} must be a 3x3 matrix")
             b.orient_explicit(a, m)
-            self.respond(label, m, line=line)
+            self.ws.respond(label, m, line=line)
             return m
         if kind == "INERTIA":
             body, p = objs
             value = _as_dyadic(value)
             b = self._body(body)
             b.inertia, b.inertia_point = value, p
-            self.respond(label, value, line=line)
+            self.ws.respond(label, value, line=line)
             return value
         value = kin.as_vector(value)
         if kind == "POS":
@@ -315,11 +315,11 @@ class MechanicsMixin:
             st.forces[objs[0]] = value
         elif kind == "TORQUE":
             st.torques[objs[0]] = value
-        self.respond(label, value, line=line)
+        self.ws.respond(label, value, line=line)
         return value
 
     def _set(self, kind: str, objs: list, value: Any, label: str, line: Any) -> Any:
-        value = self.normalize(value, rearrange=self.settings.factoring)
+        value = self.ws.normalize(value, rearrange=self.ws.settings.factoring)
         return self._set_form(kind, objs, value, label, line)
 
     # Autolev's assignments to syntactical forms, named after the sympy
@@ -441,7 +441,7 @@ class MechanicsMixin:
     def _actual(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         keep = list(keep)
-        return kin.vmap(x, self._resolver(keep))
+        return kin.vmap(x, self.ws._resolver(keep))
 
     def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
         v = self._actual(v)
@@ -537,7 +537,7 @@ class MechanicsMixin:
 
         The axis may also be a vector (``Simprot(N, A, N1>, X)``, or any
         direction): B is rotated by ``angle`` about it, right-handed."""
-        axis = self.val(axis)
+        axis = self.ws.val(axis)
         if isinstance(axis, Vector):
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
@@ -549,7 +549,7 @@ class MechanicsMixin:
             m = kin.simprot_dcm(int(axis), angle)
             unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
             b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
-        self.respond(f"{a.name}_{b.name}", m, line=line)
+        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     def dircos(
@@ -565,7 +565,7 @@ class MechanicsMixin:
             b.orient_space_fixed(a, tuple(qs), kind[5:])
         else:
             self._orient(a, b, m)
-        self.respond(f"{a.name}_{b.name}", m, line=line)
+        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     def _dcm_angvel(self, a, b, kind, qs) -> list:
@@ -595,11 +595,11 @@ class MechanicsMixin:
         ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
         if kind is None:
             w = self._kinematic(self.ang_vel(b, a))
-            self.respond(f"W_{b.name}_{a.name}>", w, line=line)
+            self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
             return w
         w = self._kinematic(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
         b.set_ang_vel(a, w)
-        self.respond(f"W_{b.name}_{a.name}>", w, line=line)
+        self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
 
     def kindiffs(
@@ -632,7 +632,7 @@ class MechanicsMixin:
         out = []
         for q, r in zip(qs, rates, strict=True):
             r = kin.simplify_small(r)
-            out.append(self.assign(self.name_of(q) + "'", r, line=line))
+            out.append(self.ws.assign(self.ws.name_of(q) + "'", r, line=line))
         return tuple(out)
 
     # ------------------------------------------------- velocity formulas
@@ -726,7 +726,7 @@ class MechanicsMixin:
         table[(p, n)] = v
         if which == "V":
             p.set_vel(n, v)
-        self.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
+        self.ws.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v
 
     # ------------------------------------------------ vector operations
@@ -747,7 +747,7 @@ class MechanicsMixin:
         """``Represent(x, A)``: a vector -> the row matrix of its A measure
         numbers, a dyadic -> the 3x3 matrix; and back: a 3-element matrix ->
         vector, a 3x3 matrix -> dyadic."""
-        x = self.val(x)
+        x = self.ws.val(x)
         if isinstance(x, Vector):
             return sp.Matrix(
                 [[kin.tidy(x.dot(e)) for e in (frame.x, frame.y, frame.z)]]
@@ -765,7 +765,7 @@ class MechanicsMixin:
 
     def matrix(self, frame: ReferenceFrame, x: Any) -> sp.Matrix:
         """``Matrix(A, v>)``: see :meth:`represent`."""
-        x = self.val(x)
+        x = self.ws.val(x)
         if not isinstance(x, Vector | Dyadic) and x != 0:
             raise TypeError("Matrix(A, x) needs a vector or dyadic")
         return self.represent(x, frame)
@@ -773,13 +773,13 @@ class MechanicsMixin:
     def vector(self, frame: ReferenceFrame, *m: Any) -> Vector:
         """``Vector(A, x, y, z)`` or ``Vector(A, M)``."""
         if len(m) == 1:
-            m = list(self.val(m[0]))
+            m = list(self.ws.val(m[0]))
         return kin.frame_vector(frame, m)
 
     def dyadic(self, frame: ReferenceFrame, *m: Any) -> Dyadic:
         """``Dyadic(A, M)`` (3x3), nine scalars (row by row) or three (diagonal)."""
         if len(m) == 1:
-            mat = sp.Matrix(self.val(m[0]))
+            mat = sp.Matrix(self.ws.val(m[0]))
         elif len(m) == 9:
             mat = sp.Matrix(3, 3, list(m))
         elif len(m) == 3:
@@ -791,28 +791,28 @@ class MechanicsMixin:
         return kin.frame_dyadic(frame, mat)
 
     def dot(self, a: Any, b: Any) -> Any:
-        a, b = self.val(a), self.val(b)
+        a, b = self.ws.val(a), self.ws.val(b)
         if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
             return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
         return kin.tidy(kin.vdot(a, b))
 
     def cross(self, a: Any, b: Any) -> Any:
-        return kin.vmap(kin.vcross(self.val(a), self.val(b)), kin.tidy)
+        return kin.vmap(kin.vcross(self.ws.val(a), self.ws.val(b)), kin.tidy)
 
     def magsq(self, v: Any) -> Any:
-        v = self.val(v)
+        v = self.ws.val(v)
         if isinstance(v, Vector):
             return kin.tidy(v.dot(v))
         return sp.sympify(v) ** 2
 
     def mag(self, v: Any) -> Any:
-        v = self.val(v)
+        v = self.ws.val(v)
         if isinstance(v, Vector):
             return sp.sqrt(self.magsq(v))
         return sp.Abs(sp.sympify(v))
 
     def unitvec(self, v: Any) -> Vector:
-        v = self.val(v)
+        v = self.ws.val(v)
         m = self.mag(v)
         if m == 0:
             raise ValueError("UnitVec of the zero vector")
@@ -829,11 +829,13 @@ class MechanicsMixin:
 
     def vector_matrix(self, rows: list) -> kin.VectorMatrix:
         """A matrix literal of vectors, ``[V1>; V2>]`` (an argument of Dot)."""
-        return kin.VectorMatrix([[kin.as_vector(self.val(e)) for e in r] for r in rows])
+        return kin.VectorMatrix(
+            [[kin.as_vector(self.ws.val(e)) for e in r] for r in rows]
+        )
 
     def trace(self, y: Any) -> Any:
         """``Trace(A)`` of a matrix or a dyadic."""
-        y = self.val(y)
+        y = self.ws.val(y)
         if isinstance(y, Dyadic):
             if not y.args:
                 return sp.Integer(0)
@@ -1003,7 +1005,7 @@ class MechanicsMixin:
     def motion_variables(self, *names: str) -> Any:
         """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
         that also describe the motion (see :meth:`_speeds`)."""
-        out = self.variables(*names)
+        out = self.ws.variables(*names)
         objs = out if isinstance(out, tuple) else (out,)
         st = self._mech
         st.motion.extend(o for o in objs if o not in st.motion)
@@ -1024,7 +1026,7 @@ class MechanicsMixin:
         if self._mech.speeds is not None:
             return list(self._mech.speeds)
         found = []
-        for name, entry in self._names.items():
+        for name, entry in self.ws._names.items():
             m = _SPEED.match(name)
             if m and entry.kind == "variable":
                 found.append((int(m.group(1)), entry.obj))
@@ -1032,7 +1034,7 @@ class MechanicsMixin:
             return [obj for _, obj in sorted(found, key=lambda x: x[0])]
         st = self._mech
         solved = set(st.dependent) | set(st.auxiliary)
-        rhs = self._rhs
+        rhs = self.ws._rhs
         kin_eqs = [rhs[dq] for dq in self._kinematical_equations()]
         out = []
         for q in st.motion:
@@ -1041,7 +1043,7 @@ class MechanicsMixin:
                 continue
             if dq in rhs and dq not in solved:
                 continue
-            if self._names[self.name_of(q)].order == 1 or any(
+            if self.ws._names[self.ws.name_of(q)].order == 1 or any(
                 sp.sympify(e).has(q) for e in kin_eqs
             ):
                 out.append(q)
@@ -1055,7 +1057,7 @@ class MechanicsMixin:
         terms of the generalized speeds."""
         speeds = set(self._speeds())
         table = {
-            dq: self._rhs[dq]
+            dq: self.ws._rhs[dq]
             for dq in self._kinematical_equations()
             if dq.expr not in speeds and dq not in speeds
         }
@@ -1068,10 +1070,10 @@ class MechanicsMixin:
         not) that have a right-hand side while ``Q`` itself has none: the
         kinematical differential equations ``Q' = ...``, in declaration
         order."""
-        rhs = self._rhs
+        rhs = self.ws._rhs
         solved = set(self._mech.dependent) | set(self._mech.auxiliary)
         out = []
-        for entry in self._names.values():
+        for entry in self.ws._names.values():
             q = entry.obj
             if entry.kind != "variable" or q is t or q in rhs:
                 continue
@@ -1123,13 +1125,13 @@ class MechanicsMixin:
         respect to each independent/auxiliary speed).  One speed gives one
         vector; several give a tuple of vectors, in order."""
         speeds = list(speeds) or self._fr_speeds()
-        out = [kin.tidy_vector(x) for x in self._partials(self.val(v), speeds)]
+        out = [kin.tidy_vector(x) for x in self._partials(self.ws.val(v), speeds)]
         return out[0] if len(out) == 1 else tuple(out)
 
     def remainder(self, v: Any) -> Vector:
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
         speeds = self._fr_speeds()
-        v = self._actual(self.val(v), speeds)
+        v = self._actual(self.ws.val(v), speeds)
         return kin.tidy_vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
         )
@@ -1203,7 +1205,7 @@ class MechanicsMixin:
                 add(tq, self._partials(self.ang_vel(o, n), speeds))
         if st.massive and not all(moved):
             still = [
-                self.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
+                self.ws.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
             ]
             raise ValueError(
                 "FrStar(): no velocity or angular velocity of a massive object"
@@ -1225,25 +1227,25 @@ class MechanicsMixin:
         if which not in ("DEPENDENT", "AUXILIARY"):
             raise ValueError("Constrain takes DEPENDENT[...] or AUXILIARY[...]")
         st = self._mech
-        mat = self._values.get(which)
+        mat = self.ws._values.get(which)
         if not isinstance(mat, sp.MatrixBase):
             raise ValueError(f"Constrain: {which} has not been assigned")
         speeds = [sp.sympify(u) for u in speeds]
-        eqs = [self.resolve(e, keep=self._speeds()) for e in mat]
+        eqs = [self.ws.resolve(e, keep=self._speeds()) for e in mat]
         sols = solve_speeds(eqs, speeds)
         gens = self._gens()
         out = []
         for u, s in zip(speeds, sols, strict=True):
-            out.append(self.assign(self.name_of(u), s, line=line))
+            out.append(self.ws.assign(self.ws.name_of(u), s, line=line))
         for u, s in zip(speeds, sols, strict=True):
             ds = self._dt(s, self._mech.newtonian)
             ds = kin.tidy(ds, gens)
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
-            name = self.name_of(u)
+            name = self.ws.name_of(u)
             base = name.rstrip("'")
-            if self._names[base].order > len(name) - len(base):
-                self.assign(name + "'", ds, line=line)
+            if self.ws._names[base].order > len(name) - len(base):
+                self.ws.assign(name + "'", ds, line=line)
         target = st.dependent if which == "DEPENDENT" else st.auxiliary
         for u in speeds:
             if u not in target:
@@ -1257,12 +1259,12 @@ class MechanicsMixin:
         derivatives (named quantities are kept)."""
         speeds = set(self._speeds())
         table = dict(self._mech.speed_dt)
-        for k, v in self._rhs.items():
+        for k, v in self.ws._rhs.items():
             if k in speeds:
                 table[k] = v
             elif isinstance(k, sp.Derivative):
-                name = self._entries_by_obj.get(k.expr)
-                if name is not None and self._names[name].kind == "variable":
+                name = self.ws._entries_by_obj.get(k.expr)
+                if name is not None and self.ws._names[name].kind == "variable":
                     table[k] = v
         for _ in range(50):
             new = expr.xreplace(table)
@@ -1285,7 +1287,7 @@ class MechanicsMixin:
         solution (so the constraint forces cancel), and, when force measure
         numbers are named, solved for them (assigned as their RHS)."""
         st = self._mech
-        zero = self._values.get("ZERO")
+        zero = self.ws._values.get("ZERO")
         if not isinstance(zero, sp.MatrixBase):
             raise ValueError("Kane: ZERO has not been assigned")
         speeds = st.fr_speeds if st.fr_speeds is not None else self._fr_speeds()
@@ -1297,13 +1299,13 @@ class MechanicsMixin:
         aux = [u for u in speeds if u in st.auxiliary]
         ind = [u for u in speeds if u not in st.auxiliary]
         z = dict(
-            zip(speeds, (self._speed_subs(self.val(r)) for r in rows), strict=True)
+            zip(speeds, (self._speed_subs(self.ws.val(r)) for r in rows), strict=True)
         )
         combined = []
         for i in ind:
             row = z[i]
             for x in aux:
-                c = sp.diff(self.resolve(self._rhs.get(x, x)), i)
+                c = sp.diff(self.ws.resolve(self.ws._rhs.get(x, x)), i)
                 if c != 0:
                     row += c * z[x]
             combined.append(row)
@@ -1318,7 +1320,7 @@ class MechanicsMixin:
         accels = [sp.Derivative(u, t) for u in ind]
         gens = self._gens()
         arranged = sp.Matrix(arrange(cleaned, accels, gens))
-        self.update("ZERO", arranged, line=line)
+        self.ws.update("ZERO", arranged, line=line)
         sols = ()
         if forces:
             eqs = [z[x] for x in aux]
@@ -1328,7 +1330,7 @@ class MechanicsMixin:
                 )
             sols = solve_speeds(eqs, forces)
             for f, s in zip(forces, sols, strict=True):
-                self.assign(self.name_of(f), kin.tidy(s, gens), line=line)
+                self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
         st.kane = {
             "speeds": ind,
             "dependent": list(st.dependent),
@@ -1349,7 +1351,7 @@ class MechanicsMixin:
             q = dq.expr
             if q in checks or q in keep or dq in keep:
                 continue
-            rhs = self._actual(self._rhs[dq], keep)
+            rhs = self._actual(self.ws._rhs[dq], keep)
             if sp.sympify(rhs).has(*keep):
                 out.append((q, rhs))
         return out
@@ -1478,13 +1480,13 @@ class MechanicsMixin:
         forces and torques; it stays constant along exact solutions."""
         name = "NICHECK_WORK"
         k = 1
-        while name in self._names:
+        while name in self.ws._names:
             k += 1
             name = f"NICHECK_WORK{k}"
         work = dynamicsymbols(name, real=True)
         self._mech.checks.append(work)
-        self._declare(name, "variable", work, order=1)
-        self._rhs[sp.Derivative(work, t)] = self.power()
+        self.ws._declare(name, "variable", work, order=1)
+        self.ws._rhs[sp.Derivative(work, t)] = self.power()
         return self.ke() - work
 
 
@@ -1504,3 +1506,84 @@ def _as_dyadic(value: Any) -> Dyadic:
     if value == 0:
         return Dyadic(0)
     raise TypeError(f"expected a dyadic, not {value!r}")
+
+
+#: The commands a :class:`Model` answers for its workspace (``al.simprot``,
+#: ``al.v2pts``, ``al.fr``...): generated modules call them on the workspace.
+MODEL_COMMANDS = frozenset(
+    {
+        "newtonian",
+        "frames",
+        "bodies",
+        "particles",
+        "points",
+        "point",
+        "frame",
+        "set_mass",
+        "set_inertia",
+        "set_pos",
+        "set_vel",
+        "set_acc",
+        "set_ang_vel",
+        "set_ang_acc",
+        "set_force",
+        "set_torque",
+        "set_dcm",
+        "set_inertia_about",
+        "pos",
+        "vel",
+        "acc",
+        "ang_vel",
+        "ang_acc",
+        "dcm",
+        "simprot",
+        "dircos",
+        "angvel",
+        "kindiffs",
+        "v2pts",
+        "a2pts",
+        "v1pt",
+        "a1pt",
+        "express",
+        "represent",
+        "matrix",
+        "vector",
+        "dyadic",
+        "dot",
+        "cross",
+        "magsq",
+        "mag",
+        "unitvec",
+        "unit_dyadic",
+        "vector_matrix",
+        "trace",
+        "mass_of",
+        "cm",
+        "central_inertia",
+        "inertia_dyadic",
+        "inertia",
+        "force_on",
+        "torque_on",
+        "add_force",
+        "add_torque",
+        "force_between",
+        "torque_between",
+        "gravity",
+        "motion_variables",
+        "partials",
+        "remainder",
+        "fr",
+        "tstar",
+        "frstar",
+        "constrain",
+        "kane",
+        "kane_inputs",
+        "kd_eqs",
+        "kanes_method",
+        "ke",
+        "momentum",
+        "gyrostat",
+        "power",
+        "nicheck",
+    }
+)

@@ -31,7 +31,7 @@ from sympy.physics.mechanics import dynamicsymbols
 
 from . import algebra, matrices
 from .kinematics import doit_derivatives, is_small, one_or_tuple
-from .mechanics import MechanicsMixin
+from .mechanics import MODEL_COMMANDS, Model
 from .names import Key, parse_key
 from .numerics import Numerics
 from .settings import Response, Settings
@@ -55,7 +55,7 @@ class _Entry:
     extra: dict = field(default_factory=dict)
 
 
-class Workspace(MechanicsMixin, Mapping):
+class Workspace(Mapping):
     """Names, values and responses of one Autolev script.
 
     The workspace is a read-only mapping from Autolev spellings to current
@@ -73,11 +73,26 @@ class Workspace(MechanicsMixin, Mapping):
         self._saves: list[str] = []
         self._exit_line: int | None = None
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
+        #: Frames, points, bodies, loads and Kane's method (mechanics.py).
+        self.model = Model(self)
         #: Inputs, Outputs, UnitSystem and CODE jobs (``run()``).
         self.numerics = Numerics(self)
         self._declare("T", "variable", t)
         self._declare("PI", "constant", sp.pi)
         self._declare("I", "imaginary", sp.I)
+
+    # ------------------------------------------------ the model (mechanics.py)
+
+    def __getattr__(self, name: str) -> Any:
+        """The model's commands (:data:`MODEL_COMMANDS`: ``al.simprot``,
+        ``al.fr``...) are answered by :attr:`model`."""
+        model = self.__dict__.get("model")
+        if model is not None and name in MODEL_COMMANDS:
+            return getattr(model, name)
+        raise AttributeError(f"{type(self).__name__!r} has no attribute {name!r}")
+
+    def __dir__(self) -> list[str]:
+        return sorted(set(super().__dir__()) | MODEL_COMMANDS)
 
     # ------------------------------------------- numerical jobs (numerics.py)
 
@@ -242,7 +257,7 @@ class Workspace(MechanicsMixin, Mapping):
     def value(self, name: str) -> Any:
         """The current value of an Autolev name, element or derivative."""
         key = parse_key(name)
-        form = self._form_value(key)
+        form = self.model._form_value(key)
         if form is not NotImplemented:
             return form
         if key.name in self._values:
@@ -348,7 +363,7 @@ class Workspace(MechanicsMixin, Mapping):
     ) -> Any:
         key = parse_key(target)
         value = self.normalize(value, rearrange=rearrange)
-        form = self._assign_form(key, value, line=line)
+        form = self.model._assign_form(key, value, line=line)
         if form is not NotImplemented:
             return form
         if key.index:
@@ -552,7 +567,7 @@ class Workspace(MechanicsMixin, Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [replace(r, value=self._display(r.value)) for r in self.responses]
+        shown = [replace(r, value=self.model._display(r.value)) for r in self.responses]
         return transcript_lines(lines, shown)
 
     def print_transcript(self, source: Iterable[str]) -> None:
@@ -587,7 +602,7 @@ class Workspace(MechanicsMixin, Mapping):
         row i, column j is the derivative of element i of ``y`` by element j.
         """
         if frame is not None or _is_vectorial(self.val(y)):
-            return self._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
+            return self.model._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
         if isinstance(x, sp.MatrixBase):
             xs = list(x)
             y = self.resolve(self.val(y), keep=xs)
@@ -601,7 +616,7 @@ class Workspace(MechanicsMixin, Mapping):
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides."""
         if frame is not None or _is_vectorial(self.val(y)):
-            return self._vector_dt(self.resolve(self.val(y)), frame)
+            return self.model._vector_dt(self.resolve(self.val(y)), frame)
         y = self.resolve(self.val(y))
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: sp.diff(e, t))

@@ -74,8 +74,8 @@ def kanes_method(inputs: KaneInputs) -> KanesMethod:
     return km
 
 
-def kane_inputs(ws: Any) -> KaneInputs:
-    """The model of a workspace ``ws`` (an Autolev script) as
+def kane_inputs(model: Any) -> KaneInputs:
+    """A script's model (``al.model``, see :class:`~al2py_runtime.mechanics.Model`) as
     :class:`KaneInputs`: the one place where the script becomes
     ``KanesMethod``'s inputs.
 
@@ -83,14 +83,14 @@ def kane_inputs(ws: Any) -> KaneInputs:
     ones, with every right-hand side substituted except the speeds; the
     sympy points and frames of the script are given these velocities
     (``mod.Q.vel(mod.N)`` is ``V_Q_N>``)."""
-    n = ws._n()
-    st = ws._mech
+    n = model._n()
+    st = model._mech
     if st.gyrostat:
         raise ValueError(
             "kanes_method(): Gyrostat(FRSTAR, ...) terms have no sympy"
             " RigidBody; the model would miss the rotor"
         )
-    speeds = ws._speeds()
+    speeds = model._speeds()
     if not speeds:
         raise ValueError(
             "kanes_method(): there are no generalized speeds; declare them"
@@ -102,53 +102,55 @@ def kane_inputs(ws: Any) -> KaneInputs:
     for u in speeds:
         if isinstance(u, sp.Derivative):
             q = u.expr
-            new = dynamicsymbols(f"{ws.name_of(q)}_U", real=True)
+            new = dynamicsymbols(f"{model.ws.name_of(q)}_U", real=True)
             swap[sp.Derivative(q, (t, 2))] = sp.Derivative(new, t)
             swap[u] = new
-            names[new] = ws.name_of(u)
+            names[new] = model.ws.name_of(u)
         else:
-            names[u] = ws.name_of(u)
+            names[u] = model.ws.name_of(u)
 
     # Constraint forces solved by Kane(F1, F2) stay unknowns: their
     # right-hand sides hold the accelerations.
     keep = [*speeds, *(st.kane["forces"] if st.kane else ())]
 
     def fix(x: Any) -> Any:
-        x = ws._actual(x, keep)
+        x = model._actual(x, keep)
         return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
 
     # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
     # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
-    zero_aux = [u for u in st.auxiliary if ws.resolve(ws._rhs.get(u, u)) == 0]
+    zero_aux = [
+        u for u in st.auxiliary if model.ws.resolve(model.ws._rhs.get(u, u)) == 0
+    ]
     solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
     solved = [u for u in solved if u not in zero_aux]
     us = [swap.get(u, u) for u in speeds]
     dep = [swap.get(u, u) for u in solved]
     aux = [swap.get(u, u) for u in zero_aux]
     ind = [u for u in us if u not in dep and u not in aux]
-    coords = ws._coordinates(speeds)
+    coords = model._coordinates(speeds)
     q_ind = [q for q, _rhs in coords]
     kd_eqs = [sp.Derivative(q, t) - fix(rhs) for q, rhs in coords]
     for u, new in swap.items():
         if isinstance(u, sp.Derivative) and u.derivative_count == 1:
             q_ind.append(u.expr)
             kd_eqs.append(u - new)
-    constraints = [swap.get(u, u) - fix(ws._rhs[u]) for u in solved]
+    constraints = [swap.get(u, u) - fix(model.ws._rhs[u]) for u in solved]
     bodies = []
     for o in st.massive:
-        m = fix(ws._mass(o, strict=False))
-        p = ws._center(o)
+        m = fix(model._mass(o, strict=False))
+        p = model._center(o)
         # Accelerations are the velocities' derivatives with every speed
         # kept (an Autolev A2pts result has dependent speeds' derivatives
         # substituted, which KanesMethod's constraints would count twice).
-        v = fix(ws.vel(p, n))
+        v = fix(model.vel(p, n))
         p.set_vel(n, v)
         p.set_acc(n, v.dt(n))
         if isinstance(o, ReferenceFrame):
-            w = fix(ws.ang_vel(o, n))
+            w = fix(model.ang_vel(o, n))
             o.set_ang_vel(n, w)
             o.set_ang_acc(n, w.dt(o))
-            inertia = fix(ws.central_inertia(o))
+            inertia = fix(model.central_inertia(o))
             if inertia == 0:
                 inertia = Dyadic(0)
             bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
@@ -157,11 +159,11 @@ def kane_inputs(ws: Any) -> KaneInputs:
     loads = []
     for p, f in st.forces.items():
         if f != Vector(0):
-            p.set_vel(n, fix(ws.vel(p, n)))
+            p.set_vel(n, fix(model.vel(p, n)))
             loads.append((p, fix(f)))
     for b, tq in st.torques.items():
         if tq != Vector(0):
-            b.set_ang_vel(n, fix(ws.ang_vel(b, n)))
+            b.set_ang_vel(n, fix(model.ang_vel(b, n)))
             loads.append((b, fix(tq)))
     return KaneInputs(
         frame=n,
