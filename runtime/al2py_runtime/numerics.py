@@ -32,18 +32,17 @@ from typing import Any
 
 import sympy as sp
 
-from .jobs import (
+from .jobs import ode_function, run_job
+from .records import (
     KINDS,
     InputValue,
     Job,
     NumericsError,
     OutputItem,
     OutputSpec,
-    Result,
     normalize_name,
-    ode_function,
-    run_job,
 )
+from .tables import Result
 from .units import UnitSystem, units_factor
 
 __all__ = ["Numerics", "NumericsError", "Result"]
