@@ -220,3 +220,55 @@ def test_double_pendulum_matches_sympy_kanes_method(tmp_path):
         for k, name in ((2, "OMEGA1'"), (3, "OMEGA2'")):
             ours = complex(mod.al.resolve(mod.AUTOLEV[name]).subs(point).evalf())
             assert abs(ours - complex(xdot[k])) <= 1e-9 * max(1, abs(ours)), name
+
+
+DISC = """
+Newtonian N
+Frames A, B
+Bodies C
+Points CN
+Constants M, G, R, I, J
+Variables X', Y', PSI', PHI', TH'
+MotionVariables' W{3}'
+Mass C=M
+Inertia C, I, J, I
+Simprot(N, A, 3, PSI)
+Simprot(A, B, 1, PHI)
+Simprot(B, C, 2, TH)
+W_C_N> = W1*B1> + W2*B2> + W3*B3>
+WQ> = PSI'*A3> + PHI'*B1> + TH'*B2>
+KD = [Dot(WQ> - W_C_N>, B1>); Dot(WQ> - W_C_N>, B2>); Dot(WQ> - W_C_N>, B3>)]
+Solve(KD, PSI', PHI', TH')
+P_CN_CO> = -R*B3>
+V_CO_N> = Cross(W_C_N>, P_CN_CO>)
+VQ> = X'*N1> + Y'*N2> + Cross(PSI'*A3> + PHI'*B1>, -R*B3>)
+E1 = Dot(VQ> - V_CO_N>, N1>)
+E2 = Dot(VQ> - V_CO_N>, N2>)
+Solve([E1; E2], X', Y')
+Gravity(G*A3>)
+Zero = Fr() + FrStar()
+"""
+
+
+def test_rolling_disc_matches_sympy_kanes_method(tmp_path):
+    """A rolling disc (RollingDiscKane.al's style): speeds W1..W3 declared as
+    motion variables, coordinates from solved kinematical equations."""
+    mod = _load(DISC, tmp_path, "rolling_disc")
+    ws = [mod.al.symbol(f"W{k}") for k in (1, 2, 3)]
+    assert mod.al.model._speeds() == ws
+    km = mod.al.kanes_method()
+    names = ["X", "Y", "PSI", "PHI", "TH"]
+    assert list(km.q) == [mod.al.symbol(n) for n in names]
+    assert list(km.u) == ws
+    accels = [sp.Derivative(w, t) for w in ws]
+    zero = sp.Matrix([mod.al.resolve(e) for e in mod.AUTOLEV["ZERO"]])
+    coef = zero.jacobian(accels)
+    rest = zero.subs(dict.fromkeys(accels, 0))
+    for point in _points(mod, ["M", "G", "R", "I", "J", *names, "W1", "W2", "W3"]):
+        mm = km.mass_matrix_full.subs(point).evalf()
+        ff = km.forcing_full.subs(point).evalf()
+        xdot = mm.LUsolve(ff)
+        ours = coef.subs(point).evalf().LUsolve(-rest.subs(point).evalf())
+        for k in range(3):
+            a, b = complex(ours[k]), complex(xdot[5 + k])
+            assert abs(a - b) <= 1e-9 * max(1, abs(b)), (k, a, b)
