@@ -31,7 +31,8 @@ class NumericsError(ValueError):
 
 #: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
 #: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
-#: TINITIAL)/100, PRINTINT = INTEGSTP).
+#: TINITIAL)/100, PRINTINT = 1).  PRINTINT counts integration steps: a row
+#: is written every INTEGSTP*PRINTINT.
 INTEGRATION_DEFAULTS: dict[str, float | None] = {
     "TINITIAL": 0.0,
     "TFINAL": None,
@@ -70,10 +71,16 @@ class OutputItem:
 
 @dataclass(frozen=True)
 class OutputSpec:
-    """One ``Output`` statement: its items, in order."""
+    """One ``Output`` statement: its items, in order.
+
+    ``encoded`` marks the quantities an ``Encode`` statement lists: computed
+    at every output row like an Output, kept in the result, never written
+    to a file.
+    """
 
     items: tuple[OutputItem, ...]
     line: int | None = None
+    encoded: bool = False
 
 
 @dataclass
@@ -101,6 +108,8 @@ class Job:
     #: initial values of variables the script never inputs (``NiCheck``'s
     #: work variable starts at 0), by name
     initials: dict[str, float] = field(default_factory=dict)
+    #: shapes of the ``Encode``d matrices (their elements are output items)
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property

@@ -1,14 +1,59 @@
-"""Autolev settings and recorded responses (shared by the workspace, the
-transcript and the numerical jobs; imports nothing else of the runtime)."""
+"""Autolev's settings: the one table both the runtime and the transpiler use.
+
+Each setting takes a whole number (``Digits 7``), a number
+(``AutoEpsilon 1.0E-7``) or one of a few words (``AutoRHS ALL``).
+
+>>> s = Settings()
+>>> s.set("Digits", 5); s.digits
+5
+>>> check_setting("OVERWRITE", "ALL") is None
+True
+>>> check_setting("DEGREES", "MAYBE")
+'DEGREES takes ON, OFF'
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["Settings", "Response"]
+__all__ = ["SETTINGS", "Settings", "Response", "check_setting"]
 
-_ON_OFF = {"ON": True, "OFF": False}
+#: Name -> "int" (1 to 17), "number", or the words it takes.
+SETTINGS: dict[str, tuple[str, ...] | str] = {
+    "DIGITS": "int",
+    "DEGREES": ("ON", "OFF"),
+    "AUTORHS": ("ON", "OFF", "ALL"),
+    "FACTORING": ("ON", "OFF"),
+    "AUTOEPSILON": "number",
+    "COMPLEX": ("ON", "OFF", "AUTO"),
+    "AUTOZ": ("ON", "OFF"),
+    # ALL: overwrite every file without asking (Autolev asked per file).
+    "OVERWRITE": ("ON", "OFF", "ALL"),
+    "AUTOEXPRESS": ("ON", "OFF"),
+    # Interactive conveniences; accepted and recorded, nothing to do in batch.
+    "BEEPSOUND": ("ON", "OFF"),
+    "PAUSE": "number",
+}
+
+
+def check_setting(name: str, value: str | None) -> str | None:
+    """A plain-English message if ``name value`` is not a valid setting."""
+    allowed = SETTINGS.get(name.upper())
+    if allowed is None:
+        return f"setting '{name}' is not supported yet"
+    word = (value or "").upper()
+    if allowed == "int":
+        if not word.isdigit() or not 1 <= int(word) <= 17:
+            return f"{name} takes a whole number from 1 to 17"
+    elif allowed == "number":
+        try:
+            float(word)
+        except ValueError:
+            return f"{name} takes a number"
+    elif word not in allowed:
+        return f"{name} takes {', '.join(allowed)}"
+    return None
 
 
 @dataclass
@@ -22,36 +67,28 @@ class Settings:
     autoepsilon: float = 1.0e-7
     complex: str = "OFF"  # OFF | ON | AUTO
     autoz: bool = False
-    overwrite: bool = True
+    overwrite: str = "ON"  # ON | OFF | ALL
     autoexpress: bool = False
+    beepsound: bool = True
+    pause: float = 0.0
 
     def set(self, name: str, value: Any = None) -> None:
         """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
-        key = name.lower()
-        word = str(value).upper() if value is not None else "ON"
-        if key == "digits":
-            n = int(value)
-            if not 1 <= n <= 17:
-                raise ValueError(f"Digits must be between 1 and 17, not {n}")
-            self.digits = n
-        elif key == "autoepsilon":
-            self.autoepsilon = float(value)
-        elif key == "autorhs":
-            if word not in ("ON", "OFF", "ALL"):
-                raise ValueError(f"AutoRHS takes ON, OFF or ALL, not {value}")
-            self.autorhs = word
-        elif key == "complex":
-            if word not in ("ON", "OFF", "AUTO"):
-                raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
-            self.complex = word
-        elif key in ("beepsound", "pause"):
-            pass  # interactive conveniences: nothing to do in a batch run
-        elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
-            if word not in _ON_OFF:
-                raise ValueError(f"{name} takes ON or OFF, not {value}")
-            setattr(self, key, _ON_OFF[word])
+        key = name.upper()
+        text = str(value) if value is not None else "ON"
+        message = check_setting(key, text)
+        if message is not None:
+            raise ValueError(message)
+        kind = SETTINGS[key]
+        if kind == "int":
+            new: Any = int(text)
+        elif kind == "number":
+            new = float(text)
+        elif kind == ("ON", "OFF"):
+            new = text.upper() == "ON"
         else:
-            raise ValueError(f"unknown setting {name}")
+            new = text.upper()
+        setattr(self, key.lower(), new)
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ class Table:
     columns: list[Column]
     data: np.ndarray
     line: int | None = None
+    encoded: bool = False  # Encode's quantities (not written to a file)
 
     @property
     def names(self) -> list[str]:
@@ -69,12 +70,29 @@ class Result:
     notes: list[str] = field(default_factory=list)
     time_unit: str | None = None
     nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
+    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
+    #: shape (rows, m, n), one matrix per output row.
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+
+    def _encoded(self, key: str) -> np.ndarray:
+        m, n = self.encoded[key]
+        cols = [
+            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
+        ]
+        return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
+
+    @property
+    def written(self) -> list[Table]:
+        """The tables written to files (one per ``Output`` statement)."""
+        return [t for t in self.tables if not t.encoded]
 
     def __getitem__(self, name: str) -> np.ndarray:
         for table in self.tables:
             if name in table:
                 return table[name]
         key = normalize_name(name)
+        if key in self.encoded:
+            return self._encoded(key)
         for source in (self.solution, self.states):
             if key in source:
                 return source[key]
@@ -89,7 +107,7 @@ class Result:
 
     def files(self) -> list[str]:
         """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
-        return [f"{self.stem}.{table.number}" for table in self.tables]
+        return [f"{self.stem}.{table.number}" for table in self.written]
 
     def write(self, directory: str | Path = ".") -> list[Path]:
         """Write each table as ``STEM.n``: a ``%`` header naming columns and
@@ -98,7 +116,7 @@ class Result:
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
+        for table, name in zip(self.written, self.files(), strict=True):
             path = directory / name
             path.write_text(
                 format_table(table, self.digits, name, self.time_unit),
@@ -119,7 +137,7 @@ class Result:
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
+        for table, name in zip(self.written, self.files(), strict=True):
             cols = table.columns
             if len(cols) < 2 or len(table) == 0:
                 continue

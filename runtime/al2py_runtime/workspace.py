@@ -104,6 +104,20 @@ class Workspace(Mapping):
         """``Input A=1, QA=30 deg`` (see :class:`Numerics`)."""
         self.numerics.input(values, line=line)
 
+    def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
+        """``Units T=S, X=m`` (see :meth:`Numerics.units_of`)."""
+        self.numerics.units_of(units, line=line)
+
+    def encode(self, *names: str, line: int | None = None) -> None:
+        """``Encode A, B'`` (see :meth:`Numerics.encode`)."""
+        self.numerics.encode(*names, line=line)
+
+    def evaluate_name(
+        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+    ) -> Any:
+        """The named quantity as a number (see :meth:`Numerics.evaluate_name`)."""
+        return self.numerics.evaluate_name(name, values, **more)
+
     def output(self, items: Iterable[Any], *, line: int | None = None) -> None:
         """``Output T, X m`` (see :class:`Numerics`)."""
         self.numerics.output(items, line=line)
@@ -650,7 +664,12 @@ class Workspace(Mapping):
         """``Solve(A, x1, x2)``: solve linear equations and assign the unknowns."""
         from . import algebra
 
-        unknowns = list(unknowns)
+        # Solve(Zero, qdd): a matrix of unknowns stands for its elements.
+        unknowns = [
+            x
+            for u in unknowns
+            for x in (list(u) if isinstance(u, sp.MatrixBase) else [u])
+        ]
         if isinstance(eqs, sp.MatrixBase):
             eqs = sp.Matrix(eqs)
         else:

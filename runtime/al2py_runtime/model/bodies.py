@@ -147,11 +147,12 @@ class MassAndLoads:
         self.add_torque(a, -v)
         self.add_torque(b, v)
 
-    def gravity(self, vec: Any, *, line: int | None = None) -> None:
+    def gravity(self, vec: Any, *objs: Any, line: int | None = None) -> None:
         """``Gravity(G*N1>)``: adds mass*vec to every particle and mass center
-        (those whose mass has been declared)."""
+        (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
+        listed bodies and particles only."""
         vec = kin.as_vector(vec)
-        for o in self._mech.massive:
+        for o in self._objects(objs):
             m = self._mass(o, strict=False)
             if m != 0:
                 self.add_force(self._center(o), m * vec)

@@ -42,20 +42,25 @@ class Energy:
                 total += w.dot(self.central_inertia(o) & w) / 2
         return kin.tidy(total, self._gens())
 
-    def momentum(self, kind: str, p: Point | None = None) -> Any:
+    def momentum(self, kind: str, *objs: Any) -> Any:
         """``Momentum(LINEAR)``, ``Momentum(ANGULAR, P)`` (about P; default:
         the mass center of the system) or ``Momentum(GENERALIZED)`` (the
-        column of dKE/dUr for the independent and auxiliary speeds)."""
+        column of dKE/dUr for the independent and auxiliary speeds).  Bodies
+        and particles listed after (``Momentum(LINEAR, A, B)``,
+        ``Momentum(ANGULAR, P, A)``) restrict it to them."""
         kind = kind.upper()
         n = self._n()
-        st = self._mech
+        p: Point | None = None
+        if kind == "ANGULAR" and objs and isinstance(objs[0], Point):
+            p, objs = objs[0], objs[1:]
+        massive = self._objects(tuple(objs))
         if kind == "GENERALIZED":
-            ke = self.ke()
+            ke = self.ke(*objs)
             return sp.Matrix([kin.tidy(sp.diff(ke, u)) for u in self._fr_speeds()])
         if kind not in ("LINEAR", "ANGULAR"):
             raise ValueError("Momentum takes LINEAR, ANGULAR or GENERALIZED")
         out = Vector(0)
-        for o in st.massive:
+        for o in massive:
             m = self._mass(o, strict=False)
             c = self._center(o)
             if kind == "LINEAR":

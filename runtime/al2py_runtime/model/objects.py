@@ -124,15 +124,17 @@ class Objects:
         i31: Any = 0,
         *,
         about: Point | None = None,
+        basis: ReferenceFrame | None = None,
     ) -> Dyadic:
         """``Inertia A, I11, I22, I33, I12, I23, I31``: the inertia dyadic of
         body ``A`` about its mass center, or about point ``about`` (the central
-        dyadic then follows from the transfer theorem when needed)."""
+        dyadic then follows from the transfer theorem when needed).
+        ``Inertia A(B), ...`` gives the scalars in frame ``basis``'s basis."""
         b = self._body(body)
         m = sp.Matrix([[i11, i12, i31], [i12, i22, i23], [i31, i23, i33]]).applyfunc(
             self._scalar
         )
-        b.inertia = kin.frame_dyadic(body, m)
+        b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
         return b.inertia
 
