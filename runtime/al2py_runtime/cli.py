@@ -17,7 +17,8 @@ from pathlib import Path, PurePath
 from typing import Any
 
 from . import budget
-from .jobs import INTEGRATION_DEFAULTS, NumericsError, check_overrides
+from .jobs import check_overrides
+from .records import INTEGRATION_DEFAULTS, NumericsError
 from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser"]

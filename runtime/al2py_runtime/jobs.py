@@ -1,4 +1,6 @@
-"""The numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+"""Running the numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+
+The records live in :mod:`.records`, the result tables in :mod:`.tables`.
 
 A :class:`Job` is a snapshot taken at the ``CODE`` statement: the equations,
 the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
@@ -15,7 +17,6 @@ import math
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -24,9 +25,17 @@ from sympy.core.function import AppliedUndef
 
 from . import budget
 from .kane import linear_terms
-from .results import ResultViews, TableViews
-from .safety import AutolevRuntimeError
-from .units import UnitError, UnitSystem
+from .records import (
+    INTEGRATION_DEFAULTS,
+    InputValue,
+    Job,
+    NumericsError,
+    OutputItem,
+    OutputSpec,
+    normalize_name,
+)
+from .tables import Column, Result, Table, fmt_number
+from .units import UnitError
 
 __all__ = [
     "NumericsError",
@@ -50,298 +59,6 @@ try:  # the same object dynamicsymbols use
     t = dynamicsymbols._t
 except ImportError:  # pragma: no cover
     pass
-
-
-class NumericsError(AutolevRuntimeError, ValueError):
-    """A numerical job cannot run: bad input, no convergence, failed step."""
-
-
-#: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
-#: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
-#: TINITIAL)/100, PRINTINT = 1).  PRINTINT counts integration steps: a row
-#: is written every INTEGSTP*PRINTINT.
-INTEGRATION_DEFAULTS: dict[str, float | None] = {
-    "TINITIAL": 0.0,
-    "TFINAL": None,
-    "INTEGSTP": None,
-    "PRINTINT": None,
-    "ABSERR": 1.0e-8,
-    "RELERR": 1.0e-7,
-}
-
-KINDS = ("DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC")
-
-
-def normalize_name(name: str) -> str:
-    """``"config[ 1 ]"`` -> ``"CONFIG[1]"``, ``"x'"`` -> ``"X'"``."""
-    return re.sub(r"\s+", "", str(name)).upper()
-
-
-# ------------------------------------------------------------------ records
-
-
-@dataclass(frozen=True)
-class InputValue:
-    """One ``Input NAME = value unit`` item."""
-
-    value: float
-    unit: str | None = None
-    line: int | None = None
-
-
-@dataclass(frozen=True)
-class OutputItem:
-    label: str
-    expr: Any
-    unit: str | None = None
-
-
-@dataclass(frozen=True)
-class OutputSpec:
-    """One ``Output`` statement: its items, in order.
-
-    ``encoded`` marks the quantities an ``Encode`` statement lists: computed
-    at every output row like an Output, kept in the result, never written
-    to a file.
-    """
-
-    items: tuple[OutputItem, ...]
-    line: int | None = None
-    encoded: bool = False
-
-
-@dataclass
-class Job:
-    """Everything a ``CODE`` statement needs, captured when it is recorded."""
-
-    kind: str
-    stem: str
-    filename: str | None
-    line: int | None
-    source: str
-    eqs: sp.Matrix | None
-    eqs_name: str | None
-    unknowns: list[Any]
-    sweep: tuple | None
-    rhs: dict
-    zero: sp.Matrix | None
-    outputs: list[OutputSpec]
-    inputs: dict[str, InputValue]
-    unit_system: UnitSystem
-    digits: int
-    variables: list[tuple[str, Any, int]]
-    names: dict[Any, str]
-    entries: dict[str, tuple[str, Any]]
-    #: initial values of variables the script never inputs (``NiCheck``'s
-    #: work variable starts at 0), by name
-    initials: dict[str, float] = field(default_factory=dict)
-    #: shapes of the ``Encode``d matrices (their elements are output items)
-    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
-    _cache: dict = field(default_factory=dict, repr=False)
-
-    @property
-    def where(self) -> str:
-        what = f"CODE {self.kind.title()}"
-        if self.filename:
-            what += f" {self.filename}"
-        if self.line is not None:
-            what += f" (line {self.line})"
-        return what
-
-
-# ------------------------------------------------------------------ results
-
-
-@dataclass(frozen=True)
-class Column:
-    label: str
-    unit: str | None = None
-
-
-@dataclass(repr=False)
-class Table(TableViews):
-    """One output table: one ``Output`` statement evaluated at every row."""
-
-    number: int
-    columns: list[Column]
-    data: np.ndarray
-    line: int | None = None
-    encoded: bool = False  # Encode's quantities (not written to a file)
-
-    @property
-    def names(self) -> list[str]:
-        return [c.label for c in self.columns]
-
-    def __len__(self) -> int:
-        return self.data.shape[0]
-
-    def __getitem__(self, label: str) -> np.ndarray:
-        key = normalize_name(label)
-        for j, col in enumerate(self.columns):
-            if normalize_name(col.label) == key:
-                return self.data[:, j]
-        raise KeyError(f"{label!r} is not a column of table {self.number}")
-
-    def __contains__(self, label: object) -> bool:
-        if not isinstance(label, str):
-            return False
-        key = normalize_name(label)
-        return any(normalize_name(c.label) == key for c in self.columns)
-
-
-@dataclass(repr=False)
-class Result(ResultViews):
-    """The outcome of :meth:`Workspace.run`.
-
-    ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
-    ``result.tables`` holds one :class:`Table` per ``Output`` statement.
-    """
-
-    kind: str
-    stem: str
-    tables: list[Table]
-    digits: int
-    solution: dict[str, np.ndarray] = field(default_factory=dict)
-    solution_units: dict[str, str | None] = field(default_factory=dict)
-    states: dict[str, np.ndarray] = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
-    time_unit: str | None = None
-    nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
-    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
-    #: shape (rows, m, n), one matrix per output row.
-    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
-
-    def _encoded(self, key: str) -> np.ndarray:
-        m, n = self.encoded[key]
-        cols = [
-            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
-        ]
-        return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
-
-    @property
-    def written(self) -> list[Table]:
-        """The tables written to files (one per ``Output`` statement)."""
-        return [t for t in self.tables if not t.encoded]
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        for table in self.tables:
-            if name in table:
-                return table[name]
-        key = normalize_name(name)
-        if key in self.encoded:
-            return self._encoded(key)
-        for source in (self.solution, self.states):
-            if key in source:
-                return source[key]
-        raise KeyError(f"{name!r} is neither an output nor a solved quantity")
-
-    def __contains__(self, name: object) -> bool:
-        try:
-            self[name]  # type: ignore[index]
-        except (KeyError, TypeError):
-            return False
-        return True
-
-    def files(self) -> list[str]:
-        """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
-        return [f"{self.stem}.{table.number}" for table in self.written]
-
-    def write(self, directory: str | Path = ".") -> list[Path]:
-        """Write each table as ``STEM.n``: a ``%`` header naming columns and
-        units, then one row per line with ``Digits`` significant digits
-        (``numpy.loadtxt(path, comments="%")`` reads them back)."""
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.written, self.files(), strict=True):
-            path = directory / name
-            path.write_text(
-                format_table(table, self.digits, name, self.time_unit),
-                encoding="utf-8",
-            )
-            written.append(path)
-        return written
-
-    def plot(self, directory: str | Path = ".") -> list[Path]:
-        """Write ``STEM.n.png`` per table: each column against the first."""
-        try:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-        except ImportError:
-            raise NumericsError(
-                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
-            ) from None
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.written, self.files(), strict=True):
-            cols = table.columns
-            if len(cols) < 2 or len(table) == 0:
-                continue
-            n = len(cols) - 1
-            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
-            FigureCanvasAgg(fig)
-            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
-            x = table.data[:, 0]
-            for ax, j in zip(axes, range(1, len(cols)), strict=True):
-                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
-                ax.set_ylabel(_heading(cols[j], self.time_unit))
-                ax.grid(True, alpha=0.3)
-            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
-            fig.suptitle(name)
-            fig.tight_layout()
-            path = directory / f"{name}.png"
-            fig.savefig(path, dpi=100)
-            written.append(path)
-        return written
-
-    def solution_lines(self) -> list[str]:
-        """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""
-        out = []
-        for name, values in self.solution.items():
-            unit = self.solution_units.get(name)
-            suffix = f" {unit}" if unit else ""
-            if len(values) == 1:
-                out.append(f"{name} = {fmt_number(values[0], self.digits)}{suffix}")
-        return out
-
-
-def _heading(col: Column, time_unit: str | None) -> str:
-    unit = col.unit
-    if unit is None and normalize_name(col.label) == "T" and time_unit:
-        unit = time_unit
-    return f"{col.label} ({unit})" if unit else col.label
-
-
-def fmt_number(x: float, digits: int) -> str:
-    return f"{x:.{digits}g}"
-
-
-def format_table(
-    table: Table, digits: int, name: str, time_unit: str | None = None
-) -> str:
-    """The text of one output file."""
-    width = max(digits + 8, 12)
-    labels, units = [], []
-    for col in table.columns:
-        unit = col.unit
-        if unit is None and normalize_name(col.label) == "T" and time_unit:
-            unit = time_unit
-        labels.append(col.label)
-        units.append(f"({unit})" if unit else "(UNITS)")
-    width = max([width] + [len(s) + 2 for s in labels + units])
-    lines = [
-        f"% FILE: {name}",
-        "%",
-        "%" + "".join(s.center(width) for s in labels).rstrip(),
-        "%" + "".join(s.center(width) for s in units).rstrip(),
-        "",
-    ]
-    for row in table.data:
-        lines.append(
-            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
-        )
-    return "\n".join(lines) + "\n"
 
 
 # ---------------------------------------------------------------- resolving
@@ -892,14 +609,33 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
-    from scipy.integrate import solve_ivp
+@dataclass
+class OdeSystem:
+    """The numeric equations of a dynamics job: ``fun(t, y)`` for
+    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
+    names, in internal units (the UnitSystem's, SI by default; radians).
+    ``accelerations(t, y)`` gives the derivatives solved from ``ZERO``."""
 
+    fun: Any
+    y0: list[float]
+    names: list[str]
+    accelerations: Any
+    compiled: _Dynamics
+    params: list[float]
+    clock: list[float]
+
+
+def _compiled(job: Job, keep: Iterable[Any]) -> _Dynamics:
     key = ("dyn", frozenset(keep))
     if key not in job._cache:
         job._cache[key] = _compile_dynamics(job, frozenset(keep))
-    c: _Dynamics = job._cache[key]
-    ip = _integration(vals)
+    return job._cache[key]
+
+
+def ode_system(job: Job, vals: _Values, keep: set, t0: float = 0.0) -> OdeSystem:
+    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
+    where ``run()`` turns the equations into a numeric function)."""
+    c = _compiled(job, keep)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
     aliases = _state_aliases(job, c)
@@ -914,7 +650,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n
-    clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
+    clock = [t0]  # time of the latest evaluation, for messages
 
     def singular() -> NumericsError:
         return NumericsError(
@@ -939,7 +675,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
     def fun(tt: float, y: np.ndarray) -> list[float]:
         clock[0] = tt
-        yl = y.tolist()
+        yl = _floats(y)
         return deriv(tt, *yl, *accelerations(tt, yl), *p)
 
     if c.step is not None:
@@ -947,7 +683,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
         def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
             clock[0] = tt
-            v = step(tt, *y.tolist(), *p)
+            v = step(tt, *_floats(y), *p)
             if n == 1:
                 if v[0] == 0:
                     raise singular()
@@ -964,6 +700,34 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             known = v[nf:]
             return [acc[i] if solved else known[i] for solved, i in plan]
 
+    return OdeSystem(fun, y0, list(c.state_names), accelerations, c, p, clock)
+
+
+def _floats(y: Any) -> list[float]:
+    return y.tolist() if isinstance(y, np.ndarray) else [float(v) for v in y]
+
+
+def ode_function(
+    job: Job, overrides: Mapping[str, Any] | None = None
+) -> tuple[Any, list[float], list[str]]:
+    """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
+    equations of motion in internal units, with Inputs changed by
+    ``overrides`` (as ``run()``)."""
+    if job.kind not in ("DYNAMICS", "ODE"):
+        raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
+    vals, keep = _input_values(job, overrides or {})
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    return system.fun, list(system.y0), list(system.names)
+
+
+def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+    from scipy.integrate import solve_ivp
+
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    c, p, y0, fun = system.compiled, system.params, system.y0, system.fun
+    accelerations, clock = system.accelerations, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     fun = budget.guard(fun, job.where, ip["TINITIAL"], ip["TFINAL"])
     try:

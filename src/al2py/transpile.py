@@ -133,6 +133,7 @@ def convert(
         body="\n".join(body),
         source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
+        has_kane=generator.has_kane,
     )
     try:
         if len(code) <= BLACK_LIMIT:
