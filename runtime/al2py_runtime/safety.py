@@ -8,9 +8,11 @@ position that was never defined).  The user then sees::
 
 never a Python traceback:
 
-* Every workspace method that a generated module calls turns an exception into
-  :class:`AutolevRuntimeError`, whose message names the ``.al`` file and line
-  (``import model`` raises it; catch it to handle any failure of a model).
+* Every workspace method that a generated module's statements call turns an
+  exception into :class:`AutolevRuntimeError` (a ``ValueError``), whose
+  message names the ``.al`` file and line (``import model`` raises it; catch
+  it to handle any failure of a model).  The module's own functions
+  (``run()``, ``kanes_method()``) raise their errors unchanged.
 * ``python model.py`` (and an uncaught error of ``import model`` in a script)
   prints that message and exits with status 2 through :func:`excepthook`,
   which also locates exceptions raised by the module's own arithmetic
@@ -35,8 +37,9 @@ from typing import Any
 __all__ = ["AutolevRuntimeError", "excepthook", "guard_methods", "register"]
 
 
-class AutolevRuntimeError(Exception):
-    """A statement of an Autolev script failed when its module ran.
+class AutolevRuntimeError(ValueError):
+    """A statement of an Autolev script failed when its module ran (a
+    ``ValueError``: the script's values cannot be computed).
 
     ``str(exc)`` is ``FILE.al:LINE: error: message`` followed by the
     statement's source line; ``filename``, ``line`` and ``message`` hold the
@@ -237,8 +240,10 @@ def _guarded(func: Any) -> Any:
             return func(self, *args, **kw)
         except Exception as exc:
             frame = sys._getframe(1)
-            if frame.f_code.co_filename not in _MODULES or (
-                isinstance(exc, AutolevRuntimeError) and exc.filename is not None
+            if (
+                frame.f_code.co_filename not in _MODULES
+                or frame.f_code.co_name != "<module>"  # run(), kanes_method()...
+                or (isinstance(exc, AutolevRuntimeError) and exc.filename is not None)
             ):
                 raise
             line = kw.get("line")
@@ -258,7 +263,8 @@ def report(exc: BaseException) -> str | None:
     best = None
     line_no = 0
     while tb is not None:
-        if tb.tb_frame.f_code.co_filename in _MODULES:
+        code = tb.tb_frame.f_code
+        if code.co_filename in _MODULES and code.co_name == "<module>":
             best, line_no = tb.tb_frame, tb.tb_lineno
         tb = tb.tb_next
     if best is None:
