@@ -63,6 +63,12 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         "--plot", action="store_true", help="also write STEM.n.png plots"
     )
     parser.add_argument(
+        "--backend",
+        choices=("auto", "c", "llvm", "lambdify"),
+        help="how Dynamics/ODE equations are evaluated (default: $AL2PY_BACKEND"
+        " or auto, the fastest available)",
+    )
+    parser.add_argument(
         "--no-run",
         action="store_true",
         help="only print the transcript; do not perform the CODE job",
@@ -112,7 +118,7 @@ def main(
     outdir = Path(args.outdir)
     for job in jobs:
         try:
-            result = ws.run_job(job, overrides)
+            result = ws.run_job(job, overrides, backend=args.backend)
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
             written = result.write(outdir)

@@ -22,6 +22,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from . import backends
 from .kane import linear_terms
 from .units import UnitError, UnitSystem
 
@@ -570,11 +571,22 @@ def output_times(t0: float, t1: float, step: float) -> np.ndarray:
 # --------------------------------------------------------------------- runs
 
 
-def run_job(job: Job, overrides: Mapping[str, Any] | None = None) -> Result:
-    """Perform ``job`` with its Input values, changed by ``overrides``."""
+def run_job(
+    job: Job,
+    overrides: Mapping[str, Any] | None = None,
+    *,
+    backend: str | None = None,
+) -> Result:
+    """Perform ``job`` with its Input values, changed by ``overrides``.
+
+    ``backend`` chooses how Dynamics/ODE equations are evaluated (see
+    :mod:`.backends`; default ``$AL2PY_BACKEND`` or ``auto``)."""
     vals, keep = _input_values(job, overrides or {})
     if job.kind in ("DYNAMICS", "ODE"):
-        return _run_dynamics(job, vals, keep)
+        try:
+            return _run_dynamics(job, vals, keep, backend)
+        except backends.BackendError as exc:
+            raise NumericsError(str(exc)) from None
     if job.kind == "NONLINEAR":
         return _run_nonlinear(job, vals, keep)
     if job.kind == "ALGEBRAIC":
@@ -631,17 +643,22 @@ class _Dynamics:
     state_objs: list[Any]
     state_names: list[str]
     ud_objs: list[Any]
-    mf: Any  # (T, *y, *p) -> M (row-major) + f
-    deriv: Any  # (T, *y, *ud, *p) -> y'
-    outputs: list[Any]  # per table: (T, *y, *ud, *p) -> row
     params: list[Any]
-    # Fast path when no state derivative other than the accelerations themselves
-    # depends on the accelerations: one call gives M, f and those derivatives.
-    step: Any = None  # (T, *y, *p) -> M (row-major) + f + known y'
-    plan: tuple[tuple[bool, int], ...] = ()  # per state: (from solve?, index)
+    spec: backends.DynamicsSpec  # the equations, for any backend
+    compiled: backends.Compiled | None = None
 
 
-def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
+def _compile_dynamics(job: Job, keep: frozenset, backend: str | None) -> _Dynamics:
+    c = _dynamics_equations(job, keep)
+    try:
+        c.compiled = backends.compile_dynamics(c.spec, backend)
+    except backends.BackendError as exc:
+        raise NumericsError(f"{job.where}: {exc}") from None
+    return c
+
+
+def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
+    """The job's states, parameters and equations as sympy expressions."""
     table = _without(job.rhs, keep)
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
@@ -715,32 +732,19 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
             )
         mf_exprs = list(mass) + [-e for e in zero_at_0]
     outputs = _output_exprs(job, table, slots)
-    args_y = [slots.time, *ys]
-    params = list(slots.param_dummies)
-    out_funcs = [_lambdify([*args_y, *uds, *params], row) for row in outputs]
-    names = [label_of(o, job.names) for o in state_objs]
-    position = {u: j for j, u in enumerate(uds)}
-    known = [d for d in derivs if d not in position]
-    if not any(sp.sympify(d).has(*uds) for d in known):
-        # One generated function gives M, f and the other derivatives.
-        plan, k = [], 0
-        for d in derivs:
-            if d in position:
-                plan.append((True, position[d]))
-            else:
-                plan.append((False, k))
-                k += 1
-        step = _lambdify([*args_y, *params], [*mf_exprs, *known])
-        dynamics = _Dynamics(
-            state_objs, names, ud_objs, step, None, out_funcs, list(slots.params)
-        )
-        dynamics.step, dynamics.plan = step, tuple(plan)
-        return dynamics
-    mf = _lambdify([*args_y, *params], mf_exprs)
-    deriv = _lambdify([*args_y, *uds, *params], derivs)
-    return _Dynamics(
-        state_objs, names, ud_objs, mf, deriv, out_funcs, list(slots.params)
+    n = len(uds)
+    spec = backends.DynamicsSpec(
+        slots.time,
+        ys,
+        uds,
+        list(slots.param_dummies),
+        mf_exprs[: n * n],
+        mf_exprs[n * n :],
+        derivs,
+        outputs,
     )
+    names = [label_of(o, job.names) for o in state_objs]
+    return _Dynamics(state_objs, names, ud_objs, list(slots.params), spec)
 
 
 def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
@@ -755,12 +759,14 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+def _run_dynamics(
+    job: Job, vals: _Values, keep: set, backend: str | None = None
+) -> Result:
     from scipy.integrate import solve_ivp
 
-    key = ("dyn", frozenset(keep))
+    key = ("dyn", frozenset(keep), backends.choose(backend))
     if key not in job._cache:
-        job._cache[key] = _compile_dynamics(job, frozenset(keep))
+        job._cache[key] = _compile_dynamics(job, frozenset(keep), key[2])
     c: _Dynamics = job._cache[key]
     ip = _integration(vals)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
@@ -774,58 +780,13 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         y0.append(
             vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
         )
-    n = len(c.ud_objs)
-    mf, deriv = c.mf, c.deriv
-    nn = n * n
+    bound = c.compiled.bind(p)
     clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
+    rhs = bound.rhs
 
-    def singular() -> NumericsError:
-        return NumericsError(
-            f"{job.where}: the coefficient matrix of "
-            + ", ".join(label_of(d, job.names) for d in c.ud_objs)
-            + f" in ZERO is singular at t = {clock[0]:g}"
-        )
-
-    def accelerations(tt: float, yl: list[float]) -> list[float]:
-        if not n:
-            return []
-        vals_mf = mf(tt, *yl, *p)
-        if n == 1:
-            if vals_mf[0] == 0:
-                raise singular()
-            return [vals_mf[1] / vals_mf[0]]
-        m = np.array(vals_mf[:nn]).reshape(n, n)
-        try:
-            return np.linalg.solve(m, vals_mf[nn : nn + n]).tolist()
-        except np.linalg.LinAlgError:
-            raise singular() from None
-
-    def fun(tt: float, y: np.ndarray) -> list[float]:
+    def fun(tt: float, y: np.ndarray) -> np.ndarray:
         clock[0] = tt
-        yl = y.tolist()
-        return deriv(tt, *yl, *accelerations(tt, yl), *p)
-
-    if c.step is not None:
-        step, plan, nf = c.step, c.plan, nn + n
-
-        def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
-            clock[0] = tt
-            v = step(tt, *y.tolist(), *p)
-            if n == 1:
-                if v[0] == 0:
-                    raise singular()
-                acc = [v[1] / v[0]]
-            elif n:
-                try:
-                    acc = np.linalg.solve(
-                        np.array(v[:nn]).reshape(n, n), v[nn:nf]
-                    ).tolist()
-                except np.linalg.LinAlgError:
-                    raise singular() from None
-            else:
-                acc = []
-            known = v[nf:]
-            return [acc[i] if solved else known[i] for solved, i in plan]
+        return rhs(tt, y)
 
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
     try:
@@ -851,15 +812,21 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             ys, nfev = sol.y, sol.nfev
         tables = []
         factors = _output_factors(job, vals)
-        rows_all = [[] for _ in c.outputs]
+        rows_all = [[] for _ in job.outputs]
         for i, tt in enumerate(times):
             clock[0] = float(tt)
-            yl = ys[:, i].tolist()
-            ud = accelerations(float(tt), yl)
-            for rows, func in zip(rows_all, c.outputs, strict=True):
-                rows.append(func(float(tt), *yl, *ud, *p))
+            for rows, row in zip(
+                rows_all, bound.outputs(clock[0], ys[:, i]), strict=True
+            ):
+                rows.append(row)
     except NumericsError:
         raise
+    except backends.SingularMatrixError as exc:
+        raise NumericsError(
+            f"{job.where}: the coefficient matrix of "
+            + ", ".join(label_of(d, job.names) for d in c.ud_objs)
+            + f" in ZERO is singular at t = {exc.t:g}"
+        ) from None
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
         hint = "; check the Input values" if vals.notes else ""
         raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None

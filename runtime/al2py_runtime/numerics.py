@@ -222,23 +222,36 @@ class NumericsMixin:
         return dict(self._numerics.inputs)
 
     def run(
-        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        backend: str | None = None,
+        **overrides: Any,
     ) -> Result:
         """Perform the script's ``CODE`` job (the last one if there are several).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
-        ``run({"X'": 1})``."""
+        ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
+        ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
+        see :mod:`al2py_runtime.backends`."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
-        return run_job(jobs[-1], merged)
+        return run_job(jobs[-1], merged, backend=backend)
 
-    def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
+    def run_job(
+        self,
+        job: Job,
+        values: Mapping[str, Any] | None = None,
+        *,
+        backend: str | None = None,
+    ) -> Result:
         """Perform one recorded job with optional overrides."""
-        return run_job(job, dict(values or {}))
+        return run_job(job, dict(values or {}), backend=backend)
 
     def main(
         self, source_lines: Sequence[str], argv: Sequence[str] | None = None
