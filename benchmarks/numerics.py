@@ -1,0 +1,360 @@
+"""Benchmark: the right-hand side of converted models, backend by backend.
+
+    python benchmarks/numerics.py               # pendulum n = 4, 8, 16; chain 2, 3
+    python benchmarks/numerics.py --pendulum 8 --chain 2
+
+For each model it prints, measured side by side in one process:
+
+* microseconds per right-hand-side call ``f(t, y)`` (mass matrix, forcing,
+  linear solve, the state derivatives), best of 5 x 2000 calls at the initial
+  state;
+* seconds for ``solve_ivp`` (DOP853, rtol = atol = 1e-7, max_step = 0.1)
+  over 10 s of simulation, best of 3;
+* for al2py's backends, the first-call overhead (code generation and
+  compilation into an empty cache) and the same with the cache warm.
+
+Rows: al2py's ``c``, ``llvm`` and ``lambdify`` backends (and which one
+``auto``, the default, picks); ``lambdify(math, cse)`` + ``numpy.linalg.solve``
+by hand on ``KanesMethod``'s equations; PyDy's Cython generator if PyDy and
+Cython are installed; and, for the pendulum, a hand-written C right-hand
+side with the linear solve in C, called through ctypes exactly like al2py's
+``c`` backend: the limit.  ``x C ref`` is the ratio to that limit.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ctypes
+import importlib.util
+import math
+import os
+import sys
+import tempfile
+import time
+import timeit
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import numpy as np  # noqa: E402
+import sympy as sp  # noqa: E402
+from al2py_runtime import backends, jobs  # noqa: E402
+from large import chain_source  # noqa: E402
+from pendulum import LENGTH, MASS, G, autolev_source, hand_derive  # noqa: E402
+from scipy.integrate import solve_ivp  # noqa: E402
+
+from al2py import convert  # noqa: E402
+
+T_FINAL, TOL, MAX_STEP = 10.0, 1e-7, 0.1
+CALLS, REPEATS = 2000, 5
+
+# The n-link pendulum by hand: M_ij = m l^2 c_ij cos(q_i - q_j),
+# f_i = -m l^2 sum_j c_ij sin(q_i - q_j) u_j^2 - m g l c_i sin(q_i), with
+# c_ij = n - max(i, j) (0-based) the number of particles beyond the joint.
+REFERENCE_C = r"""
+#include <math.h>
+#define N %(n)d
+int ref_rhs(double t, const double *y, const double *p, double *dy)
+{
+    const double l = p[0], m = p[1], g = p[2];
+    double s[N], c[N], a[N * N], b[N];
+    (void)t;
+    for (int i = 0; i < N; i++) {
+        s[i] = sin(y[i]);
+        c[i] = cos(y[i]);
+        dy[i] = y[N + i];
+    }
+    for (int i = 0; i < N; i++) {
+        double fi = -m * g * l * (N - i) * s[i];
+        for (int j = 0; j < N; j++) {
+            int w = N - (i > j ? i : j);
+            double cij = c[i] * c[j] + s[i] * s[j];
+            double sij = s[i] * c[j] - c[i] * s[j];
+            a[i * N + j] = m * l * l * w * cij;
+            fi -= m * l * l * w * sij * y[N + j] * y[N + j];
+        }
+        b[i] = fi;
+    }
+    for (int k = 0; k < N; k++) {
+        int piv = k;
+        double big = fabs(a[k * N + k]);
+        for (int i = k + 1; i < N; i++)
+            if (fabs(a[i * N + k]) > big) {
+                big = fabs(a[i * N + k]);
+                piv = i;
+            }
+        if (big == 0.0) return 1;
+        if (piv != k) {
+            for (int j = k; j < N; j++) {
+                double tmp = a[k * N + j];
+                a[k * N + j] = a[piv * N + j];
+                a[piv * N + j] = tmp;
+            }
+            double tmp = b[k];
+            b[k] = b[piv];
+            b[piv] = tmp;
+        }
+        for (int i = k + 1; i < N; i++) {
+            double f = a[i * N + k] / a[k * N + k];
+            for (int j = k + 1; j < N; j++) a[i * N + j] -= f * a[k * N + j];
+            b[i] -= f * b[k];
+        }
+    }
+    for (int i = N - 1; i >= 0; i--) {
+        double v = b[i];
+        for (int j = i + 1; j < N; j++) v -= a[i * N + j] * b[j];
+        b[i] = v / a[i * N + i];
+        dy[N + i] = b[i];
+    }
+    return 0;
+}
+"""
+
+
+def reference_rhs(n: int):
+    """The hand-written C pendulum, wrapped like al2py's ``c`` backend."""
+    path, _hit = backends.build_shared(REFERENCE_C % {"n": n})
+    lib = ctypes.CDLL(str(path))
+    fn = lib.ref_rhs
+    fn.argtypes = [ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    fn.restype = ctypes.c_int
+    p = np.array([LENGTH, MASS, G])
+    pp = p.ctypes.data
+    ny = 2 * n
+    asarray, empty = np.ascontiguousarray, np.empty
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        y = asarray(y, dtype=float)
+        dy = empty(ny)
+        if fn(t, y.ctypes.data, pp, dy.ctypes.data):
+            raise ArithmeticError("singular")
+        return dy
+
+    rhs._keep = (lib, p)  # type: ignore[attr-defined]
+    return rhs
+
+
+def hand_lambdify(kane, q, u, consts, values):
+    """``lambdify(math, cse)`` + ``numpy.linalg.solve``, written by hand."""
+    n = len(q)
+    args = [*q, *u, *consts]
+    mm = sp.lambdify(args, kane.mass_matrix.tolist(), modules="math", cse=True)
+    ff = sp.lambdify(args, list(kane.forcing), modules="math", cse=True)
+    qdot = sp.lambdify(args, [kane.kindiffdict()[x.diff()] for x in q], "math")
+
+    def rhs(_t: float, y: np.ndarray) -> np.ndarray:
+        a = (*y.tolist(), *values)
+        m = np.array(mm(*a), dtype=float).reshape(n, n)
+        f = np.array(ff(*a), dtype=float).reshape(n)
+        return np.concatenate([qdot(*a), np.linalg.solve(m, f)])
+
+    return rhs
+
+
+def pydy_rhs(kane, q, u, consts, values):
+    """PyDy's Cython generator, or None when PyDy or Cython is missing."""
+    try:
+        import Cython  # noqa: F401
+        from pydy.codegen.ode_function_generators import generate_ode_function
+    except ImportError:
+        return None
+    kd = kane.kindiffdict()
+    with tempfile.TemporaryDirectory() as tmp:
+        cwd = os.getcwd()
+        os.chdir(tmp)  # PyDy writes its build files into the working folder
+        try:
+            f = generate_ode_function(
+                kane.forcing,
+                q,
+                u,
+                list(consts),
+                mass_matrix=kane.mass_matrix,
+                coordinate_derivatives=sp.Matrix([kd[x.diff()] for x in q]),
+                generator="cython",
+                constants_arg_type="array",
+            )
+        finally:
+            os.chdir(cwd)
+    p = np.array(values, dtype=float)
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        return f(y, t, p)
+
+    return rhs
+
+
+def per_call_us(rhs, y0: np.ndarray) -> float:
+    rhs(0.0, y0)
+    best = min(timeit.repeat(lambda: rhs(0.0, y0), number=CALLS, repeat=REPEATS))
+    return 1e6 * best / CALLS
+
+
+def ivp_seconds(rhs, y0: np.ndarray) -> tuple[float, np.ndarray]:
+    best, final = math.inf, None
+    for _ in range(3):
+        start = time.perf_counter()
+        sol = solve_ivp(
+            rhs,
+            (0.0, T_FINAL),
+            y0,
+            method="DOP853",
+            rtol=TOL,
+            atol=TOL,
+            max_step=MAX_STEP,
+        )
+        best = min(best, time.perf_counter() - start)
+        final = sol.y[:, -1]
+    return best, final
+
+
+def _import(source: str, name: str, workdir: Path):
+    path = workdir / f"{name}.al"
+    path.write_text(source)
+    module_path = workdir / f"{name}.py"
+    module_path.write_text(convert(source, str(path)).code)
+    spec = importlib.util.spec_from_file_location(name, module_path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def al2py_model(module):
+    """(spec, parameter values, initial state) of the module's CODE job."""
+    job = module.al.jobs[-1]
+    vals, keep = jobs._input_values(job, {})
+    c = jobs._dynamics_equations(job, frozenset(keep))
+    p = [vals.param(obj) for obj in c.params]
+    y0 = np.array([vals.get(name, 0.0, note=False) for name in c.state_names])
+    return c.spec, p, y0
+
+
+def al2py_rows(spec, p, y0) -> list[tuple[str, float, float, float, float]]:
+    """(backend, first-call s, cached s, us/call, solve_ivp s) per backend."""
+    rows = []
+    for name in backends.BACKENDS:
+        if not backends.available(name):
+            continue
+        with tempfile.TemporaryDirectory() as cache:
+            old = os.environ.get("AL2PY_CACHE_DIR")
+            os.environ["AL2PY_CACHE_DIR"] = cache
+            try:
+                start = time.perf_counter()
+                try:
+                    backends.compile_dynamics(spec, name)
+                except backends.BackendError as exc:
+                    print(f"  ({name}: {exc})")
+                    continue
+                first = time.perf_counter() - start
+                start = time.perf_counter()
+                compiled = backends.compile_dynamics(spec, name)
+                again = time.perf_counter() - start
+            finally:
+                if old is None:
+                    del os.environ["AL2PY_CACHE_DIR"]
+                else:
+                    os.environ["AL2PY_CACHE_DIR"] = old
+            rhs = compiled.bind(p).rhs
+            us = per_call_us(rhs, y0)
+            secs, _final = ivp_seconds(rhs, y0)
+            rows.append((name, first, again, us, secs))
+    return rows
+
+
+def report(title: str, rows, reference_us: float | None) -> None:
+    print(f"\n{title}")
+    head = (
+        f"  {'right-hand side':<28} {'us/call':>8} {'x C ref':>8} "
+        f"{'ivp 10 s':>9} {'first call s':>13} {'cached s':>9}"
+    )
+    print(head)
+    print("  " + "-" * (len(head) - 2))
+    for label, us, secs, first, cached in rows:
+        ratio = f"{us / reference_us:8.2f}" if reference_us else f"{'-':>8}"
+        f1 = f"{first:13.2f}" if first is not None else f"{'-':>13}"
+        f2 = f"{cached:9.2f}" if cached is not None else f"{'-':>9}"
+        print(f"  {label:<28} {us:8.1f} {ratio} {secs:9.3f} {f1} {f2}", flush=True)
+
+
+def pendulum(n: int, workdir: Path) -> None:
+    module = _import(autolev_source(n), f"pendulum{n}", workdir)
+    spec, p, y0 = al2py_model(module)
+    default = backends.compile_dynamics(spec, "auto").backend
+    kane, q, u, consts = hand_derive(n)
+    values = (LENGTH, MASS, G)
+    ref = reference_rhs(n)
+    # The same equations: al2py's default against the hand-written C.
+    ours = backends.compile_dynamics(spec, "auto").bind(p).rhs(0.0, y0)
+    assert np.allclose(ours, ref(0.0, y0), rtol=1e-9, atol=1e-9), "models differ"
+    rows = []
+    ref_us = per_call_us(ref, y0)
+    ref_secs, _ = ivp_seconds(ref, y0)
+    for name, first, cached, us, secs in al2py_rows(spec, p, y0):
+        label = f"al2py {name}" + (" (default)" if name == default else "")
+        rows.append((label, us, secs, first, cached))
+    hand = hand_lambdify(kane, q, u, consts, values)
+    rows.append(
+        (
+            "lambdify+numpy by hand",
+            per_call_us(hand, y0),
+            ivp_seconds(hand, y0)[0],
+            None,
+            None,
+        )
+    )
+    start = time.perf_counter()
+    pydy = pydy_rhs(kane, q, u, consts, values)
+    if pydy is not None:
+        build = time.perf_counter() - start
+        rows.append(
+            (
+                "PyDy Cython",
+                per_call_us(pydy, y0),
+                ivp_seconds(pydy, y0)[0],
+                build,
+                None,
+            )
+        )
+    rows.append(("hand-written C (limit)", ref_us, ref_secs, None, None))
+    report(f"{n}-link pendulum ({2 * n} states)", rows, ref_us)
+
+
+def chain(n: int, workdir: Path) -> None:
+    source = chain_source(n) + "\n".join(
+        [
+            "Input L=0.5 m, M=1 kg, IA=0.01 kg*m^2, IT=0.1 kg*m^2, G=9.81 m/sec^2",
+            "Input " + ", ".join(f"Q{k}={10 + 5 * k} deg" for k in range(1, 3 * n + 1)),
+            f"Input tFinal={T_FINAL:g}, integStp={MAX_STEP:g}, absErr={TOL:g}, relErr={TOL:g}",
+            "Output T, Q1 deg",
+            f"CODE Dynamics() chain{n}.c",
+            "",
+        ]
+    )
+    module = _import(source, f"chain{n}", workdir)
+    spec, p, y0 = al2py_model(module)
+    default = backends.compile_dynamics(spec, "auto").backend
+    rows = []
+    for name, first, cached, us, secs in al2py_rows(spec, p, y0):
+        label = f"al2py {name}" + (" (default)" if name == default else "")
+        rows.append((label, us, secs, first, cached))
+    report(f"{n}-body spatial chain ({6 * n} states; no hand-written C)", rows, None)
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--pendulum", type=int, nargs="*", default=[4, 8, 16])
+    parser.add_argument("--chain", type=int, nargs="*", default=[2, 3])
+    args = parser.parse_args(argv)
+    print(
+        "backends available: "
+        + ", ".join(b for b in backends.BACKENDS if backends.available(b))
+    )
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in args.pendulum:
+            pendulum(n, Path(tmp))
+        for n in args.chain:
+            chain(n, Path(tmp))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))
