@@ -432,8 +432,16 @@ class _Printer(C99CodePrinter):
             {
                 "strict": True,
                 "user_functions": {"trunc": "trunc"},
+                # Strict C99 has no M_PI, M_SQRT2, ...: print numbers.
+                "math_macros": {sp.Symbol("_al2py_none_"): "_AL2PY_NONE_"},
             }
         )
+
+    def _print_Pi(self, expr: Any) -> str:
+        return repr(math.pi)
+
+    def _print_Exp1(self, expr: Any) -> str:
+        return repr(math.e)
 
     def _print_Pow(self, expr: Any) -> str:
         base, exp = expr.args
@@ -531,9 +539,6 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     printer = _Printer()
     n, ny, nout = len(spec.accels), len(spec.states), sum(map(len, spec.outputs))
     free, uses, _plan_ = _plan(spec)
-    inter = [
-        f"    const double {s} = {_ccode(e, printer)};" for s, e in spec.intermediates
-    ]
     lines = [
         "#include <math.h>",
         "",
@@ -551,11 +556,11 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
         " double *m, double *f, double *dy)",
         "{",
         "    (void)t; (void)y; (void)p; (void)m; (void)f; (void)dy;",
-        *inter,
     ]
     targets = [f"m[{k}]" for k in range(n * n)] + [f"f[{k}]" for k in range(n)]
     targets += [f"dy[{i}]" for i in free]
     exprs = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
+    lines += _intermediates(spec, exprs, printer, "    ")
     lines += _block(exprs, targets, printer, "x", "    ")
     lines += ["}", ""]
     m_decl = (
@@ -570,9 +575,10 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     if n:
         lines.append(f"    if (al_solve({n}, m, ud)) return 1;")
     if uses:
-        lines += ["    {", *inter_late(spec, printer)]
+        late = [spec.derivs[i] for i in uses]
+        lines += ["    {", *_intermediates(spec, late, printer, "        ")]
         lines += _block(
-            [spec.derivs[i] for i in uses],
+            late,
             [f"dy[{i}]" for i in uses],
             printer,
             "w",
@@ -595,19 +601,26 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     if n:
         lines.append(f"    if (al_solve({n}, m, ud)) return 1;")
     all_out = [e for row in spec.outputs for e in row]
-    lines += inter_late(spec, printer, "    ")
+    lines += _intermediates(spec, all_out, printer, "    ")
     lines += _block(all_out, [f"out[{k}]" for k in range(nout)], printer, "o", "    ")
     lines += ["    return 0;", "}", ""]
     return "\n".join(lines)
 
 
-def inter_late(
-    spec: DynamicsSpec, printer: _Printer, indent: str = "        "
+def _intermediates(
+    spec: DynamicsSpec, exprs: list[Any], printer: _Printer, indent: str
 ) -> list[str]:
-    """Intermediates again, for blocks that are not inside ``al_mf``."""
+    """Declarations of the intermediates that ``exprs`` need, in order."""
+    needed: set[Any] = set()
+    for e in exprs:
+        needed |= e.free_symbols
+    keep = []
+    for sym, expr in reversed(spec.intermediates):
+        if sym in needed:
+            keep.append((sym, expr))
+            needed |= expr.free_symbols
     return [
-        f"{indent}const double {s} = {_ccode(e, printer)};"
-        for s, e in spec.intermediates
+        f"{indent}const double {s} = {_ccode(e, printer)};" for s, e in reversed(keep)
     ]
 
 
@@ -671,7 +684,8 @@ def build_shared(source: str) -> tuple[Path, bool]:
         except (OSError, subprocess.TimeoutExpired) as exc:
             raise BackendError(f"the C compiler failed: {exc}") from None
         if proc.returncode != 0:
-            first = (proc.stderr.strip().splitlines() or ["(no message)"])[0]
+            lines = proc.stderr.strip().splitlines() or ["(no message)"]
+            first = next((ln for ln in lines if "error" in ln), lines[0])
             raise BackendError(f"the C compiler failed: {first}")
         os.replace(out, lib)  # atomic: concurrent builds of one model are safe
     return lib, False

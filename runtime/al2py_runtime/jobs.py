@@ -759,6 +759,20 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
+def _initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
+    """The states' values at TINITIAL, in internal units."""
+    aliases = _state_aliases(job, c)
+    y0 = []
+    for name in c.state_names:
+        alias = aliases.get(name)
+        if normalize_name(name) not in vals.values and alias in vals.values:
+            name = alias  # ``OMEGA = THETA'`` with ``Input OMEGA=0``
+        y0.append(
+            vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
+        )
+    return y0
+
+
 def _run_dynamics(
     job: Job, vals: _Values, keep: set, backend: str | None = None
 ) -> Result:
@@ -771,15 +785,7 @@ def _run_dynamics(
     ip = _integration(vals)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
-    aliases = _state_aliases(job, c)
-    y0 = []
-    for name in c.state_names:
-        alias = aliases.get(name)
-        if normalize_name(name) not in vals.values and alias in vals.values:
-            name = alias  # ``OMEGA = THETA'`` with ``Input OMEGA=0``
-        y0.append(
-            vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
-        )
+    y0 = _initial_state(job, c, vals)
     bound = c.compiled.bind(p)
     clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
     rhs = bound.rhs
