@@ -183,28 +183,32 @@ def pydy_rhs(kane, q, u, consts, values):
     return rhs
 
 
-def per_call_us(rhs, y0: np.ndarray) -> float:
-    rhs(0.0, y0)
-    best = min(timeit.repeat(lambda: rhs(0.0, y0), number=CALLS, repeat=REPEATS))
-    return 1e6 * best / CALLS
+def measure(candidates: list[dict], y0: np.ndarray) -> None:
+    """Fill ``us`` and ``ivp`` of each candidate ({"rhs": f, ...}).
 
-
-def ivp_seconds(rhs, y0: np.ndarray) -> tuple[float, np.ndarray]:
-    best, final = math.inf, None
+    Candidates are timed in turn, round after round, and each keeps its best
+    round: load from other processes then hits all of them alike."""
+    for c in candidates:
+        c["rhs"](0.0, y0)
+        c["us"], c["ivp"] = math.inf, math.inf
+    for _ in range(REPEATS):
+        for c in candidates:
+            rhs = c["rhs"]
+            secs = timeit.timeit(lambda rhs=rhs: rhs(0.0, y0), number=CALLS)
+            c["us"] = min(c["us"], 1e6 * secs / CALLS)
     for _ in range(3):
-        start = time.perf_counter()
-        sol = solve_ivp(
-            rhs,
-            (0.0, T_FINAL),
-            y0,
-            method="DOP853",
-            rtol=TOL,
-            atol=TOL,
-            max_step=MAX_STEP,
-        )
-        best = min(best, time.perf_counter() - start)
-        final = sol.y[:, -1]
-    return best, final
+        for c in candidates:
+            start = time.perf_counter()
+            solve_ivp(
+                c["rhs"],
+                (0.0, T_FINAL),
+                y0,
+                method="DOP853",
+                rtol=TOL,
+                atol=TOL,
+                max_step=MAX_STEP,
+            )
+            c["ivp"] = min(c["ivp"], time.perf_counter() - start)
 
 
 def _import(source: str, name: str, workdir: Path):
@@ -228,9 +232,11 @@ def al2py_model(module):
     return c.spec, p, y0
 
 
-def al2py_rows(spec, p, y0) -> list[tuple[str, float, float, float, float]]:
-    """(backend, first-call s, cached s, us/call, solve_ivp s) per backend."""
-    rows = []
+def al2py_candidates(spec, p) -> list[dict]:
+    """One candidate per available backend, with its first-call overhead
+    (into an empty cache) and its cost with the cache warm."""
+    default = backends.compile_dynamics(spec, "auto").backend
+    out = []
     for name in backends.BACKENDS:
         if not backends.available(name):
             continue
@@ -253,14 +259,36 @@ def al2py_rows(spec, p, y0) -> list[tuple[str, float, float, float, float]]:
                     del os.environ["AL2PY_CACHE_DIR"]
                 else:
                     os.environ["AL2PY_CACHE_DIR"] = old
-            rhs = compiled.bind(p).rhs
-            us = per_call_us(rhs, y0)
-            secs, _final = ivp_seconds(rhs, y0)
-            rows.append((name, first, again, us, secs))
-    return rows
+        label = f"al2py {name}" + (" (default)" if name == default else "")
+        out.append(
+            {
+                "label": label,
+                "rhs": compiled.bind(p).rhs,
+                "first": first,
+                "cached": again,
+            }
+        )
+    return out
 
 
-def report(title: str, rows, reference_us: float | None) -> None:
+def by_hand(kane, q, u, consts, values) -> list[dict]:
+    """Hand-written lambdify, and PyDy's Cython generator if installed."""
+    out = [
+        {
+            "label": "lambdify+numpy by hand",
+            "rhs": hand_lambdify(kane, q, u, consts, values),
+        }
+    ]
+    start = time.perf_counter()
+    pydy = pydy_rhs(kane, q, u, consts, values)
+    if pydy is not None:
+        out.append(
+            {"label": "PyDy Cython", "rhs": pydy, "first": time.perf_counter() - start}
+        )
+    return out
+
+
+def report(title: str, candidates: list[dict], reference: dict | None) -> None:
     print(f"\n{title}")
     head = (
         f"  {'right-hand side':<28} {'us/call':>8} {'x C ref':>8} "
@@ -268,54 +296,64 @@ def report(title: str, rows, reference_us: float | None) -> None:
     )
     print(head)
     print("  " + "-" * (len(head) - 2))
-    for label, us, secs, first, cached in rows:
-        ratio = f"{us / reference_us:8.2f}" if reference_us else f"{'-':>8}"
+    for c in candidates:
+        ratio = f"{c['us'] / reference['us']:8.2f}" if reference else f"{'-':>8}"
+        first, cached = c.get("first"), c.get("cached")
         f1 = f"{first:13.2f}" if first is not None else f"{'-':>13}"
         f2 = f"{cached:9.2f}" if cached is not None else f"{'-':>9}"
-        print(f"  {label:<28} {us:8.1f} {ratio} {secs:9.3f} {f1} {f2}", flush=True)
+        print(
+            f"  {c['label']:<28} {c['us']:8.1f} {ratio} {c['ivp']:9.3f} {f1} {f2}",
+            flush=True,
+        )
 
 
 def pendulum(n: int, workdir: Path) -> None:
     module = _import(autolev_source(n), f"pendulum{n}", workdir)
     spec, p, y0 = al2py_model(module)
-    default = backends.compile_dynamics(spec, "auto").backend
     kane, q, u, consts = hand_derive(n)
-    values = (LENGTH, MASS, G)
-    ref = reference_rhs(n)
+    reference = {"label": "hand-written C (limit)", "rhs": reference_rhs(n)}
+    candidates = al2py_candidates(spec, p)
     # The same equations: al2py's default against the hand-written C.
-    ours = backends.compile_dynamics(spec, "auto").bind(p).rhs(0.0, y0)
-    assert np.allclose(ours, ref(0.0, y0), rtol=1e-9, atol=1e-9), "models differ"
-    rows = []
-    ref_us = per_call_us(ref, y0)
-    ref_secs, _ = ivp_seconds(ref, y0)
-    for name, first, cached, us, secs in al2py_rows(spec, p, y0):
-        label = f"al2py {name}" + (" (default)" if name == default else "")
-        rows.append((label, us, secs, first, cached))
-    hand = hand_lambdify(kane, q, u, consts, values)
-    rows.append(
-        (
-            "lambdify+numpy by hand",
-            per_call_us(hand, y0),
-            ivp_seconds(hand, y0)[0],
-            None,
-            None,
-        )
-    )
-    start = time.perf_counter()
-    pydy = pydy_rhs(kane, q, u, consts, values)
-    if pydy is not None:
-        build = time.perf_counter() - start
-        rows.append(
-            (
-                "PyDy Cython",
-                per_call_us(pydy, y0),
-                ivp_seconds(pydy, y0)[0],
-                build,
-                None,
-            )
-        )
-    rows.append(("hand-written C (limit)", ref_us, ref_secs, None, None))
-    report(f"{n}-link pendulum ({2 * n} states)", rows, ref_us)
+    ours = candidates[0]["rhs"](0.0, y0)
+    assert np.allclose(ours, reference["rhs"](0.0, y0), rtol=1e-9, atol=1e-9)
+    candidates += by_hand(kane, q, u, consts, (LENGTH, MASS, G))
+    candidates.append(reference)
+    measure(candidates, y0)
+    report(f"{n}-link pendulum ({2 * n} states)", candidates, reference)
+
+
+CHAIN_VALUES = {"L": 0.5, "M": 1.0, "IA": 0.01, "IT": 0.1, "G": 9.81}
+
+
+def hand_chain(n: int):
+    """The spatial chain with ``KanesMethod`` directly, as in large.py."""
+    from sympy.physics import mechanics as me
+
+    q = me.dynamicsymbols(f"q1:{3 * n + 1}")
+    u = me.dynamicsymbols(f"u1:{3 * n + 1}")
+    consts = sp.symbols("L M IA IT G")
+    length, mass, ia, it, g = consts
+    frame_n = me.ReferenceFrame("N")
+    origin = me.Point("O")
+    origin.set_vel(frame_n, 0)
+    parent, previous = frame_n, origin
+    bodies, loads, kd = [], [], []
+    for k in range(n):
+        qs, us = q[3 * k : 3 * k + 3], u[3 * k : 3 * k + 3]
+        frame = me.ReferenceFrame(f"B{k + 1}")
+        frame.orient_body_fixed(parent, qs, "123")
+        w = us[0] * frame.x + us[1] * frame.y + us[2] * frame.z
+        kd += list((frame.ang_vel_in(parent) - w).to_matrix(frame))
+        frame.set_ang_vel(parent, w)
+        center = previous.locatenew(f"P{k + 1}", length * frame.z)
+        center.v2pt_theory(previous, frame_n, frame)
+        inertia = me.inertia(frame, it, it, ia)
+        bodies.append(me.RigidBody(f"R{k + 1}", center, frame, mass, (inertia, center)))
+        loads.append((center, -mass * g * frame_n.z))
+        parent, previous = frame, center
+    kane = me.KanesMethod(frame_n, q_ind=q, u_ind=u, kd_eqs=kd)
+    kane.kanes_equations(bodies, loads)
+    return kane, q, u, consts
 
 
 def chain(n: int, workdir: Path) -> None:
@@ -331,12 +369,15 @@ def chain(n: int, workdir: Path) -> None:
     )
     module = _import(source, f"chain{n}", workdir)
     spec, p, y0 = al2py_model(module)
-    default = backends.compile_dynamics(spec, "auto").backend
-    rows = []
-    for name, first, cached, us, secs in al2py_rows(spec, p, y0):
-        label = f"al2py {name}" + (" (default)" if name == default else "")
-        rows.append((label, us, secs, first, cached))
-    report(f"{n}-body spatial chain ({6 * n} states; no hand-written C)", rows, None)
+    kane, q, u, consts = hand_chain(n)
+    values = tuple(CHAIN_VALUES[str(c)] for c in consts)
+    candidates = al2py_candidates(spec, p)
+    hand = by_hand(kane, q, u, consts, values)
+    ours = candidates[0]["rhs"](0.0, y0)
+    assert np.allclose(ours, hand[0]["rhs"](0.0, y0), rtol=1e-8, atol=1e-8)
+    measure(candidates + hand, y0)
+    title = f"{n}-body spatial chain ({6 * n} states; no hand-written C)"
+    report(title, candidates + hand, None)
 
 
 def main(argv: list[str]) -> int:
