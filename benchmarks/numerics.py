@@ -6,7 +6,7 @@
 For each model it prints, measured side by side in one process:
 
 * microseconds per right-hand-side call ``f(t, y)`` (mass matrix, forcing,
-  linear solve, the state derivatives), best of 5 x 2000 calls at the initial
+  linear solve, the state derivatives), best of 15 x 2000 calls at the initial
   state;
 * seconds for ``solve_ivp`` (DOP853, rtol = atol = 1e-7, max_step = 0.1)
   over 10 s of simulation, best of 3;
@@ -46,7 +46,7 @@ from scipy.integrate import solve_ivp  # noqa: E402
 from al2py import convert  # noqa: E402
 
 T_FINAL, TOL, MAX_STEP = 10.0, 1e-7, 0.1
-CALLS, REPEATS = 2000, 5
+CALLS, REPEATS = 2000, 15
 
 # The n-link pendulum by hand: M_ij = m l^2 c_ij cos(q_i - q_j),
 # f_i = -m l^2 sum_j c_ij sin(q_i - q_j) u_j^2 - m g l c_i sin(q_i), with

@@ -669,7 +669,8 @@ def build_shared(source: str) -> tuple[Path, bool]:
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError:
-        folder = Path(tempfile.gettempdir()) / f"al2py-{os.getuid()}"
+        user = getattr(os, "getuid", lambda: "user")()
+        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
         folder.mkdir(parents=True, exist_ok=True)
     lib = folder / f"al2py_{key}{suffix}"
     if lib.exists():
