@@ -32,7 +32,11 @@ def _pendulum_source(n: int) -> str:
 
 def _build(script, outdir, capsys) -> list:
     """``al2py code SCRIPT -o OUTDIR`` then ``cc -Wall``; returns the programs."""
-    assert al2py_main(["code", str(script), "-o", str(outdir)]) == 0
+    return _build_with([], script, outdir, capsys)
+
+
+def _build_with(options, script, outdir, capsys) -> list:
+    assert al2py_main(["code", *options, str(script), "-o", str(outdir)]) == 0
     printed = capsys.readouterr().out.split()
     sources = sorted(outdir.glob("*.c"))
     assert sources and all(str(s) in printed for s in sources)
@@ -137,9 +141,16 @@ def test_other_languages_and_jobs_are_not_supported_yet(tmp_path, capsys):
     assert al2py_main(["code", str(script), "-o", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert (
-        "MATLAB code is not supported yet; al2py writes C (name the file odes.c)" in err
+        "MATLAB code is not supported yet; al2py writes C (name the file odes.c, or use --lang c)"
+        in err
     )
     assert not list(tmp_path.glob("odes.*[cm]"))
+    # --lang c writes C whatever the extension; the program solves X' = -X.
+    (program,) = _build_with(["--lang", "c"], script, tmp_path / "c", capsys)
+    done = _run_c(program, program.parent, "TFINAL=1")
+    assert done.returncode == 0, done.stderr
+    table = np.loadtxt(program.parent / "odes.1", comments="%")
+    assert table[-1] == pytest.approx([1.0, np.exp(-1.0)], rel=1e-6)
     script.write_text(
         "Variables X\nConstants A\nE[1] = X^2 - A\nInput A=4, X=1\n"
         "CODE Nonlinear(E, X) roots.c\n"

@@ -2,6 +2,7 @@
 
     al2py code tutor6.al              writes tutor6.c (the name CODE gives)
     al2py code tutor6.al -o build/    into another folder
+    al2py code tutor7.al --lang c     C although CODE names tutor7.for
 
 Converts the script, derives the model as the generated module would on
 import, and writes a self-contained C99 file per ``CODE Dynamics``/``ODE``
@@ -40,6 +41,13 @@ def parser() -> argparse.ArgumentParser:
         metavar="DIR",
         help="folder for the C files (default: the current folder)",
     )
+    p.add_argument(
+        "--lang",
+        choices=("c",),
+        help="write this language whatever the CODE statement's file"
+        " extension says (tutor7's CODE names tutor7.for; --lang c writes"
+        " tutor7.c)",
+    )
     return p
 
 
@@ -73,7 +81,7 @@ def main(argv: list[str]) -> int:
     if not ws.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
-    written, errors = write_programs(ws, args.outdir)
+    written, errors = write_programs(ws, args.outdir, force_c=args.lang == "c")
     for item in written:
         print(f"Wrote {item}")
     for message in errors:
