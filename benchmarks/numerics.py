@@ -6,10 +6,12 @@
 For each model it prints, measured side by side in one process:
 
 * microseconds per right-hand-side call ``f(t, y)`` (mass matrix, forcing,
-  linear solve, the state derivatives), best of 15 x 2000 calls at the initial
+  linear solve, the state derivatives), best of 60 rounds of 250 calls at the initial
   state;
 * seconds for ``solve_ivp`` (DOP853, rtol = atol = 1e-7, max_step = 0.1)
   over 10 s of simulation, best of 3;
+* for the pendulum, the same per-call cost measured inside C (a loop of
+  calls, no Python in between) for al2py's ``c`` backend and the reference;
 * for al2py's backends, the first-call overhead (code generation and
   compilation into an empty cache) and the same with the cache warm.
 
@@ -46,7 +48,7 @@ from scipy.integrate import solve_ivp  # noqa: E402
 from al2py import convert  # noqa: E402
 
 T_FINAL, TOL, MAX_STEP = 10.0, 1e-7, 0.1
-CALLS, REPEATS = 2000, 15
+CALLS, REPEATS = 250, 60
 
 # The n-link pendulum by hand: M_ij = m l^2 c_ij cos(q_i - q_j),
 # f_i = -m l^2 sum_j c_ij sin(q_i - q_j) u_j^2 - m g l c_i sin(q_i), with
@@ -109,6 +111,42 @@ int ref_rhs(double t, const double *y, const double *p, double *dy)
     return 0;
 }
 """
+
+
+LOOP_C = r"""
+int bench_loop(long reps, double *y, const double *p, double *dy)
+{
+    int code = 0;
+    for (long k = 0; k < reps; k++) {
+        y[0] += 1e-12;  /* a new state each call: nothing to hoist */
+        code |= %(fn)s(0.0, y, p, dy);
+    }
+    return code;
+}
+"""
+
+
+def c_only_us(sources: dict[str, tuple[str, list[float]]], y0: np.ndarray) -> dict:
+    """Microseconds per call measured inside C (a loop of calls, no Python),
+    for each {label: (C source with bench_loop, parameters)}; in turn, best
+    of REPEATS rounds."""
+    loops = {}
+    for label, (source, p) in sources.items():
+        path, _hit = backends.build_shared(source)
+        fn = ctypes.CDLL(str(path)).bench_loop
+        fn.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 3
+        fn.restype = ctypes.c_int
+        loops[label] = (fn, np.array(p, dtype=float))
+    best = dict.fromkeys(loops, math.inf)
+    reps = 500
+    for _ in range(REPEATS):
+        for label, (fn, p) in loops.items():
+            y = np.array(y0, dtype=float)
+            dy = np.empty_like(y)
+            start = time.perf_counter()
+            fn(reps, y.ctypes.data, p.ctypes.data, dy.ctypes.data)
+            best[label] = min(best[label], 1e6 * (time.perf_counter() - start) / reps)
+    return best
 
 
 def reference_rhs(n: int):
@@ -320,6 +358,24 @@ def pendulum(n: int, workdir: Path) -> None:
     candidates.append(reference)
     measure(candidates, y0)
     report(f"{n}-link pendulum ({2 * n} states)", candidates, reference)
+    inside = c_only_us(
+        {
+            "al2py c": (
+                backends.c_model_source(spec) + LOOP_C % {"fn": "al_rhs"},
+                p,
+            ),
+            "reference": (
+                REFERENCE_C % {"n": n} + LOOP_C % {"fn": "ref_rhs"},
+                [LENGTH, MASS, G],
+            ),
+        },
+        y0,
+    )
+    print(
+        f"  inside C (no Python call): al2py c {inside['al2py c']:.2f} us,"
+        f" hand-written {inside['reference']:.2f} us,"
+        f" ratio {inside['al2py c'] / inside['reference']:.2f}"
+    )
 
 
 CHAIN_VALUES = {"L": 0.5, "M": 1.0, "IA": 0.01, "IT": 0.1, "G": 9.81}
