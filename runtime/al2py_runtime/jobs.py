@@ -56,7 +56,8 @@ class NumericsError(ValueError):
 
 #: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
 #: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
-#: TINITIAL)/100, PRINTINT = INTEGSTP).
+#: TINITIAL)/100, PRINTINT = 1).  PRINTINT counts integration steps: a row
+#: is written every INTEGSTP*PRINTINT.
 INTEGRATION_DEFAULTS: dict[str, float | None] = {
     "TINITIAL": 0.0,
     "TFINAL": None,
@@ -95,10 +96,16 @@ class OutputItem:
 
 @dataclass(frozen=True)
 class OutputSpec:
-    """One ``Output`` statement: its items, in order."""
+    """One ``Output`` statement: its items, in order.
+
+    ``encoded`` marks the quantities an ``Encode`` statement lists: computed
+    at every output row like an Output, kept in the result, never written
+    to a file.
+    """
 
     items: tuple[OutputItem, ...]
     line: int | None = None
+    encoded: bool = False
 
 
 @dataclass
@@ -126,6 +133,8 @@ class Job:
     #: initial values of variables the script never inputs (``NiCheck``'s
     #: work variable starts at 0), by name
     initials: dict[str, float] = field(default_factory=dict)
+    #: shapes of the ``Encode``d matrices (their elements are output items)
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -155,6 +164,7 @@ class Table:
     columns: list[Column]
     data: np.ndarray
     line: int | None = None
+    encoded: bool = False  # Encode's quantities (not written to a file)
 
     @property
     def names(self) -> list[str]:
@@ -195,12 +205,29 @@ class Result:
     notes: list[str] = field(default_factory=list)
     time_unit: str | None = None
     nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
+    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
+    #: shape (rows, m, n), one matrix per output row.
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+
+    def _encoded(self, key: str) -> np.ndarray:
+        m, n = self.encoded[key]
+        cols = [
+            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
+        ]
+        return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
+
+    @property
+    def written(self) -> list[Table]:
+        """The tables written to files (one per ``Output`` statement)."""
+        return [t for t in self.tables if not t.encoded]
 
     def __getitem__(self, name: str) -> np.ndarray:
         for table in self.tables:
             if name in table:
                 return table[name]
         key = normalize_name(name)
+        if key in self.encoded:
+            return self._encoded(key)
         for source in (self.solution, self.states):
             if key in source:
                 return source[key]
@@ -215,7 +242,7 @@ class Result:
 
     def files(self) -> list[str]:
         """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
-        return [f"{self.stem}.{table.number}" for table in self.tables]
+        return [f"{self.stem}.{table.number}" for table in self.written]
 
     def write(self, directory: str | Path = ".") -> list[Path]:
         """Write each table as ``STEM.n``: a ``%`` header naming columns and
@@ -224,7 +251,7 @@ class Result:
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
+        for table, name in zip(self.written, self.files(), strict=True):
             path = directory / name
             path.write_text(
                 format_table(table, self.digits, name, self.time_unit),
@@ -245,7 +272,7 @@ class Result:
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
+        for table, name in zip(self.written, self.files(), strict=True):
             cols = table.columns
             if len(cols) < 2 or len(table) == 0:
                 continue
@@ -490,12 +517,18 @@ def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]
             raise NumericsError(f"{name} = {value!r} is not a number") from None
         raw[key] = (number, unit)
         given.add(key)
+    computed = {}
     for key, (number, unit) in raw.items():
         try:
-            values[key] = number * us.to_internal(unit)
+            factor = us.to_internal(unit)
         except UnitError as exc:
             raise NumericsError(f"Input {key}: {exc}") from None
         units[key] = unit
+        if isinstance(number, sp.Basic):
+            computed[key] = (number, factor)
+        else:
+            values[key] = number * factor
+    values.update(_computed_inputs(job, computed, values))
     keep = set()
     for key in raw:
         entry = job.entries.get(key)
@@ -507,6 +540,97 @@ def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]
             if isinstance(value, sp.Basic) and value.is_number:
                 keep.add(obj)
     return _Values(job, values, units, [], given), keep
+
+
+def _computed_inputs(
+    job: Job, computed: dict[str, tuple[Any, float]], values: dict[str, float]
+) -> dict[str, float]:
+    """Inputs given as expressions of other Inputs, in internal units."""
+    out: dict[str, float] = {}
+    pending = dict(computed)
+    while pending:
+        known = {**values, **out}
+        subs = {}
+        for name, (_kind, obj) in job.entries.items():
+            if name in known:
+                subs[obj] = known[name]
+        progress = False
+        for key, (expr, factor) in list(pending.items()):
+            value = sp.sympify(sp.sympify(expr).xreplace(subs))
+            if value.free_symbols or value.atoms(AppliedUndef):
+                continue
+            try:
+                out[key] = float(value) * factor
+            except TypeError:
+                raise NumericsError(
+                    f"Input {key} = {expr} is not a real number"
+                ) from None
+            del pending[key]
+            progress = True
+        if not progress:
+            key, (expr, _) = next(iter(pending.items()))
+            raise NumericsError(
+                f"Input {key} = {expr}: every name in it needs an Input value"
+            )
+    return out
+
+
+def evaluate_with_inputs(
+    job: Job, value: Any, name: str, overrides: Mapping[str, Any]
+) -> Any:
+    """``value`` with Inputs, ``overrides`` and right-hand sides substituted."""
+    given = {normalize_name(k): v for k, v in overrides.items()}
+    settable = {
+        k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
+    }
+    free = {k: v for k, v in given.items() if k not in settable}
+    vals, keep = _input_values(job, settable)
+    numbers = dict(vals.values)
+    for key, v in free.items():
+        try:
+            numbers[key] = float(v)
+        except (TypeError, ValueError):
+            raise NumericsError(f"{key} = {v!r} is not a number") from None
+    table = _without(
+        job.rhs,
+        [obj for key, (kind, obj) in job.entries.items() if key in free] + list(keep),
+    )
+    time = numbers.get("T", numbers.get("TINITIAL", 0.0))
+    subs: dict[Any, Any] = {t: time}
+    for key, number in numbers.items():
+        m = re.fullmatch(r"([A-Z][A-Z0-9_]*)('*)", key)
+        entry = job.entries.get(m.group(1)) if m else None
+        if entry is not None:
+            subs[_deriv(entry[1], len(m.group(2)))] = number
+
+    def one(expr: Any) -> float:
+        expr = _resolve(sp.sympify(expr), table)
+        # Derivatives first, so that QA' is not taken as d(value of QA)/dt.
+        out = sp.sympify(expr).xreplace(
+            {k: v for k, v in subs.items() if isinstance(k, sp.Derivative)}
+        )
+        left = {label_of(a, job.names) for a in out.atoms(sp.Derivative)}
+        out = sp.sympify(out.xreplace({k: v for k, v in subs.items() if k != t}))
+        left |= {label_of(a, job.names) for a in out.atoms(AppliedUndef)}
+        left |= {str(s) for s in out.free_symbols if s != t}
+        if left:
+            raise NumericsError(
+                f"{name} needs a value for {', '.join(sorted(left))}"
+                " (give it as a keyword argument)"
+            )
+        out = sp.sympify(out.xreplace({t: time}))
+        number = complex(sp.N(out))
+        return (
+            number.real if abs(number.imag) < 1e-12 * max(1.0, abs(number)) else number
+        )
+
+    if isinstance(value, sp.MatrixBase):
+        return np.array(
+            [[one(value[i, j]) for j in range(value.cols)] for i in range(value.rows)]
+        )
+    if not isinstance(value, sp.Basic | int | float):
+        raise NumericsError(f"{name} is not a scalar or matrix; it cannot be evaluated")
+    return one(value)
 
 
 def check_overrides(job: Job, overrides: Mapping[str, Any]) -> None:
@@ -545,10 +669,16 @@ def _integration(vals: _Values) -> dict[str, float]:
     if p["INTEGSTP"] is None or p["INTEGSTP"] == 0:
         p["INTEGSTP"] = abs(span) / 100 if span else 0.1
     if p["PRINTINT"] is None or p["PRINTINT"] == 0:
-        p["PRINTINT"] = p["INTEGSTP"]
+        p["PRINTINT"] = 1
     for key in ("INTEGSTP", "PRINTINT", "ABSERR", "RELERR"):
         if p[key] <= 0:
             raise NumericsError(f"{key} must be positive, not {p[key]}")
+    # Autolev's programs read "Print-Integer PRINTINT Positive Integer":
+    # a row is written every PRINTINT integration steps.
+    if p["PRINTINT"] != round(p["PRINTINT"]):
+        raise NumericsError(
+            f"PRINTINT is a whole number of integration steps, not {p['PRINTINT']:g}"
+        )
     return p
 
 
@@ -610,7 +740,8 @@ def _output_exprs(job: Job, table: dict, slots: _Slots) -> list[list[Any]]:
                     f"Output {item.label} (line {spec.line}) is a matrix;"
                     " output its elements"
                 )
-            row.append(slots.numeric(value, f"Output {item.label}"))
+            what = "Encode" if spec.encoded else "Output"
+            row.append(slots.numeric(value, f"{what} {item.label}"))
         out.append(row)
     return out
 
@@ -663,13 +794,15 @@ def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
     candidates = []
-    for _name, obj, order in job.variables:
+    for name, obj, order in job.variables:
         if obj in table:
             continue  # computed from its own RHS (dependent speeds, specified)
         ks = [k for k in range(max(order, 1), 0, -1) if _deriv(obj, k) in table]
         if ks:
             explicit.append((obj, ks[0]))
-        else:
+        elif job.entries.get(name, ("", None))[0] != "specified":
+            # A Specified quantity with no equation is an input of the job
+            # (0 unless given, as in Autolev's programs), never an unknown.
             candidates.append(obj)
     zero = None
     if job.zero is not None:
@@ -794,7 +927,7 @@ def _run_dynamics(
         clock[0] = tt
         return rhs(tt, y)
 
-    times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
+    times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     try:
         nfev = 0
         if len(times) == 1:
@@ -840,7 +973,7 @@ def _run_dynamics(
         zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
     ):
         data = np.array(rows, dtype=float).reshape(len(rows), len(cols)) * fac
-        tables.append(Table(number, cols, data, spec.line))
+        tables.append(Table(number, cols, data, spec.line, spec.encoded))
     states = {"T": np.asarray(times, dtype=float)}
     for j, name in enumerate(c.state_names):
         unit = vals.units.get(name)
@@ -850,6 +983,7 @@ def _run_dynamics(
         job.stem,
         tables,
         job.digits,
+        encoded=dict(job.encoded),
         states=states,
         notes=_unique(vals.notes),
         time_unit=job.unit_system.time_unit,
@@ -960,8 +1094,8 @@ def _static_result(
             except (ValueError, ZeroDivisionError, OverflowError) as exc:
                 raise NumericsError(f"{job.where}: Output: {exc}") from None
             arr = np.array(data, dtype=float).reshape(len(rows), len(cols)) * fac
-            tables.append(Table(number, cols, arr, spec.line))
-    elif c.unknown_names:
+            tables.append(Table(number, cols, arr, spec.line, spec.encoded))
+    if c.unknown_names and not any(not s.encoded for s in job.outputs):
         cols = [Column(n, units[n]) for n in c.unknown_names]
         data = np.column_stack([solution[n] for n in c.unknown_names])
         tables.append(Table(1, cols, data, job.line))
@@ -970,6 +1104,7 @@ def _static_result(
         job.stem,
         tables,
         job.digits,
+        encoded=dict(job.encoded),
         solution=solution,
         solution_units=units,
         notes=_unique(vals.notes),
@@ -1072,7 +1207,7 @@ def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
             name, output_times(float(start), float(stop), float(step))
         )
         result.solution_units.setdefault(name, unit)
-        if not job.outputs and result.tables:  # default table: sweep, unknowns
+        if not any(not s.encoded for s in job.outputs) and result.tables:
             table = result.tables[0]
             table.columns.insert(0, Column(name, unit))
             table.data = np.column_stack([result.solution[name], table.data])

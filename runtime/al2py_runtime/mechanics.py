@@ -204,15 +204,17 @@ class MechanicsMixin:
         i31: Any = 0,
         *,
         about: Point | None = None,
+        basis: ReferenceFrame | None = None,
     ) -> Dyadic:
         """``Inertia A, I11, I22, I33, I12, I23, I31``: the inertia dyadic of
         body ``A`` about its mass center, or about point ``about`` (the central
-        dyadic then follows from the transfer theorem when needed)."""
+        dyadic then follows from the transfer theorem when needed).
+        ``Inertia A(B), ...`` gives the scalars in frame ``basis``'s basis."""
         b = self._body(body)
         m = sp.Matrix([[i11, i12, i31], [i12, i22, i23], [i31, i23, i33]]).applyfunc(
             self._scalar
         )
-        b.inertia = kin.frame_dyadic(body, m)
+        b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
         return b.inertia
 
@@ -930,11 +932,12 @@ class MechanicsMixin:
         self.add_torque(a, -v)
         self.add_torque(b, v)
 
-    def gravity(self, vec: Any, *, line: int | None = None) -> None:
+    def gravity(self, vec: Any, *objs: Any, line: int | None = None) -> None:
         """``Gravity(G*N1>)``: adds mass*vec to every particle and mass center
-        (those whose mass has been declared)."""
+        (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
+        listed bodies and particles only."""
         vec = kin.as_vector(vec)
-        for o in self._mech.massive:
+        for o in self._objects(objs):
             m = self._mass(o, strict=False)
             if m != 0:
                 self.add_force(self._center(o), m * vec)
@@ -1226,11 +1229,12 @@ class MechanicsMixin:
 
     # ---------------------------------------------- energy and momentum
 
-    def ke(self) -> Any:
-        """``KE()``: kinetic energy of all particles and bodies in N."""
+    def ke(self, *objs: Any) -> Any:
+        """``KE()``: kinetic energy of all particles and bodies in N;
+        ``KE(A, B)`` of the listed ones."""
         n = self._n()
         total = sp.Integer(0)
-        for o in self._mech.massive:
+        for o in self._objects(objs):
             m = self._mass(o, strict=False)
             p = self._center(o)
             if m != 0:
@@ -1241,20 +1245,25 @@ class MechanicsMixin:
                 total += w.dot(self.central_inertia(o) & w) / 2
         return kin.tidy(total, self._gens())
 
-    def momentum(self, kind: str, p: Point | None = None) -> Any:
+    def momentum(self, kind: str, *objs: Any) -> Any:
         """``Momentum(LINEAR)``, ``Momentum(ANGULAR, P)`` (about P; default:
         the mass center of the system) or ``Momentum(GENERALIZED)`` (the
-        column of dKE/dUr for the independent and auxiliary speeds)."""
+        column of dKE/dUr for the independent and auxiliary speeds).  Bodies
+        and particles listed after (``Momentum(LINEAR, A, B)``,
+        ``Momentum(ANGULAR, P, A)``) restrict it to them."""
         kind = kind.upper()
         n = self._n()
-        st = self._mech
+        p: Point | None = None
+        if kind == "ANGULAR" and objs and isinstance(objs[0], Point):
+            p, objs = objs[0], objs[1:]
+        massive = self._objects(tuple(objs))
         if kind == "GENERALIZED":
-            ke = self.ke()
+            ke = self.ke(*objs)
             return sp.Matrix([kin.tidy(sp.diff(ke, u)) for u in self._fr_speeds()])
         if kind not in ("LINEAR", "ANGULAR"):
             raise ValueError("Momentum takes LINEAR, ANGULAR or GENERALIZED")
         out = Vector(0)
-        for o in st.massive:
+        for o in massive:
             m = self._mass(o, strict=False)
             c = self._center(o)
             if kind == "LINEAR":

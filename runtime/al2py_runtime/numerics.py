@@ -54,6 +54,10 @@ class _NumericsState:
     inputs: dict[str, InputValue] = field(default_factory=dict)
     outputs: list[OutputSpec] = field(default_factory=list)
     jobs: list[Job] = field(default_factory=list)
+    encoded: list[str] = field(default_factory=list)  # names, in order
+    #: ``Units T=S, X=m``: the unit of a name in later Inputs and Outputs
+    #: that give none.
+    units_of: dict[str, str] = field(default_factory=dict)
 
 
 class NumericsMixin:
@@ -75,17 +79,27 @@ class NumericsMixin:
         """``UnitSystem kg, meter, sec``: the units values have inside a run."""
         self._numerics.unit_system = UnitSystem(mass, length, time)
 
+    def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
+        """``Units T=S, X=m``: the unit of each name where an Input or Output
+        of it gives none."""
+        for name, unit in units.items():
+            self._numerics.units_of[normalize_name(name)] = unit
+
     def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
         """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
         store = self._numerics.inputs
         for name, spec in values.items():
             value, unit = spec if isinstance(spec, tuple) else (spec, None)
+            unit = unit or self._numerics.units_of.get(normalize_name(name))
             try:
-                number = float(sp.sympify(value))
+                expr = sp.sympify(value)
             except (TypeError, ValueError, sp.SympifyError):
                 raise ValueError(
                     f"Input {name} (line {line}): {value!r} is not a number"
                 ) from None
+            # ``Input E4 = COS(QQ1/2)``: computed from the other Inputs at run
+            # time (in internal units), see jobs._input_values.
+            number = float(expr) if expr.is_number else expr
             store[normalize_name(name)] = InputValue(
                 number, unit if unit else None, line
             )
@@ -97,13 +111,43 @@ class NumericsMixin:
         line: int | None = None,
     ) -> None:
         """``Output T, X m, QA deg``: one output table (file ``STEM.n``)."""
+        default = self._numerics.units_of
         spec = OutputSpec(
             tuple(
-                OutputItem(str(lab), expr, unit or None) for lab, expr, unit in items
+                OutputItem(
+                    str(lab), expr, unit or default.get(normalize_name(lab)) or None
+                )
+                for lab, expr, unit in items
             ),
             line,
         )
         self._numerics.outputs.append(spec)
+
+    def encode(self, *names: str, line: int | None = None) -> None:
+        """``Encode A, B'``: the CODE job that follows computes these
+        quantities at every output row, as Autolev's generated programs did
+        (``result["A"]``; see docs/semantics.md)."""
+        for name in names:
+            key = normalize_name(name)
+            if key not in self._numerics.encoded:
+                self._numerics.encoded.append(key)
+
+    def _encoded_spec(self, line: int | None) -> tuple[OutputSpec | None, dict]:
+        """The encoded quantities as one (unwritten) output table."""
+        items: list[OutputItem] = []
+        shapes: dict[str, tuple[int, int]] = {}
+        for key in self._numerics.encoded:
+            value = self[key]
+            if isinstance(value, sp.MatrixBase):
+                shapes[key] = value.shape
+                for i in range(value.rows):
+                    for j in range(value.cols):
+                        items.append(OutputItem(f"{key}[{i + 1},{j + 1}]", value[i, j]))
+            else:
+                items.append(OutputItem(key, value))
+        if not items:
+            return None, {}
+        return OutputSpec(tuple(items), line, encoded=True), shapes
 
     def code(
         self,
@@ -120,6 +164,21 @@ class NumericsMixin:
 
         Records the job; ``run()`` performs it.  ``file``'s stem names the
         output files; its extension (.c, .m, .for, .f) is ignored."""
+        job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
+        self._numerics.jobs.append(job)
+        return job
+
+    def _make_job(
+        self,
+        kind: str,
+        eqs: Any = None,
+        unknowns: Iterable[Any] | None = None,
+        *,
+        sweep: tuple | None = None,
+        file: str | None = None,
+        line: int | None = None,
+    ) -> Job:
+        """A snapshot of the script's state as a job (not recorded)."""
         kind = kind.upper()
         if kind not in KINDS:
             raise ValueError(f"CODE option must be one of {', '.join(KINDS)}")
@@ -147,6 +206,8 @@ class NumericsMixin:
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         stem = PurePath(file).stem if file else PurePath(self.filename).stem
+        encoded, shapes = self._encoded_spec(line)
+        outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
             stem=stem or "autolev",
@@ -159,7 +220,8 @@ class NumericsMixin:
             sweep=sweep,
             rhs=dict(self._rhs),
             zero=zero,
-            outputs=list(state.outputs),
+            outputs=outputs,
+            encoded=shapes,
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
             digits=self.settings.digits,
@@ -177,7 +239,6 @@ class NumericsMixin:
                 or name.startswith("NICHECK_WORK")
             },
         )
-        state.jobs.append(job)
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
@@ -242,6 +303,22 @@ class NumericsMixin:
         merged = dict(values or {})
         merged.update(overrides)
         return run_job(jobs[-1], merged, backend=backend)
+
+    def evaluate_name(
+        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+    ) -> Any:
+        """The named quantity as a float (or numpy array for a matrix).
+
+        Every Input value (given in the Input's units), the ``values`` given
+        here (also in the Input's units; names without an Input are in the
+        unit system's units, radians for angles) and every named intermediate
+        are substituted.  Time is TINITIAL unless ``T`` is given."""
+        from .jobs import evaluate_with_inputs
+
+        merged = dict(values or {})
+        merged.update(more)
+        job = self._make_job("ALGEBRAIC", line=None)
+        return evaluate_with_inputs(job, self[name], name, merged)
 
     def run_job(
         self,

@@ -33,56 +33,12 @@ from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MechanicsMixin
 from .names import Key, parse_key
 from .numerics import NumericsMixin
+from .settings import Settings
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
 #: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
 t = dynamicsymbols._t
-
-_ON_OFF = {"ON": True, "OFF": False}
-
-
-@dataclass
-class Settings:
-    """Autolev settings (tutorial §6.5 and the Summary's "Default settings")."""
-
-    digits: int = 7
-    degrees: bool = False
-    autorhs: str = "ON"  # OFF | ON | ALL
-    factoring: bool = True
-    autoepsilon: float = 1.0e-7
-    complex: str = "OFF"  # OFF | ON | AUTO
-    autoz: bool = False
-    overwrite: bool = True
-    autoexpress: bool = False
-
-    def set(self, name: str, value: Any = None) -> None:
-        """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
-        key = name.lower()
-        word = str(value).upper() if value is not None else "ON"
-        if key == "digits":
-            n = int(value)
-            if not 1 <= n <= 17:
-                raise ValueError(f"Digits must be between 1 and 17, not {n}")
-            self.digits = n
-        elif key == "autoepsilon":
-            self.autoepsilon = float(value)
-        elif key == "autorhs":
-            if word not in ("ON", "OFF", "ALL"):
-                raise ValueError(f"AutoRHS takes ON, OFF or ALL, not {value}")
-            self.autorhs = word
-        elif key == "complex":
-            if word not in ("ON", "OFF", "AUTO"):
-                raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
-            self.complex = word
-        elif key in ("beepsound", "pause"):
-            pass  # interactive conveniences: nothing to do in a batch run
-        elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
-            if word not in _ON_OFF:
-                raise ValueError(f"{name} takes ON or OFF, not {value}")
-            setattr(self, key, _ON_OFF[word])
-        else:
-            raise ValueError(f"unknown setting {name}")
 
 
 @dataclass(frozen=True)
@@ -630,7 +586,12 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         """``Solve(A, x1, x2)``: solve linear equations and assign the unknowns."""
         from . import algebra
 
-        unknowns = list(unknowns)
+        # Solve(Zero, qdd): a matrix of unknowns stands for its elements.
+        unknowns = [
+            x
+            for u in unknowns
+            for x in (list(u) if isinstance(u, sp.MatrixBase) else [u])
+        ]
         if isinstance(eqs, sp.MatrixBase):
             eqs = sp.Matrix(eqs)
         else:
