@@ -106,7 +106,7 @@ def test_tutor6_program_with_tight_tolerances_and_overrides(tutor6_program, tuto
     done = _run_c(tutor6_program, workdir, *(f"{k}={v}" for k, v in values.items()))
     assert done.returncode == 0, done.stderr
     result = tutorial("tutor6").run(values)
-    assert float(result["QA"][0]) == pytest.approx(30) and len(result["T"]) == 6
+    assert float(result["QA"][0]) == pytest.approx(30) and len(result["T"]) == 26
     _same_tables(result, workdir, rtol=1e-8, atol=1e-8)
 
 

@@ -4,8 +4,9 @@
 wrote: one C file with the right-hand side (mass matrix, forcing and the
 linear solve, see :mod:`.backends`), the outputs, and a main program that
 integrates with an adaptive Dormand-Prince 5(4) method (``absErr``,
-``relErr``, steps no longer than ``integStp``, landing on every ``printInt``)
-and writes the output tables ``STEM.1``, ``STEM.2``, ... in the format of
+``relErr``, steps no longer than ``integStp``, landing on every row's time)
+and writes the output tables ``STEM.1``, ``STEM.2``, ... (a row every
+``printInt`` integration steps) in the format of
 :meth:`Result.write <al2py_runtime.jobs.Result.write>`.  The script's
 ``Input`` values are the defaults; ``./model NAME=VALUE ...`` changes them
 (in the Input's unit).
@@ -124,7 +125,7 @@ def program_source(
         "   Integrates the equations of motion with an adaptive Dormand-Prince",
         "   5(4) method (ABSERR, RELERR, steps at most INTEGSTP) from TINITIAL",
         f"   to TFINAL and writes the output tables {job.stem}.1, ... every",
-        "   PRINTINT, as run() does in Python. */",
+        "   PRINTINT integration steps, as run() does in Python. */",
         "#include <ctype.h>",
         "#include <stdio.h>",
         "#include <stdlib.h>",
@@ -384,12 +385,18 @@ int main(int argc, char **argv)
     if (isnan(t1)) t1 = t0 + 10.0;
     double span = t1 - t0;
     if (isnan(step) || step == 0.0) step = span != 0.0 ? fabs(span) / 100 : 0.1;
-    if (isnan(print) || print == 0.0) print = step;
+    if (isnan(print) || print == 0.0) print = 1;
     if (step <= 0 || print <= 0 || atol <= 0 || rtol <= 0) {
         fprintf(stderr, "error: INTEGSTP, PRINTINT, ABSERR and RELERR must be"
                         " positive\n");
         return 2;
     }
+    if (print != floor(print)) {
+        fprintf(stderr, "error: PRINTINT is a whole number of integration steps,"
+                        " not %g\n", print);
+        return 2;
+    }
+    print *= step;  /* a row every PRINTINT integration steps */
     for (int k = 0; k < AL_NTABLE; k++) {
         char name[4096];
         snprintf(name, sizeof name, "%s.%d", AL_STEM, k + 1);
