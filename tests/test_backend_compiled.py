@@ -273,3 +273,27 @@ def test_numerics_suite_with_lambdify_forced():
     )
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
     assert " passed" in run.stdout and "failed" not in run.stdout
+
+
+@pytest.mark.parametrize("name", [*COMPILED, "lambdify"])
+def test_ode_function_integrates_to_run_results(tutorial, name):
+    from scipy.integrate import solve_ivp
+
+    module = tutorial("tutor6")
+    f = module.al.ode_function(QA=30, backend=name)
+    assert f.backend == name and f.t_span == (0.0, 20.0)
+    assert f.state_names[:4] == ["U1", "U2", "QA", "QB"]  # declaration order
+    assert f.y0[2] == pytest.approx(np.radians(30))
+    result = module.run(QA=30, TFINAL=2, backend=name)
+    sol = solve_ivp(f.rhs, (0.0, 2.0), f.y0, method="DOP853", rtol=1e-10, atol=1e-10)
+    rows = f.outputs(2.0, sol.y[:, -1])
+    # T, STRETCH m, QA deg, QB deg, ECHECK joules, as the table has them
+    assert rows[0][0] == 2.0
+    assert rows[0][2] == pytest.approx(float(result["QA"][-1]), abs=1e-4)
+    assert rows[0][3] == pytest.approx(float(result["QB"][-1]), abs=1e-4)
+    assert np.degrees(sol.y[2, -1]) == pytest.approx(rows[0][2])
+
+
+def test_ode_function_needs_a_dynamics_job(tutorial):
+    with pytest.raises(NumericsError, match="no CODE Dynamics or ODE"):
+        tutorial("tutor4").al.ode_function()

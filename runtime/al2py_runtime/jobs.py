@@ -37,6 +37,8 @@ __all__ = [
     "Result",
     "INTEGRATION_DEFAULTS",
     "run_job",
+    "ode_function",
+    "OdeFunction",
     "check_overrides",
     "normalize_name",
 ]
@@ -906,15 +908,75 @@ def _initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
     return y0
 
 
+def _dynamics(job: Job, keep: set, backend: str | None) -> _Dynamics:
+    """The job's equations, built by ``backend`` once per job and backend."""
+    key = ("dyn", frozenset(keep), backends.choose(backend))
+    if key not in job._cache:
+        job._cache[key] = _compile_dynamics(job, frozenset(keep), key[2])
+    return job._cache[key]
+
+
+@dataclass
+class OdeFunction:
+    """A Dynamics/ODE job as ``y' = rhs(t, y)`` with its Input values bound,
+    for your own integrator or sweep::
+
+        f = al.ode_function(QA=30)
+        solve_ivp(f.rhs, f.t_span, f.y0, rtol=1e-8)
+
+    States are in internal units (the UnitSystem's, radians for angles), in
+    the order of ``state_names``; ``outputs(t, y)`` gives one row per Output
+    statement, in the Output's units."""
+
+    rhs: Any
+    y0: np.ndarray
+    t_span: tuple[float, float]
+    state_names: list[str]
+    outputs: Any
+    backend: str
+
+
+def ode_function(
+    job: Job,
+    overrides: Mapping[str, Any] | None = None,
+    *,
+    backend: str | None = None,
+) -> OdeFunction:
+    """The right-hand side of a Dynamics/ODE ``job`` (see :class:`OdeFunction`)."""
+    if job.kind not in ("DYNAMICS", "ODE"):
+        raise NumericsError(f"{job.where} is not a Dynamics or ODE job")
+    vals, keep = _input_values(job, overrides or {})
+    try:
+        c = _dynamics(job, keep, backend)
+    except backends.BackendError as exc:
+        raise NumericsError(str(exc)) from None
+    ip = _integration(vals)
+    bound = c.compiled.bind([vals.param(obj) for obj in c.params])
+    factors = _output_factors(job, vals)
+
+    def outputs(tt: float, y: Any) -> list[list[float]]:
+        rows = bound.outputs(float(tt), np.asarray(y, dtype=float))
+        return [
+            [v * f for v, f in zip(row, fac, strict=True)]
+            for row, fac in zip(rows, factors, strict=True)
+        ]
+
+    return OdeFunction(
+        bound.rhs,
+        np.array(_initial_state(job, c, vals), dtype=float),
+        (ip["TINITIAL"], ip["TFINAL"]),
+        list(c.state_names),
+        outputs,
+        c.compiled.backend,
+    )
+
+
 def _run_dynamics(
     job: Job, vals: _Values, keep: set, backend: str | None = None
 ) -> Result:
     from scipy.integrate import solve_ivp
 
-    key = ("dyn", frozenset(keep), backends.choose(backend))
-    if key not in job._cache:
-        job._cache[key] = _compile_dynamics(job, frozenset(keep), key[2])
-    c: _Dynamics = job._cache[key]
+    c = _dynamics(job, keep, backend)
     ip = _integration(vals)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]

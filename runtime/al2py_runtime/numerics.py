@@ -304,6 +304,28 @@ class NumericsMixin:
         merged.update(overrides)
         return run_job(jobs[-1], merged, backend=backend)
 
+    def ode_function(
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        backend: str | None = None,
+        **overrides: Any,
+    ) -> Any:
+        """The script's (last) Dynamics/ODE job as ``rhs(t, y)`` with its Input
+        values (changed as in :meth:`run`) bound: an
+        :class:`~al2py_runtime.jobs.OdeFunction` with ``rhs``, ``y0``,
+        ``t_span``, ``state_names`` and ``outputs``, for sweeps and your own
+        integrators."""
+        from .jobs import ode_function
+
+        jobs = [j for j in self._numerics.jobs if j.kind in ("DYNAMICS", "ODE")]
+        if not jobs:
+            raise NumericsError(f"{self.filename} has no CODE Dynamics or ODE")
+        merged = dict(values or {})
+        merged.update(overrides)
+        return ode_function(jobs[-1], merged, backend=backend)
+
     def evaluate_name(
         self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
     ) -> Any:
