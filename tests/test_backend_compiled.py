@@ -254,14 +254,16 @@ def test_module_command_line_backend_option(tmp_path):
 
 
 @pytest.mark.slow
-def test_numerics_suite_with_lambdify_forced():
+def test_numerics_suite_with_lambdify_forced(tmp_path):
     """The tutorial and numerics suites with ``AL2PY_BACKEND=lambdify``; the
     normal run of the suite uses the default (compiled) backend."""
-    env = {**os.environ, "AL2PY_BACKEND": "lambdify"}
+    cache = tmp_path / "cache"
+    env = {**os.environ, "AL2PY_BACKEND": "lambdify", "AL2PY_CACHE_DIR": str(cache)}
     tests = [
         "tests/test_numerics_golden.py",
         "tests/runtime/test_numerics.py",
         "tests/test_regress_numerics.py",
+        "tests/test_real_constructs.py",
     ]
     run = subprocess.run(
         [sys.executable, "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider", *tests],
@@ -273,6 +275,7 @@ def test_numerics_suite_with_lambdify_forced():
     )
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
     assert " passed" in run.stdout and "failed" not in run.stdout
+    assert not cache.exists() or not any(cache.iterdir())  # nothing compiled
 
 
 @pytest.mark.parametrize("name", [*COMPILED, "lambdify"])
