@@ -39,6 +39,7 @@ import ctypes
 import hashlib
 import math
 import os
+import platform
 import shutil
 import subprocess
 import sys
@@ -662,7 +663,7 @@ def build_shared(source: str) -> tuple[Path, bool]:
     if cc is None:
         raise BackendError(_unavailable("c"))
     key = hashlib.sha256(
-        "\0".join([source, cc, *C_FLAGS, sys.platform]).encode()
+        "\0".join([source, cc, *C_FLAGS, sys.platform, platform.machine()]).encode()
     ).hexdigest()[:24]
     suffix = ".dll" if sys.platform == "win32" else ".so"
     folder = cache_dir()
@@ -742,7 +743,10 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
     start = time.perf_counter()
     source = c_model_source(spec, api="")
     path, hit = build_shared(source)
-    lib = ctypes.CDLL(str(path))
+    try:
+        lib = ctypes.CDLL(str(path))
+    except OSError as exc:
+        raise BackendError(f"cannot load the compiled model {path}: {exc}") from None
     for name in ("al_rhs", "al_out"):
         fn = getattr(lib, name)
         fn.argtypes = [
