@@ -316,6 +316,7 @@ class _PyBound(Bound):
         nf = n * n + n
 
         def rhs(t: float, y: np.ndarray) -> np.ndarray:
+            y = np.asarray(y, dtype=float)
             v = mf(t, y, p)
             ud = _solve(n, v, t)
             out = np.empty(ny)
@@ -703,7 +704,11 @@ class _CBound(Bound):
         asarray = np.ascontiguousarray
         empty = np.empty
 
-        def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        # The closures hold the parameter array and the library: ``pp`` is a
+        # bare address, valid only while the array lives.
+        keep = (self._p, lib)
+
+        def rhs(t: float, y: np.ndarray, _keep: Any = keep) -> np.ndarray:
             y = asarray(y, dtype=float)
             dy = empty(ny)
             code = c_rhs(t, y.ctypes.data, pp, dy.ctypes.data)
@@ -711,7 +716,7 @@ class _CBound(Bound):
                 _raise(code, t)
             return dy
 
-        def outs(t: float, y: Sequence[float]) -> list[list[float]]:
+        def outs(t: float, y: Sequence[float], _keep: Any = keep) -> list[list[float]]:
             yy = asarray(y, dtype=float)
             out = empty(max(nout, 1))
             code = c_out(t, yy.ctypes.data, pp, out.ctypes.data)

@@ -32,10 +32,10 @@ from .jobs import (
     _initial_state,
     _input_values,
     _output_factors,
-    format_table,
     label_of,
     normalize_name,
 )
+from .tables import format_table
 
 __all__ = ["LANGUAGES", "program_source", "target_file", "write_programs"]
 
@@ -157,6 +157,9 @@ def program_source(
         + "};",
         f"static const int al_width[{max(nt, 1)}] = {{"
         + ", ".join(str(k) for k in width or [0])
+        + "};",
+        f"static const int al_written[{max(nt, 1)}] = {{"
+        + ", ".join([str(int(not spec.encoded)) for spec in job.outputs] or ["0"])
         + "};",
         f"static const char *al_header[{max(nt, 1)}] = {{",
     ]
@@ -352,11 +355,12 @@ static int al_write_row(FILE **files, double t, const double *y, const double *p
         al_t_error = t;
         return code;
     }
-    for (int k = 0, j = 0; k < AL_NTABLE; k++) {
+    for (int k = 0, j = 0; k < AL_NTABLE; j += al_columns[k], k++) {
+        if (!files[k]) continue;  /* Encode's quantities: no file */
         fputc(' ', files[k]);
-        for (int c = 0; c < al_columns[k]; c++, j++)
+        for (int c = 0; c < al_columns[k]; c++)
             fprintf(files[k], "%*.*E", al_width[k], AL_DIGITS - 1,
-                    out[j] * al_factor[j]);
+                    out[j + c] * al_factor[j + c]);
         fputc('\n', files[k]);
     }
     return 0;
@@ -399,6 +403,8 @@ int main(int argc, char **argv)
     print *= step;  /* a row every PRINTINT integration steps */
     for (int k = 0; k < AL_NTABLE; k++) {
         char name[4096];
+        files[k] = 0;
+        if (!al_written[k]) continue;
         snprintf(name, sizeof name, "%s.%d", AL_STEM, k + 1);
         files[k] = fopen(name, "w");
         if (!files[k]) {
@@ -421,7 +427,8 @@ int main(int argc, char **argv)
         if (r > 0) code = al_dopri(&t, target, y, k1, p, &h, step, atol, rtol);
         if (!code) code = al_write_row(files, target, y, p);
     }
-    for (int k = 0; k < AL_NTABLE; k++) fclose(files[k]);
+    for (int k = 0; k < AL_NTABLE; k++)
+        if (files[k]) fclose(files[k]);
     if (code == 1)
         fprintf(stderr, "error: the mass matrix is singular at t = %g\n", al_t_error);
     else if (code == 2)
@@ -430,7 +437,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "error: the step size became too small at t = %g\n", t);
     else
         for (int k = 0; k < AL_NTABLE; k++)
-            printf("Wrote %s.%d\n", AL_STEM, k + 1);
+            if (al_written[k]) printf("Wrote %s.%d\n", AL_STEM, k + 1);
     return code ? 2 : 0;
 }
 """

@@ -1,4 +1,6 @@
-"""The numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+"""Running the numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+
+The records live in :mod:`.records`, the result tables in :mod:`.tables`.
 
 A :class:`Job` is a snapshot taken at the ``CODE`` statement: the equations,
 the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
@@ -15,7 +17,6 @@ import math
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -24,7 +25,17 @@ from sympy.core.function import AppliedUndef
 
 from . import backends
 from .kane import linear_terms
-from .units import UnitError, UnitSystem
+from .records import (
+    INTEGRATION_DEFAULTS,
+    InputValue,
+    Job,
+    NumericsError,
+    OutputItem,
+    OutputSpec,
+    normalize_name,
+)
+from .tables import Column, Result, Table, fmt_number
+from .units import UnitError
 
 __all__ = [
     "NumericsError",
@@ -38,7 +49,6 @@ __all__ = [
     "INTEGRATION_DEFAULTS",
     "run_job",
     "ode_function",
-    "OdeFunction",
     "check_overrides",
     "normalize_name",
 ]
@@ -50,298 +60,6 @@ try:  # the same object dynamicsymbols use
     t = dynamicsymbols._t
 except ImportError:  # pragma: no cover
     pass
-
-
-class NumericsError(ValueError):
-    """A numerical job cannot run: bad input, no convergence, failed step."""
-
-
-#: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
-#: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
-#: TINITIAL)/100, PRINTINT = 1).  PRINTINT counts integration steps: a row
-#: is written every INTEGSTP*PRINTINT.
-INTEGRATION_DEFAULTS: dict[str, float | None] = {
-    "TINITIAL": 0.0,
-    "TFINAL": None,
-    "INTEGSTP": None,
-    "PRINTINT": None,
-    "ABSERR": 1.0e-8,
-    "RELERR": 1.0e-7,
-}
-
-KINDS = ("DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC")
-
-
-def normalize_name(name: str) -> str:
-    """``"config[ 1 ]"`` -> ``"CONFIG[1]"``, ``"x'"`` -> ``"X'"``."""
-    return re.sub(r"\s+", "", str(name)).upper()
-
-
-# ------------------------------------------------------------------ records
-
-
-@dataclass(frozen=True)
-class InputValue:
-    """One ``Input NAME = value unit`` item."""
-
-    value: float
-    unit: str | None = None
-    line: int | None = None
-
-
-@dataclass(frozen=True)
-class OutputItem:
-    label: str
-    expr: Any
-    unit: str | None = None
-
-
-@dataclass(frozen=True)
-class OutputSpec:
-    """One ``Output`` statement: its items, in order.
-
-    ``encoded`` marks the quantities an ``Encode`` statement lists: computed
-    at every output row like an Output, kept in the result, never written
-    to a file.
-    """
-
-    items: tuple[OutputItem, ...]
-    line: int | None = None
-    encoded: bool = False
-
-
-@dataclass
-class Job:
-    """Everything a ``CODE`` statement needs, captured when it is recorded."""
-
-    kind: str
-    stem: str
-    filename: str | None
-    line: int | None
-    source: str
-    eqs: sp.Matrix | None
-    eqs_name: str | None
-    unknowns: list[Any]
-    sweep: tuple | None
-    rhs: dict
-    zero: sp.Matrix | None
-    outputs: list[OutputSpec]
-    inputs: dict[str, InputValue]
-    unit_system: UnitSystem
-    digits: int
-    variables: list[tuple[str, Any, int]]
-    names: dict[Any, str]
-    entries: dict[str, tuple[str, Any]]
-    #: initial values of variables the script never inputs (``NiCheck``'s
-    #: work variable starts at 0), by name
-    initials: dict[str, float] = field(default_factory=dict)
-    #: shapes of the ``Encode``d matrices (their elements are output items)
-    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
-    _cache: dict = field(default_factory=dict, repr=False)
-
-    @property
-    def where(self) -> str:
-        what = f"CODE {self.kind.title()}"
-        if self.filename:
-            what += f" {self.filename}"
-        if self.line is not None:
-            what += f" (line {self.line})"
-        return what
-
-
-# ------------------------------------------------------------------ results
-
-
-@dataclass(frozen=True)
-class Column:
-    label: str
-    unit: str | None = None
-
-
-@dataclass
-class Table:
-    """One output table: one ``Output`` statement evaluated at every row."""
-
-    number: int
-    columns: list[Column]
-    data: np.ndarray
-    line: int | None = None
-    encoded: bool = False  # Encode's quantities (not written to a file)
-
-    @property
-    def names(self) -> list[str]:
-        return [c.label for c in self.columns]
-
-    def __len__(self) -> int:
-        return self.data.shape[0]
-
-    def __getitem__(self, label: str) -> np.ndarray:
-        key = normalize_name(label)
-        for j, col in enumerate(self.columns):
-            if normalize_name(col.label) == key:
-                return self.data[:, j]
-        raise KeyError(f"{label!r} is not a column of table {self.number}")
-
-    def __contains__(self, label: object) -> bool:
-        if not isinstance(label, str):
-            return False
-        key = normalize_name(label)
-        return any(normalize_name(c.label) == key for c in self.columns)
-
-
-@dataclass
-class Result:
-    """The outcome of :meth:`Workspace.run`.
-
-    ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
-    ``result.tables`` holds one :class:`Table` per ``Output`` statement.
-    """
-
-    kind: str
-    stem: str
-    tables: list[Table]
-    digits: int
-    solution: dict[str, np.ndarray] = field(default_factory=dict)
-    solution_units: dict[str, str | None] = field(default_factory=dict)
-    states: dict[str, np.ndarray] = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
-    time_unit: str | None = None
-    nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
-    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
-    #: shape (rows, m, n), one matrix per output row.
-    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
-
-    def _encoded(self, key: str) -> np.ndarray:
-        m, n = self.encoded[key]
-        cols = [
-            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
-        ]
-        return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
-
-    @property
-    def written(self) -> list[Table]:
-        """The tables written to files (one per ``Output`` statement)."""
-        return [t for t in self.tables if not t.encoded]
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        for table in self.tables:
-            if name in table:
-                return table[name]
-        key = normalize_name(name)
-        if key in self.encoded:
-            return self._encoded(key)
-        for source in (self.solution, self.states):
-            if key in source:
-                return source[key]
-        raise KeyError(f"{name!r} is neither an output nor a solved quantity")
-
-    def __contains__(self, name: object) -> bool:
-        try:
-            self[name]  # type: ignore[index]
-        except (KeyError, TypeError):
-            return False
-        return True
-
-    def files(self) -> list[str]:
-        """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
-        return [f"{self.stem}.{table.number}" for table in self.written]
-
-    def write(self, directory: str | Path = ".") -> list[Path]:
-        """Write each table as ``STEM.n``: a ``%`` header naming columns and
-        units, then one row per line with ``Digits`` significant digits
-        (``numpy.loadtxt(path, comments="%")`` reads them back)."""
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.written, self.files(), strict=True):
-            path = directory / name
-            path.write_text(
-                format_table(table, self.digits, name, self.time_unit),
-                encoding="utf-8",
-            )
-            written.append(path)
-        return written
-
-    def plot(self, directory: str | Path = ".") -> list[Path]:
-        """Write ``STEM.n.png`` per table: each column against the first."""
-        try:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-        except ImportError:
-            raise NumericsError(
-                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
-            ) from None
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.written, self.files(), strict=True):
-            cols = table.columns
-            if len(cols) < 2 or len(table) == 0:
-                continue
-            n = len(cols) - 1
-            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
-            FigureCanvasAgg(fig)
-            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
-            x = table.data[:, 0]
-            for ax, j in zip(axes, range(1, len(cols)), strict=True):
-                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
-                ax.set_ylabel(_heading(cols[j], self.time_unit))
-                ax.grid(True, alpha=0.3)
-            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
-            fig.suptitle(name)
-            fig.tight_layout()
-            path = directory / f"{name}.png"
-            fig.savefig(path, dpi=100)
-            written.append(path)
-        return written
-
-    def solution_lines(self) -> list[str]:
-        """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""
-        out = []
-        for name, values in self.solution.items():
-            unit = self.solution_units.get(name)
-            suffix = f" {unit}" if unit else ""
-            if len(values) == 1:
-                out.append(f"{name} = {fmt_number(values[0], self.digits)}{suffix}")
-        return out
-
-
-def _heading(col: Column, time_unit: str | None) -> str:
-    unit = col.unit
-    if unit is None and normalize_name(col.label) == "T" and time_unit:
-        unit = time_unit
-    return f"{col.label} ({unit})" if unit else col.label
-
-
-def fmt_number(x: float, digits: int) -> str:
-    return f"{x:.{digits}g}"
-
-
-def format_table(
-    table: Table, digits: int, name: str, time_unit: str | None = None
-) -> str:
-    """The text of one output file."""
-    width = max(digits + 8, 12)
-    labels, units = [], []
-    for col in table.columns:
-        unit = col.unit
-        if unit is None and normalize_name(col.label) == "T" and time_unit:
-            unit = time_unit
-        labels.append(col.label)
-        units.append(f"({unit})" if unit else "(UNITS)")
-    width = max([width] + [len(s) + 2 for s in labels + units])
-    lines = [
-        f"% FILE: {name}",
-        "%",
-        "%" + "".join(s.center(width) for s in labels).rstrip(),
-        "%" + "".join(s.center(width) for s in units).rstrip(),
-        "",
-    ]
-    for row in table.data:
-        lines.append(
-            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
-        )
-    return "\n".join(lines) + "\n"
 
 
 # ---------------------------------------------------------------- resolving
@@ -908,7 +626,24 @@ def _initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
     return y0
 
 
-def _dynamics(job: Job, keep: set, backend: str | None) -> _Dynamics:
+@dataclass
+class OdeSystem:
+    """The numeric equations of a dynamics job: ``fun(t, y)`` for
+    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
+    names, in internal units (the UnitSystem's, SI by default; radians).
+    ``outputs(t, y)`` gives the Output rows (internal units), one list per
+    Output statement."""
+
+    fun: Any
+    y0: list[float]
+    names: list[str]
+    outputs: Any
+    compiled: _Dynamics
+    params: list[float]
+    clock: list[float]
+
+
+def _compiled(job: Job, keep: Iterable[Any], backend: str | None) -> _Dynamics:
     """The job's equations, built by ``backend`` once per job and backend."""
     key = ("dyn", frozenset(keep), backends.choose(backend))
     if key not in job._cache:
@@ -916,24 +651,50 @@ def _dynamics(job: Job, keep: set, backend: str | None) -> _Dynamics:
     return job._cache[key]
 
 
-@dataclass
-class OdeFunction:
-    """A Dynamics/ODE job as ``y' = rhs(t, y)`` with its Input values bound,
-    for your own integrator or sweep::
+def ode_system(
+    job: Job,
+    vals: _Values,
+    keep: set,
+    t0: float = 0.0,
+    backend: str | None = None,
+) -> OdeSystem:
+    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
+    where ``run()`` turns the equations into a numeric function, through the
+    backend chosen: see :mod:`.backends`)."""
+    try:
+        c = _compiled(job, keep, backend)
+    except backends.BackendError as exc:
+        raise NumericsError(str(exc)) from None
+    vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
+    p = [vals.param(obj) for obj in c.params]
+    y0 = _initial_state(job, c, vals)
+    bound = c.compiled.bind(p)
+    clock = [t0]  # time of the latest evaluation, for messages
+    rhs = bound.rhs
 
-        f = al.ode_function(QA=30)
-        solve_ivp(f.rhs, f.t_span, f.y0, rtol=1e-8)
+    def fun(tt: float, y: np.ndarray) -> np.ndarray:
+        clock[0] = tt
+        try:
+            return rhs(tt, y)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
 
-    States are in internal units (the UnitSystem's, radians for angles), in
-    the order of ``state_names``; ``outputs(t, y)`` gives one row per Output
-    statement, in the Output's units."""
+    def outputs(tt: float, y: Any) -> list[list[float]]:
+        clock[0] = tt
+        try:
+            return bound.outputs(tt, y)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
 
-    rhs: Any
-    y0: np.ndarray
-    t_span: tuple[float, float]
-    state_names: list[str]
-    outputs: Any
-    backend: str
+    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock)
+
+
+def _singular(job: Job, c: _Dynamics, at: float) -> NumericsError:
+    return NumericsError(
+        f"{job.where}: the coefficient matrix of "
+        + ", ".join(label_of(d, job.names) for d in c.ud_objs)
+        + f" in ZERO is singular at t = {at:g}"
+    )
 
 
 def ode_function(
@@ -941,34 +702,16 @@ def ode_function(
     overrides: Mapping[str, Any] | None = None,
     *,
     backend: str | None = None,
-) -> OdeFunction:
-    """The right-hand side of a Dynamics/ODE ``job`` (see :class:`OdeFunction`)."""
+) -> tuple[Any, list[float], list[str]]:
+    """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
+    equations of motion in internal units, with Inputs changed by
+    ``overrides`` (as ``run()``), evaluated by ``backend``."""
     if job.kind not in ("DYNAMICS", "ODE"):
-        raise NumericsError(f"{job.where} is not a Dynamics or ODE job")
+        raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
     vals, keep = _input_values(job, overrides or {})
-    try:
-        c = _dynamics(job, keep, backend)
-    except backends.BackendError as exc:
-        raise NumericsError(str(exc)) from None
     ip = _integration(vals)
-    bound = c.compiled.bind([vals.param(obj) for obj in c.params])
-    factors = _output_factors(job, vals)
-
-    def outputs(tt: float, y: Any) -> list[list[float]]:
-        rows = bound.outputs(float(tt), np.asarray(y, dtype=float))
-        return [
-            [v * f for v, f in zip(row, fac, strict=True)]
-            for row, fac in zip(rows, factors, strict=True)
-        ]
-
-    return OdeFunction(
-        bound.rhs,
-        np.array(_initial_state(job, c, vals), dtype=float),
-        (ip["TINITIAL"], ip["TFINAL"]),
-        list(c.state_names),
-        outputs,
-        c.compiled.backend,
-    )
+    system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
+    return system.fun, list(system.y0), list(system.names)
 
 
 def _run_dynamics(
@@ -976,19 +719,9 @@ def _run_dynamics(
 ) -> Result:
     from scipy.integrate import solve_ivp
 
-    c = _dynamics(job, keep, backend)
     ip = _integration(vals)
-    vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
-    p = [vals.param(obj) for obj in c.params]
-    y0 = _initial_state(job, c, vals)
-    bound = c.compiled.bind(p)
-    clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
-    rhs = bound.rhs
-
-    def fun(tt: float, y: np.ndarray) -> np.ndarray:
-        clock[0] = tt
-        return rhs(tt, y)
-
+    system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
+    c, y0, fun, clock = system.compiled, system.y0, system.fun, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     try:
         nfev = 0
@@ -1017,17 +750,11 @@ def _run_dynamics(
         for i, tt in enumerate(times):
             clock[0] = float(tt)
             for rows, row in zip(
-                rows_all, bound.outputs(clock[0], ys[:, i]), strict=True
+                rows_all, system.outputs(clock[0], ys[:, i]), strict=True
             ):
                 rows.append(row)
     except NumericsError:
         raise
-    except backends.SingularMatrixError as exc:
-        raise NumericsError(
-            f"{job.where}: the coefficient matrix of "
-            + ", ".join(label_of(d, job.names) for d in c.ud_objs)
-            + f" in ZERO is singular at t = {exc.t:g}"
-        ) from None
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
         hint = "; check the Input values" if vals.notes else ""
         raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None

@@ -1,8 +1,8 @@
 """Numerical CODE jobs: Input/Output with units, Dynamics/ODE/Nonlinear/Algebraic.
 
-:class:`NumericsMixin` adds ``UnitSystem``, ``Input``, ``Output``, ``CODE``,
-``Input(X)``, ``Units(a, b)``, :meth:`~NumericsMixin.run` and
-:meth:`~NumericsMixin.main` to :class:`Workspace`.
+:class:`Numerics` records ``UnitSystem``, ``Input``, ``Output`` and ``CODE``
+for a :class:`Workspace` (its ``numerics`` part; the workspace offers these
+commands, ``Input(X)``, ``Units(a, b)``, ``run()`` and ``main()``).
 
 Recording (``unit_system``, ``input``, ``output``, ``code``) only stores what
 the statements say, so importing a generated module does no numerical work.
@@ -25,27 +25,27 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
 from typing import Any
 
 import sympy as sp
 
-from .jobs import (
+from .jobs import ode_function, run_job
+from .records import (
     KINDS,
     InputValue,
     Job,
     NumericsError,
     OutputItem,
     OutputSpec,
-    Result,
     normalize_name,
-    run_job,
 )
+from .tables import Result
 from .units import UnitSystem, units_factor
 
-__all__ = ["NumericsMixin", "NumericsError", "Result"]
+__all__ = ["Numerics", "NumericsError", "Result"]
 
 
 @dataclass
@@ -60,16 +60,15 @@ class _NumericsState:
     units_of: dict[str, str] = field(default_factory=dict)
 
 
-class NumericsMixin:
-    """Inputs, outputs, units and the numerical job of a script."""
+class Numerics:
+    """Inputs, outputs, units and the numerical jobs of a script.
 
-    @property
-    def _numerics(self) -> _NumericsState:
-        state = self.__dict__.get("_numerics_state")
-        if state is None:
-            state = _NumericsState()
-            self.__dict__["_numerics_state"] = state
-        return state
+    It reads the script's names (``ws``: the workspace's name table and
+    settings) when ``CODE`` takes its snapshot; nothing else refers back."""
+
+    def __init__(self, ws: Any) -> None:
+        self._ws = ws
+        self._numerics = _NumericsState()
 
     # ------------------------------------------------------------ recording
 
@@ -137,7 +136,7 @@ class NumericsMixin:
         items: list[OutputItem] = []
         shapes: dict[str, tuple[int, int]] = {}
         for key in self._numerics.encoded:
-            value = self[key]
+            value = self._ws[key]
             if isinstance(value, sp.MatrixBase):
                 shapes[key] = value.shape
                 for i in range(value.rows):
@@ -191,21 +190,21 @@ class NumericsMixin:
             elif isinstance(eqs, list | tuple):
                 eq_matrix = sp.Matrix(list(eqs))
             else:
-                eq_matrix = sp.Matrix([self.val(eqs)])
-        objs = [self.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+                eq_matrix = sp.Matrix([self._ws.val(eqs)])
+        objs = [self._ws.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
         if sweep is not None:
             obj, unit, start, stop, step = sweep
             if isinstance(obj, str):
-                obj = self.symbol(obj)
+                obj = self._ws.symbol(obj)
             sweep = (obj, unit or None, float(start), float(stop), float(step))
             if float(step) == 0:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._values.get("ZERO")
+            value = self._ws._values.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
-        stem = PurePath(file).stem if file else PurePath(self.filename).stem
+        stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
         encoded, shapes = self._encoded_spec(line)
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
@@ -213,28 +212,28 @@ class NumericsMixin:
             stem=stem or "autolev",
             filename=file,
             line=line,
-            source=self.filename,
+            source=self._ws.filename,
             eqs=eq_matrix,
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._rhs),
+            rhs=dict(self._ws._rhs),
             zero=zero,
             outputs=outputs,
             encoded=shapes,
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
-            digits=self.settings.digits,
+            digits=self._ws.settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._entries_by_obj),
-            entries={name: (e.kind, e.obj) for name, e in self._names.items()},
+            names=dict(self._ws._entries_by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -242,11 +241,11 @@ class NumericsMixin:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._values.items():
+        for name, stored in self._ws._values.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._values.items():
+            for name, stored in self._ws._values.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -299,7 +298,7 @@ class NumericsMixin:
         see :mod:`al2py_runtime.backends`."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self.filename} has no CODE statement")
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
         return run_job(jobs[-1], merged, backend=backend)
@@ -311,17 +310,15 @@ class NumericsMixin:
         *,
         backend: str | None = None,
         **overrides: Any,
-    ) -> Any:
-        """The script's (last) Dynamics/ODE job as ``rhs(t, y)`` with its Input
-        values (changed as in :meth:`run`) bound: an
-        :class:`~al2py_runtime.jobs.OdeFunction` with ``rhs``, ``y0``,
-        ``t_span``, ``state_names`` and ``outputs``, for sweeps and your own
-        integrators."""
-        from .jobs import ode_function
-
-        jobs = [j for j in self._numerics.jobs if j.kind in ("DYNAMICS", "ODE")]
+    ) -> tuple[Any, list[float], list[str]]:
+        """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
+        ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
+        UnitSystem's, SI by default; angles in radians).  Overrides are given
+        as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
+        the same function; ``backend`` as for :meth:`run`."""
+        jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self.filename} has no CODE Dynamics or ODE")
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
         return ode_function(jobs[-1], merged, backend=backend)
@@ -340,7 +337,7 @@ class NumericsMixin:
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        return evaluate_with_inputs(job, self[name], name, merged)
+        return evaluate_with_inputs(job, self._ws[name], name, merged)
 
     def run_job(
         self,
@@ -351,11 +348,3 @@ class NumericsMixin:
     ) -> Result:
         """Perform one recorded job with optional overrides."""
         return run_job(job, dict(values or {}), backend=backend)
-
-    def main(
-        self, source_lines: Sequence[str], argv: Sequence[str] | None = None
-    ) -> int:
-        """The ``python module.py`` entry point (see :mod:`.cli`)."""
-        from .cli import main
-
-        return main(self, source_lines, argv)

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["SETTINGS", "Settings", "check_setting"]
+__all__ = ["SETTINGS", "Settings", "Response", "check_setting"]
 
 #: Name -> "int" (1 to 17), "number", or the words it takes.
 SETTINGS: dict[str, tuple[str, ...] | str] = {
@@ -89,3 +89,13 @@ class Settings:
         else:
             new = text.upper()
         setattr(self, key.lower(), new)
+
+
+@dataclass(frozen=True)
+class Response:
+    """One ``-> (n) NAME = value`` line, kept symbolic until printed."""
+
+    line: int | None
+    label: str
+    value: Any
+    digits: int

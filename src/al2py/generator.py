@@ -51,6 +51,20 @@ _FORM_GETTERS = {
     "torque": "al.torque_on({0})",
     "dcm": "al.dcm({0}, {1})",
 }
+#: Assignments to syntactical forms: the runtime's setters, named (and with
+#: arguments in the order of) the sympy calls they make (``P_O_P> = v`` is
+#: sympy's ``P.set_pos(O, v)``).
+_FORM_SETTERS = {
+    "pos": "al.set_pos({1}, {0}, {value}, line={line})",
+    "vel": "al.set_vel({0}, {1}, {value}, line={line})",
+    "acc": "al.set_acc({0}, {1}, {value}, line={line})",
+    "angvel": "al.set_ang_vel({0}, {1}, {value}, line={line})",
+    "angacc": "al.set_ang_acc({0}, {1}, {value}, line={line})",
+    "inertia": "al.set_inertia_about({0}, {1}, {value}, line={line})",
+    "force": "al.set_force({0}, {value}, line={line})",
+    "torque": "al.set_torque({0}, {value}, line={line})",
+    "dcm": "al.set_dcm({0}, {1}, {value}, line={line})",
+}
 _UNIT_AXES = {"1": "x", "2": "y", "3": "z"}
 _POINT_THEORIES = {
     "V2PTS": "v2pt_theory",
@@ -102,6 +116,7 @@ class Generator:
         self._line = 0
         self.stopped_at: int | None = None
         self.has_job = False  # a CODE statement was generated
+        self.has_kane = False  # Fr() or FrStar() was generated
 
     # ------------------------------------------------------------ driving
 
@@ -269,7 +284,12 @@ class Generator:
             if stmt.op not in ("=", ":="):
                 op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
                 value = f"{self.expr(target)} {op} ({value})"
-            return [f"al.assign({target.key!r}, {value}, line={self._line})"]
+            form = self._facts.form
+            setter = _FORM_SETTERS.get(form.kind)
+            if setter is None or target.primes:
+                return [f"al.assign({target.key!r}, {value}, line={self._line})"]
+            objs = [self._object(p) for p in form.parts]
+            return [setter.format(*objs, value=value, line=self._line)]
         sym = self._facts.target
         if sym is None:
             raise InternalError("assignment without a target symbol")
@@ -643,6 +663,8 @@ class Generator:
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
+            if b.python in ("fr", "frstar"):
+                self.has_kane = True  # the module offers kanes_method()
             return f"al.{b.python}({self._args(node.args, b)})", ATOM
         if b.name == "SOLVE":
             raise SemanticError(

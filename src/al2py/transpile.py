@@ -128,6 +128,7 @@ def convert(
         body="\n".join(body),
         source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
+        has_kane=generator.has_kane,
     )
     try:
         code = black.format_str(code, mode=black.Mode())
