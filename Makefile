@@ -38,6 +38,7 @@ bench: install
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/large.py
 	$(PY) benchmarks/startup.py
+	$(PY) benchmarks/numerics.py
 
 clean:
 	rm -rf out .pytest_cache .ruff_cache

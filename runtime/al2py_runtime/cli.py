@@ -75,6 +75,18 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         "--plot", action="store_true", help="also write STEM.n.png plots"
     )
     parser.add_argument(
+        "--backend",
+        choices=("auto", "c", "llvm", "lambdify"),
+        help="how Dynamics/ODE equations are evaluated (default: $AL2PY_BACKEND"
+        " or auto, the fastest available)",
+    )
+    parser.add_argument(
+        "--emit-code",
+        metavar="DIR",
+        help="write the C program of each CODE Dynamics/ODE job into DIR"
+        " (as 'al2py code' does) instead of running",
+    )
+    parser.add_argument(
         "--no-run",
         action="store_true",
         help="only print the transcript; perform no CODE job and write no file",
@@ -174,6 +186,17 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     except NumericsError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.emit_code is not None:
+        from .cprogram import write_programs
+
+        written, errors = write_programs(ws, args.emit_code)
+        for path in written:
+            print(f"Wrote {path}")
+        for message in errors:
+            print(f"error: {message}", file=sys.stderr)
+        if not ws.jobs:
+            print(f"error: {ws.filename} has no CODE statement", file=sys.stderr)
+        return 2 if errors or not written else 0
     ws.print_transcript(source_lines)
     if args.no_run:
         return 0  # --no-run writes nothing
@@ -189,7 +212,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     budget.PROGRESS = _is_terminal(sys.stdout)
     for job in jobs:
         try:
-            result = ws.run_job(job, overrides)
+            result = ws.run_job(job, overrides, backend=args.backend)
             budget.clear_progress()
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
