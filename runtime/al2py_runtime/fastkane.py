@@ -30,9 +30,11 @@ reduction by the dependent speeds), so ``mass_matrix`` and ``forcing`` equal
 
 from __future__ import annotations
 
+import random
 from collections.abc import Iterable, Sequence
 from typing import Any
 
+import numpy as np
 import sympy as sp
 from sympy.physics.mechanics import (
     Particle,
@@ -42,6 +44,7 @@ from sympy.physics.mechanics import (
     dynamicsymbols,
 )
 from sympy.physics.vector import Vector
+from sympy.printing.numpy import NumPyPrinter
 
 __all__ = ["FastKane"]
 
@@ -179,6 +182,7 @@ class FastKane:
         self._named: dict[Any, sp.Symbol] = {}
         self._dz: dict[Any, Any] = {}
         self._count = 0
+        self._probes: dict[int, dict[Any, complex]] = {}
         self._dcms: dict[tuple[ReferenceFrame, ReferenceFrame], list] = {}
         self._lin_cache: dict[tuple[Any, ReferenceFrame], dict] = {}
 
@@ -302,9 +306,10 @@ class FastKane:
         a = [row[:] for row in a]
         b = [row[:] for row in b]
         for col in range(n):
-            pivot = next((r for r in range(col, n) if a[r][col] != 0), None)
+            pivot = self._pivot([a[r][col] for r in range(col, n)])
             if pivot is None:
                 raise ValueError("the linear system is singular")
+            pivot += col
             a[col], a[pivot] = a[pivot], a[col]
             b[col], b[pivot] = b[pivot], b[col]
             p = a[col][col]
@@ -319,6 +324,55 @@ class FastKane:
                     self._name(x - f * y) for x, y in zip(b[r], b[col], strict=True)
                 ]
         return [[self._name(x / a[i][i]) for x in b[i]] for i in range(n)]
+
+    def _pivot(self, column: list[Any]) -> int | None:
+        """The row to pivot on: not zero at the coordinates' zero (the usual
+        reference configuration, e.g. an upright bicycle) if possible, else the
+        largest at a random configuration; constants take random values."""
+        best, best_key = None, None
+        for r, e in enumerate(column):
+            if e == 0:
+                continue
+            at_zero, at_random = abs(self._probe(e, 0)), abs(self._probe(e, 1))
+            if at_random < 1e-12:
+                continue
+            key = (at_zero > 1e-9 * max(1.0, at_random), at_zero, at_random)
+            if best_key is None or key > best_key:
+                best, best_key = r, key
+        if best is None:  # zero at both probes: take any structural non-zero
+            best = next((r for r, e in enumerate(column) if e != 0), None)
+        return best
+
+    def _probe(self, expr: Any, point: int) -> complex:
+        """``expr``'s value at probe ``point`` (0: coordinates zero)."""
+        cache = self._probes.setdefault(point, {})
+        expr = sp.sympify(expr)
+        if expr in cache:
+            return cache[expr]
+        values = {}
+        for s in expr.free_symbols:
+            if s in self._defs:
+                values[s] = self._probe(self._defs[s], point)
+            elif point == 0 and s in self._qs:
+                values[s] = 0.0
+            else:
+                rng = random.Random(f"{point}:{s.name}")
+                values[s] = rng.uniform(0.5, 1.5)
+        try:
+            out = complex(
+                expr.xreplace(
+                    {
+                        k: sp.Float(v) if isinstance(v, float) else sp.sympify(v)
+                        for k, v in values.items()
+                    }
+                )
+            )
+        except (TypeError, ValueError, ZeroDivisionError):
+            out = complex("nan")
+        if out != out:  # nan
+            out = 0j
+        cache[expr] = out
+        return out
 
     def _solve_kinematics(self, kd_eqs: list[Any]) -> None:
         qdots = [q.diff(_T) for q in self._q]
@@ -760,28 +814,48 @@ class FastKane:
             return expr.applyfunc(lambda e: self._back(e.xreplace(full)))
         return self._back(expr.xreplace(full))
 
-    def numeric(self, args: Sequence[Any], exprs: Any, modules: Any = "numpy"):
-        """A function of ``args`` computing ``exprs``, evaluating intermediates
-        in order (``args``: coordinates, speeds, constants, ...)."""
+    def numeric(self, args: Sequence[Any], exprs: Any):
+        """A numpy function of ``args`` computing ``exprs`` (a matrix, an
+        expression, or a list of them), evaluating the intermediates it needs
+        in order.  ``args``: coordinates, speeds, constants, ...; every other
+        symbol in ``exprs`` must be among them.  Complex arguments work (for
+        complex-step derivatives)."""
         to_plain = {f: s for f, s in self._to_plain.items() if s is not None}
         plain_args = [sp.sympify(a).xreplace(to_plain) for a in args]
+        rename = {a: sp.Symbol(f"_x{k}") for k, a in enumerate(plain_args)}
+        rename.update({z: sp.Symbol(f"_{z.name}") for z in self._defs})
 
         def convert(e: Any) -> Any:
             if isinstance(e, list | tuple):
-                return type(e)(convert(x) for x in e)
+                return [convert(x) for x in e]
             e = sp.sympify(e)
             if isinstance(e, sp.MatrixBase):
-                return e.applyfunc(lambda x: x.xreplace(to_plain))
-            return e.xreplace(to_plain)
+                return e.applyfunc(lambda x: x.xreplace(to_plain).xreplace(rename))
+            return e.xreplace(to_plain).xreplace(rename)
 
         plain = convert(exprs)
-        used = self._used(plain)
-        pairs = [(z, e) for z, e in self._defs.items() if z in used]
+        used = self._used(plain)  # renamed symbols: look them up by name
+        printer = NumPyPrinter({"order": "none", "fully_qualified_modules": True})
+        lines = [f"def _numeric({', '.join(str(rename[a]) for a in plain_args)}):"]
+        for z, e in self._defs.items():
+            if rename[z] in used:
+                lines.append(f"    {rename[z]} = {printer.doprint(e.xreplace(rename))}")
 
-        def given(exprs: list[Any]):
-            return pairs, exprs
+        def emit(e: Any) -> str:
+            if isinstance(e, list):
+                return "[" + ", ".join(emit(x) for x in e) + "]"
+            if isinstance(e, sp.MatrixBase):
+                rows = ", ".join(
+                    "[" + ", ".join(printer.doprint(x) for x in e.row(i)) + "]"
+                    for i in range(e.rows)
+                )
+                return f"numpy.array([{rows}])"
+            return printer.doprint(e)
 
-        return sp.lambdify(plain_args, plain, modules=modules, cse=given)
+        lines.append(f"    return {emit(plain)}")
+        namespace: dict[str, Any] = {"numpy": np}
+        exec("\n".join(lines), namespace)  # noqa: S102  (generated from sympy)
+        return namespace["_numeric"]
 
     def _used(self, expr: Any) -> set[Any]:
         """The intermediates ``expr`` needs, directly or through others."""
@@ -791,7 +865,10 @@ class FastKane:
                 found |= sp.sympify(e).free_symbols
         else:
             found = sp.sympify(expr).free_symbols
-        todo = [s for s in found if s in self._defs]
+        defs = {z: e for z, e in self._defs.items()}
+        byname = {sp.Symbol(f"_{z.name}"): z for z in defs}
+        todo = [byname.get(s, s) for s in found]
+        todo = [s for s in todo if s in defs]
         seen: set[Any] = set()
         while todo:
             z = todo.pop()
@@ -799,4 +876,4 @@ class FastKane:
                 continue
             seen.add(z)
             todo.extend(s for s in self._defs[z].free_symbols if s in self._defs)
-        return seen
+        return {sp.Symbol(f"_{z.name}") for z in seen}
