@@ -195,6 +195,33 @@ class FastKane:
         if bodies is not None:
             self.kanes_equations(bodies, loads)
 
+    @classmethod
+    def from_inputs(cls, inputs: Any, **kw: Any) -> FastKane:
+        """Derive from an object with ``KanesMethod``'s inputs as attributes
+        (``frame``, ``q_ind``, ``u_ind``, ``kd_eqs``, ``bodies``, ``loads`` and
+        optionally ``q_dependent``, ``configuration_constraints``,
+        ``u_dependent``, ``velocity_constraints``, ``u_auxiliary``), such as
+        the runtime's ``KaneInputs``."""
+        optional = (
+            "q_dependent",
+            "configuration_constraints",
+            "u_dependent",
+            "velocity_constraints",
+            "acceleration_constraints",
+            "u_auxiliary",
+        )
+        args = {name: getattr(inputs, name, None) for name in optional}
+        return cls(
+            inputs.frame,
+            inputs.q_ind,
+            inputs.u_ind,
+            kd_eqs=inputs.kd_eqs,
+            bodies=inputs.bodies,
+            loads=inputs.loads,
+            **{k: v for k, v in args.items() if v},
+            **kw,
+        )
+
     # ------------------------------------------------------------------
     # intermediates
     def _names_in(self, *groups: Iterable[Any]) -> set[str]:

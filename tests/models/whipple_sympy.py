@@ -193,14 +193,17 @@ def eigenvalues(model, kane, speeds, values=None, step=1e-30):
     values = dict(BENCHMARK, **(values or {}))
     q, u, params = model["q"], model["u"], model["params"]
     pvals = [values[s.name] for s in params]
+    rear_radius = values.get("RR", values["rR"])
     args = q + u + params
     exprs = [kane.mass_matrix, kane.forcing]
     if hasattr(kane, "numeric"):  # FastKane: intermediates evaluated in order
         both = kane.numeric(args, exprs)
     else:
         both = sp.lambdify(args, exprs, cse=True)
-    constraint = sp.lambdify(q + params, model["holonomic"])
-    d_constraint = sp.lambdify(q + params, model["holonomic"].diff(q[4]))
+    holonomic = model.get("holonomic")
+    if holonomic is not None:
+        constraint = sp.lambdify(q + params, holonomic)
+        d_constraint = sp.lambdify(q + params, holonomic.diff(q[4]))
     kd = model["kane"]
     vel = sp.Matrix(kd["velocity_constraints"]).xreplace(
         {qi.diff(): ui for qi, ui in zip(q, u, strict=True)}
@@ -215,12 +218,15 @@ def eigenvalues(model, kane, speeds, values=None, step=1e-30):
         roll, steer, roll_rate, steer_rate = x
         qs = [0, 0, 0, roll, 0.0 * roll, 0, steer, 0]
         pitch = 0.0 * roll
-        for _ in range(30):  # Newton on the holonomic constraint
+        # Newton on the holonomic constraint.  (Without it, pitch stays at
+        # its reference value 0: by symmetry it changes only to second order
+        # in roll and steer, which the linearization does not see.)
+        for _ in range(30 if holonomic is not None else 0):
             qs[4] = pitch
             pitch = pitch - constraint(*qs, *pvals) / d_constraint(*qs, *pvals)
         qs[4] = pitch
         us = [0] * 8
-        us[3], us[5], us[6] = roll_rate, -v / values["rR"], steer_rate
+        us[3], us[5], us[6] = roll_rate, -v / rear_radius, steer_rate
         a = np.array(f_a(*qs, *us, *pvals), dtype=complex)
         b = np.array(f_b(*qs, *us, *pvals), dtype=complex).ravel()
         for s, val in zip(u_dep, np.linalg.solve(a, -b), strict=True):
