@@ -155,6 +155,30 @@ def rolling_disc(dependent=True):
     return dict(kane=kane, bodies=[body], loads=loads, args=args)
 
 
+def moving_support():
+    """A pendulum whose support moves along N.x as a given function f(t)."""
+    q, u, f = me.dynamicsymbols("q u f")
+    length, m, g = sp.symbols("l m g")
+    n = me.ReferenceFrame("N")
+    a = n.orientnew("A", "Axis", [q, n.z])
+    a.set_ang_vel(n, u * n.z)
+    o = me.Point("O")
+    o.set_vel(n, f.diff() * n.x)
+    p = o.locatenew("P", length * a.x)
+    p.v2pt_theory(o, n, a)
+    bodies = [me.Particle("pa", p, m)]
+    loads = [(p, -m * g * n.y)]
+    kane = dict(frame=n, q_ind=[q], u_ind=[u], kd_eqs=[q.diff() - u])
+    args = [q, u, length, m, g, f.diff(), f.diff(me.dynamicsymbols._t, 2)]
+    return dict(kane=kane, bodies=bodies, loads=loads, args=args)
+
+
+def test_moving_support_equals_kanesmethod():
+    """Given functions of time in the kinematics (rheonomic constraints)."""
+    fk = _compare(moving_support(), seed=5)
+    assert fk.substitute(fk.forcing).has(me.dynamicsymbols("f").diff(me.dynamicsymbols._t, 2))
+
+
 def test_double_pendulum_equals_kanesmethod():
     fk = _compare(double_pendulum())
     # Intermediates come in evaluation order: each uses only earlier ones.
