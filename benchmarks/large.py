@@ -184,7 +184,7 @@ def main(argv: list[str]) -> int:
             flush=True,
         )
     print(
-        "growth exponent (time ~ bodies^k): FastKane "
+        "growth exponent (time ~ bodies^k, sizes that finished): FastKane "
         f"{exponent(args.sizes, fast_times)}, KanesMethod "
         f"{exponent(args.sizes, kane_times)}, al2py import "
         f"{exponent(args.sizes, import_times)}"
