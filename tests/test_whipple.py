@@ -101,3 +101,30 @@ def test_whipple_mass_matrix_is_kanes_form(derived):
     for z, expr in kane.intermediates:
         assert not (expr.free_symbols & names) - earlier
         earlier.add(z)
+
+
+@pytest.mark.slow
+def test_whipple_equals_kanesmethod_at_random_points(derived):
+    """FastKane's mass matrix and forcing equal KanesMethod's on the bicycle
+    itself, away from the upright configuration (where KanesMethod's LU
+    pivot vanishes)."""
+    import random
+
+    import sympy as sp
+    from sympy.physics import mechanics as me
+
+    model, kane = derived
+    km = me.KanesMethod(**model["kane"])
+    km.kanes_equations(model["bodies"], model["loads"])
+    args = model["q"] + model["u"] + model["params"]
+    f_km = sp.lambdify(args, [km.mass_matrix, km.forcing], cse=True)
+    f_fk = kane.numeric(args, [kane.mass_matrix, kane.forcing])
+    rng = random.Random(3)
+    for _ in range(2):
+        q = [rng.uniform(-0.5, 0.5) for _ in model["q"]]
+        u = [rng.uniform(-2, 2) for _ in model["u"]]
+        p = [whipple.BENCHMARK[s.name] * rng.uniform(0.9, 1.1) for s in model["params"]]
+        for a, b in zip(f_fk(*q, *u, *p), f_km(*q, *u, *p), strict=True):
+            assert np.allclose(
+                np.asarray(a, float), np.asarray(b, float), rtol=1e-9, atol=1e-9
+            )
