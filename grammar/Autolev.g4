@@ -16,8 +16,11 @@ options { caseInsensitive = true; }
 
 // ------------------------------------------------------------------ parser
 
-script
-    : (stmt? NEWLINE)* stmt? EOF
+// A statement ends at a newline or a `;` (several statements may share a
+// line: `x = 1; y = 2`).  The parser runs once per statement, so an error in
+// one statement never hides the next.
+statement
+    : stmt? (NEWLINE | SEMI | EOF)
     ;
 
 stmt
@@ -72,7 +75,9 @@ firstDeclItem
     ;
 
 declHead
-    : ident indexBraces? PRIME*
+    : ident indexBraces suffix=ident? PRIME*   // U{3}', RRF{2}O
+    | ident LPAREN basis=ident RPAREN          // Inertia C(B), ...: B's basis
+    | ident PRIME*
     | NUMBER
     ;
 
@@ -133,7 +138,7 @@ unitFactor
 // -- commands ---------------------------------------------------------------
 
 codeStmt
-    : CODE ident LPAREN argList? RPAREN sweep? fileName?
+    : CODE ident LPAREN argList? RPAREN sweep? (fileName (COMMA ident)*)?
     ;
 
 sweep
@@ -149,11 +154,18 @@ fileName
     | ident
     ;
 
+// `Digits 7`, `Overwrite All`, and word commands with a list:
+// `Encode A, B'`, `Units T=S, TINITIAL=S`.
 setting
-    : ID settingValue
+    : ID settingArg (COMMA settingArg)*
     ;
 
-settingValue
+settingArg
+    : ident (LBRACK exprList RBRACK)? PRIME* (EQ settingWord)?   # settingName
+    | sign? NUMBER                                             # settingNumber
+    ;
+
+settingWord
     : ident
     | NUMBER
     ;
@@ -198,7 +210,7 @@ atom
     | (ZEROVEC | UNITDYADIC)                    # special
     | ident LPAREN argList? RPAREN              # call
     | ident LBRACK exprList RBRACK              # element
-    | ident indexBraces PRIME*                  # indexedNames
+    | ident indexBraces suffix=ident? PRIME*    # indexedNames
     | ident PRIME*                              # name
     | LBRACK matrixRow (SEMI matrixRow)* RBRACK # matrix
     | LPAREN expr RPAREN                        # parens
@@ -309,9 +321,10 @@ COMMA      : ',' ;
 SEMI       : ';' ;
 COLON      : ':' ;
 
-// `&` as the last non-blank character (optionally followed by a comment)
-// joins the next line to this one.
-CONTINUATION : '&' [ \t\f]* ('%' ~[\r\n]*)? ('\r'? '\n' | '\r') -> channel(HIDDEN) ;
+// `&` as the last non-blank character of a line (before any comment) joins
+// the next line to this one; the parser does the joining before lexing, so
+// a continuation may split a name (`THET&` / `   A`).  An `&` left in the
+// text is an error.
 AMP        : '&' ;
 
 COMMENT    : '%' ~[\r\n]* -> channel(2) ;

@@ -214,12 +214,46 @@ def test_missing_run_file(tmp_path, capsys):
     assert f"{tmp_path / 'main.al'}:2:" in err.splitlines()[0]
 
 
-def test_only_the_first_error_is_reported(tmp_path, capsys):
+def test_every_error_is_reported_in_order(tmp_path, capsys):
     (tmp_path / "bad.al").write_text("E = Q1\nF = Q2\n")
     status, _, err = _run_main([str(tmp_path / "bad.al")], capsys)
     assert status == 2
-    assert "Q1" in err.splitlines()[0]
-    assert "Q2" not in err
+    lines = err.splitlines()
+    assert "bad.al:1:5: error: undeclared name 'Q1'" in lines[0]
+    assert any("bad.al:2:5: error: undeclared name 'Q2'" in x for x in lines)
+    assert lines[-1] == "2 errors"
+
+
+def test_three_unrelated_syntax_errors_all_reported(tmp_path, capsys):
+    text = (
+        "Constants a, b\n"
+        "x = (a + \n"  # 2: missing operand
+        "y = a b\n"  # 3: two operands in a row
+        "z = a*b\n"
+        "w = [a, b; a]]\n"  # 5: extra bracket
+    )
+    (tmp_path / "bad.al").write_text(text)
+    status, out, err = _run_main([str(tmp_path / "bad.al")], capsys)
+    assert status == 2 and out == ""
+    heads = [x for x in err.splitlines() if ": error: " in x]
+    assert [h.split(": error:")[0] for h in heads] == [
+        f"{tmp_path / 'bad.al'}:2:10",
+        f"{tmp_path / 'bad.al'}:3:7",
+        f"{tmp_path / 'bad.al'}:5:14",
+    ]
+    carets = [x for x in err.splitlines() if x.strip() == "^"]
+    assert len(carets) == 3
+    assert "Traceback" not in err
+
+
+def test_errors_after_a_failed_declaration_do_not_cascade(tmp_path, capsys):
+    # The bad Constants line is skipped; its names are not re-reported.
+    (tmp_path / "bad.al").write_text("Constants a, b +* c\nx = a + c\ny = zz\n")
+    status, _, err = _run_main([str(tmp_path / "bad.al")], capsys)
+    assert status == 2
+    heads = [x for x in err.splitlines() if ": error: " in x]
+    assert len(heads) == 2
+    assert ":1:" in heads[0] and "undeclared name 'zz'" in heads[1]
 
 
 # ---------------------------------------------------------------- injection

@@ -96,7 +96,7 @@ NUMERIC = [
     ("sign_zero", "E = Sign(0)", 0),
     ("sign_positive", "E = Sign(5)", 1),
     ("pi", "E = PI", float(sp.pi)),
-    ("i", "E = i^2", -1),
+    ("i", "Imaginary i\nE = i^2", -1),
     ("decimal", "E = 9.81*2", 19.62),
     ("scientific", "E = 1.5E3", 1500),
 ]
@@ -247,8 +247,9 @@ def test_imaginary_declaration(tmp_path):
     check(m, "F", 2)
 
 
-def test_reserved_i_and_pi(tmp_path):
-    m = run("E = Exp(i*PI)\nF = i*i*PI\n", tmp_path)
+def test_declared_i_and_pi(tmp_path):
+    # Autolev has no predefined imaginary unit: `Imaginary i` declares it.
+    m = run("Imaginary i\nE = Exp(i*PI)\nF = i*i*PI\n", tmp_path)
     check(m, "E", -1)
     check(m, "F", -sp.pi)
 

@@ -54,7 +54,9 @@ def test_tutor5_four_bar_equilibrium(tutorial):
 def test_tutor6_motion(tutorial):
     r = tutorial("tutor6").run()
     t = r["T"]
-    assert len(t) == 21 and t[0] == 0 and t[-1] == 20
+    # printInt = 1 integration step: a row every integStp = 0.2 s
+    assert len(t) == 101 and t[0] == 0 and t[-1] == 20
+    assert np.allclose(np.diff(t), 0.2)
     assert np.ptp(r["ECHECK"]) < 1e-3
     # The tutorial's text swaps both signs; its printed equations give these.
     assert float(r["QA"][-1]) == pytest.approx(50.123, abs=5e-4)
@@ -75,7 +77,7 @@ def test_tutor6_script_writes_table_and_plot(tmp_path, convert_and_import):
     )
     assert run.returncode == 0, run.stderr
     table = np.loadtxt(tmp_path / "tutor6.1", comments="%")
-    assert table.shape == (21, 5)
+    assert table.shape == (101, 5)
     assert table[-1, 2] == pytest.approx(50.123, abs=5e-3)
     assert list(tmp_path.glob("tutor6*.png")), run.stdout
 

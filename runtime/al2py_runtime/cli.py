@@ -16,7 +16,8 @@ from collections.abc import Sequence
 from pathlib import Path, PurePath
 from typing import Any
 
-from .jobs import INTEGRATION_DEFAULTS, NumericsError, check_overrides
+from .jobs import check_overrides
+from .records import INTEGRATION_DEFAULTS, NumericsError
 
 __all__ = ["main", "build_parser"]
 

@@ -1,4 +1,6 @@
-"""The numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+"""Running the numerical jobs of ``CODE Dynamics/ODE/Nonlinear/Algebraic``.
+
+The records live in :mod:`.records`, the result tables in :mod:`.tables`.
 
 A :class:`Job` is a snapshot taken at the ``CODE`` statement: the equations,
 the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
@@ -15,7 +17,6 @@ import math
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -23,7 +24,17 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from .kane import linear_terms
-from .units import UnitError, UnitSystem
+from .records import (
+    INTEGRATION_DEFAULTS,
+    InputValue,
+    Job,
+    NumericsError,
+    OutputItem,
+    OutputSpec,
+    normalize_name,
+)
+from .tables import Column, Result, Table, fmt_number
+from .units import UnitError
 
 __all__ = [
     "NumericsError",
@@ -47,271 +58,6 @@ try:  # the same object dynamicsymbols use
     t = dynamicsymbols._t
 except ImportError:  # pragma: no cover
     pass
-
-
-class NumericsError(ValueError):
-    """A numerical job cannot run: bad input, no convergence, failed step."""
-
-
-#: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
-#: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
-#: TINITIAL)/100, PRINTINT = INTEGSTP).
-INTEGRATION_DEFAULTS: dict[str, float | None] = {
-    "TINITIAL": 0.0,
-    "TFINAL": None,
-    "INTEGSTP": None,
-    "PRINTINT": None,
-    "ABSERR": 1.0e-8,
-    "RELERR": 1.0e-7,
-}
-
-KINDS = ("DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC")
-
-
-def normalize_name(name: str) -> str:
-    """``"config[ 1 ]"`` -> ``"CONFIG[1]"``, ``"x'"`` -> ``"X'"``."""
-    return re.sub(r"\s+", "", str(name)).upper()
-
-
-# ------------------------------------------------------------------ records
-
-
-@dataclass(frozen=True)
-class InputValue:
-    """One ``Input NAME = value unit`` item."""
-
-    value: float
-    unit: str | None = None
-    line: int | None = None
-
-
-@dataclass(frozen=True)
-class OutputItem:
-    label: str
-    expr: Any
-    unit: str | None = None
-
-
-@dataclass(frozen=True)
-class OutputSpec:
-    """One ``Output`` statement: its items, in order."""
-
-    items: tuple[OutputItem, ...]
-    line: int | None = None
-
-
-@dataclass
-class Job:
-    """Everything a ``CODE`` statement needs, captured when it is recorded."""
-
-    kind: str
-    stem: str
-    filename: str | None
-    line: int | None
-    source: str
-    eqs: sp.Matrix | None
-    eqs_name: str | None
-    unknowns: list[Any]
-    sweep: tuple | None
-    rhs: dict
-    zero: sp.Matrix | None
-    outputs: list[OutputSpec]
-    inputs: dict[str, InputValue]
-    unit_system: UnitSystem
-    digits: int
-    variables: list[tuple[str, Any, int]]
-    names: dict[Any, str]
-    entries: dict[str, tuple[str, Any]]
-    #: initial values of variables the script never inputs (``NiCheck``'s
-    #: work variable starts at 0), by name
-    initials: dict[str, float] = field(default_factory=dict)
-    _cache: dict = field(default_factory=dict, repr=False)
-
-    @property
-    def where(self) -> str:
-        what = f"CODE {self.kind.title()}"
-        if self.filename:
-            what += f" {self.filename}"
-        if self.line is not None:
-            what += f" (line {self.line})"
-        return what
-
-
-# ------------------------------------------------------------------ results
-
-
-@dataclass(frozen=True)
-class Column:
-    label: str
-    unit: str | None = None
-
-
-@dataclass
-class Table:
-    """One output table: one ``Output`` statement evaluated at every row."""
-
-    number: int
-    columns: list[Column]
-    data: np.ndarray
-    line: int | None = None
-
-    @property
-    def names(self) -> list[str]:
-        return [c.label for c in self.columns]
-
-    def __len__(self) -> int:
-        return self.data.shape[0]
-
-    def __getitem__(self, label: str) -> np.ndarray:
-        key = normalize_name(label)
-        for j, col in enumerate(self.columns):
-            if normalize_name(col.label) == key:
-                return self.data[:, j]
-        raise KeyError(f"{label!r} is not a column of table {self.number}")
-
-    def __contains__(self, label: object) -> bool:
-        if not isinstance(label, str):
-            return False
-        key = normalize_name(label)
-        return any(normalize_name(c.label) == key for c in self.columns)
-
-
-@dataclass
-class Result:
-    """The outcome of :meth:`Workspace.run`.
-
-    ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
-    ``result.tables`` holds one :class:`Table` per ``Output`` statement.
-    """
-
-    kind: str
-    stem: str
-    tables: list[Table]
-    digits: int
-    solution: dict[str, np.ndarray] = field(default_factory=dict)
-    solution_units: dict[str, str | None] = field(default_factory=dict)
-    states: dict[str, np.ndarray] = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
-    time_unit: str | None = None
-    nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        for table in self.tables:
-            if name in table:
-                return table[name]
-        key = normalize_name(name)
-        for source in (self.solution, self.states):
-            if key in source:
-                return source[key]
-        raise KeyError(f"{name!r} is neither an output nor a solved quantity")
-
-    def __contains__(self, name: object) -> bool:
-        try:
-            self[name]  # type: ignore[index]
-        except (KeyError, TypeError):
-            return False
-        return True
-
-    def files(self) -> list[str]:
-        """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
-        return [f"{self.stem}.{table.number}" for table in self.tables]
-
-    def write(self, directory: str | Path = ".") -> list[Path]:
-        """Write each table as ``STEM.n``: a ``%`` header naming columns and
-        units, then one row per line with ``Digits`` significant digits
-        (``numpy.loadtxt(path, comments="%")`` reads them back)."""
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
-            path = directory / name
-            path.write_text(
-                format_table(table, self.digits, name, self.time_unit),
-                encoding="utf-8",
-            )
-            written.append(path)
-        return written
-
-    def plot(self, directory: str | Path = ".") -> list[Path]:
-        """Write ``STEM.n.png`` per table: each column against the first."""
-        try:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-        except ImportError:
-            raise NumericsError(
-                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
-            ) from None
-        directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        written = []
-        for table, name in zip(self.tables, self.files(), strict=True):
-            cols = table.columns
-            if len(cols) < 2 or len(table) == 0:
-                continue
-            n = len(cols) - 1
-            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
-            FigureCanvasAgg(fig)
-            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
-            x = table.data[:, 0]
-            for ax, j in zip(axes, range(1, len(cols)), strict=True):
-                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
-                ax.set_ylabel(_heading(cols[j], self.time_unit))
-                ax.grid(True, alpha=0.3)
-            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
-            fig.suptitle(name)
-            fig.tight_layout()
-            path = directory / f"{name}.png"
-            fig.savefig(path, dpi=100)
-            written.append(path)
-        return written
-
-    def solution_lines(self) -> list[str]:
-        """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""
-        out = []
-        for name, values in self.solution.items():
-            unit = self.solution_units.get(name)
-            suffix = f" {unit}" if unit else ""
-            if len(values) == 1:
-                out.append(f"{name} = {fmt_number(values[0], self.digits)}{suffix}")
-        return out
-
-
-def _heading(col: Column, time_unit: str | None) -> str:
-    unit = col.unit
-    if unit is None and normalize_name(col.label) == "T" and time_unit:
-        unit = time_unit
-    return f"{col.label} ({unit})" if unit else col.label
-
-
-def fmt_number(x: float, digits: int) -> str:
-    return f"{x:.{digits}g}"
-
-
-def format_table(
-    table: Table, digits: int, name: str, time_unit: str | None = None
-) -> str:
-    """The text of one output file."""
-    width = max(digits + 8, 12)
-    labels, units = [], []
-    for col in table.columns:
-        unit = col.unit
-        if unit is None and normalize_name(col.label) == "T" and time_unit:
-            unit = time_unit
-        labels.append(col.label)
-        units.append(f"({unit})" if unit else "(UNITS)")
-    width = max([width] + [len(s) + 2 for s in labels + units])
-    lines = [
-        f"% FILE: {name}",
-        "%",
-        "%" + "".join(s.center(width) for s in labels).rstrip(),
-        "%" + "".join(s.center(width) for s in units).rstrip(),
-        "",
-    ]
-    for row in table.data:
-        lines.append(
-            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
-        )
-    return "\n".join(lines) + "\n"
 
 
 # ---------------------------------------------------------------- resolving
@@ -489,12 +235,18 @@ def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]
             raise NumericsError(f"{name} = {value!r} is not a number") from None
         raw[key] = (number, unit)
         given.add(key)
+    computed = {}
     for key, (number, unit) in raw.items():
         try:
-            values[key] = number * us.to_internal(unit)
+            factor = us.to_internal(unit)
         except UnitError as exc:
             raise NumericsError(f"Input {key}: {exc}") from None
         units[key] = unit
+        if isinstance(number, sp.Basic):
+            computed[key] = (number, factor)
+        else:
+            values[key] = number * factor
+    values.update(_computed_inputs(job, computed, values))
     keep = set()
     for key in raw:
         entry = job.entries.get(key)
@@ -506,6 +258,97 @@ def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]
             if isinstance(value, sp.Basic) and value.is_number:
                 keep.add(obj)
     return _Values(job, values, units, [], given), keep
+
+
+def _computed_inputs(
+    job: Job, computed: dict[str, tuple[Any, float]], values: dict[str, float]
+) -> dict[str, float]:
+    """Inputs given as expressions of other Inputs, in internal units."""
+    out: dict[str, float] = {}
+    pending = dict(computed)
+    while pending:
+        known = {**values, **out}
+        subs = {}
+        for name, (_kind, obj) in job.entries.items():
+            if name in known:
+                subs[obj] = known[name]
+        progress = False
+        for key, (expr, factor) in list(pending.items()):
+            value = sp.sympify(sp.sympify(expr).xreplace(subs))
+            if value.free_symbols or value.atoms(AppliedUndef):
+                continue
+            try:
+                out[key] = float(value) * factor
+            except TypeError:
+                raise NumericsError(
+                    f"Input {key} = {expr} is not a real number"
+                ) from None
+            del pending[key]
+            progress = True
+        if not progress:
+            key, (expr, _) = next(iter(pending.items()))
+            raise NumericsError(
+                f"Input {key} = {expr}: every name in it needs an Input value"
+            )
+    return out
+
+
+def evaluate_with_inputs(
+    job: Job, value: Any, name: str, overrides: Mapping[str, Any]
+) -> Any:
+    """``value`` with Inputs, ``overrides`` and right-hand sides substituted."""
+    given = {normalize_name(k): v for k, v in overrides.items()}
+    settable = {
+        k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
+    }
+    free = {k: v for k, v in given.items() if k not in settable}
+    vals, keep = _input_values(job, settable)
+    numbers = dict(vals.values)
+    for key, v in free.items():
+        try:
+            numbers[key] = float(v)
+        except (TypeError, ValueError):
+            raise NumericsError(f"{key} = {v!r} is not a number") from None
+    table = _without(
+        job.rhs,
+        [obj for key, (kind, obj) in job.entries.items() if key in free] + list(keep),
+    )
+    time = numbers.get("T", numbers.get("TINITIAL", 0.0))
+    subs: dict[Any, Any] = {t: time}
+    for key, number in numbers.items():
+        m = re.fullmatch(r"([A-Z][A-Z0-9_]*)('*)", key)
+        entry = job.entries.get(m.group(1)) if m else None
+        if entry is not None:
+            subs[_deriv(entry[1], len(m.group(2)))] = number
+
+    def one(expr: Any) -> float:
+        expr = _resolve(sp.sympify(expr), table)
+        # Derivatives first, so that QA' is not taken as d(value of QA)/dt.
+        out = sp.sympify(expr).xreplace(
+            {k: v for k, v in subs.items() if isinstance(k, sp.Derivative)}
+        )
+        left = {label_of(a, job.names) for a in out.atoms(sp.Derivative)}
+        out = sp.sympify(out.xreplace({k: v for k, v in subs.items() if k != t}))
+        left |= {label_of(a, job.names) for a in out.atoms(AppliedUndef)}
+        left |= {str(s) for s in out.free_symbols if s != t}
+        if left:
+            raise NumericsError(
+                f"{name} needs a value for {', '.join(sorted(left))}"
+                " (give it as a keyword argument)"
+            )
+        out = sp.sympify(out.xreplace({t: time}))
+        number = complex(sp.N(out))
+        return (
+            number.real if abs(number.imag) < 1e-12 * max(1.0, abs(number)) else number
+        )
+
+    if isinstance(value, sp.MatrixBase):
+        return np.array(
+            [[one(value[i, j]) for j in range(value.cols)] for i in range(value.rows)]
+        )
+    if not isinstance(value, sp.Basic | int | float):
+        raise NumericsError(f"{name} is not a scalar or matrix; it cannot be evaluated")
+    return one(value)
 
 
 def check_overrides(job: Job, overrides: Mapping[str, Any]) -> None:
@@ -544,10 +387,16 @@ def _integration(vals: _Values) -> dict[str, float]:
     if p["INTEGSTP"] is None or p["INTEGSTP"] == 0:
         p["INTEGSTP"] = abs(span) / 100 if span else 0.1
     if p["PRINTINT"] is None or p["PRINTINT"] == 0:
-        p["PRINTINT"] = p["INTEGSTP"]
+        p["PRINTINT"] = 1
     for key in ("INTEGSTP", "PRINTINT", "ABSERR", "RELERR"):
         if p[key] <= 0:
             raise NumericsError(f"{key} must be positive, not {p[key]}")
+    # Autolev's programs read "Print-Integer PRINTINT Positive Integer":
+    # a row is written every PRINTINT integration steps.
+    if p["PRINTINT"] != round(p["PRINTINT"]):
+        raise NumericsError(
+            f"PRINTINT is a whole number of integration steps, not {p['PRINTINT']:g}"
+        )
     return p
 
 
@@ -598,7 +447,8 @@ def _output_exprs(job: Job, table: dict, slots: _Slots) -> list[list[Any]]:
                     f"Output {item.label} (line {spec.line}) is a matrix;"
                     " output its elements"
                 )
-            row.append(slots.numeric(value, f"Output {item.label}"))
+            what = "Encode" if spec.encoded else "Output"
+            row.append(slots.numeric(value, f"{what} {item.label}"))
         out.append(row)
     return out
 
@@ -646,13 +496,15 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
     candidates = []
-    for _name, obj, order in job.variables:
+    for name, obj, order in job.variables:
         if obj in table:
             continue  # computed from its own RHS (dependent speeds, specified)
         ks = [k for k in range(max(order, 1), 0, -1) if _deriv(obj, k) in table]
         if ks:
             explicit.append((obj, ks[0]))
-        else:
+        elif job.entries.get(name, ("", None))[0] != "specified":
+            # A Specified quantity with no equation is an input of the job
+            # (0 unless given, as in Autolev's programs), never an unknown.
             candidates.append(obj)
     zero = None
     if job.zero is not None:
@@ -755,14 +607,33 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
-    from scipy.integrate import solve_ivp
+@dataclass
+class OdeSystem:
+    """The numeric equations of a dynamics job: ``fun(t, y)`` for
+    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
+    names, in internal units (the UnitSystem's, SI by default; radians).
+    ``accelerations(t, y)`` gives the derivatives solved from ``ZERO``."""
 
+    fun: Any
+    y0: list[float]
+    names: list[str]
+    accelerations: Any
+    compiled: _Dynamics
+    params: list[float]
+    clock: list[float]
+
+
+def _compiled(job: Job, keep: Iterable[Any]) -> _Dynamics:
     key = ("dyn", frozenset(keep))
     if key not in job._cache:
         job._cache[key] = _compile_dynamics(job, frozenset(keep))
-    c: _Dynamics = job._cache[key]
-    ip = _integration(vals)
+    return job._cache[key]
+
+
+def ode_system(job: Job, vals: _Values, keep: set, t0: float = 0.0) -> OdeSystem:
+    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
+    where ``run()`` turns the equations into a numeric function)."""
+    c = _compiled(job, keep)
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
     aliases = _state_aliases(job, c)
@@ -777,7 +648,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
     n = len(c.ud_objs)
     mf, deriv = c.mf, c.deriv
     nn = n * n
-    clock = [ip["TINITIAL"]]  # time of the latest evaluation, for messages
+    clock = [t0]  # time of the latest evaluation, for messages
 
     def singular() -> NumericsError:
         return NumericsError(
@@ -802,7 +673,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
     def fun(tt: float, y: np.ndarray) -> list[float]:
         clock[0] = tt
-        yl = y.tolist()
+        yl = _floats(y)
         return deriv(tt, *yl, *accelerations(tt, yl), *p)
 
     if c.step is not None:
@@ -810,7 +681,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
 
         def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
             clock[0] = tt
-            v = step(tt, *y.tolist(), *p)
+            v = step(tt, *_floats(y), *p)
             if n == 1:
                 if v[0] == 0:
                     raise singular()
@@ -827,7 +698,35 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             known = v[nf:]
             return [acc[i] if solved else known[i] for solved, i in plan]
 
-    times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["PRINTINT"])
+    return OdeSystem(fun, y0, list(c.state_names), accelerations, c, p, clock)
+
+
+def _floats(y: Any) -> list[float]:
+    return y.tolist() if isinstance(y, np.ndarray) else [float(v) for v in y]
+
+
+def ode_function(
+    job: Job, overrides: Mapping[str, Any] | None = None
+) -> tuple[Any, list[float], list[str]]:
+    """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
+    equations of motion in internal units, with Inputs changed by
+    ``overrides`` (as ``run()``)."""
+    if job.kind not in ("DYNAMICS", "ODE"):
+        raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
+    vals, keep = _input_values(job, overrides or {})
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    return system.fun, list(system.y0), list(system.names)
+
+
+def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+    from scipy.integrate import solve_ivp
+
+    ip = _integration(vals)
+    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    c, p, y0, fun = system.compiled, system.params, system.y0, system.fun
+    accelerations, clock = system.accelerations, system.clock
+    times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     try:
         nfev = 0
         if len(times) == 1:
@@ -867,7 +766,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
     ):
         data = np.array(rows, dtype=float).reshape(len(rows), len(cols)) * fac
-        tables.append(Table(number, cols, data, spec.line))
+        tables.append(Table(number, cols, data, spec.line, spec.encoded))
     states = {"T": np.asarray(times, dtype=float)}
     for j, name in enumerate(c.state_names):
         unit = vals.units.get(name)
@@ -877,6 +776,7 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
         job.stem,
         tables,
         job.digits,
+        encoded=dict(job.encoded),
         states=states,
         notes=_unique(vals.notes),
         time_unit=job.unit_system.time_unit,
@@ -987,8 +887,8 @@ def _static_result(
             except (ValueError, ZeroDivisionError, OverflowError) as exc:
                 raise NumericsError(f"{job.where}: Output: {exc}") from None
             arr = np.array(data, dtype=float).reshape(len(rows), len(cols)) * fac
-            tables.append(Table(number, cols, arr, spec.line))
-    elif c.unknown_names:
+            tables.append(Table(number, cols, arr, spec.line, spec.encoded))
+    if c.unknown_names and not any(not s.encoded for s in job.outputs):
         cols = [Column(n, units[n]) for n in c.unknown_names]
         data = np.column_stack([solution[n] for n in c.unknown_names])
         tables.append(Table(1, cols, data, job.line))
@@ -997,6 +897,7 @@ def _static_result(
         job.stem,
         tables,
         job.digits,
+        encoded=dict(job.encoded),
         solution=solution,
         solution_units=units,
         notes=_unique(vals.notes),
@@ -1099,7 +1000,7 @@ def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
             name, output_times(float(start), float(stop), float(step))
         )
         result.solution_units.setdefault(name, unit)
-        if not job.outputs and result.tables:  # default table: sweep, unknowns
+        if not any(not s.encoded for s in job.outputs) and result.tables:
             table = result.tables[0]
             table.columns.insert(0, Column(name, unit))
             table.data = np.column_stack([result.solution[name], table.data])

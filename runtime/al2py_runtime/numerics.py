@@ -1,8 +1,8 @@
 """Numerical CODE jobs: Input/Output with units, Dynamics/ODE/Nonlinear/Algebraic.
 
-:class:`NumericsMixin` adds ``UnitSystem``, ``Input``, ``Output``, ``CODE``,
-``Input(X)``, ``Units(a, b)``, :meth:`~NumericsMixin.run` and
-:meth:`~NumericsMixin.main` to :class:`Workspace`.
+:class:`Numerics` records ``UnitSystem``, ``Input``, ``Output`` and ``CODE``
+for a :class:`Workspace` (its ``numerics`` part; the workspace offers these
+commands, ``Input(X)``, ``Units(a, b)``, ``run()`` and ``main()``).
 
 Recording (``unit_system``, ``input``, ``output``, ``code``) only stores what
 the statements say, so importing a generated module does no numerical work.
@@ -25,27 +25,27 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
 from typing import Any
 
 import sympy as sp
 
-from .jobs import (
+from .jobs import ode_function, run_job
+from .records import (
     KINDS,
     InputValue,
     Job,
     NumericsError,
     OutputItem,
     OutputSpec,
-    Result,
     normalize_name,
-    run_job,
 )
+from .tables import Result
 from .units import UnitSystem, units_factor
 
-__all__ = ["NumericsMixin", "NumericsError", "Result"]
+__all__ = ["Numerics", "NumericsError", "Result"]
 
 
 @dataclass
@@ -54,18 +54,21 @@ class _NumericsState:
     inputs: dict[str, InputValue] = field(default_factory=dict)
     outputs: list[OutputSpec] = field(default_factory=list)
     jobs: list[Job] = field(default_factory=list)
+    encoded: list[str] = field(default_factory=list)  # names, in order
+    #: ``Units T=S, X=m``: the unit of a name in later Inputs and Outputs
+    #: that give none.
+    units_of: dict[str, str] = field(default_factory=dict)
 
 
-class NumericsMixin:
-    """Inputs, outputs, units and the numerical job of a script."""
+class Numerics:
+    """Inputs, outputs, units and the numerical jobs of a script.
 
-    @property
-    def _numerics(self) -> _NumericsState:
-        state = self.__dict__.get("_numerics_state")
-        if state is None:
-            state = _NumericsState()
-            self.__dict__["_numerics_state"] = state
-        return state
+    It reads the script's names (``ws``: the workspace's name table and
+    settings) when ``CODE`` takes its snapshot; nothing else refers back."""
+
+    def __init__(self, ws: Any) -> None:
+        self._ws = ws
+        self._numerics = _NumericsState()
 
     # ------------------------------------------------------------ recording
 
@@ -75,17 +78,27 @@ class NumericsMixin:
         """``UnitSystem kg, meter, sec``: the units values have inside a run."""
         self._numerics.unit_system = UnitSystem(mass, length, time)
 
+    def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
+        """``Units T=S, X=m``: the unit of each name where an Input or Output
+        of it gives none."""
+        for name, unit in units.items():
+            self._numerics.units_of[normalize_name(name)] = unit
+
     def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
         """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
         store = self._numerics.inputs
         for name, spec in values.items():
             value, unit = spec if isinstance(spec, tuple) else (spec, None)
+            unit = unit or self._numerics.units_of.get(normalize_name(name))
             try:
-                number = float(sp.sympify(value))
+                expr = sp.sympify(value)
             except (TypeError, ValueError, sp.SympifyError):
                 raise ValueError(
                     f"Input {name} (line {line}): {value!r} is not a number"
                 ) from None
+            # ``Input E4 = COS(QQ1/2)``: computed from the other Inputs at run
+            # time (in internal units), see jobs._input_values.
+            number = float(expr) if expr.is_number else expr
             store[normalize_name(name)] = InputValue(
                 number, unit if unit else None, line
             )
@@ -97,13 +110,43 @@ class NumericsMixin:
         line: int | None = None,
     ) -> None:
         """``Output T, X m, QA deg``: one output table (file ``STEM.n``)."""
+        default = self._numerics.units_of
         spec = OutputSpec(
             tuple(
-                OutputItem(str(lab), expr, unit or None) for lab, expr, unit in items
+                OutputItem(
+                    str(lab), expr, unit or default.get(normalize_name(lab)) or None
+                )
+                for lab, expr, unit in items
             ),
             line,
         )
         self._numerics.outputs.append(spec)
+
+    def encode(self, *names: str, line: int | None = None) -> None:
+        """``Encode A, B'``: the CODE job that follows computes these
+        quantities at every output row, as Autolev's generated programs did
+        (``result["A"]``; see docs/semantics.md)."""
+        for name in names:
+            key = normalize_name(name)
+            if key not in self._numerics.encoded:
+                self._numerics.encoded.append(key)
+
+    def _encoded_spec(self, line: int | None) -> tuple[OutputSpec | None, dict]:
+        """The encoded quantities as one (unwritten) output table."""
+        items: list[OutputItem] = []
+        shapes: dict[str, tuple[int, int]] = {}
+        for key in self._numerics.encoded:
+            value = self._ws[key]
+            if isinstance(value, sp.MatrixBase):
+                shapes[key] = value.shape
+                for i in range(value.rows):
+                    for j in range(value.cols):
+                        items.append(OutputItem(f"{key}[{i + 1},{j + 1}]", value[i, j]))
+            else:
+                items.append(OutputItem(key, value))
+        if not items:
+            return None, {}
+        return OutputSpec(tuple(items), line, encoded=True), shapes
 
     def code(
         self,
@@ -120,6 +163,21 @@ class NumericsMixin:
 
         Records the job; ``run()`` performs it.  ``file``'s stem names the
         output files; its extension (.c, .m, .for, .f) is ignored."""
+        job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
+        self._numerics.jobs.append(job)
+        return job
+
+    def _make_job(
+        self,
+        kind: str,
+        eqs: Any = None,
+        unknowns: Iterable[Any] | None = None,
+        *,
+        sweep: tuple | None = None,
+        file: str | None = None,
+        line: int | None = None,
+    ) -> Job:
+        """A snapshot of the script's state as a job (not recorded)."""
         kind = kind.upper()
         if kind not in KINDS:
             raise ValueError(f"CODE option must be one of {', '.join(KINDS)}")
@@ -132,60 +190,62 @@ class NumericsMixin:
             elif isinstance(eqs, list | tuple):
                 eq_matrix = sp.Matrix(list(eqs))
             else:
-                eq_matrix = sp.Matrix([self.val(eqs)])
-        objs = [self.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+                eq_matrix = sp.Matrix([self._ws.val(eqs)])
+        objs = [self._ws.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
         if sweep is not None:
             obj, unit, start, stop, step = sweep
             if isinstance(obj, str):
-                obj = self.symbol(obj)
+                obj = self._ws.symbol(obj)
             sweep = (obj, unit or None, float(start), float(stop), float(step))
             if float(step) == 0:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._values.get("ZERO")
+            value = self._ws._values.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
-        stem = PurePath(file).stem if file else PurePath(self.filename).stem
+        stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
+        encoded, shapes = self._encoded_spec(line)
+        outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
             stem=stem or "autolev",
             filename=file,
             line=line,
-            source=self.filename,
+            source=self._ws.filename,
             eqs=eq_matrix,
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._rhs),
+            rhs=dict(self._ws._rhs),
             zero=zero,
-            outputs=list(state.outputs),
+            outputs=outputs,
+            encoded=shapes,
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
-            digits=self.settings.digits,
+            digits=self._ws.settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._entries_by_obj),
-            entries={name: (e.kind, e.obj) for name, e in self._names.items()},
+            names=dict(self._ws._entries_by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._names.items()
+                for name, e in self._ws._names.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
         )
-        state.jobs.append(job)
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._values.items():
+        for name, stored in self._ws._values.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._values.items():
+            for name, stored in self._ws._values.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -231,19 +291,42 @@ class NumericsMixin:
         ``run({"X'": 1})``."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self.filename} has no CODE statement")
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
         return run_job(jobs[-1], merged)
 
+    def ode_function(
+        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+    ) -> tuple[Any, list[float], list[str]]:
+        """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
+        ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
+        UnitSystem's, SI by default; angles in radians).  Overrides are given
+        as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
+        the same function."""
+        jobs = self._numerics.jobs
+        if not jobs:
+            raise NumericsError(f"{self._ws.filename} has no CODE statement")
+        merged = dict(values or {})
+        merged.update(overrides)
+        return ode_function(jobs[-1], merged)
+
+    def evaluate_name(
+        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+    ) -> Any:
+        """The named quantity as a float (or numpy array for a matrix).
+
+        Every Input value (given in the Input's units), the ``values`` given
+        here (also in the Input's units; names without an Input are in the
+        unit system's units, radians for angles) and every named intermediate
+        are substituted.  Time is TINITIAL unless ``T`` is given."""
+        from .jobs import evaluate_with_inputs
+
+        merged = dict(values or {})
+        merged.update(more)
+        job = self._make_job("ALGEBRAIC", line=None)
+        return evaluate_with_inputs(job, self._ws[name], name, merged)
+
     def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
         """Perform one recorded job with optional overrides."""
         return run_job(job, dict(values or {}))
-
-    def main(
-        self, source_lines: Sequence[str], argv: Sequence[str] | None = None
-    ) -> int:
-        """The ``python module.py`` entry point (see :mod:`.cli`)."""
-        from .cli import main
-
-        return main(self, source_lines, argv)

@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterable, Iterator, Sequence
 
-from .workspace import Response
+from .settings import Response
 
 __all__ = ["logical_lines", "transcript_lines"]
 

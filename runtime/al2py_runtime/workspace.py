@@ -29,71 +29,17 @@ from typing import Any
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
+from . import algebra, matrices
 from .kinematics import doit_derivatives, is_small, one_or_tuple
-from .mechanics import MechanicsMixin
+from .mechanics import MODEL_COMMANDS, Model
 from .names import Key, parse_key
-from .numerics import NumericsMixin
+from .numerics import Numerics
+from .settings import Response, Settings
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
 #: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
 t = dynamicsymbols._t
-
-_ON_OFF = {"ON": True, "OFF": False}
-
-
-@dataclass
-class Settings:
-    """Autolev settings (tutorial §6.5 and the Summary's "Default settings")."""
-
-    digits: int = 7
-    degrees: bool = False
-    autorhs: str = "ON"  # OFF | ON | ALL
-    factoring: bool = True
-    autoepsilon: float = 1.0e-7
-    complex: str = "OFF"  # OFF | ON | AUTO
-    autoz: bool = False
-    overwrite: bool = True
-    autoexpress: bool = False
-
-    def set(self, name: str, value: Any = None) -> None:
-        """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
-        key = name.lower()
-        word = str(value).upper() if value is not None else "ON"
-        if key == "digits":
-            n = int(value)
-            if not 1 <= n <= 17:
-                raise ValueError(f"Digits must be between 1 and 17, not {n}")
-            self.digits = n
-        elif key == "autoepsilon":
-            self.autoepsilon = float(value)
-        elif key == "autorhs":
-            if word not in ("ON", "OFF", "ALL"):
-                raise ValueError(f"AutoRHS takes ON, OFF or ALL, not {value}")
-            self.autorhs = word
-        elif key == "complex":
-            if word not in ("ON", "OFF", "AUTO"):
-                raise ValueError(f"Complex takes ON, OFF or AUTO, not {value}")
-            self.complex = word
-        elif key in ("beepsound", "pause"):
-            pass  # interactive conveniences: nothing to do in a batch run
-        elif key in ("degrees", "factoring", "autoz", "overwrite", "autoexpress"):
-            if word not in _ON_OFF:
-                raise ValueError(f"{name} takes ON or OFF, not {value}")
-            setattr(self, key, _ON_OFF[word])
-        else:
-            raise ValueError(f"unknown setting {name}")
-
-
-@dataclass(frozen=True)
-class Response:
-    """One ``-> (n) NAME = value`` line, kept symbolic until printed."""
-
-    line: int | None
-    label: str
-    value: Any
-    digits: int
-
 
 _OBJECT_KINDS = ("frame", "body", "particle", "point", "newtonian")
 
@@ -109,7 +55,7 @@ class _Entry:
     extra: dict = field(default_factory=dict)
 
 
-class Workspace(MechanicsMixin, NumericsMixin, Mapping):
+class Workspace(Mapping):
     """Names, values and responses of one Autolev script.
 
     The workspace is a read-only mapping from Autolev spellings to current
@@ -127,9 +73,97 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         self._saves: list[str] = []
         self._exit_line: int | None = None
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
+        #: Frames, points, bodies, loads and Kane's method (mechanics.py).
+        self.model = Model(self)
+        #: Inputs, Outputs, UnitSystem and CODE jobs (``run()``).
+        self.numerics = Numerics(self)
         self._declare("T", "variable", t)
         self._declare("PI", "constant", sp.pi)
         self._declare("I", "imaginary", sp.I)
+
+    # ------------------------------------------------ the model (mechanics.py)
+
+    def __getattr__(self, name: str) -> Any:
+        """The model's commands (:data:`MODEL_COMMANDS`: ``al.simprot``,
+        ``al.fr``...) are answered by :attr:`model`."""
+        model = self.__dict__.get("model")
+        if model is not None and name in MODEL_COMMANDS:
+            return getattr(model, name)
+        raise AttributeError(f"{type(self).__name__!r} has no attribute {name!r}")
+
+    def __dir__(self) -> list[str]:
+        return sorted(set(super().__dir__()) | MODEL_COMMANDS)
+
+    # ------------------------------------------- numerical jobs (numerics.py)
+
+    def unit_system(self, *units: str, line: int | None = None) -> None:
+        """``UnitSystem kg, meter, sec`` (see :class:`Numerics`)."""
+        self.numerics.unit_system(*units, line=line)
+
+    def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
+        """``Input A=1, QA=30 deg`` (see :class:`Numerics`)."""
+        self.numerics.input(values, line=line)
+
+    def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
+        """``Units T=S, X=m`` (see :meth:`Numerics.units_of`)."""
+        self.numerics.units_of(units, line=line)
+
+    def encode(self, *names: str, line: int | None = None) -> None:
+        """``Encode A, B'`` (see :meth:`Numerics.encode`)."""
+        self.numerics.encode(*names, line=line)
+
+    def evaluate_name(
+        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+    ) -> Any:
+        """The named quantity as a number (see :meth:`Numerics.evaluate_name`)."""
+        return self.numerics.evaluate_name(name, values, **more)
+
+    def output(self, items: Iterable[Any], *, line: int | None = None) -> None:
+        """``Output T, X m`` (see :class:`Numerics`)."""
+        self.numerics.output(items, line=line)
+
+    def code(self, kind: str, *args: Any, **kw: Any) -> Any:
+        """``CODE Dynamics() file.c`` (see :meth:`Numerics.code`)."""
+        return self.numerics.code(kind, *args, **kw)
+
+    def input_value(self, name: str, unit_system: bool = False) -> Any:
+        """Autolev ``Input(X)`` (see :meth:`Numerics.input_value`)."""
+        return self.numerics.input_value(name, unit_system)
+
+    def units(self, a: str, b: str) -> Any:
+        """Autolev ``Units(a, b)`` (see :meth:`Numerics.units`)."""
+        return self.numerics.units(a, b)
+
+    @property
+    def jobs(self) -> list:
+        """The recorded ``CODE`` jobs, in script order."""
+        return self.numerics.jobs
+
+    @property
+    def inputs(self) -> dict:
+        """The ``Input`` values recorded so far (upper-case names)."""
+        return self.numerics.inputs
+
+    def run(self, values: Mapping[str, Any] | None = None, /, **overrides: Any):
+        """Perform the script's ``CODE`` job (see :meth:`Numerics.run`)."""
+        return self.numerics.run(values, **overrides)
+
+    def ode_function(
+        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+    ) -> tuple:
+        """``(f, y0, names)`` for ``solve_ivp`` (see
+        :meth:`Numerics.ode_function`)."""
+        return self.numerics.ode_function(values, **overrides)
+
+    def run_job(self, job: Any, values: Mapping[str, Any] | None = None) -> Any:
+        """Perform one recorded job with optional overrides."""
+        return self.numerics.run_job(job, values)
+
+    def main(self, source_lines: Any, argv: Any = None) -> int:
+        """The ``python module.py`` entry point (see :mod:`.cli`)."""
+        from .cli import main
+
+        return main(self, source_lines, argv)
 
     # ------------------------------------------------------------ mapping API
 
@@ -237,7 +271,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     def value(self, name: str) -> Any:
         """The current value of an Autolev name, element or derivative."""
         key = parse_key(name)
-        form = self._form_value(key)
+        form = self.model._form_value(key)
         if form is not NotImplemented:
             return form
         if key.name in self._values:
@@ -343,7 +377,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     ) -> Any:
         key = parse_key(target)
         value = self.normalize(value, rearrange=rearrange)
-        form = self._assign_form(key, value, line=line)
+        form = self.model._assign_form(key, value, line=line)
         if form is not NotImplemented:
             return form
         if key.index:
@@ -547,7 +581,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [replace(r, value=self._display(r.value)) for r in self.responses]
+        shown = [replace(r, value=self.model._display(r.value)) for r in self.responses]
         return transcript_lines(lines, shown)
 
     def print_transcript(self, source: Iterable[str]) -> None:
@@ -582,7 +616,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         row i, column j is the derivative of element i of ``y`` by element j.
         """
         if frame is not None or _is_vectorial(self.val(y)):
-            return self._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
+            return self.model._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
         if isinstance(x, sp.MatrixBase):
             xs = list(x)
             y = self.resolve(self.val(y), keep=xs)
@@ -596,7 +630,7 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides."""
         if frame is not None or _is_vectorial(self.val(y)):
-            return self._vector_dt(self.resolve(self.val(y)), frame)
+            return self.model._vector_dt(self.resolve(self.val(y)), frame)
         y = self.resolve(self.val(y))
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: sp.diff(e, t))
@@ -630,7 +664,12 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         """``Solve(A, x1, x2)``: solve linear equations and assign the unknowns."""
         from . import algebra
 
-        unknowns = list(unknowns)
+        # Solve(Zero, qdd): a matrix of unknowns stands for its elements.
+        unknowns = [
+            x
+            for u in unknowns
+            for x in (list(u) if isinstance(u, sp.MatrixBase) else [u])
+        ]
         if isinstance(eqs, sp.MatrixBase):
             eqs = sp.Matrix(eqs)
         else:
@@ -663,6 +702,76 @@ class Workspace(MechanicsMixin, NumericsMixin, Mapping):
         return self.val(y)
 
     autoz = zee
+
+    # Autolev's algebra and matrix commands (their first argument resolved)
+
+    def expand(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Expand``: see :func:`al2py_runtime.algebra.expand`."""
+        return algebra.expand(self.val(y), *args)
+
+    def factor(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Factor``: see :func:`al2py_runtime.algebra.factor`."""
+        return algebra.factor(self.val(y), *args)
+
+    def polynomial(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Polynomial``: see :func:`al2py_runtime.algebra.polynomial`."""
+        return algebra.polynomial(self.val(y), *args)
+
+    def roots(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Roots``: see :func:`al2py_runtime.algebra.roots`."""
+        return algebra.roots(self.val(y), *args)
+
+    def coef(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Coef``: see :func:`al2py_runtime.algebra.coef`."""
+        return algebra.coef(self.val(y), *args)
+
+    def exclude(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Exclude``: see :func:`al2py_runtime.algebra.exclude`."""
+        return algebra.exclude(self.val(y), *args)
+
+    def include(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Include``: see :func:`al2py_runtime.algebra.include`."""
+        return algebra.include(self.val(y), *args)
+
+    def arrange(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Arrange``: see :func:`al2py_runtime.algebra.arrange`."""
+        return algebra.arrange(self.val(y), *args)
+
+    def replace(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Replace``: see :func:`al2py_runtime.algebra.replace`."""
+        return algebra.replace(self.val(y), *args)
+
+    def epsilon(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Epsilon``: see :func:`al2py_runtime.algebra.epsilon`."""
+        return algebra.epsilon(self.val(y), *args)
+
+    def rows(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Rows``: see :func:`al2py_runtime.matrices.rows`."""
+        return matrices.rows(self.val(y), *args)
+
+    def cols(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Cols``: see :func:`al2py_runtime.matrices.cols`."""
+        return matrices.cols(self.val(y), *args)
+
+    def det(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Det``: see :func:`al2py_runtime.matrices.det`."""
+        return matrices.det(self.val(y), *args)
+
+    def diagmat(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Diagmat``: see :func:`al2py_runtime.matrices.diagmat`."""
+        return matrices.diagmat(self.val(y), *args)
+
+    def element(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Element``: see :func:`al2py_runtime.matrices.element`."""
+        return matrices.element(self.val(y), *args)
+
+    def inv(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Inv``: see :func:`al2py_runtime.matrices.inv`."""
+        return matrices.inv(self.val(y), *args)
+
+    def transpose(self, y: Any, *args: Any) -> Any:
+        """Autolev ``Transpose``: see :func:`al2py_runtime.matrices.transpose`."""
+        return matrices.transpose(self.val(y), *args)
 
     def block(self, rows: Any) -> Any:
         from .matrices import block
@@ -762,32 +871,6 @@ def _diff(y: Any, x: Any) -> Any:
     if isinstance(y, sp.Basic):
         return sp.diff(y, x)
     return sp.Integer(0)
-
-
-def _delegate(module: str, func: str) -> Any:
-    """A workspace method that resolves its first argument, then calls
-    ``al2py_runtime.<module>.<func>``."""
-
-    def method(self: Workspace, y: Any, *args: Any) -> Any:
-        import importlib
-
-        target = getattr(importlib.import_module(f"al2py_runtime.{module}"), func)
-        return target(self.val(y), *args)
-
-    method.__name__ = func
-    method.__qualname__ = f"Workspace.{func}"
-    method.__doc__ = (
-        f"Autolev ``{func.title()}``: see :func:`al2py_runtime.{module}.{func}`."
-    )
-    return method
-
-
-for _module, _names in {
-    "algebra": "expand factor polynomial roots coef exclude include arrange replace epsilon",
-    "matrices": "rows cols det diagmat element inv transpose",
-}.items():
-    for _name in _names.split():
-        setattr(Workspace, _name, _delegate(_module, _name))
 
 
 class AutolevNames(Mapping):

@@ -14,17 +14,35 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import ir
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
-from .errors import MacroError, ParseError, SemanticError, UnsupportedError
+from .errors import (
+    AutolevError,
+    ErrorList,
+    InternalError,
+    MacroError,
+    ParseError,
+    SemanticError,
+    UnsupportedError,
+)
 from .forms import FORM_KINDS, Form, match
 from .naming import PHYSICAL_KINDS, Namer
 
-__all__ = ["Symbol", "SymbolTable", "Analysis", "StmtFacts", "expand", "walk_expr"]
+__all__ = [
+    "Symbol",
+    "SymbolTable",
+    "Analysis",
+    "Facts",
+    "StmtFacts",
+    "UndeclaredError",
+    "expand",
+    "walk_expr",
+]
 
 SCALAR_KINDS = frozenset(
     {"constant", "variable", "specified", "imaginary", "scalar", "time"}
@@ -43,24 +61,9 @@ _DECL_KIND = {
 _FRAME_KINDS = frozenset({"newtonian", "frame", "body"})
 _POINT_KINDS = frozenset({"point", "particle"})
 
-#: Settings accepted by the runtime, with the values they take.
-SETTINGS: dict[str, tuple[str, ...] | str] = {
-    "DIGITS": "int",
-    "DEGREES": ("ON", "OFF"),
-    "AUTORHS": ("ON", "OFF", "ALL"),
-    "FACTORING": ("ON", "OFF"),
-    "AUTOEPSILON": "number",
-    "COMPLEX": ("ON", "OFF", "AUTO"),
-    "AUTOZ": ("ON", "OFF"),
-    "OVERWRITE": ("ON", "OFF"),
-    "AUTOEXPRESS": ("ON", "OFF"),
-    # Interactive conveniences; accepted and recorded, nothing to do in batch.
-    "BEEPSOUND": ("ON", "OFF"),
-    "PAUSE": "number",
-}
 SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
 _MATRIX_FIRST = frozenset({"DET", "INV", "TRANSPOSE", "EIG", "ROWS", "COLS", "ELEMENT"})
-_OBJECT_ARGS = frozenset({"MASS", "CM", "INERTIA"})
+_OBJECT_ARGS = frozenset({"MASS", "CM", "INERTIA", "KE"})
 _NEEDS_NEWTONIAN = frozenset(
     {"FR", "FRSTAR", "KANE", "NICHECK", "GRAVITY", "KE", "MOMENTUM", "GYROSTAT"}
 )
@@ -69,8 +72,16 @@ INTEGRATION_PARAMETERS = frozenset(
     {"TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR"}
 )
 CODE_OPTIONS = frozenset({"DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC"})
+#: Words after a CODE statement's file name.  They shape the text of the
+#: program Autolev wrote (NOSUBS: no substitution of intermediate values);
+#: the numbers the job computes are the same.
+CODE_FILE_OPTIONS = frozenset({"NOSUBS", "SUBS"})
 #: Names that stop reading the script (Autolev ends the session).
 STOP_WORDS = frozenset({"EXIT", "QUIT"})
+#: Commands of an interactive session that a batch run has no use for.
+INTERACTIVE_WORDS = {
+    "PAUSE": "Autolev waits for a key press here; a batch run goes on.",
+}
 
 
 #: Python names every generated module uses; user names avoid them.
@@ -97,6 +108,9 @@ RESERVED_IDENTIFIERS = (
             "AL_SOURCE",
             "main",
             "run",
+            "evaluate",
+            "kanes_method",
+            "ode_function",
             "sys",
         }
     )
@@ -142,7 +156,6 @@ class SymbolTable:
         self._seq = 0
         self.define("T", "time", "t")
         self.define("PI", "constant", "pi")
-        self.define("I", "imaginary", "I")
 
     def define(self, key: str, kind: str, ident: str, **kw: object) -> Symbol:
         self._seq += 1
@@ -179,6 +192,68 @@ class StmtFacts:
     stop: bool = False  # EXIT/QUIT: nothing after this runs
     form: Form | None = None  # syntactical form assigned (``P_O_P> = ...``)
     new_constants: tuple[Symbol, ...] = ()  # declared by Mass/Inertia items
+    #: An interactive command with nothing to do in a batch run (``Pause``),
+    #: and why.
+    noop: str = ""
+
+
+class UndeclaredError(SemanticError):
+    """A name used before it is declared or assigned."""
+
+    def __init__(self, message: str, span: ir.Span, *, name: str) -> None:
+        super().__init__(message, span)
+        self.name = name
+
+
+class Facts:
+    """What the analysis of a whole file found: everything the generator reads.
+
+    Per statement (:meth:`of`), per name node (:meth:`resolution`: the symbol
+    or syntactical form it stands for there), per expression (:meth:`kind`),
+    and the final symbol table (identifiers are fixed for the whole file).
+    """
+
+    def __init__(self, analysis: Analysis) -> None:
+        self.table = analysis.table
+        self.mentioned = frozenset(analysis.mentioned)
+        self._stmt = analysis.stmt_facts
+        self._resolved = analysis.resolved
+        self._kinds = analysis.kinds
+        self._vector_matrices = frozenset(analysis.vector_matrices)
+        self._namer = analysis.namer
+
+    def of(self, stmt: ir.Stmt) -> StmtFacts:
+        return self._stmt.get(id(stmt), StmtFacts())
+
+    def resolution(self, node: ir.Name) -> Symbol | Form:
+        found = self._resolved.get(id(node))
+        if found is None:  # a node made after the analysis (Input X{3})
+            found = self.table.quantity(node.name) or self.table.get(node.name)
+        if found is None:
+            raise InternalError(f"{node.name} was not analysed")
+        return found
+
+    def kind(self, expr: ir.Expr) -> Kind:
+        return self._kinds.get(id(expr), Kind.UNKNOWN)
+
+    def is_vector_matrix(self, expr: ir.MatrixLit) -> bool:
+        return id(expr) in self._vector_matrices
+
+    def quantity(self, spelling: str) -> Symbol:
+        sym = self.table.quantity(spelling) or self.table.get(spelling)
+        if sym is None:
+            raise InternalError(f"{spelling} missing from the symbol table")
+        return sym
+
+    def object(self, spelling: str) -> Symbol:
+        sym = self.table.physical(spelling)
+        if sym is None:
+            raise InternalError(f"object {spelling} missing from the symbol table")
+        return sym
+
+    def is_point(self, spelling: str) -> bool:
+        sym = self.table.physical(spelling)
+        return sym is not None and sym.kind in _POINT_KINDS
 
 
 # ------------------------------------------------------------------ helpers
@@ -480,10 +555,20 @@ class Analysis:
         #: a quantity and a (later declared) object means the quantity, since
         #: frames and points are never values (``Constants L`` ...
         #: ``Particles L`` ... ``L*N1>``).
-        self._as_value: set[ir.Name] = set()
+        self._as_value: set[int] = set()  # ids of Name nodes
+        #: Name nodes where the context takes a frame or point (``Simprot``).
+        self._as_object: set[int] = set()
+        #: What each Name node means (a :class:`Symbol` or a :class:`Form`),
+        #: and the kind of each expression, by node identity.
+        self.resolved: dict[int, Symbol | Form] = {}
+        self.kinds: dict[int, Kind] = {}
+        #: Facts of each statement, by identity, filled by :meth:`run`.
+        self.stmt_facts: dict[int, StmtFacts] = {}
+        self.errors: list[AutolevError] = []
+        self._poisoned: set[str] = set()
         #: Matrix literals of vectors, allowed as arguments of Dot
         #: (``Dot(V1>, [V2>; 2*V2>])`` is the column of the dot products).
-        self.vector_matrices: set[ir.MatrixLit] = set()
+        self.vector_matrices: set[int] = set()  # ids of MatrixLit nodes
         self._plan_identifiers(stmts)
 
     # ---------------------------------------------------------- identifiers
@@ -551,18 +636,38 @@ class Analysis:
             return None
         return match(node.name, self.is_frame, self.is_point, self.is_body)
 
-    def lookup(self, node: ir.Name) -> Symbol:
-        """The symbol a (non-form) name refers to; errors for undeclared names."""
+    def lookup(self, node: ir.Name, want: Kind | None = None) -> Symbol:
+        """The symbol a (non-form) name refers to; errors for undeclared names.
+
+        A name may stand for both a quantity and an object (constant ``c`` and
+        body ``C``): ``want`` (FRAME or POINT where the context takes an
+        object, SCALAR where it takes a value) picks one; otherwise the
+        latest definition wins.
+        """
         sym = self.table.get(node.name)
-        if node in self._as_value:
+        if want in (Kind.FRAME, Kind.POINT) or id(node) in self._as_object:
+            obj = self.table.physical(node.name)
+            sym = obj if obj is not None and not node.primes else sym
+        elif want is not None or id(node) in self._as_value or node.primes:
             sym = self.table.quantity(node.name) or sym
         if sym is None:
             if node.rank:
-                raise SemanticError(
+                raise UndeclaredError(
                     f"'{node.name}' is not defined (assign it before using it)",
                     node.span,
+                    name=node.key,
                 )
-            raise SemanticError(f"undeclared name '{node.name}'", node.span)
+            hint = ""
+            if re.fullmatch(r"Z\d+", node.key):
+                hint = (
+                    " (it looks like one of Autolev's AutoZ intermediates, whose "
+                    "numbering al2py cannot reproduce: use the expression it "
+                    "stands for)"
+                )
+            raise UndeclaredError(
+                f"undeclared name '{node.name}'{hint}", node.span, name=node.key
+            )
+        self.resolved[id(node)] = sym
         if node.primes and sym.kind not in ("variable", "specified", "scalar"):
             raise SemanticError(
                 f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
@@ -578,7 +683,9 @@ class Analysis:
             raise SemanticError(
                 f"{type(expr).__name__.lower()} is not allowed here", expr.span
             )
-        return method(expr)
+        kind = method(expr)
+        self.kinds[id(expr)] = kind
+        return kind
 
     def _kind_Number(self, expr: ir.Number) -> Kind:
         return Kind.SCALAR
@@ -595,6 +702,7 @@ class Analysis:
         if form is not None:
             if expr.primes:
                 raise SemanticError(f"'{expr.name}' has no time derivative", expr.span)
+            self.resolved[id(expr)] = form
             return FORM_KINDS[form.kind]
         return self.lookup(expr).value_kind
 
@@ -607,6 +715,17 @@ class Analysis:
 
     def _kind_Element(self, expr: ir.Element) -> Kind:
         self._check_indices(expr.indices)
+        if len(expr.indices) > 2:
+            raise SemanticError("a matrix element takes one or two indices", expr.span)
+        form = self.form(expr.base)
+        if (
+            form is not None
+            and form.kind == "dcm"
+            and self.table.get(expr.base.name) is None
+        ):
+            # ``N_A[1,1]``: an element of the direction-cosine matrix.
+            self.resolved[id(expr.base)] = form
+            return Kind.SCALAR
         sym = self.lookup(expr.base)
         self._check_bounds(sym, expr)
         if sym.kind != "matrix":
@@ -655,7 +774,7 @@ class Analysis:
             and self.table.quantity(expr.name) is not None
             and self.table.physical(expr.name) is not None
         ):
-            self._as_value.add(expr)
+            self._as_value.add(id(expr))
         return self.kind_of(expr)
 
     def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
@@ -764,15 +883,26 @@ class Analysis:
                     raise SemanticError(f"{b.name} expects an option word here", a.span)
                 kinds.append(Kind.WORD)
             elif b.name in ("FORCE", "TORQUE") and i == 0:
+                self._mark_objects(a)
                 kinds.append(self._load_target(a, b.name))
             elif b.name == "CONSTRAIN":
                 kinds.append(self._constraint(a))
             elif b.name == "DOT" and isinstance(a, ir.MatrixLit):
                 kinds.append(self._vector_matrix(a))
             else:
+                if b.takes_object(i):
+                    self._mark_objects(a)
                 kinds.append(self._arg_kind(a))
         self._check_arg_kinds(call, b, kinds)
         return kinds
+
+    def _mark_objects(self, arg: ir.Expr) -> None:
+        """Names here mean objects (``Simprot(B, C, 2, q)`` with constant ``c``)."""
+        names = [arg.left, arg.right] if isinstance(arg, ir.BinOp) else [arg]
+        for n in names:
+            if isinstance(n, ir.Name) and not n.primes and not n.rank:
+                if self.table.physical(n.name) is not None:
+                    self._as_object.add(id(n))
 
     def _vector_matrix(self, expr: ir.MatrixLit) -> Kind:
         """A matrix literal as an argument of Dot: all scalars, or all vectors."""
@@ -789,7 +919,7 @@ class Analysis:
                 raise SemanticError(
                     "the rows of this matrix have different lengths", expr.span
                 )
-            self.vector_matrices.add(expr)
+            self.vector_matrices.add(id(expr))
             return Kind.MATRIX
         return self.kind_of(expr)
 
@@ -881,6 +1011,63 @@ class Analysis:
             "'name{...}' is only allowed in declarations and arguments", expr.span
         )
 
+    # ---------------------------------------------------------- the walk
+
+    def run(
+        self,
+        stmts: tuple[ir.Stmt, ...],
+        poisoned: set[str] | frozenset[str] = frozenset(),
+    ) -> Facts:
+        """Analyse every statement in order; raise all errors at once.
+
+        A statement with an error is skipped and the walk goes on, so one run
+        reports every problem of a file.  Names a failed statement (or a line
+        with a syntax error: ``poisoned``) would have defined are not reported
+        again as undeclared.
+        """
+        self._poisoned = {n.upper() for n in poisoned}
+        for stmt in stmts:
+            if not self._run_one(stmt):
+                break
+        if self.errors:
+            raise ErrorList(self.errors)
+        return Facts(self)
+
+    def _run_one(self, stmt: ir.Stmt) -> bool:
+        """Analyse one statement (and a macro's body); False after Exit."""
+        try:
+            facts = self.enter(stmt)
+        except UndeclaredError as exc:
+            if exc.name not in self._poisoned:
+                self.errors.append(exc)
+            self._poison(stmt)
+            return True
+        except AutolevError as exc:
+            self.errors.append(exc)
+            self._poison(stmt)
+            return True
+        except RecursionError:
+            self.errors.append(
+                SemanticError(
+                    "this statement is too deeply nested to convert", stmt.span
+                )
+            )
+            return True
+        self.stmt_facts[id(stmt)] = facts
+        if isinstance(stmt, ir.MacroCall):
+            for inner in stmt.body:
+                if not self._run_one(inner):
+                    return False
+        return not facts.stop
+
+    def _poison(self, stmt: ir.Stmt) -> None:
+        for e in stmt_exprs(stmt):
+            for node in walk_expr(e):
+                if isinstance(node, ir.Name):
+                    self._poisoned.add(node.key)
+                elif isinstance(node, ir.IndexedNames):
+                    self._poisoned.update(n.upper() for n in node.expand())
+
     # ---------------------------------------------------------- statements
 
     def enter(self, stmt: ir.Stmt) -> StmtFacts:
@@ -898,24 +1085,13 @@ class Analysis:
         return self._facts()
 
     def _enter_Setting(self, stmt: ir.Setting) -> StmtFacts:
-        allowed = SETTINGS.get(stmt.name)
-        if allowed is None:
-            raise UnsupportedError(
-                f"setting '{stmt.name}' is not supported yet", stmt.span
-            )
+        from al2py_runtime.settings import SETTINGS, check_setting
+
+        message = check_setting(stmt.name, stmt.value)
+        if message is not None:
+            error = SemanticError if stmt.name in SETTINGS else UnsupportedError
+            raise error(message, stmt.span)
         value = (stmt.value or "").upper()
-        if allowed == "int":
-            if not value.isdigit() or not 1 <= int(value) <= 17:
-                raise SemanticError(
-                    f"{stmt.name} takes a whole number from 1 to 17", stmt.span
-                )
-        elif allowed == "number":
-            try:
-                float(value)
-            except ValueError:
-                raise SemanticError(f"{stmt.name} takes a number", stmt.span) from None
-        elif value not in allowed:
-            raise SemanticError(f"{stmt.name} takes {', '.join(allowed)}", stmt.span)
         if stmt.name == "DEGREES":
             self.degrees = value == "ON"
         return self._facts()
@@ -1010,7 +1186,18 @@ class Analysis:
 
     def _enter_inertia(self, stmt: ir.Declaration) -> StmtFacts:
         body, *rest = stmt.items
-        if not isinstance(body.target, ir.Name) or not self.is_body(body.target.name):
+        target = body.target
+        if isinstance(target, ir.Call):  # Inertia C(B), ...: in B's basis
+            basis = target.args[0]
+            if not isinstance(basis, ir.Name) or not self.is_frame(basis.name):
+                raise SemanticError(
+                    f"Inertia {target.func}(...) names the frame whose basis the "
+                    "inertia scalars are given in",
+                    basis.span,
+                )
+            self._as_object.add(id(basis))
+            target = ir.Name(target.span, target.func)
+        if not isinstance(target, ir.Name) or not self.is_body(target.name):
             raise SemanticError("Inertia starts with a body name", body.target.span)
         if (
             rest
@@ -1155,6 +1342,12 @@ class Analysis:
         expr = stmt.expr
         if isinstance(expr, ir.Name) and not expr.primes and expr.key in STOP_WORDS:
             return self._facts(stop=True)
+        if (
+            isinstance(expr, ir.Name)
+            and expr.key in INTERACTIVE_WORDS
+            and self.table.get(expr.key) is None
+        ):
+            return self._facts(noop=INTERACTIVE_WORDS[expr.key])
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
@@ -1208,7 +1401,7 @@ class Analysis:
         want = self._COMMAND_ARGS.get(b.name)
         if b.name == "AUTOTAYLOR":
             want = None
-            if any(not isinstance(a, ir.Equation) for a in call.args[1:]):
+            if any(not isinstance(a, ir.Equation | ir.Name) for a in call.args[1:]):
                 raise SemanticError(
                     "AutoTaylor(0:2, X=0, ...) expands about name=value", call.span
                 )
@@ -1232,6 +1425,13 @@ class Analysis:
                         f"{call.func} expects a {need.value} here, not a {got.value}",
                         a.span,
                     )
+        if b.name == "GRAVITY":
+            for a in call.args[1:]:
+                if not isinstance(a, ir.Name) or not self.is_body(a.name):
+                    raise SemanticError(
+                        "Gravity(v>, A, B, ...) names bodies or particles after the vector",
+                        a.span,
+                    )
         if b.name == "SIMPROT":
             axis = call.args[2]
             value = int_literal(axis)
@@ -1250,6 +1450,43 @@ class Analysis:
     def _enter_UnitSystemStmt(self, stmt: ir.UnitSystemStmt) -> StmtFacts:
         return self._facts()
 
+    def _enter_ListCommand(self, stmt: ir.ListCommand) -> StmtFacts:
+        if stmt.name == "ENCODE":
+            for item in stmt.items:
+                if not isinstance(item, ir.Name) or item.rank:
+                    raise SemanticError(
+                        "Encode lists scalars and matrices by name", item.span
+                    )
+                kind = self.kind_of(item)
+                if kind not in (Kind.SCALAR, Kind.MATRIX, Kind.UNKNOWN):
+                    raise SemanticError(
+                        f"Encode computes scalars and matrices, not a {kind.value}",
+                        item.span,
+                    )
+            return self._facts()
+        if stmt.name == "UNITS":
+            from al2py_runtime.units import UnitError, parse_unit
+
+            for item in stmt.items:
+                if not isinstance(item, ir.Equation) or not isinstance(
+                    item.lhs, ir.Name
+                ):
+                    raise SemanticError("Units takes name=unit pairs", item.span)
+                name = item.lhs
+                if name.key not in INTEGRATION_PARAMETERS | {"T"}:
+                    sym = self.lookup(name)
+                    if sym.kind not in ("constant", "variable", "specified"):
+                        raise SemanticError(
+                            f"Units gives units of constants and variables, not a {sym.kind}",
+                            name.span,
+                        )
+                try:
+                    parse_unit(_unit_word(item.rhs))
+                except UnitError as exc:
+                    raise SemanticError(str(exc), item.rhs.span) from None
+            return self._facts()
+        raise UnsupportedError(f"'{stmt.name}' is not a supported command", stmt.span)
+
     def _enter_InputStmt(self, stmt: ir.InputStmt) -> StmtFacts:
         for item in stmt.items:
             names = self._input_names(item.name)
@@ -1261,17 +1498,25 @@ class Analysis:
                     raise SemanticError(
                         f"Input takes constants and variables, not a {sym.kind}", n.span
                     )
-            if _free_names(item.value):
-                raise SemanticError("an Input value must be a number", item.value.span)
+            for n in _free_names(item.value):
+                # ``Input E4 = COS(QQ1/2)``: a value computed from other Inputs.
+                if n.key in INTEGRATION_PARAMETERS or n.primes:
+                    raise SemanticError(
+                        "an Input value is a number or an expression of constants",
+                        n.span,
+                    )
+                sym = self.lookup(n, Kind.SCALAR)
+                if sym.kind not in ("constant", "variable", "specified"):
+                    raise SemanticError(
+                        f"an Input value may use other Inputs, not the {sym.kind} "
+                        f"'{n.name}'",
+                        n.span,
+                    )
             self._expect_scalar(item.value)
         return self._facts()
 
     def _input_names(self, node: ir.Expr) -> list[ir.Name]:
-        if isinstance(node, ir.Name):
-            return [node]
-        if isinstance(node, ir.IndexedNames):
-            return [ir.Name(node.span, n, node.primes) for n in node.expand()]
-        raise SemanticError("Input assigns names: Input X=1, Y=2 deg", node.span)
+        return input_names(node)
 
     def _enter_OutputStmt(self, stmt: ir.OutputStmt) -> StmtFacts:
         for item in stmt.items:
@@ -1308,6 +1553,13 @@ class Analysis:
             self.lookup(stmt.sweep.name)
             for e in (stmt.sweep.start, stmt.sweep.stop, stmt.sweep.step):
                 self._expect_scalar(e)
+        for word in stmt.options:
+            if word not in CODE_FILE_OPTIONS:
+                raise UnsupportedError(
+                    f"CODE option {word} is not supported (known: "
+                    f"{', '.join(sorted(CODE_FILE_OPTIONS))})",
+                    stmt.span,
+                )
         if stmt.filename is not None:
             ext = (
                 stmt.filename.rsplit(".", 1)[-1].lower() if "." in stmt.filename else ""
@@ -1319,10 +1571,23 @@ class Analysis:
         return self._facts()
 
 
+def input_names(node: ir.Expr) -> list[ir.Name]:
+    """The names an Input item (or a CODE unknown) stands for: ``X``, ``U{3}``."""
+    if isinstance(node, ir.Name):
+        return [node]
+    if isinstance(node, ir.IndexedNames):
+        return [ir.Name(node.span, n, node.primes) for n in node.expand()]
+    raise SemanticError("Input assigns names: Input X=1, Y=2 deg", node.span)
+
+
 def _free_names(expr: ir.Expr) -> list[ir.Name]:
     return [
         n for n in walk_expr(expr) if isinstance(n, ir.Name) and n.key not in ("PI",)
     ]
+
+
+def _unit_word(expr: ir.Expr) -> str:
+    return expr.name if isinstance(expr, ir.Name) else getattr(expr, "text", "")
 
 
 def _literal_shape(expr: ir.Expr) -> tuple[int, int] | None:

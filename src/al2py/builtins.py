@@ -19,7 +19,15 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 
-__all__ = ["Style", "Kind", "Builtin", "BUILTINS", "DUAL_FUNCTIONS", "lookup"]
+__all__ = [
+    "Style",
+    "Kind",
+    "Builtin",
+    "BUILTINS",
+    "DUAL_FUNCTIONS",
+    "LIST_COMMANDS",
+    "lookup",
+]
 
 
 class Kind(Enum):
@@ -124,6 +132,17 @@ class Builtin:
     issue: str = ""  # for PENDING: what brings it
     statement: bool = False  # a stand-alone command that responds (``V2pts``)
     words: tuple[int, ...] = ()  # argument positions holding option words
+    #: Argument positions that name a frame, body, particle or point; from
+    #: ``objects_from`` on, every argument does (``Gravity(v>, A, B)``).  A
+    #: name that is both an object and a quantity (body ``C``, constant ``c``)
+    #: means the object there and the quantity elsewhere.
+    objects: tuple[int, ...] = ()
+    objects_from: int | None = None
+
+    def takes_object(self, i: int) -> bool:
+        return i in self.objects or (
+            self.objects_from is not None and i >= self.objects_from
+        )
 
     def arity_error(self, n: int) -> str | None:
         """A plain-English message if ``n`` arguments are wrong, else None."""
@@ -148,9 +167,25 @@ _NUMERICS = "numerical CODE jobs"
 
 
 def _command(
-    name: str, python: str, lo: int, hi: int | None, words: tuple[int, ...] = ()
+    name: str,
+    python: str,
+    lo: int,
+    hi: int | None,
+    words: tuple[int, ...] = (),
+    objects: tuple[int, ...] = (),
+    objects_from: int | None = None,
 ) -> Builtin:
-    return Builtin(name, Style.METHOD, python, lo, hi, statement=True, words=words)
+    return Builtin(
+        name,
+        Style.METHOD,
+        python,
+        lo,
+        hi,
+        statement=True,
+        words=words,
+        objects=objects,
+        objects_from=objects_from,
+    )
 
 
 def _pending(name: str, issue: str, lo: int = 0, hi: int | None = None) -> Builtin:
@@ -184,8 +219,8 @@ _TABLE: list[Builtin] = [
     _func("MIN", "minof", 2, None),
     _func("SIGN", "sign"),
     # -- mathematical commands
-    Builtin("D", Style.METHOD, "d", 2, 3, _d),
-    Builtin("DT", Style.METHOD, "dt", 1, 2, _first),
+    Builtin("D", Style.METHOD, "d", 2, 3, _d, objects=(2,)),
+    Builtin("DT", Style.METHOD, "dt", 1, 2, _first, objects=(1,)),
     Builtin("EVALUATE", Style.SPECIAL, "evaluate", 1, None, _first),
     Builtin("TAYLOR", Style.SPECIAL, "taylor", 3, None, _first),
     Builtin("POLYNOMIAL", Style.METHOD, "polynomial", 2, 3, _polynomial),
@@ -222,37 +257,55 @@ _TABLE: list[Builtin] = [
     Builtin("MAG", Style.METHOD, "mag", 1, 1),
     Builtin("MAGSQ", Style.METHOD, "magsq", 1, 1),
     Builtin("UNITVEC", Style.METHOD, "unitvec", 1, 1, _vector),
-    Builtin("EXPRESS", Style.METHOD, "express", 2, 2, _first, dual=True),
-    Builtin("REPRESENT", Style.METHOD, "represent", 2, 2, _represent),
-    Builtin("VECTOR", Style.METHOD, "vector", 2, 4, _vector),
+    Builtin("EXPRESS", Style.METHOD, "express", 2, 2, _first, dual=True, objects=(1,)),
+    Builtin("REPRESENT", Style.METHOD, "represent", 2, 2, _represent, objects=(1,)),
+    Builtin("VECTOR", Style.METHOD, "vector", 2, 4, _vector, objects=(0,)),
     Builtin("DYADIC", Style.METHOD, "dyadic", 2, None, _dyadic),
-    Builtin("MATRIX", Style.METHOD, "matrix", 2, 2, _matrix),
+    Builtin("MATRIX", Style.METHOD, "matrix", 2, 2, _matrix, objects=(0,)),
     Builtin("PARTIALS", Style.METHOD, "partials", 1, None, _unknown),
     Builtin("REMAINDER", Style.METHOD, "remainder", 1, 1, _vector),
     # -- mass distribution, loads, dynamics (values)
-    Builtin("MASS", Style.METHOD, "mass_of", 0, None),
-    Builtin("CM", Style.METHOD, "cm", 1, None, _vector),
-    Builtin("INERTIA", Style.METHOD, "inertia", 1, None, _dyadic),
-    Builtin("KE", Style.METHOD, "ke", 0, 0),
-    Builtin("MOMENTUM", Style.METHOD, "momentum", 1, 2, _momentum, words=(0,)),
+    Builtin("MASS", Style.METHOD, "mass_of", 0, None, objects_from=0),
+    Builtin("CM", Style.METHOD, "cm", 1, None, _vector, objects_from=0),
+    Builtin("INERTIA", Style.METHOD, "inertia", 1, None, _dyadic, objects_from=0),
+    Builtin("KE", Style.METHOD, "ke", 0, None, objects_from=0),
+    Builtin(
+        "MOMENTUM",
+        Style.METHOD,
+        "momentum",
+        1,
+        None,
+        _momentum,
+        words=(0,),
+        objects_from=1,
+    ),
     Builtin("TSTAR", Style.METHOD, "tstar", 1, 2, _vector),
     Builtin("FR", Style.METHOD, "fr", 0, 0, _matrix),
     Builtin("FRSTAR", Style.METHOD, "frstar", 0, 0, _matrix),
     Builtin("NICHECK", Style.METHOD, "nicheck", 0, 0),
-    Builtin("GYROSTAT", Style.METHOD, "gyrostat", 5, 5, _gyrostat, words=(0, 1)),
+    Builtin(
+        "GYROSTAT",
+        Style.METHOD,
+        "gyrostat",
+        5,
+        5,
+        _gyrostat,
+        words=(0, 1),
+        objects=(2, 3),
+    ),
     # -- stand-alone physics commands (statements; they respond)
-    _command("SIMPROT", "simprot", 4, 4),
-    _command("DIRCOS", "dircos", 4, None, words=(2,)),
-    _command("ANGVEL", "angvel", 2, None, words=(2,)),
-    _command("KINDIFFS", "kindiffs", 4, None, words=(2,)),
-    _command("V2PTS", "v2pts", 4, 4),
-    _command("A2PTS", "a2pts", 4, 4),
-    _command("V1PT", "v1pt", 4, 4),
-    _command("A1PT", "a1pt", 4, 4),
-    _command("GRAVITY", "gravity", 1, 1),
-    _command("FORCE", "add_force", 2, 2),
-    _command("TORQUE", "add_torque", 2, 2),
-    _command("CONSTRAIN", "constrain", 1, 1),
+    _command("SIMPROT", "simprot", 4, 4, objects=(0, 1)),
+    _command("DIRCOS", "dircos", 4, None, words=(2,), objects=(0, 1)),
+    _command("ANGVEL", "angvel", 2, None, words=(2,), objects=(0, 1)),
+    _command("KINDIFFS", "kindiffs", 4, None, words=(2,), objects=(0, 1)),
+    _command("V2PTS", "v2pts", 4, 4, objects=(0, 1, 2, 3)),
+    _command("A2PTS", "a2pts", 4, 4, objects=(0, 1, 2, 3)),
+    _command("V1PT", "v1pt", 4, 4, objects=(0, 1, 2, 3)),
+    _command("A1PT", "a1pt", 4, 4, objects=(0, 1, 2, 3)),
+    _command("GRAVITY", "gravity", 1, None, objects_from=1),
+    _command("FORCE", "add_force", 2, 2, objects=(0,)),
+    _command("TORQUE", "add_torque", 2, 2, objects=(0,)),
+    _command("CONSTRAIN", "constrain", 1, None),
     _command("KANE", "kane", 0, None),
     Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2),
     Builtin("UNITS", Style.SPECIAL, "units", 2, 2),
@@ -270,3 +323,8 @@ DUAL_FUNCTIONS = frozenset(b.name for b in _TABLE if b.dual) | {"EXPRESS"}
 def lookup(name: str) -> Builtin | None:
     """The built-in called ``name`` (any case), or None."""
     return BUILTINS.get(name.upper())
+
+
+#: Command words followed by a list (``Encode A, B'``, ``Units T=S``); any
+#: other word followed by one word or number is a setting (``Digits 7``).
+LIST_COMMANDS = frozenset({"ENCODE", "UNITS"})

@@ -21,8 +21,14 @@ __all__ = [
     "SemanticError",
     "UnsupportedError",
     "MacroError",
+    "ErrorList",
+    "ParseErrorList",
     "InternalError",
 ]
+
+#: At most this many errors are reported for one file (like a compiler's
+#: ``-fmax-errors``); the rest are counted.
+MAX_ERRORS = 50
 
 
 class AutolevError(Exception):
@@ -68,6 +74,48 @@ class UnsupportedError(AutolevError):
 
 class MacroError(AutolevError):
     """A ``.a``/``.r`` macro or ``RUN`` file could not be found or expanded."""
+
+
+class ErrorList(AutolevError):
+    """Every error found in one file, sorted by position.
+
+    It behaves as its first error (``span``, ``message``) for callers that
+    report one, and :meth:`format` lists them all.
+    """
+
+    def __init__(self, errors: list[AutolevError]) -> None:
+        if not errors:
+            raise ValueError("ErrorList needs at least one error")
+        flat: list[AutolevError] = []
+        for e in errors:
+            flat.extend(e.errors if isinstance(e, ErrorList) else [e])
+        flat.sort(key=_position)
+        self.errors = flat
+        first = flat[0]
+        super().__init__(first.message, first.span, line_text=first.line_text)
+
+    def format(self, lines: tuple[str, ...] | list[str] | None = None) -> str:
+        shown = self.errors[:MAX_ERRORS]
+        out = [e.format(lines) for e in shown]
+        hidden = len(self.errors) - len(shown)
+        if hidden:
+            out.append(f"... and {hidden} more error{'s' if hidden > 1 else ''}")
+        if len(self.errors) > 1:
+            out.append(f"{len(self.errors)} errors")
+        return "\n".join(out)
+
+
+class ParseErrorList(ErrorList, ParseError):
+    """Several syntax errors."""
+
+
+def errors_of(exc: AutolevError) -> list[AutolevError]:
+    """The individual errors inside ``exc``."""
+    return list(exc.errors) if isinstance(exc, ErrorList) else [exc]
+
+
+def _position(e: AutolevError) -> tuple[int, int]:
+    return (0, 0) if e.span is None else (e.span.line, e.span.col)
 
 
 class InternalError(Exception):

@@ -18,11 +18,11 @@ from al2py_runtime.functions import DEGREE_VARIANTS
 
 from . import ir
 from .analysis import (
-    INTEGRATION_PARAMETERS,
     SOLVE_OPTIONS,
-    Analysis,
+    Facts,
     StmtFacts,
     Symbol,
+    input_names,
     int_literal,
     walk_expr,
 )
@@ -50,6 +50,20 @@ _FORM_GETTERS = {
     "force": "al.force_on({0})",
     "torque": "al.torque_on({0})",
     "dcm": "al.dcm({0}, {1})",
+}
+#: Assignments to syntactical forms: the runtime's setters, named (and with
+#: arguments in the order of) the sympy calls they make (``P_O_P> = v`` is
+#: sympy's ``P.set_pos(O, v)``).
+_FORM_SETTERS = {
+    "pos": "al.set_pos({1}, {0}, {value}, line={line})",
+    "vel": "al.set_vel({0}, {1}, {value}, line={line})",
+    "acc": "al.set_acc({0}, {1}, {value}, line={line})",
+    "angvel": "al.set_ang_vel({0}, {1}, {value}, line={line})",
+    "angacc": "al.set_ang_acc({0}, {1}, {value}, line={line})",
+    "inertia": "al.set_inertia_about({0}, {1}, {value}, line={line})",
+    "force": "al.set_force({0}, {value}, line={line})",
+    "torque": "al.set_torque({0}, {value}, line={line})",
+    "dcm": "al.set_dcm({0}, {1}, {value}, line={line})",
 }
 _UNIT_AXES = {"1": "x", "2": "y", "3": "z"}
 _POINT_THEORIES = {
@@ -93,8 +107,8 @@ class Imports:
 class Generator:
     """Turns analysed statements into the body of a Python module."""
 
-    def __init__(self, analysis: Analysis, lines: tuple[str, ...]) -> None:
-        self.an = analysis
+    def __init__(self, facts: Facts, lines: tuple[str, ...]) -> None:
+        self.facts = facts
         self.lines = lines
         self.imports = Imports()
         self.imports.use(_RUNTIME, "Workspace")
@@ -102,6 +116,7 @@ class Generator:
         self._line = 0
         self.stopped_at: int | None = None
         self.has_job = False  # a CODE statement was generated
+        self.has_kane = False  # Fr() or FrStar() was generated
 
     # ------------------------------------------------------------ driving
 
@@ -120,7 +135,7 @@ class Generator:
         return out
 
     def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
-        self._facts = self.an.enter(stmt)
+        self._facts = self.facts.of(stmt)
         self._line = line if line is not None else stmt.span.line
         emit = getattr(self, "stmt_" + type(stmt).__name__, None)
         if emit is None:
@@ -132,12 +147,20 @@ class Generator:
 
     def echo(self, stmt: ir.Stmt) -> list[str]:
         """The ``.al`` source of a statement, as Python comments."""
-        first, last = stmt.span.line, max(stmt.span.end_line, stmt.span.line)
+        span = stmt.span
+        first, last = span.line, max(span.end_line, span.line)
         text = [
             self.lines[i - 1].strip()
             for i in range(first, last + 1)
             if i <= len(self.lines)
         ]
+        if first == last and 0 < first <= len(self.lines) and span.end_col:
+            # ``a = 1; b = 2``: each statement echoes its own text.
+            line = self.lines[first - 1]
+            before = line[: span.col - 1].strip()
+            after = line[span.end_col - 1 :].split("%", 1)[0].strip().lstrip(";")
+            if before or after.strip():
+                text = [line[span.col - 1 : span.end_col - 1].strip() + ";"]
         return [c for t in text if t for c in comment_lines(t, prefix="al> ")]
 
     # -------------------------------------------------------- statements
@@ -183,11 +206,11 @@ class Generator:
                 spellings = (target.name,)
                 primes = target.primes
             for spelling in spellings:
-                sym = self._symbol(spelling)
+                sym = self.facts.quantity(spelling)
                 names.append(sym.ident)
                 specs.append(repr(sym.key + "'" * primes + (item.sign or "")))
             if item.values:
-                sym = self._symbol(spellings[-1])
+                sym = self.facts.quantity(spellings[-1])
                 value = self.expr(item.values[0])
                 assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
         call = f"al.{method}({', '.join(specs)})"
@@ -195,16 +218,14 @@ class Generator:
 
     def _objects(self, stmt: ir.Declaration) -> list[str]:
         names = [n for item in stmt.items for n in _target_names(item.target)]
-        syms = [self.an.table.physical(n) for n in names]
-        if any(s is None for s in syms):
-            raise InternalError("object missing from the symbol table")
-        idents = ", ".join(s.ident for s in syms)  # type: ignore[union-attr]
-        keys = ", ".join(repr(s.key) for s in syms)  # type: ignore[union-attr]
+        syms = [self.facts.object(n) for n in names]
+        idents = ", ".join(s.ident for s in syms)
+        keys = ", ".join(repr(s.key) for s in syms)
         out = [f"{idents} = al.{_OBJECT_DECLS[stmt.keyword]}({keys})"]
         if stmt.keyword in ("NEWTONIAN", "FRAMES", "BODIES"):
             for s in syms:
-                point = self.an.table.physical(s.key + "O")  # type: ignore[union-attr]
-                if point is not None and point.key in self.an.mentioned:
+                point = self.facts.table.physical(s.key + "O")
+                if point is not None and point.key in self.facts.mentioned:
                     out.append(f"{point.ident} = al.point({point.key!r})")
         return out
 
@@ -221,8 +242,7 @@ class Generator:
         out = self._declare_new()
         for item in stmt.items:
             assert isinstance(item.target, ir.Name)
-            obj = self.an.table.physical(item.target.name)
-            assert obj is not None
+            obj = self.facts.object(item.target.name)
             first = item.values[0]
             if len(item.values) == 2:
                 sym = self._symbol_for_name(first)
@@ -234,14 +254,17 @@ class Generator:
     def _inertia(self, stmt: ir.Declaration) -> list[str]:
         out = self._declare_new()
         body, *rest = stmt.items
-        assert isinstance(body.target, ir.Name)
-        obj = self.an.table.physical(body.target.name)
-        assert obj is not None
+        target = body.target
+        basis = ""
+        if isinstance(target, ir.Call):  # Inertia C(B), ...: in B's basis
+            basis = f", basis={self._object(target.args[0].name)}"  # type: ignore[attr-defined]
+            target = ir.Name(target.span, target.func)
+        assert isinstance(target, ir.Name)
+        obj = self.facts.object(target.name)
         about = ""
         first = rest[0].target if rest else None
-        if isinstance(first, ir.Name) and self.an.is_point(first.name):
-            point = self.an.table.physical(first.name)
-            assert point is not None
+        if isinstance(first, ir.Name) and self.facts.is_point(first.name):
+            point = self.facts.object(first.name)
             about = f", about={point.ident}"
             rest = rest[1:]
         for item in rest:
@@ -250,7 +273,7 @@ class Generator:
                 value = self.expr(item.values[0])
                 out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
         scalars = ", ".join(self.expr(item.target) for item in rest)
-        out.append(f"al.set_inertia({obj.ident}, {scalars}{about})")
+        out.append(f"al.set_inertia({obj.ident}, {scalars}{about}{basis})")
         return out
 
     def stmt_Assign(self, stmt: ir.Assign) -> list[str]:
@@ -261,7 +284,12 @@ class Generator:
             if stmt.op not in ("=", ":="):
                 op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
                 value = f"{self.expr(target)} {op} ({value})"
-            return [f"al.assign({target.key!r}, {value}, line={self._line})"]
+            form = self._facts.form
+            setter = _FORM_SETTERS.get(form.kind)
+            if setter is None or target.primes:
+                return [f"al.assign({target.key!r}, {value}, line={self._line})"]
+            objs = [self._object(p) for p in form.parts]
+            return [setter.format(*objs, value=value, line=self._line)]
         sym = self._facts.target
         if sym is None:
             raise InternalError("assignment without a target symbol")
@@ -308,6 +336,9 @@ class Generator:
 
     def stmt_ExprStmt(self, stmt: ir.ExprStmt) -> list[str]:
         expr = stmt.expr
+        if self._facts.noop:
+            word = expr.name.title()  # type: ignore[union-attr]
+            return [f"# {word}: {self._facts.noop}"]
         if self._facts.stop:
             self.stopped_at = stmt.span.line
             word = expr.name.title()  # type: ignore[union-attr]
@@ -372,10 +403,14 @@ class Generator:
             assert isinstance(pair, ir.BinOp)
             args = [pair.left, pair.right, *args]
         if b.name == "CONSTRAIN":
-            element = args[0]
-            assert isinstance(element, ir.Element)
-            speeds = ", ".join(self.expr(i) for i in element.indices)
-            code = f"{element.base.key!r}, [{speeds}]"
+            # Constrain(AUXILIARY[U1], DEPENDENT[U4]): one call per list.
+            calls = []
+            for element in args:
+                assert isinstance(element, ir.Element)
+                speeds = ", ".join(self.expr(i) for i in element.indices)
+                code = f"{element.base.key!r}, [{speeds}], line={self._line}"
+                calls.append(f"al.constrain({code})")
+            return "\n".join(calls)
         else:
             code = self._args(tuple(args), b)
         if b.name in _RESPONDING:
@@ -400,7 +435,7 @@ class Generator:
         if (
             isinstance(args[0], ir.Name)
             and args[0].key in SOLVE_OPTIONS
-            and self.an.table.quantity(args[0].name) is None
+            and self.facts.table.quantity(args[0].name) is None
         ):
             args = args[1:]
         if len(args) < 2:
@@ -432,6 +467,19 @@ class Generator:
     def stmt_FileCommand(self, stmt: ir.FileCommand) -> list[str]:
         return [f"al.save({stmt.filename!r})"]
 
+    def stmt_ListCommand(self, stmt: ir.ListCommand) -> list[str]:
+        if stmt.name == "ENCODE":
+            names = ", ".join(repr(item.autolev) for item in stmt.items)  # type: ignore[attr-defined]
+            return [f"al.encode({names}, line={self._line})"]
+        if stmt.name == "UNITS":
+            pairs = []
+            for item in stmt.items:
+                assert isinstance(item, ir.Equation) and isinstance(item.lhs, ir.Name)
+                word = _source(self.lines, item.rhs.span).strip()
+                pairs.append(f"{item.lhs.autolev!r}: {word!r}")
+            return [f"al.units_of({{{', '.join(pairs)}}}, line={self._line})"]
+        raise InternalError(f"no emitter for {stmt.name}")
+
     def stmt_UnitSystemStmt(self, stmt: ir.UnitSystemStmt) -> list[str]:
         return [f"al.unit_system({', '.join(repr(u) for u in stmt.units)})"]
 
@@ -441,7 +489,7 @@ class Generator:
             value = self.expr(item.value)
             if item.unit is not None:
                 value = f"({value}, {item.unit.text!r})"
-            for name in self.an._input_names(item.name):
+            for name in input_names(item.name):
                 items.append(f"{name.autolev!r}: {value}")
         return [f"al.input({{{', '.join(items)}}}, line={self._line})"]
 
@@ -458,7 +506,7 @@ class Generator:
         args = [repr(stmt.option)]
         if stmt.args:
             eqs, *unknowns = stmt.args
-            names = [self.expr(n) for u in unknowns for n in self.an._input_names(u)]
+            names = [self.expr(n) for u in unknowns for n in input_names(u)]
             args += [f"eqs={self.expr(eqs)}", f"unknowns=[{', '.join(names)}]"]
         if stmt.sweep is not None:
             sw = stmt.sweep
@@ -495,10 +543,9 @@ class Generator:
             return "Vector(0)", ATOM
         if node.key == "1>>":
             return "al.unit_dyadic()", ATOM
-        form = self.an.form(node)
-        if form is not None:
-            return self._form(form), ATOM
-        sym = self.an.lookup(node)
+        sym = self.facts.resolution(node)
+        if isinstance(sym, Form):
+            return self._form(sym), ATOM
         ident = sym.ident
         if sym.kind == "time":
             self.imports.use(_RUNTIME, "t")
@@ -525,13 +572,10 @@ class Generator:
         return _FORM_GETTERS[form.kind].format(*objs)
 
     def _object(self, name: str) -> str:
-        sym = self.an.table.physical(name)
-        if sym is None:
-            raise InternalError(f"object {name} missing from the symbol table")
-        return sym.ident
+        return self.facts.object(name).ident
 
     def expr_Element(self, node: ir.Element) -> tuple[str, int]:
-        base = self.an.lookup(node.base).ident
+        base = self._resolved_ident(node.base)
         idx = ", ".join(self._index(i) for i in node.indices)
         return f"{base}[{idx}]", ATOM
 
@@ -554,8 +598,8 @@ class Generator:
         ):
             self.imports.use("sympy", "Rational")
             return f"Rational({self.expr(node.left)}, {self.expr(node.right)})", ATOM
-        if node.op == "*" and self.an.kind_of(node) is Kind.DYADIC:
-            kinds = (self.an.kind_of(node.left), self.an.kind_of(node.right))
+        if node.op == "*" and self.facts.kind(node) is Kind.DYADIC:
+            kinds = (self.facts.kind(node.left), self.facts.kind(node.right))
             if kinds == (Kind.VECTOR, Kind.VECTOR):
                 self.imports.use(_VECTOR, "outer")
                 return f"outer({self.expr(node.left)}, {self.expr(node.right)})", ATOM
@@ -578,10 +622,10 @@ class Generator:
 
     def expr_MatrixLit(self, node: ir.MatrixLit) -> tuple[str, int]:
         blocks = any(
-            self.an.kind_of(e) is Kind.MATRIX for row in node.rows for e in row
+            self.facts.kind(e) is Kind.MATRIX for row in node.rows for e in row
         )
         rows = ["[" + ", ".join(self.expr(e) for e in row) + "]" for row in node.rows]
-        if node in self.an.vector_matrices:
+        if self.facts.is_vector_matrix(node):
             return f"al.vector_matrix([{', '.join(rows)}])", ATOM
         if blocks:
             return f"al.block([{', '.join(rows)}])", ATOM
@@ -619,6 +663,8 @@ class Generator:
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
+            if b.python in ("fr", "frstar"):
+                self.has_kane = True  # the module offers kanes_method()
             return f"al.{b.python}({self._args(node.args, b)})", ATOM
         if b.name == "SOLVE":
             raise SemanticError(
@@ -660,6 +706,9 @@ class Generator:
         """Expansion points ``X=0`` / ``X=0:dX`` as ``[(X, 0), (X, 0, dX)]``."""
         items = []
         for p in points:
+            if isinstance(p, ir.Name):  # a bare name expands about 0
+                items.append(f"({self.expr(p)}, 0)")
+                continue
             if not isinstance(p, ir.Equation):
                 raise SemanticError(
                     "expand about name=value or name=value:increment", p.span
@@ -676,7 +725,6 @@ class Generator:
         name = node.args[0]
         if not isinstance(name, ir.Name):
             raise SemanticError("Input(X) takes a name", name.span)
-        self.an.lookup(name) if name.key not in INTEGRATION_PARAMETERS else None
         extra = ", unit_system=True" if len(node.args) == 2 else ""
         return f"al.input_value({name.autolev!r}{extra})"
 
@@ -711,15 +759,15 @@ class Generator:
 
     # ------------------------------------------------------------- helpers
 
-    def _symbol(self, spelling: str) -> Symbol:
-        sym = self.an.table.get(spelling)
-        if sym is None:
-            raise InternalError(f"{spelling} missing from the symbol table")
-        return sym
-
     def _symbol_for_name(self, node: ir.Expr) -> Symbol:
         assert isinstance(node, ir.Name)
-        return self._symbol(node.name)
+        return self.facts.quantity(node.name)
+
+    def _resolved_ident(self, node: ir.Name) -> str:
+        sym = self.facts.resolution(node)
+        if isinstance(sym, Form):
+            return self._form(sym)
+        return sym.ident
 
 
 def _isort_key(name: str) -> tuple[int, str]:

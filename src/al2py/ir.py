@@ -42,6 +42,7 @@ __all__ = [
     "DeclItem",
     "Declaration",
     "Setting",
+    "ListCommand",
     "UnitExpr",
     "InputItem",
     "InputStmt",
@@ -153,11 +154,13 @@ class IndexedNames(Expr):
     """``U{1:3}'`` or ``a{1:2,1:2}``: a family of names, expanded by the analyzer.
 
     Each entry of ``ranges`` is ``(first, last)``; ``U{3}`` is ``((1, 3),)``.
+    ``suffix`` follows the braces: ``RRF{2}O`` is ``RRF1O, RRF2O``.
     """
 
     stem: str
     ranges: tuple[tuple[int, int], ...]
     primes: int = 0
+    suffix: str = ""
 
     def __post_init__(self) -> None:
         if not self.ranges:
@@ -171,7 +174,7 @@ class IndexedNames(Expr):
         names = [self.stem]
         for lo, hi in self.ranges:
             names = [f"{n}{i}" for n in names for i in range(lo, hi + 1)]
-        return tuple(names)
+        return tuple(n + self.suffix for n in names)
 
 
 @dataclass(frozen=True, slots=True)
@@ -334,6 +337,22 @@ class Setting(Stmt):
 
 
 @dataclass(frozen=True, slots=True)
+class ListCommand(Stmt):
+    """A command word followed by a list: ``Encode A, B'``, ``Units T=S``.
+
+    ``items`` are names (possibly primed), elements, or ``name=word``
+    :class:`Equation` s.
+    """
+
+    name: str  # canonical upper case
+    items: tuple[Expr, ...]
+
+    def __post_init__(self) -> None:
+        if not self.items:
+            raise ValueError(f"{self.name} needs at least one item")
+
+
+@dataclass(frozen=True, slots=True)
 class UnitExpr(Node):
     """A unit such as ``m``, ``deg``, ``n*sec/m``, ``m/sec^2``.
 
@@ -392,6 +411,8 @@ class CodeStmt(Stmt):
     args: tuple[Expr, ...]
     sweep: Sweep | None
     filename: str | None
+    #: Words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case.
+    options: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

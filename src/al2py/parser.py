@@ -20,7 +20,8 @@ adds three things on top of it:
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 
 from antlr4 import CommonTokenStream, InputStream, Token
 from antlr4.error.ErrorListener import ErrorListener
@@ -31,9 +32,10 @@ from . import ir
 from ._antlr.AutolevLexer import AutolevLexer
 from ._antlr.AutolevParser import AutolevParser
 from ._antlr.AutolevVisitor import AutolevVisitor
-from .errors import AutolevError, InternalError, ParseError
+from .builtins import LIST_COMMANDS
+from .errors import AutolevError, InternalError, ParseError, ParseErrorList
 
-__all__ = ["parse", "span_text"]
+__all__ = ["parse", "parse_partial", "span_text", "join_continuations"]
 
 _P = AutolevParser
 _COMMENT_CHANNEL = 2
@@ -52,6 +54,7 @@ _DECL_KEYWORDS = {
     _P.INERTIA: "INERTIA",
 }
 
+_SEPARATORS = frozenset({_P.NEWLINE, _P.SEMI, Token.EOF})
 _OPENERS = {_P.LPAREN: ")", _P.LBRACK: "]", _P.LBRACE: "}"}
 _CLOSERS = {_P.RPAREN: ")", _P.RBRACK: "]", _P.RBRACE: "}"}
 _NEEDS_OPERAND = frozenset(
@@ -81,20 +84,37 @@ _NEEDS_OPERAND = frozenset(
 def parse(text: str, filename: str = "<input>") -> ir.Script:
     """Parse Autolev source *text* into an :class:`ir.Script`.
 
-    Raises :class:`ParseError` for the first syntax error.  Any other
-    exception would be a bug and is reported as :class:`InternalError`.
+    Raises :class:`ParseError` (an :class:`ErrorList` when there are several)
+    with every syntax error in the file: after an error the parser goes on at
+    the next statement.  Any other exception would be a bug and is reported
+    as :class:`InternalError`.
     """
+    script, errors = parse_partial(text, filename)
+    if errors:
+        raise errors[0] if len(errors) == 1 else ParseErrorList(errors)
+    return script
+
+
+def parse_partial(
+    text: str, filename: str = "<input>"
+) -> tuple[ir.Script, list[AutolevError]]:
+    """The statements that parsed, and the syntax errors of the others."""
     lines = tuple(text.splitlines())
-    # Join with plain newlines so ANTLR's line numbers agree with `lines`.
-    source = "\n".join(lines)
     try:
-        return _parse(source, filename, lines)
-    except AutolevError:
-        raise
+        return _parse(lines, filename)
+    except AutolevError as exc:
+        return ir.Script(ir.Span(filename, 1, 1), (), lines=lines), [exc]
     except RecursionError:
-        raise ParseError(
-            "expression nested too deeply", ir.Span(filename, 1, 1)
-        ) from None
+        # Too deep for ANTLR's recursive descent: point at the deepest line.
+        line = max(range(len(lines)), key=lambda i: lines[i].count("("), default=0)
+        text_ = lines[line] if lines else ""
+        col = len(text_) - len(text_.lstrip()) + 1
+        err = ParseError(
+            "expression nested too deeply",
+            ir.Span(filename, line + 1, col),
+            line_text=text_,
+        )
+        return ir.Script(ir.Span(filename, 1, 1), (), lines=lines), [err]
     except Exception as exc:  # a bug in al2py, not in the input
         raise InternalError(f"parser failed on {filename}: {exc!r}") from exc
 
@@ -117,19 +137,139 @@ def span_text(lines: Sequence[str], span: ir.Span) -> str:
 # ------------------------------------------------------------------- plumbing
 
 
-def _parse(source: str, filename: str, lines: tuple[str, ...]) -> ir.Script:
-    lexer = AutolevLexer(InputStream(source))
+def _parse(
+    lines: tuple[str, ...], filename: str
+) -> tuple[ir.Script, list[AutolevError]]:
+    logical = join_continuations(lines)
+    lexer = AutolevLexer(InputStream(logical.text))
     stream = CommonTokenStream(lexer)
     listener = _ErrorListener(filename, lines, stream)
     lexer.removeErrorListeners()
     lexer.addErrorListener(listener)
     stream.fill()
+    logical.relocate(stream.tokens)
     parser = AutolevParser(stream)
     parser.removeErrorListeners()
     parser.addErrorListener(listener)
-    tree = parser.script()
-    builder = _IRBuilder(filename, source, lines, stream)
-    return builder.visitScript(tree)
+    parsed: list[tuple[AutolevParser.StatementContext | None, Token]] = []
+    for first, last in _statement_ranges(stream.tokens):
+        errors_before = listener.count
+        stream.seek(first)
+        ctx = parser.statement()
+        if listener.count == errors_before and stream.index >= last:
+            parsed.append((ctx, stream.tokens[last]))
+        else:
+            parsed.append((None, stream.tokens[last]))
+    builder = _IRBuilder(filename, logical, lines, stream)
+    script = builder.build(parsed)
+    return script, listener.errors() + builder.errors
+
+
+def _statement_ranges(tokens: list[Token]) -> Iterator[tuple[int, int]]:
+    """(first, last) token indexes of each statement, ``last`` its separator.
+
+    A newline always ends a statement; a ``;`` ends one outside brackets
+    (inside, it separates matrix rows).
+    """
+    first = 0
+    depth = 0
+    for k, tok in enumerate(tokens):
+        if tok.type in _OPENERS:
+            depth += 1
+        elif tok.type in _CLOSERS:
+            depth = max(depth - 1, 0)
+        elif tok.type in (_P.NEWLINE, Token.EOF) or (tok.type == _P.SEMI and not depth):
+            yield first, k
+            first, depth = k + 1, 0
+            if tok.type == Token.EOF:
+                return
+
+
+@dataclass
+class LogicalText:
+    """Source text with ``&`` continuations joined, and where each char came from.
+
+    ``origin[k]`` is the 1-based (line, column) in the physical file of
+    character ``k`` of :attr:`text`.
+    """
+
+    text: str
+    origin: list[tuple[int, int]]
+
+    def relocate(self, tokens: list[Token]) -> None:
+        """Give every token its physical line and column (ANTLR's are logical)."""
+        last = self.origin[-1] if self.origin else (1, 0)
+        end = (last[0], last[1] + 1)
+        for tok in tokens:
+            k = tok.start if tok.start >= 0 else len(self.text)
+            line, col = self.origin[k] if k < len(self.origin) else end
+            tok.line, tok.column = line, col - 1
+
+
+def join_continuations(lines: tuple[str, ...]) -> LogicalText:
+    """Join each line whose code ends in ``&`` with the next one.
+
+    The ``&`` and the next line's leading blanks disappear, so a continuation
+    may split a name (``THET&`` + ``   A`` is ``THETA``), as in Autolev's own
+    wrapped output.  Comments of the joined lines move to the end of the
+    logical line.  An ``&`` on the last line stays, and is reported.
+    """
+    text: list[str] = []
+    origin: list[tuple[int, int]] = []
+    i = 0
+    while i < len(lines):
+        comments: list[tuple[str, int, int]] = []
+        first = True
+        while True:
+            line = lines[i]
+            code_end = _code_end(line)
+            code = line[:code_end]
+            stripped = code.rstrip()
+            start = 0 if first else len(code) - len(code.lstrip())
+            more = stripped.endswith("&") and i + 1 < len(lines)
+            if more:
+                piece_end = len(stripped) - 1
+                if code_end < len(line):
+                    comments.append((line[code_end:], i + 1, code_end + 1))
+            else:
+                piece_end = len(line) if not comments else code_end
+                if comments and code_end < len(line):
+                    comments.append((line[code_end:], i + 1, code_end + 1))
+            for col in range(start, piece_end):
+                text.append(line[col])
+                origin.append((i + 1, col + 1))
+            first = False
+            i += 1
+            if not more:
+                break
+        if comments:
+            joined = " ".join(c[0].lstrip("%").strip() for c in comments)
+            lead = "%%" if comments[0][0].startswith("%%") else "%"
+            _, line_no, col = comments[0]
+            if text and not text[-1].isspace():
+                text.append(" ")
+                origin.append((line_no, col))
+            for ch in lead + " " + joined:
+                text.append(ch)
+                origin.append((line_no, col))
+        end_line = i  # the last physical line of this logical line
+        text.append("\n")
+        origin.append((end_line, len(lines[end_line - 1]) + 1))
+    if text:
+        text.pop()  # no newline after the last line
+        origin.pop()
+    return LogicalText("".join(text), origin)
+
+
+def _code_end(line: str) -> int:
+    """Index of the ``%`` that starts the comment of ``line`` (or its length)."""
+    in_string = False
+    for k, ch in enumerate(line):
+        if ch == '"':
+            in_string = not in_string
+        elif ch == "%" and not in_string:
+            return k
+    return len(line)
 
 
 def _token_end(tok: Token) -> tuple[int, int]:
@@ -152,7 +292,11 @@ def _describe(tok: Token) -> str:
 
 
 class _ErrorListener(ErrorListener):
-    """Raise :class:`ParseError` for the first error ANTLR reports."""
+    """Collect the errors ANTLR reports: the first one of each statement.
+
+    ANTLR's default strategy recovers after an error; later complaints about
+    the same statement are consequences of the first, so they are dropped.
+    """
 
     def __init__(
         self, filename: str, lines: tuple[str, ...], stream: CommonTokenStream
@@ -160,22 +304,63 @@ class _ErrorListener(ErrorListener):
         self.filename = filename
         self.lines = lines
         self.stream = stream
+        self._found: list[tuple[int, ParseError]] = []  # (token index, error)
 
     def syntaxError(self, recognizer, offendingSymbol, line, column, msg, e):
         if not isinstance(offendingSymbol, Token):  # lexer error (no token)
-            self._raise("unexpected character", line, column + 1)
-        tok = offendingSymbol
+            self._add(-1, "unexpected character", line, column + 1)
+            return
+        tok = self._dangling(offendingSymbol)
         message = self._message(recognizer, tok, e)
         if tok.type == Token.EOF:
             line, col = self._end_of_input(tok)
         else:
             line, col = tok.line, tok.column + 1
-        self._raise(message, line, col)
+        self._add(tok.tokenIndex, message, line, col)
 
-    def _raise(self, message: str, line: int, col: int) -> None:
+    def _add(self, index: int, message: str, line: int, col: int) -> None:
         text = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
         span = ir.Span(self.filename, line, col, line, col + 1)
-        raise ParseError(message, span, line_text=text)
+        self._found.append((index, ParseError(message, span, line_text=text)))
+
+    def _statement_of(self, index: int) -> int:
+        """Token index of the separator that ends the statement holding ``index``."""
+        tokens = self.stream.tokens
+        k = max(index, 0)
+        while k < len(tokens) and tokens[k].type not in _SEPARATORS:
+            k += 1
+        return k
+
+    def _dangling(self, tok: Token) -> Token:
+        """The end of the line, when ``tok`` is an operator left without operand.
+
+        ``X = A +`` is missing an operand at the end of the line, which is
+        where the error is reported (not at the ``+``).
+        """
+        if tok.type not in _NEEDS_OPERAND or tok.type in (_P.COMMA, _P.SEMI):
+            return tok
+        tokens = self.stream.tokens
+        k = tok.tokenIndex + 1
+        while k < len(tokens) and tokens[k].channel != Token.DEFAULT_CHANNEL:
+            k += 1
+        if k < len(tokens) and tokens[k].type in (_P.NEWLINE, Token.EOF):
+            return tokens[k]
+        return tok
+
+    @property
+    def count(self) -> int:
+        return len(self._found)
+
+    def errors(self) -> list[AutolevError]:
+        """The first error of each statement."""
+        seen: set[int] = set()
+        out: list[AutolevError] = []
+        for index, err in sorted(self._found, key=lambda f: f[0]):
+            end = self._statement_of(index)
+            if end not in seen:
+                seen.add(end)
+                out.append(err)
+        return out
 
     def _end_of_input(self, eof: Token) -> tuple[int, int]:
         if not self.lines:
@@ -253,19 +438,27 @@ class _IRBuilder(AutolevVisitor):
     def __init__(
         self,
         filename: str,
-        source: str,
+        logical: LogicalText,
         lines: tuple[str, ...],
         stream: CommonTokenStream,
     ) -> None:
         self.filename = filename
-        self.source = source
+        self.logical = logical
+        self.source = logical.text
         self.lines = lines
         self.tokens = stream.tokens
+        #: Errors found while building statements (one per statement).
+        self.errors: list[AutolevError] = []
 
     # -- spans and text -----------------------------------------------------
 
     def _span(self, start: Token, stop: Token | None = None) -> ir.Span:
-        end_line, end_col = _token_end(stop if stop is not None else start)
+        last = stop if stop is not None else start
+        if 0 <= last.stop < len(self.logical.origin):
+            end_line, end_col = self.logical.origin[last.stop]
+            end_col += 1
+        else:
+            end_line, end_col = _token_end(last)
         return ir.Span(self.filename, start.line, start.column + 1, end_line, end_col)
 
     def _ctx_span(self, ctx) -> ir.Span:
@@ -286,18 +479,23 @@ class _IRBuilder(AutolevVisitor):
 
     # -- script, comments ---------------------------------------------------
 
-    def visitScript(self, ctx: AutolevParser.ScriptContext) -> ir.Script:
+    def build(
+        self, parsed: list[tuple[AutolevParser.StatementContext | None, Token]]
+    ) -> ir.Script:
+        """The script of the statements that parsed (``None``: a syntax error)."""
         statements: list[ir.Stmt] = []
-        pending: AutolevParser.StmtContext | None = None
-        for child in ctx.children or ():
-            if isinstance(child, AutolevParser.StmtContext):
-                pending = child
+        ended_by_semi = False  # the line's last statement ended in ';'
+        for ctx, end in parsed:
+            semi, ended_by_semi = ended_by_semi, end.type == _P.SEMI
+            if ctx is None:
                 continue
-            end = child.symbol  # NEWLINE or EOF
-            if pending is not None:
-                statements.append(self._statement(pending, end))
-                pending = None
-            else:
+            stmt = ctx.stmt()
+            if stmt is not None:
+                try:
+                    statements.append(self._statement(stmt, end))
+                except AutolevError as exc:
+                    self.errors.append(exc)
+            elif end.type != _P.SEMI and not semi:
                 comment = self._comment_line(end)
                 if comment is not None:
                     statements.append(comment)
@@ -313,9 +511,20 @@ class _IRBuilder(AutolevVisitor):
     def _statement(self, ctx: AutolevParser.StmtContext, end: Token) -> ir.Stmt:
         node = self.visit(ctx)
         comment = self._trailing_comment(ctx.start.tokenIndex, end.tokenIndex)
+        if comment is None and end.type == _P.SEMI:
+            comment = self._comment_after(end.tokenIndex)
         if comment is not None:
             node = dataclasses.replace(node, comment=comment)
         return node
+
+    def _comment_after(self, index: int) -> str | None:
+        """The comment ending a line whose last statement ends in ``;``."""
+        for tok in self.tokens[index + 1 :]:
+            if tok.type == _P.COMMENT:
+                return tok.text[1:].strip()
+            if tok.channel == Token.DEFAULT_CHANNEL:
+                return None
+        return None
 
     def _trailing_comment(self, first: int, end: int) -> str | None:
         parts: list[str] = []
@@ -324,9 +533,6 @@ class _IRBuilder(AutolevVisitor):
             if tok.type == _P.COMMENT:
                 found = True
                 parts.append(tok.text[1:].strip())
-            elif tok.type == _P.CONTINUATION and "%" in tok.text:
-                found = True
-                parts.append(tok.text[tok.text.index("%") + 1 :].strip())
         if not found:
             return None
         return " ".join(p for p in parts if p)
@@ -399,12 +605,28 @@ class _IRBuilder(AutolevVisitor):
         span = self._ctx_span(ctx)
         if ctx.NUMBER() is not None:
             return ir.Number(span, ctx.getText())
-        stem = ctx.ident().getText()
+        stem = ctx.ident(0).getText()
         primes = len(ctx.PRIME())
         if ctx.indexBraces() is not None:
             ranges = self.visit(ctx.indexBraces())
-            return ir.IndexedNames(span, stem, ranges, primes)
+            suffix = self._suffix(ctx.indexBraces(), ctx.suffix)
+            return ir.IndexedNames(span, stem, ranges, primes, suffix)
+        if ctx.basis is not None:
+            # ``Inertia C(B), ...``: C's inertia in B's basis.
+            basis = self._name(ctx.basis)
+            return ir.Call(span, stem, (basis,))
         return ir.Name(span, stem, primes)
+
+    def _suffix(self, braces, suffix) -> str:
+        """The name part after ``{...}`` (``RRF{2}O``); it must touch the brace."""
+        if suffix is None:
+            return ""
+        if suffix.start.start != braces.stop.stop + 1:
+            raise self._error(
+                "write the suffix right after the braces, as in RRF{2}O",
+                suffix.start,
+            )
+        return suffix.getText()
 
     def visitInputStmt(self, ctx: AutolevParser.InputStmtContext) -> ir.InputStmt:
         items = tuple(self.visit(item) for item in ctx.inputItem())
@@ -469,12 +691,14 @@ class _IRBuilder(AutolevVisitor):
         args = self.visit(ctx.argList()) if ctx.argList() is not None else ()
         sweep = self.visit(ctx.sweep()) if ctx.sweep() is not None else None
         name = ctx.fileName()
+        words = ctx.ident()
         return ir.CodeStmt(
             self._ctx_span(ctx),
-            ctx.ident().getText().upper(),
+            words[0].getText().upper(),
             args,
             sweep,
             name.getText() if name is not None else None,
+            tuple(w.getText().upper() for w in words[1:]),
         )
 
     def visitSweep(self, ctx: AutolevParser.SweepContext) -> ir.Sweep:
@@ -488,12 +712,43 @@ class _IRBuilder(AutolevVisitor):
         command = ctx.getChild(0).getText().upper()
         return ir.FileCommand(self._ctx_span(ctx), command, ctx.fileName().getText())
 
-    def visitSetting(self, ctx: AutolevParser.SettingContext) -> ir.Setting:
-        return ir.Setting(
-            self._ctx_span(ctx),
-            ctx.ID().getText().upper(),
-            ctx.settingValue().getText(),
+    def visitSetting(self, ctx: AutolevParser.SettingContext) -> ir.Stmt:
+        name = ctx.ID().getText().upper()
+        args = ctx.settingArg()
+        plain = len(args) == 1 and (
+            isinstance(args[0], AutolevParser.SettingNumberContext)
+            or (
+                args[0].exprList() is None
+                and not args[0].PRIME()
+                and args[0].settingWord() is None
+            )
         )
+        if plain and name not in LIST_COMMANDS:
+            return ir.Setting(self._ctx_span(ctx), name, args[0].getText())
+        items = tuple(self.visit(a) for a in args)
+        return ir.ListCommand(self._ctx_span(ctx), name, items)
+
+    def visitSettingName(self, ctx: AutolevParser.SettingNameContext) -> ir.Expr:
+        span = self._ctx_span(ctx)
+        name = ir.Name(
+            self._ctx_span(ctx.ident()), ctx.ident().getText(), len(ctx.PRIME())
+        )
+        if ctx.exprList() is not None:
+            base = dataclasses.replace(name, primes=0)
+            name = ir.Element(span, base, self.visit(ctx.exprList()))
+        word = ctx.settingWord()
+        if word is None:
+            return name
+        value_span = self._ctx_span(word)
+        value: ir.Expr = (
+            ir.Number(value_span, word.getText())
+            if word.NUMBER() is not None
+            else ir.Name(value_span, word.getText())
+        )
+        return ir.Equation(span, name, value)
+
+    def visitSettingNumber(self, ctx: AutolevParser.SettingNumberContext) -> ir.Expr:
+        return ir.Number(self._ctx_span(ctx), ctx.getText())
 
     # -- expressions ------------------------------------------------------------
 
@@ -549,8 +804,13 @@ class _IRBuilder(AutolevVisitor):
 
     def visitIndexedNames(self, ctx: AutolevParser.IndexedNamesContext):
         ranges = self.visit(ctx.indexBraces())
+        suffix = self._suffix(ctx.indexBraces(), ctx.suffix)
         return ir.IndexedNames(
-            self._ctx_span(ctx), ctx.ident().getText(), ranges, len(ctx.PRIME())
+            self._ctx_span(ctx),
+            ctx.ident(0).getText(),
+            ranges,
+            len(ctx.PRIME()),
+            suffix,
         )
 
     def visitName(self, ctx: AutolevParser.NameContext) -> ir.Name:

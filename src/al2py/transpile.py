@@ -11,11 +11,11 @@ from pathlib import Path
 import black
 import jinja2
 
-from . import __version__
+from . import __version__, ir
 from .analysis import Analysis, expand
-from .errors import AutolevError, InternalError
+from .errors import AutolevError, ErrorList, InternalError, errors_of
 from .generator import Generator
-from .parser import parse
+from .parser import parse, parse_partial
 
 __all__ = ["convert", "Conversion"]
 
@@ -61,6 +61,23 @@ def module_name(filename: str) -> str:
     return name if not name[0].isdigit() else "m_" + name
 
 
+def _attach_line(exc: AutolevError, lines: tuple[str, ...], filename: str) -> None:
+    """Give an error its source line, for the caret."""
+    if not exc.line_text and exc.span is not None and exc.span.file == filename:
+        if 0 < exc.span.line <= len(lines):
+            exc.line_text = lines[exc.span.line - 1]
+
+
+def _names_on_lines(script: ir.Script, errors: list[AutolevError]) -> set[str]:
+    """Every name on the lines of syntax errors (their statements are skipped)."""
+    names: set[str] = set()
+    for err in errors:
+        if err.span is not None and 0 < err.span.line <= len(script.lines):
+            code = script.lines[err.span.line - 1].split("%", 1)[0]
+            names.update(w.upper() for w in re.findall(r"[A-Za-z]\w*", code))
+    return names
+
+
 def convert(
     text: str,
     filename: str = "<stdin>",
@@ -76,21 +93,25 @@ def convert(
     text = text.removeprefix("\ufeff")  # a byte-order mark (Windows editors)
     # Long flat sums make deep (left-leaning) trees; give the walk room.
     sys.setrecursionlimit(max(sys.getrecursionlimit(), 20_000))
-    script = parse(text, filename)
+    script, errors = parse_partial(text, filename)
     if script_dir is None:
         script_dir = (
             Path(filename).parent if filename not in ("-", "<stdin>") else Path.cwd()
         )
-    stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
-    analysis = Analysis(stmts)
-    generator = Generator(analysis, script.lines)
+    try:
+        stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
+        facts = Analysis(stmts).run(stmts, poisoned=_names_on_lines(script, errors))
+    except AutolevError as exc:
+        errors = errors + errors_of(exc)
+    if errors:
+        for err in errors:
+            _attach_line(err, script.lines, filename)
+        raise errors[0] if len(errors) == 1 else ErrorList(errors)
+    generator = Generator(facts, script.lines)
     try:
         body = generator.body(stmts)
     except AutolevError as exc:
-        if not exc.line_text and exc.span is not None and exc.span.file == filename:
-            line = exc.span.line
-            if 0 < line <= len(script.lines):
-                exc.line_text = script.lines[line - 1]
+        _attach_line(exc, script.lines, filename)
         raise
     source_name = (
         Path(filename).name if filename not in ("-", "<stdin>") else "stdin.al"
@@ -107,6 +128,7 @@ def convert(
         body="\n".join(body),
         source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
+        has_kane=generator.has_kane,
     )
     try:
         code = black.format_str(code, mode=black.Mode())

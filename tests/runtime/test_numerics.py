@@ -295,8 +295,9 @@ def test_tutor6_dynamics():
     (table,) = result.tables
     assert table.names == ["T", "STRETCH", "QA", "QB", "ECHECK"]
     assert [c.unit for c in table.columns] == [None, "m", "deg", "deg", "joules"]
-    assert len(table) == 21
-    assert np.allclose(result["T"], np.arange(21))
+    # printInt = 1 integration step of 0.2 s (Autolev's Print-Integer)
+    assert len(table) == 101
+    assert np.allclose(result["T"], np.linspace(0, 20, 101))
     assert result["QA"][0] == pytest.approx(20)
     assert result["QB"][0] == pytest.approx(60)
     # the tutorial's own printed equations come to rest here (its text swaps
@@ -315,8 +316,10 @@ def test_tutor6_dynamics():
 
 def test_tutor6_overrides_in_input_units():
     ws = tutor6()
-    result = ws.run(QA=30, tfinal=2, printint=0.5)
-    assert np.allclose(result["T"], [0, 0.5, 1, 1.5, 2])
+    result = ws.run(QA=30, tfinal=2, printint=5)  # every 5 steps of 0.2 s
+    assert np.allclose(result["T"], [0, 1, 2])
+    with pytest.raises(NumericsError, match="whole number of integration steps"):
+        ws.run(printint=0.5)
     assert result["QA"][0] == pytest.approx(30)
     with pytest.raises(NumericsError, match="not an Input or a declared name"):
         ws.run(NOPE=1)
@@ -339,7 +342,7 @@ def _spring_with_dependent_speed() -> Workspace:
     f = ws.variables("F")
     ws.assign("F", m2 * u1.diff(t))
     ws.input({"M1": 1, "M2": 3, "K": 4, "X1": 0.5, "X2": 0.5, "TFINAL": 3})
-    ws.input({"INTEGSTP": 0.05, "PRINTINT": 0.5, "ABSERR": 1e-9, "RELERR": 1e-9})
+    ws.input({"INTEGSTP": 0.05, "PRINTINT": 10, "ABSERR": 1e-9, "RELERR": 1e-9})
     ws.output([("T", t, None), ("X1", x1, None), ("X2", x2, None), ("U2", u2, None)])
     ws.output([("T", t, None), ("F", f, "n")])
     ws.code("DYNAMICS", file="carts.for")
@@ -391,7 +394,7 @@ def test_code_takes_a_snapshot():
     a = ws.constants("A")
     ws.assign("X'", -a * x)
     e = ws.assign("E", 2 * x)
-    ws.input({"A": 1, "X": 1, "TFINAL": 1, "PRINTINT": 0.5})
+    ws.input({"A": 1, "X": 1, "TFINAL": 1, "INTEGSTP": 0.1, "PRINTINT": 5})
     ws.output([("T", t, None), ("E", e, None)])
     ws.code("ODE", file="snap.m")
     ws.assign("E", 100 * x)  # after CODE: does not change the job
@@ -468,7 +471,7 @@ def test_output_times():
 def test_write_files_with_digits_of_code_statement(tmp_path):
     ws = tutor6(digits=5)
     ws.set("Digits", 2)  # after CODE: the job keeps 5
-    result = ws.run(tfinal=3)
+    result = ws.run(tfinal=3, printint=5)  # a row every 5*0.2 s
     (path,) = result.write(tmp_path)
     assert path.name == "tutor6.1"
     lines = path.read_text().splitlines()
@@ -527,9 +530,9 @@ def test_main_dynamics_with_tfinal(tmp_path, capsys):
     ws = tutor6()
     assert ws.main([], ["--outdir", str(tmp_path), "--tfinal", "4"]) == 0
     out = capsys.readouterr().out
-    assert "tutor6.1 (5 rows: T, STRETCH, QA, QB, ECHECK)" in out
+    assert "tutor6.1 (21 rows: T, STRETCH, QA, QB, ECHECK)" in out
     data = np.loadtxt(tmp_path / "tutor6.1", comments="%")
-    assert data.shape == (5, 5)
+    assert data.shape == (21, 5)
 
 
 def test_main_no_run(tmp_path, capsys, monkeypatch):
@@ -576,7 +579,7 @@ def test_english_unit_system_converts_inputs_and_outputs(tmp_path):
     ws.assign("X'", v)
     ws.unit_system("slug", "ft", "sec")
     ws.input({"V": (1, "m/sec"), "X": (0, "m"), "TFINAL": (2, "sec")})
-    ws.input({"PRINTINT": 1})
+    ws.input({"INTEGSTP": 1, "PRINTINT": 1})
     ws.output([("T", t, None), ("X", x, "m"), ("XFT", x, None), ("XIN", x, "in")])
     ws.code("ODE", file="feet.m")
     result = ws.run(V=2)  # m/sec, the Input's unit

@@ -9,8 +9,8 @@ else:
 
 class AutolevVisitor(ParseTreeVisitor):
 
-    # Visit a parse tree produced by AutolevParser#script.
-    def visitScript(self, ctx:AutolevParser.ScriptContext):
+    # Visit a parse tree produced by AutolevParser#statement.
+    def visitStatement(self, ctx:AutolevParser.StatementContext):
         return self.visitChildren(ctx)
 
 
@@ -154,8 +154,18 @@ class AutolevVisitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
-    # Visit a parse tree produced by AutolevParser#settingValue.
-    def visitSettingValue(self, ctx:AutolevParser.SettingValueContext):
+    # Visit a parse tree produced by AutolevParser#settingName.
+    def visitSettingName(self, ctx:AutolevParser.SettingNameContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by AutolevParser#settingNumber.
+    def visitSettingNumber(self, ctx:AutolevParser.SettingNumberContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by AutolevParser#settingWord.
+    def visitSettingWord(self, ctx:AutolevParser.SettingWordContext):
         return self.visitChildren(ctx)
 
 

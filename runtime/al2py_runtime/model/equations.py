@@ -1,0 +1,265 @@
+"""KaneEquations: part of :class:`al2py_runtime.mechanics.Model`.
+
+``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import (
+    ReferenceFrame,
+    Vector,
+)
+
+from .. import kinematics as kin
+from ..kane import arrange, solve_speeds
+from .state import t
+
+__all__ = ["KaneEquations"]
+
+
+class KaneEquations:
+    """``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model."""
+
+    # -------------------------------------------------- Fr and Fr*
+
+    def _dot_rows(self, vec: Vector, partials: list) -> list:
+        return [vec.dot(p) if p != Vector(0) else 0 for p in partials]
+
+    def fr(self) -> sp.Matrix:
+        """``Fr()``: generalized active forces (one row per independent or
+        auxiliary speed; dependent speeds are eliminated)."""
+        n = self._n()
+        st = self._mech
+        speeds = self._rows_speeds("Fr()")
+        rows = [sp.Integer(0)] * len(speeds)
+        for p, f in st.forces.items():
+            if f == Vector(0):
+                continue
+            parts = self._partials(self.vel(p, n), speeds)
+            rows = [r + d for r, d in zip(rows, self._dot_rows(f, parts), strict=True)]
+        for b, tq in st.torques.items():
+            if tq == Vector(0):
+                continue
+            parts = self._partials(self.ang_vel(b, n), speeds)
+            rows = [r + d for r, d in zip(rows, self._dot_rows(tq, parts), strict=True)]
+        return sp.Matrix(rows)
+
+    def _inertia_torque(self, b: ReferenceFrame, n: ReferenceFrame) -> Vector:
+        inertia = self.central_inertia(b)
+        w = self._actual(self.ang_vel(b, n))
+        alf = self._actual(self.ang_acc(b, n))
+        return -((inertia & alf) + (w ^ (inertia & w)))
+
+    def tstar(self, b: ReferenceFrame, n: ReferenceFrame | None = None) -> Vector:
+        """``TStar(B, N)``: inertia torque of body B in N."""
+        return kin.tidy_vector(self._inertia_torque(b, n or self._n()))
+
+    def frstar(self) -> sp.Matrix:
+        """``FrStar()``: generalized inertia forces (rows as :meth:`fr`).
+
+        As sympy's KanesMethod does, accelerations are split into
+        ``rest + sum(coef_k * Uk')`` before they are dotted with the partial
+        velocities, so each row is built already arranged in the speeds'
+        derivatives (large models never differentiate whole rows)."""
+        n = self._n()
+        st = self._mech
+        speeds = self._rows_speeds("FrStar()")
+        accels = [sp.Derivative(u, t) for u in self._speeds()]
+        rows: list[list[Any]] = [[] for _ in speeds]
+        moved = [False] * len(speeds)  # some velocity depends on the speed
+
+        def add(vec: Vector, parts: list) -> None:
+            rest, coefs = kin.split_linear_vector(vec, accels)
+            for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
+                if part == Vector(0):
+                    continue
+                moved[k] = True
+                r.append(rest.dot(part))
+                r.extend(c.dot(part) * a for a, c in coefs.items())
+
+        for o in st.massive:
+            m = self._mass(o, strict=False)
+            p = self._center(o)
+            if m != 0:
+                a = self._actual(self.acc(p, n))
+                if a != Vector(0):
+                    add(-m * a, self._partials(self.vel(p, n), speeds))
+            if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
+                tq = self._inertia_torque(o, n)
+                add(tq, self._partials(self.ang_vel(o, n), speeds))
+        if st.massive and not all(moved):
+            still = [
+                self.ws.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
+            ]
+            raise ValueError(
+                "FrStar(): no velocity or angular velocity of a massive object"
+                f" depends on the generalized speed {', '.join(still)}; is a"
+                " kinematical differential equation (Q' = ...) missing?"
+            )
+        return sp.Matrix([sp.Add(*r) for r in rows])
+
+    # ------------------------------------------------------ Constrain
+
+    def constrain(self, which: str, speeds: Any, *, line: int | None = None) -> tuple:
+        """``Constrain(DEPENDENT[U2, U3])`` or ``Constrain(AUXILIARY[...])``.
+
+        Solves the equations ``DEPENDENT = 0`` (or ``AUXILIARY``) for the named
+        speeds and assigns them; their derivatives too when declared (always
+        kept for :meth:`kane`).  Dependent speeds get no row in Fr/Fr*;
+        auxiliary speeds keep theirs (see :meth:`kane`)."""
+        which = which.upper()
+        if which not in ("DEPENDENT", "AUXILIARY"):
+            raise ValueError("Constrain takes DEPENDENT[...] or AUXILIARY[...]")
+        st = self._mech
+        mat = self.ws._values.get(which)
+        if not isinstance(mat, sp.MatrixBase):
+            raise ValueError(f"Constrain: {which} has not been assigned")
+        speeds = [sp.sympify(u) for u in speeds]
+        eqs = [self.ws.resolve(e, keep=self._speeds()) for e in mat]
+        sols = solve_speeds(eqs, speeds)
+        gens = self._gens()
+        out = []
+        for u, s in zip(speeds, sols, strict=True):
+            out.append(self.ws.assign(self.ws.name_of(u), s, line=line))
+        for u, s in zip(speeds, sols, strict=True):
+            ds = self._dt(s, self._mech.newtonian)
+            ds = kin.tidy(ds, gens)
+            du = sp.Derivative(u, t)
+            st.speed_dt[du] = ds
+            name = self.ws.name_of(u)
+            base = name.rstrip("'")
+            if self.ws._names[base].order > len(name) - len(base):
+                self.ws.assign(name + "'", ds, line=line)
+        target = st.dependent if which == "DEPENDENT" else st.auxiliary
+        for u in speeds:
+            if u not in target:
+                target.append(u)
+        return kin.one_or_tuple(out)
+
+    # ----------------------------------------------------------- Kane
+
+    def _speed_subs(self, expr: Any) -> Any:
+        """Substitute kinematical equations, constrained speeds and their
+        derivatives (named quantities are kept)."""
+        speeds = set(self._speeds())
+        table = dict(self._mech.speed_dt)
+        for k, v in self.ws._rhs.items():
+            if k in speeds:
+                table[k] = v
+            elif isinstance(k, sp.Derivative):
+                name = self.ws._entries_by_obj.get(k.expr)
+                if name is not None and self.ws._names[name].kind == "variable":
+                    table[k] = v
+        for _ in range(50):
+            new = expr.xreplace(table)
+            if new == expr:
+                break
+            expr = new
+        return kin.doit_derivatives(expr)
+
+    def kane(self, *forces: Any, line: int | None = None) -> sp.Matrix:
+        """``Kane()`` / ``Kane(F1, F2)``: arrange ``ZERO`` for integration.
+
+        ``ZERO`` (from ``Fr() + FrStar()``, one row per independent and
+        auxiliary speed) becomes one row per independent speed::
+
+            ZERO[i] = F[i] + M[i,1]*U1' + ... + M[i,n]*Un'
+
+        with kinematical equations, dependent and auxiliary speeds and their
+        derivatives substituted.  The rows of auxiliary speeds are combined
+        into the independent rows with the coefficients of the constraint
+        solution (so the constraint forces cancel), and, when force measure
+        numbers are named, solved for them (assigned as their RHS)."""
+        st = self._mech
+        zero = self.ws._values.get("ZERO")
+        if not isinstance(zero, sp.MatrixBase):
+            raise ValueError("Kane: ZERO has not been assigned")
+        speeds = st.fr_speeds if st.fr_speeds is not None else self._fr_speeds()
+        rows = list(zero)
+        if len(rows) != len(speeds):
+            raise ValueError(
+                f"Kane: ZERO has {len(rows)} rows for {len(speeds)} speeds"
+            )
+        aux = [u for u in speeds if u in st.auxiliary]
+        ind = [u for u in speeds if u not in st.auxiliary]
+        z = dict(
+            zip(speeds, (self._speed_subs(self.ws.val(r)) for r in rows), strict=True)
+        )
+        combined = []
+        for i in ind:
+            row = z[i]
+            for x in aux:
+                c = sp.diff(self.ws.resolve(self.ws._rhs.get(x, x)), i)
+                if c != 0:
+                    row += c * z[x]
+            combined.append(row)
+        forces = [sp.sympify(f) for f in forces]
+        cleaned = []
+        for row in combined:
+            for f in forces:
+                c = sp.diff(row, f)
+                if c != 0 and sp.simplify(c) == 0:
+                    row = sp.expand(row).xreplace({f: 0})
+            cleaned.append(row)
+        accels = [sp.Derivative(u, t) for u in ind]
+        gens = self._gens()
+        arranged = sp.Matrix(arrange(cleaned, accels, gens))
+        self.ws.update("ZERO", arranged, line=line)
+        sols = ()
+        if forces:
+            eqs = [z[x] for x in aux]
+            if len(eqs) != len(forces):
+                raise ValueError(
+                    f"Kane: {len(forces)} forces for {len(eqs)} auxiliary speeds"
+                )
+            sols = solve_speeds(eqs, forces)
+            for f, s in zip(forces, sols, strict=True):
+                self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
+        st.kane = {
+            "speeds": ind,
+            "dependent": list(st.dependent),
+            "auxiliary": aux,
+            "forces": forces,
+            "accels": accels,
+        }
+        return arranged
+
+    # ------------------------------------------------ sympy's KanesMethod
+
+    def _coordinates(self, keep: list) -> list:
+        """Variables with a kinematical differential equation in the speeds
+        (NiCheck's work variables and perturbation variables are not)."""
+        checks = set(self._mech.checks)
+        out = []
+        for dq in self._kinematical_equations():
+            q = dq.expr
+            if q in checks or q in keep or dq in keep:
+                continue
+            rhs = self._actual(self.ws._rhs[dq], keep)
+            if sp.sympify(rhs).has(*keep):
+                out.append((q, rhs))
+        return out
+
+    def kane_inputs(self) -> Any:
+        """The script's model as ``KanesMethod`` inputs (see
+        :func:`al2py_runtime.model.kane_inputs`)."""
+        from .kane import kane_inputs
+
+        return kane_inputs(self)
+
+    @property
+    def kd_eqs(self) -> list:
+        """The kinematical differential equations ``Q' - rhs`` (coordinates
+        in declaration order), as ``KanesMethod`` takes them."""
+        speeds = self._speeds()
+        return [sp.Derivative(q, t) - rhs for q, rhs in self._coordinates(speeds)]
+
+    def kanes_method(self) -> Any:
+        """``sympy.physics.mechanics.KanesMethod`` for this script, with its
+        equations formed (``mass_matrix_full``, ``forcing_full``)."""
+        from .kane import kanes_method
+
+        return kanes_method(self.kane_inputs())

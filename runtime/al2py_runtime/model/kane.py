@@ -1,0 +1,179 @@
+"""Kane's method through ``sympy.physics.mechanics.KanesMethod``.
+
+:class:`KaneInputs` is what ``KanesMethod`` takes -- the Newtonian frame,
+coordinates, speeds, kinematical differential equations, bodies, loads and
+motion constraints -- built from an Autolev script by
+``Workspace.kane_inputs()``.  :func:`kanes_method` forms the equations.  Other
+formulations (a faster Kane with intermediate variables, compiled backends)
+start from the same inputs.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+from sympy.physics.mechanics import KanesMethod, Particle, RigidBody
+from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
+
+from .. import kinematics as kin
+
+t = dynamicsymbols._t
+
+__all__ = ["KaneInputs", "kane_inputs", "kanes_method"]
+
+
+@dataclass
+class KaneInputs:
+    """Everything ``KanesMethod`` needs, as sympy objects.
+
+    ``bodies`` are ``RigidBody``/``Particle`` objects whose mass centers know
+    their velocities and accelerations in ``frame``; ``loads`` are
+    ``(Point, Vector)`` forces and ``(ReferenceFrame, Vector)`` torques.
+    ``speed_names`` maps each speed to its Autolev spelling (a speed that is a
+    coordinate's derivative, ``Q1'``, is a new function ``Q1_U``)."""
+
+    frame: ReferenceFrame
+    q_ind: list[Any]
+    u_ind: list[Any]
+    kd_eqs: list[Any]
+    bodies: list[Any]
+    loads: list[tuple[Any, Any]]
+    u_dependent: list[Any] = field(default_factory=list)
+    velocity_constraints: list[Any] = field(default_factory=list)
+    u_auxiliary: list[Any] = field(default_factory=list)
+    speed_names: dict[Any, str] = field(default_factory=dict)
+
+    @property
+    def q(self) -> list[Any]:
+        return list(self.q_ind)
+
+    @property
+    def u(self) -> list[Any]:
+        return [*self.u_ind, *self.u_dependent]
+
+
+def kanes_method(inputs: KaneInputs) -> KanesMethod:
+    """A ``KanesMethod`` with its equations formed (``mass_matrix_full``,
+    ``forcing_full``, ``fr``, ``frstar``)."""
+    kw: dict[str, Any] = {}
+    if inputs.u_dependent:
+        kw["u_dependent"] = inputs.u_dependent
+        kw["velocity_constraints"] = inputs.velocity_constraints
+    if inputs.u_auxiliary:
+        kw["u_auxiliary"] = inputs.u_auxiliary
+    km = KanesMethod(
+        inputs.frame,
+        q_ind=inputs.q_ind,
+        u_ind=inputs.u_ind,
+        kd_eqs=inputs.kd_eqs,
+        **kw,
+    )
+    km.kanes_equations(inputs.bodies, inputs.loads)
+    return km
+
+
+def kane_inputs(model: Any) -> KaneInputs:
+    """A script's model (``al.model``, see :class:`~al2py_runtime.mechanics.Model`) as
+    :class:`KaneInputs`: the one place where the script becomes
+    ``KanesMethod``'s inputs.
+
+    Velocities, accelerations, masses, inertias and loads are the actual
+    ones, with every right-hand side substituted except the speeds; the
+    sympy points and frames of the script are given these velocities
+    (``mod.Q.vel(mod.N)`` is ``V_Q_N>``)."""
+    n = model._n()
+    st = model._mech
+    if st.gyrostat:
+        raise ValueError(
+            "kanes_method(): Gyrostat(FRSTAR, ...) terms have no sympy"
+            " RigidBody; the model would miss the rotor"
+        )
+    speeds = model._speeds()
+    if not speeds:
+        raise ValueError(
+            "kanes_method(): there are no generalized speeds; declare them"
+            " with Variables U{n}' or MotionVariables'"
+        )
+    # Speeds that are derivatives (MotionVariables' Q'') become functions.
+    swap: dict = {}
+    names: dict = {}
+    for u in speeds:
+        if isinstance(u, sp.Derivative):
+            q = u.expr
+            new = dynamicsymbols(f"{model.ws.name_of(q)}_U", real=True)
+            swap[sp.Derivative(q, (t, 2))] = sp.Derivative(new, t)
+            swap[u] = new
+            names[new] = model.ws.name_of(u)
+        else:
+            names[u] = model.ws.name_of(u)
+
+    # Constraint forces solved by Kane(F1, F2) stay unknowns: their
+    # right-hand sides hold the accelerations.
+    keep = [*speeds, *(st.kane["forces"] if st.kane else ())]
+
+    def fix(x: Any) -> Any:
+        x = model._actual(x, keep)
+        return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
+
+    # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
+    # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
+    zero_aux = [
+        u for u in st.auxiliary if model.ws.resolve(model.ws._rhs.get(u, u)) == 0
+    ]
+    solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
+    solved = [u for u in solved if u not in zero_aux]
+    us = [swap.get(u, u) for u in speeds]
+    dep = [swap.get(u, u) for u in solved]
+    aux = [swap.get(u, u) for u in zero_aux]
+    ind = [u for u in us if u not in dep and u not in aux]
+    coords = model._coordinates(speeds)
+    q_ind = [q for q, _rhs in coords]
+    kd_eqs = [sp.Derivative(q, t) - fix(rhs) for q, rhs in coords]
+    for u, new in swap.items():
+        if isinstance(u, sp.Derivative) and u.derivative_count == 1:
+            q_ind.append(u.expr)
+            kd_eqs.append(u - new)
+    constraints = [swap.get(u, u) - fix(model.ws._rhs[u]) for u in solved]
+    bodies = []
+    for o in st.massive:
+        m = fix(model._mass(o, strict=False))
+        p = model._center(o)
+        # Accelerations are the velocities' derivatives with every speed
+        # kept (an Autolev A2pts result has dependent speeds' derivatives
+        # substituted, which KanesMethod's constraints would count twice).
+        v = fix(model.vel(p, n))
+        p.set_vel(n, v)
+        p.set_acc(n, v.dt(n))
+        if isinstance(o, ReferenceFrame):
+            w = fix(model.ang_vel(o, n))
+            o.set_ang_vel(n, w)
+            o.set_ang_acc(n, w.dt(o))
+            inertia = fix(model.central_inertia(o))
+            if inertia == 0:
+                inertia = Dyadic(0)
+            bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
+        else:
+            bodies.append(Particle(p.name, p, m))
+    loads = []
+    for p, f in st.forces.items():
+        if f != Vector(0):
+            p.set_vel(n, fix(model.vel(p, n)))
+            loads.append((p, fix(f)))
+    for b, tq in st.torques.items():
+        if tq != Vector(0):
+            b.set_ang_vel(n, fix(model.ang_vel(b, n)))
+            loads.append((b, fix(tq)))
+    return KaneInputs(
+        frame=n,
+        q_ind=q_ind,
+        u_ind=ind,
+        kd_eqs=kd_eqs,
+        bodies=bodies,
+        loads=loads,
+        u_dependent=dep,
+        velocity_constraints=constraints,
+        u_auxiliary=aux,
+        speed_names=names,
+    )

@@ -1,0 +1,360 @@
+"""Kinematics: part of :class:`al2py_runtime.mechanics.Model`.
+
+Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet).
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import (
+    Dyadic,
+    Point,
+    ReferenceFrame,
+    Vector,
+    time_derivative,
+)
+
+from .. import kinematics as kin
+from ..kane import solve_speeds
+from .state import t
+
+__all__ = ["Kinematics"]
+
+
+class Kinematics:
+    """Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet)."""
+
+    # --------------------------------------------------------- positions
+
+    def _set_pos(self, p: Point, q: Point, v: Vector) -> None:
+        st = self._mech
+        st.edges.setdefault(p, {})[q] = v
+        st.edges.setdefault(q, {})[p] = -v
+        q.set_pos(p, v)
+
+    def _path(self, p: Point, q: Point) -> list[Point] | None:
+        """Shortest chain of given positions from p to q."""
+        edges = self._mech.edges
+        prev = {p: None}
+        todo = deque([p])
+        while todo:
+            r = todo.popleft()
+            if r is q:
+                path = [r]
+                while prev[path[-1]] is not None:
+                    path.append(prev[path[-1]])
+                return path[::-1]
+            for s in edges.get(r, {}):
+                if s not in prev:
+                    prev[s] = r
+                    todo.append(s)
+        return None
+
+    def pos(self, p: Point, q: Point) -> Vector:
+        """``P_P_Q>``: position vector from ``p`` to ``q``."""
+        if p is q:
+            return Vector(0)
+        path = self._path(p, q)
+        if path is None:
+            raise ValueError(f"P_{p.name}_{q.name}> is not defined")
+        edges = self._mech.edges
+        out = Vector(0)
+        for a, b in zip(path, path[1:], strict=False):
+            out += edges[a][b]
+        return out
+
+    # ------------------------------------------------------- resolution
+
+    def _actual(self, x: Any, keep: Any = ()) -> Any:
+        """``x`` with every right-hand side substituted (except ``keep``)."""
+        keep = list(keep)
+        return kin.vmap(x, self.ws._resolver(keep))
+
+    def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
+        v = self._actual(v)
+        if isinstance(v, Vector | Dyadic):
+            out = time_derivative(v, frame)
+        else:
+            out = sp.diff(v, t)
+        return self._actual(out)
+
+    # --------------------------------------------------------- velocities
+
+    def _known_vel(self, p: Point, frame: ReferenceFrame) -> Vector | None:
+        st = self._mech
+        if (p, frame) in st.vel:
+            return st.vel[(p, frame)]
+        if (p, frame) in st.deferred_vel:
+            return self._deferred("V", p, frame)
+        if st.fixed_in.get(p) is frame:
+            return Vector(0)
+        return None
+
+    def vel(self, p: Point, frame: ReferenceFrame) -> Vector:
+        """``V_P_N>``: given, formed, or the derivative of a position from the
+        nearest point whose velocity in ``frame`` is known."""
+        known = self._known_vel(p, frame)
+        if known is not None:
+            return known
+        edges = self._mech.edges
+        seen = {p}
+        todo = deque([p])
+        while todo:
+            r = todo.popleft()
+            for s in edges.get(r, {}):
+                if s in seen:
+                    continue
+                seen.add(s)
+                v = self._known_vel(s, frame)
+                if v is not None:
+                    return kin.tidy_vector(v + self._dt(self.pos(s, p), frame))
+                todo.append(s)
+        raise ValueError(f"V_{p.name}_{frame.name}> is not defined")
+
+    def acc(self, p: Point, frame: ReferenceFrame) -> Vector:
+        """``A_P_N>``: given, formed, or the derivative of ``V_P_N>``."""
+        st = self._mech
+        if (p, frame) in st.acc:
+            return st.acc[(p, frame)]
+        if st.fixed_in.get(p) is frame:
+            return Vector(0)
+        if (p, frame) in st.deferred_acc:
+            return self._deferred("A", p, frame)
+        try:
+            v = self.vel(p, frame)
+        except ValueError:
+            raise ValueError(f"A_{p.name}_{frame.name}> is not defined") from None
+        return kin.tidy_vector(self._dt(v, frame))
+
+    def ang_vel(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
+        """``W_B_A>``: given, or from the direction cosine matrices."""
+        if a is b:
+            return Vector(0)
+        try:
+            return b.ang_vel_in(a)
+        except ValueError:
+            raise ValueError(f"W_{b.name}_{a.name}> is not defined") from None
+
+    def ang_acc(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
+        """``ALF_B_A>``: given, or the derivative of ``W_B_A>`` in ``a``."""
+        if a is b:
+            return Vector(0)
+        st = self._mech
+        if (b, a) in st.angacc:
+            return st.angacc[(b, a)]
+        return kin.tidy_vector(self._dt(self.ang_vel(b, a), a))
+
+    def dcm(self, a: ReferenceFrame, b: ReferenceFrame) -> sp.Matrix:
+        """``A_B``: element [i,j] is Dot(Ai>, Bj>)."""
+        try:
+            m = a.dcm(b)
+        except ValueError:
+            raise ValueError(f"{a.name}_{b.name} is not defined") from None
+        return sp.Matrix(m).applyfunc(kin.tidy)
+
+    # --------------------------------------------------- rotation commands
+
+    def _orient(self, a: ReferenceFrame, b: ReferenceFrame, m: sp.Matrix) -> None:
+        b.orient_explicit(a, m)
+
+    def simprot(
+        self, a: ReferenceFrame, b: ReferenceFrame, axis: Any, angle: Any, *, line=None
+    ) -> sp.Matrix:
+        """``Simprot(A, B, 3, Q)``: B rotated relative to A about A3 (= B3).
+
+        The axis may also be a vector (``Simprot(N, A, N1>, X)``, or any
+        direction): B is rotated by ``angle`` about it, right-handed."""
+        axis = self.ws.val(axis)
+        if isinstance(axis, Vector):
+            if axis == Vector(0):
+                raise ValueError("Simprot: the axis vector is zero")
+            m = kin.axis_dcm(axis.to_matrix(a), angle)
+            b.orient_explicit(a, m)
+            rate = sp.diff(sp.sympify(angle), t)
+            b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
+        else:
+            m = kin.simprot_dcm(int(axis), angle)
+            unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
+            b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
+        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        return m
+
+    def dircos(
+        self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
+    ) -> sp.Matrix:
+        """``Dircos(A, B, BODY123, Q1, Q2, Q3)`` (also SPACEijk, EULER with 4
+        parameters, RODRIGUES): forms ``A_B``."""
+        m = kin.rotation_dcm(kind, list(qs))
+        kind = kind.upper()
+        if kind.startswith("BODY"):
+            b.orient_body_fixed(a, tuple(qs), kind[4:])
+        elif kind.startswith("SPACE"):
+            b.orient_space_fixed(a, tuple(qs), kind[5:])
+        else:
+            self._orient(a, b, m)
+        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        return m
+
+    def _dcm_angvel(self, a, b, kind, qs) -> list:
+        """B measure numbers of the angular velocity implied by the
+        orientation (sympy's closed forms for Euler angles)."""
+        kind = kind.upper()
+        if kind.startswith(("BODY", "SPACE")) and len(qs) == 3:
+            pa, pb = ReferenceFrame("_PA"), ReferenceFrame("_PB")
+            if kind.startswith("BODY"):
+                pb.orient_body_fixed(pa, tuple(qs), kind[4:])
+            else:
+                pb.orient_space_fixed(pa, tuple(qs), kind[5:])
+            w = pb.ang_vel_in(pa)
+            return [kin.simplify_small(w.dot(e)) for e in (pb.x, pb.y, pb.z)]
+        m = kin.rotation_dcm(kind, list(qs))
+        return kin.angvel_from_dcm(m)
+
+    def angvel(
+        self,
+        a: ReferenceFrame,
+        b: ReferenceFrame,
+        kind: str | None = None,
+        *qs: Any,
+        line=None,
+    ) -> Vector:
+        """``Angvel(A, B, BODY123, Q1, Q2, Q3)``: forms ``W_B_A>`` (in B).
+        ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
+        if kind is None:
+            w = self._kinematic(self.ang_vel(b, a))
+            self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+            return w
+        w = self._kinematic(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
+        b.set_ang_vel(a, w)
+        self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+        return w
+
+    def kindiffs(
+        self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
+    ) -> tuple:
+        """``Kindiffs(A, B, BODY123, Q1, Q2, Q3)``: assigns ``Q1'``... so that
+        the angular velocity of B in A implied by the orientation equals the
+        given ``W_B_A>`` (if it was given in terms of other quantities) or
+        else ``U1*B1> + U2*B2> + U3*B3>``."""
+        wq = self._dcm_angvel(a, b, kind, qs)
+        given = None
+        try:
+            given = self._actual(b.ang_vel_in(a))
+        except ValueError:
+            pass
+        qdots = [sp.Derivative(q, t) for q in qs]
+        if given is not None and not any(given.to_matrix(b).has(d) for d in qdots):
+            w = [kin.tidy(given.dot(e)) for e in (b.x, b.y, b.z)]
+        else:
+            speeds = self._speeds()
+            if len(speeds) < 3:
+                raise ValueError("Kindiffs needs W_B_A> or speeds U1, U2, U3")
+            w = speeds[:3]
+            b.set_ang_vel(a, kin.frame_vector(b, w))
+        if kind.upper() == "EULER":
+            rates = kin.euler_parameter_rates(list(qs), w)
+        else:
+            eqs = [wq[i] - w[i] for i in range(3)]
+            rates = solve_speeds(eqs, qdots)
+        out = []
+        for q, r in zip(qs, rates, strict=True):
+            r = kin.simplify_small(r)
+            out.append(self.ws.assign(self.ws.name_of(q) + "'", r, line=line))
+        return tuple(out)
+
+    # ------------------------------------------------- velocity formulas
+
+    def _v2pts(self, n, a, o, p) -> Vector:
+        v = self.vel(o, n) + (self.ang_vel(a, n) ^ self.pos(o, p))
+        return kin.tidy_vector(v)
+
+    def _a2pts(self, n, a, o, p) -> Vector:
+        w = self.ang_vel(a, n)
+        r = self.pos(o, p)
+        v = self.acc(o, n) + (self.ang_acc(a, n) ^ r) + (w ^ (w ^ r))
+        return kin.tidy_vector(v)
+
+    def _deferred(self, which: str, p: Point, n: ReferenceFrame) -> Vector:
+        """A velocity/acceleration stated by ``V2pts``/``A2pts`` before the
+        other point's was known: formed now (an error if it still is not)."""
+        st = self._mech
+        table = st.deferred_vel if which == "V" else st.deferred_acc
+        a, o = table.pop((p, n))  # no cycles: each rule is used once
+        try:
+            v = (self._v2pts if which == "V" else self._a2pts)(n, a, o, p)
+        except ValueError:
+            table[(p, n)] = (a, o)
+            raise ValueError(
+                f"{which}_{p.name}_{n.name}> is not defined: {which}2pts("
+                f"{n.name}, {a.name}, {o.name}, {p.name}) needs "
+                f"{which}_{o.name}_{n.name}>, P_{o.name}_{p.name}> and "
+                f"W_{a.name}_{n.name}>"
+            ) from None
+        table[(p, n)] = (a, o)
+        return v
+
+    def _two_points(self, which: str, n, a, o, p, line) -> Vector | None:
+        try:
+            v = (self._v2pts if which == "V" else self._a2pts)(n, a, o, p)
+        except ValueError:
+            # Not all of it is known yet (the other point's motion, the
+            # position, W_A_N>): keep the relation and form the value when it
+            # is used (an error then if it still cannot be formed).
+            st = self._mech
+            table = st.deferred_vel if which == "V" else st.deferred_acc
+            table[(p, n)] = (a, o)
+            (st.vel if which == "V" else st.acc).pop((p, n), None)
+            return None
+        return self._set_formed(which, p, n, v, line)
+
+    def v2pts(self, n, a, o, p, *, line=None) -> Vector | None:
+        """``V2pts(N, A, O, P)``: O and P fixed on A;
+        ``V_P_N> = V_O_N> + Cross(W_A_N>, P_O_P>)``.  If a term is not
+        known yet (``V_O_N>``...) the relation is kept (no response) and
+        used when ``V_P_N>`` is needed."""
+        return self._two_points("V", n, a, o, p, line)
+
+    def a2pts(self, n, a, o, p, *, line=None) -> Vector | None:
+        """``A2pts(N, A, O, P)``: O and P fixed on A (deferred as V2pts)."""
+        return self._two_points("A", n, a, o, p, line)
+
+    def v1pt(self, n, a, o, p, *, line=None) -> Vector:
+        """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
+        r = self.pos(o, p)
+        vpa = self._mech.vel.get((p, a))
+        if vpa is None:
+            vpa = self._dt(r, a)
+        v = self.vel(o, n) + vpa + (self.ang_vel(a, n) ^ r)
+        return self._set_formed("V", p, n, kin.tidy_vector(v), line)
+
+    def a1pt(self, n, a, o, p, *, line=None) -> Vector:
+        """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
+        st = self._mech
+        r = self.pos(o, p)
+        vpa = st.vel.get((p, a))
+        if vpa is None:
+            vpa = self._dt(r, a)
+        apa = st.acc.get((p, a))
+        if apa is None:
+            apa = self._dt(vpa, a)
+        w = self.ang_vel(a, n)
+        v = (
+            self.acc(o, n)
+            + apa
+            + 2 * (w ^ vpa)
+            + (self.ang_acc(a, n) ^ r)
+            + (w ^ (w ^ r))
+        )
+        return self._set_formed("A", p, n, kin.tidy_vector(v), line)
+
+    def _set_formed(self, which, p, n, v, line) -> Vector:
+        v = self._kinematic(v)
+        table = self._mech.vel if which == "V" else self._mech.acc
+        table[(p, n)] = v
+        if which == "V":
+            p.set_vel(n, v)
+        self.ws.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
+        return v

@@ -1,0 +1,159 @@
+"""Speeds: part of :class:`al2py_runtime.mechanics.Model`.
+
+Generalized speeds and coordinates as Autolev identifies them (docs/semantics.md, "Generalized speeds"), kinematical differential equations, partial velocities.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import (
+    Dyadic,
+    Vector,
+)
+
+from .. import kinematics as kin
+from .state import _SPEED, _mentions, t
+
+__all__ = ["Speeds"]
+
+
+class Speeds:
+    """Generalized speeds and coordinates as Autolev identifies them (docs/semantics.md, "Generalized speeds"), kinematical differential equations, partial velocities."""
+
+    # ------------------------------------------------------- speeds
+
+    def motion_variables(self, *names: str) -> Any:
+        """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
+        that also describe the motion (see :meth:`_speeds`)."""
+        out = self.ws.variables(*names)
+        objs = out if isinstance(out, tuple) else (out,)
+        st = self._mech
+        st.motion.extend(o for o in objs if o not in st.motion)
+        return out
+
+    def _speeds(self) -> list:
+        """Generalized speeds.
+
+        The declared variables U1, U2... in order, if there are any.  Otherwise
+        the motion variables (``MotionVariables'``) say, in declaration order:
+        one with a right-hand side of its own (``OMEGA = THETA'``) is a name
+        for an expression, not a speed; one whose derivative has a right-hand
+        side (``POSITION' = SPEED``, a kinematical equation) is a coordinate
+        whose speeds are in that equation; one appearing in such an equation
+        (``SPEED``) is a speed; any other (``THETA''``) is a coordinate whose
+        first derivative ``THETA'`` serves as the generalized speed.  Speeds
+        solved by Constrain keep their place."""
+        if self._mech.speeds is not None:
+            return list(self._mech.speeds)
+        found = []
+        for name, entry in self.ws._names.items():
+            m = _SPEED.match(name)
+            if m and entry.kind == "variable":
+                found.append((int(m.group(1)), entry.obj))
+        if found:
+            return [obj for _, obj in sorted(found, key=lambda x: x[0])]
+        st = self._mech
+        solved = set(st.dependent) | set(st.auxiliary)
+        rhs = self.ws._rhs
+        kin_eqs = [rhs[dq] for dq in self._kinematical_equations()]
+        out = []
+        for q in st.motion:
+            dq = sp.Derivative(q, t)
+            if q in rhs and q not in solved:
+                continue
+            if dq in rhs and dq not in solved:
+                continue
+            if self.ws._names[self.ws.name_of(q)].order == 1 or any(
+                sp.sympify(e).has(q) for e in kin_eqs
+            ):
+                out.append(q)
+            else:
+                out.append(dq)
+        return out
+
+    def _kinematic(self, x: Any) -> Any:
+        """``x`` with the kinematical differential equations applied (each
+        ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
+        terms of the generalized speeds."""
+        speeds = set(self._speeds())
+        table = {
+            dq: self.ws._rhs[dq]
+            for dq in self._kinematical_equations()
+            if dq.expr not in speeds and dq not in speeds
+        }
+        if not table or not _mentions(x, list(table)):
+            return x
+        return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
+
+    def _kinematical_equations(self) -> list:
+        """The derivatives ``Q'`` of declared variables (motion variables or
+        not) that have a right-hand side while ``Q`` itself has none: the
+        kinematical differential equations ``Q' = ...``, in declaration
+        order."""
+        rhs = self.ws._rhs
+        solved = set(self._mech.dependent) | set(self._mech.auxiliary)
+        out = []
+        for entry in self.ws._names.values():
+            q = entry.obj
+            if entry.kind != "variable" or q is t or q in rhs:
+                continue
+            dq = sp.Derivative(q, t)
+            if dq in rhs and dq not in solved and q not in solved:
+                out.append(dq)
+        return out
+
+    def _fr_speeds(self) -> list:
+        """Speeds with a row in Fr/Fr*: independent and auxiliary speeds."""
+        dep = set(self._mech.dependent)
+        return [u for u in self._speeds() if u not in dep]
+
+    def _rows_speeds(self, what: str) -> list:
+        """:meth:`_fr_speeds` for ``Fr()``/``FrStar()``: an error when there
+        are none (never an empty, silently zero ``ZERO``)."""
+        speeds = self._fr_speeds()
+        if speeds and self._mech.speeds is None:
+            # Fixed from now on: a later Solve(Zero, OMEGA') gives OMEGA' a
+            # right-hand side, which must not make OMEGA a coordinate.
+            self._mech.speeds = self._speeds()
+        if not speeds:
+            raise ValueError(
+                f"{what}: there are no generalized speeds; declare them with"
+                " Variables U{n}' or MotionVariables' (with kinematical"
+                " differential equations such as Q' = U)"
+            )
+        self._mech.fr_speeds = speeds
+        return speeds
+
+    def _display(self, value: Any) -> Any:
+        """A response value simplified for printing (cosmetic, size-gated)."""
+        if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
+            return value
+        gens = self._gens()
+        return kin.vmap(value, lambda e: kin.tidy(e, gens))
+
+    def _gens(self) -> list:
+        us = self._speeds()
+        return [sp.Derivative(u, t) for u in us] + us
+
+    def _partials(self, v: Vector, speeds: list) -> list:
+        keep = speeds + [sp.Derivative(u, t) for u in speeds]
+        v = self._actual(v, keep)
+        return [kin.vmap(v, lambda e, u=u: sp.diff(e, u)) for u in speeds]
+
+    def partials(self, v: Any, *speeds: Any) -> Any:
+        """``Partials(V_P_N>, U1, U2)``: partial velocities (no speeds: with
+        respect to each independent/auxiliary speed).  One speed gives one
+        vector; several give a tuple of vectors, in order."""
+        speeds = list(speeds) or self._fr_speeds()
+        out = [kin.tidy_vector(x) for x in self._partials(self.ws.val(v), speeds)]
+        return out[0] if len(out) == 1 else tuple(out)
+
+    def remainder(self, v: Any) -> Vector:
+        """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
+        speeds = self._fr_speeds()
+        v = self._actual(self.ws.val(v), speeds)
+        return kin.tidy_vector(
+            kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
+        )

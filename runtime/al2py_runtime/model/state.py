@@ -1,0 +1,70 @@
+"""The state of a script's model, and small helpers shared by its parts."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector, dynamicsymbols
+
+t = dynamicsymbols._t
+
+_SPEED = re.compile(r"U(\d+)$")
+
+
+@dataclass
+class _Body:
+    frame: ReferenceFrame
+    point: Point
+    mass: Any = None
+    inertia: Any = None  # Dyadic about ``inertia_point`` (None: not given)
+    inertia_point: Point | None = None
+
+
+@dataclass
+class _State:
+    newtonian: ReferenceFrame | None = None
+    frames: dict = field(default_factory=dict)  # name -> ReferenceFrame
+    points: dict = field(default_factory=dict)  # name -> Point
+    fixed_in: dict = field(default_factory=dict)  # Point -> frame (origins)
+    bodies: dict = field(default_factory=dict)  # ReferenceFrame -> _Body
+    particles: dict = field(default_factory=dict)  # Point -> mass or None
+    massive: list = field(default_factory=list)  # bodies' frames and particles
+    edges: dict = field(default_factory=dict)  # Point -> {Point: P_from_to>}
+    vel: dict = field(default_factory=dict)  # (Point, frame) -> Vector
+    acc: dict = field(default_factory=dict)
+    angacc: dict = field(default_factory=dict)  # (B, A) -> Vector
+    forces: dict = field(default_factory=dict)  # Point -> Vector
+    torques: dict = field(default_factory=dict)  # frame -> Vector
+    dependent: list = field(default_factory=list)
+    auxiliary: list = field(default_factory=list)
+    speed_dt: dict = field(default_factory=dict)  # U' -> expression (Constrain)
+    deferred_vel: dict = field(default_factory=dict)  # (P, N) -> (A, O): V2pts
+    deferred_acc: dict = field(default_factory=dict)  # (P, N) -> (A, O): A2pts
+    motion: list = field(default_factory=list)  # MotionVariables, in order
+    checks: list = field(default_factory=list)  # NiCheck's work variables
+    gyrostat: bool = False  # Gyrostat(FRSTAR...) terms were formed
+    speeds: list | None = None  # the speeds, fixed when Fr/FrStar are formed
+    fr_speeds: list | None = None
+    kane: dict | None = None
+
+
+def _undef(label: str) -> KeyError:
+    return KeyError(f"{label} is not defined")
+
+
+def _mentions(x: Any, objs: list) -> bool:
+    """Whether a vector (or scalar) contains any of ``objs``."""
+    if isinstance(x, Vector):
+        return any(m.has(*objs) for m, _frame in x.args)
+    return isinstance(x, sp.Basic) and x.has(*objs)
+
+
+def _as_dyadic(value: Any) -> Dyadic:
+    if isinstance(value, Dyadic):
+        return value
+    if value == 0:
+        return Dyadic(0)
+    raise TypeError(f"expected a dyadic, not {value!r}")

@@ -1,0 +1,161 @@
+"""VectorCommands: part of :class:`al2py_runtime.mechanics.Model`.
+
+Autolev's vector and dyadic commands: ``Express``, ``Represent``, ``Dot``, ``Cross``, ``Mag``, ``UnitVec``, ``1>>``, ``D`` and ``Dt`` of vectors.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+from sympy.physics.vector import (
+    Dyadic,
+    ReferenceFrame,
+    Vector,
+)
+
+from .. import kinematics as kin
+
+__all__ = ["VectorCommands"]
+
+
+class VectorCommands:
+    """Autolev's vector and dyadic commands: ``Express``, ``Represent``, ``Dot``, ``Cross``, ``Mag``, ``UnitVec``, ``1>>``, ``D`` and ``Dt`` of vectors."""
+
+    # ------------------------------------------------ vector operations
+
+    def express(self, v: Any, frame: ReferenceFrame) -> Any:
+        """``Express(v>, A)``: ``v>`` in terms of A1>, A2>, A3>.  The unit
+        dyadic ``1>>`` is the identity in every frame, whether or not A is
+        oriented relative to the frame it was written in."""
+        if isinstance(v, Vector):
+            return kin.tidy_vector(v.express(frame))
+        if isinstance(v, Dyadic):
+            if kin.is_unit_dyadic(v):
+                return kin.unit_dyadic(frame)
+            return kin.vmap(v.express(frame, frame), kin.tidy)
+        return v
+
+    def represent(self, x: Any, frame: ReferenceFrame) -> Any:
+        """``Represent(x, A)``: a vector -> the row matrix of its A measure
+        numbers, a dyadic -> the 3x3 matrix; and back: a 3-element matrix ->
+        vector, a 3x3 matrix -> dyadic."""
+        x = self.ws.val(x)
+        if isinstance(x, Vector):
+            return sp.Matrix(
+                [[kin.tidy(x.dot(e)) for e in (frame.x, frame.y, frame.z)]]
+            )
+        if isinstance(x, Dyadic):
+            return x.to_matrix(frame).applyfunc(kin.tidy)
+        if isinstance(x, sp.MatrixBase):
+            if x.shape == (3, 3):
+                return kin.frame_dyadic(frame, x)
+            if len(x) == 3:
+                return kin.frame_vector(frame, list(x))
+        if x == 0:
+            return sp.zeros(1, 3)
+        raise TypeError(f"cannot represent {x!r} in {frame}")
+
+    def matrix(self, frame: ReferenceFrame, x: Any) -> sp.Matrix:
+        """``Matrix(A, v>)``: see :meth:`represent`."""
+        x = self.ws.val(x)
+        if not isinstance(x, Vector | Dyadic) and x != 0:
+            raise TypeError("Matrix(A, x) needs a vector or dyadic")
+        return self.represent(x, frame)
+
+    def vector(self, frame: ReferenceFrame, *m: Any) -> Vector:
+        """``Vector(A, x, y, z)`` or ``Vector(A, M)``."""
+        if len(m) == 1:
+            m = list(self.ws.val(m[0]))
+        return kin.frame_vector(frame, m)
+
+    def dyadic(self, frame: ReferenceFrame, *m: Any) -> Dyadic:
+        """``Dyadic(A, M)`` (3x3), nine scalars (row by row) or three (diagonal)."""
+        if len(m) == 1:
+            mat = sp.Matrix(self.ws.val(m[0]))
+        elif len(m) == 9:
+            mat = sp.Matrix(3, 3, list(m))
+        elif len(m) == 3:
+            mat = sp.diag(*m)
+        else:
+            raise ValueError("Dyadic(A, ...) takes a 3x3 matrix, 9 or 3 scalars")
+        if mat.shape != (3, 3):
+            raise ValueError("Dyadic(A, M) needs a 3x3 matrix")
+        return kin.frame_dyadic(frame, mat)
+
+    def dot(self, a: Any, b: Any) -> Any:
+        a, b = self.ws.val(a), self.ws.val(b)
+        if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
+            return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
+        return kin.tidy(kin.vdot(a, b))
+
+    def cross(self, a: Any, b: Any) -> Any:
+        return kin.vmap(kin.vcross(self.ws.val(a), self.ws.val(b)), kin.tidy)
+
+    def magsq(self, v: Any) -> Any:
+        v = self.ws.val(v)
+        if isinstance(v, Vector):
+            return kin.tidy(v.dot(v))
+        return sp.sympify(v) ** 2
+
+    def mag(self, v: Any) -> Any:
+        v = self.ws.val(v)
+        if isinstance(v, Vector):
+            return sp.sqrt(self.magsq(v))
+        return sp.Abs(sp.sympify(v))
+
+    def unitvec(self, v: Any) -> Vector:
+        v = self.ws.val(v)
+        m = self.mag(v)
+        if m == 0:
+            raise ValueError("UnitVec of the zero vector")
+        return kin.vmap(v, lambda e: e / m)
+
+    def unit_dyadic(self) -> Dyadic:
+        """``1>>``, expressed in the Newtonian frame (without one, in the first
+        declared frame; ``Express(1>>, A)`` gives it in any frame)."""
+        st = self._mech
+        n = st.newtonian or next(iter(st.frames.values()), None)
+        if n is None:
+            raise ValueError("1>> needs a frame: declare one first")
+        return kin.unit_dyadic(n)
+
+    def vector_matrix(self, rows: list) -> kin.VectorMatrix:
+        """A matrix literal of vectors, ``[V1>; V2>]`` (an argument of Dot)."""
+        return kin.VectorMatrix(
+            [[kin.as_vector(self.ws.val(e)) for e in r] for r in rows]
+        )
+
+    def trace(self, y: Any) -> Any:
+        """``Trace(A)`` of a matrix or a dyadic."""
+        y = self.ws.val(y)
+        if isinstance(y, Dyadic):
+            if not y.args:
+                return sp.Integer(0)
+            frame = y.args[0][1].args[0][1]
+            return kin.tidy(y.to_matrix(frame).trace())
+        from ..matrices import trace
+
+        return trace(y)
+
+    def _vector_d(self, y: Any, x: Any, frame: Any) -> Any:
+        """``D(v>, x, A)``: partial derivative of a vector in frame A."""
+        if frame is None:
+            frame = self._mech.newtonian
+        if isinstance(y, Dyadic):
+            if frame is None:
+                return kin.vmap(y, lambda e: sp.diff(e, x))
+            return kin.vmap(y.express(frame, frame), lambda e: sp.diff(e, x))
+        if not isinstance(y, Vector):
+            return sp.diff(y, x)
+        if frame is None:
+            return kin.vmap(y, lambda e: sp.diff(e, x))
+        return kin.tidy_vector(y.diff(x, frame))
+
+    def _vector_dt(self, y: Any, frame: Any) -> Any:
+        """``Dt(v>, A)``: time derivative in frame A (default: Newtonian)."""
+        if frame is None:
+            frame = self._n()
+        if not isinstance(y, Vector | Dyadic):
+            return self._dt(y, frame)
+        return kin.vmap(self._dt(y, frame), kin.tidy)

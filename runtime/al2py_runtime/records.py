@@ -1,0 +1,122 @@
+"""What ``Input``, ``Output`` and ``CODE`` record: the :class:`Job` snapshot,
+CODE options (:data:`KINDS`) and integration parameters
+(:data:`INTEGRATION_DEFAULTS`), defined once for the runtime and the
+transpiler."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+from .units import UnitSystem
+
+__all__ = [
+    "NumericsError",
+    "INTEGRATION_DEFAULTS",
+    "KINDS",
+    "normalize_name",
+    "InputValue",
+    "OutputItem",
+    "OutputSpec",
+    "Job",
+]
+
+
+class NumericsError(ValueError):
+    """A numerical job cannot run: bad input, no convergence, failed step."""
+
+
+#: Integration parameters and their defaults (TFINAL, INTEGSTP, PRINTINT are
+#: derived when missing: TFINAL = TINITIAL + 10, INTEGSTP = (TFINAL -
+#: TINITIAL)/100, PRINTINT = 1).  PRINTINT counts integration steps: a row
+#: is written every INTEGSTP*PRINTINT.
+INTEGRATION_DEFAULTS: dict[str, float | None] = {
+    "TINITIAL": 0.0,
+    "TFINAL": None,
+    "INTEGSTP": None,
+    "PRINTINT": None,
+    "ABSERR": 1.0e-8,
+    "RELERR": 1.0e-7,
+}
+
+KINDS = ("DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC")
+
+
+def normalize_name(name: str) -> str:
+    """``"config[ 1 ]"`` -> ``"CONFIG[1]"``, ``"x'"`` -> ``"X'"``."""
+    return re.sub(r"\s+", "", str(name)).upper()
+
+
+# ------------------------------------------------------------------ records
+
+
+@dataclass(frozen=True)
+class InputValue:
+    """One ``Input NAME = value unit`` item."""
+
+    value: float
+    unit: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class OutputItem:
+    label: str
+    expr: Any
+    unit: str | None = None
+
+
+@dataclass(frozen=True)
+class OutputSpec:
+    """One ``Output`` statement: its items, in order.
+
+    ``encoded`` marks the quantities an ``Encode`` statement lists: computed
+    at every output row like an Output, kept in the result, never written
+    to a file.
+    """
+
+    items: tuple[OutputItem, ...]
+    line: int | None = None
+    encoded: bool = False
+
+
+@dataclass
+class Job:
+    """Everything a ``CODE`` statement needs, captured when it is recorded."""
+
+    kind: str
+    stem: str
+    filename: str | None
+    line: int | None
+    source: str
+    eqs: sp.Matrix | None
+    eqs_name: str | None
+    unknowns: list[Any]
+    sweep: tuple | None
+    rhs: dict
+    zero: sp.Matrix | None
+    outputs: list[OutputSpec]
+    inputs: dict[str, InputValue]
+    unit_system: UnitSystem
+    digits: int
+    variables: list[tuple[str, Any, int]]
+    names: dict[Any, str]
+    entries: dict[str, tuple[str, Any]]
+    #: initial values of variables the script never inputs (``NiCheck``'s
+    #: work variable starts at 0), by name
+    initials: dict[str, float] = field(default_factory=dict)
+    #: shapes of the ``Encode``d matrices (their elements are output items)
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def where(self) -> str:
+        what = f"CODE {self.kind.title()}"
+        if self.filename:
+            what += f" {self.filename}"
+        if self.line is not None:
+            what += f" (line {self.line})"
+        return what

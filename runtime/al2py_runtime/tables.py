@@ -1,0 +1,207 @@
+"""The results of numerical jobs: output tables, their files and plots."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .records import NumericsError, normalize_name
+
+__all__ = ["Column", "Table", "Result", "fmt_number", "format_table"]
+
+
+# ------------------------------------------------------------------ results
+
+
+@dataclass(frozen=True)
+class Column:
+    label: str
+    unit: str | None = None
+
+
+@dataclass
+class Table:
+    """One output table: one ``Output`` statement evaluated at every row."""
+
+    number: int
+    columns: list[Column]
+    data: np.ndarray
+    line: int | None = None
+    encoded: bool = False  # Encode's quantities (not written to a file)
+
+    @property
+    def names(self) -> list[str]:
+        return [c.label for c in self.columns]
+
+    def __len__(self) -> int:
+        return self.data.shape[0]
+
+    def __getitem__(self, label: str) -> np.ndarray:
+        key = normalize_name(label)
+        for j, col in enumerate(self.columns):
+            if normalize_name(col.label) == key:
+                return self.data[:, j]
+        raise KeyError(f"{label!r} is not a column of table {self.number}")
+
+    def __contains__(self, label: object) -> bool:
+        if not isinstance(label, str):
+            return False
+        key = normalize_name(label)
+        return any(normalize_name(c.label) == key for c in self.columns)
+
+
+@dataclass
+class Result:
+    """The outcome of :meth:`Workspace.run`.
+
+    ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
+    ``result.tables`` holds one :class:`Table` per ``Output`` statement.
+    """
+
+    kind: str
+    stem: str
+    tables: list[Table]
+    digits: int
+    solution: dict[str, np.ndarray] = field(default_factory=dict)
+    solution_units: dict[str, str | None] = field(default_factory=dict)
+    states: dict[str, np.ndarray] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    time_unit: str | None = None
+    nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
+    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
+    #: shape (rows, m, n), one matrix per output row.
+    encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+
+    def _encoded(self, key: str) -> np.ndarray:
+        m, n = self.encoded[key]
+        cols = [
+            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
+        ]
+        return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
+
+    @property
+    def written(self) -> list[Table]:
+        """The tables written to files (one per ``Output`` statement)."""
+        return [t for t in self.tables if not t.encoded]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        for table in self.tables:
+            if name in table:
+                return table[name]
+        key = normalize_name(name)
+        if key in self.encoded:
+            return self._encoded(key)
+        for source in (self.solution, self.states):
+            if key in source:
+                return source[key]
+        raise KeyError(f"{name!r} is neither an output nor a solved quantity")
+
+    def __contains__(self, name: object) -> bool:
+        try:
+            self[name]  # type: ignore[index]
+        except (KeyError, TypeError):
+            return False
+        return True
+
+    def files(self) -> list[str]:
+        """The names :meth:`write` uses: ``STEM.1``, ``STEM.2``, ..."""
+        return [f"{self.stem}.{table.number}" for table in self.written]
+
+    def write(self, directory: str | Path = ".") -> list[Path]:
+        """Write each table as ``STEM.n``: a ``%`` header naming columns and
+        units, then one row per line with ``Digits`` significant digits
+        (``numpy.loadtxt(path, comments="%")`` reads them back)."""
+        directory = Path(directory)
+        directory.mkdir(parents=True, exist_ok=True)
+        written = []
+        for table, name in zip(self.written, self.files(), strict=True):
+            path = directory / name
+            path.write_text(
+                format_table(table, self.digits, name, self.time_unit),
+                encoding="utf-8",
+            )
+            written.append(path)
+        return written
+
+    def plot(self, directory: str | Path = ".") -> list[Path]:
+        """Write ``STEM.n.png`` per table: each column against the first."""
+        try:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+            from matplotlib.figure import Figure
+        except ImportError:
+            raise NumericsError(
+                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
+            ) from None
+        directory = Path(directory)
+        directory.mkdir(parents=True, exist_ok=True)
+        written = []
+        for table, name in zip(self.written, self.files(), strict=True):
+            cols = table.columns
+            if len(cols) < 2 or len(table) == 0:
+                continue
+            n = len(cols) - 1
+            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
+            FigureCanvasAgg(fig)
+            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
+            x = table.data[:, 0]
+            for ax, j in zip(axes, range(1, len(cols)), strict=True):
+                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
+                ax.set_ylabel(_heading(cols[j], self.time_unit))
+                ax.grid(True, alpha=0.3)
+            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
+            fig.suptitle(name)
+            fig.tight_layout()
+            path = directory / f"{name}.png"
+            fig.savefig(path, dpi=100)
+            written.append(path)
+        return written
+
+    def solution_lines(self) -> list[str]:
+        """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""
+        out = []
+        for name, values in self.solution.items():
+            unit = self.solution_units.get(name)
+            suffix = f" {unit}" if unit else ""
+            if len(values) == 1:
+                out.append(f"{name} = {fmt_number(values[0], self.digits)}{suffix}")
+        return out
+
+
+def _heading(col: Column, time_unit: str | None) -> str:
+    unit = col.unit
+    if unit is None and normalize_name(col.label) == "T" and time_unit:
+        unit = time_unit
+    return f"{col.label} ({unit})" if unit else col.label
+
+
+def fmt_number(x: float, digits: int) -> str:
+    return f"{x:.{digits}g}"
+
+
+def format_table(
+    table: Table, digits: int, name: str, time_unit: str | None = None
+) -> str:
+    """The text of one output file."""
+    width = max(digits + 8, 12)
+    labels, units = [], []
+    for col in table.columns:
+        unit = col.unit
+        if unit is None and normalize_name(col.label) == "T" and time_unit:
+            unit = time_unit
+        labels.append(col.label)
+        units.append(f"({unit})" if unit else "(UNITS)")
+    width = max([width] + [len(s) + 2 for s in labels + units])
+    lines = [
+        f"% FILE: {name}",
+        "%",
+        "%" + "".join(s.center(width) for s in labels).rstrip(),
+        "%" + "".join(s.center(width) for s in units).rstrip(),
+        "",
+    ]
+    for row in table.data:
+        lines.append(
+            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
+        )
+    return "\n".join(lines) + "\n"
