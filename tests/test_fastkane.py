@@ -176,7 +176,9 @@ def moving_support():
 def test_moving_support_equals_kanesmethod():
     """Given functions of time in the kinematics (rheonomic constraints)."""
     fk = _compare(moving_support(), seed=5)
-    assert fk.substitute(fk.forcing).has(me.dynamicsymbols("f").diff(me.dynamicsymbols._t, 2))
+    assert fk.substitute(fk.forcing).has(
+        me.dynamicsymbols("f").diff(me.dynamicsymbols._t, 2)
+    )
 
 
 def test_double_pendulum_equals_kanesmethod():

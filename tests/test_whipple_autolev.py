@@ -55,12 +55,12 @@ def test_whipple_script_parameters_are_table1():
 
 @pytest.mark.slow
 @pytest.mark.skip(
-    reason="issue 10: importing the converted Whipple does not finish yet -- the "
-    "runtime's own Constrain/Kane swell without intermediates; enable once the "
-    "runtime's KaneInputs (model branch) are derived with FastKane"
+    reason="issue 10: importing the converted Whipple does not finish (>150 s) -- "
+    "the runtime's own Constrain/Kane swell without intermediates; enable once "
+    "the runtime derives its KaneInputs with FastKane"
 )
 def test_whipple_script_eigenvalues(tmp_path):  # pragma: no cover - see skip
-    from al2py_runtime.model import kane_inputs  # the model branch's API
+    from al2py_runtime.model import kane_inputs
 
     result = convert(SCRIPT.read_text(), str(SCRIPT))
     path = tmp_path / "whipple_benchmark.py"
