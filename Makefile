@@ -36,6 +36,7 @@ grammar: install
 bench: install
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/large.py
+	$(PY) benchmarks/numerics.py
 
 clean:
 	rm -rf out .pytest_cache .ruff_cache

@@ -17,7 +17,7 @@ from sympy.physics import mechanics as me
 
 G, LENGTH, MASS = 9.81, 1.0, 1.0
 T_FINAL, TOL = 10.0, 1e-7
-STEP = 0.1  # integStp = printInt: the largest step and the output interval
+STEP = 0.1  # integStp: the largest step and (printInt = 1) the output interval
 
 
 def initial_angles(n: int) -> list[float]:
@@ -55,7 +55,7 @@ def autolev_source(n: int) -> str:
         "Input L=1 m, M=1 kg, G=9.81 m/sec^2",
         "Input "
         + ", ".join(f"Q{k}={a:g} deg" for k, a in enumerate(initial_angles(n), 1)),
-        f"Input tInitial=0, tFinal={T_FINAL:g}, integStp={STEP:g}, printInt={STEP:g}",
+        f"Input tInitial=0, tFinal={T_FINAL:g}, integStp={STEP:g}, printInt=1",
         f"Input absErr={TOL:g}, relErr={TOL:g}",
         "Output T, " + ", ".join(f"Q{k} deg" for k in range(1, n + 1)),
         f"CODE Dynamics() pendulum{n}.c",

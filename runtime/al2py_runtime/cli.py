@@ -64,6 +64,18 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         "--plot", action="store_true", help="also write STEM.n.png plots"
     )
     parser.add_argument(
+        "--backend",
+        choices=("auto", "c", "llvm", "lambdify"),
+        help="how Dynamics/ODE equations are evaluated (default: $AL2PY_BACKEND"
+        " or auto, the fastest available)",
+    )
+    parser.add_argument(
+        "--emit-code",
+        metavar="DIR",
+        help="write the C program of each CODE Dynamics/ODE job into DIR"
+        " (as 'al2py code' does) instead of running",
+    )
+    parser.add_argument(
         "--no-run",
         action="store_true",
         help="only print the transcript; do not perform the CODE job",
@@ -106,6 +118,17 @@ def main(
     except NumericsError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.emit_code is not None:
+        from .cprogram import write_programs
+
+        written, errors = write_programs(ws, args.emit_code)
+        for path in written:
+            print(f"Wrote {path}")
+        for message in errors:
+            print(f"error: {message}", file=sys.stderr)
+        if not ws.jobs:
+            print(f"error: {ws.filename} has no CODE statement", file=sys.stderr)
+        return 2 if errors or not written else 0
     ws.print_transcript(source_lines)
     ws.write_saved_files(source_lines)
     if args.no_run:
@@ -113,7 +136,7 @@ def main(
     outdir = Path(args.outdir)
     for job in jobs:
         try:
-            result = ws.run_job(job, overrides)
+            result = ws.run_job(job, overrides, backend=args.backend)
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
             written = result.write(outdir)

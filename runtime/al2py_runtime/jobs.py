@@ -23,6 +23,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from . import backends
 from .kane import linear_terms
 from .records import (
     INTEGRATION_DEFAULTS,
@@ -47,6 +48,7 @@ __all__ = [
     "Result",
     "INTEGRATION_DEFAULTS",
     "run_job",
+    "ode_function",
     "check_overrides",
     "normalize_name",
 ]
@@ -419,11 +421,22 @@ def output_times(t0: float, t1: float, step: float) -> np.ndarray:
 # --------------------------------------------------------------------- runs
 
 
-def run_job(job: Job, overrides: Mapping[str, Any] | None = None) -> Result:
-    """Perform ``job`` with its Input values, changed by ``overrides``."""
+def run_job(
+    job: Job,
+    overrides: Mapping[str, Any] | None = None,
+    *,
+    backend: str | None = None,
+) -> Result:
+    """Perform ``job`` with its Input values, changed by ``overrides``.
+
+    ``backend`` chooses how Dynamics/ODE equations are evaluated (see
+    :mod:`.backends`; default ``$AL2PY_BACKEND`` or ``auto``)."""
     vals, keep = _input_values(job, overrides or {})
     if job.kind in ("DYNAMICS", "ODE"):
-        return _run_dynamics(job, vals, keep)
+        try:
+            return _run_dynamics(job, vals, keep, backend)
+        except backends.BackendError as exc:
+            raise NumericsError(str(exc)) from None
     if job.kind == "NONLINEAR":
         return _run_nonlinear(job, vals, keep)
     if job.kind == "ALGEBRAIC":
@@ -481,17 +494,22 @@ class _Dynamics:
     state_objs: list[Any]
     state_names: list[str]
     ud_objs: list[Any]
-    mf: Any  # (T, *y, *p) -> M (row-major) + f
-    deriv: Any  # (T, *y, *ud, *p) -> y'
-    outputs: list[Any]  # per table: (T, *y, *ud, *p) -> row
     params: list[Any]
-    # Fast path when no state derivative other than the accelerations themselves
-    # depends on the accelerations: one call gives M, f and those derivatives.
-    step: Any = None  # (T, *y, *p) -> M (row-major) + f + known y'
-    plan: tuple[tuple[bool, int], ...] = ()  # per state: (from solve?, index)
+    spec: backends.DynamicsSpec  # the equations, for any backend
+    compiled: backends.Compiled | None = None
 
 
-def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
+def _compile_dynamics(job: Job, keep: frozenset, backend: str | None) -> _Dynamics:
+    c = _dynamics_equations(job, keep)
+    try:
+        c.compiled = backends.compile_dynamics(c.spec, backend)
+    except backends.BackendError as exc:
+        raise NumericsError(f"{job.where}: {exc}") from None
+    return c
+
+
+def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
+    """The job's states, parameters and equations as sympy expressions."""
     table = _without(job.rhs, keep)
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
@@ -567,32 +585,19 @@ def _compile_dynamics(job: Job, keep: frozenset) -> _Dynamics:
             )
         mf_exprs = list(mass) + [-e for e in zero_at_0]
     outputs = _output_exprs(job, table, slots)
-    args_y = [slots.time, *ys]
-    params = list(slots.param_dummies)
-    out_funcs = [_lambdify([*args_y, *uds, *params], row) for row in outputs]
-    names = [label_of(o, job.names) for o in state_objs]
-    position = {u: j for j, u in enumerate(uds)}
-    known = [d for d in derivs if d not in position]
-    if not any(sp.sympify(d).has(*uds) for d in known):
-        # One generated function gives M, f and the other derivatives.
-        plan, k = [], 0
-        for d in derivs:
-            if d in position:
-                plan.append((True, position[d]))
-            else:
-                plan.append((False, k))
-                k += 1
-        step = _lambdify([*args_y, *params], [*mf_exprs, *known])
-        dynamics = _Dynamics(
-            state_objs, names, ud_objs, step, None, out_funcs, list(slots.params)
-        )
-        dynamics.step, dynamics.plan = step, tuple(plan)
-        return dynamics
-    mf = _lambdify([*args_y, *params], mf_exprs)
-    deriv = _lambdify([*args_y, *uds, *params], derivs)
-    return _Dynamics(
-        state_objs, names, ud_objs, mf, deriv, out_funcs, list(slots.params)
+    n = len(uds)
+    spec = backends.DynamicsSpec(
+        slots.time,
+        ys,
+        uds,
+        list(slots.param_dummies),
+        mf_exprs[: n * n],
+        mf_exprs[n * n :],
+        derivs,
+        outputs,
     )
+    names = [label_of(o, job.names) for o in state_objs]
+    return _Dynamics(state_objs, names, ud_objs, list(slots.params), spec)
 
 
 def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
@@ -607,35 +612,8 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-@dataclass
-class OdeSystem:
-    """The numeric equations of a dynamics job: ``fun(t, y)`` for
-    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
-    names, in internal units (the UnitSystem's, SI by default; radians).
-    ``accelerations(t, y)`` gives the derivatives solved from ``ZERO``."""
-
-    fun: Any
-    y0: list[float]
-    names: list[str]
-    accelerations: Any
-    compiled: _Dynamics
-    params: list[float]
-    clock: list[float]
-
-
-def _compiled(job: Job, keep: Iterable[Any]) -> _Dynamics:
-    key = ("dyn", frozenset(keep))
-    if key not in job._cache:
-        job._cache[key] = _compile_dynamics(job, frozenset(keep))
-    return job._cache[key]
-
-
-def ode_system(job: Job, vals: _Values, keep: set, t0: float = 0.0) -> OdeSystem:
-    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
-    where ``run()`` turns the equations into a numeric function)."""
-    c = _compiled(job, keep)
-    vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
-    p = [vals.param(obj) for obj in c.params]
+def _initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
+    """The states' values at TINITIAL, in internal units."""
     aliases = _state_aliases(job, c)
     y0 = []
     for name in c.state_names:
@@ -645,87 +623,105 @@ def ode_system(job: Job, vals: _Values, keep: set, t0: float = 0.0) -> OdeSystem
         y0.append(
             vals.get(name, job.initials.get(name, 0.0), note=name not in job.initials)
         )
-    n = len(c.ud_objs)
-    mf, deriv = c.mf, c.deriv
-    nn = n * n
+    return y0
+
+
+@dataclass
+class OdeSystem:
+    """The numeric equations of a dynamics job: ``fun(t, y)`` for
+    ``scipy.integrate.solve_ivp``, the initial state ``y0`` and the state
+    names, in internal units (the UnitSystem's, SI by default; radians).
+    ``outputs(t, y)`` gives the Output rows (internal units), one list per
+    Output statement."""
+
+    fun: Any
+    y0: list[float]
+    names: list[str]
+    outputs: Any
+    compiled: _Dynamics
+    params: list[float]
+    clock: list[float]
+
+
+def _compiled(job: Job, keep: Iterable[Any], backend: str | None) -> _Dynamics:
+    """The job's equations, built by ``backend`` once per job and backend."""
+    key = ("dyn", frozenset(keep), backends.choose(backend))
+    if key not in job._cache:
+        job._cache[key] = _compile_dynamics(job, frozenset(keep), key[2])
+    return job._cache[key]
+
+
+def ode_system(
+    job: Job,
+    vals: _Values,
+    keep: set,
+    t0: float = 0.0,
+    backend: str | None = None,
+) -> OdeSystem:
+    """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
+    where ``run()`` turns the equations into a numeric function, through the
+    backend chosen: see :mod:`.backends`)."""
+    try:
+        c = _compiled(job, keep, backend)
+    except backends.BackendError as exc:
+        raise NumericsError(str(exc)) from None
+    vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
+    p = [vals.param(obj) for obj in c.params]
+    y0 = _initial_state(job, c, vals)
+    bound = c.compiled.bind(p)
     clock = [t0]  # time of the latest evaluation, for messages
+    rhs = bound.rhs
 
-    def singular() -> NumericsError:
-        return NumericsError(
-            f"{job.where}: the coefficient matrix of "
-            + ", ".join(label_of(d, job.names) for d in c.ud_objs)
-            + f" in ZERO is singular at t = {clock[0]:g}"
-        )
-
-    def accelerations(tt: float, yl: list[float]) -> list[float]:
-        if not n:
-            return []
-        vals_mf = mf(tt, *yl, *p)
-        if n == 1:
-            if vals_mf[0] == 0:
-                raise singular()
-            return [vals_mf[1] / vals_mf[0]]
-        m = np.array(vals_mf[:nn]).reshape(n, n)
-        try:
-            return np.linalg.solve(m, vals_mf[nn : nn + n]).tolist()
-        except np.linalg.LinAlgError:
-            raise singular() from None
-
-    def fun(tt: float, y: np.ndarray) -> list[float]:
+    def fun(tt: float, y: np.ndarray) -> np.ndarray:
         clock[0] = tt
-        yl = _floats(y)
-        return deriv(tt, *yl, *accelerations(tt, yl), *p)
+        try:
+            return rhs(tt, y)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
 
-    if c.step is not None:
-        step, plan, nf = c.step, c.plan, nn + n
+    def outputs(tt: float, y: Any) -> list[list[float]]:
+        clock[0] = tt
+        try:
+            return bound.outputs(tt, y)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
 
-        def fun(tt: float, y: np.ndarray) -> list[float]:  # noqa: F811
-            clock[0] = tt
-            v = step(tt, *_floats(y), *p)
-            if n == 1:
-                if v[0] == 0:
-                    raise singular()
-                acc = [v[1] / v[0]]
-            elif n:
-                try:
-                    acc = np.linalg.solve(
-                        np.array(v[:nn]).reshape(n, n), v[nn:nf]
-                    ).tolist()
-                except np.linalg.LinAlgError:
-                    raise singular() from None
-            else:
-                acc = []
-            known = v[nf:]
-            return [acc[i] if solved else known[i] for solved, i in plan]
-
-    return OdeSystem(fun, y0, list(c.state_names), accelerations, c, p, clock)
+    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock)
 
 
-def _floats(y: Any) -> list[float]:
-    return y.tolist() if isinstance(y, np.ndarray) else [float(v) for v in y]
+def _singular(job: Job, c: _Dynamics, at: float) -> NumericsError:
+    return NumericsError(
+        f"{job.where}: the coefficient matrix of "
+        + ", ".join(label_of(d, job.names) for d in c.ud_objs)
+        + f" in ZERO is singular at t = {at:g}"
+    )
 
 
 def ode_function(
-    job: Job, overrides: Mapping[str, Any] | None = None
+    job: Job,
+    overrides: Mapping[str, Any] | None = None,
+    *,
+    backend: str | None = None,
 ) -> tuple[Any, list[float], list[str]]:
     """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
     equations of motion in internal units, with Inputs changed by
-    ``overrides`` (as ``run()``)."""
+    ``overrides`` (as ``run()``), evaluated by ``backend``."""
     if job.kind not in ("DYNAMICS", "ODE"):
         raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
     vals, keep = _input_values(job, overrides or {})
     ip = _integration(vals)
-    system = ode_system(job, vals, keep, ip["TINITIAL"])
+    system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
     return system.fun, list(system.y0), list(system.names)
 
 
-def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
+def _run_dynamics(
+    job: Job, vals: _Values, keep: set, backend: str | None = None
+) -> Result:
     from scipy.integrate import solve_ivp
 
     ip = _integration(vals)
-    system = ode_system(job, vals, keep, ip["TINITIAL"])
-    c, p, y0, fun = system.compiled, system.params, system.y0, system.fun
-    accelerations, clock = system.accelerations, system.clock
+    system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
+    c, y0, fun, clock = system.compiled, system.y0, system.fun, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     try:
         nfev = 0
@@ -750,13 +746,13 @@ def _run_dynamics(job: Job, vals: _Values, keep: set) -> Result:
             ys, nfev = sol.y, sol.nfev
         tables = []
         factors = _output_factors(job, vals)
-        rows_all = [[] for _ in c.outputs]
+        rows_all = [[] for _ in job.outputs]
         for i, tt in enumerate(times):
             clock[0] = float(tt)
-            yl = ys[:, i].tolist()
-            ud = accelerations(float(tt), yl)
-            for rows, func in zip(rows_all, c.outputs, strict=True):
-                rows.append(func(float(tt), *yl, *ud, *p))
+            for rows, row in zip(
+                rows_all, system.outputs(clock[0], ys[:, i]), strict=True
+            ):
+                rows.append(row)
     except NumericsError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError) as exc:

@@ -235,10 +235,13 @@ def axis_dcm(axis: sp.Matrix, angle: Any) -> sp.Matrix:
     numbers are ``axis`` (Rodrigues' rotation formula)."""
     k = sp.Matrix(axis)
     norm = sp.sqrt(sum(x**2 for x in k))
-    k = (k / norm).applyfunc(sp.simplify)
+    # Tidy a numeric axis (N1>, [1;1;0]); a symbolic one (parameters of a
+    # musculoskeletal model) is left alone: simplify() there takes minutes.
+    tidy = sp.simplify if all(x.is_number for x in k) else (lambda e: e)
+    k = (k / norm).applyfunc(tidy)
     c, s = sp.cos(angle), sp.sin(angle)
     m = c * sp.eye(3) + (1 - c) * k * k.T + s * _skew(k)
-    return m.applyfunc(sp.simplify)
+    return m.applyfunc(tidy)
 
 
 def vcross(a: Any, b: Any) -> Any:

@@ -282,34 +282,46 @@ class Numerics:
         return dict(self._numerics.inputs)
 
     def run(
-        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        backend: str | None = None,
+        **overrides: Any,
     ) -> Result:
         """Perform the script's ``CODE`` job (the last one if there are several).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
-        ``run({"X'": 1})``."""
+        ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
+        ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
+        see :mod:`al2py_runtime.backends`."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
-        return run_job(jobs[-1], merged)
+        return run_job(jobs[-1], merged, backend=backend)
 
     def ode_function(
-        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        backend: str | None = None,
+        **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
         """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
         ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
         UnitSystem's, SI by default; angles in radians).  Overrides are given
         as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
-        the same function."""
+        the same function; ``backend`` as for :meth:`run`."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
-        return ode_function(jobs[-1], merged)
+        return ode_function(jobs[-1], merged, backend=backend)
 
     def evaluate_name(
         self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
@@ -327,6 +339,12 @@ class Numerics:
         job = self._make_job("ALGEBRAIC", line=None)
         return evaluate_with_inputs(job, self._ws[name], name, merged)
 
-    def run_job(self, job: Job, values: Mapping[str, Any] | None = None) -> Result:
+    def run_job(
+        self,
+        job: Job,
+        values: Mapping[str, Any] | None = None,
+        *,
+        backend: str | None = None,
+    ) -> Result:
         """Perform one recorded job with optional overrides."""
-        return run_job(job, dict(values or {}))
+        return run_job(job, dict(values or {}), backend=backend)

@@ -155,9 +155,16 @@ class Workspace(Mapping):
         :meth:`Numerics.ode_function`)."""
         return self.numerics.ode_function(values, **overrides)
 
-    def run_job(self, job: Any, values: Mapping[str, Any] | None = None) -> Any:
-        """Perform one recorded job with optional overrides."""
-        return self.numerics.run_job(job, values)
+    def run_job(
+        self,
+        job: Any,
+        values: Mapping[str, Any] | None = None,
+        *,
+        backend: str | None = None,
+    ) -> Any:
+        """Perform one recorded job with optional overrides (``backend``: see
+        :mod:`.backends`)."""
+        return self.numerics.run_job(job, values, backend=backend)
 
     def main(self, source_lines: Any, argv: Any = None) -> int:
         """The ``python module.py`` entry point (see :mod:`.cli`)."""

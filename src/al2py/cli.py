@@ -28,7 +28,7 @@ from .transpile import convert
 __all__ = ["main"]
 
 EXIT_OK, EXIT_INPUT, EXIT_BUG, EXIT_INTERRUPTED = 0, 2, 3, 130
-SUBCOMMANDS = ("check", "convert")
+SUBCOMMANDS = ("check", "convert", "code")
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -151,6 +151,10 @@ def main(argv: list[str] | None = None) -> int:
     if argv is None:
         argv = sys.argv[1:]
     argv = list(argv)
+    if argv and argv[0] == "code":  # C programs of CODE statements
+        from .codegen_c import main as code_main
+
+        return _guarded(lambda: code_main(argv[1:]))
     if argv and argv[0] in SUBCOMMANDS:
         command = argv[0]
         parser = _check_parser() if command == "check" else _convert_parser()

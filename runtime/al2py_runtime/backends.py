@@ -1,0 +1,771 @@
+"""Numeric backends: sympy equations of motion -> a fast ``f(t, y)``.
+
+A :class:`DynamicsSpec` holds what a ``CODE Dynamics``/``ODE`` job
+integrates, as sympy expressions of the time, the states ``y``, the
+accelerations ``ud`` found from ``M ud = f`` and the parameters ``p``:
+
+* ``mass`` (row-major, ``n x n``) and ``forcing`` (``n``): ``M ud = f``;
+* ``derivs``: ``y'``, one per state (they may contain ``ud``);
+* ``outputs``: one list of expressions per output table;
+* ``intermediates``: optional ``(symbol, expr)`` pairs, in evaluation order,
+  that the other expressions may use.
+
+:func:`compile_dynamics` turns it into a :class:`Compiled` object;
+``compiled.bind(p)`` gives ``rhs(t, y) -> ndarray`` for ``solve_ivp`` and
+``outputs(t, y) -> list of rows`` (one per table).  Backends:
+
+``c``
+    C99 from :mod:`sympy.codegen` (``ccode`` after ``cse``), with the linear
+    solve (Gaussian elimination, partial pivoting) in the same C function;
+    built with the system C compiler (``$CC``, ``cc``, ``gcc`` or ``clang``)
+    into a shared library, loaded with :mod:`ctypes`, cached by content hash
+    in the user cache folder (:func:`cache_dir`).  One compiled call per
+    right-hand-side evaluation.
+``llvm``
+    SymEngine's ``Lambdify`` with its LLVM backend for ``M``, ``f`` and the
+    derivatives (no C compiler needed); the solve is ``numpy.linalg.solve``.
+``lambdify``
+    ``sympy.lambdify(cse=True, modules="math")`` and ``numpy.linalg.solve``:
+    always available.
+
+``auto`` (the default) takes the first of these that is available and can
+print the equations, and says in one line on stderr why when it has to fall
+back to ``lambdify``.  ``AL2PY_BACKEND`` sets the default for a process.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import math
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import sympy as sp
+from sympy.printing.c import C99CodePrinter
+
+__all__ = [
+    "BACKENDS",
+    "BackendError",
+    "Compiled",
+    "DynamicsSpec",
+    "SingularMatrixError",
+    "available",
+    "cache_dir",
+    "choose",
+    "c_model_source",
+    "compile_dynamics",
+    "find_compiler",
+]
+
+#: Backend names, fastest first; ``auto`` picks the first available.
+BACKENDS = ("c", "llvm", "lambdify")
+
+
+class BackendError(RuntimeError):
+    """A backend cannot be used (no compiler, unsupported function, ...)."""
+
+
+class SingularMatrixError(ArithmeticError):
+    """The mass matrix is singular at the time ``t``."""
+
+    def __init__(self, t: float) -> None:
+        super().__init__(f"singular mass matrix at t = {t:g}")
+        self.t = t
+
+
+@dataclass
+class DynamicsSpec:
+    """Equations of a Dynamics/ODE job; see the module docstring."""
+
+    time: Any
+    states: list[Any]
+    accels: list[Any]
+    params: list[Any]
+    mass: list[Any]
+    forcing: list[Any]
+    derivs: list[Any]
+    outputs: list[list[Any]] = field(default_factory=list)
+    intermediates: list[tuple[Any, Any]] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        n = len(self.accels)
+        if len(self.mass) != n * n or len(self.forcing) != n:
+            raise ValueError("mass must be n*n and forcing n for n accelerations")
+        if len(self.derivs) != len(self.states):
+            raise ValueError("one derivative per state")
+
+
+class Bound:
+    """A compiled job with its parameter values: ``rhs`` and ``outputs``."""
+
+    rhs: Callable[[float, np.ndarray], np.ndarray]
+
+    def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
+        raise NotImplementedError  # pragma: no cover
+
+
+@dataclass
+class Compiled:
+    """What :func:`compile_dynamics` returns."""
+
+    backend: str
+    bind: Callable[[Sequence[float]], Bound]
+    #: seconds spent generating code and compiling (0 for a cache hit build)
+    build_seconds: float = 0.0
+    cache_hit: bool = False
+    note: str | None = None
+
+
+# ------------------------------------------------------------------ choice
+
+
+def find_compiler() -> str | None:
+    """The C compiler: ``$CC`` if set, else ``cc``, ``gcc`` or ``clang``."""
+    env = os.environ.get("CC")
+    if env:
+        return shutil.which(env.split()[0]) and env
+    for name in ("cc", "gcc", "clang"):
+        if shutil.which(name):
+            return name
+    return None
+
+
+def _has_llvm() -> bool:
+    try:
+        import symengine as se
+    except ImportError:
+        return False
+    try:
+        x = se.Symbol("x")
+        se.Lambdify([x], [x], backend="llvm")
+    except Exception:  # noqa: BLE001 - a wheel built without LLVM
+        return False
+    return True
+
+
+_AVAILABLE: dict[str, bool] = {}
+
+
+def available(backend: str) -> bool:
+    """Whether ``backend`` can be used on this machine."""
+    if backend not in _AVAILABLE:
+        if backend == "c":
+            _AVAILABLE[backend] = find_compiler() is not None
+        elif backend == "llvm":
+            _AVAILABLE[backend] = _has_llvm()
+        else:
+            _AVAILABLE[backend] = backend == "lambdify"
+    return _AVAILABLE[backend]
+
+
+def choose(requested: str | None = None) -> str:
+    """``requested``, else ``$AL2PY_BACKEND``, else ``auto``; checked."""
+    name = (requested or os.environ.get("AL2PY_BACKEND") or "auto").strip().lower()
+    if name != "auto" and name not in BACKENDS:
+        raise BackendError(
+            f"unknown backend {name!r}; choose one of auto, {', '.join(BACKENDS)}"
+        )
+    return name
+
+
+_SAID: set[str] = set()
+
+
+def _say_once(line: str) -> None:
+    if line not in _SAID:
+        _SAID.add(line)
+        print(f"al2py: note: {line}", file=sys.stderr)
+
+
+def compile_dynamics(spec: DynamicsSpec, backend: str | None = None) -> Compiled:
+    """Build ``spec`` with ``backend`` (``auto``, ``c``, ``llvm`` or
+    ``lambdify``; ``None`` reads ``$AL2PY_BACKEND``).  An explicit backend
+    that cannot be used raises :class:`BackendError`; ``auto`` falls back."""
+    name = choose(backend)
+    spec = _canonical(spec)
+    builders = {"c": _build_c, "llvm": _build_llvm, "lambdify": _build_lambdify}
+    if name != "auto":
+        if not available(name):
+            raise BackendError(_unavailable(name))
+        return builders[name](spec)
+    reasons = []
+    for candidate in BACKENDS:
+        if not available(candidate):
+            reasons.append(_unavailable(candidate))
+            continue
+        try:
+            compiled = builders[candidate](spec)
+        except BackendError as exc:
+            reasons.append(str(exc))
+            continue
+        if candidate == "lambdify" and reasons:
+            compiled.note = "using the lambdify backend (slower): " + "; ".join(reasons)
+            _say_once(compiled.note)
+        return compiled
+    raise BackendError("; ".join(reasons))  # pragma: no cover - lambdify works
+
+
+def _unavailable(name: str) -> str:
+    if name == "c":
+        return "no C compiler found (set CC)"
+    if name == "llvm":
+        return "symengine with LLVM is not installed"
+    return f"backend {name} is not available"  # pragma: no cover
+
+
+# ------------------------------------------------------------ canonical form
+
+
+def _canonical(spec: DynamicsSpec) -> DynamicsSpec:
+    """The same spec with plain symbols ``t, y0.., ud0.., p0.., z0..`` so that
+    every backend (and the C printer) sees predictable names."""
+    table: dict[Any, Any] = {spec.time: sp.Symbol("t", real=True)}
+    names = []
+    for prefix, objs in (("y", spec.states), ("ud", spec.accels), ("p", spec.params)):
+        out = []
+        for k, obj in enumerate(objs):
+            s = sp.Symbol(f"{prefix}[{k}]", real=True)
+            table[obj] = s
+            out.append(s)
+        names.append(out)
+    inter = []
+    for k, (sym, expr) in enumerate(spec.intermediates):
+        s = sp.Symbol(f"z{k}", real=True)
+        inter.append((s, sp.sympify(expr).xreplace(table)))
+        table[sym] = s
+
+    def sub(e: Any) -> Any:
+        return sp.sympify(e).xreplace(table)
+
+    return DynamicsSpec(
+        table[spec.time],
+        names[0],
+        names[1],
+        names[2],
+        [sub(e) for e in spec.mass],
+        [sub(e) for e in spec.forcing],
+        [sub(e) for e in spec.derivs],
+        [[sub(e) for e in row] for row in spec.outputs],
+        inter,
+    )
+
+
+def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
+    """Indices of derivatives free of ``ud`` and of those that use it."""
+    uds = set(spec.accels)
+    inter_uses = {s for s, e in spec.intermediates if e.free_symbols & uds}
+    free, uses = [], []
+    for i, e in enumerate(spec.derivs):
+        syms = e.free_symbols
+        (uses if syms & uds or syms & inter_uses else free).append(i)
+    return free, uses
+
+
+# ----------------------------------------------------------------- lambdify
+
+_NAMESPACE = {
+    "trunc": lambda x: float(math.trunc(x)),
+    "nint": lambda x: math.copysign(math.floor(abs(x) + 0.5), x),
+}
+
+
+def _inline(spec: DynamicsSpec, exprs: list[Any]) -> list[Any]:
+    """``exprs`` with the intermediates substituted (last to first)."""
+    for sym, expr in reversed(spec.intermediates):
+        exprs = [e.xreplace({sym: expr}) for e in exprs]
+    return exprs
+
+
+def _lambdify(args: list[Any], exprs: list[Any]) -> Callable[..., list[float]]:
+    if not exprs:
+        return lambda *a: []
+    return sp.lambdify(args, list(exprs), modules=[_NAMESPACE, "math"], cse=True)
+
+
+def _solve(n: int, v: list[float], t: float) -> list[float]:
+    """``M ud = f`` from ``v = [*M (row-major), *f, ...]``."""
+    if n == 0:
+        return []
+    if n == 1:
+        if v[0] == 0:
+            raise SingularMatrixError(t)
+        return [v[1] / v[0]]
+    nn = n * n
+    try:
+        return np.linalg.solve(np.array(v[:nn]).reshape(n, n), v[nn : nn + n]).tolist()
+    except np.linalg.LinAlgError:
+        raise SingularMatrixError(t) from None
+
+
+class _PyBound(Bound):
+    """Shared by ``lambdify`` and ``llvm``: ``mf(t, y, p) -> [M, f, free]``,
+    ``late(t, y, ud, p) -> derivatives using ud``."""
+
+    def __init__(self, n, ny, mf, late, plan, outs, p) -> None:
+        p = list(p)
+        nf = n * n + n
+
+        def rhs(t: float, y: np.ndarray) -> np.ndarray:
+            y = np.asarray(y, dtype=float)
+            v = mf(t, y, p)
+            ud = _solve(n, v, t)
+            out = np.empty(ny)
+            free = v[nf:]
+            later = late(t, y, ud, p) if late is not None else ()
+            for i, (early, k) in enumerate(plan):
+                out[i] = free[k] if early else later[k]
+            return out
+
+        def accel(t: float, y: Sequence[float]) -> list[float]:
+            return _solve(n, mf(t, np.asarray(y, dtype=float), p), t)
+
+        self.rhs = rhs
+        self._accel = accel
+        self._outs = outs
+        self._p = p
+
+    def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
+        ud = self._accel(t, y)
+        yl = list(y)
+        return [list(f(t, *yl, *ud, *self._p)) for f in self._outs]
+
+
+def _plan(spec: DynamicsSpec) -> tuple[list[int], list[int], list[tuple[bool, int]]]:
+    free, uses = _split_derivs(spec)
+    plan: list[tuple[bool, int]] = [(True, 0)] * len(spec.derivs)
+    for k, i in enumerate(free):
+        plan[i] = (True, k)
+    for k, i in enumerate(uses):
+        plan[i] = (False, k)
+    return free, uses, plan
+
+
+def _build_lambdify(spec: DynamicsSpec) -> Compiled:
+    import time
+
+    start = time.perf_counter()
+    free, uses, plan = _plan(spec)
+    y, ud, p, t = spec.states, spec.accels, spec.params, spec.time
+    first = _inline(spec, [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)])
+    step = _lambdify([t, *y, *p], first)
+    late_f = _lambdify([t, *y, *ud, *p], _inline(spec, [spec.derivs[i] for i in uses]))
+    outs = [_lambdify([t, *y, *ud, *p], _inline(spec, row)) for row in spec.outputs]
+    n, ny = len(ud), len(y)
+
+    def mf(tt, yy, pp):
+        return step(tt, *yy.tolist(), *pp)
+
+    late = None
+    if uses:
+
+        def late(tt, yy, uu, pp):
+            return late_f(tt, *yy.tolist(), *uu, *pp)
+
+    def bind(values: Sequence[float]) -> Bound:
+        return _PyBound(n, ny, mf, late, plan, outs, values)
+
+    return Compiled("lambdify", bind, time.perf_counter() - start)
+
+
+# --------------------------------------------------------------------- llvm
+
+
+def _build_llvm(spec: DynamicsSpec) -> Compiled:
+    import time
+
+    import symengine as se
+
+    start = time.perf_counter()
+    free, uses, plan = _plan(spec)
+    y, ud, p, t = spec.states, spec.accels, spec.params, spec.time
+    first = _inline(spec, [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)])
+    later = _inline(spec, [spec.derivs[i] for i in uses])
+    try:
+        step = se.Lambdify([t, *y, *p], first, backend="llvm", cse=True)
+        late_f = (
+            se.Lambdify([t, *y, *ud, *p], later, backend="llvm", cse=True)
+            if later
+            else None
+        )
+    except Exception as exc:  # noqa: BLE001 - symengine cannot take a function
+        raise BackendError(
+            f"llvm backend cannot compile the equations: {exc}"
+        ) from None
+    outs = [_lambdify([t, *y, *ud, *p], _inline(spec, row)) for row in spec.outputs]
+    n, ny, np_ = len(ud), len(y), len(p)
+    buf = np.empty(1 + ny + np_)
+
+    def mf(tt, yy, pp):
+        buf[0] = tt
+        buf[1 : 1 + ny] = yy
+        buf[1 + ny :] = pp
+        return step(buf).tolist() if first else []
+
+    late = None
+    if late_f is not None:
+
+        def late(tt, yy, uu, pp):
+            return late_f([tt, *yy.tolist(), *uu, *pp]).tolist()
+
+    def bind(values: Sequence[float]) -> Bound:
+        return _PyBound(n, ny, mf, late, plan, outs, values)
+
+    return Compiled("llvm", bind, time.perf_counter() - start)
+
+
+# ------------------------------------------------------------------------ C
+
+
+class _Printer(C99CodePrinter):
+    """C99 with small integer powers as products and Autolev's functions."""
+
+    def __init__(self) -> None:
+        super().__init__(
+            {
+                "strict": True,
+                "user_functions": {"trunc": "trunc"},
+                # Strict C99 has no M_PI, M_SQRT2, ...: print numbers.
+                "math_macros": {sp.Symbol("_al2py_none_"): "_AL2PY_NONE_"},
+            }
+        )
+
+    def _print_Pi(self, expr: Any) -> str:
+        return repr(math.pi)
+
+    def _print_Exp1(self, expr: Any) -> str:
+        return repr(math.e)
+
+    def _print_Pow(self, expr: Any) -> str:
+        base, exp = expr.args
+        if exp.is_Integer and 2 <= abs(int(exp)) <= 4:
+            b = self.parenthesize(base, 1000)  # a product needs its own parens
+            prod = "*".join([b] * abs(int(exp)))
+            return f"({prod})" if exp > 0 else f"(1.0/({prod}))"
+        return super()._print_Pow(expr)
+
+    def _print_nint(self, expr: Any) -> str:
+        x = self._print(expr.args[0])
+        return f"copysign(floor(fabs({x}) + 0.5), {x})"
+
+    def _print_sign(self, expr: Any) -> str:
+        x = self._print(expr.args[0])
+        return f"(double)(((({x}) > 0) - (({x}) < 0)))"
+
+
+def _ccode(expr: Any, printer: _Printer) -> str:
+    try:
+        return printer.doprint(expr)
+    except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
+        what = str(exc).split("\n")[0]
+        raise BackendError(f"the C backend cannot print {expr}: {what}") from None
+
+
+def _block(
+    exprs: list[Any], targets: list[str], printer: _Printer, prefix: str, indent: str
+) -> list[str]:
+    """C statements assigning ``exprs`` to ``targets`` after common
+    subexpression elimination (temporaries ``double {prefix}N``)."""
+    if not exprs:
+        return []
+    temps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="none")
+    lines = [f"{indent}const double {s} = {_ccode(e, printer)};" for s, e in temps]
+    for target, e in zip(targets, reduced, strict=True):
+        lines.append(f"{indent}{target} = {_ccode(e, printer)};")
+    return lines
+
+
+_SOLVE_C = r"""
+/* Solve a x = b (n x n, row-major) by Gaussian elimination with partial
+   pivoting; a and b are overwritten, x is left in b.  Returns 1 if a is
+   singular (an exactly zero pivot, as LAPACK reports), else 0. */
+static int al_solve(int n, double *a, double *b)
+{
+    for (int k = 0; k < n; k++) {
+        int piv = k;
+        double big = fabs(a[k * n + k]);
+        for (int i = k + 1; i < n; i++) {
+            double v = fabs(a[i * n + k]);
+            if (v > big) {
+                big = v;
+                piv = i;
+            }
+        }
+        if (big == 0.0) return 1;
+        if (piv != k) {
+            for (int j = k; j < n; j++) {
+                double s = a[k * n + j];
+                a[k * n + j] = a[piv * n + j];
+                a[piv * n + j] = s;
+            }
+            double s = b[k];
+            b[k] = b[piv];
+            b[piv] = s;
+        }
+        double d = a[k * n + k];
+        for (int i = k + 1; i < n; i++) {
+            double l = a[i * n + k] / d;
+            if (l == 0.0) continue;
+            for (int j = k + 1; j < n; j++) a[i * n + j] -= l * a[k * n + j];
+            b[i] -= l * b[k];
+        }
+    }
+    for (int i = n - 1; i >= 0; i--) {
+        double s = b[i];
+        for (int j = i + 1; j < n; j++) s -= a[i * n + j] * b[j];
+        b[i] = s / a[i * n + i];
+    }
+    return 0;
+}
+"""
+
+
+def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
+    """C99 for ``spec`` (canonical form): ``al_rhs``, ``al_out`` and helpers.
+
+    ``int al_rhs(double t, const double *y, const double *p, double *dy)``
+    writes ``y'`` and returns 0, 1 for a singular mass matrix, 2 for a value
+    that is not finite.  ``int al_out(double t, const double *y,
+    const double *p, double *out)`` writes every output, table after table.
+    ``api`` prefixes both (``static`` for a standalone program)."""
+    spec = _canonical(spec) if not _is_canonical(spec) else spec
+    printer = _Printer()
+    n, ny, nout = len(spec.accels), len(spec.states), sum(map(len, spec.outputs))
+    free, uses, _plan_ = _plan(spec)
+    lines = [
+        "#include <math.h>",
+        "",
+        f"#define AL_NY {ny}  /* states */",
+        f"#define AL_NU {n}  /* accelerations solved from M ud = f */",
+        f"#define AL_NP {len(spec.params)}  /* parameters */",
+        f"#define AL_NOUT {nout}  /* outputs, all tables */",
+    ]
+    if n:
+        lines.append(_SOLVE_C)
+    # M, f and the derivatives free of ud: one function, shared by both.
+    lines += [
+        "/* M (row-major), f, and the state derivatives that do not need ud */",
+        "static void al_mf(double t, const double *y, const double *p,"
+        " double *m, double *f, double *dy)",
+        "{",
+        "    (void)t; (void)y; (void)p; (void)m; (void)f; (void)dy;",
+    ]
+    targets = [f"m[{k}]" for k in range(n * n)] + [f"f[{k}]" for k in range(n)]
+    targets += [f"dy[{i}]" for i in free]
+    exprs = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
+    lines += _intermediates(spec, exprs, printer, "    ")
+    lines += _block(exprs, targets, printer, "x", "    ")
+    lines += ["}", ""]
+    m_decl = (
+        [f"    double m[{n * n}], ud[{n}];"] if n else ["    double *m = 0, *ud = 0;"]
+    )
+    lines += [
+        f"{api}int al_rhs(double t, const double *y, const double *p, double *dy)",
+        "{",
+        *m_decl,
+        "    al_mf(t, y, p, m, ud, dy);",
+    ]
+    if n:
+        lines.append(f"    if (al_solve({n}, m, ud)) return 1;")
+    if uses:
+        late = [spec.derivs[i] for i in uses]
+        lines += ["    {", *_intermediates(spec, late, printer, "        ")]
+        lines += _block(
+            late,
+            [f"dy[{i}]" for i in uses],
+            printer,
+            "w",
+            "        ",
+        )
+        lines.append("    }")
+    lines += [
+        "    for (int i = 0; i < AL_NY; i++)",
+        "        if (!isfinite(dy[i])) return 2;",
+        "    return 0;",
+        "}",
+        "",
+        f"{api}int al_out(double t, const double *y, const double *p, double *out)",
+        "{",
+        *m_decl,
+        f"    double dy[{max(ny, 1)}];",
+        "    (void)t; (void)y; (void)p; (void)out; (void)ud;",
+        "    al_mf(t, y, p, m, ud, dy);",
+    ]
+    if n:
+        lines.append(f"    if (al_solve({n}, m, ud)) return 1;")
+    all_out = [e for row in spec.outputs for e in row]
+    lines += _intermediates(spec, all_out, printer, "    ")
+    lines += _block(all_out, [f"out[{k}]" for k in range(nout)], printer, "o", "    ")
+    lines += ["    return 0;", "}", ""]
+    return "\n".join(lines)
+
+
+def _intermediates(
+    spec: DynamicsSpec, exprs: list[Any], printer: _Printer, indent: str
+) -> list[str]:
+    """Declarations of the intermediates that ``exprs`` need, in order."""
+    needed: set[Any] = set()
+    for e in exprs:
+        needed |= e.free_symbols
+    keep = []
+    for sym, expr in reversed(spec.intermediates):
+        if sym in needed:
+            keep.append((sym, expr))
+            needed |= expr.free_symbols
+    return [
+        f"{indent}const double {s} = {_ccode(e, printer)};" for s, e in reversed(keep)
+    ]
+
+
+def _is_canonical(spec: DynamicsSpec) -> bool:
+    return (
+        isinstance(spec.time, sp.Symbol)
+        and spec.time.name == "t"
+        and all(getattr(s, "name", "") == f"y[{k}]" for k, s in enumerate(spec.states))
+        and all(getattr(s, "name", "") == f"p[{k}]" for k, s in enumerate(spec.params))
+        and all(getattr(s, "name", "") == f"ud[{k}]" for k, s in enumerate(spec.accels))
+    )
+
+
+def cache_dir() -> Path:
+    """Where compiled models are kept: ``$AL2PY_CACHE_DIR``, else the
+    platform's user cache folder (``$XDG_CACHE_HOME/al2py`` or
+    ``~/.cache/al2py`` on Linux, ``~/Library/Caches/al2py`` on macOS,
+    ``%LOCALAPPDATA%\\al2py`` on Windows)."""
+    env = os.environ.get("AL2PY_CACHE_DIR")
+    if env:
+        return Path(env)
+    home = Path.home()
+    if sys.platform == "win32":
+        base = Path(os.environ.get("LOCALAPPDATA") or home / "AppData" / "Local")
+    elif sys.platform == "darwin":
+        base = home / "Library" / "Caches"
+    else:
+        base = Path(os.environ.get("XDG_CACHE_HOME") or home / ".cache")
+    return base / "al2py"
+
+
+C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-shared")
+
+
+def build_shared(source: str) -> tuple[Path, bool]:
+    """Compile ``source`` into a shared library in :func:`cache_dir`, named
+    by the hash of the source, compiler and flags.  Returns (path, cache hit)."""
+    cc = find_compiler()
+    if cc is None:
+        raise BackendError(_unavailable("c"))
+    key = hashlib.sha256(
+        "\0".join([source, cc, *C_FLAGS, sys.platform, platform.machine()]).encode()
+    ).hexdigest()[:24]
+    suffix = ".dll" if sys.platform == "win32" else ".so"
+    folder = cache_dir()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        user = getattr(os, "getuid", lambda: "user")()
+        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
+        folder.mkdir(parents=True, exist_ok=True)
+    lib = folder / f"al2py_{key}{suffix}"
+    if lib.exists():
+        return lib, True
+    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+        src = Path(tmp) / "model.c"
+        src.write_text(source, encoding="utf-8")
+        out = Path(tmp) / f"model{suffix}"
+        cmd = [*cc.split(), *C_FLAGS, "-o", str(out), str(src), "-lm"]
+        try:
+            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        except (OSError, subprocess.TimeoutExpired) as exc:
+            raise BackendError(f"the C compiler failed: {exc}") from None
+        if proc.returncode != 0:
+            lines = proc.stderr.strip().splitlines() or ["(no message)"]
+            first = next((ln for ln in lines if "error" in ln), lines[0])
+            raise BackendError(f"the C compiler failed: {first}")
+        os.replace(out, lib)  # atomic: concurrent builds of one model are safe
+    return lib, False
+
+
+class _CBound(Bound):
+    def __init__(self, lib: Any, ny: int, nout: int, rows: list[int], p) -> None:
+        self._p = np.ascontiguousarray(p, dtype=float).reshape(-1)
+        self._pp = self._p.ctypes.data if self._p.size else None
+        self._lib = lib
+        c_rhs, c_out = lib.al_rhs, lib.al_out
+        pp = self._pp
+        asarray = np.ascontiguousarray
+        empty = np.empty
+
+        # The closures hold the parameter array and the library: ``pp`` is a
+        # bare address, valid only while the array lives.
+        keep = (self._p, lib)
+
+        def rhs(t: float, y: np.ndarray, _keep: Any = keep) -> np.ndarray:
+            y = asarray(y, dtype=float)
+            dy = empty(ny)
+            code = c_rhs(t, y.ctypes.data, pp, dy.ctypes.data)
+            if code:
+                _raise(code, t)
+            return dy
+
+        def outs(t: float, y: Sequence[float], _keep: Any = keep) -> list[list[float]]:
+            yy = asarray(y, dtype=float)
+            out = empty(max(nout, 1))
+            code = c_out(t, yy.ctypes.data, pp, out.ctypes.data)
+            if code:
+                _raise(code, t)
+            values = out.tolist()
+            result, k = [], 0
+            for r in rows:
+                result.append(values[k : k + r])
+                k += r
+            return result
+
+        self.rhs = rhs
+        self._outs = outs
+
+    def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
+        return self._outs(t, y)
+
+
+def _raise(code: int, t: float) -> None:
+    if code == 1:
+        raise SingularMatrixError(t)
+    raise ValueError("a value is not finite (division by zero or a math domain error)")
+
+
+def _build_c(spec: DynamicsSpec) -> Compiled:
+    import time
+
+    start = time.perf_counter()
+    source = c_model_source(spec, api="")
+    path, hit = build_shared(source)
+    try:
+        lib = ctypes.CDLL(str(path))
+    except OSError as exc:
+        raise BackendError(f"cannot load the compiled model {path}: {exc}") from None
+    for name in ("al_rhs", "al_out"):
+        fn = getattr(lib, name)
+        fn.argtypes = [
+            ctypes.c_double,
+            ctypes.c_void_p,
+            ctypes.c_void_p,
+            ctypes.c_void_p,
+        ]
+        fn.restype = ctypes.c_int
+    ny = len(spec.states)
+    nout = sum(map(len, spec.outputs))
+    rows = [len(r) for r in spec.outputs]
+
+    def bind(values: Sequence[float]) -> Bound:
+        return _CBound(lib, ny, nout, rows, values)
+
+    return Compiled("c", bind, time.perf_counter() - start, cache_hit=hit)
