@@ -4,12 +4,21 @@ A chain of n rigid bodies in 3-D, each joined to the previous one by a
 spherical joint and oriented by body-fixed 1-2-3 angles, so the model has 3n
 generalized speeds (n = 8 gives 24, the size of a detailed bicycle model).
 
-    python benchmarks/large.py          # n = 2, 3, 4
-    python benchmarks/large.py 6 10     # chosen sizes
+For each size it prints the derivation time with intermediate variables
+(``al2py_runtime.fastkane.FastKane``, meant for al2py's own derivation, issue 10),
+sympy's ``KanesMethod`` without intermediates on the same sympy model, their
+ratio, and the conversion and import time of the converted Autolev script
+through the runtime; then the growth exponent of each column.  ``KanesMethod``
+and the import run in a child process stopped after ``--budget`` seconds
+(shown as ``>budget``).
+
+    python benchmarks/large.py                 # n = 2, 3, 4, 5, 6, 8
+    python benchmarks/large.py 6 8 --budget 600
 """
 
 from __future__ import annotations
 
+import argparse
 import importlib.util
 import sys
 import tempfile
@@ -18,9 +27,13 @@ from pathlib import Path
 
 import al2py_runtime  # noqa: F401  (library import is not model derivation)
 import sympy as sp  # noqa: E402  (after al2py_runtime, as users would)
+from al2py_runtime.fastkane import FastKane  # noqa: E402
 from sympy.physics import mechanics as me  # noqa: E402
 
-from al2py import convert
+from al2py import convert  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from budget import exponent, show, within  # noqa: E402
 
 
 def chain_source(n: int) -> str:
@@ -58,9 +71,9 @@ def chain_source(n: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-def kanesmethod_seconds(n: int) -> float:
-    """The same chain written directly with ``KanesMethod`` (for comparison)."""
-    start = time.perf_counter()
+def chain_inputs(n: int) -> dict:
+    """The same chain written directly in sympy mechanics (KanesMethod's
+    inputs)."""
     q = me.dynamicsymbols(f"q1:{3 * n + 1}")
     u = me.dynamicsymbols(f"u1:{3 * n + 1}")
     length, mass, ia, it, g = sp.symbols("L M IA IT G")
@@ -82,45 +95,100 @@ def kanesmethod_seconds(n: int) -> float:
         bodies.append(me.RigidBody(f"R{k + 1}", center, frame, mass, (inertia, center)))
         loads.append((center, -mass * g * frame_n.z))
         parent, previous = frame, center
-    kane = me.KanesMethod(frame_n, q_ind=q, u_ind=u, kd_eqs=kd)
+    return dict(frame=frame_n, q_ind=q, u_ind=u, kd_eqs=kd, bodies=bodies, loads=loads)
+
+
+def kanesmethod_seconds(n: int) -> float:
+    """Build the chain and derive it with ``KanesMethod`` (no intermediates)."""
+    start = time.perf_counter()
+    inputs = chain_inputs(n)
+    bodies, loads = inputs.pop("bodies"), inputs.pop("loads")
+    kane = me.KanesMethod(**inputs)
     kane.kanes_equations(bodies, loads)
     return time.perf_counter() - start
 
 
-def measure(n: int, workdir: Path) -> tuple[float, float, int]:
-    source = chain_source(n)
-    path = workdir / f"chain{n}.al"
-    path.write_text(source)
+def fastkane_seconds(n: int) -> float:
+    """Build the chain and derive it with intermediates (FastKane)."""
     start = time.perf_counter()
-    result = convert(source, str(path))
-    t_convert = time.perf_counter() - start
-    module_path = workdir / f"chain{n}.py"
-    module_path.write_text(result.code)
-    spec = importlib.util.spec_from_file_location(f"chain{n}", module_path)
-    module = importlib.util.module_from_spec(spec)
-    start = time.perf_counter()
-    spec.loader.exec_module(module)
-    t_import = time.perf_counter() - start
-    equations = len(module.AUTOLEV["ZERO"])
-    return t_convert, t_import, equations
+    inputs = chain_inputs(n)
+    bodies, loads = inputs.pop("bodies"), inputs.pop("loads")
+    kane = FastKane(**inputs)
+    kane.kanes_equations(bodies, loads)
+    return time.perf_counter() - start
+
+
+def al2py_seconds(n: int) -> tuple[float, float, int]:
+    """Convert the Autolev chain and import (derive) the module."""
+    with tempfile.TemporaryDirectory() as tmp:
+        workdir = Path(tmp)
+        source = chain_source(n)
+        path = workdir / f"chain{n}.al"
+        path.write_text(source)
+        start = time.perf_counter()
+        result = convert(source, str(path))
+        t_convert = time.perf_counter() - start
+        module_path = workdir / f"chain{n}.py"
+        module_path.write_text(result.code)
+        spec = importlib.util.spec_from_file_location(f"chain{n}", module_path)
+        module = importlib.util.module_from_spec(spec)
+        start = time.perf_counter()
+        spec.loader.exec_module(module)
+        t_import = time.perf_counter() - start
+        return t_convert, t_import, len(module.AUTOLEV["ZERO"])
+
+
+def best(fn, n: int, repeats: int) -> float:
+    return min(fn(n) for _ in range(repeats))
 
 
 def main(argv: list[str]) -> int:
-    sizes = [int(a) for a in argv] or [2, 3, 4]
-    print(
-        f"{'bodies':>6} {'speeds':>6} {'lines':>6} {'convert s':>10} "
-        f"{'import s':>9} {'Kanes s':>8} {'ratio':>6}"
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("sizes", nargs="*", type=int, default=[2, 3, 4, 5, 6, 8])
+    parser.add_argument(
+        "--budget", type=float, default=120.0, help="seconds per KanesMethod or import"
     )
-    with tempfile.TemporaryDirectory() as tmp:
-        for n in sizes:
-            t_convert, t_import, equations = measure(n, Path(tmp))
-            t_kane = kanesmethod_seconds(n)
-            lines = len(chain_source(n).splitlines())
-            print(
-                f"{n:>6} {equations:>6} {lines:>6} {t_convert:>10.2f} "
-                f"{t_import:>9.2f} {t_kane:>8.2f} {t_import / t_kane:>6.2f}",
-                flush=True,
-            )
+    parser.add_argument(
+        "--no-import", action="store_true", help="skip converting and importing the .al"
+    )
+    args = parser.parse_args(argv)
+    print(
+        f"{'bodies':>6} {'speeds':>6} {'FastKane s':>10} {'Kanes s':>8} {'ratio':>6} "
+        f"{'convert s':>9} {'import s':>8}",
+        flush=True,
+    )
+    fast_times, kane_times, import_times = [], [], []
+    for n in args.sizes:
+        t_fast = best(fastkane_seconds, n, 3 if n <= 4 else 1)
+        status, t_kane, _ = within(args.budget, kanesmethod_seconds, n)
+        kane_col = show(status, t_kane if status == "ok" else 0, args.budget)
+        ratio = (
+            f"{t_kane / t_fast:.1f}"
+            if status == "ok"
+            else f">{args.budget / t_fast:.0f}"
+        )
+        if args.no_import:
+            conv_col = imp_col = "-"
+            t_imp = None
+        else:
+            status_i, out, _ = within(args.budget, al2py_seconds, n)
+            conv_col = f"{out[0]:.2f}" if status_i == "ok" else "-"
+            imp_col = show(status_i, out[1] if status_i == "ok" else 0, args.budget)
+            t_imp = out[1] if status_i == "ok" else None
+        fast_times.append(t_fast)
+        kane_times.append(t_kane if status == "ok" else None)
+        import_times.append(t_imp)
+        print(
+            f"{n:>6} {3 * n:>6} {t_fast:>10.2f} {kane_col:>8} {ratio:>6} "
+            f"{conv_col:>9} {imp_col:>8}",
+            flush=True,
+        )
+    print(
+        "growth exponent (time ~ bodies^k, sizes that finished): FastKane "
+        f"{exponent(args.sizes, fast_times)}, KanesMethod "
+        f"{exponent(args.sizes, kane_times)}, al2py import "
+        f"{exponent(args.sizes, import_times)}"
+    )
     return 0
 
 
