@@ -16,10 +16,15 @@ in :attr:`Name.name`; primes are counted in :attr:`Name.primes`.
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 
 __all__ = [
+    "walk_expr",
+    "map_expr",
+    "stmt_exprs",
     "Span",
     "canon",
     "Node",
@@ -442,3 +447,74 @@ class Script(Node):
 
     statements: tuple[Stmt, ...]
     lines: tuple[str, ...] = field(default=(), repr=False)
+
+
+# ------------------------------------------------------------------ traversal
+
+
+def walk_expr(expr: Expr) -> Iterator[Expr]:
+    """Every expression node below (and including) ``expr``, parents first.
+
+    Iterative, so a deep tree costs linear time (nested generators would make
+    it quadratic) and no recursion."""
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        yield node
+        children: list[Expr] = []
+        for f in dataclasses.fields(node):
+            value = getattr(node, f.name)
+            if isinstance(value, Expr):
+                children.append(value)
+            elif isinstance(value, tuple):
+                for item in value:
+                    if isinstance(item, Expr):
+                        children.append(item)
+                    elif isinstance(item, tuple):
+                        children.extend(s for s in item if isinstance(s, Expr))
+        stack.extend(reversed(children))
+
+
+def map_expr(expr: Expr, fn: Callable[[Expr], Expr | None]) -> Expr:
+    """Rebuild ``expr`` bottom-up, replacing nodes for which ``fn`` returns a node."""
+    changes = {}
+    for f in dataclasses.fields(expr):
+        value = getattr(expr, f.name)
+        if isinstance(value, Expr):
+            changes[f.name] = map_expr(value, fn)
+        elif isinstance(value, tuple) and value and isinstance(value[0], Expr | tuple):
+            changes[f.name] = tuple(
+                (
+                    map_expr(v, fn)
+                    if isinstance(v, Expr)
+                    else (
+                        tuple(map_expr(s, fn) if isinstance(s, Expr) else s for s in v)
+                        if isinstance(v, tuple)
+                        else v
+                    )
+                )
+                for v in value
+            )
+    if changes:
+        expr = dataclasses.replace(expr, **changes)
+    out = fn(expr)
+    return expr if out is None else out
+
+
+def stmt_exprs(stmt: Stmt) -> Iterator[Expr]:
+    """The expressions directly held by a statement."""
+    for f in dataclasses.fields(stmt):
+        value = getattr(stmt, f.name)
+        if isinstance(value, Expr):
+            yield value
+        elif isinstance(value, tuple):
+            for item in value:
+                if isinstance(item, Expr):
+                    yield item
+                elif isinstance(item, Node):
+                    for g in dataclasses.fields(item):
+                        sub = getattr(item, g.name)
+                        if isinstance(sub, Expr):
+                            yield sub
+                        elif isinstance(sub, tuple):
+                            yield from (s for s in sub if isinstance(s, Expr))

@@ -21,12 +21,17 @@ Autolev text (to be parsed by :mod:`al2py.parser`) and the ECHO messages.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
-from dataclasses import dataclass
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from .errors import MacroError
+from . import ir
+from .builtins import BUILTINS
+from .errors import MacroError, ParseError
+from .ir import map_expr
 
 __all__ = ["MacroExpansion", "find_macro", "expand_macro", "check_confined"]
 
@@ -131,11 +136,11 @@ def expand_macro(
     of the taken branches is collected, and placeholders are substituted.
     Raises :class:`MacroError` (naming *path*) for malformed macros.
     """
-    expander = _Expander(text, list(args), newtonian, degrees, path)
+    expander = _MacroText(text, list(args), newtonian, degrees, path)
     return expander.run()
 
 
-class _Expander:
+class _MacroText:
     """Recursive-descent interpreter for the macro preprocessor language."""
 
     def __init__(
@@ -413,3 +418,218 @@ def _close_paren(text: str, start: int) -> int:
             depth -= 1
         pos += 1
     return -1
+
+
+# ------------------------------------------------------------ macro expansion
+
+
+@dataclass
+class Expander:
+    """Expands ``.a`` macros, ``.r`` macros and ``RUN`` files in a script's
+    statements: the one expander of the pipeline (parse -> expand -> analyse
+    -> generate)."""
+
+    parse: Callable[[str, str], ir.Script]
+    script_dir: Path
+    autolevpath: str | None
+    lines: tuple[str, ...]
+    newtonian: str | None = None
+    degrees: bool = False
+    depth: int = 0
+    run_stack: tuple[str, ...] = field(default_factory=tuple)
+
+    def statements(self, stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
+        for stmt in stmts:
+            yield from self.statement(stmt)
+
+    def statement(self, stmt: ir.Stmt) -> Iterator[ir.Stmt]:
+        if (
+            isinstance(stmt, ir.Declaration)
+            and stmt.keyword == "NEWTONIAN"
+            and stmt.items
+        ):
+            target = stmt.items[0].target
+            if isinstance(target, ir.Name):
+                self.newtonian = target.name
+        if isinstance(stmt, ir.Setting) and stmt.name == "DEGREES":
+            self.degrees = (stmt.value or "").upper() == "ON"
+        if isinstance(stmt, ir.FileCommand) and stmt.command == "RUN":
+            yield self.run(stmt)
+            return
+        if isinstance(stmt, ir.ExprStmt) and isinstance(stmt.expr, ir.Call):
+            call = stmt.expr
+            if call.key not in BUILTINS:
+                path = self._find(call.func, "a")
+                if path is not None:
+                    yield self.macro_statement(stmt, call, path)
+                    return
+        yield self.expand_results(stmt)
+
+    def _find(self, name: str, kind: str) -> Path | None:
+        return find_macro(name, kind, self.script_dir, self.autolevpath)
+
+    def _arg_texts(self, call: ir.Call) -> list[str]:
+        from .parser import span_text
+
+        return [span_text(self.lines, a.span) for a in call.args]
+
+    def _expand_text(self, path: Path, call: ir.Call) -> str:
+        if self.depth > 20:
+            raise MacroError(f"macro {call.func} calls itself too deeply", call.span)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError as exc:
+            raise MacroError(
+                f"cannot read macro file {path}: {exc.strerror}", call.span
+            ) from None
+        try:
+            expansion = expand_macro(
+                text,
+                self._arg_texts(call),
+                newtonian=self.newtonian,
+                degrees=self.degrees,
+                path=str(path),
+            )
+        except MacroError as exc:
+            raise MacroError(exc.message, call.span) from None
+        if expansion.echoes:
+            raise MacroError(f"{path.name}: " + " ".join(expansion.echoes), call.span)
+        return expansion.text
+
+    def _parse_nested(self, text: str, path: Path, call_span: ir.Span) -> ir.Script:
+        try:
+            return self.parse(text, str(path))
+        except ParseError as exc:
+            where = f"line {exc.span.line}" if exc.span else "text"
+            raise MacroError(
+                f"in {path.name} ({where} of the expansion): {exc.message}", call_span
+            ) from None
+
+    def _child(self, lines: tuple[str, ...]) -> Expander:
+        """An expander for a macro's text, one level deeper."""
+        return Expander(
+            self.parse,
+            self.script_dir,
+            self.autolevpath,
+            lines,
+            self.newtonian,
+            self.degrees,
+            self.depth + 1,
+            self.run_stack,
+        )
+
+    def macro_statement(
+        self, stmt: ir.ExprStmt, call: ir.Call, path: Path
+    ) -> ir.MacroCall:
+        text = self._expand_text(path, call)
+        script = self._parse_nested(text, path, call.span)
+        inner = self._child(script.lines)
+        body = tuple(
+            _respan_stmt(s, call.span) for s in inner.statements(script.statements)
+        )
+        return ir.MacroCall(stmt.span, call.func, str(path), body, comment=stmt.comment)
+
+    def run(self, stmt: ir.FileCommand) -> ir.MacroCall:
+        path = _resolve(stmt.filename, self.script_dir, self.autolevpath)
+        if path is None:
+            raise MacroError(f"RUN: cannot find {stmt.filename}", stmt.span)
+        check_confined(
+            path, stmt.filename, self.script_dir, self.autolevpath, stmt.span
+        )
+        key = str(path.resolve())
+        if key in self.run_stack:
+            raise MacroError(f"RUN {stmt.filename} runs itself", stmt.span)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError as exc:
+            raise MacroError(f"cannot read {path}: {exc.strerror}", stmt.span) from None
+        script = self.parse(text, str(path))
+        inner = Expander(
+            self.parse,
+            path.parent,
+            self.autolevpath,
+            script.lines,
+            self.newtonian,
+            self.degrees,
+            self.depth + 1,
+            (*self.run_stack, key),
+        )
+        body = tuple(inner.statements(script.statements))
+        self.newtonian, self.degrees = inner.newtonian, inner.degrees
+        return ir.MacroCall(stmt.span, "RUN", str(path), body, comment=stmt.comment)
+
+    def expand_results(self, stmt: ir.Stmt) -> ir.Stmt:
+        """Replace calls of ``.r`` macros inside the statement's expressions."""
+        changes = {}
+        for f in dataclasses.fields(stmt):
+            value = getattr(stmt, f.name)
+            if isinstance(value, ir.Expr):
+                new = map_expr(value, self._result_macro)
+                if new is not value:
+                    changes[f.name] = new
+        return dataclasses.replace(stmt, **changes) if changes else stmt
+
+    def _result_macro(self, node: ir.Expr) -> ir.Expr | None:
+        if not isinstance(node, ir.Call) or node.key in BUILTINS:
+            return None
+        path = self._find(node.func, "r")
+        if path is None:
+            return None
+        text = self._expand_text(path, node).strip()
+        script = self._parse_nested(f"MACRO_RESULT_ = {text}", path, node.span)
+        stmts = [s for s in script.statements if not isinstance(s, ir.Comment)]
+        if len(stmts) != 1 or not isinstance(stmts[0], ir.Assign):
+            raise MacroError(
+                f"{path.name} does not expand to one expression", node.span
+            )
+        value = _respan_expr(stmts[0].value, node.span)
+        inner = self._child(script.lines)
+        return map_expr(value, inner._result_macro)
+
+
+def _resolve(filename: str, script_dir: Path, autolevpath: str | None) -> Path | None:
+    candidates = [script_dir / filename]
+    for d in (autolevpath or "").split(os.pathsep):
+        if d:
+            candidates.append(Path(d) / filename)
+    for c in candidates:
+        if c.is_file():
+            return c
+    return None
+
+
+def _respan_expr(expr: ir.Expr, span: ir.Span) -> ir.Expr:
+    return map_expr(expr, lambda n: dataclasses.replace(n, span=span))
+
+
+def _respan_stmt(stmt: ir.Stmt, span: ir.Span) -> ir.Stmt:
+    changes: dict[str, object] = {"span": span}
+    for f in dataclasses.fields(stmt):
+        value = getattr(stmt, f.name)
+        if isinstance(value, ir.Expr):
+            changes[f.name] = _respan_expr(value, span)
+    return dataclasses.replace(stmt, **changes)
+
+
+def expand(
+    script: ir.Script,
+    parse: Callable[[str, str], ir.Script],
+    *,
+    script_dir: Path,
+    autolevpath: str | None = None,
+) -> tuple[ir.Stmt, ...]:
+    """Statements of ``script`` with ``.a`` macros, ``.r`` macros and ``RUN``
+    files expanded (as :class:`ir.MacroCall` nodes or inline expressions)."""
+    if autolevpath is None:
+        autolevpath = os.environ.get("AUTOLEVPATH")
+    expander = Expander(parse, script_dir, autolevpath, script.lines)
+    return tuple(expander.statements(script.statements))
+
+
+def flatten(stmts: tuple[ir.Stmt, ...]) -> Iterator[ir.Stmt]:
+    """Statements with macro bodies inlined (for pre-passes)."""
+    for s in stmts:
+        if isinstance(s, ir.MacroCall):
+            yield from flatten(s.body)
+        else:
+            yield s

@@ -1,4 +1,4 @@
-"""The pipeline: parse -> expand macros -> analyse + generate -> template -> black."""
+"""The pipeline: parse -> expand macros -> analyse the whole file -> generate -> template -> black."""
 
 from __future__ import annotations
 
@@ -12,9 +12,10 @@ import black
 import jinja2
 
 from . import __version__, ir, static_checks
-from .analysis import Analysis, expand
+from .analysis import Analysis
 from .errors import AutolevError, ErrorList, InternalError, errors_of
 from .generator import Generator
+from .macros import expand
 from .parser import parse, parse_partial
 
 __all__ = ["convert", "Conversion"]
