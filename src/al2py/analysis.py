@@ -16,6 +16,9 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from al2py_runtime.records import INTEGRATION_DEFAULTS as _INTEGRATION_DEFAULTS
+from al2py_runtime.records import KINDS as _CODE_KINDS
+
 from . import ir
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import (
@@ -66,10 +69,9 @@ _NEEDS_NEWTONIAN = frozenset(
     {"FR", "FRSTAR", "KANE", "NICHECK", "GRAVITY", "KE", "MOMENTUM", "GYROSTAT"}
 )
 #: Integration parameters that ``Input`` sets without a declaration.
-INTEGRATION_PARAMETERS = frozenset(
-    {"TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR"}
-)
-CODE_OPTIONS = frozenset({"DYNAMICS", "ODE", "NONLINEAR", "ALGEBRAIC"})
+#: (Both tables are the runtime's, so the two sides never disagree.)
+INTEGRATION_PARAMETERS = frozenset(_INTEGRATION_DEFAULTS)
+CODE_OPTIONS = frozenset(_CODE_KINDS)
 #: Words after a CODE statement's file name.  They shape the text of the
 #: program Autolev wrote (NOSUBS: no substitution of intermediate values);
 #: the numbers the job computes are the same.
