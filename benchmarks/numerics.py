@@ -41,7 +41,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
 from al2py_runtime import backends, jobs  # noqa: E402
-from large import chain_source  # noqa: E402
+from large import chain_inputs, chain_source  # noqa: E402
 from pendulum import LENGTH, MASS, G, autolev_source, hand_derive  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
@@ -382,34 +382,14 @@ CHAIN_VALUES = {"L": 0.5, "M": 1.0, "IA": 0.01, "IT": 0.1, "G": 9.81}
 
 
 def hand_chain(n: int):
-    """The spatial chain with ``KanesMethod`` directly, as in large.py."""
+    """The spatial chain with ``KanesMethod`` directly (large.py's model)."""
     from sympy.physics import mechanics as me
 
-    q = me.dynamicsymbols(f"q1:{3 * n + 1}")
-    u = me.dynamicsymbols(f"u1:{3 * n + 1}")
-    consts = sp.symbols("L M IA IT G")
-    length, mass, ia, it, g = consts
-    frame_n = me.ReferenceFrame("N")
-    origin = me.Point("O")
-    origin.set_vel(frame_n, 0)
-    parent, previous = frame_n, origin
-    bodies, loads, kd = [], [], []
-    for k in range(n):
-        qs, us = q[3 * k : 3 * k + 3], u[3 * k : 3 * k + 3]
-        frame = me.ReferenceFrame(f"B{k + 1}")
-        frame.orient_body_fixed(parent, qs, "123")
-        w = us[0] * frame.x + us[1] * frame.y + us[2] * frame.z
-        kd += list((frame.ang_vel_in(parent) - w).to_matrix(frame))
-        frame.set_ang_vel(parent, w)
-        center = previous.locatenew(f"P{k + 1}", length * frame.z)
-        center.v2pt_theory(previous, frame_n, frame)
-        inertia = me.inertia(frame, it, it, ia)
-        bodies.append(me.RigidBody(f"R{k + 1}", center, frame, mass, (inertia, center)))
-        loads.append((center, -mass * g * frame_n.z))
-        parent, previous = frame, center
-    kane = me.KanesMethod(frame_n, q_ind=q, u_ind=u, kd_eqs=kd)
-    kane.kanes_equations(bodies, loads)
-    return kane, q, u, consts
+    inputs = chain_inputs(n)
+    q, u = inputs["q_ind"], inputs["u_ind"]
+    kane = me.KanesMethod(inputs["frame"], q_ind=q, u_ind=u, kd_eqs=inputs["kd_eqs"])
+    kane.kanes_equations(inputs["bodies"], inputs["loads"])
+    return kane, q, u, sp.symbols("L M IA IT G")
 
 
 def chain(n: int, workdir: Path) -> None:
