@@ -760,6 +760,7 @@ class Analysis:
         again as undeclared.
         """
         self._poisoned = {n.upper() for n in poisoned}
+        self._stmts = stmts
         for stmt in stmts:
             if not self._run_one(stmt):
                 break
@@ -773,7 +774,7 @@ class Analysis:
             facts = self.enter(stmt)
         except UndeclaredError as exc:
             if exc.name not in self._poisoned:
-                self.errors.append(exc)
+                self.errors.append(self._explain_undeclared(exc))
             self._poison(stmt)
             return True
         except AutolevError as exc:
@@ -793,6 +794,31 @@ class Analysis:
                 if not self._run_one(inner):
                     return False
         return not facts.stop
+
+    def _explain_undeclared(self, exc: UndeclaredError) -> UndeclaredError:
+        """Add what the file itself says about an undeclared name, if anything.
+
+        Real scripts that stop here are mostly work in progress: the line that
+        defined the name was commented out (``%U5P=TAYLOR(...)``), or the file
+        is the tail of a longer script and declares nothing itself.
+        """
+        if exc.span is None or not re.fullmatch(
+            r"undeclared name '[^']*'", exc.message
+        ):
+            return exc
+        stmts = list(flatten(getattr(self, "_stmts", ())))
+        hint = ""
+        line = _commented_definition(stmts, exc.name, exc.span)
+        if line is not None:
+            hint = f" (line {line} assigns it, but that line is a comment)"
+        elif not any(isinstance(s, ir.Declaration) for s in stmts):
+            hint = (
+                " (this file declares nothing: it looks like a fragment to run "
+                "after the script that declares its names)"
+            )
+        if not hint:
+            return exc
+        return UndeclaredError(exc.message + hint, exc.span, name=exc.name)
 
     def _poison(self, stmt: ir.Stmt) -> None:
         for e in stmt_exprs(stmt):
@@ -1353,3 +1379,20 @@ def _parts(name: str) -> set[str]:
 def _kind_from_spelling(name: str) -> str:
     rank = len(name) - len(name.rstrip(">"))
     return {0: "scalar", 1: "vector", 2: "dyadic"}.get(rank, "polyadic")
+
+
+_COMMENTED_ASSIGNMENT = re.compile(r"\s*%*\s*([A-Za-z]\w*)'*\s*(?::=|[-+*/^]?=)")
+
+
+def _commented_definition(stmts: list[ir.Stmt], key: str, use: ir.Span) -> int | None:
+    """Line of the last comment before ``use`` that reads like ``KEY = ...``."""
+    found = None
+    for s in stmts:
+        if not isinstance(s, ir.Comment) or s.span.file != use.file:
+            continue
+        if s.span.line >= use.line:
+            break
+        m = _COMMENTED_ASSIGNMENT.match(s.text)
+        if m and m.group(1).upper() == key:
+            found = s.span.line
+    return found

@@ -391,7 +391,52 @@ class _ErrorListener(ErrorListener):
             if unclosed is not None and unclosed != _CLOSERS[ttype]:
                 return f"unexpected {tok.text!r}; missing {unclosed!r}"
             return f"unexpected {tok.text!r}"
+        if self._new_statement_starts(recognizer, tok):
+            return (
+                f"unexpected {_describe(tok)}: the statement before it is complete "
+                "and a new one starts here (one statement per line: a line break "
+                "or ';' is missing)"
+            )
         return f"unexpected {_describe(tok)}" + self._hint(recognizer, e)
+
+    def _new_statement_starts(self, recognizer, tok: Token) -> bool:
+        """True if a statement could end before *tok* and the rest is one.
+
+        Two statements run together on a line (``V> = R*A1>W> = 2*V>``): the
+        statement is complete before ``W>``, and ``W> = 2*V>`` parses as an
+        assignment, declaration or command of its own (a bare expression
+        does not count: ``x = a b`` gets the plain message).
+        """
+        if not isinstance(recognizer, AutolevParser) or tok.start < 0:
+            return False
+        try:
+            expected = recognizer.getExpectedTokens()
+        except Exception:  # ANTLR cannot tell in this state
+            return False
+        if not expected.__contains__(_P.NEWLINE):
+            return False
+        tokens = self.stream.tokens
+        k = tok.tokenIndex
+        while k < len(tokens) and tokens[k].type not in (_P.NEWLINE, Token.EOF):
+            k += 1
+        stream = tok.getInputStream()
+        end = tokens[k].start if k < len(tokens) and tokens[k].start >= 0 else None
+        stop = (end if end is not None else stream.size) - 1
+        rest = stream.getText(tok.start, stop)
+        lexer = AutolevLexer(InputStream(rest))
+        lexer.removeErrorListeners()
+        parser = AutolevParser(CommonTokenStream(lexer))
+        parser.removeErrorListeners()
+        counter = _CountingListener()
+        lexer.addErrorListener(counter)
+        parser.addErrorListener(counter)
+        try:
+            ctx = parser.statement()
+        except RecursionError:
+            return False
+        if counter.count or ctx.stmt() is None:
+            return False
+        return ctx.stmt().exprStmt() is None
 
     def _after_operator(self, tok: Token) -> bool:
         """True if the default-channel token before *tok* needs an operand."""
@@ -431,6 +476,16 @@ class _ErrorListener(ErrorListener):
         if len(names) == 1 and len(list(expected)) == 1:
             return f"; expected {names[0]}"
         return ""
+
+
+class _CountingListener(ErrorListener):
+    """Counts syntax errors (a trial parse that must not report them)."""
+
+    def __init__(self) -> None:
+        self.count = 0
+
+    def syntaxError(self, recognizer, offendingSymbol, line, column, msg, e):
+        self.count += 1
 
 
 # ----------------------------------------------------------------- IR builder
