@@ -120,10 +120,12 @@ def test_comment_after_the_use_is_not_a_definition(tmp_path):
 
 
 def test_fragment_without_declarations_is_described(tmp_path):
-    errs = errors_of("x = Evaluate(D(Q4', Q4), Q4=0)\ny = Q4 + 1\n", tmp_path)
-    assert len(errs) == 1  # Q4 is reported once, at its first use
-    assert (errs[0].span.line, errs[0].span.col) == (1, 16)
+    src = "x = Evaluate(D(Q4', Q4), Q4=0)\ny = Q4 + 1\nInput W=1.5\n"
+    errs = errors_of(src, tmp_path)
+    # Q4 is reported once, at its first use, with the hint; then W, plainly
+    assert [(e.span.line, e.span.col) for e in errs] == [(1, 16), (3, 7)]
     assert "declares nothing" in errs[0].message
+    assert errs[1].message == "undeclared name 'W'"
 
 
 def test_declared_file_gets_no_fragment_hint(tmp_path):

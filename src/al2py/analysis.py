@@ -288,6 +288,9 @@ class Analysis:
         self.stmt_facts: dict[int, StmtFacts] = {}
         self.errors: list[AutolevError] = []
         self._poisoned: set[str] = set()
+        #: The statements of :meth:`run`, to explain undeclared names.
+        self._stmts: tuple[ir.Stmt, ...] = ()
+        self._fragment_told = False
         #: Matrix literals of vectors, allowed as arguments of Dot
         #: (``Dot(V1>, [V2>; 2*V2>])`` is the column of the dot products).
         self.vector_matrices: set[int] = set()  # ids of MatrixLit nodes
@@ -761,6 +764,7 @@ class Analysis:
         """
         self._poisoned = {n.upper() for n in poisoned}
         self._stmts = stmts
+        self._fragment_told = False
         for stmt in stmts:
             if not self._run_one(stmt):
                 break
@@ -806,12 +810,15 @@ class Analysis:
             r"undeclared name '[^']*'", exc.message
         ):
             return exc
-        stmts = list(flatten(getattr(self, "_stmts", ())))
+        stmts = list(flatten(self._stmts))
         hint = ""
         line = _commented_definition(stmts, exc.name, exc.span)
         if line is not None:
             hint = f" (line {line} assigns it, but that line is a comment)"
-        elif not any(isinstance(s, ir.Declaration) for s in stmts):
+        elif not self._fragment_told and not any(
+            isinstance(s, ir.Declaration) for s in stmts
+        ):
+            self._fragment_told = True  # once per file, at the first name
             hint = (
                 " (this file declares nothing: it looks like a fragment to run "
                 "after the script that declares its names)"
