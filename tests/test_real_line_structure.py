@@ -17,7 +17,7 @@ from conftest import load_module
 from al2py import convert
 from al2py.cli import main
 from al2py.errors import AutolevError
-from al2py.parser import parse
+from al2py.parser import parse, parse_partial
 
 
 def run(src: str, tmp_path: Path, name: str = "snip"):
@@ -131,3 +131,18 @@ def test_fragment_without_declarations_is_described(tmp_path):
 def test_declared_file_gets_no_fragment_hint(tmp_path):
     (err,) = errors_of("Constants a\nx = a + q\n", tmp_path)
     assert err.message == "undeclared name 'q'"
+
+
+# ------------------------------------------------- errors on consecutive lines
+
+
+def test_error_recovery_does_not_hide_the_next_lines_error():
+    # the first line leaves ANTLR in error recovery; the second line's missing
+    # ']' must still be reported (it was dropped, or crashed with a comment)
+    src = ":= } =\nCode [ % note\nx = 1\n"
+    script, errors = parse_partial(src, "f.al")
+    assert [(e.span.line, e.message) for e in errors] == [
+        (1, "unexpected ':='"),
+        (2, "missing ']'"),
+    ]
+    assert [s.span.line for s in script.statements] == [3]

@@ -159,6 +159,9 @@ def _parse(
     for first, last in _statement_ranges(stream.tokens):
         errors_before = listener.count
         stream.seek(first)
+        # A statement that ended in error recovery must not keep the parser in
+        # recovery mode, where ANTLR reports no further errors.
+        parser._errHandler.reset(parser)
         ctx = parser.statement()
         if listener.count == errors_before and stream.index >= last:
             parsed.append((ctx, stream.tokens[last]))
@@ -569,6 +572,8 @@ class _IRBuilder(AutolevVisitor):
 
     def _statement(self, ctx: AutolevParser.StmtContext, end: Token) -> ir.Stmt:
         node = self.visit(ctx)
+        if not isinstance(node, ir.Stmt):  # never drop a statement silently
+            raise self._error("cannot read this statement", ctx.start)
         comment = self._trailing_comment(ctx.start.tokenIndex, end.tokenIndex)
         if comment is None and end.type == _P.SEMI:
             comment = self._comment_after(end.tokenIndex)
