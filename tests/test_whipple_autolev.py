@@ -1,8 +1,8 @@
 """The Whipple benchmark as an Autolev script (tests/models/whipple_benchmark.al).
 
 The script is our own, written from the paper's description with tutorial
-syntax.  It converts today; deriving it end to end needs the runtime's Kane
-path to use intermediate variables (FastKane), see issue 10."""
+syntax.  With ``AutoZ ON`` it derives with intermediate variables, as
+Autolev did (issue 10), and its own linearization gives Table 2."""
 
 from __future__ import annotations
 
@@ -53,22 +53,79 @@ def test_whipple_script_parameters_are_table1():
         assert np.isclose(values[name], value, rtol=0, atol=1e-14), name
 
 
-@pytest.mark.slow
-@pytest.mark.skip(
-    reason="issue 10: importing the converted Whipple does not finish (>150 s) -- "
-    "the runtime's own Constrain/Kane swell without intermediates; enable once "
-    "the runtime derives its KaneInputs with FastKane"
-)
-def test_whipple_script_eigenvalues(tmp_path):  # pragma: no cover - see skip
-    from al2py_runtime.model import kane_inputs
-
+@pytest.fixture(scope="module")
+def whipple_module(tmp_path_factory):
+    """The script converted and imported: it derives with AutoZ intermediates
+    (about 20 s here; it did not finish in 25 minutes without them)."""
     result = convert(SCRIPT.read_text(), str(SCRIPT))
-    path = tmp_path / "whipple_benchmark.py"
+    path = tmp_path_factory.mktemp("whipple") / "whipple_benchmark.py"
     path.write_text(result.code)
     spec = importlib.util.spec_from_file_location("whipple_benchmark", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    inputs = kane_inputs(module.al.model)
+    return module
+
+
+#: Meijaard et al. (2007), Table 2 (the same figures as tests/test_whipple.py).
+TABLE2 = {
+    0.0: [-5.53094371765394, -3.13164324790656, 3.13164324790656, 5.53094371765394],
+    4.0: [
+        -12.15861426576447,
+        -1.42944427361326,
+        0.41325331521125 + 3.07910818603206j,
+        0.41325331521125 - 3.07910818603206j,
+    ],
+    5.0: [
+        -14.07838969279824,
+        -0.77534188219584 + 4.46486771378823j,
+        -0.77534188219584 - 4.46486771378823j,
+        -0.32286642900409,
+    ],
+    10.0: [
+        -24.62459635017398,
+        -3.72016840437289 + 10.90681139476289j,
+        -3.72016840437289 - 10.90681139476289j,
+        0.16105338653171,
+    ],
+}
+
+
+@pytest.mark.parametrize("speed", sorted(TABLE2))
+def test_whipple_script_eigenvalues(whipple_module, speed):
+    """The script's own linearization, AL = D([U4'; U7'], [Q4; Q7; U4; U7]),
+    evaluated upright at forward speed v (U6 = -v/RR), gives Table 2."""
+    upright = {f"Q{k}": 0.0 for k in range(1, 9)}
+    al = whipple_module.evaluate("AL", U6=-speed / 0.3, U4=0.0, U7=0.0, **upright)
+    a = np.zeros((4, 4))
+    a[0, 2] = a[1, 3] = 1.0
+    a[2:, :] = np.asarray(al, dtype=float)
+    got = np.sort_complex(np.linalg.eigvals(a))
+    wanted = np.sort_complex(np.asarray(TABLE2[speed], dtype=complex))
+    assert np.max(np.abs(got - wanted)) < 1e-8, (got, wanted)
+
+
+def test_whipple_script_uses_intermediates(whipple_module):
+    """AutoZ ON: ZERO is written with Z intermediates, and sympy's model of
+    the script (KanesMethod's inputs) has them written out."""
+    from al2py_runtime.autoz import has_intermediates
+    from al2py_runtime.model import kane_inputs
+
+    assert has_intermediates(whipple_module.al.value("ZERO"))
+    inputs = kane_inputs(whipple_module.al.model)
+    assert not has_intermediates(inputs.velocity_constraints)
+    n = inputs.frame
+    for body in inputs.bodies:
+        assert not has_intermediates(body.masscenter.vel(n).to_matrix(n))
+        assert not has_intermediates(body.masscenter.acc(n).to_matrix(n))
+
+
+@pytest.mark.slow
+def test_whipple_script_fastkane_eigenvalues(whipple_module):
+    """sympy's model of the script (kane_inputs), derived by FastKane, gives
+    Table 2 too."""
+    from al2py_runtime.model import kane_inputs
+
+    inputs = kane_inputs(whipple_module.al.model)
     kane = FastKane.from_inputs(inputs)
     whipple = _whipple()
     by_name = {

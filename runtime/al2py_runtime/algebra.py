@@ -469,11 +469,16 @@ def _square(m: Any, what: str) -> sp.Matrix:
 # ------------------------------------------------------------------- solve
 
 
-def solve_linear(eqs: Any, unknowns: Sequence[Any]) -> tuple[sp.Expr, ...]:
+def solve_linear(
+    eqs: Any, unknowns: Sequence[Any], book: Any = None, zero: Sequence[Any] = ()
+) -> tuple[sp.Expr, ...]:
     """Autolev ``Solve(A, x1, x2, ...)``: solve linear equations ``A = 0``.
 
     ``unknowns`` may be symbols, variables or derivatives.  Returns the
     solutions in order; raises ValueError for nonlinear or singular systems.
+    With a book of intermediates (``AutoZ ON``, :mod:`al2py_runtime.autoz`)
+    the elimination names every entry (pivots chosen non-zero where the
+    variables in ``zero`` vanish).
 
     >>> X, Y = dynamicsymbols("X Y")
     >>> solve_linear(sp.Matrix([3*X + 4*Y - 37, 4*X - 2*Y + 2]), [X, Y])
@@ -492,7 +497,12 @@ def solve_linear(eqs: Any, unknowns: Sequence[Any]) -> tuple[sp.Expr, ...]:
     frozen = [_freeze(sp.sympify(e), table) for e in equations]
     a, b = _linear_system(frozen, syms, xs)
     singular = "Solve: the equations are singular (determinant is zero)"
-    if len(xs) <= 3:  # Cramer's rule keeps small solutions readable
+    if book is not None:
+        try:
+            sols = list(book.solve(a, b, [table.get(z, z) for z in zero]))
+        except ValueError:
+            raise ValueError(singular) from None
+    elif len(xs) <= 3:  # Cramer's rule keeps small solutions readable
         det = a.det(method="berkowitz")
         if sp.expand(det) == 0:
             raise ValueError(singular)

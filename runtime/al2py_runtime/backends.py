@@ -44,7 +44,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -286,10 +286,43 @@ def _inline(spec: DynamicsSpec, exprs: list[Any]) -> list[Any]:
     return exprs
 
 
-def _lambdify(args: list[Any], exprs: list[Any]) -> Callable[..., list[float]]:
+def needed(
+    intermediates: Sequence[tuple[Any, Any]], exprs: Iterable[Any]
+) -> list[tuple[Any, Any]]:
+    """The intermediates that ``exprs`` use, in order."""
+    want: set[Any] = set()
+    for e in exprs:
+        want |= sp.sympify(e).free_symbols
+    keep = []
+    for sym, expr in reversed(list(intermediates)):
+        if sym in want:
+            keep.append((sym, expr))
+            want |= sp.sympify(expr).free_symbols
+    return keep[::-1]
+
+
+def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
+    """``lambdify``'s ``cse`` argument: the intermediates the expressions
+    need, in order, then sympy's common subexpressions of the rest."""
+    if not intermediates:
+        return True
+
+    def cse(exprs: Any) -> tuple[list, Any]:
+        first = needed(intermediates, exprs)
+        reps, reduced = sp.cse(exprs, list=False)
+        return first + list(reps), reduced
+
+    return cse
+
+
+def _lambdify(
+    args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
+) -> Callable[..., list[float]]:
     if not exprs:
         return lambda *a: []
-    return sp.lambdify(args, list(exprs), modules=[_NAMESPACE, "math"], cse=True)
+    return sp.lambdify(
+        args, list(exprs), modules=[_NAMESPACE, "math"], cse=cse_with(intermediates)
+    )
 
 
 def _solve(n: int, v: list[float], t: float) -> list[float]:
@@ -356,10 +389,11 @@ def _build_lambdify(spec: DynamicsSpec) -> Compiled:
     start = time.perf_counter()
     free, uses, plan = _plan(spec)
     y, ud, p, t = spec.states, spec.accels, spec.params, spec.time
-    first = _inline(spec, [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)])
-    step = _lambdify([t, *y, *p], first)
-    late_f = _lambdify([t, *y, *ud, *p], _inline(spec, [spec.derivs[i] for i in uses]))
-    outs = [_lambdify([t, *y, *ud, *p], _inline(spec, row)) for row in spec.outputs]
+    z = spec.intermediates
+    first = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
+    step = _lambdify([t, *y, *p], first, z)
+    late_f = _lambdify([t, *y, *ud, *p], [spec.derivs[i] for i in uses], z)
+    outs = [_lambdify([t, *y, *ud, *p], row, z) for row in spec.outputs]
     n, ny = len(ud), len(y)
 
     def mf(tt, yy, pp):
@@ -380,12 +414,22 @@ def _build_lambdify(spec: DynamicsSpec) -> Compiled:
 # --------------------------------------------------------------------- llvm
 
 
+#: symengine's Lambdify takes whole expressions: beyond this many
+#: intermediates (AutoZ) inlining them costs more than it saves
+_LLVM_INLINE = 200
+
+
 def _build_llvm(spec: DynamicsSpec) -> Compiled:
     import time
 
     import symengine as se
 
     start = time.perf_counter()
+    if len(spec.intermediates) > _LLVM_INLINE:
+        raise BackendError(
+            "llvm backend: too many intermediates to inline"
+            f" ({len(spec.intermediates)})"
+        )
     free, uses, plan = _plan(spec)
     y, ud, p, t = spec.states, spec.accels, spec.params, spec.time
     first = _inline(spec, [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)])

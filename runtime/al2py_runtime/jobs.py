@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from . import backends, budget
+from . import autoz, backends, budget
 from .kane import linear_terms
 from .records import (
     INTEGRATION_DEFAULTS,
@@ -111,11 +111,19 @@ _NAMESPACE = {
 }
 
 
-def _lambdify(args: list[Any], exprs: list[Any]) -> Any:
-    """A scalar function ``f(*args) -> list of floats`` (math module, CSE)."""
+def _lambdify(
+    args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
+) -> Any:
+    """A scalar function ``f(*args) -> list of floats`` (math module, CSE);
+    ``intermediates`` (``(symbol, expr)`` in order) are computed first."""
     if not exprs:
         return lambda *a: []
-    return sp.lambdify(args, list(exprs), modules=[_NAMESPACE, "math"], cse=True)
+    return sp.lambdify(
+        args,
+        list(exprs),
+        modules=[_NAMESPACE, "math"],
+        cse=backends.cse_with(intermediates),
+    )
 
 
 class _Slots:
@@ -127,6 +135,8 @@ class _Slots:
         self.known: dict[Any, sp.Dummy] = {}
         self.params: list[Any] = []  # objects, in argument order
         self.param_dummies: list[sp.Dummy] = []
+        #: AutoZ intermediates, ``(dummy, numeric definition)`` in order
+        self.intermediates: list[tuple[sp.Dummy, Any]] = []
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -139,8 +149,18 @@ class _Slots:
     def numeric(self, expr: Any, what: str) -> Any:
         """``expr`` with every object replaced by an argument dummy; new
         constants, specified quantities and unknown derivatives become
-        parameters."""
-        expr = sp.sympify(expr).xreplace(self.known)
+        parameters; intermediates become :attr:`intermediates`."""
+        expr = sp.sympify(expr)
+        zs = expr.atoms(autoz.Intermediate)
+        if zs:
+            book = next(iter(zs)).book
+            expr = book.rebase(expr)
+            for z in book._ordered([expr], self.known):
+                body = self.numeric(book.definition(z), what)
+                d = sp.Dummy(f"z{len(self.intermediates)}")
+                self.known[z] = d
+                self.intermediates.append((d, body))
+        expr = expr.xreplace(self.known)
         for kind in (sp.Derivative, AppliedUndef):
             found = [a for a in expr.atoms(kind) if a not in self.known]
             for obj in sorted(found, key=sp.default_sort_key):
@@ -323,23 +343,39 @@ def evaluate_with_inputs(
         if entry is not None:
             subs[_deriv(entry[1], len(m.group(2)))] = number
 
+    cache: dict[Any, complex] = {}  # intermediates at this point
+
     def one(expr: Any) -> float:
         expr = _resolve(sp.sympify(expr), table)
+        has_z = autoz.has_intermediates(expr)
         # Derivatives first, so that QA' is not taken as d(value of QA)/dt.
         out = sp.sympify(expr).xreplace(
             {k: v for k, v in subs.items() if isinstance(k, sp.Derivative)}
         )
         left = {label_of(a, job.names) for a in out.atoms(sp.Derivative)}
-        out = sp.sympify(out.xreplace({k: v for k, v in subs.items() if k != t}))
-        left |= {label_of(a, job.names) for a in out.atoms(AppliedUndef)}
-        left |= {str(s) for s in out.free_symbols if s != t}
+        if has_z:
+            # Intermediates are evaluated at the values, once each, in order
+            # (substituting numbers into them would rebuild each one).
+            left |= {
+                label_of(a, job.names) for a in out.atoms(AppliedUndef) if a not in subs
+            }
+            left |= {str(s) for s in out.free_symbols if s != t and s not in subs}
+        else:
+            out = sp.sympify(out.xreplace({k: v for k, v in subs.items() if k != t}))
+            left |= {label_of(a, job.names) for a in out.atoms(AppliedUndef)}
+            left |= {str(s) for s in out.free_symbols if s != t}
         if left:
             raise NumericsError(
                 f"{name} needs a value for {', '.join(sorted(left))}"
                 " (give it as a keyword argument)"
             )
-        out = sp.sympify(out.xreplace({t: time}))
-        number = complex(sp.N(out))
+        if has_z:
+            if not cache:
+                cache.update({k: complex(v) for k, v in subs.items()})
+            number = autoz.number(out, cache)
+        else:
+            out = sp.sympify(out.xreplace({t: time}))
+            number = complex(sp.N(out))
         return (
             number.real if abs(number.imag) < 1e-12 * max(1.0, abs(number)) else number
         )
@@ -596,6 +632,7 @@ def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
         mf_exprs[n * n :],
         derivs,
         outputs,
+        slots.intermediates,
     )
     names = [label_of(o, job.names) for o in state_objs]
     return _Dynamics(state_objs, names, ud_objs, list(slots.params), spec)
@@ -806,6 +843,19 @@ def _eq_labels(job: Job) -> list[str]:
     return [f"equation {i + 1}" for i in range(n)]
 
 
+def _inline_dependent(
+    intermediates: Sequence[tuple[Any, Any]], exprs: list[Any], xs: Sequence[Any]
+) -> list[Any]:
+    """``exprs`` with the intermediates that depend on ``xs`` substituted."""
+    dep: dict[Any, Any] = {}
+    for sym, expr in intermediates:
+        if expr.has(*xs) or expr.free_symbols & dep.keys():
+            dep[sym] = expr
+    for sym in reversed(list(dep)):
+        exprs = [e.xreplace({sym: dep[sym]}) for e in exprs]
+    return exprs
+
+
 def _compile_static(job: Job, keep: frozenset) -> _Static:
     unknowns = list(job.unknowns)
     table = _without(job.rhs, set(keep) | set(unknowns))
@@ -821,8 +871,10 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
         )
     outputs = _output_exprs(job, table, slots)
     args = [slots.time, *xs]
+    z = slots.intermediates
+    eqs = _inline_dependent(z, eqs, xs)  # the Jacobian must see through them
     jac = sp.Matrix(eqs).jacobian(xs) if eqs else sp.Matrix()
-    residual = _lambdify([*args, *slots.param_dummies], eqs)
+    residual = _lambdify([*args, *slots.param_dummies], eqs, z)
     rhs = None
     if job.kind == "ALGEBRAIC":
         bad = [u for u, x in zip(unknowns, xs, strict=True) if jac.has(x)]
@@ -834,12 +886,12 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
             )
         at0 = dict.fromkeys(xs, 0)
         rhs = _lambdify(
-            [slots.time, *slots.param_dummies], [-e.xreplace(at0) for e in eqs]
+            [slots.time, *slots.param_dummies], [-e.xreplace(at0) for e in eqs], z
         )
-        jacobian = _lambdify([slots.time, *slots.param_dummies], list(jac))
+        jacobian = _lambdify([slots.time, *slots.param_dummies], list(jac), z)
     else:
-        jacobian = _lambdify([*args, *slots.param_dummies], list(jac))
-    out_funcs = [_lambdify([*args, *slots.param_dummies], row) for row in outputs]
+        jacobian = _lambdify([*args, *slots.param_dummies], list(jac), z)
+    out_funcs = [_lambdify([*args, *slots.param_dummies], row, z) for row in outputs]
     return _Static(
         [label_of(u, job.names) for u in unknowns],
         residual,

@@ -39,10 +39,43 @@ def split_linear(
     return a, b
 
 
-def solve_speeds(eqs: Sequence[Any], unknowns: Sequence[Any]) -> list[Any]:
-    """Solve linear equations ``eqs = 0`` for ``unknowns`` (tidied results)."""
+def split_linear_named(
+    exprs: Sequence[Any], unknowns: Sequence[Any]
+) -> tuple[sp.Matrix, sp.Matrix]:
+    """:func:`split_linear` without expanding (coefficients by derivatives),
+    for expressions written with intermediates."""
+    a = sp.zeros(len(exprs), len(unknowns))
+    b = sp.zeros(len(exprs), 1)
+    plain = [sp.Dummy(f"x{k}") for k in range(len(unknowns))]
+    swap = dict(zip(unknowns, plain, strict=True))
+    zero = dict.fromkeys(plain, 0)
+    for i, e in enumerate(exprs):
+        e = sp.sympify(e).xreplace(swap)
+        for j, x in enumerate(plain):
+            c = e.diff(x) if e.has(x) else sp.S.Zero
+            if c.has(*plain):
+                raise ValueError(f"equation {i + 1} is not linear in {unknowns[j]}")
+            a[i, j] = c
+        b[i, 0] = e.xreplace(zero)
+    return a, b
+
+
+def solve_speeds(
+    eqs: Sequence[Any],
+    unknowns: Sequence[Any],
+    book: Any = None,
+    zero: Sequence[Any] = (),
+) -> list[Any]:
+    """Solve linear equations ``eqs = 0`` for ``unknowns`` (tidied results).
+
+    With a book of intermediates (``AutoZ ON``) every entry of the
+    elimination is named; ``zero`` lists the variables that are 0 in the
+    reference configuration, for the choice of pivots."""
     if len(eqs) != len(unknowns):
         raise ValueError(f"{len(eqs)} equations for {len(unknowns)} unknowns")
+    if book is not None:
+        a, b = split_linear_named(eqs, unknowns)
+        return list(book.solve(a, -b, zero))
     a, b = split_linear(eqs, unknowns)
     a = a.applyfunc(tidy)
     det = tidy(a.det(method="berkowitz"))

@@ -561,6 +561,24 @@ class Workspace(Mapping):
         """A settings line: ``Digits 7``, ``AutoRHS ALL``, ``Degrees ON``."""
         self.settings.set(name, value)
 
+    @property
+    def intermediates(self) -> Any:
+        """The book of ``Z`` intermediates (:mod:`al2py_runtime.autoz`) while
+        ``AutoZ`` is ON (None while it is OFF).  Intermediates made while it
+        was ON stay valid."""
+        if not self.settings.autoz:
+            return None
+        book = self.__dict__.get("_book")
+        if book is None:
+            from .autoz import Intermediates
+
+            book = self._book = Intermediates(taken=self._names)
+        return book
+
+    def _book_or_none(self) -> Any:
+        """The book if any intermediate was ever made (for expansion)."""
+        return self.__dict__.get("_book")
+
     def show(self, label: str, value: Any, *, line: int | None = None) -> Any:
         """A bare expression statement: respond with its value."""
         value = self.normalize(value)
@@ -707,7 +725,9 @@ class Workspace(Mapping):
         else:
             eqs = sp.Matrix([self.val(eqs)])
         eqs = self.resolve(eqs, keep=unknowns)
-        solutions = algebra.solve_linear(eqs, unknowns)
+        book = self.intermediates
+        zero = self.model._configuration() if book is not None else ()
+        solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
         return self.assign_all(names, solutions, line=line)
 

@@ -5,6 +5,7 @@
 %   rolling without slip on level ground.  Written for al2py's tests from the
 %   paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.
 %-----
+AutoZ ON                           % intermediates, as Autolev's Z's
 Newtonian N
 Frames    Y, L, E            % heading, lean (roll), steer axis
 Bodies    R, B, H, F
@@ -82,6 +83,13 @@ Constrain(DEPENDENT[U1, U2, U3, U5, U8])
 Gravity(G*N3>)
 Zero = Fr() + FrStar()
 Kane()
+% Linearized equations about the upright reference configuration: the
+% accelerations of the independent speeds and their Jacobian by the lean
+% and steer angles and rates (the forward speed is U6 = -v/RR).
+Solve(Zero, U4', U6', U7')
+XD = [U4'; U7']
+XS = [Q4; Q7; U4; U7]
+AL = D(XD, XS)
 %-----
 % Benchmark parameters, Table 1 of the paper.
 Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81

@@ -25,8 +25,25 @@ class KaneEquations:
 
     # -------------------------------------------------- Fr and Fr*
 
-    def _dot_rows(self, vec: Vector, partials: list) -> list:
-        return [vec.dot(p) if p != Vector(0) else 0 for p in partials]
+    def _dot_rows(
+        self, vec: Vector, partials: list, frame: ReferenceFrame | None = None
+    ) -> list:
+        return [self._zdot(vec, p, frame) if p != Vector(0) else 0 for p in partials]
+
+    def _zdot(self, a: Vector, b: Vector, frame: ReferenceFrame | None) -> Any:
+        """``a . b``; while AutoZ is ON, both are first expressed in ``frame``
+        with each measure number named, so the product stays short."""
+        book = self.ws.intermediates
+        if book is None or frame is None:
+            return a.dot(b)
+        ma = [book.name(x) for x in a.to_matrix(frame)]
+        mb = [book.name(x) for x in b.to_matrix(frame)]
+        return book.name(sp.Add(*[x * y for x, y in zip(ma, mb, strict=True)]))
+
+    def _z(self, expr: Any) -> Any:
+        """``expr`` named as an intermediate while AutoZ is ON."""
+        book = self.ws.intermediates
+        return expr if book is None else book.name(expr)
 
     def fr(self) -> sp.Matrix:
         """``Fr()``: generalized active forces (one row per independent or
@@ -39,12 +56,14 @@ class KaneEquations:
             if f == Vector(0):
                 continue
             parts = self._partials(self.vel(p, n), speeds)
-            rows = [r + d for r, d in zip(rows, self._dot_rows(f, parts), strict=True)]
+            dots = self._dot_rows(f, parts, n)
+            rows = [r + d for r, d in zip(rows, dots, strict=True)]
         for b, tq in st.torques.items():
             if tq == Vector(0):
                 continue
             parts = self._partials(self.ang_vel(b, n), speeds)
-            rows = [r + d for r, d in zip(rows, self._dot_rows(tq, parts), strict=True)]
+            dots = self._dot_rows(tq, parts, b)
+            rows = [r + d for r, d in zip(rows, dots, strict=True)]
         return sp.Matrix(rows)
 
     def _inertia_torque(self, b: ReferenceFrame, n: ReferenceFrame) -> Vector:
@@ -71,14 +90,14 @@ class KaneEquations:
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
 
-        def add(vec: Vector, parts: list) -> None:
+        def add(vec: Vector, parts: list, frame: ReferenceFrame) -> None:
             rest, coefs = kin.split_linear_vector(vec, accels)
             for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
                 if part == Vector(0):
                     continue
                 moved[k] = True
-                r.append(rest.dot(part))
-                r.extend(c.dot(part) * a for a, c in coefs.items())
+                r.append(self._zdot(rest, part, frame))
+                r.extend(self._zdot(c, part, frame) * a for a, c in coefs.items())
 
         for o in st.massive:
             m = self._mass(o, strict=False)
@@ -86,10 +105,10 @@ class KaneEquations:
             if m != 0:
                 a = self._actual(self.acc(p, n))
                 if a != Vector(0):
-                    add(-m * a, self._partials(self.vel(p, n), speeds))
+                    add(-m * a, self._partials(self.vel(p, n), speeds), n)
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
                 tq = self._inertia_torque(o, n)
-                add(tq, self._partials(self.ang_vel(o, n), speeds))
+                add(tq, self._partials(self.ang_vel(o, n), speeds), o)
         if st.massive and not all(moved):
             still = [
                 self.ws.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
@@ -119,7 +138,8 @@ class KaneEquations:
             raise ValueError(f"Constrain: {which} has not been assigned")
         speeds = [sp.sympify(u) for u in speeds]
         eqs = [self.ws.resolve(e, keep=self._speeds()) for e in mat]
-        sols = solve_speeds(eqs, speeds)
+        book = self.ws.intermediates
+        sols = solve_speeds(eqs, speeds, book, self._configuration())
         gens = self._gens()
         out = []
         for u, s in zip(speeds, sols, strict=True):
@@ -138,6 +158,12 @@ class KaneEquations:
             if u not in target:
                 target.append(u)
         return kin.one_or_tuple(out)
+
+    def _configuration(self) -> list:
+        """The coordinates (variables with a kinematical differential
+        equation): 0 in the usual reference configuration, which is where
+        pivots of symbolic eliminations must not vanish."""
+        return [dq.expr for dq in self._kinematical_equations()]
 
     # ----------------------------------------------------------- Kane
 

@@ -74,6 +74,16 @@ def kanes_method(inputs: KaneInputs) -> KanesMethod:
     return km
 
 
+def _plain_dcms(frames: list, book: Any) -> None:
+    """Write out the AutoZ intermediates in the frames' cached direction
+    cosines (sympy's own operations on the frames then give plain
+    expressions)."""
+    for f in frames:
+        for other, m in list(f._dcm_cache.items()):
+            if any(isinstance(e, sp.Basic) and e.atoms(book.Z) for e in m):
+                f._dcm_cache[other] = book.expand(m)
+
+
 def kane_inputs(model: Any) -> KaneInputs:
     """A script's model (``al.model``, see :class:`~al2py_runtime.mechanics.Model`) as
     :class:`KaneInputs`: the one place where the script becomes
@@ -113,8 +123,16 @@ def kane_inputs(model: Any) -> KaneInputs:
     # right-hand sides hold the accelerations.
     keep = [*speeds, *(st.kane["forces"] if st.kane else ())]
 
+    # sympy's KanesMethod (and PyDy, Linearizer) take plain expressions: the
+    # AutoZ intermediates are written out.
+    book = model.ws._book_or_none()
+    if book is not None:
+        _plain_dcms(list(st.frames.values()) + [n], book)
+
     def fix(x: Any) -> Any:
         x = model._actual(x, keep)
+        if book is not None:
+            x = book.expand(x)
         return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
 
     # Autolev's AUXILIARY speeds that the constraints make zero are sympy's

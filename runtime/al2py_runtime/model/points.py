@@ -79,7 +79,15 @@ class Kinematics:
             out = time_derivative(v, frame)
         else:
             out = sp.diff(v, t)
-        return self._actual(out)
+        out = self._actual(out)
+        book = self.ws.intermediates
+        if book is not None:
+            # AutoZ: name the coefficients of the speeds and their derivatives
+            # (and the rest), so later derivatives stay short.
+            speeds = self._speeds()
+            xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
+            out = kin.vmap(out, lambda e: book.name_linear(e, xs))
+        return out
 
     # --------------------------------------------------------- velocities
 
@@ -159,6 +167,31 @@ class Kinematics:
 
     def _orient(self, a: ReferenceFrame, b: ReferenceFrame, m: sp.Matrix) -> None:
         b.orient_explicit(a, m)
+        self._name_dcms(b)
+
+    def _name_dcms(self, b: ReferenceFrame) -> None:
+        """AutoZ: give ``b`` direction cosines to every frame connected to it,
+        each entry named (the product along the tree of short matrices), in
+        sympy's own cache, so that dot products, ``express`` and time
+        derivatives work with short expressions."""
+        book = self.ws.intermediates
+        if book is None or len(b._dcm_dict) != 1:
+            return
+        (a,) = b._dcm_dict
+        step = a._dcm_dict[b]  # a.dcm(b)
+        seen = {a, b}
+        todo = [a]
+        while todo:
+            f = todo.pop()
+            for g in f._dcm_dict:
+                if g in seen:
+                    continue
+                seen.add(g)
+                todo.append(g)
+                m = g.dcm(a) * step
+                m = m.applyfunc(book.name)
+                g._dcm_cache[b] = m
+                b._dcm_cache[g] = m.T
 
     def simprot(
         self, a: ReferenceFrame, b: ReferenceFrame, axis: Any, angle: Any, *, line=None
@@ -173,12 +206,14 @@ class Kinematics:
                 raise ValueError("Simprot: the axis vector is zero")
             m = kin.axis_dcm(axis.to_matrix(a), angle)
             b.orient_explicit(a, m)
+            self._name_dcms(b)
             rate = sp.diff(sp.sympify(angle), t)
             b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
         else:
             m = kin.simprot_dcm(int(axis), angle)
             unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
             b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
+        self._name_dcms(b)
         self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
@@ -195,6 +230,7 @@ class Kinematics:
             b.orient_space_fixed(a, tuple(qs), kind[5:])
         else:
             self._orient(a, b, m)
+        self._name_dcms(b)
         self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 

@@ -1,0 +1,609 @@
+"""Autolev's ``AutoZ``: intermediate variables that sympy can differentiate.
+
+With ``AutoZ ON`` Autolev names the subexpressions it creates (``Z1``,
+``Z2``, ...) so that a bicycle's equations stay small.  Here an intermediate
+is a sympy *function* of the variables it depends on::
+
+    Z12(q1, q4, lam) = cos(q4)*Z3(q1, lam) + ...
+
+An :class:`Intermediates` book owns the definitions.  Each intermediate is an
+instance of the book's own ``Function`` subclass; its first argument is its
+number and the others are the coordinates, speeds, constants (and ``t`` if it
+appears explicitly) it depends on.  Because these are real arguments:
+
+* ``expr.diff(t)``, ``expr.diff(q1)`` and ``expr.diff(lam)`` follow the chain
+  rule through sympy's own machinery; the partial derivative of an
+  intermediate is again an intermediate, named once and reused;
+* ``expr.has(q1)`` is true exactly when ``expr`` depends on ``q1``;
+* substituting a value for ``q1`` evaluates every intermediate there.
+
+Numeric code evaluates the intermediates in order (:meth:`Intermediates.flatten`),
+and :meth:`Intermediates.expand` gives the full expression.
+
+>>> import sympy as sp
+>>> from sympy.physics.mechanics import dynamicsymbols
+>>> q = dynamicsymbols("q")
+>>> book = Intermediates()
+>>> z = book.name(sp.cos(q) ** 2 + sp.sin(q))
+>>> z
+Z1
+>>> sp.simplify(book.expand(z.diff(q)) - (-2*sp.sin(q)*sp.cos(q) + sp.cos(q)))
+0
+"""
+
+from __future__ import annotations
+
+import random
+import sys
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.physics.vector import dynamicsymbols
+
+__all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
+
+_T = dynamicsymbols._t
+_MARK = sp.Dummy("mark")
+
+
+class Intermediate(sp.Function):
+    """``Z_k(vars)``: intermediate number ``k`` of a book, at ``vars``.
+
+    Each :class:`Intermediates` book makes its own subclass; the class
+    attribute ``book`` leads to the definitions."""
+
+    book: Intermediates
+
+    @classmethod
+    def eval(cls, *args: Any) -> None:
+        return None
+
+    def fdiff(self, argindex: int = 1) -> Any:
+        if argindex == 1:
+            return sp.S.Zero  # the number is not a variable
+        return self.book.partial(self, argindex - 2)
+
+    def _eval_derivative(self, s: Any) -> Any:
+        # The chain rule of Function._eval_derivative, without asking each of
+        # the (many) arguments for its derivative when the answer is plain:
+        # arguments are usually functions of time and symbols.
+        args = self.args[1:]
+        if not all(a.is_Symbol or isinstance(a, AppliedUndef) for a in args):
+            return super()._eval_derivative(s)
+        if s == _T:
+            terms = []
+            for j, a in enumerate(args):
+                if a == _T:
+                    terms.append(self.book.partial(self, j))
+                elif isinstance(a, AppliedUndef) and _T in a.args:
+                    terms.append(self.book.partial(self, j) * a.diff(_T))
+            return sp.Add(*terms)
+        for j, a in enumerate(args):
+            if a == s:
+                return self.book.partial(self, j)
+        if s.is_Symbol or isinstance(s, AppliedUndef | sp.Derivative):
+            return sp.S.Zero
+        return super()._eval_derivative(s)
+
+    def _eval_evalf(self, prec: int) -> Any:
+        return self.book.evalf(self, prec)
+
+    def _sympystr(self, printer: Any) -> str:
+        return self.book.label(self)
+
+    def _latex(self, printer: Any) -> str:
+        label = self.book.label(self)
+        return label[0] + "_{" + label[1:] + "}"
+
+    def _pretty(self, printer: Any) -> Any:
+        from sympy.printing.pretty.stringpict import prettyForm
+
+        return prettyForm(self.book.label(self))
+
+    def _eval_is_real(self) -> bool | None:
+        return self.book.is_real(self)
+
+
+def trivial(expr: Any) -> bool:
+    """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
+    intermediate."""
+    if expr.is_Atom or isinstance(expr, Intermediate | AppliedUndef):
+        return True
+    if expr.is_Mul and len(expr.args) == 2 and expr.args[0].is_Number:
+        return trivial(expr.args[1]) and not expr.args[1].is_Mul
+    if isinstance(expr, sp.sin | sp.cos | sp.tan) and (
+        expr.args[0].is_Atom or isinstance(expr.args[0], AppliedUndef)
+    ):
+        return True
+    if expr.is_Pow and expr.exp.is_Number and trivial(expr.base):
+        return not expr.base.is_Pow and not expr.base.is_Mul
+    return False
+
+
+def has_intermediates(expr: Any) -> bool:
+    """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
+    try:
+        return bool(sp.sympify(expr).atoms(Intermediate))
+    except (sp.SympifyError, AttributeError, TypeError):
+        return False
+
+
+def _variables(expr: Any) -> list[Any]:
+    """The functions of time and the symbols (outside those functions) that
+    ``expr`` depends on, in a canonical order."""
+    funcs = expr.atoms(AppliedUndef)
+    bare = expr.xreplace(dict.fromkeys(funcs, _MARK)) if funcs else expr
+    syms = {s for s in bare.free_symbols if s is not _MARK}
+    return sorted(funcs | syms, key=sp.default_sort_key)
+
+
+class Intermediates:
+    """The book of one script's intermediates (``Z1``, ``Z2``, ...).
+
+    :meth:`name` gives a short expression a name; partial derivatives are
+    named by :meth:`partial` when sympy asks for them."""
+
+    def __init__(self, prefix: str = "Z", taken: Iterable[str] = ()) -> None:
+        self.prefix = prefix
+        self.Z = type(prefix, (Intermediate,), {"book": self})
+        self._taken = set(taken)
+        self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
+        self._defs: list[Any] = [None]  # k -> definition (canonical variables)
+        self._labels: list[str] = [""]
+        self._named: dict[Any, Any] = {}
+        self._partials: dict[tuple[int, int], Any] = {}
+        self._real: dict[int, bool | None] = {}
+        self._full: dict[Any, Any] = {}
+        self._probes: dict[tuple[int, Any], complex] = {}
+        self._count = 0
+        self._rebased: dict[Any, Any] = {}
+        self._children: dict[int, Any] = {}
+        self._numbers: dict[Any, Any] = {}
+
+    def __len__(self) -> int:
+        return len(self._defs) - 1
+
+    # ------------------------------------------------------------- naming
+
+    def name(self, expr: Any) -> Any:
+        """``expr`` itself if trivial (or holding derivatives), else the
+        intermediate that stands for it (the same one for the same
+        expression)."""
+        expr = sp.sympify(expr)
+        if not isinstance(expr, sp.Expr) or trivial(expr) or expr.has(sp.Derivative):
+            return expr
+        expr = self.rebase(expr)
+        found = self._named.get(expr)
+        if found is not None:
+            return found
+        if expr.could_extract_minus_sign():
+            return -self.name(-expr)
+        variables = tuple(_variables(expr))
+        k = len(self._defs)
+        while True:
+            self._count += 1
+            label = f"{self.prefix}{self._count}"
+            if label not in self._taken:
+                break
+        self._defs.append(expr)
+        self._vars.append(variables)
+        self._labels.append(label)
+        z = self.Z(sp.Integer(k), *variables)
+        self._named[expr] = z
+        return z
+
+    def _canonical(self, z: Intermediate) -> bool:
+        return tuple(z.args[1:]) == self._vars[int(z.args[0])]
+
+    def rebase(self, expr: Any) -> Any:
+        """``expr`` with each intermediate that is taken elsewhere than at its
+        own variables (a variable was substituted, e.g. a dependent speed by
+        its expression) replaced by an intermediate of its own, so numeric
+        code evaluates every intermediate once."""
+        bad = [z for z in expr.atoms(self.Z) if not self._canonical(z)]
+        if not bad:
+            return expr
+        if sys.getrecursionlimit() < 20000:
+            sys.setrecursionlimit(20000)
+        rule = {}
+        for z in bad:
+            found = self._rebased.get(z)
+            if found is None:
+                found = self._rebased[z] = self.name(self.definition(z))
+            rule[z] = found
+        return expr.xreplace(rule)
+
+    def name_all(self, exprs: Iterable[Any]) -> list[Any]:
+        return [self.name(e) for e in exprs]
+
+    def name_linear(self, expr: Any, xs: Sequence[Any]) -> Any:
+        """``expr = rest + sum(c_k * x_k)`` with ``rest`` and each ``c_k``
+        named, so that the terms in ``xs`` (speeds, their derivatives) stay
+        visible; an expression not linear in ``xs`` is named whole."""
+        expr = sp.sympify(expr)
+        present = [x for x in xs if expr.has(x)]
+        if not present:
+            return self.name(expr)
+        plain = [sp.Dummy() for _ in present]
+        w = expr.xreplace(dict(zip(present, plain, strict=True)))
+        coefs = [w.diff(p) for p in plain]
+        if any(c.has(*plain) for c in coefs):
+            return expr  # not linear: keep it as it is
+        rest = w.xreplace(dict.fromkeys(plain, sp.S.Zero))
+        if rest.has(*plain):
+            return expr
+        return self.name(rest) + sp.Add(
+            *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
+        )
+
+    def label(self, z: Intermediate) -> str:
+        k = int(z.args[0])
+        if tuple(z.args[1:]) == self._vars[k]:
+            return self._labels[k]
+        return self._labels[k] + "(" + ", ".join(str(a) for a in z.args[1:]) + ")"
+
+    def definition(self, z: Intermediate) -> Any:
+        """What ``z`` stands for, at its own arguments (one level)."""
+        k = int(z.args[0])
+        body = self._defs[k]
+        args = tuple(z.args[1:])
+        if args == self._vars[k]:
+            return body
+        return body.xreplace(dict(zip(self._vars[k], args, strict=True)))
+
+    value = definition
+
+    def is_real(self, z: Intermediate) -> bool | None:
+        k = int(z.args[0])
+        if k not in self._real:
+            self._real[k] = None  # guards recursion
+            self._real[k] = self._defs[k].is_real
+        return self._real[k]
+
+    # -------------------------------------------------------- derivatives
+
+    def partial(self, z: Intermediate, j: int) -> Any:
+        """``d z / d var_j`` (named), at ``z``'s own arguments."""
+        k = int(z.args[0])
+        key = (k, j)
+        found = self._partials.get(key)
+        if found is None:
+            x = self._vars[k][j]
+            found = self.name(self._pd(self._defs[k], x, {}))
+            self._partials[key] = found
+        args = tuple(z.args[1:])
+        if args != self._vars[k]:
+            found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
+        return found
+
+    def _pd(self, e: Any, x: Any, memo: dict) -> Any:
+        """Partial derivative of ``e`` by the variable ``x`` (a function of
+        time, a symbol, or ``t`` meaning explicit time only): a walk over
+        the expression that skips what does not depend on ``x`` and never
+        builds ``Derivative`` objects."""
+        if e == x:
+            return sp.S.One
+        if e.is_Atom or isinstance(e, AppliedUndef):
+            return sp.S.Zero
+        found = memo.get(e)
+        if found is not None:
+            return found
+        if isinstance(e, Intermediate):
+            args = e.args[1:]
+            if all(a.is_Atom or isinstance(a, AppliedUndef) for a in args):
+                out = e.book.partial(e, args.index(x)) if x in args else sp.S.Zero
+            else:
+                out = sp.Add(
+                    *[
+                        e.book.partial(e, j) * d
+                        for j, a in enumerate(args)
+                        if (d := self._pd(a, x, memo)) != 0
+                    ]
+                )
+        elif e.is_Add:
+            out = sp.Add(*[self._pd(a, x, memo) for a in e.args])
+        elif e.is_Mul:
+            args = e.args
+            terms = []
+            for i, a in enumerate(args):
+                d = self._pd(a, x, memo)
+                if d != 0:
+                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
+            out = sp.Add(*terms)
+        elif e.is_Pow and not e.exp.has(x):
+            d = self._pd(e.base, x, memo)
+            out = sp.S.Zero if d == 0 else e.exp * e.base ** (e.exp - 1) * d
+        elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
+            out = sp.Add(
+                *[
+                    e.fdiff(i + 1) * d
+                    for i, a in enumerate(e.args)
+                    if (d := self._pd(a, x, memo)) != 0
+                ]
+            )
+        else:  # anything else: sympy, by a plain symbol
+            s = sp.Dummy("x")
+            if x == _T:
+                funcs = {f: sp.Dummy() for f in e.atoms(AppliedUndef)}
+                back = {d: f for f, d in funcs.items()}
+                out = e.xreplace(funcs).diff(x).xreplace(back)
+            else:
+                out = e.xreplace({x: s}).diff(s).xreplace({s: x})
+        memo[e] = out
+        return out
+
+    # ---------------------------------------------------------- expansion
+
+    def _ordered(self, exprs: Iterable[Any], known: Any = ()) -> list[Any]:
+        """Intermediates that ``exprs`` use, each after those it uses (those
+        in ``known`` and what only they use are left out)."""
+        seen: set[Any] = set()
+        order: list[Any] = []
+        stack: list[tuple[Any, bool]] = []
+        for e in exprs:
+            for z in sp.sympify(e).atoms(self.Z):
+                if z not in known:
+                    stack.append((z, False))
+        while stack:
+            z, done = stack.pop()
+            if done:
+                order.append(z)
+                continue
+            if z in seen:
+                continue
+            seen.add(z)
+            stack.append((z, True))
+            for inner in self._uses(z):
+                if inner not in seen and inner not in known:
+                    stack.append((inner, False))
+        return order
+
+    def _uses(self, z: Intermediate) -> Any:
+        """The intermediates in ``z``'s definition (kept for canonical ones)."""
+        k = int(z.args[0])
+        if tuple(z.args[1:]) != self._vars[k]:
+            return self.definition(z).atoms(self.Z)
+        found = self._children.get(k)
+        if found is None:
+            found = self._children[k] = self._defs[k].atoms(self.Z)
+        return found
+
+    def expand(self, expr: Any) -> Any:
+        """``expr`` with every intermediate replaced by what it stands for
+        (a matrix or vector: each element)."""
+        from .kinematics import vmap
+
+        if isinstance(expr, sp.MatrixBase):
+            return expr.applyfunc(self.expand)
+        if not isinstance(expr, sp.Basic):
+            if hasattr(expr, "args") and not isinstance(expr, list | tuple):
+                return vmap(expr, self.expand)
+            return expr
+        zs = self._ordered([expr])
+        if not zs:
+            return expr
+        for z in zs:
+            if z not in self._full:
+                self._full[z] = self.definition(z).xreplace(self._full)
+        return expr.xreplace(self._full)
+
+    def flatten(
+        self, exprs: Sequence[Any], symbol: str = "_z"
+    ) -> tuple[list[tuple[Any, Any]], list[Any]]:
+        """``(assignments, reduced)`` in the form of ``sympy.cse``: plain
+        symbols for the intermediates, each defined after those it uses."""
+        exprs = list(exprs)
+        zs = self._ordered(exprs)
+        rule = {z: sp.Symbol(f"{symbol}{i}") for i, z in enumerate(zs)}
+        assignments = [(rule[z], self.definition(z).xreplace(rule)) for z in zs]
+        reduced = [
+            sp.sympify(e).xreplace(rule) if isinstance(e, sp.Basic) else e
+            for e in exprs
+        ]
+        return assignments, reduced
+
+    def evalf(self, z: Intermediate, prec: int) -> Any:
+        """``z``'s value as a number (its arguments numbers): the
+        intermediates it uses are evaluated once each, in order."""
+        cache = self._numbers
+        if len(cache) > 500_000:
+            cache.clear()
+        key = (z, prec)
+        if key in cache:
+            return cache[key]
+        dps = sp.core.evalf.prec_to_dps(prec)
+        values: dict[Any, Any] = {}
+        for inner in self._ordered([z]):
+            k = (inner, prec)
+            if k not in cache:
+                body = self.definition(inner).xreplace(values)
+                cache[k] = body.evalf(dps) if body.free_symbols == set() else body
+            values[inner] = cache[k]
+        return cache[key]
+
+    # ------------------------------------------------------------- probes
+
+    def probe(self, expr: Any, point: int, zero: Iterable[Any] = ()) -> complex:
+        """``expr``'s value at a probe point: the variables in ``zero`` are 0
+        at point 0, every other variable takes a fixed random value."""
+        zero = set(zero)
+        expr = sp.sympify(expr)
+        zs = self._ordered([expr])
+        values: dict[Any, Any] = {}
+
+        def number(x: Any) -> Any:
+            if point == 0 and x in zero:
+                return sp.Float(0.0)
+            rng = random.Random(f"{point}:{x}")
+            return sp.Float(rng.uniform(0.5, 1.5))
+
+        def at(e: Any) -> Any:
+            rule = dict(values)
+            bare = e.xreplace(dict.fromkeys(e.atoms(self.Z), _MARK))
+            for x in _variables(bare):
+                if x is not _MARK:
+                    rule.setdefault(x, number(x))
+            return e.xreplace(rule)
+
+        for z in zs:
+            key = (point, z)
+            if key not in self._probes:
+                try:
+                    self._probes[key] = complex(sp.N(at(self.definition(z))))
+                except (TypeError, ValueError, ZeroDivisionError):
+                    self._probes[key] = complex("nan")
+            v = self._probes[key]
+            values[z] = (
+                sp.Float(v.real) + sp.I * sp.Float(v.imag)
+                if v.imag
+                else sp.Float(v.real)
+            )
+        try:
+            out = complex(sp.N(at(expr)))
+        except (TypeError, ValueError, ZeroDivisionError):
+            out = complex("nan")
+        return 0j if out != out else out
+
+    # ------------------------------------------------------ linear solves
+
+    def solve(self, a: sp.Matrix, b: sp.Matrix, zero: Iterable[Any] = ()) -> sp.Matrix:
+        """Solve ``a x = b`` by Gaussian elimination, naming every entry.
+
+        Pivots are chosen numerically: an entry non-zero with the variables in
+        ``zero`` set to 0 (the usual reference configuration) if possible, the
+        largest at a random point otherwise."""
+        zero = list(zero)
+        n = a.rows
+        rows = [[self.name(a[i, j]) for j in range(a.cols)] for i in range(n)]
+        rhs = [[self.name(b[i, j]) for j in range(b.cols)] for i in range(n)]
+        for col in range(n):
+            best, best_key = None, None
+            for r in range(col, n):
+                e = rows[r][col]
+                if e == 0:
+                    continue
+                at_zero = abs(self.probe(e, 0, zero))
+                at_random = abs(self.probe(e, 1, zero))
+                if at_random < 1e-12 and at_zero < 1e-12:
+                    continue
+                key = (at_zero > 1e-9 * max(1.0, at_random), at_zero, at_random)
+                if best_key is None or key > best_key:
+                    best, best_key = r, key
+            if best is None:
+                best = next((r for r in range(col, n) if rows[r][col] != 0), None)
+            if best is None:
+                raise ValueError("the linear system is singular")
+            rows[col], rows[best] = rows[best], rows[col]
+            rhs[col], rhs[best] = rhs[best], rhs[col]
+            p = rows[col][col]
+            for r in range(n):
+                if r == col or rows[r][col] == 0:
+                    continue
+                f = self.name(rows[r][col] / p)
+                rows[r] = [
+                    self.name(x - f * y) if y != 0 else x
+                    for x, y in zip(rows[r], rows[col], strict=True)
+                ]
+                rhs[r] = [
+                    self.name(x - f * y) if y != 0 else x
+                    for x, y in zip(rhs[r], rhs[col], strict=True)
+                ]
+        return sp.Matrix(n, b.cols, lambda i, j: self.name(rhs[i][j] / rows[i][i]))
+
+
+# ---------------------------------------------------------------- numbers
+
+_FUNCS: dict[type, Any] = {}
+
+
+def _funcs() -> dict[type, Any]:
+    if not _FUNCS:
+        import cmath
+
+        _FUNCS.update(
+            {
+                sp.sin: cmath.sin,
+                sp.cos: cmath.cos,
+                sp.tan: cmath.tan,
+                sp.asin: cmath.asin,
+                sp.acos: cmath.acos,
+                sp.atan: cmath.atan,
+                sp.sinh: cmath.sinh,
+                sp.cosh: cmath.cosh,
+                sp.tanh: cmath.tanh,
+                sp.exp: cmath.exp,
+                sp.log: cmath.log,
+                sp.Abs: abs,
+            }
+        )
+    return _FUNCS
+
+
+def _num(e: Any, env: dict) -> complex:
+    """The value of a numeric expression (its intermediates in ``env``)."""
+    found = env.get(e)
+    if found is not None:
+        return found
+    if e.is_Number:
+        return complex(float(e))
+    if e.is_Add:
+        return sum((_num(a, env) for a in e.args), 0j)
+    if e.is_Mul:
+        out = 1 + 0j
+        for a in e.args:
+            out *= _num(a, env)
+        return out
+    if e.is_Pow:
+        base, exp = _num(e.base, env), e.exp
+        if exp.is_Integer:
+            return base ** int(exp)
+        return base ** _num(exp, env)
+    f = _funcs().get(e.func)
+    if f is not None and len(e.args) == 1:
+        return complex(f(_num(e.args[0], env)))
+    if e.func is sp.atan2:
+        import math
+
+        y, x = (_num(a, env) for a in e.args)
+        return complex(math.atan2(y.real, x.real))
+    if e.is_Symbol or isinstance(e, AppliedUndef | sp.Derivative):
+        raise ValueError(f"no value for {e}")
+    if isinstance(e, Intermediate):
+        return number(e, env)
+    if e.is_number:
+        return complex(sp.N(e))
+    values = {
+        k: sp.sympify(v) for k, v in env.items() if not isinstance(k, Intermediate)
+    }
+    rest = e.xreplace(values).xreplace(
+        {z: sp.sympify(env[z]) for z in e.atoms(Intermediate) if z in env}
+    )
+    return complex(sp.N(rest))
+
+
+def number(expr: Any, env: dict) -> complex:
+    """The value of ``expr`` where ``env`` gives the values of its variables
+    (symbols, functions of time, derivatives).  Its intermediates are
+    evaluated once each, in order, and kept in ``env`` for the next
+    expression at the same point (e.g. the entries of a matrix)."""
+    expr = sp.sympify(expr)
+    zs = expr.atoms(Intermediate)
+    if zs:
+        book = next(iter(zs)).book
+        expr = book.rebase(expr)
+        for z in book._ordered([expr], env):
+            if z not in env:
+                env[z] = _num_z(book, z, env)
+    return _num(expr, env)
+
+
+def _num_z(book: Intermediates, z: Any, env: dict) -> complex:
+    k = int(z.args[0])
+    args = tuple(z.args[1:])
+    if args == book._vars[k]:
+        return _num(book._defs[k], env)
+    # Evaluated elsewhere than at its own variables: bind them.
+    local = {v: _num(a, env) for v, a in zip(book._vars[k], args, strict=True)}
+    return number(book._defs[k], local)
