@@ -40,6 +40,7 @@ def chain_source(n: int) -> str:
     """An Autolev script for a 3-D chain of n rigid bodies (3n speeds)."""
     lines = [
         f"% {n}-body spatial chain: body-123 angles, speeds = angular velocities",
+        "AutoZ ON",
         "Newtonian N",
         f"Bodies B{{{n}}}",
         "Points O",

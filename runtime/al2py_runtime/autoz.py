@@ -122,6 +122,22 @@ def trivial(expr: Any) -> bool:
     return False
 
 
+def _linear_terms(expr: Any, xs: Sequence[Any]) -> tuple[list, Any] | None:
+    """``expr = sum(c_k * x_k) + rest`` read term by term, or None."""
+    position = {x: k for k, x in enumerate(xs)}
+    coefs: list[Any] = [[] for _ in xs]
+    rest = []
+    for term in sp.Add.make_args(expr):
+        if not term.has(*xs):
+            rest.append(term)
+            continue
+        factor, var = term.as_independent(*xs, as_Add=False)
+        if var not in position:
+            return None
+        coefs[position[var]].append(factor)
+    return [sp.Add(*c) for c in coefs], sp.Add(*rest)
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -158,6 +174,8 @@ class Intermediates:
         self._full: dict[Any, Any] = {}
         self._probes: dict[tuple[int, Any], complex] = {}
         self._count = 0
+        #: ZEE_NOT: quantities that no intermediate may contain
+        self.exclude: frozenset = frozenset()
         self._rebased: dict[Any, Any] = {}
         self._children: dict[int, Any] = {}
         self._numbers: dict[Any, Any] = {}
@@ -174,6 +192,10 @@ class Intermediates:
         expr = sp.sympify(expr)
         if not isinstance(expr, sp.Expr) or trivial(expr) or expr.has(sp.Derivative):
             return expr
+        if self.exclude and expr.has(*self.exclude):
+            # ZEE_NOT: these quantities stay explicit (Kane(F1, F2) solves for
+            # them), so only their coefficients are named.
+            return self.name_linear(expr, [x for x in self.exclude if expr.has(x)])
         expr = self.rebase(expr)
         found = self._named.get(expr)
         if found is not None:
@@ -226,14 +248,18 @@ class Intermediates:
         present = [x for x in xs if expr.has(x)]
         if not present:
             return self.name(expr)
+        if any(x in self.exclude for x in present):
+            present += [x for x in self.exclude if x not in present and expr.has(x)]
         plain = [sp.Dummy() for _ in present]
         w = expr.xreplace(dict(zip(present, plain, strict=True)))
-        coefs = [w.diff(p) for p in plain]
-        if any(c.has(*plain) for c in coefs):
+        split = _linear_terms(w, plain)
+        if split is not None:
+            coefs, rest = split
+        else:
+            coefs = [self._pd(w, p, {}) for p in plain]  # one memo per variable
+            rest = w.xreplace(dict.fromkeys(plain, sp.S.Zero))
+        if any(c.has(*plain) for c in coefs) or rest.has(*plain):
             return expr  # not linear: keep it as it is
-        rest = w.xreplace(dict.fromkeys(plain, sp.S.Zero))
-        if rest.has(*plain):
-            return expr
         return self.name(rest) + sp.Add(
             *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
         )

@@ -217,7 +217,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
             written = result.write(outdir)
-            for path, table in zip(written, result.tables, strict=True):
+            for path, table in zip(written, result.written, strict=True):
                 cols = ", ".join(table.names)
                 print(f"Wrote {path} ({len(table)} rows: {cols})")
             for line in result.solution_lines():

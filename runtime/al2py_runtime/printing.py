@@ -2,6 +2,8 @@
 
 >>> import sympy as sp
 >>> from sympy.physics.mechanics import dynamicsymbols
+
+from .autoz import Intermediate
 >>> X, Y = dynamicsymbols("X Y")
 >>> autolev_str(-sp.pi + (X + 2*Y)**2 + 3*X.diff()**2)
 "-3.141593 + (X+2*Y)^2 + 3*X'^2"
@@ -31,6 +33,8 @@ import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
+
+from .autoz import Intermediate
 
 __all__ = ["autolev_str", "format_response", "format_number"]
 
@@ -145,6 +149,8 @@ class _AutolevPrinter:
             return self.power(expr)
         if isinstance(expr, sp.Derivative):
             return self.derivative(expr), _ATOM
+        if isinstance(expr, Intermediate):
+            return expr.book.label(expr).upper(), _ATOM
         if isinstance(expr, AppliedUndef):
             name = expr.func.__name__.upper()
             if expr.args == (_t,):

@@ -102,3 +102,6 @@ class Response:
     #: printed exactly as computed: the user's own Factor/Expand/... result,
     #: which display simplification must not undo
     verbatim: bool = False
+    #: AutoZ was ON: intermediates are shown by name (their definitions
+    #: first), else written out
+    autoz: bool = False

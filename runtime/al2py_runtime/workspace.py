@@ -554,7 +554,13 @@ class Workspace(Mapping):
     def respond(self, label: str, value: Any, *, line: int | None = None) -> None:
         """Record a ``-> (n) LABEL = value`` response (printed by ``transcript``)."""
         self.responses.append(
-            Response(line, label.upper(), value, self.settings.digits)
+            Response(
+                line,
+                label.upper(),
+                value,
+                self.settings.digits,
+                autoz=self.settings.autoz,
+            )
         )
 
     def set(self, name: str, value: Any = None) -> None:
@@ -573,6 +579,9 @@ class Workspace(Mapping):
             from .autoz import Intermediates
 
             book = self._book = Intermediates(taken=self._names)
+        zee_not = self._values.get("ZEE_NOT")
+        if isinstance(zee_not, sp.MatrixBase):
+            book.exclude = frozenset(sp.sympify(x) for x in zee_not)
         return book
 
     def _book_or_none(self) -> Any:
@@ -623,9 +632,44 @@ class Workspace(Mapping):
             lines = lines[: self._exit_line]
         shown = [
             r if r.verbatim else replace(r, value=self.model._display(r.value))
-            for r in self.responses
+            for r in self._with_intermediates(self.responses)
         ]
         return transcript_lines(lines, shown)
+
+    def _with_intermediates(self, responses: list[Response]) -> list[Response]:
+        """Responses given while AutoZ was ON show intermediates by name, each
+        defined (``Z12 = ...``) just before the first response that uses it;
+        those given while it was OFF write them out."""
+        book = self._book_or_none()
+        if book is None:
+            return list(responses)
+        from sympy.physics.vector import Vector
+
+        from .autoz import has_intermediates
+
+        out: list[Response] = []
+        defined: set[Any] = set()
+        for r in responses:
+            value = r.value
+            parts = [value]
+            if isinstance(value, sp.MatrixBase):
+                parts = list(value)
+            elif isinstance(value, Vector):
+                parts = [m for m, _frame in value.args]
+            if not any(has_intermediates(p) for p in parts):
+                out.append(r)
+            elif not r.autoz:
+                out.append(replace(r, value=book.expand(value)))
+            else:
+                for z in book._ordered(parts, defined):
+                    defined.add(z)
+                    out.append(
+                        Response(
+                            r.line, book.label(z), book.definition(z), r.digits, True
+                        )
+                    )
+                out.append(r)
+        return out
 
     def print_transcript(self, source: Iterable[str]) -> None:
         for line in self.transcript(source):

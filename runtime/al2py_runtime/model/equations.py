@@ -14,7 +14,7 @@ from sympy.physics.vector import (
 )
 
 from .. import kinematics as kin
-from ..kane import arrange, solve_speeds
+from ..kane import arrange, linear_terms, solve_speeds
 from .state import t
 
 __all__ = ["KaneEquations"]
@@ -25,25 +25,34 @@ class KaneEquations:
 
     # -------------------------------------------------- Fr and Fr*
 
-    def _dot_rows(
-        self, vec: Vector, partials: list, frame: ReferenceFrame | None = None
-    ) -> list:
-        return [self._zdot(vec, p, frame) if p != Vector(0) else 0 for p in partials]
+    def _dot_rows(self, vec: Vector, partials: list) -> list:
+        return [vec.dot(p) if p != Vector(0) else 0 for p in partials]
 
-    def _zdot(self, a: Vector, b: Vector, frame: ReferenceFrame | None) -> Any:
-        """``a . b``; while AutoZ is ON, both are first expressed in ``frame``
-        with each measure number named, so the product stays short."""
-        book = self.ws.intermediates
-        if book is None or frame is None:
-            return a.dot(b)
-        ma = [book.name(x) for x in a.to_matrix(frame)]
-        mb = [book.name(x) for x in b.to_matrix(frame)]
-        return book.name(sp.Add(*[x * y for x, y in zip(ma, mb, strict=True)]))
+    # AutoZ: vectors as three named measure numbers in one frame, so that
+    # partial velocities are read off and every dot product is short.
 
-    def _z(self, expr: Any) -> Any:
-        """``expr`` named as an intermediate while AutoZ is ON."""
-        book = self.ws.intermediates
-        return expr if book is None else book.name(expr)
+    def _zpartials(
+        self, v: Vector, speeds: list, frame: ReferenceFrame, book: Any
+    ) -> list[list[Any]]:
+        """The partial velocities of ``v`` by ``speeds``: for each speed, the
+        three named measure numbers in ``frame``."""
+        keep = speeds + [sp.Derivative(u, t) for u in speeds]
+        v = self._actual(v, keep)
+        if v == Vector(0):
+            return [[sp.S.Zero] * 3 for _ in speeds]
+        measures = [book.name_linear(e, speeds) for e in v.to_matrix(frame)]
+        split = [linear_terms(e, speeds) for e in measures]
+        return [
+            [
+                s[0][j] if s is not None else book.name(sp.diff(e, u))
+                for s, e in zip(split, measures, strict=True)
+            ]
+            for j, u in enumerate(speeds)
+        ]
+
+    @staticmethod
+    def _zdot(a: list, b: list, book: Any) -> Any:
+        return book.name(sp.Add(*[x * y for x, y in zip(a, b, strict=True)]))
 
     def fr(self) -> sp.Matrix:
         """``Fr()``: generalized active forces (one row per independent or
@@ -52,17 +61,18 @@ class KaneEquations:
         st = self._mech
         speeds = self._rows_speeds("Fr()")
         rows = [sp.Integer(0)] * len(speeds)
-        for p, f in st.forces.items():
+        book = self.ws.intermediates
+        loads = [(f, self.vel(p, n), n) for p, f in st.forces.items()]
+        loads += [(tq, self.ang_vel(b, n), b) for b, tq in st.torques.items()]
+        for f, v, frame in loads:
             if f == Vector(0):
                 continue
-            parts = self._partials(self.vel(p, n), speeds)
-            dots = self._dot_rows(f, parts, n)
-            rows = [r + d for r, d in zip(rows, dots, strict=True)]
-        for b, tq in st.torques.items():
-            if tq == Vector(0):
-                continue
-            parts = self._partials(self.ang_vel(b, n), speeds)
-            dots = self._dot_rows(tq, parts, b)
+            if book is None:
+                dots = self._dot_rows(f, self._partials(v, speeds))
+            else:
+                mf = [book.name(e) for e in self._actual(f).to_matrix(frame)]
+                parts = self._zpartials(v, speeds, frame, book)
+                dots = [self._zdot(mf, part, book) for part in parts]
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
         return sp.Matrix(rows)
 
@@ -90,14 +100,36 @@ class KaneEquations:
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
 
-        def add(vec: Vector, parts: list, frame: ReferenceFrame) -> None:
+        book = self.ws.intermediates
+
+        def add(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
+            if book is not None:
+                return add_named(vec, v, frame)
             rest, coefs = kin.split_linear_vector(vec, accels)
-            for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
+            for k, (r, part) in enumerate(
+                zip(rows, self._partials(v, speeds), strict=True)
+            ):
                 if part == Vector(0):
                     continue
                 moved[k] = True
-                r.append(self._zdot(rest, part, frame))
-                r.extend(self._zdot(c, part, frame) * a for a, c in coefs.items())
+                r.append(rest.dot(part))
+                r.extend(c.dot(part) * a for a, c in coefs.items())
+
+        def add_named(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
+            measures = [book.name_linear(e, accels) for e in vec.to_matrix(frame)]
+            split = [linear_terms(e, accels) for e in measures]
+            if any(s is None for s in split):  # pragma: no cover - linear in u'
+                raise ValueError("FrStar(): an acceleration is not linear in U'")
+            parts = self._zpartials(v, speeds, frame, book)
+            for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
+                if all(x == 0 for x in part):
+                    continue
+                moved[k] = True
+                r.append(self._zdot([s[1] for s in split], part, book))
+                for j, a in enumerate(accels):
+                    c = self._zdot([s[0][j] for s in split], part, book)
+                    if c != 0:
+                        r.append(c * a)
 
         for o in st.massive:
             m = self._mass(o, strict=False)
@@ -105,10 +137,10 @@ class KaneEquations:
             if m != 0:
                 a = self._actual(self.acc(p, n))
                 if a != Vector(0):
-                    add(-m * a, self._partials(self.vel(p, n), speeds), n)
+                    add(-m * a, self.vel(p, n), n)
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
                 tq = self._inertia_torque(o, n)
-                add(tq, self._partials(self.ang_vel(o, n), speeds), o)
+                add(tq, self.ang_vel(o, n), o)
         if st.massive and not all(moved):
             still = [
                 self.ws.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m

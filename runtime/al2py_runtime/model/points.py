@@ -73,6 +73,14 @@ class Kinematics:
         keep = list(keep)
         return kin.vmap(x, self.ws._resolver(keep))
 
+    def _tidyv(self, v: Any) -> Any:
+        """Light simplification of a result, skipped while AutoZ is ON (it is
+        cosmetic, and large models are why AutoZ is on)."""
+        return v if self.ws.settings.autoz else kin.tidy_vector(v)
+
+    def _tidy(self, e: Any) -> Any:
+        return e if self.ws.settings.autoz else kin.tidy(e)
+
     def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
         v = self._actual(v)
         if isinstance(v, Vector | Dyadic):
@@ -118,7 +126,7 @@ class Kinematics:
                 seen.add(s)
                 v = self._known_vel(s, frame)
                 if v is not None:
-                    return kin.tidy_vector(v + self._dt(self.pos(s, p), frame))
+                    return self._tidyv(v + self._dt(self.pos(s, p), frame))
                 todo.append(s)
         raise ValueError(f"V_{p.name}_{frame.name}> is not defined")
 
@@ -135,7 +143,7 @@ class Kinematics:
             v = self.vel(p, frame)
         except ValueError:
             raise ValueError(f"A_{p.name}_{frame.name}> is not defined") from None
-        return kin.tidy_vector(self._dt(v, frame))
+        return self._tidyv(self._dt(v, frame))
 
     def ang_vel(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
         """``W_B_A>``: given, or from the direction cosine matrices."""
@@ -153,7 +161,7 @@ class Kinematics:
         st = self._mech
         if (b, a) in st.angacc:
             return st.angacc[(b, a)]
-        return kin.tidy_vector(self._dt(self.ang_vel(b, a), a))
+        return self._tidyv(self._dt(self.ang_vel(b, a), a))
 
     def dcm(self, a: ReferenceFrame, b: ReferenceFrame) -> sp.Matrix:
         """``A_B``: element [i,j] is Dot(Ai>, Bj>)."""
@@ -283,7 +291,7 @@ class Kinematics:
             pass
         qdots = [sp.Derivative(q, t) for q in qs]
         if given is not None and not any(given.to_matrix(b).has(d) for d in qdots):
-            w = [kin.tidy(given.dot(e)) for e in (b.x, b.y, b.z)]
+            w = [self._tidy(given.dot(e)) for e in (b.x, b.y, b.z)]
         else:
             speeds = self._speeds()
             if len(speeds) < 3:
@@ -297,7 +305,7 @@ class Kinematics:
             rates = solve_speeds(eqs, qdots)
         out = []
         for q, r in zip(qs, rates, strict=True):
-            r = kin.simplify_small(r)
+            r = r if self.ws.settings.autoz else kin.simplify_small(r)
             out.append(self.ws.assign(self.ws.name_of(q) + "'", r, line=line))
         return tuple(out)
 
@@ -305,13 +313,13 @@ class Kinematics:
 
     def _v2pts(self, n, a, o, p) -> Vector:
         v = self.vel(o, n) + (self.ang_vel(a, n) ^ self.pos(o, p))
-        return kin.tidy_vector(v)
+        return self._tidyv(v)
 
     def _a2pts(self, n, a, o, p) -> Vector:
         w = self.ang_vel(a, n)
         r = self.pos(o, p)
         v = self.acc(o, n) + (self.ang_acc(a, n) ^ r) + (w ^ (w ^ r))
-        return kin.tidy_vector(v)
+        return self._tidyv(v)
 
     def _deferred(self, which: str, p: Point, n: ReferenceFrame) -> Vector:
         """A velocity/acceleration stated by ``V2pts``/``A2pts`` before the
@@ -364,7 +372,7 @@ class Kinematics:
         if vpa is None:
             vpa = self._dt(r, a)
         v = self.vel(o, n) + vpa + (self.ang_vel(a, n) ^ r)
-        return self._set_formed("V", p, n, kin.tidy_vector(v), line)
+        return self._set_formed("V", p, n, self._tidyv(v), line)
 
     def a1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
@@ -384,7 +392,7 @@ class Kinematics:
             + (self.ang_acc(a, n) ^ r)
             + (w ^ (w ^ r))
         )
-        return self._set_formed("A", p, n, kin.tidy_vector(v), line)
+        return self._set_formed("A", p, n, self._tidyv(v), line)
 
     def _set_formed(self, which, p, n, v, line) -> Vector:
         v = self._kinematic(v)

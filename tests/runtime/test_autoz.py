@@ -1,0 +1,122 @@
+"""AutoZ intermediates (al2py_runtime.autoz): chain rule, numbers, solves.
+
+Every check compares with the written-out expression at random points."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime import autoz
+from al2py_runtime.autoz import Intermediates, has_intermediates
+from sympy.physics.mechanics import dynamicsymbols
+
+q1, q2, u1 = dynamicsymbols("q1 q2 u1")
+L, M = sp.symbols("L M")
+t = dynamicsymbols._t
+
+
+def _point(seed: int) -> dict:
+    rng = random.Random(seed)
+    point = {x: sp.Float(rng.uniform(0.2, 1.3)) for x in (q1, q2, u1, L, M, t)}
+    dq = {x.diff(t): sp.Float(rng.uniform(-1, 1)) for x in (q1, q2, u1)}
+    return {**dq, **point}
+
+
+def _close(a, b, seed=0) -> None:
+    at = _point(seed)
+    x = complex(sp.N(sp.sympify(a).xreplace(at)))
+    y = complex(sp.N(sp.sympify(b).xreplace(at)))
+    assert abs(x - y) <= 1e-10 * max(1.0, abs(y)), (x, y)
+
+
+@pytest.fixture
+def book():
+    b = Intermediates()
+    z1 = b.name(sp.cos(q1) * sp.sin(q2) + L * sp.cos(q2) + sp.atan2(q1, L))
+    z2 = b.name(z1**2 * M + sp.sin(q1) * t + sp.exp(q2 * t) + sp.sqrt(1 + z1**2))
+    return b, z1, z2
+
+
+def test_names_are_reused_and_printed(book):
+    b, z1, z2 = book
+    assert str(z1) == "Z1" and str(z2) == "Z2"
+    assert b.name(b.definition(z1)) == z1  # the same expression, the same name
+    assert b.name(sp.cos(q1)) == sp.cos(q1)  # trivial: no name
+    assert b.name(-b.definition(z2)) == -z2
+
+
+@pytest.mark.parametrize("var", [t, q1, q2, L, M, u1])
+def test_derivatives_follow_the_chain_rule(book, var):
+    """d/dt is total (q' appears), d/dq is partial, d/dt of explicit time
+    terms counted once."""
+    b, _z1, z2 = book
+    e = z2 * u1 + z2**2
+    got = e.diff(var)
+    assert has_intermediates(got) or got == 0
+    for seed in range(3):
+        _close(b.expand(got), b.expand(e).diff(var), seed)
+
+
+def test_has_sees_the_variables(book):
+    _b, z1, z2 = book
+    assert z2.has(q1) and z2.has(L) and z1.has(q2)
+    assert not z1.has(M) and not z1.has(u1)
+
+
+def test_solve_names_and_solves(book):
+    b, z1, z2 = book
+    a = sp.Matrix([[z1, sp.cos(q1), L], [sp.sin(q1), z2, 1], [q2, 1, z1 * z2]])
+    rhs = sp.Matrix([1, L, M])
+    x = b.solve(a, rhs, [q1, q2])
+    assert all(has_intermediates(e) or e.is_Atom for e in x)
+    residual = b.expand(a * x - rhs)
+    for seed in range(3):
+        for e in residual:
+            _close(e, 0, seed)
+
+
+def test_numbers_evaluate_in_order(book):
+    b, z1, z2 = book
+    at = _point(5)
+    expr = z2 / z1 + u1 * z2
+    want = complex(sp.N(b.expand(expr).xreplace(at)))
+    env = {k: complex(v) for k, v in at.items()}
+    assert abs(autoz.number(expr, env) - want) < 1e-12 * abs(want)
+    # evalf with numbers for the variables gives the same value
+    assert abs(complex(sp.N(expr.xreplace(at))) - want) < 1e-12 * abs(want)
+
+
+def test_flatten_is_cse_form(book):
+    b, z1, z2 = book
+    reps, reduced = b.flatten([z2 + z1, z1])
+    assert [str(s) for s, _ in reps] == ["_z0", "_z1"]  # z1 before z2
+    f = sp.lambdify([q1, q2, L, M, t], reduced, cse=lambda e: (reps, e))
+    at = _point(2)
+    got = f(*(float(at[x]) for x in (q1, q2, L, M, t)))
+    want = [complex(sp.N(b.expand(e).xreplace(at))).real for e in (z2 + z1, z1)]
+    assert got == pytest.approx(want, rel=1e-12)
+
+
+def test_substituted_variable_is_rebased(book):
+    """An intermediate taken at another point (a speed replaced by its
+    expression) gets an intermediate of its own, with the same value."""
+    b, _z1, _z2 = book
+    z3 = b.name(u1 * sp.cos(q1) + L * u1**2)
+    moved = z3.xreplace({u1: q2 * L})
+    rebased = b.rebase(moved)
+    assert b._canonical(rebased)
+    _close(b.expand(rebased), b.expand(moved))
+
+
+def test_zee_not_stays_explicit():
+    """ZEE_NOT quantities are never hidden inside an intermediate."""
+    b = Intermediates()
+    f = dynamicsymbols("f")
+    b.exclude = frozenset({f})
+    e = b.name(f * (sp.cos(q1) * sp.sin(q2) + L) + sp.sin(q1) * sp.cos(q2) * M)
+    assert e.has(f)
+    assert all(not z.has(f) for z in e.atoms(autoz.Intermediate))
+    full = f * (sp.cos(q1) * sp.sin(q2) + L) + sp.sin(q1) * sp.cos(q2) * M
+    _close(b.expand(e).xreplace({f: sp.Float(0.7)}), full.xreplace({f: sp.Float(0.7)}))
