@@ -136,7 +136,7 @@ def al2py_seconds(n: int) -> tuple[float, float, int]:
         start = time.perf_counter()
         spec.loader.exec_module(module)
         t_import = time.perf_counter() - start
-        return t_convert, t_import, len(module.AUTOLEV["ZERO"])
+        return t_convert, t_import, len(module.al.value("ZERO"))
 
 
 def best(fn, n: int, repeats: int) -> float:

@@ -101,7 +101,31 @@ def kanesmethod_seconds() -> tuple[float, float, str]:
     return t_derive, time.perf_counter() - start, outcome
 
 
-def al2py_seconds(path: str) -> tuple[float, float]:
+def script_eigenvalues(module) -> list:
+    """The lean/steer eigenvalues from the script's own linearization:
+    ``AL`` (ours: rows U4', U7' by Q4, Q7, U4, U7) or Moore's ``AMAT``
+    (11 x 11, states Q1..Q8, U4, U6, U7), upright, U6 = -v/RR."""
+    upright = {f"Q{k}": 0.0 for k in range(1, 9)}
+    names = module.AUTOLEV
+    out = []
+    for v in SPEEDS:
+        if "AL" in names:
+            al = module.evaluate("AL", U6=-v / 0.3, U4=0.0, U7=0.0, **upright)
+            a = np.zeros((4, 4))
+            a[0, 2] = a[1, 3] = 1.0
+            a[2:, :] = np.asarray(al, dtype=float)
+        else:
+            big = module.evaluate(
+                "AMAT", U6=-v / 0.3, TPHI=0.0, TDELTA=0.0, TTHETAR=0.0
+            )
+            keep = [3, 6, 8, 10]
+            a = np.asarray(big, dtype=float)[np.ix_(keep, keep)]
+        out.append(np.linalg.eigvals(a))
+    return out
+
+
+def al2py_seconds(path: str) -> tuple[float, float, float]:
+    """Convert, import (derive), and the eigenvalues' distance from Table 2."""
     source = Path(path).read_text(encoding="utf-8", errors="replace")
     start = time.perf_counter()
     result = convert(source, path)
@@ -113,7 +137,8 @@ def al2py_seconds(path: str) -> tuple[float, float]:
         module = importlib.util.module_from_spec(spec)
         start = time.perf_counter()
         spec.loader.exec_module(module)
-        return t_convert, time.perf_counter() - start
+        t_import = time.perf_counter() - start
+        return t_convert, t_import, deviation(script_eigenvalues(module))
 
 
 def convert_seconds(path: str) -> float:
@@ -163,8 +188,11 @@ def main(argv: list[str]) -> int:
         status, out, _ = within(args.budget, al2py_seconds, str(path))
         t_imp = show(status, out[1] if status == "ok" else 0, args.budget)
         extra = f" ({out})" if status == "error" else ""
+        if status == "ok":
+            extra = f", its own linearization vs Table 2 within {out[2]:.0e}"
         print(
-            f"  {label}: al2py convert {convert_seconds(str(path)):.2f} s, import {t_imp} s{extra}"
+            f"  {label}: al2py convert {convert_seconds(str(path)):.2f} s,"
+            f" import {t_imp} s{extra}"
         )
     return 0
 

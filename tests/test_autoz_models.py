@@ -101,3 +101,21 @@ def test_transcript_names_intermediates(disc, tmp_path):
     ]
     assert defined and used and defined[0] < min(used)
     assert (tmp_path / "rolling_disc.1").exists()
+
+
+def test_autolev_names_are_written_out(disc):
+    """``AUTOLEV[name]`` gives the full expression; ``al.value`` keeps Z's."""
+    off, on, _tmp = disc
+    full = on.AUTOLEV["ZERO"]
+    assert not has_intermediates(full) and has_intermediates(on.al.value("ZERO"))
+    subs = {on.al._names[k].obj: v for k, v in STATE.items() if not k.endswith("'")}
+    subs.update(
+        {on.al._names[k].obj: v for k, v in {"R": 0.3, "G": 9.81, "M": 2}.items()}
+    )
+    t = on.al._names["T"].obj
+    accel = {
+        on.al._names[k[:-1]].obj.diff(t): v for k, v in STATE.items() if k.endswith("'")
+    }
+    got = np.array([float(e.xreplace(accel).xreplace(subs)) for e in full])
+    want = np.asarray(off.evaluate("ZERO", **STATE), dtype=float).ravel()
+    assert np.allclose(got, want, rtol=1e-10)

@@ -46,6 +46,7 @@ __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
 _T = dynamicsymbols._t
 _MARK = sp.Dummy("mark")
+_VARIABLE = (AppliedUndef, sp.Derivative)
 
 
 class Intermediate(sp.Function):
@@ -70,14 +71,14 @@ class Intermediate(sp.Function):
         # the (many) arguments for its derivative when the answer is plain:
         # arguments are usually functions of time and symbols.
         args = self.args[1:]
-        if not all(a.is_Symbol or isinstance(a, AppliedUndef) for a in args):
+        if not all(a.is_Symbol or isinstance(a, _VARIABLE) for a in args):
             return super()._eval_derivative(s)
         if s == _T:
             terms = []
             for j, a in enumerate(args):
                 if a == _T:
                     terms.append(self.book.partial(self, j))
-                elif isinstance(a, AppliedUndef) and _T in a.args:
+                elif isinstance(a, _VARIABLE) and a.has(_T):
                     terms.append(self.book.partial(self, j) * a.diff(_T))
             return sp.Add(*terms)
         for j, a in enumerate(args):
@@ -109,7 +110,7 @@ class Intermediate(sp.Function):
 def trivial(expr: Any) -> bool:
     """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
     intermediate."""
-    if expr.is_Atom or isinstance(expr, Intermediate | AppliedUndef):
+    if expr.is_Atom or isinstance(expr, Intermediate | AppliedUndef | sp.Derivative):
         return True
     if expr.is_Mul and len(expr.args) == 2 and expr.args[0].is_Number:
         return trivial(expr.args[1]) and not expr.args[1].is_Mul
@@ -147,12 +148,15 @@ def has_intermediates(expr: Any) -> bool:
 
 
 def _variables(expr: Any) -> list[Any]:
-    """The functions of time and the symbols (outside those functions) that
-    ``expr`` depends on, in a canonical order."""
+    """The derivatives, functions of time and symbols (each outside the
+    others) that ``expr`` depends on, in a canonical order."""
+    derivs = expr.atoms(sp.Derivative)
+    if derivs:
+        expr = expr.xreplace(dict.fromkeys(derivs, _MARK))
     funcs = expr.atoms(AppliedUndef)
     bare = expr.xreplace(dict.fromkeys(funcs, _MARK)) if funcs else expr
     syms = {s for s in bare.free_symbols if s is not _MARK}
-    return sorted(funcs | syms, key=sp.default_sort_key)
+    return sorted(derivs | funcs | syms, key=sp.default_sort_key)
 
 
 class Intermediates:
@@ -174,6 +178,8 @@ class Intermediates:
         self._full: dict[Any, Any] = {}
         self._probes: dict[tuple[int, Any], complex] = {}
         self._count = 0
+        #: derivatives that are variables (speeds written Q'), not accelerations
+        self.rates: frozenset = frozenset()
         #: ZEE_NOT: quantities that no intermediate may contain
         self.exclude: frozenset = frozenset()
         self._rebased: dict[Any, Any] = {}
@@ -190,8 +196,10 @@ class Intermediates:
         intermediate that stands for it (the same one for the same
         expression)."""
         expr = sp.sympify(expr)
-        if not isinstance(expr, sp.Expr) or trivial(expr) or expr.has(sp.Derivative):
+        if not isinstance(expr, sp.Expr) or trivial(expr):
             return expr
+        if expr.has(sp.Derivative) and not expr.atoms(sp.Derivative) <= self.rates:
+            return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
             # ZEE_NOT: these quantities stay explicit (Kane(F1, F2) solves for
             # them), so only their coefficients are named.
@@ -311,14 +319,14 @@ class Intermediates:
         builds ``Derivative`` objects."""
         if e == x:
             return sp.S.One
-        if e.is_Atom or isinstance(e, AppliedUndef):
+        if e.is_Atom or isinstance(e, _VARIABLE):
             return sp.S.Zero
         found = memo.get(e)
         if found is not None:
             return found
         if isinstance(e, Intermediate):
             args = e.args[1:]
-            if all(a.is_Atom or isinstance(a, AppliedUndef) for a in args):
+            if all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
                 out = e.book.partial(e, args.index(x)) if x in args else sp.S.Zero
             else:
                 out = sp.Add(

@@ -372,7 +372,7 @@ def evaluate_with_inputs(
         if has_z:
             if not cache:
                 cache.update({k: complex(v) for k, v in subs.items()})
-            number = autoz.number(out, cache)
+            number = autoz.number(expr, cache)  # values of Q' come from subs
         else:
             out = sp.sympify(out.xreplace({t: time}))
             number = complex(sp.N(out))

@@ -579,6 +579,9 @@ class Workspace(Mapping):
             from .autoz import Intermediates
 
             book = self._book = Intermediates(taken=self._names)
+        book.rates = frozenset(
+            u for u in self.model._speeds() if isinstance(u, sp.Derivative)
+        )
         zee_not = self._values.get("ZEE_NOT")
         if isinstance(zee_not, sp.MatrixBase):
             book.exclude = frozenset(sp.sympify(x) for x in zee_not)
@@ -970,7 +973,10 @@ def _diff(y: Any, x: Any) -> Any:
 
 
 class AutolevNames(Mapping):
-    """Read-only view of a workspace: ``AUTOLEV["ZERO[2]"]``, ``AUTOLEV["X'"]``."""
+    """Read-only view of a workspace: ``AUTOLEV["ZERO[2]"]``, ``AUTOLEV["X'"]``.
+
+    Values are full expressions: AutoZ intermediates are written out (the
+    workspace itself, ``al.value(name)``, keeps them)."""
 
     __slots__ = ("_ws",)
 
@@ -978,7 +984,9 @@ class AutolevNames(Mapping):
         self._ws = ws
 
     def __getitem__(self, name: str) -> Any:
-        return self._ws.value(name)
+        value = self._ws.value(name)
+        book = self._ws._book_or_none()
+        return value if book is None else book.expand(value)
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._ws)
