@@ -931,8 +931,15 @@ def _xreplace(expr: Any, table: dict) -> Any:
 
 
 def _same(a: Any, b: Any) -> bool:
+    """Structurally the same (did a substitution change anything?)."""
     if isinstance(a, sp.MatrixBase) or isinstance(b, sp.MatrixBase):
         return isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a == b
+    from sympy.physics.vector import Dyadic, Vector
+
+    if isinstance(a, Vector | Dyadic) or isinstance(b, Vector | Dyadic):
+        # Vector == Vector expands dot products in a frame: far too slow for
+        # a "did anything change" test on large models.
+        return type(a) is type(b) and a.args == b.args
     return a == b
 
 
