@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 import sympy as sp
 from al2py_runtime.fastkane import FastKane
+from test_whipple import TABLE2  # Meijaard et al. (2007), Table 2
 
 from al2py import convert
 
@@ -64,30 +65,6 @@ def whipple_module(tmp_path_factory):
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
-
-
-#: Meijaard et al. (2007), Table 2 (the same figures as tests/test_whipple.py).
-TABLE2 = {
-    0.0: [-5.53094371765394, -3.13164324790656, 3.13164324790656, 5.53094371765394],
-    4.0: [
-        -12.15861426576447,
-        -1.42944427361326,
-        0.41325331521125 + 3.07910818603206j,
-        0.41325331521125 - 3.07910818603206j,
-    ],
-    5.0: [
-        -14.07838969279824,
-        -0.77534188219584 + 4.46486771378823j,
-        -0.77534188219584 - 4.46486771378823j,
-        -0.32286642900409,
-    ],
-    10.0: [
-        -24.62459635017398,
-        -3.72016840437289 + 10.90681139476289j,
-        -3.72016840437289 - 10.90681139476289j,
-        0.16105338653171,
-    ],
-}
 
 
 @pytest.mark.parametrize("speed", sorted(TABLE2))

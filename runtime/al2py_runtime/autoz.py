@@ -42,6 +42,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
+from .kane import linear_terms
+
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
 _T = dynamicsymbols._t
@@ -121,22 +123,6 @@ def trivial(expr: Any) -> bool:
     if expr.is_Pow and expr.exp.is_Number and trivial(expr.base):
         return not expr.base.is_Pow and not expr.base.is_Mul
     return False
-
-
-def _linear_terms(expr: Any, xs: Sequence[Any]) -> tuple[list, Any] | None:
-    """``expr = sum(c_k * x_k) + rest`` read term by term, or None."""
-    position = {x: k for k, x in enumerate(xs)}
-    coefs: list[Any] = [[] for _ in xs]
-    rest = []
-    for term in sp.Add.make_args(expr):
-        if not term.has(*xs):
-            rest.append(term)
-            continue
-        factor, var = term.as_independent(*xs, as_Add=False)
-        if var not in position:
-            return None
-        coefs[position[var]].append(factor)
-    return [sp.Add(*c) for c in coefs], sp.Add(*rest)
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -245,9 +231,6 @@ class Intermediates:
             rule[z] = found
         return expr.xreplace(rule)
 
-    def name_all(self, exprs: Iterable[Any]) -> list[Any]:
-        return [self.name(e) for e in exprs]
-
     def name_linear(self, expr: Any, xs: Sequence[Any]) -> Any:
         """``expr = rest + sum(c_k * x_k)`` with ``rest`` and each ``c_k``
         named, so that the terms in ``xs`` (speeds, their derivatives) stay
@@ -260,7 +243,7 @@ class Intermediates:
             present += [x for x in self.exclude if x not in present and expr.has(x)]
         plain = [sp.Dummy() for _ in present]
         w = expr.xreplace(dict(zip(present, plain, strict=True)))
-        split = _linear_terms(w, plain)
+        split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
         else:
@@ -286,8 +269,6 @@ class Intermediates:
         if args == self._vars[k]:
             return body
         return body.xreplace(dict(zip(self._vars[k], args, strict=True)))
-
-    value = definition
 
     def is_real(self, z: Intermediate) -> bool | None:
         k = int(z.args[0])

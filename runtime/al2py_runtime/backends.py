@@ -657,16 +657,9 @@ def _intermediates(
     spec: DynamicsSpec, exprs: list[Any], printer: _Printer, indent: str
 ) -> list[str]:
     """Declarations of the intermediates that ``exprs`` need, in order."""
-    needed: set[Any] = set()
-    for e in exprs:
-        needed |= e.free_symbols
-    keep = []
-    for sym, expr in reversed(spec.intermediates):
-        if sym in needed:
-            keep.append((sym, expr))
-            needed |= expr.free_symbols
     return [
-        f"{indent}const double {s} = {_ccode(e, printer)};" for s, e in reversed(keep)
+        f"{indent}const double {s} = {_ccode(e, printer)};"
+        for s, e in needed(spec.intermediates, exprs)
     ]
 
 
