@@ -79,6 +79,18 @@ def _is_time_derivative(e: sp.Basic) -> bool:
     return isinstance(e, sp.Derivative) and isinstance(e.expr, AppliedUndef)
 
 
+def _book_of(y: Any) -> Any:
+    """The AutoZ book of the intermediates in ``y``, if it holds any."""
+    from .autoz import Intermediate
+
+    items = y if isinstance(y, sp.MatrixBase) else [y]
+    for item in items:
+        if isinstance(item, sp.Basic):
+            for z in item.atoms(Intermediate):
+                return z.book
+    return None
+
+
 def _freeze_table(exprs: Iterable[Any], targets: Iterable[Any] = ()) -> dict:
     """Placeholders for all derivatives in ``exprs`` and for each target."""
     table: dict = {}
@@ -268,6 +280,20 @@ def taylor(y: Any, orders: int | Range, points: Sequence[tuple[Any, Any, Any]]) 
     for x in xs:
         if not (x.is_Symbol or _is_time_function(x) or _is_time_derivative(x)):
             raise ValueError(f"Taylor: cannot expand about {x}; it is not a name")
+    book = _book_of(y)
+    if book is not None and hi <= 1:
+        # AutoZ: values and derivatives at the point, intermediate by
+        # intermediate (the written-out expression may be huge).
+        point = {x: sp.sympify(a) for (_, a, _), x in zip(points, xs, strict=True)}
+        steps = {
+            x: x - sp.sympify(a) if dx is None else sp.sympify(dx)
+            for (_, a, dx), x in zip(points, xs, strict=True)
+        }
+        items = list(y) if isinstance(y, sp.MatrixBase) else [sp.sympify(y)]
+        out = book.taylor(items, point, steps, lo, hi)
+        return (
+            sp.Matrix(y.rows, y.cols, out) if isinstance(y, sp.MatrixBase) else out[0]
+        )
     # Variables get placeholders too (derivatives are frozen first).
     table = _freeze_table([y], xs)
     shift = {}

@@ -171,6 +171,7 @@ class Intermediates:
         self._rebased: dict[Any, Any] = {}
         self._children: dict[int, Any] = {}
         self._numbers: dict[Any, Any] = {}
+        self._keys: dict[Any, Any] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -184,19 +185,36 @@ class Intermediates:
         expr = sp.sympify(expr)
         if not isinstance(expr, sp.Expr) or trivial(expr):
             return expr
-        if expr.has(sp.Derivative) and not expr.atoms(sp.Derivative) <= self.rates:
+        found = self._named.get(expr)
+        if found is not None:
+            return found
+        variables, derivatives, bad = self._scan(expr)
+        if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
             # ZEE_NOT: these quantities stay explicit (Kane(F1, F2) solves for
             # them), so only their coefficients are named.
             return self.name_linear(expr, [x for x in self.exclude if expr.has(x)])
-        expr = self.rebase(expr)
-        found = self._named.get(expr)
-        if found is not None:
-            return found
+        if bad:
+            expr = self._rebase(expr, bad)
+            found = self._named.get(expr)
+            if found is not None:
+                return found
+            variables = self._scan(expr)[0]
+        small = self._split(expr)
+        if small is not expr:
+            # Named in parts: a derivative or substitution then walks short
+            # definitions (a tree walk sees a repeated part each time).
+            found = self._named.get(small)
+            if found is not None:
+                self._named[expr] = found
+                return found
+            original, expr = expr, small
+        else:
+            original = None
         if expr.could_extract_minus_sign():
             return -self.name(-expr)
-        variables = tuple(_variables(expr))
+        variables = tuple(sorted(variables, key=self._sort_key))
         k = len(self._defs)
         while True:
             self._count += 1
@@ -208,19 +226,107 @@ class Intermediates:
         self._labels.append(label)
         z = self.Z(sp.Integer(k), *variables)
         self._named[expr] = z
+        if original is not None:
+            self._named[original] = z
         return z
+
+    #: largest definition (in tree nodes) named whole; larger ones are
+    #: named in parts, as Autolev's Z's are short.
+    LIMIT = 24
+
+    def _split(self, expr: Any) -> Any:
+        """``expr`` with each part larger than :attr:`LIMIT` nodes named
+        (bottom-up), so that no definition is long."""
+        memo: dict[Any, tuple[Any, int]] = {}
+        Z = self.Z
+
+        def walk(e: Any, top: bool) -> tuple[Any, int]:
+            if e.is_Atom or isinstance(e, Z | AppliedUndef | sp.Derivative):
+                return e, 1
+            found = memo.get(e)
+            if found is not None and not top:
+                return found
+            args, size, changed = [], 1, False
+            for a in e.args:
+                b, n = walk(a, False)
+                args.append(b)
+                size += n
+                changed = changed or b is not a
+            new = e.func(*args) if changed else e
+            out = (new, size)
+            if (
+                not top
+                and size > self.LIMIT
+                and isinstance(new, sp.Expr)
+                and not trivial(new)
+            ):
+                named = self.name(new)
+                if isinstance(named, Z):
+                    out = (named, 1)
+                elif (-named).func is Z:
+                    out = (named, 3)
+            memo[e] = out
+            return out
+
+        return walk(expr, True)[0]
 
     def _canonical(self, z: Intermediate) -> bool:
         return tuple(z.args[1:]) == self._vars[int(z.args[0])]
+
+    def _scan(self, expr: Any) -> tuple[set, set, list]:
+        """One walk over ``expr``: the variables it depends on (as
+        :func:`_variables`, reading each canonical intermediate's variables
+        off its arguments instead of walking into them), the derivatives
+        among them, and the intermediates taken elsewhere than at their own
+        variables."""
+        variables: set = set()
+        derivatives: set = set()
+        bad: list = []
+        seen: set = set()
+        stack = [expr]
+        Z = self.Z
+        while stack:
+            e = stack.pop()
+            if isinstance(e, Z):
+                args = e.args[1:]
+                if args == self._vars[int(e.args[0])]:
+                    variables.update(args)
+                    derivatives.update(a for a in args if isinstance(a, sp.Derivative))
+                    continue
+                bad.append(e)
+                todo = args
+            elif isinstance(e, sp.Derivative):
+                variables.add(e)
+                derivatives.add(e)
+                continue
+            elif isinstance(e, AppliedUndef) or e.is_Symbol:
+                variables.add(e)
+                continue
+            elif e.is_Atom:
+                continue
+            else:
+                todo = e.args
+            for a in todo:
+                if a not in seen:
+                    seen.add(a)
+                    stack.append(a)
+        return variables, derivatives, bad
+
+    def _sort_key(self, x: Any) -> Any:
+        found = self._keys.get(x)
+        if found is None:
+            found = self._keys[x] = sp.default_sort_key(x)
+        return found
 
     def rebase(self, expr: Any) -> Any:
         """``expr`` with each intermediate that is taken elsewhere than at its
         own variables (a variable was substituted, e.g. a dependent speed by
         its expression) replaced by an intermediate of its own, so numeric
         code evaluates every intermediate once."""
-        bad = [z for z in expr.atoms(self.Z) if not self._canonical(z)]
-        if not bad:
-            return expr
+        bad = self._scan(expr)[2]
+        return self._rebase(expr, bad) if bad else expr
+
+    def _rebase(self, expr: Any, bad: Iterable[Any]) -> Any:
         if sys.getrecursionlimit() < 20000:
             sys.setrecursionlimit(20000)
         rule = {}
@@ -293,11 +399,25 @@ class Intermediates:
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
         return found
 
-    def _pd(self, e: Any, x: Any, memo: dict) -> Any:
+    @staticmethod
+    def is_variable(x: Any) -> bool:
+        """True for what :meth:`derivative` differentiates by: a symbol, a
+        function of time or a derivative."""
+        return bool(x.is_Symbol or isinstance(x, _VARIABLE))
+
+    def derivative(self, e: Any, x: Any, memo: dict | None = None) -> Any:
+        """``D(e, x)``, the partial derivative by the variable ``x`` (the
+        intermediates' derivatives named); ``memo`` may be shared by
+        expressions differentiated by the same ``x``."""
+        return self._pd(sp.sympify(e), x, {} if memo is None else memo)
+
+    def _pd(self, e: Any, x: Any, memo: dict, given: dict | None = None) -> Any:
         """Partial derivative of ``e`` by the variable ``x`` (a function of
         time, a symbol, or ``t`` meaning explicit time only): a walk over
         the expression that skips what does not depend on ``x`` and never
-        builds ``Derivative`` objects."""
+        builds ``Derivative`` objects.  With ``given``, the derivatives of
+        the intermediates are looked up there (absent: 0) instead of
+        named."""
         if e == x:
             return sp.S.One
         if e.is_Atom or isinstance(e, _VARIABLE):
@@ -307,35 +427,39 @@ class Intermediates:
             return found
         if isinstance(e, Intermediate):
             args = e.args[1:]
-            if all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
+            if given is not None and e in given:
+                out = given[e]
+            elif given is not None and e.book is self and self._canonical(e):
+                out = sp.S.Zero  # does not depend on x
+            elif all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
                 out = e.book.partial(e, args.index(x)) if x in args else sp.S.Zero
             else:
                 out = sp.Add(
                     *[
                         e.book.partial(e, j) * d
                         for j, a in enumerate(args)
-                        if (d := self._pd(a, x, memo)) != 0
+                        if (d := self._pd(a, x, memo, given)) != 0
                     ]
                 )
         elif e.is_Add:
-            out = sp.Add(*[self._pd(a, x, memo) for a in e.args])
+            out = sp.Add(*[self._pd(a, x, memo, given) for a in e.args])
         elif e.is_Mul:
             args = e.args
             terms = []
             for i, a in enumerate(args):
-                d = self._pd(a, x, memo)
+                d = self._pd(a, x, memo, given)
                 if d != 0:
                     terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
-            d = self._pd(e.base, x, memo)
+            d = self._pd(e.base, x, memo, given)
             out = sp.S.Zero if d == 0 else e.exp * e.base ** (e.exp - 1) * d
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
             out = sp.Add(
                 *[
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
-                    if (d := self._pd(a, x, memo)) != 0
+                    if (d := self._pd(a, x, memo, given)) != 0
                 ]
             )
         else:  # anything else: sympy, by a plain symbol
@@ -347,6 +471,66 @@ class Intermediates:
             else:
                 out = e.xreplace({x: s}).diff(s).xreplace({s: x})
         memo[e] = out
+        return out
+
+    def taylor(
+        self,
+        exprs: Sequence[Any],
+        point: dict,
+        steps: dict,
+        lo: int,
+        hi: int,
+    ) -> list[Any]:
+        """Autolev ``Taylor`` of order ``lo..hi`` (``hi <= 1``) about
+        ``point`` (variable -> value), each variable ``x`` moved by
+        ``steps[x]``: ``value + sum(dy/dx * step)`` with the value and the
+        derivatives at the point.
+
+        One pass over the intermediates in order gives each one's value and
+        derivatives at the point (named; most vanish there), so nothing
+        is named at the general point and nothing is written out."""
+        if hi > 1:
+            raise ValueError("taylor: orders above 1 go through sympy")
+        exprs = [self.rebase(sp.sympify(e)) for e in exprs]
+        xs = list(point)
+        zs = self._ordered(exprs)
+        keep: dict = {}  # derivatives not moved stay whole (q' is not q)
+        for e in exprs:
+            for d in self._scan(e)[0]:
+                if isinstance(d, sp.Derivative) and d not in point:
+                    keep[d] = d
+        for z in zs:
+            for d in z.args[1:]:
+                if isinstance(d, sp.Derivative) and d not in point:
+                    keep[d] = d
+        rule = {**keep, **{sp.sympify(x): sp.sympify(a) for x, a in point.items()}}
+        grads: dict[Any, dict] = {x: {} for x in xs}
+        memos: dict[Any, dict] = {x: {} for x in xs}
+        moved = set(xs)
+        for z in zs:
+            args = set(z.args[1:])
+            inner = self._uses(z)
+            if not (args & moved) and all(rule.get(m, m) == m for m in inner):
+                rule[z] = z  # unchanged at the point
+                continue
+            body = self.definition(z)
+            if hi >= 1:
+                for x in xs:
+                    if x in args:
+                        d = self._pd(body, x, {}, grads[x])
+                        grads[x][z] = self.name(d.xreplace(rule))
+            rule[z] = self.name(body.xreplace(rule))
+        out = []
+        for e in exprs:
+            terms = []
+            if lo <= 0:
+                terms.append(e.xreplace(rule))
+            if hi >= 1 >= lo:
+                for x in xs:
+                    d = self._pd(e, x, memos[x], grads[x])
+                    if d != 0:
+                        terms.append(d.xreplace(rule) * steps[x])
+            out.append(sp.Add(*terms))
         return out
 
     # ---------------------------------------------------------- expansion

@@ -714,15 +714,16 @@ class Workspace(Mapping):
         """
         if frame is not None or _is_vectorial(self.val(y)):
             return self.model._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
+        diff = _Partial(self._book_or_none())
         if isinstance(x, sp.MatrixBase):
             xs = list(x)
             y = self.resolve(self.val(y), keep=xs)
             ys = list(y) if isinstance(y, sp.MatrixBase) else [y]
-            return sp.Matrix(len(ys), len(xs), lambda i, j: _diff(ys[i], xs[j]))
+            return sp.Matrix(len(ys), len(xs), lambda i, j: diff(ys[i], xs[j]))
         y = self.resolve(self.val(y), keep=[x])
         if isinstance(y, sp.MatrixBase):
-            return y.applyfunc(lambda e: _diff(e, x))
-        return _diff(y, x)
+            return y.applyfunc(lambda e: diff(e, x))
+        return diff(y, x)
 
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides."""
@@ -973,10 +974,22 @@ def _is_vectorial(value: Any) -> bool:
     return isinstance(value, Vector | Dyadic)
 
 
-def _diff(y: Any, x: Any) -> Any:
-    if isinstance(y, sp.Basic):
-        return sp.diff(y, x)
-    return sp.Integer(0)
+class _Partial:
+    """``D(y, x)`` for the entries of one command: sympy's ``diff``, or with
+    AutoZ on, the book's walk (one memo per variable, shared by the
+    entries, which share subexpressions; no ``Derivative`` objects built)."""
+
+    def __init__(self, book: Any) -> None:
+        self.book = book
+        self.memos: dict[Any, dict] = {}
+
+    def __call__(self, y: Any, x: Any) -> Any:
+        if not isinstance(y, sp.Basic):
+            return sp.Integer(0)
+        book = self.book
+        if book is None or x == t or not book.is_variable(x):
+            return sp.diff(y, x)
+        return book.derivative(y, x, self.memos.setdefault(x, {}))
 
 
 class AutolevNames(Mapping):

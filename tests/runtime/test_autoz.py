@@ -10,6 +10,7 @@ import pytest
 import sympy as sp
 from al2py_runtime import autoz
 from al2py_runtime.autoz import Intermediates, has_intermediates
+from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
 q1, q2, u1 = dynamicsymbols("q1 q2 u1")
@@ -120,3 +121,61 @@ def test_zee_not_stays_explicit():
     assert all(not z.has(f) for z in e.atoms(autoz.Intermediate))
     full = f * (sp.cos(q1) * sp.sin(q2) + L) + sp.sin(q1) * sp.cos(q2) * M
     _close(b.expand(e).xreplace({f: sp.Float(0.7)}), full.xreplace({f: sp.Float(0.7)}))
+
+
+@pytest.mark.parametrize("var", [q1, q2, L, M, u1, q1.diff(t)])
+def test_walked_derivative_equals_sympys(book, var):
+    """``derivative`` (the walk D() uses) against sympy's diff of the
+    written-out expression; q' is a variable of its own."""
+    b, z1, z2 = book
+    e = z2 * u1 + z2**2 + z1 * q1.diff(t) ** 2
+    memo: dict = {}
+    got = b.derivative(e, var, memo)
+    assert b.derivative(e, var, memo) == got  # the memo is reused
+    for seed in range(3):
+        _close(b.expand(got), b.expand(e).diff(var), seed)
+
+
+@pytest.mark.parametrize("orders", [(0, 1), (1, 1), (0, 0)])
+def test_taylor_at_a_point_equals_the_written_out_one(book, orders):
+    """First-order Taylor about q1 = 0, q2 = 1/2, u1 = L (the steps stay
+    visible, so COEF can read them) against sympy's series of the
+    written-out expression; q1' is not moved."""
+    from al2py_runtime.algebra import taylor
+
+    b, z1, z2 = book
+    y = sp.Matrix([z2 * u1 + z1 * q1.diff(t), z1 + sp.sin(q2)])
+    points = [(q1, 0, None), (q2, sp.Rational(1, 2), None), (u1, L, None)]
+    got = taylor(y, orders, points)
+    want = taylor(y.applyfunc(b.expand), orders, points)
+    for g, w in zip(got, want, strict=True):
+        for seed in range(3):
+            _close(b.expand(g), w, seed)
+    if orders == (1, 1):
+        # the first-order term is linear in the steps, outside any name:
+        # the names are taken at the point (no q1 among their arguments)
+        c = got[0].coeff(q1)
+        assert c != 0 and not c.xreplace({q1.diff(t): M}).has(q1)
+
+
+def test_long_expressions_are_named_in_parts():
+    """A long expression gets short definitions (no longer than LIMIT
+    nodes, as Autolev's Z's), the same name when met again, and the same
+    value written out."""
+    b = Intermediates()
+    inner = sp.cos(q1) * sp.sin(q2) * L + M * sp.sqrt(1 + sp.sin(q1 - q2) ** 2)
+    big = sum(sp.sin(k * inner + q2) ** 2 * (k + L * q1) for k in range(1, 6)) / inner
+    z = b.name(big)
+    assert isinstance(z, b.Z) and len(b) > 3
+    assert b.name(big) == z
+
+    def size(e):  # tree nodes, a name counting one
+        if isinstance(e, b.Z | AppliedUndef) or not e.args:
+            return 1
+        return 1 + sum(size(a) for a in e.args)
+
+    for k in range(1, len(b) + 1):
+        assert all(size(part) <= b.LIMIT for part in b._defs[k].args)
+    for seed in range(3):
+        _close(b.expand(z), big, seed)
+        _close(b.expand(z.diff(q1)), big.diff(q1), seed)
