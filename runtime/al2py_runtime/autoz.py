@@ -47,7 +47,6 @@ from .kane import linear_terms
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
 _T = dynamicsymbols._t
-_MARK = sp.Dummy("mark")
 _VARIABLE = (AppliedUndef, sp.Derivative)
 
 
@@ -133,18 +132,6 @@ def has_intermediates(expr: Any) -> bool:
         return False
 
 
-def _variables(expr: Any) -> list[Any]:
-    """The derivatives, functions of time and symbols (each outside the
-    others) that ``expr`` depends on, in a canonical order."""
-    derivs = expr.atoms(sp.Derivative)
-    if derivs:
-        expr = expr.xreplace(dict.fromkeys(derivs, _MARK))
-    funcs = expr.atoms(AppliedUndef)
-    bare = expr.xreplace(dict.fromkeys(funcs, _MARK)) if funcs else expr
-    syms = {s for s in bare.free_symbols if s is not _MARK}
-    return sorted(derivs | funcs | syms, key=sp.default_sort_key)
-
-
 class Intermediates:
     """The book of one script's intermediates (``Z1``, ``Z2``, ...).
 
@@ -162,7 +149,7 @@ class Intermediates:
         self._partials: dict[tuple[int, int], Any] = {}
         self._real: dict[int, bool | None] = {}
         self._full: dict[Any, Any] = {}
-        self._probes: dict[tuple[int, Any], complex] = {}
+        self._probes: dict[tuple[int, frozenset], dict] = {}
         self._count = 0
         #: derivatives that are variables (speeds written Q'), not accelerations
         self.rates: frozenset = frozenset()
@@ -274,11 +261,11 @@ class Intermediates:
         return tuple(z.args[1:]) == self._vars[int(z.args[0])]
 
     def _scan(self, expr: Any) -> tuple[set, set, list]:
-        """One walk over ``expr``: the variables it depends on (as
-        :func:`_variables`, reading each canonical intermediate's variables
-        off its arguments instead of walking into them), the derivatives
-        among them, and the intermediates taken elsewhere than at their own
-        variables."""
+        """One walk over ``expr``: the variables it depends on (derivatives,
+        functions of time and symbols, each outside the others; a canonical
+        intermediate's are read off its arguments, not walked into), the
+        derivatives among them, and the intermediates taken elsewhere than
+        at their own variables."""
         variables: set = set()
         derivatives: set = set()
         bad: list = []
@@ -626,43 +613,32 @@ class Intermediates:
 
     def probe(self, expr: Any, point: int, zero: Iterable[Any] = ()) -> complex:
         """``expr``'s value at a probe point: the variables in ``zero`` are 0
-        at point 0, every other variable takes a fixed random value."""
-        zero = set(zero)
-        expr = sp.sympify(expr)
-        zs = self._ordered([expr])
-        values: dict[Any, Any] = {}
+        at point 0, every other variable takes a fixed random value.  The
+        intermediates are evaluated once per point, by :func:`number`."""
+        zero = frozenset(zero)
+        env = self._probes.setdefault((point, zero), {})
+        expr = self.rebase(sp.sympify(expr))
 
-        def number(x: Any) -> Any:
-            if point == 0 and x in zero:
-                return sp.Float(0.0)
-            rng = random.Random(f"{point}:{x}")
-            return sp.Float(rng.uniform(0.5, 1.5))
+        def fill(variables: Iterable[Any]) -> None:
+            for x in variables:
+                if x not in env:
+                    if point == 0 and x in zero:
+                        env[x] = 0j
+                    else:
+                        rng = random.Random(f"{point}:{x}")
+                        env[x] = complex(rng.uniform(0.5, 1.5))
 
-        def at(e: Any) -> Any:
-            rule = dict(values)
-            bare = e.xreplace(dict.fromkeys(e.atoms(self.Z), _MARK))
-            for x in _variables(bare):
-                if x is not _MARK:
-                    rule.setdefault(x, number(x))
-            return e.xreplace(rule)
-
-        for z in zs:
-            key = (point, z)
-            if key not in self._probes:
-                try:
-                    self._probes[key] = complex(sp.N(at(self.definition(z))))
-                except (TypeError, ValueError, ZeroDivisionError):
-                    self._probes[key] = complex("nan")
-            v = self._probes[key]
-            values[z] = (
-                sp.Float(v.real) + sp.I * sp.Float(v.imag)
-                if v.imag
-                else sp.Float(v.real)
-            )
+        fill(self._scan(expr)[0])
+        for z in self._ordered([expr], env):
+            fill(z.args[1:])
+            try:
+                env[z] = _num_z(self, z, env)
+            except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+                env[z] = complex("nan")
         try:
-            out = complex(sp.N(at(expr)))
-        except (TypeError, ValueError, ZeroDivisionError):
-            out = complex("nan")
+            out = _num(expr, env)
+        except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+            return 0j
         return 0j if out != out else out
 
     # ------------------------------------------------------ linear solves
