@@ -173,3 +173,70 @@ def test_tutorial_zero_same_with_autoz(name, tmp_path):
     got = [complex(sp.N(e.xreplace(values))) for e in frozen[1]]
     want = [complex(sp.N(e.xreplace(values))) for e in frozen[0]]
     assert np.allclose(got, want, rtol=1e-9, atol=1e-9), (name, got, want)
+
+
+# A double pendulum whose speeds are written Q' (no U's), differentiated by
+# its coordinates and accelerations and encoded for CODE Algebraic: the
+# shape of the DAS3 shoulder model.  Our own script.
+RATES_SCRIPT = """\
+Newtonian N
+Bodies A, B
+MotionVariables' Q{2}''
+Constants L, M, G, IZ
+Mass A = M, B = M
+Inertia A, 0, 0, IZ
+Inertia B, 0, 0, IZ
+Simprot(N, A, 3, Q1)
+Simprot(A, B, 3, Q2)
+W_A_N> = Q1'*A3>
+W_B_A> = Q2'*B3>
+P_NO_AO> = L*A1>
+P_AO_BO> = L*B1>
+V_AO_N> = Dt(P_NO_AO>, N)
+V_BO_N> = Dt(P_NO_BO>, N)
+A_AO_N> = Dt(V_AO_N>, N)
+A_BO_N> = Dt(V_BO_N>, N)
+Gravity(-G*N2>)
+Zero = Fr() + FrStar()
+FB> = M*(-A_BO_N> - G*N2>)
+F_B = [dot(FB>, B1>); dot(FB>, B2>)]
+dz_dq = D(Zero, [Q1; Q2])
+dz_dqdd = D(Zero, [Q1''; Q2''])
+Encode Zero, dz_dq, dz_dqdd, F_B
+Code Algebraic() rates_raw.c
+"""
+
+RATES_VALUES = {
+    "L": 0.7,
+    "M": 2.0,
+    "G": 9.81,
+    "IZ": 0.3,
+    "Q1": 0.4,
+    "Q2": -1.1,
+    "Q1'": 0.9,
+    "Q2'": -0.5,
+    "Q1''": 0.2,
+    "Q2''": 1.3,
+}
+
+
+def test_algebraic_job_with_rates_same_with_autoz(tmp_path):
+    """CODE Algebraic of encoded Jacobians when the speeds are Q': AutoZ ON
+    gives AutoZ OFF's numbers (a function of time replaced inside its own
+    derivative used to stop this job), and D(ZERO, Q'') is minus the
+    mass matrix: symmetric, negative definite."""
+    results = []
+    for on in (False, True):
+        source = ("AutoZ ON\n" if on else "") + RATES_SCRIPT
+        name = f"rates_{'on' if on else 'off'}"
+        result = convert(source, str(tmp_path / f"{name}.al"))
+        module = load_module(result.code, tmp_path, name)
+        results.append(module.al.run(RATES_VALUES))
+    off, on = results
+    names = off.tables[0].names
+    assert on.tables[0].names == names and len(names) == 12
+    for name in names:
+        assert on[name][0] == pytest.approx(off[name][0], rel=1e-10, abs=1e-12), name
+    mass = -np.array([[on[f"DZ_DQDD[{i},{j}]"][0] for j in (1, 2)] for i in (1, 2)])
+    assert mass[0, 1] == pytest.approx(mass[1, 0], rel=1e-12)
+    assert np.all(np.linalg.eigvalsh(mass) > 0)

@@ -135,6 +135,7 @@ class _Slots:
         self.known: dict[Any, sp.Dummy] = {}
         self.params: list[Any] = []  # objects, in argument order
         self.param_dummies: list[sp.Dummy] = []
+        self._given: set[Any] = set()  # the objects in params
         #: AutoZ intermediates, ``(dummy, numeric definition)`` in order
         self.intermediates: list[tuple[sp.Dummy, Any]] = []
 
@@ -160,13 +161,16 @@ class _Slots:
                 d = sp.Dummy(f"z{len(self.intermediates)}")
                 self.known[z] = d
                 self.intermediates.append((d, body))
-        expr = expr.xreplace(self.known)
+            expr = expr.xreplace({z: self.known[z] for z in expr.atoms(book.Z)})
+        # Derivatives before functions: a function replaced inside a
+        # derivative would leave the derivative of an argument.
         for kind in (sp.Derivative, AppliedUndef):
             found = [a for a in expr.atoms(kind) if a not in self.known]
             for obj in sorted(found, key=sp.default_sort_key):
                 if isinstance(obj, sp.Derivative):
                     base, _k = _base(obj)
-                    if base in self.known or not isinstance(base, AppliedUndef):
+                    state = base in self.known and base not in self._given
+                    if state or not isinstance(base, AppliedUndef):
                         raise NumericsError(
                             f"{self.job.where}: cannot evaluate {self.label(obj)}"
                             f" in {what}: it has no right-hand side"
@@ -189,6 +193,7 @@ class _Slots:
         self.known[obj] = d
         self.params.append(obj)
         self.param_dummies.append(d)
+        self._given.add(obj)
 
     def label(self, obj: Any) -> str:
         return label_of(obj, self.job.names)
