@@ -136,6 +136,7 @@ class _Slots:
         self.params: list[Any] = []  # objects, in argument order
         self.param_dummies: list[sp.Dummy] = []
         self._given: set[Any] = set()  # the objects in params
+        self._dummies: set[sp.Dummy] = set()  # the values of known
         #: AutoZ intermediates, ``(dummy, numeric definition)`` in order
         self.intermediates: list[tuple[sp.Dummy, Any]] = []
 
@@ -144,6 +145,7 @@ class _Slots:
         for obj in objs:
             d = sp.Dummy(f"{prefix}{len(self.known)}")
             self.known[obj] = d
+            self._dummies.add(d)
             out.append(d)
         return out
 
@@ -160,6 +162,7 @@ class _Slots:
                 body = self.numeric(book.definition(z), what)
                 d = sp.Dummy(f"z{len(self.intermediates)}")
                 self.known[z] = d
+                self._dummies.add(d)
                 self.intermediates.append((d, body))
             expr = expr.xreplace({z: self.known[z] for z in expr.atoms(book.Z)})
         # Derivatives before functions: a function replaced inside a
@@ -178,7 +181,7 @@ class _Slots:
                 self._param(obj)
             expr = expr.xreplace(self.known)
         for sym in sorted(expr.free_symbols, key=sp.default_sort_key):
-            if sym in self.known.values() or sym is self.time:
+            if sym in self._dummies or sym is self.time:
                 continue
             if sym == t:
                 continue
@@ -191,6 +194,7 @@ class _Slots:
     def _param(self, obj: Any) -> None:
         d = sp.Dummy(f"p{len(self.params)}")
         self.known[obj] = d
+        self._dummies.add(d)
         self.params.append(obj)
         self.param_dummies.append(d)
         self._given.add(obj)
