@@ -318,10 +318,49 @@ def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
 def _lambdify(
     args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
 ) -> Callable[..., list[float]]:
+    """A scalar function ``f(*args) -> list of floats`` (math module, CSE);
+    ``intermediates`` (``(symbol, expr)`` in order) are computed first."""
     if not exprs:
         return lambda *a: []
+    args, exprs, intermediates = _undummied(args, list(exprs), intermediates)
     return sp.lambdify(
-        args, list(exprs), modules=[_NAMESPACE, "math"], cse=cse_with(intermediates)
+        args, exprs, modules=[_NAMESPACE, "math"], cse=cse_with(intermediates)
+    )
+
+
+def _undummied(
+    args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]]
+) -> tuple[list[Any], list[Any], list[tuple[Any, Any]]]:
+    """Plain symbols with fresh names for the ``Dummy`` arguments and
+    intermediates.  With one ``Dummy`` argument ``lambdify`` renames every
+    argument by substituting into all expressions and all common
+    subexpressions once per argument, which is quadratic for a model with
+    thousands of intermediates."""
+    dummies = [a for a in args if isinstance(a, sp.Dummy)]
+    dummies += [s for s, _ in intermediates if isinstance(s, sp.Dummy)]
+    if not dummies:
+        return args, exprs, list(intermediates)
+    taken = {
+        s.name
+        for e in [*exprs, *(body for _, body in intermediates)]
+        if isinstance(e, sp.Basic)
+        for s in e.free_symbols
+        if not isinstance(s, sp.Dummy)
+    }
+    rule: dict[Any, Any] = {}
+    for i, d in enumerate(dummies):
+        name = f"a{i}"
+        while name in taken:
+            name = "_" + name
+        rule[d] = sp.Symbol(name)
+
+    def plain(e: Any) -> Any:
+        return e.xreplace(rule) if isinstance(e, sp.Basic) else e
+
+    return (
+        [rule.get(a, a) for a in args],
+        [plain(e) for e in exprs],
+        [(rule.get(s, s), plain(body)) for s, body in intermediates],
     )
 
 

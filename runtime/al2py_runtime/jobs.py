@@ -105,25 +105,7 @@ def _base(obj: Any) -> tuple[Any, int]:
 
 # ---------------------------------------------------------- numeric functions
 
-_NAMESPACE = {
-    "trunc": lambda x: float(math.trunc(x)),
-    "nint": lambda x: math.copysign(math.floor(abs(x) + 0.5), x),
-}
-
-
-def _lambdify(
-    args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
-) -> Any:
-    """A scalar function ``f(*args) -> list of floats`` (math module, CSE);
-    ``intermediates`` (``(symbol, expr)`` in order) are computed first."""
-    if not exprs:
-        return lambda *a: []
-    return sp.lambdify(
-        args,
-        list(exprs),
-        modules=[_NAMESPACE, "math"],
-        cse=backends.cse_with(intermediates),
-    )
+_lambdify = backends._lambdify  # one lambdify for CODE jobs and backends
 
 
 class _Slots:
