@@ -240,3 +240,37 @@ def test_algebraic_job_with_rates_same_with_autoz(tmp_path):
     mass = -np.array([[on[f"DZ_DQDD[{i},{j}]"][0] for j in (1, 2)] for i in (1, 2)])
     assert mass[0, 1] == pytest.approx(mass[1, 0], rel=1e-12)
     assert np.all(np.linalg.eigvalsh(mass) > 0)
+
+
+# The linearization thomasbike-style scripts do: solve ZERO, a first-order
+# Taylor polynomial about upright rolling, its coefficients by COEF.
+LINEARIZE = """
+Solve(Zero, U3', U4', U5')
+Constants V0
+LIN = Taylor(Rhs(U4'), 0:1, Q3=0, Q4=0, Q5=0, U3=0, U4=0, U5=V0)
+C4Q4 = Coef(LIN, Q4)
+C4U3 = Coef(LIN, U3)
+C4U5 = Coef(LIN, U5)
+"""
+
+
+def test_taylor_and_coef_same_with_autoz(tmp_path):
+    """With AutoZ ON, Taylor takes values and derivatives at the point
+    intermediate by intermediate; the polynomial and the coefficients COEF
+    reads must be AutoZ OFF's."""
+    modules = []
+    for on in (False, True):
+        source = ("AutoZ ON\n" if on else "") + SCRIPT.read_text() + LINEARIZE
+        name = f"disc_lin_{'on' if on else 'off'}"
+        result = convert(source, str(tmp_path / f"{name}.al"))
+        modules.append(load_module(result.code, tmp_path, name))
+    off, on = modules
+    assert has_intermediates(on.al.value("LIN"))
+    point = {**STATE, "V0": 4.0}
+    seen = []
+    for name in ("LIN", "C4Q4", "C4U3", "C4U5"):
+        a = float(off.evaluate(name, **point))
+        b = float(on.evaluate(name, **point))
+        assert b == pytest.approx(a, rel=1e-10, abs=1e-12), name
+        seen.append(a)
+    assert seen[1] != 0  # lean really enters the lean acceleration
