@@ -42,6 +42,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
+from .elimination import eliminate
 from .kane import linear_terms
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
@@ -650,42 +651,10 @@ class Intermediates:
         ``zero`` set to 0 (the usual reference configuration) if possible, the
         largest at a random point otherwise."""
         zero = list(zero)
-        n = a.rows
-        rows = [[self.name(a[i, j]) for j in range(a.cols)] for i in range(n)]
-        rhs = [[self.name(b[i, j]) for j in range(b.cols)] for i in range(n)]
-        for col in range(n):
-            best, best_key = None, None
-            for r in range(col, n):
-                e = rows[r][col]
-                if e == 0:
-                    continue
-                at_zero = abs(self.probe(e, 0, zero))
-                at_random = abs(self.probe(e, 1, zero))
-                if at_random < 1e-12 and at_zero < 1e-12:
-                    continue
-                key = (at_zero > 1e-9 * max(1.0, at_random), at_zero, at_random)
-                if best_key is None or key > best_key:
-                    best, best_key = r, key
-            if best is None:
-                best = next((r for r in range(col, n) if rows[r][col] != 0), None)
-            if best is None:
-                raise ValueError("the linear system is singular")
-            rows[col], rows[best] = rows[best], rows[col]
-            rhs[col], rhs[best] = rhs[best], rhs[col]
-            p = rows[col][col]
-            for r in range(n):
-                if r == col or rows[r][col] == 0:
-                    continue
-                f = self.name(rows[r][col] / p)
-                rows[r] = [
-                    self.name(x - f * y) if y != 0 else x
-                    for x, y in zip(rows[r], rows[col], strict=True)
-                ]
-                rhs[r] = [
-                    self.name(x - f * y) if y != 0 else x
-                    for x, y in zip(rhs[r], rhs[col], strict=True)
-                ]
-        return sp.Matrix(n, b.cols, lambda i, j: self.name(rhs[i][j] / rows[i][i]))
+        rows = [[self.name(a[i, j]) for j in range(a.cols)] for i in range(a.rows)]
+        rhs = [[self.name(b[i, j]) for j in range(b.cols)] for i in range(b.rows)]
+        x = eliminate(rows, rhs, self.name, lambda e, point: self.probe(e, point, zero))
+        return sp.Matrix(a.rows, b.cols, lambda i, j: x[i][j])
 
 
 # ---------------------------------------------------------------- numbers

@@ -46,6 +46,8 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
+from .elimination import eliminate
+
 __all__ = ["FastKane"]
 
 _T = dynamicsymbols._t
@@ -328,47 +330,11 @@ class FastKane:
         return coefs, rest
 
     def _solve(self, a: list[list[Any]], b: list[list[Any]]) -> list[list[Any]]:
-        """Solve ``a x = b`` by Gaussian elimination, naming each entry."""
-        n = len(a)
-        a = [row[:] for row in a]
-        b = [row[:] for row in b]
-        for col in range(n):
-            pivot = self._pivot([a[r][col] for r in range(col, n)])
-            if pivot is None:
-                raise ValueError("the linear system is singular")
-            pivot += col
-            a[col], a[pivot] = a[pivot], a[col]
-            b[col], b[pivot] = b[pivot], b[col]
-            p = a[col][col]
-            for r in range(n):
-                if r == col or a[r][col] == 0:
-                    continue
-                f = self._name(a[r][col] / p)
-                a[r] = [
-                    self._name(x - f * y) for x, y in zip(a[r], a[col], strict=True)
-                ]
-                b[r] = [
-                    self._name(x - f * y) for x, y in zip(b[r], b[col], strict=True)
-                ]
-        return [[self._name(x / a[i][i]) for x in b[i]] for i in range(n)]
-
-    def _pivot(self, column: list[Any]) -> int | None:
-        """The row to pivot on: not zero at the coordinates' zero (the usual
-        reference configuration, e.g. an upright bicycle) if possible, else the
-        largest at a random configuration; constants take random values."""
-        best, best_key = None, None
-        for r, e in enumerate(column):
-            if e == 0:
-                continue
-            at_zero, at_random = abs(self._probe(e, 0)), abs(self._probe(e, 1))
-            if at_random < 1e-12:
-                continue
-            key = (at_zero > 1e-9 * max(1.0, at_random), at_zero, at_random)
-            if best_key is None or key > best_key:
-                best, best_key = r, key
-        if best is None:  # zero at both probes: take any structural non-zero
-            best = next((r for r, e in enumerate(column) if e != 0), None)
-        return best
+        """Solve ``a x = b`` by Gaussian elimination, naming each entry;
+        pivots non-zero at the coordinates' zero (the usual reference
+        configuration, e.g. an upright bicycle) if possible, constants
+        random."""
+        return eliminate(a, b, self._name, self._probe)
 
     def _probe(self, expr: Any, point: int) -> complex:
         """``expr``'s value at probe ``point`` (0: coordinates zero)."""
