@@ -837,14 +837,13 @@ def _eq_labels(job: Job) -> list[str]:
 def _inline_dependent(
     intermediates: Sequence[tuple[Any, Any]], exprs: list[Any], xs: Sequence[Any]
 ) -> list[Any]:
-    """``exprs`` with the intermediates that depend on ``xs`` substituted."""
-    dep: dict[Any, Any] = {}
+    """``exprs`` with the intermediates that depend on ``xs`` substituted
+    (each written out once, in order, then one substitution)."""
+    full: dict[Any, Any] = {}
     for sym, expr in intermediates:
-        if expr.has(*xs) or expr.free_symbols & dep.keys():
-            dep[sym] = expr
-    for sym in reversed(list(dep)):
-        exprs = [e.xreplace({sym: dep[sym]}) for e in exprs]
-    return exprs
+        if expr.has(*xs) or expr.free_symbols & full.keys():
+            full[sym] = expr.xreplace(full)
+    return [e.xreplace(full) for e in exprs] if full else exprs
 
 
 def _compile_static(job: Job, keep: frozenset) -> _Static:
