@@ -274,3 +274,42 @@ def test_taylor_and_coef_same_with_autoz(tmp_path):
         assert b == pytest.approx(a, rel=1e-10, abs=1e-12), name
         seen.append(a)
     assert seen[1] != 0  # lean really enters the lean acceleration
+
+
+# Our own three-link loop: direction cosines that depend on the unknowns of
+# a CODE Nonlinear job become intermediates.
+LOOP_SCRIPT = """\
+Newtonian N
+Bodies A, B, C
+Variables QA, QB, QC
+Constants LA, LB, LC, LN
+Simprot(N, A, 3, QA)
+Simprot(A, B, 3, QB)
+Simprot(B, C, 3, QC)
+P> = LA*A1> + LB*B1> + LC*C1>
+Loop = [Dot(P>, N1>) - LN; Dot(P>, N2>)]
+Input QA = 30 deg, QB = 60 deg, QC = 200 deg
+Input LA = 1, LB = 2, LC = 2, LN = 1
+Code Nonlinear(Loop, QB, QC) loop.m
+"""
+
+
+def test_nonlinear_job_through_intermediates(tmp_path):
+    """Newton's Jacobian sees through the intermediates that depend on the
+    unknowns: AutoZ ON closes the loop where AutoZ OFF does."""
+    results = []
+    for on in (False, True):
+        source = ("AutoZ ON\n" if on else "") + LOOP_SCRIPT
+        name = f"loop_{'on' if on else 'off'}"
+        result = convert(source, str(tmp_path / f"{name}.al"))
+        module = load_module(result.code, tmp_path, name)
+        if on:
+            assert has_intermediates(module.al.value("LOOP"))
+        results.append(module.al.run())
+    off, on = results
+    for name in ("QB", "QC"):
+        assert on[name][0] == pytest.approx(off[name][0], abs=1e-9)
+    qa, qb, qc = np.radians([30.0, off["QB"][0], off["QC"][0]])
+    x = np.cos(qa) + 2 * np.cos(qa + qb) + 2 * np.cos(qa + qb + qc)
+    y = np.sin(qa) + 2 * np.sin(qa + qb) + 2 * np.sin(qa + qb + qc)
+    assert (x, y) == pytest.approx((1.0, 0.0), abs=1e-7)  # the loop closes
