@@ -223,21 +223,19 @@ class Facts:
         self._namer = analysis.namer
 
     def of(self, stmt: ir.Stmt) -> StmtFacts:
-        return self._stmt.get(id(stmt), StmtFacts())
+        return self._stmt.get(stmt.nid, StmtFacts())
 
     def resolution(self, node: ir.Name) -> Symbol | Form:
-        found = self._resolved.get(id(node))
-        if found is None:  # a node made after the analysis (Input X{3})
-            found = self.table.quantity(node.name) or self.table.get(node.name)
-        if found is None:
-            raise InternalError(f"{node.name} was not analysed")
+        found = self._resolved.get(node.nid)
+        if found is None:  # never a guess: a miss is a bug, not a name to look up
+            raise InternalError(f"{node.name} at {node.span} was not analysed")
         return found
 
     def kind(self, expr: ir.Expr) -> Kind:
-        return self._kinds.get(id(expr), Kind.UNKNOWN)
+        return self._kinds.get(expr.nid, Kind.UNKNOWN)
 
     def is_vector_matrix(self, expr: ir.MatrixLit) -> bool:
-        return id(expr) in self._vector_matrices
+        return expr.nid in self._vector_matrices
 
     def quantity(self, spelling: str) -> Symbol:
         sym = self.table.quantity(spelling) or self.table.get(spelling)
@@ -277,14 +275,14 @@ class Analysis:
         #: a quantity and a (later declared) object means the quantity, since
         #: frames and points are never values (``Constants L`` ...
         #: ``Particles L`` ... ``L*N1>``).
-        self._as_value: set[int] = set()  # ids of Name nodes
+        self._as_value: set[int] = set()  # nids of Name nodes
         #: Name nodes where the context takes a frame or point (``Simprot``).
         self._as_object: set[int] = set()
         #: What each Name node means (a :class:`Symbol` or a :class:`Form`),
-        #: and the kind of each expression, by node identity.
+        #: and the kind of each expression, by node identity (``nid``).
         self.resolved: dict[int, Symbol | Form] = {}
         self.kinds: dict[int, Kind] = {}
-        #: Facts of each statement, by identity, filled by :meth:`run`.
+        #: Facts of each statement, by ``nid``, filled by :meth:`run`.
         self.stmt_facts: dict[int, StmtFacts] = {}
         self.errors: list[AutolevError] = []
         self._poisoned: set[str] = set()
@@ -293,7 +291,7 @@ class Analysis:
         self._fragment_told = False
         #: Matrix literals of vectors, allowed as arguments of Dot
         #: (``Dot(V1>, [V2>; 2*V2>])`` is the column of the dot products).
-        self.vector_matrices: set[int] = set()  # ids of MatrixLit nodes
+        self.vector_matrices: set[int] = set()  # nids of MatrixLit nodes
         self._plan_identifiers(stmts)
 
     # ---------------------------------------------------------- identifiers
@@ -370,10 +368,10 @@ class Analysis:
         latest definition wins.
         """
         sym = self.table.get(node.name)
-        if want in (Kind.FRAME, Kind.POINT) or id(node) in self._as_object:
+        if want in (Kind.FRAME, Kind.POINT) or node.nid in self._as_object:
             obj = self.table.physical(node.name)
             sym = obj if obj is not None and not node.primes else sym
-        elif want is not None or id(node) in self._as_value or node.primes:
+        elif want is not None or node.nid in self._as_value or node.primes:
             sym = self.table.quantity(node.name) or sym
         if sym is None:
             if node.rank:
@@ -392,7 +390,7 @@ class Analysis:
             raise UndeclaredError(
                 f"undeclared name '{node.name}'{hint}", node.span, name=node.key
             )
-        self.resolved[id(node)] = sym
+        self.resolved[node.nid] = sym
         if node.primes and sym.kind not in ("variable", "specified", "scalar"):
             raise SemanticError(
                 f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
@@ -409,7 +407,7 @@ class Analysis:
                 f"{type(expr).__name__.lower()} is not allowed here", expr.span
             )
         kind = method(expr)
-        self.kinds[id(expr)] = kind
+        self.kinds[expr.nid] = kind
         return kind
 
     def _kind_Number(self, expr: ir.Number) -> Kind:
@@ -427,7 +425,7 @@ class Analysis:
         if form is not None:
             if expr.primes:
                 raise SemanticError(f"'{expr.name}' has no time derivative", expr.span)
-            self.resolved[id(expr)] = form
+            self.resolved[expr.nid] = form
             return FORM_KINDS[form.kind]
         return self.lookup(expr).value_kind
 
@@ -449,7 +447,7 @@ class Analysis:
             and self.table.get(expr.base.name) is None
         ):
             # ``N_A[1,1]``: an element of the direction-cosine matrix.
-            self.resolved[id(expr.base)] = form
+            self.resolved[expr.base.nid] = form
             return Kind.SCALAR
         sym = self.lookup(expr.base)
         self._check_bounds(sym, expr)
@@ -499,7 +497,7 @@ class Analysis:
             and self.table.quantity(expr.name) is not None
             and self.table.physical(expr.name) is not None
         ):
-            self._as_value.add(id(expr))
+            self._as_value.add(expr.nid)
         return self.kind_of(expr)
 
     def _kind_UnaryOp(self, expr: ir.UnaryOp) -> Kind:
@@ -639,7 +637,7 @@ class Analysis:
         for n in names:
             if isinstance(n, ir.Name) and not n.primes and not n.rank:
                 if self.table.physical(n.name) is not None:
-                    self._as_object.add(id(n))
+                    self._as_object.add(n.nid)
 
     def _vector_matrix(self, expr: ir.MatrixLit) -> Kind:
         """A matrix literal as an argument of Dot: all scalars, or all vectors."""
@@ -656,7 +654,7 @@ class Analysis:
                 raise SemanticError(
                     "the rows of this matrix have different lengths", expr.span
                 )
-            self.vector_matrices.add(id(expr))
+            self.vector_matrices.add(expr.nid)
             return Kind.MATRIX
         return self.kind_of(expr)
 
@@ -723,8 +721,8 @@ class Analysis:
                 self.kind_of(rhs)
             return Kind.SCALAR
         if isinstance(arg, ir.IndexedNames):
-            for n in arg.expand():
-                self.lookup(ir.Name(arg.span, n, arg.primes))
+            for n in arg.names:
+                self.lookup(n)
             return Kind.MATRIX
         return self.kind_of(arg)
 
@@ -792,7 +790,7 @@ class Analysis:
                 )
             )
             return True
-        self.stmt_facts[id(stmt)] = facts
+        self.stmt_facts[stmt.nid] = facts
         if isinstance(stmt, ir.MacroCall):
             for inner in stmt.body:
                 if not self._run_one(inner):
@@ -924,7 +922,9 @@ class Analysis:
         if self.table.get(node.name) is not None:
             return None
         item = ir.DeclItem(node.span, node, sign=sign)
-        return self._declare(node.name, "constant", item)
+        sym = self._declare(node.name, "constant", item)
+        self.resolved[node.nid] = sym
+        return sym
 
     def _enter_mass(self, stmt: ir.Declaration) -> StmtFacts:
         new: list[Symbol] = []
@@ -962,7 +962,7 @@ class Analysis:
                     "inertia scalars are given in",
                     basis.span,
                 )
-            self._as_object.add(id(basis))
+            self._as_object.add(basis.nid)
             target = ir.Name(target.span, target.func)
         if not isinstance(target, ir.Name) or not self.is_body(target.name):
             raise SemanticError("Inertia starts with a body name", body.target.span)
@@ -1343,7 +1343,7 @@ def input_names(node: ir.Expr) -> list[ir.Name]:
     if isinstance(node, ir.Name):
         return [node]
     if isinstance(node, ir.IndexedNames):
-        return [ir.Name(node.span, n, node.primes) for n in node.expand()]
+        return list(node.names)
     raise SemanticError("Input assigns names: Input X=1, Y=2 deg", node.span)
 
 

@@ -648,7 +648,7 @@ class Generator:
         return f"[{', '.join(self._indexed(node))}]", ATOM
 
     def _indexed(self, node: ir.IndexedNames) -> list[str]:
-        return [self.expr(ir.Name(node.span, n, node.primes)) for n in node.expand()]
+        return [self.expr(n) for n in node.names]
 
     def expr_Call(self, node: ir.Call) -> tuple[str, int]:
         b = BUILTINS.get(node.key)

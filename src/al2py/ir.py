@@ -17,11 +17,13 @@ in :attr:`Name.name`; primes are counted in :attr:`Name.primes`.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 
 __all__ = [
+    "content",
     "walk_expr",
     "map_expr",
     "stmt_exprs",
@@ -81,9 +83,30 @@ class Span:
         return f"{self.file}:{self.line}:{self.col}"
 
 
+#: Source of node identities: every node made in this process gets the next
+#: number, so an identity is never reused (``id()`` of a freed node can be).
+_identities = itertools.count(1)
+
+
 @dataclass(frozen=True, slots=True)
 class Node:
+    """A piece of the tree: where it came from, and who it is.
+
+    Nodes compare by value (two ``X`` at one span are equal), so neither value
+    nor span identifies one.  ``nid`` does: a number fixed when the node is
+    made and never given to another node in this process (also not by
+    :func:`dataclasses.replace`, which makes a new node).  The analysis keeps
+    its facts by ``nid``.
+
+    >>> a, b = Name(Span("f.al", 1, 1), "X"), Name(Span("f.al", 1, 1), "X")
+    >>> a == b, a.nid == b.nid
+    (True, False)
+    """
+
     span: Span
+    nid: int = field(
+        init=False, default_factory=_identities.__next__, compare=False, repr=False
+    )
 
 
 # ---------------------------------------------------------------- expressions
@@ -166,6 +189,9 @@ class IndexedNames(Expr):
     ranges: tuple[tuple[int, int], ...]
     primes: int = 0
     suffix: str = ""
+    _names: tuple[Name, ...] | None = field(
+        init=False, default=None, compare=False, repr=False
+    )
 
     def __post_init__(self) -> None:
         if not self.ranges:
@@ -180,6 +206,20 @@ class IndexedNames(Expr):
         for lo, hi in self.ranges:
             names = [f"{n}{i}" for n in names for i in range(lo, hi + 1)]
         return tuple(n + self.suffix for n in names)
+
+    @property
+    def names(self) -> tuple[Name, ...]:
+        """The family as :class:`Name` nodes, made once and shared by every
+        reader, so facts recorded on them are found again.
+
+        >>> u = IndexedNames(Span("f.al", 1, 1), "U", ((1, 2),), primes=1)
+        >>> [n.autolev for n in u.names], u.names[0] is u.names[0]
+        (["U1'", "U2'"], True)
+        """
+        if self._names is None:  # made on first use, then kept
+            names = tuple(Name(self.span, n, self.primes) for n in self.expand())
+            object.__setattr__(self, "_names", names)
+        return self._names  # type: ignore[return-value]
 
 
 @dataclass(frozen=True, slots=True)
@@ -452,6 +492,14 @@ class Script(Node):
 # ------------------------------------------------------------------ traversal
 
 
+def content(node: Node) -> Iterator[tuple[str, object]]:
+    """``(field, value)`` for the fields that hold a node's content, not its
+    identity (``nid``) or what it keeps made (``IndexedNames.names``)."""
+    for f in dataclasses.fields(node):
+        if f.init:
+            yield f.name, getattr(node, f.name)
+
+
 def walk_expr(expr: Expr) -> Iterator[Expr]:
     """Every expression node below (and including) ``expr``, parents first.
 
@@ -462,8 +510,7 @@ def walk_expr(expr: Expr) -> Iterator[Expr]:
         node = stack.pop()
         yield node
         children: list[Expr] = []
-        for f in dataclasses.fields(node):
-            value = getattr(node, f.name)
+        for _, value in content(node):
             if isinstance(value, Expr):
                 children.append(value)
             elif isinstance(value, tuple):
@@ -478,12 +525,11 @@ def walk_expr(expr: Expr) -> Iterator[Expr]:
 def map_expr(expr: Expr, fn: Callable[[Expr], Expr | None]) -> Expr:
     """Rebuild ``expr`` bottom-up, replacing nodes for which ``fn`` returns a node."""
     changes = {}
-    for f in dataclasses.fields(expr):
-        value = getattr(expr, f.name)
+    for name, value in content(expr):
         if isinstance(value, Expr):
-            changes[f.name] = map_expr(value, fn)
+            changes[name] = map_expr(value, fn)
         elif isinstance(value, tuple) and value and isinstance(value[0], Expr | tuple):
-            changes[f.name] = tuple(
+            changes[name] = tuple(
                 (
                     map_expr(v, fn)
                     if isinstance(v, Expr)
@@ -503,8 +549,7 @@ def map_expr(expr: Expr, fn: Callable[[Expr], Expr | None]) -> Expr:
 
 def stmt_exprs(stmt: Stmt) -> Iterator[Expr]:
     """The expressions directly held by a statement."""
-    for f in dataclasses.fields(stmt):
-        value = getattr(stmt, f.name)
+    for _, value in content(stmt):
         if isinstance(value, Expr):
             yield value
         elif isinstance(value, tuple):
@@ -512,8 +557,7 @@ def stmt_exprs(stmt: Stmt) -> Iterator[Expr]:
                 if isinstance(item, Expr):
                     yield item
                 elif isinstance(item, Node):
-                    for g in dataclasses.fields(item):
-                        sub = getattr(item, g.name)
+                    for _, sub in content(item):
                         if isinstance(sub, Expr):
                             yield sub
                         elif isinstance(sub, tuple):

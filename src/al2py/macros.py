@@ -561,12 +561,11 @@ class Expander:
     def expand_results(self, stmt: ir.Stmt) -> ir.Stmt:
         """Replace calls of ``.r`` macros inside the statement's expressions."""
         changes = {}
-        for f in dataclasses.fields(stmt):
-            value = getattr(stmt, f.name)
+        for name, value in ir.content(stmt):
             if isinstance(value, ir.Expr):
                 new = map_expr(value, self._result_macro)
                 if new is not value:
-                    changes[f.name] = new
+                    changes[name] = new
         return dataclasses.replace(stmt, **changes) if changes else stmt
 
     def _result_macro(self, node: ir.Expr) -> ir.Expr | None:
@@ -604,10 +603,9 @@ def _respan_expr(expr: ir.Expr, span: ir.Span) -> ir.Expr:
 
 def _respan_stmt(stmt: ir.Stmt, span: ir.Span) -> ir.Stmt:
     changes: dict[str, object] = {"span": span}
-    for f in dataclasses.fields(stmt):
-        value = getattr(stmt, f.name)
+    for name, value in ir.content(stmt):
         if isinstance(value, ir.Expr):
-            changes[f.name] = _respan_expr(value, span)
+            changes[name] = _respan_expr(value, span)
     return dataclasses.replace(stmt, **changes)
 
 

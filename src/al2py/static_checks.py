@@ -78,8 +78,6 @@ def _flatten(stmts: Iterable[ir.Stmt]) -> Iterable[ir.Stmt]:
 
 def _nodes(root: ir.Node) -> Iterable[ir.Node]:
     """Every node below ``root`` (iteratively: deep nesting is fine)."""
-    import dataclasses
-
     stack: list[object] = [root]
     while stack:
         item = stack.pop()
@@ -90,11 +88,9 @@ def _nodes(root: ir.Node) -> Iterable[ir.Node]:
             continue
         if item is not root:
             yield item
-        for f in dataclasses.fields(item):
-            if f.name != "span":
-                value = getattr(item, f.name)
-                if isinstance(value, ir.Node | tuple):
-                    stack.append(value)
+        for name, value in ir.content(item):
+            if name != "span" and isinstance(value, ir.Node | tuple):
+                stack.append(value)
 
 
 def _check_number(node: ir.Number) -> None:
