@@ -127,7 +127,9 @@ class Result(ResultViews):
         return written
 
     def plot(self, directory: str | Path = ".") -> list[Path]:
-        """Write ``STEM.n.png`` per table: each column against the first."""
+        """Write ``STEM.n.png`` per table: each column against time (the
+        table's ``T`` column, else the job's time at each row), or against
+        the row number where the job has no time (a solve or a sweep)."""
         try:
             from matplotlib.backends.backend_agg import FigureCanvasAgg
             from matplotlib.figure import Figure
@@ -139,25 +141,36 @@ class Result(ResultViews):
         directory.mkdir(parents=True, exist_ok=True)
         written = []
         for table, name in zip(self.written, self.files(), strict=True):
-            cols = table.columns
-            if len(cols) < 2 or len(table) == 0:
+            x, xlabel, ys = self.abscissa(table)
+            if not ys or len(table) == 0:
                 continue
-            n = len(cols) - 1
-            fig = Figure(figsize=(7, 1.0 + 2.0 * n))
+            fig = Figure(figsize=(7, 1.0 + 2.0 * len(ys)))
             FigureCanvasAgg(fig)
-            axes = fig.subplots(n, 1, sharex=True, squeeze=False)[:, 0]
-            x = table.data[:, 0]
-            for ax, j in zip(axes, range(1, len(cols)), strict=True):
+            axes = fig.subplots(len(ys), 1, sharex=True, squeeze=False)[:, 0]
+            for ax, j in zip(axes, ys, strict=True):
                 ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
-                ax.set_ylabel(_heading(cols[j], self.time_unit))
+                ax.set_ylabel(_heading(table.columns[j], self.time_unit))
                 ax.grid(True, alpha=0.3)
-            axes[-1].set_xlabel(_heading(cols[0], self.time_unit))
+            axes[-1].set_xlabel(xlabel)
             fig.suptitle(name)
             fig.tight_layout()
             path = directory / f"{name}.png"
             fig.savefig(path, dpi=100)
             written.append(path)
         return written
+
+    def abscissa(self, table: Table) -> tuple[np.ndarray, str, list[int]]:
+        """``(x, x label, columns to plot)`` for a plot of ``table``: time
+        where there is one, else the row number."""
+        for j, col in enumerate(table.columns):
+            if normalize_name(col.label) == "T":
+                others = [k for k in range(len(table.columns)) if k != j]
+                return table.data[:, j], _heading(col, self.time_unit), others
+        every = list(range(len(table.columns)))
+        time = self.states.get("T")
+        if time is not None and len(time) == len(table):
+            return time, _heading(Column("T"), self.time_unit), every
+        return np.arange(1, len(table) + 1), "row (output step)", every
 
     def solution_lines(self) -> list[str]:
         """``QB = 74.47751 deg`` for each solved quantity (Nonlinear/Algebraic)."""

@@ -19,7 +19,8 @@ from scipy.integrate import solve_ivp
 # ------------------------------------------------------------------ scripts
 
 
-def odexy() -> Workspace:
+def odexy(columns=None) -> Workspace:
+    """tutor's odexy; ``columns(x, y)`` gives other Output columns."""
     ws = Workspace("odexy.al")
     a, b = ws.constants("a", "b")
     x, y = ws.variables("x'", "y'")
@@ -28,13 +29,17 @@ def odexy() -> Workspace:
     ws.input({"A": 1, "B": 2, "X": 2, "Y": 3}, line=9)
     ws.input({"TINITIAL": 0, "TFINAL": 5, "INTEGSTP": 0.1}, line=10)
     ws.output(
-        [
-            ("T", t, None),
-            ("X", x, None),
-            ("Y", y, None),
-            ("X'", ws.value("X'"), None),
-            ("Y'", ws.value("Y'"), None),
-        ],
+        (
+            columns(x, y)
+            if columns
+            else [
+                ("T", t, None),
+                ("X", x, None),
+                ("Y", y, None),
+                ("X'", ws.value("X'"), None),
+                ("Y'", ws.value("Y'"), None),
+            ]
+        ),
         line=11,
     )
     ws.code("ODE", file="odexy.c", line=12)
@@ -491,6 +496,27 @@ def test_plot(tmp_path):
     (path,) = result.plot(tmp_path)
     assert path.name == "odexy.1.png"
     assert path.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_plot_axes_are_time_else_the_row():
+    """Plots read against time: the table's T column wherever it stands, else
+    the job's time at each row; a job without time plots against the row."""
+    result = odexy().run()
+    x, label, ys = result.abscissa(result.tables[0])
+    assert label == "T (sec)" and ys == [1, 2, 3, 4]
+    assert np.allclose(x, np.arange(0, 5.0001, 0.1))
+    time = x
+    result = odexy(lambda x, y: [("X", x, None), ("T", t, "s")]).run()
+    x, label, ys = result.abscissa(result.tables[0])
+    assert label == "T (s)" and ys == [0]  # T is the second column here
+    assert np.allclose(x, time)
+    result = odexy(lambda x, y: [("Y", y, None)]).run()
+    x, label, ys = result.abscissa(result.tables[0])  # no T column: the job's
+    assert label == "T (sec)" and ys == [0] and np.allclose(x, time)  # time
+    solved = katy().run()
+    x, label, ys = solved.abscissa(solved.tables[0])
+    assert label == "row (output step)" and list(x) == [1]
+    assert ys == list(range(len(solved.tables[0].columns)))
 
 
 def test_plot_without_matplotlib(tmp_path, monkeypatch):
