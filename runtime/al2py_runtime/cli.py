@@ -81,6 +81,12 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         " or auto, the fastest available)",
     )
     parser.add_argument(
+        "--zero-missing",
+        action="store_true",
+        help="use 0 for constants and initial values that no Input gives"
+        " (by default the job stops and names them; or AL2PY_ZERO_MISSING=1)",
+    )
+    parser.add_argument(
         "--emit-code",
         metavar="DIR",
         help="write the C program of each CODE Dynamics/ODE job into DIR"
@@ -212,7 +218,12 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     budget.PROGRESS = _is_terminal(sys.stdout)
     for job in jobs:
         try:
-            result = ws.run_job(job, overrides, backend=args.backend)
+            result = ws.run_job(
+                job,
+                overrides,
+                backend=args.backend,
+                zero_missing=True if args.zero_missing else None,
+            )
             budget.clear_progress()
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)

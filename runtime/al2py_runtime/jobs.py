@@ -13,7 +13,9 @@ converted in, ``Output`` values are converted out.
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import os
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -205,6 +207,36 @@ class _Values:
     units: dict[str, str | None]
     notes: list[str]
     given: set[str] = field(default_factory=set)
+    #: go on with 0 for values the script never gives (else stop and name them)
+    zero_missing: bool = False
+
+    def require(self, params: Iterable[Any]) -> None:
+        """Stop, naming every constant among ``params`` that has no value,
+        with the line declaring it; with :attr:`zero_missing` they are 0,
+        each noted.  Initial values and guesses are not required: a variable
+        the script never inputs starts at 0, as in Autolev (the tutorial's
+        tutor7 inputs no U1), and a Specified quantity without an equation is
+        an input that is 0 unless given, as in Autolev's programs."""
+        job = self.job
+        wanted = [label_of(obj, job.names) for obj in params]
+        missing = [
+            n
+            for n in _unique(wanted)
+            if job.entries.get(normalize_name(n), ("",))[0] == "constant"
+            and normalize_name(n) not in self.values
+        ]
+        if not missing or self.zero_missing:
+            return
+        listed = []
+        for n in missing:
+            line = job.declared.get(normalize_name(n))
+            listed.append(f"{n} (declared on line {line})" if line else n)
+        raise NumericsError(
+            f"{job.where}: no value for {', '.join(listed)}. Give "
+            f"{'them' if len(missing) > 1 else 'it'} with Input (or "
+            "--set NAME=VALUE, run(NAME=value)), or use 0 with --zero-missing"
+            " (run(zero_missing=True), AL2PY_ZERO_MISSING=1)"
+        )
 
     def unused(self, used: Iterable[str]) -> None:
         """Note overrides that the job never reads."""
@@ -230,9 +262,13 @@ class _Values:
         return self.get(label_of(obj, self.job.names))
 
 
-def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]:
+def _input_values(
+    job: Job, overrides: Mapping[str, Any], zero_missing: bool | None = None
+) -> tuple[_Values, set]:
     """Convert Input values (with overrides) to internal units; return the
     constants whose numeric RHS the Input or an override replaces."""
+    if zero_missing is None:
+        zero_missing = os.environ.get("AL2PY_ZERO_MISSING", "") == "1"
     us = job.unit_system
     values: dict[str, float] = {}
     units: dict[str, str | None] = {}
@@ -270,7 +306,7 @@ def _input_values(job: Job, overrides: Mapping[str, Any]) -> tuple[_Values, set]
         if value is not None and kind == "constant":
             if isinstance(value, sp.Basic) and value.is_number:
                 keep.add(obj)
-    return _Values(job, values, units, [], given), keep
+    return _Values(job, values, units, [], given, zero_missing), keep
 
 
 def _computed_inputs(
@@ -454,12 +490,15 @@ def run_job(
     overrides: Mapping[str, Any] | None = None,
     *,
     backend: str | None = None,
+    zero_missing: bool | None = None,
 ) -> Result:
     """Perform ``job`` with its Input values, changed by ``overrides``.
 
     ``backend`` chooses how Dynamics/ODE equations are evaluated (see
-    :mod:`.backends`; default ``$AL2PY_BACKEND`` or ``auto``)."""
-    vals, keep = _input_values(job, overrides or {})
+    :mod:`.backends`; default ``$AL2PY_BACKEND`` or ``auto``).  A value the
+    job needs and nobody gave stops it, named, before any code is generated;
+    ``zero_missing`` (default ``$AL2PY_ZERO_MISSING=1``) uses 0 instead."""
+    vals, keep = _input_values(job, overrides or {}, zero_missing)
     if job.kind in ("DYNAMICS", "ODE"):
         try:
             return _run_dynamics(job, vals, keep, backend)
@@ -527,13 +566,14 @@ class _Dynamics:
     compiled: backends.Compiled | None = None
 
 
-def _compile_dynamics(job: Job, keep: frozenset, backend: str | None) -> _Dynamics:
-    c = _dynamics_equations(job, keep)
+def _compile_dynamics(job: Job, formed: _Dynamics, backend: str | None) -> _Dynamics:
+    """``formed`` with its equations compiled by ``backend`` (a copy: each
+    backend keeps its own)."""
     try:
-        c.compiled = backends.compile_dynamics(c.spec, backend)
+        compiled = backends.compile_dynamics(formed.spec, backend)
     except backends.BackendError as exc:
         raise NumericsError(f"{job.where}: {exc}") from None
-    return c
+    return dataclasses.replace(formed, compiled=compiled)
 
 
 def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
@@ -672,11 +712,21 @@ class OdeSystem:
     clock: list[float]
 
 
-def _compiled(job: Job, keep: Iterable[Any], backend: str | None) -> _Dynamics:
-    """The job's equations, built by ``backend`` once per job and backend."""
-    key = ("dyn", frozenset(keep), backends.choose(backend))
+def _compiled(
+    job: Job, keep: Iterable[Any], backend: str | None, vals: _Values | None = None
+) -> _Dynamics:
+    """The job's equations, built by ``backend`` once per job and backend;
+    ``vals`` must hold every value they need (checked before any code is
+    generated: see :meth:`_Values.require`)."""
+    keep = frozenset(keep)
+    formed = ("equations", keep)
+    if formed not in job._cache:
+        job._cache[formed] = _dynamics_equations(job, keep)
+    if vals is not None:
+        vals.require(job._cache[formed].params)
+    key = ("dyn", keep, backends.choose(backend))
     if key not in job._cache:
-        job._cache[key] = _compile_dynamics(job, frozenset(keep), key[2])
+        job._cache[key] = _compile_dynamics(job, job._cache[formed], key[2])
     return job._cache[key]
 
 
@@ -691,7 +741,7 @@ def ode_system(
     where ``run()`` turns the equations into a numeric function, through the
     backend chosen: see :mod:`.backends`)."""
     try:
-        c = _compiled(job, keep, backend)
+        c = _compiled(job, keep, backend, vals)
     except backends.BackendError as exc:
         raise NumericsError(str(exc)) from None
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
@@ -731,13 +781,14 @@ def ode_function(
     overrides: Mapping[str, Any] | None = None,
     *,
     backend: str | None = None,
+    zero_missing: bool | None = None,
 ) -> tuple[Any, list[float], list[str]]:
     """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
     equations of motion in internal units, with Inputs changed by
     ``overrides`` (as ``run()``), evaluated by ``backend``."""
     if job.kind not in ("DYNAMICS", "ODE"):
         raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
-    vals, keep = _input_values(job, overrides or {})
+    vals, keep = _input_values(job, overrides or {}, zero_missing)
     ip = _integration(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
     return system.fun, list(system.y0), list(system.names)
@@ -949,6 +1000,7 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
     from scipy.optimize import root
 
     c = _static(job, keep, vals)
+    vals.require(c.params)
     ip = _integration(vals)
     t0 = ip["TINITIAL"]
     p = [vals.param(obj) for obj in c.params]
@@ -994,9 +1046,10 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
 
 def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
     c = _static(job, keep, vals)
+    sweep_obj = job.sweep[0] if job.sweep is not None else None
+    vals.require([obj for obj in c.params if obj != sweep_obj])
     ip = _integration(vals)
     t0 = ip["TINITIAL"]
-    sweep_obj = job.sweep[0] if job.sweep is not None else None
     base = [0.0 if obj == sweep_obj else vals.param(obj) for obj in c.params]
     n = len(c.unknown_names)
     param_rows: list[list[float]] = []

@@ -231,6 +231,11 @@ class Numerics:
             ],
             names=dict(self._ws._entries_by_obj),
             entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
+            declared={
+                name: e.line
+                for name, e in self._ws._names.items()
+                if e.line is not None
+            },
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
                 for name, e in self._ws._names.items()
@@ -287,6 +292,7 @@ class Numerics:
         /,
         *,
         backend: str | None = None,
+        zero_missing: bool | None = None,
         **overrides: Any,
     ) -> Result:
         """Perform the script's ``CODE`` job (the last one if there are several).
@@ -295,13 +301,14 @@ class Numerics:
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.backends`."""
+        see :mod:`al2py_runtime.backends`.  A value the job needs that no
+        Input gives stops it with the names; ``zero_missing=True`` uses 0."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
-        return run_job(jobs[-1], merged, backend=backend)
+        return run_job(jobs[-1], merged, backend=backend, zero_missing=zero_missing)
 
     def document_run(self, run: Any) -> Any:
         """Give a module's ``run`` function its Inputs as keyword parameters
@@ -316,6 +323,7 @@ class Numerics:
         /,
         *,
         backend: str | None = None,
+        zero_missing: bool | None = None,
         **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
         """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
@@ -328,7 +336,9 @@ class Numerics:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
         merged = dict(values or {})
         merged.update(overrides)
-        return ode_function(jobs[-1], merged, backend=backend)
+        return ode_function(
+            jobs[-1], merged, backend=backend, zero_missing=zero_missing
+        )
 
     def evaluate_name(
         self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
@@ -352,6 +362,9 @@ class Numerics:
         values: Mapping[str, Any] | None = None,
         *,
         backend: str | None = None,
+        zero_missing: bool | None = None,
     ) -> Result:
         """Perform one recorded job with optional overrides."""
-        return run_job(job, dict(values or {}), backend=backend)
+        return run_job(
+            job, dict(values or {}), backend=backend, zero_missing=zero_missing
+        )

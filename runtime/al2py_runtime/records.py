@@ -111,6 +111,8 @@ class Job:
     initials: dict[str, float] = field(default_factory=dict)
     #: shapes of the ``Encode``d matrices (their elements are output items)
     encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+    #: the script line declaring each name, where the module gave it
+    declared: dict[str, int] = field(default_factory=dict)
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property

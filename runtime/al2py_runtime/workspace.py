@@ -56,6 +56,7 @@ class _Entry:
     sign: str | None = None
     order: int = 0  # highest declared derivative for variables
     extra: dict = field(default_factory=dict)
+    line: int | None = None  # the script line that declared it
 
 
 class Workspace(Mapping):
@@ -170,10 +171,13 @@ class Workspace(Mapping):
         values: Mapping[str, Any] | None = None,
         *,
         backend: str | None = None,
+        zero_missing: bool | None = None,
     ) -> Any:
         """Perform one recorded job with optional overrides (``backend``: see
         :mod:`.backends`)."""
-        return self.numerics.run_job(job, values, backend=backend)
+        return self.numerics.run_job(
+            job, values, backend=backend, zero_missing=zero_missing
+        )
 
     def main(self, source_lines: Any, argv: Any = None) -> int:
         """The ``python module.py`` entry point (see :mod:`.cli`)."""
@@ -229,36 +233,39 @@ class Workspace(Mapping):
             return {"nonpositive": True}
         return {"real": True}
 
-    def constants(self, *names: str) -> Any:
+    def constants(self, *names: str, line: int | None = None) -> Any:
         """``Constants A, B+, C-``: real symbols (``+`` non-negative, ``-``
-        non-positive).  Returns one symbol or a tuple, in order."""
+        non-positive).  Returns one symbol or a tuple, in order; ``line`` is
+        the script's line, named when a job lacks a value."""
         out = []
         for spec in names:
             name, sign = _split_sign(spec)
             sym = sp.Symbol(name.upper(), **self._assumptions(sign))
-            out.append(self._declare(name, "constant", sym, sign=sign))
+            out.append(self._declare(name, "constant", sym, sign=sign, line=line))
         return one_or_tuple(out)
 
-    def variables(self, *names: str) -> Any:
+    def variables(self, *names: str, line: int | None = None) -> Any:
         """``Variables X', Y''``: functions of time; primes give the order."""
-        return self._time_functions(names, "variable")
+        return self._time_functions(names, "variable", line)
 
-    def specified(self, *names: str) -> Any:
+    def specified(self, *names: str, line: int | None = None) -> Any:
         """``Specified PHI``: a function of time given by the user."""
-        return self._time_functions(names, "specified")
+        return self._time_functions(names, "specified", line)
 
-    def _time_functions(self, names: Iterable[str], kind: str) -> Any:
+    def _time_functions(
+        self, names: Iterable[str], kind: str, line: int | None = None
+    ) -> Any:
         out = []
         for spec in names:
             base = spec.rstrip("'")
             order = len(spec) - len(base)
             func = dynamicsymbols(base.upper(), **self._assumptions(None))
-            out.append(self._declare(base, kind, func, order=order))
+            out.append(self._declare(base, kind, func, order=order, line=line))
         return one_or_tuple(out)
 
-    def imaginary(self, name: str) -> Any:
+    def imaginary(self, name: str, line: int | None = None) -> Any:
         """``Imaginary j``: ``j`` is the imaginary unit."""
-        return self._declare(name, "imaginary", sp.I)
+        return self._declare(name, "imaginary", sp.I, line=line)
 
     # -------------------------------------------------------------- lookups
 

@@ -214,7 +214,7 @@ class Generator:
                 sym = self.facts.quantity(spellings[-1])
                 value = self.expr(item.values[0])
                 assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
-        call = f"al.{method}({', '.join(specs)})"
+        call = f"al.{method}({', '.join(specs)}, line={self._line})"
         return [f"{', '.join(names)} = {call}", *assigns]
 
     def _objects(self, stmt: ir.Declaration) -> list[str]:
@@ -237,7 +237,7 @@ class Generator:
             return []
         idents = ", ".join(s.ident for s in new)
         specs = ", ".join(repr(s.key + (s.sign or "")) for s in new)
-        return [f"{idents} = al.constants({specs})"]
+        return [f"{idents} = al.constants({specs}, line={self._line})"]
 
     def _mass(self, stmt: ir.Declaration) -> list[str]:
         out = self._declare_new()

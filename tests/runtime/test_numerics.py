@@ -7,6 +7,7 @@ the tutorial's scripts and printed equations.
 from __future__ import annotations
 
 import math
+import re
 import sys
 
 import numpy as np
@@ -409,23 +410,51 @@ def test_code_takes_a_snapshot():
     assert np.allclose(result["E"], 2 * np.exp(-np.array([0, 0.5, 1])), atol=1e-7)
 
 
-def test_constants_with_values_and_missing_inputs_default_to_zero():
+def _defaults() -> Workspace:
     ws = Workspace("defaults.al")
-    x = ws.variables("X'")
-    g = ws.constants("G")
+    x = ws.variables("X'", line=1)
+    g = ws.constants("G", line=2)
     ws.assign("G", sp.Rational(981, 100))  # Constants G = 9.81
-    h = ws.constants("H")
+    h, _k, j = ws.constants("H", "K", "J", line=3)
     ws.set("AutoRHS", "OFF")  # keep G in X' (AutoRHS ON substitutes 9.81)
-    ws.assign("X'", g + h)
+    ws.assign("X'", g + h + j)
     ws.output([("T", t, None), ("X", x, None)])
-    ws.code("ODE", file="defaults.m")
-    result = ws.run()
+    ws.code("ODE", file="defaults.m", line=9)
+    return ws
+
+
+def test_missing_constants_are_named_before_code_is_generated(monkeypatch):
+    """Every constant the job needs without a value, with its line, at once;
+    and no code generated (the backend is never reached)."""
+    ws = _defaults()
+    calls = []
+    monkeypatch.setattr(
+        "al2py_runtime.backends.compile_dynamics", lambda *a: calls.append(a)
+    )
+    message = (
+        "CODE Ode defaults.m (line 9): no value for H (declared on line 3), "
+        "J (declared on line 3). Give them with Input"
+    )
+    with pytest.raises(NumericsError, match=re.escape(message)):
+        ws.run()
+    with pytest.raises(NumericsError, match=re.escape(message)):
+        ws.ode_function()
+    assert calls == []  # K is not needed; X starts at 0 as in Autolev
+    monkeypatch.undo()
+    assert ws.run(H=1, J=2)["X"][-1] == pytest.approx(128.1)
+    monkeypatch.setenv("AL2PY_ZERO_MISSING", "1")
+    assert ws.run()["X"][-1] == pytest.approx(98.1)
+
+
+def test_constants_with_values_and_missing_inputs_default_to_zero():
+    ws = _defaults()
+    result = ws.run(zero_missing=True)
     assert result["X"][-1] == pytest.approx(98.1)  # TFINAL defaults to 10
     assert len(result["T"]) == 101
     assert "H has no Input value; using 0" in result.notes
     assert "X has no Input value; using 0" in result.notes
     # a constant's value can still be changed from the command line
-    assert ws.run(G=1, H=1)["X"][-1] == pytest.approx(20)
+    assert ws.run(G=1, H=1, J=0)["X"][-1] == pytest.approx(20)
 
 
 def test_override_of_a_substituted_constant_is_noted():
@@ -651,7 +680,7 @@ def test_division_by_a_defaulted_input_is_reported():
     ws.assign("X'", 1 / la)
     ws.code("ODE", file="div.m")
     with pytest.raises(NumericsError, match="at t = 0; check the Input values"):
-        ws.run()
+        ws.run(zero_missing=True)
 
 
 def test_singular_mass_matrix():
@@ -661,5 +690,5 @@ def test_singular_mass_matrix():
     ws.assign("ZERO", sp.Matrix([-m * u.diff(t) + 1]))
     ws.code("DYNAMICS", file="sing.c")
     with pytest.raises(NumericsError, match="matrix of U' in ZERO is singular"):
-        ws.run()
+        ws.run(zero_missing=True)
     assert ws.run(M=2).states["U"][-1] == pytest.approx(5)

@@ -24,10 +24,10 @@ class Speeds:
 
     # ------------------------------------------------------- speeds
 
-    def motion_variables(self, *names: str) -> Any:
+    def motion_variables(self, *names: str, line: int | None = None) -> Any:
         """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
         that also describe the motion (see :meth:`_speeds`)."""
-        out = self.ws.variables(*names)
+        out = self.ws.variables(*names, line=line)
         objs = out if isinstance(out, tuple) else (out,)
         st = self._mech
         st.motion.extend(o for o in objs if o not in st.motion)
