@@ -187,7 +187,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         print(f"error: {exc}", file=sys.stderr)
         return 2
     if args.emit_code is not None:
-        from .cprogram import write_programs
+        from .codegen import write_programs
 
         written, errors = write_programs(ws, args.emit_code)
         for path in written:

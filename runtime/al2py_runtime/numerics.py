@@ -157,6 +157,7 @@ class Numerics:
         sweep: tuple | None = None,
         file: str | None = None,
         line: int | None = None,
+        options: Iterable[str] = (),
     ) -> Job:
         """``CODE Dynamics() file.c`` (also ``ODE``, ``Nonlinear(eqs, x, y)``,
         ``Algebraic(eqs, x, y)`` and ``Algebraic() [PHI deg=0,360,1]``).
@@ -164,6 +165,7 @@ class Numerics:
         Records the job; ``run()`` performs it.  ``file``'s stem names the
         output files; its extension (.c, .m, .for, .f) is ignored."""
         job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
+        job.options = tuple(str(w).upper() for w in options)
         self._numerics.jobs.append(job)
         return job
 

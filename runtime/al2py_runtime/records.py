@@ -111,6 +111,8 @@ class Job:
     initials: dict[str, float] = field(default_factory=dict)
     #: shapes of the ``Encode``d matrices (their elements are output items)
     encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+    #: words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case
+    options: tuple[str, ...] = ()
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property
