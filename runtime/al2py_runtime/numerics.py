@@ -289,21 +289,37 @@ class Numerics:
         /,
         *,
         backend: str | None = None,
+        job: str | None = None,
         **overrides: Any,
     ) -> Result:
-        """Perform the script's ``CODE`` job (the last one if there are several).
+        """Perform the script's ``CODE`` job (the last one if there are several;
+        ``job`` names another by its file stem: ``run(job="WhippleDynamics")``).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
         see :mod:`al2py_runtime.backends`."""
+        merged = dict(values or {})
+        merged.update(overrides)
+        return run_job(self.job(job), merged, backend=backend)
+
+    def job(self, name: str | None = None) -> Job:
+        """The ``CODE`` job whose file stem (or file name) is ``name``, any
+        case; the last job when ``name`` is None."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
-        merged = dict(values or {})
-        merged.update(overrides)
-        return run_job(jobs[-1], merged, backend=backend)
+        if name is None:
+            return jobs[-1]
+        key = str(name).upper()
+        for job in jobs:
+            if key in (job.stem.upper(), (job.filename or "").upper()):
+                return job
+        raise NumericsError(
+            f"{self._ws.filename} has no CODE job {name!r}; jobs: "
+            + ", ".join(j.stem for j in jobs)
+        )
 
     def document_run(self, run: Any) -> Any:
         """Give a module's ``run`` function its Inputs as keyword parameters
@@ -318,19 +334,17 @@ class Numerics:
         /,
         *,
         backend: str | None = None,
+        job: str | None = None,
         **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
         """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
         ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
         UnitSystem's, SI by default; angles in radians).  Overrides are given
         as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
-        the same function; ``backend`` as for :meth:`run`."""
-        jobs = self._numerics.jobs
-        if not jobs:
-            raise NumericsError(f"{self._ws.filename} has no CODE statement")
+        the same function; ``backend`` and ``job`` as for :meth:`run`."""
         merged = dict(values or {})
         merged.update(overrides)
-        return ode_function(jobs[-1], merged, backend=backend)
+        return ode_function(self.job(job), merged, backend=backend)
 
     def evaluate_name(
         self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
