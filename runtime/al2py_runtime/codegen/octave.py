@@ -11,7 +11,7 @@ import sympy as sp
 from sympy.printing.octave import OctaveCodePrinter
 
 from ..jobs import NumericsError
-from .program import Assign, Program
+from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
 
@@ -50,14 +50,7 @@ def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
         if kind == "ud":
             lines.append(f"  {a.target[2]} = ud({a.target[1] + 1});")
             continue
-        if kind == "tmp":
-            target = a.target[1]
-        elif kind == "m":
-            target = f"mm({a.target[1] + 1}, {a.target[2] + 1})"
-        elif kind == "f":
-            target = f"ud({a.target[1] + 1})"
-        else:
-            target = f"{kind}({a.target[1] + 1})"
+        target = one_based_target(a)
         lines.append("  " + _code(printer, a.expr, target))
     if block is program.eqns and program.solve_at == len(block) and n:
         lines += solve

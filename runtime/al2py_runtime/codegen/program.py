@@ -35,7 +35,7 @@ from ..jobs import (
 )
 from ..tables import format_table
 
-__all__ = ["Assign", "Entry", "OutputTable", "Program", "describe"]
+__all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 
 #: ``.in`` descriptions of the integration parameters, in file order.
 INTEGRATION_LINES = (
@@ -275,6 +275,18 @@ class Program:
 
     def states_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
         return _used(self.initials, block)
+
+
+def one_based_target(a: Assign) -> str:
+    """The Fortran/MATLAB spelling of ``a``'s target (``mm(1, 2)``, ``x3``)."""
+    kind = a.target[0]
+    if kind == "tmp":
+        return a.target[1]
+    if kind == "m":
+        return f"mm({a.target[1] + 1}, {a.target[2] + 1})"
+    if kind == "f":
+        return f"ud({a.target[1] + 1})"
+    return f"{kind}({a.target[1] + 1})"
 
 
 def _used(entries: list[Entry], block: Iterable[Assign]) -> list[tuple[int, Entry]]:
