@@ -39,8 +39,9 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
             lines.append(f"  {key} = {shown}{unit}")
     jobs = ws.jobs
     if jobs:
-        kinds = ", ".join(f"CODE {j.kind.title()} -> {j.stem}.1, ..." for j in jobs)
-        lines.append(f"Job: {kinds}")
+        lines.append("Jobs (--job STEM runs one; default: all, in script order):")
+        for j in jobs:
+            lines.append(f"  {j.stem}: {j.where} -> {j.stem}.1, ...")
     else:
         lines.append(
             "This script has no CODE statement: it only prints its transcript."
@@ -61,6 +62,12 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
         action="append",
         default=[],
         help="change an Input value (repeatable); VALUE is in the Input's unit",
+    )
+    parser.add_argument(
+        "--job",
+        metavar="STEM",
+        help="perform (or with --emit-code, write) only the CODE job whose file"
+        " is STEM (see the list below)",
     )
     parser.add_argument(
         "--tfinal", type=float, help="final time (sets TFINAL; Dynamics/ODE jobs)"
@@ -89,8 +96,9 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
     parser.add_argument(
         "--emit-code",
         metavar="DIR",
-        help="write the C program of each CODE Dynamics/ODE job into DIR"
-        " (as 'al2py code' does) instead of running",
+        help="write the program (C, MATLAB or Fortran, as CODE names it) and"
+        " STEM.in of each CODE Dynamics/ODE job into DIR (as 'al2py code'"
+        " does) instead of running",
     )
     parser.add_argument(
         "--no-run",
@@ -175,6 +183,8 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         return exc.code if isinstance(exc.code, int) else 2
     jobs = ws.jobs
     try:
+        if args.job is not None:
+            jobs = [ws.numerics.job(args.job)]
         overrides = _overrides(args.set, args.tfinal)
         if overrides and not jobs:
             raise NumericsError(
@@ -193,9 +203,9 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         print(f"error: {exc}", file=sys.stderr)
         return 2
     if args.emit_code is not None:
-        from .cprogram import write_programs
+        from .codegen import write_programs
 
-        written, errors = write_programs(ws, args.emit_code)
+        written, errors = write_programs(ws, args.emit_code, jobs=jobs)
         for path in written:
             print(f"Wrote {path}")
         for message in errors:

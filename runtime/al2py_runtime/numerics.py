@@ -157,6 +157,7 @@ class Numerics:
         sweep: tuple | None = None,
         file: str | None = None,
         line: int | None = None,
+        options: Iterable[str] = (),
     ) -> Job:
         """``CODE Dynamics() file.c`` (also ``ODE``, ``Nonlinear(eqs, x, y)``,
         ``Algebraic(eqs, x, y)`` and ``Algebraic() [PHI deg=0,360,1]``).
@@ -164,6 +165,7 @@ class Numerics:
         Records the job; ``run()`` performs it.  ``file``'s stem names the
         output files; its extension (.c, .m, .for, .f) is ignored."""
         job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
+        job.options = tuple(str(w).upper() for w in options)
         self._numerics.jobs.append(job)
         return job
 
@@ -293,22 +295,40 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
+        job: str | None = None,
         **overrides: Any,
     ) -> Result:
-        """Perform the script's ``CODE`` job (the last one if there are several).
+        """Perform the script's ``CODE`` job (the last one if there are several;
+        ``job`` names another by its file stem: ``run(job="WhippleDynamics")``).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.backends`.  A value the job needs that no
+        see :mod:`al2py_runtime.backends`.  A constant the job needs that no
         Input gives stops it with the names; ``zero_missing=True`` uses 0."""
+        merged = dict(values or {})
+        merged.update(overrides)
+        return run_job(
+            self.job(job), merged, backend=backend, zero_missing=zero_missing
+        )
+
+    def job(self, name: str | None = None) -> Job:
+        """The ``CODE`` job whose file stem (or file name) is ``name``, any
+        case; the last job when ``name`` is None."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
-        merged = dict(values or {})
-        merged.update(overrides)
-        return run_job(jobs[-1], merged, backend=backend, zero_missing=zero_missing)
+        if name is None:
+            return jobs[-1]
+        key = str(name).upper()
+        for job in jobs:
+            if key in (job.stem.upper(), (job.filename or "").upper()):
+                return job
+        raise NumericsError(
+            f"{self._ws.filename} has no CODE job {name!r}; jobs: "
+            + ", ".join(j.stem for j in jobs)
+        )
 
     def document_run(self, run: Any) -> Any:
         """Give a module's ``run`` function its Inputs as keyword parameters
@@ -324,20 +344,18 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
+        job: str | None = None,
         **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
         """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
         ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
         UnitSystem's, SI by default; angles in radians).  Overrides are given
         as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
-        the same function; ``backend`` as for :meth:`run`."""
-        jobs = self._numerics.jobs
-        if not jobs:
-            raise NumericsError(f"{self._ws.filename} has no CODE statement")
+        the same function; ``backend`` and ``job`` as for :meth:`run`."""
         merged = dict(values or {})
         merged.update(overrides)
         return ode_function(
-            jobs[-1], merged, backend=backend, zero_missing=zero_missing
+            self.job(job), merged, backend=backend, zero_missing=zero_missing
         )
 
     def evaluate_name(

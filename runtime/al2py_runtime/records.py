@@ -113,6 +113,8 @@ class Job:
     encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
     #: the script line declaring each name, where the module gave it
     declared: dict[str, int] = field(default_factory=dict)
+    #: words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case
+    options: tuple[str, ...] = ()
     _cache: dict = field(default_factory=dict, repr=False)
 
     @property

@@ -151,6 +151,12 @@ def document_run(ws: Any, run: Any) -> Any:
                     default=value if value is not None else shown,
                 )
             )
+    jobs = [j.stem for j in getattr(ws, "jobs", [])]
+    if len(jobs) > 1 and not any(p.name.upper() == "JOB" for p in params):
+        params.append(
+            inspect.Parameter("job", inspect.Parameter.KEYWORD_ONLY, default=None)
+        )
+        lines.append(f"    job = None (the last CODE job; or one of {', '.join(jobs)})")
     try:
         run.__signature__ = inspect.Signature(params)
         if lines:

@@ -1,14 +1,15 @@
-"""``al2py code FILE.al``: write the C program of each ``CODE`` statement.
+"""``al2py code FILE.al``: write the program of every ``CODE`` statement.
 
-    al2py code tutor6.al              writes tutor6.c (the name CODE gives)
+    al2py code tutor6.al              writes tutor6.c and tutor6.in
     al2py code tutor6.al -o build/    into another folder
     al2py code tutor7.al --lang c     C although CODE names tutor7.for
 
-Converts the script, derives the model as the generated module would on
-import, and writes a self-contained C99 file per ``CODE Dynamics``/``ODE``
-job (see :mod:`al2py_runtime.cprogram`).  MATLAB (``.m``) and Fortran
-(``.f``, ``.for``) are not written yet; Nonlinear and Algebraic jobs
-neither: each gets one clear error line and the exit status is 2.
+Converts the script, derives the model once as the generated module would on
+import, and writes each ``CODE Dynamics``/``ODE`` job's program in the
+language its file extension names (C ``.c``, MATLAB/Octave ``.m``, Fortran
+``.f``/``.for``; see :mod:`al2py_runtime.codegen`) with the ``.in`` file it
+reads.  Nonlinear and Algebraic jobs are not written yet: each gets one
+clear error line and the exit status is 2 (the other files are written).
 """
 
 from __future__ import annotations
@@ -26,12 +27,16 @@ __all__ = ["main", "parser"]
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="al2py code",
-        description="Write the C program of each CODE Dynamics/ODE statement of "
-        "an Autolev script: the equations of motion, the outputs and an "
-        "integrator main program that writes the same tables as run().  "
-        "Only C is written so far (not MATLAB or Fortran).",
-        epilog="Build the result with 'cc -O2 -std=c99 -o NAME NAME.c -lm'; run "
-        "'./NAME NAME=VALUE ...' to change Input values.",
+        description="Write the program of every CODE Dynamics/ODE statement of "
+        "an Autolev script in the language its file names (C .c, MATLAB/Octave "
+        ".m, Fortran .f or .for), and the NAME.in file of Input values it "
+        "reads: the equations of motion, the outputs and a Kutta-Merson "
+        "driver that writes the tables NAME.1, ... as run() does.  "
+        "'CODE Dynamics() NAME.c, NOSUBS' writes the equations only.",
+        epilog="C: 'cc -O2 -std=c99 -o NAME NAME.c -lm && ./NAME [X=VALUE ...]'; "
+        "Fortran: 'gfortran -O2 -o NAME NAME.f && ./NAME'; MATLAB or Octave: "
+        "'octave --eval NAME' in the folder of NAME.m.  Each reads NAME.in "
+        "(values from column 60) from the current folder.",
     )
     p.add_argument("input", help="the .al script")
     p.add_argument(
@@ -39,14 +44,14 @@ def parser() -> argparse.ArgumentParser:
         "--outdir",
         default=".",
         metavar="DIR",
-        help="folder for the C files (default: the current folder)",
+        help="folder for the programs (default: the current folder)",
     )
     p.add_argument(
         "--lang",
-        choices=("c",),
-        help="write this language whatever the CODE statement's file"
-        " extension says (tutor7's CODE names tutor7.for; --lang c writes"
-        " tutor7.c)",
+        choices=("c", "m", "f"),
+        help="write every program in this language (c, m for MATLAB/Octave,"
+        " f for Fortran) whatever the CODE statement's file extension says"
+        " (tutor7's CODE names tutor7.for; --lang c writes tutor7.c)",
     )
     return p
 
@@ -75,13 +80,13 @@ def main(argv: list[str]) -> int:
             file=sys.stderr,
         )
         return 2
-    from al2py_runtime.cprogram import write_programs
+    from al2py_runtime.codegen import write_programs
 
     ws = module.al
     if not ws.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
-    written, errors = write_programs(ws, args.outdir, force_c=args.lang == "c")
+    written, errors = write_programs(ws, args.outdir, lang=args.lang)
     for item in written:
         print(f"Wrote {item}")
     for message in errors:

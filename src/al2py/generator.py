@@ -516,6 +516,8 @@ class Generator:
             args.append(f"sweep=({', '.join(parts)}, {self.expr(sw.step)})")
         if stmt.filename is not None:
             args.append(f"file={stmt.filename!r}")
+        if stmt.options:
+            args.append(f"options={tuple(stmt.options)!r}")
         return [f"al.code({', '.join(args)}, line={self._line})"]
 
     # -------------------------------------------------------- expressions

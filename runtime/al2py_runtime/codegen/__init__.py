@@ -1,0 +1,98 @@
+"""The programs ``CODE`` statements name: C, MATLAB/Octave and Fortran.
+
+:func:`write_programs` writes, for each ``CODE Dynamics``/``ODE`` job, what
+Autolev's ``CODE Dynamics() model.c`` (or ``.m``, ``.f``, ``.for``) wrote:
+a program with the equations of motion, the outputs and a driver that reads
+``model.in`` (see :mod:`.infile`), integrates with Kutta-Merson and writes
+the output tables ``model.1``, ``model.2``, ... -- and ``model.in`` itself,
+with the script's Input values.  ``CODE ... model.c, NOSUBS`` writes the
+equations only (no driver).  One description of the program
+(:mod:`.program`) is spelled by three printers (:mod:`.c`, :mod:`.fortran`,
+:mod:`.octave`).
+
+    cc -O2 -std=c99 -Wall -o tutor6 tutor6.c -lm && ./tutor6 TFINAL=5
+"""
+
+from __future__ import annotations
+
+from pathlib import Path, PurePath
+from typing import Any
+
+from .. import backends
+from ..jobs import Job, NumericsError
+from .infile import in_text
+from .program import Program, describe
+
+__all__ = ["LANGUAGES", "in_text", "program_source", "target_file", "write_programs"]
+
+#: File extensions of ``CODE`` and their language.
+LANGUAGES = {".c": "C", ".m": "MATLAB", ".f": "Fortran", ".for": "Fortran"}
+#: ``--lang`` values and the extension each writes.
+LANG_SUFFIX = {"c": ".c", "m": ".m", "matlab": ".m", "f": ".f", "fortran": ".f"}
+
+
+def target_file(job: Job, lang: str | None = None) -> str:
+    """The file a job's ``CODE`` statement names (``STEM.c`` if none); with
+    ``lang`` (``c``, ``m``, ``f``) the same stem in that language."""
+    name = job.filename or f"{job.stem}.c"
+    suffix = PurePath(name).suffix.lower()
+    if lang is not None:
+        want = LANG_SUFFIX[lang.lower()]
+        if suffix != want and not (want == ".f" and suffix == ".for"):
+            name, suffix = f"{PurePath(name).stem}{want}", want
+    if suffix == "":
+        name, suffix = f"{name}.c", ".c"
+    if suffix not in LANGUAGES:
+        raise NumericsError(f"{job.where}: unknown code language '{suffix}'")
+    return name
+
+
+def program_source(program: Program, target: str) -> str:
+    """The text of ``target`` (its extension chooses the language)."""
+    suffix = PurePath(target).suffix.lower()
+    if suffix == ".c":
+        from .c import c_source
+
+        return c_source(program, target)
+    if suffix == ".m":
+        from .octave import octave_source
+
+        return octave_source(program, target)
+    from .fortran import fortran_source
+
+    return fortran_source(program, target)
+
+
+def write_programs(
+    ws: Any,
+    directory: str | Path = ".",
+    lang: str | None = None,
+    jobs: list[Job] | None = None,
+    source: str | None = None,
+) -> tuple[list[Path], list[str]]:
+    """Write each ``CODE`` job's program (``lang``: all in one language) and
+    its ``STEM.in`` into ``directory``.  Returns (files written, error
+    messages of the jobs that cannot be written)."""
+    directory = Path(directory)
+    written: list[Path] = []
+    errors: list[str] = []
+    for job in ws.jobs if jobs is None else jobs:
+        try:
+            name = PurePath(target_file(job, lang)).name
+            program = describe(job, source)
+            text = program_source(program, name)
+        except (NumericsError, backends.BackendError) as exc:
+            message = str(exc)
+            if not message.startswith(job.where):
+                message = f"{job.where}: {message}"
+            errors.append(message)
+            continue
+        directory.mkdir(parents=True, exist_ok=True)
+        path = directory / name
+        path.write_text(text, encoding="utf-8")
+        written.append(path)
+        if not program.nosubs:
+            infile = directory / f"{program.stem}.in"
+            infile.write_text(in_text(program), encoding="utf-8")
+            written.append(infile)
+    return written, errors

@@ -1,0 +1,542 @@
+"""The Fortran spelling of a :class:`~.program.Program`: fixed source form
+(``.f``, 72 columns) in Fortran 90 (``implicit none``, ``do``/``end do``),
+printed by sympy's ``fcode``; ``gfortran -Wall`` compiles it silently."""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Any
+
+import sympy as sp
+from sympy.printing.fortran import FCodePrinter
+
+from ..jobs import NumericsError
+from .program import Assign, Program, one_based_target
+
+__all__ = ["fortran_source"]
+
+_W = 72  # last column of fixed source form
+
+
+class _Printer(FCodePrinter):
+    def __init__(self) -> None:
+        super().__init__({"source_format": "fixed", "standard": 95, "strict": True})
+
+    def _print_sign(self, expr: Any) -> str:
+        x = self._print(expr.args[0])
+        return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
+
+
+def _d(x: float) -> str:
+    x = float(x) if math.isfinite(x) else 0.0
+    return repr(x).replace("e", "d") if "e" in repr(x) else f"{x!r}d0"
+
+
+def _code(printer: _Printer, expr: Any, target: str) -> list[str]:
+    to: Any = target if "(" in target else sp.Symbol(target, real=True)
+    try:
+        text = printer.doprint(sp.sympify(expr), assign_to=to)
+    except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
+        what = str(exc).split("\n")[0]
+        raise NumericsError(f"Fortran cannot print {expr}: {what}") from None
+    return [ln for ln in text.splitlines() if not ln.lstrip().startswith("!")]
+
+
+def _comment(text: str) -> list[str]:
+    return [f"C     {text}"[:_W].rstrip()]
+
+
+def _string_write(unit: str, text: str) -> list[str]:
+    """``write(unit, '(A)') 'text'`` split over continuation lines."""
+    quoted = [text[i : i + 40].replace("'", "''") for i in range(0, len(text), 40)]
+    if not quoted:
+        return [f"      write({unit}, '(A)') ''"]
+    lines = [f"      write({unit}, '(A)') '{quoted[0]}'"]
+    lines += [f"     &  // '{q}'" for q in quoted[1:]]
+    return lines
+
+
+def _decl(names: list[str], kind: str = "double precision") -> list[str]:
+    lines: list[str] = []
+    row: list[str] = []
+    for name in names:
+        if row and len(f"      {kind} {', '.join(row + [name])}") > _W:
+            lines.append(f"      {kind} {', '.join(row)}")
+            row = []
+        row.append(name)
+    if row:
+        lines.append(f"      {kind} {', '.join(row)}")
+    return lines
+
+
+def _body(program: Program, block: list[Assign], printer: _Printer) -> list[str]:
+    n = program.nu
+    lines = []
+    for i, e in program.params_used(block):
+        lines.append(f"      {e.ident} = p({i + 1})")
+    for i, e in program.states_used(block):
+        lines.append(f"      {e.ident} = y({i + 1})")
+    for k, a in enumerate(block):
+        kind = a.target[0]
+        if k == program.solve_at and n and block is program.eqns:
+            lines += [
+                f"      call alsolve({n}, mm, ud, ierr)",
+                "      if (ierr .ne. 0) return",
+            ]
+        if kind == "ud":
+            lines.append(f"      {a.target[2]} = ud({a.target[1] + 1})")
+            continue
+        target = one_based_target(a)
+        lines += _code(printer, a.expr, target)
+    if block is program.eqns and program.solve_at == len(block) and n:
+        lines += [
+            f"      call alsolve({n}, mm, ud, ierr)",
+            "      if (ierr .ne. 0) return",
+        ]
+    return lines
+
+
+def _locals(program: Program, block: list[Assign]) -> list[str]:
+    names = [e.ident for _i, e in program.params_used(block)]
+    names += [e.ident for _i, e in program.states_used(block)]
+    names += [a.target[1] for a in block if a.target[0] == "tmp"]
+    names += [a.target[2] for a in block if a.target[0] == "ud"]
+    return names
+
+
+def _uses(block: list[Assign], name: str) -> bool:
+    return any(
+        sp.Symbol(name, real=True) in sp.sympify(a.expr).free_symbols for a in block
+    )
+
+
+def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> list[str]:
+    """A NaN check for each argument the equations do not use (gfortran
+    warns about unused dummy arguments)."""
+    lines = []
+    for name, used in args.items():
+        if not used:
+            ref = name if name == "T" else f"{name}(1)"
+            lines.append(f"      if ({ref} .ne. {ref}) ierr = 2")
+    return lines
+
+
+def equations(program: Program) -> list[str]:
+    printer = _Printer()
+    n, ny, np_, nout = program.nu, program.ny, program.np, program.nout
+    e = program.eqns
+    lines = _comment("The derivatives dy of the states y at time T with the")
+    lines += _comment("constants p and the accelerations ud (M ud = f).")
+    lines += _comment("ierr: 0, 1 when M is singular, 2 when not finite.")
+    lines += [
+        "      subroutine eqns(T, y, p, dy, ud, ierr)",
+        "      implicit none",
+        f"      double precision T, y({ny}), p({max(np_, 1)}), dy({ny})",
+        f"      double precision ud({max(n, 1)})",
+        "      integer ierr, i",
+    ]
+    if n:
+        lines.append(f"      double precision mm({n}, {n})")
+    lines += _decl(_locals(program, e))
+    lines.append("      ierr = 0")
+    used = {
+        "T": _uses(e, "T"),
+        "y": bool(program.states_used(e)),
+        "p": bool(program.params_used(e)),
+    }
+    lines += _guards(program, e, used)
+    if not n:
+        lines.append("      ud(1) = 0d0")
+    lines += _body(program, e, printer)
+    lines += [
+        f"      do i = 1, {ny}",
+        "        if (dy(i) .ne. dy(i) .or. abs(dy(i)) .gt. huge(1d0)) then",
+        "          ierr = 2",
+        "        end if",
+        "      end do",
+        "      end",
+        "",
+    ]
+    o = program.outputs
+    lines += _comment("The output quantities at (T, y), all tables in order.")
+    lines += [
+        "      subroutine outputs(T, y, p, out, ierr)",
+        "      implicit none",
+        f"      double precision T, y({ny}), p({max(np_, 1)}), out({max(nout, 1)})",
+        f"      double precision dy({ny}), ud({max(n, 1)})",
+        "      integer ierr",
+    ]
+    lines += _decl(_locals(program, o))
+    lines += [
+        "      call eqns(T, y, p, dy, ud, ierr)",
+        "      if (ierr .ne. 0) return",
+    ]
+    if not nout:
+        lines.append("      out(1) = 0d0")
+    lines += _body(program, o, printer)
+    lines += ["      end", ""]
+    if n:
+        lines += _SOLVE_F.splitlines()
+    return lines
+
+
+def _program_name(program: Program) -> str:
+    stem = program.stem
+    if re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,30}", stem) and stem.lower() not in {
+        "eqns",
+        "outputs",
+        "kutta",
+        "alsolve",
+        "alrow",
+        "alread",
+    }:
+        return stem
+    return "alprog"
+
+
+def fortran_source(program: Program, target: str) -> str:
+    job = program.job
+    lines = _comment(f"{target}: generated by al2py {program.version}")
+    lines += _comment(f"from {program.source} ({job.where}).")
+    lines += _comment("Edit the .al file and generate again.")
+    if program.nosubs:
+        lines += _comment("NOSUBS: the equations only (eqns and outputs).")
+        lines += _comment("p(i): " + ", ".join(e.name for e in program.constants))
+        lines += _comment("y(i): " + ", ".join(e.name for e in program.initials))
+        return "\n".join(lines + [""] + equations(program)) + "\n"
+    stem = program.stem
+    lines += _comment(f"Build: gfortran -O2 -o {stem} {target}")
+    lines += _comment(f"Run:   ./{stem}   (reads {stem}.in when present, the")
+    lines += _comment("values from column 60, a blank line after each group;")
+    lines += _comment("else the script's Input values).  Kutta-Merson with")
+    lines += _comment(f"ABSERR, RELERR; writes {stem}.1, ... every PRINTINT steps.")
+    entries = program.entries
+    nin, ny, np_, nout = len(entries), program.ny, program.np, program.nout
+    tables = program.tables
+    groups = [len(g) for g in program.groups]
+    lines += [
+        f"      program {_program_name(program)}",
+        "      implicit none",
+        f"      integer, parameter :: nin = {nin}, ny = {ny}, np = {max(np_, 1)}",
+        f"      integer, parameter :: nout = {max(nout, 1)}, nt = {max(len(tables), 1)}",
+        "      double precision v(nin), fac(nin), y(ny), p(np), dy(ny)",
+        f"      double precision ud({max(program.nu, 1)}), of(nout)",
+        "      double precision t, t0, t1, step, prnt, atol, rtol, hc",
+        "      integer ncol(nt), iw(nt), ngrp(3), i, ierr, cuts, count",
+        "      logical there, last",
+    ]
+    for k, e in enumerate(entries, start=1):
+        lines.append(f"      v({k}) = {_d(e.value)}")
+        lines.append(f"      fac({k}) = {_d(e.factor)}")
+    for k, f in enumerate([x for t in tables for x in t.factors], start=1):
+        lines.append(f"      of({k}) = {_d(f)}")
+    if not nout:
+        lines.append("      of(1) = 1d0")
+    for k, t in enumerate(tables, start=1):
+        lines.append(f"      ncol({k}) = {t.columns}")
+        lines.append(f"      iw({k}) = {t.width}")
+    if not tables:
+        lines += ["      ncol(1) = 0", "      iw(1) = 0"]
+    for k in range(3):
+        lines.append(f"      ngrp({k + 1}) = {groups[k] if k < len(groups) else 0}")
+    lines += [
+        f"      inquire(file='{stem}.in', exist=there)",
+        "      if (there) then",
+        f"        call alread('{stem}.in', nin, ngrp, v, ierr)",
+        "        if (ierr .ne. 0) stop 2",
+        "      end if",
+        "      do i = 1, np_fill(np)",
+        "        p(i) = v(i) * fac(i)",
+        "      end do",
+    ]
+    # a model without constants still passes p(1)
+    lines[-3] = f"      do i = 1, {np_}" if np_ else "      p(1) = 0d0"
+    if not np_:
+        del lines[-2:]
+    lines += [
+        "      do i = 1, ny",
+        f"        y(i) = v({np_} + i) * fac({np_} + i)",
+        "      end do",
+    ]
+    base = np_ + ny
+    lines += [
+        f"      t0 = v({base + 1}) * fac({base + 1})",
+        f"      t1 = v({base + 2}) * fac({base + 2})",
+        f"      step = v({base + 3}) * fac({base + 3})",
+        f"      prnt = v({base + 4})",
+        f"      atol = v({base + 5})",
+        f"      rtol = v({base + 6})",
+        "      if (step .eq. 0d0 .or. prnt .le. 0d0 .or. atol .le. 0d0",
+        "     &    .or. rtol .le. 0d0 .or. prnt .ne. aint(prnt)) then",
+        "        write(*, '(A)') 'error: INTEGSTP must not be 0; PRINTINT'",
+        "     &    // ' (whole), ABSERR and RELERR must be positive'",
+        "        stop 2",
+        "      end if",
+        "      if ((t1 - t0) * step .lt. 0d0) step = -step",
+    ]
+    for k, t in enumerate(tables, start=1):
+        if not t.written:
+            continue
+        lines.append(f"      open({10 + k}, file='{stem}.{k}', status='replace',")
+        lines.append("     &     action='write')")
+        for text in t.header[:-1].split("\n"):
+            lines += _string_write(str(10 + k), text)
+    written = [t.written for t in tables] or [False]
+    lines += [
+        "      t = t0",
+        "      hc = 0d0",
+        "      cuts = 20",
+        "      count = 0",
+        "      call eqns(t, y, p, dy, ud, ierr)",
+        "      do while (ierr .eq. 0)",
+        "        if (t1 .ge. t0) then",
+        "          last = t + 0.01d0 * abs(step) .ge. t1",
+        "        else",
+        "          last = t - 0.01d0 * abs(step) .le. t1",
+        "        end if",
+        "        if (count .le. 0 .or. last) then",
+        "          call alrow(t, y, p, nout, of, nt, ncol, iw, "
+        + (f"{program.digits - 1}, ierr)"),
+        "          if (ierr .ne. 0 .or. last) exit",
+        "          count = nint(prnt)",
+        "        end if",
+        "        call kutta(t, step, ny, y, p, hc, cuts, atol, rtol, ierr)",
+        "        count = count - 1",
+        "      end do",
+    ]
+    for k, w in enumerate(written, start=1):
+        if w:
+            lines.append(f"      close({10 + k})")
+    lines += [
+        "      if (ierr .eq. 1) then",
+        "        write(*, '(A, ES14.6)') 'error: the mass matrix is singular'",
+        "     &    // ' at t =', t",
+        "      else if (ierr .eq. 2) then",
+        "        write(*, '(A, ES14.6)') 'error: a value is not finite at t ='",
+        "     &    , t",
+        "      else if (ierr .eq. 3) then",
+        "        write(*, '(A, ES14.6)') 'error: integration failed (the step'",
+        "     &    // ' was halved too often) at t =', t",
+        "      else",
+    ]
+    for k, w in enumerate(written, start=1):
+        if w:
+            lines.append(f"        write(*, '(A)') 'Wrote {stem}.{k}'")
+    lines += [
+        "      end if",
+        "      if (ierr .ne. 0) stop 2",
+        "      end",
+        "",
+    ]
+    lines += equations(program)
+    lines += _row_routine(tables)
+    lines += _DRIVER_F.splitlines()
+    return "\n".join(lines) + "\n"
+
+
+def _row_routine(tables: list) -> list[str]:
+    lines = _comment("One row of each output file (unit 10 + table number).")
+    lines += [
+        "      subroutine alrow(t, y, p, nout, of, nt, ncol, iw, nd, ierr)",
+        "      implicit none",
+        "      integer nout, nt, ncol(nt), iw(nt), nd, ierr, k, j",
+        "      double precision t, y(*), p(*), of(nout), out(nout)",
+        "      character(len=32) fmt",
+        "      call outputs(t, y, p, out, ierr)",
+        "      if (ierr .ne. 0) return",
+        "      j = 0",
+        "      do k = 1, nt",
+    ]
+    skip = [k for k, t in enumerate(tables, start=1) if not t.written]
+    cond = " .and. ".join(f"k .ne. {k}" for k in skip)
+    inner = [
+        "          write(fmt, '(A, I0, A, I0, A, I0, A)') '(1X, ', ncol(k),",
+        "     &      'ES', iw(k), '.', nd, ')'",
+        "          write(10 + k, fmt) out(j + 1:j + ncol(k))",
+        "     &      * of(j + 1:j + ncol(k))",
+    ]
+    if not tables:
+        inner = ["          j = j + 0"]
+    if cond:
+        lines += [f"        if ({cond}) then", *inner, "        end if"]
+    else:
+        lines += ["        if (ncol(k) .gt. 0) then", *inner, "        end if"]
+    lines += ["        j = j + ncol(k)", "      end do", "      end", ""]
+    return lines
+
+
+_SOLVE_F = """\
+C     Solve a x = b (n x n) by Gaussian elimination with partial
+C     pivoting; x is left in b.  ierr = 1 when a is singular.
+      subroutine alsolve(n, a, b, ierr)
+      implicit none
+      integer n, ierr, i, j, k, piv
+      double precision a(n, n), b(n), s, d
+      ierr = 0
+      do k = 1, n
+        piv = k
+        do i = k + 1, n
+          if (abs(a(i, k)) .gt. abs(a(piv, k))) piv = i
+        end do
+        if (a(piv, k) .eq. 0d0) then
+          ierr = 1
+          return
+        end if
+        if (piv .ne. k) then
+          do j = k, n
+            s = a(k, j)
+            a(k, j) = a(piv, j)
+            a(piv, j) = s
+          end do
+          s = b(k)
+          b(k) = b(piv)
+          b(piv) = s
+        end if
+        d = a(k, k)
+        do i = k + 1, n
+          s = a(i, k) / d
+          if (s .ne. 0d0) then
+            do j = k + 1, n
+              a(i, j) = a(i, j) - s * a(k, j)
+            end do
+            b(i) = b(i) - s * b(k)
+          end if
+        end do
+      end do
+      do i = n, 1, -1
+        s = b(i)
+        do j = i + 1, n
+          s = s - a(i, j) * b(j)
+        end do
+        b(i) = s / a(i, i)
+      end do
+      end
+"""
+
+_DRIVER_F = """\
+C     Kutta-Merson (L. Fox, 1962) with the step control of Autolev's
+C     programs: advance t by H in sub-steps hc, halved while the error
+C     estimate exceeds ABSERR and RELERR*|y|, doubled (up to H) while it
+C     is 64 times smaller.  ierr: the eqns code, or 3 (step too small).
+      subroutine kutta(t, bigh, n, y, p, hc, cuts, atol, rtol, ierr)
+      implicit none
+      integer n, cuts, ierr, i
+      double precision t, bigh, y(n), p(*), hc, atol, rtol
+      double precision f0(n), f1(n), f2(n), y1(n), y2(n), ud(n + 1)
+      double precision tend, h, tt, err, rel
+      logical fail, grow
+      tend = t + bigh
+      if (hc * bigh .lt. 0d0) hc = -hc
+      if (hc .eq. 0d0) hc = bigh
+      h = hc
+      tt = t + h
+      ierr = 0
+      do while (tt + h .ne. tt)
+        call eqns(tt - h, y, p, f0, ud, ierr)
+        if (ierr .ne. 0) return
+        y1 = y + h / 3d0 * f0
+        call eqns(tt - 2d0 * h / 3d0, y1, p, f1, ud, ierr)
+        if (ierr .ne. 0) return
+        y1 = y + h / 6d0 * (f0 + f1)
+        call eqns(tt - 2d0 * h / 3d0, y1, p, f1, ud, ierr)
+        if (ierr .ne. 0) return
+        y1 = y + h / 8d0 * (f0 + 3d0 * f1)
+        call eqns(tt - h / 2d0, y1, p, f2, ud, ierr)
+        if (ierr .ne. 0) return
+        y1 = y + h / 2d0 * (f0 - 3d0 * f1 + 4d0 * f2)
+        call eqns(tt, y1, p, f1, ud, ierr)
+        if (ierr .ne. 0) return
+        y2 = y + h / 6d0 * (f0 + 4d0 * f2 + f1)
+        fail = .false.
+        grow = .true.
+        do i = 1, n
+          err = 0.2d0 * abs(y1(i) - y2(i))
+          rel = rtol * abs(y1(i))
+          if (err .ge. rel .and. err .ge. atol) then
+            fail = .true.
+            exit
+          end if
+          if (64d0 * err .gt. rel .and. 64d0 * err .gt. atol) then
+            grow = .false.
+          end if
+        end do
+        if (fail) then
+          tt = tt - h / 2d0
+          h = h / 2d0
+          hc = h
+          cuts = cuts - 1
+          if (cuts .ge. 0) cycle
+          t = tt - h
+          ierr = 3
+          return
+        end if
+        y = y2
+        if (grow .and. abs(2d0 * h) .le. abs(bigh)) then
+          if ((bigh .gt. 0d0 .and. tt + 2d0 * h .le. tend) .or.
+     &        (bigh .lt. 0d0 .and. tt + 2d0 * h .ge. tend)) then
+            h = 2d0 * h
+            hc = h
+            cuts = cuts + 1
+          end if
+        end if
+        if (tt .eq. tend) then
+          t = tend
+          return
+        end if
+        tt = tt + h
+        if ((h .gt. 0d0 .and. tt .gt. tend - 0.1d0 * h) .or.
+     &      (h .lt. 0d0 .and. tt .lt. tend - 0.1d0 * h)) then
+          h = tend - (tt - h)
+          tt = tend
+        end if
+      end do
+      t = tt
+      ierr = 3
+      end
+
+C     Read the values of name.in: 6 header lines, then each group's
+C     values from column 60, one more line after each group.
+      subroutine alread(name, nin, ngrp, v, ierr)
+      implicit none
+      character(len=*) name
+      integer nin, ngrp(3), ierr, g, i, k, line, ios
+      double precision v(nin)
+      character(len=4096) text
+      ierr = 0
+      open(9, file=name, status='old', action='read', iostat=ios)
+      if (ios .ne. 0) return
+      line = 0
+      do i = 1, 6
+        line = line + 1
+        read(9, '(A)', iostat=ios) text
+        if (ios .ne. 0) go to 90
+      end do
+      k = 0
+      do g = 1, 3
+        if (ngrp(g) .eq. 0) cycle
+        do i = 1, ngrp(g)
+          k = k + 1
+          line = line + 1
+          read(9, '(A)', iostat=ios) text
+          if (ios .ne. 0) go to 90
+          read(text(60:), *, iostat=ios) v(k)
+          if (ios .ne. 0) go to 80
+        end do
+        line = line + 1
+        read(9, '(A)', iostat=ios) text
+        if (ios .ne. 0) go to 90
+      end do
+      close(9)
+      return
+   80 write(*, '(A, A, I0, A)') name, ' line ', line,
+     &  ': expected a number from column 60'
+      ierr = 1
+      close(9)
+      return
+   90 write(*, '(A, A, I0)') name, ' ends before its last value, line ',
+     &  line
+      ierr = 1
+      close(9)
+      end
+"""

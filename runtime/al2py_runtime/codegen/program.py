@@ -1,0 +1,518 @@
+"""One description of the program a ``CODE Dynamics``/``ODE`` job writes.
+
+:func:`describe` turns a job into a :class:`Program`: the ``.in`` entries
+(constants, initial values, integration parameters, in the Input's units
+with their factors to internal units), the equations as assignments to
+named targets (the script's names; AutoZ intermediates ``z1, z2, ...`` and
+common subexpressions ``x1, x2, ...`` named) and the output tables.  The C,
+Fortran and MATLAB printers (:mod:`.c`, :mod:`.fortran`, :mod:`.octave`)
+only spell it in their language.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+from .. import __version__, backends
+from ..jobs import (
+    Column,
+    Job,
+    NumericsError,
+    Table,
+    _dynamics_equations,
+    _initial_state,
+    _input_values,
+    _integration,
+    _output_factors,
+    label_of,
+    normalize_name,
+)
+from ..tables import format_table
+
+__all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
+
+#: ``.in`` descriptions of the integration parameters, in file order.
+INTEGRATION_LINES = (
+    ("Initial Time", "TINITIAL"),
+    ("Final Time", "TFINAL"),
+    ("Integration Step", "INTEGSTP"),
+    ("Print-Integer", "PRINTINT"),
+    ("Absolute Error", "ABSERR"),
+    ("Relative Error", "RELERR"),
+)
+
+#: Names the printers use for their own variables (never a script name).
+_INTERNAL = {
+    # the printers' own variables and routines
+    "t",
+    "y",
+    "p",
+    "dy",
+    "ud",
+    "mm",
+    "out",
+    "ierr",
+    "code",
+    "eqns",
+    "outputs",
+    "kutta",
+    "main",
+    "al_solve",
+    "al_f",
+    # functions the printed equations call
+    "abs",
+    "max",
+    "min",
+    "sqrt",
+    "exp",
+    "log",
+    "sin",
+    "cos",
+    "tan",
+    "asin",
+    "acos",
+    "atan",
+    "atan2",
+    "sinh",
+    "cosh",
+    "tanh",
+    "pi",
+    "floor",
+    "ceil",
+    "pow",
+    "fabs",
+    "sign",
+    "dsign",
+    "copysign",
+    "mod",
+    "rem",
+    "fix",
+    "round",
+    "trunc",
+    "nint",
+    "aint",
+    "anint",
+    "dble",
+    "real",
+    "isfinite",
+    "isnan",
+    "log10",
+    "erf",
+    "gamma",
+    "heaviside",
+    "merge",
+    # C, Fortran and MATLAB words
+    "double",
+    "int",
+    "char",
+    "float",
+    "long",
+    "short",
+    "void",
+    "const",
+    "static",
+    "return",
+    "if",
+    "else",
+    "for",
+    "while",
+    "do",
+    "end",
+    "function",
+    "global",
+    "switch",
+    "case",
+    "break",
+    "continue",
+    "default",
+    "goto",
+    "sizeof",
+    "struct",
+    "union",
+    "enum",
+    "register",
+    "auto",
+    "extern",
+    "signed",
+    "unsigned",
+    "volatile",
+    "inline",
+    "restrict",
+    "typedef",
+    "program",
+    "subroutine",
+    "module",
+    "use",
+    "implicit",
+    "none",
+    "intent",
+    "in",
+    "inout",
+    "call",
+    "dimension",
+    "parameter",
+    "stop",
+    "format",
+    "open",
+    "close",
+    "read",
+    "write",
+    "print",
+    "data",
+    "common",
+    "entry",
+    "result",
+    "contains",
+    "logical",
+    "integer",
+    "precision",
+    "complex",
+    "then",
+    "endif",
+    "enddo",
+    "true",
+    "false",
+    "ans",
+    "disp",
+    "error",
+    "zeros",
+    "ones",
+    "size",
+    "numel",
+    "nargin",
+    "nargout",
+    "varargin",
+    "varargout",
+    "try",
+    "catch",
+    "otherwise",
+    "endfunction",
+    "unwind_protect",
+    "printf",
+    "fprintf",
+}
+
+
+@dataclass
+class Entry:
+    """One line of the ``.in`` file and one Input of the program."""
+
+    group: str  # "Constant", "Initial Value", "Initial Time", ...
+    name: str  # the script's name (``Q1'``)
+    ident: str  # its identifier in the program (``Q1p``)
+    unit: str | None
+    value: float  # in ``unit``
+    factor: float  # ``unit`` -> internal units
+
+
+@dataclass
+class Assign:
+    """``target = expr``: ``target`` is ``("tmp", name)``, ``("m", i, j)``,
+    ``("f", i)``, ``("dy", i)``, ``("ud", i, name)`` (unpack the solved
+    acceleration ``i`` as ``name``) or ``("out", k)``."""
+
+    target: tuple
+    expr: Any
+
+
+@dataclass
+class OutputTable:
+    number: int
+    header: str  # the file's first lines, as Result.write writes them
+    columns: int
+    width: int
+    factors: list[float]
+    written: bool  # False for Encode's quantities (no file)
+
+
+@dataclass
+class Program:
+    job: Job
+    stem: str
+    source: str
+    version: str
+    nosubs: bool
+    constants: list[Entry]
+    initials: list[Entry]
+    integration: list[Entry]
+    nu: int  # accelerations solved from M ud = f
+    eqns: list[Assign]  # M, f and dy (with the solve between, see solve_at)
+    solve_at: int  # eqns[:solve_at] give M, f; the solve; then eqns[solve_at:]
+    outputs: list[Assign]  # needs the solved ud (unpacked by ("ud", ...))
+    tables: list[OutputTable]
+    digits: int
+    time: sp.Symbol = field(default_factory=lambda: sp.Symbol("T", real=True))
+
+    @property
+    def entries(self) -> list[Entry]:
+        return [*self.constants, *self.initials, *self.integration]
+
+    @property
+    def groups(self) -> list[list[Entry]]:
+        """The ``.in`` file's groups (empty ones left out)."""
+        return [g for g in (self.constants, self.initials, self.integration) if g]
+
+    @property
+    def ny(self) -> int:
+        return len(self.initials)
+
+    @property
+    def np(self) -> int:
+        return len(self.constants)
+
+    @property
+    def nout(self) -> int:
+        return sum(t.columns for t in self.tables)
+
+    def params_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
+        return _used(self.constants, block)
+
+    def states_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
+        return _used(self.initials, block)
+
+
+def one_based_target(a: Assign) -> str:
+    """The Fortran/MATLAB spelling of ``a``'s target (``mm(1, 2)``, ``x3``)."""
+    kind = a.target[0]
+    if kind == "tmp":
+        return a.target[1]
+    if kind == "m":
+        return f"mm({a.target[1] + 1}, {a.target[2] + 1})"
+    if kind == "f":
+        return f"ud({a.target[1] + 1})"
+    return f"{kind}({a.target[1] + 1})"
+
+
+def _used(entries: list[Entry], block: Iterable[Assign]) -> list[tuple[int, Entry]]:
+    names: set[str] = set()
+    for a in block:
+        names |= {s.name for s in sp.sympify(a.expr).free_symbols}
+    return [(i, e) for i, e in enumerate(entries) if e.ident in names]
+
+
+def identifier(name: str, taken: set[str]) -> str:
+    """A C/Fortran/MATLAB identifier for an Autolev name, unique among
+    ``taken`` (compared without case, as Fortran does): ``Q1'`` -> ``Q1p``."""
+    base = name.replace("'", "p")
+    base = re.sub(r"[^A-Za-z0-9_]", "_", base)
+    if not base or not base[0].isalpha():
+        base = "v" + base
+    base = base.rstrip("_") or "v"
+    out = base
+    k = 1
+    while out.lower() in taken or out.lower() in _INTERNAL:
+        out = f"{base}_{k}"
+        k += 1
+    taken.add(out.lower())
+    return out
+
+
+def describe(
+    job: Job, source: str | None = None, nosubs: bool | None = None
+) -> Program:
+    """The program of a Dynamics/ODE ``job`` with its Input values."""
+    if job.kind not in ("DYNAMICS", "ODE"):
+        raise NumericsError(
+            f"{job.where}: code for CODE {job.kind.title()} is not written yet"
+            " (only Dynamics and ODE); run it with python or run()"
+        )
+    vals, keep = _input_values(job, {})
+    c = _dynamics_equations(job, frozenset(keep))
+    us = job.unit_system
+    y0 = _initial_state(job, c, vals)
+    spec = c.spec
+    taken: set[str] = set()
+
+    def unit_of(name: str) -> str | None:
+        return vals.units.get(normalize_name(name))
+
+    def entry(group: str, name: str, internal: float) -> Entry:
+        unit = unit_of(name)
+        f = us.to_internal(unit)
+        value = internal / f
+        given = job.inputs.get(normalize_name(name))
+        if given is not None and isinstance(given.value, int | float):
+            if math.isclose(float(given.value) * f, internal, rel_tol=1e-12):
+                value = float(given.value)  # 60 deg, not 59.99999999999999
+        return Entry(group, name, identifier(name, taken), unit, value, f)
+
+    rename: dict[Any, Any] = {spec.time: sp.Symbol("T", real=True)}
+    taken.add("t")
+    constants = []
+    for obj, d in zip(c.params, spec.params, strict=True):
+        e = entry("Constant", label_of(obj, job.names), vals.param(obj))
+        constants.append(e)
+        rename[d] = sp.Symbol(e.ident, real=True)
+    initials = []
+    for name, value, d in zip(c.state_names, y0, spec.states, strict=True):
+        e = entry("Initial Value", name, value)
+        initials.append(e)
+        rename[d] = sp.Symbol(e.ident, real=True)
+    ip = _integration(vals)
+    integration = []
+    for group, key in INTEGRATION_LINES:
+        unit = unit_of(key) if key in vals.values else None
+        if key in ("TINITIAL", "TFINAL", "INTEGSTP") and unit is None:
+            unit = us.time_unit
+        f = us.to_internal(unit_of(key)) if key in vals.values else 1.0
+        integration.append(Entry(group, key, key, unit, ip[key] / f, f))
+    accel_names = [identifier(label_of(o, job.names), taken) for o in c.ud_objs]
+    for d, name in zip(spec.accels, accel_names, strict=True):
+        rename[d] = sp.Symbol(name, real=True)
+    z_names = iter_names("z", taken)
+    inter = []
+    for d, body in spec.intermediates:
+        s = sp.Symbol(next(z_names), real=True)
+        rename[d] = s
+        inter.append((s, sp.sympify(body).xreplace(rename)))
+
+    def sub(e: Any) -> Any:
+        return sp.sympify(e).xreplace(rename)
+
+    n = len(spec.accels)
+    accel_syms = {rename[d] for d in spec.accels}
+    derivs = [sub(e) for e in spec.derivs]
+    late_ids = {
+        i
+        for i, e in enumerate(derivs)
+        if e.free_symbols & accel_syms
+        or any(s.free_symbols & accel_syms for s, _ in backends.needed(inter, [e]))
+    }
+    x_names = iter_names("x", taken)
+    first = [sub(e) for e in [*spec.mass, *spec.forcing]]
+    first_targets = [("m", i // n, i % n) for i in range(n * n)]
+    first_targets += [("f", i) for i in range(n)]
+    free = [i for i in range(len(derivs)) if i not in late_ids]
+    first += [derivs[i] for i in free]
+    first_targets += [("dy", i) for i in free]
+    eqns, defined = _block(first, first_targets, inter, x_names, set())
+    solve_at = len(eqns)
+    late = [derivs[i] for i in sorted(late_ids)]
+    unpack = [Assign(("ud", k, name), 0) for k, name in enumerate(accel_names)]
+    if late:
+        eqns += [
+            a for a in unpack if sp.Symbol(a.target[2], real=True) in _free(late, inter)
+        ]
+        more, _ = _block(
+            late, [("dy", i) for i in sorted(late_ids)], inter, x_names, defined
+        )
+        eqns += more
+    flat = [sub(e) for row in spec.outputs for e in row]
+    outputs = [
+        a for a in unpack if sp.Symbol(a.target[2], real=True) in _free(flat, inter)
+    ]
+    more, _ = _block(
+        flat, [("out", k) for k in range(len(flat))], inter, x_names, set()
+    )
+    outputs += more
+    factors = [x for row in _output_factors(job, vals) for x in row]
+    tables = []
+    pos = 0
+    for number, ospec in enumerate(job.outputs, start=1):
+        cols = [Column(i.label, i.unit) for i in ospec.items]
+        empty = Table(number, cols, _no_rows(len(cols)), ospec.line)
+        header = format_table(empty, job.digits, f"{job.stem}.{number}", us.time_unit)
+        tables.append(
+            OutputTable(
+                number,
+                header,
+                len(cols),
+                _width(cols, job.digits, us.time_unit),
+                factors[pos : pos + len(cols)],
+                not ospec.encoded,
+            )
+        )
+        pos += len(cols)
+    if nosubs is None:
+        nosubs = "NOSUBS" in getattr(job, "options", ())
+    return Program(
+        job,
+        job.stem,
+        source or job.source,
+        __version__,
+        nosubs,
+        constants,
+        initials,
+        integration,
+        n,
+        eqns,
+        solve_at,
+        outputs,
+        tables,
+        job.digits,
+    )
+
+
+def iter_names(prefix: str, taken: set[str]) -> Any:
+    k = 0
+    while True:
+        k += 1
+        name = f"{prefix}{k}"
+        if name.lower() not in taken and name.lower() not in _INTERNAL:
+            taken.add(name.lower())
+            yield name
+
+
+def _free(exprs: list[Any], inter: list[tuple[Any, Any]]) -> set[Any]:
+    out: set[Any] = set()
+    for e in exprs:
+        out |= e.free_symbols
+    for _s, body in backends.needed(inter, exprs):
+        out |= sp.sympify(body).free_symbols
+    return out
+
+
+def _block(
+    exprs: list[Any],
+    targets: list[tuple],
+    inter: list[tuple[Any, Any]],
+    names: Any,
+    defined: set[Any],
+) -> tuple[list[Assign], set[Any]]:
+    """The intermediates ``exprs`` need (those not ``defined`` yet), then
+    common subexpressions, then the targets."""
+    out = []
+    defined = set(defined)
+    for s, body in backends.needed(inter, exprs):
+        if s not in defined:
+            out.append(Assign(("tmp", s.name), body))
+            defined.add(s)
+    if exprs:
+        temps, reduced = sp.cse(
+            exprs, symbols=(sp.Symbol(x, real=True) for x in names), order="none"
+        )
+        for s, e in temps:
+            out.append(Assign(("tmp", s.name), e))
+            defined.add(s)
+        for target, e in zip(targets, reduced, strict=True):
+            out.append(Assign(target, e))
+    return out, defined
+
+
+def _no_rows(n: int) -> Any:
+    import numpy as np
+
+    return np.zeros((0, n))
+
+
+def _width(cols: list[Column], digits: int, time_unit: str | None) -> int:
+    """The column width :func:`format_table` uses."""
+    labels, units = [], []
+    for col in cols:
+        unit = col.unit
+        if unit is None and normalize_name(col.label) == "T" and time_unit:
+            unit = time_unit
+        labels.append(col.label)
+        units.append(f"({unit})" if unit else "(UNITS)")
+    width = max(digits + 8, 12)
+    return max([width] + [len(s) + 2 for s in labels + units])
+
+
+def finite(x: float) -> float:
+    return x if math.isfinite(x) else 0.0
