@@ -31,11 +31,11 @@ def strip(node):
     if not isinstance(node, ir.Node):
         return node
     changes = {}
-    for f in dataclasses.fields(node):
-        if f.name == "span":
+    for name, value in ir.content(node):
+        if name == "span":
             changes["span"] = S
-        elif f.name != "lines":
-            changes[f.name] = strip(getattr(node, f.name))
+        elif name != "lines":
+            changes[name] = strip(value)
     return dataclasses.replace(node, **changes)
 
 
@@ -84,9 +84,9 @@ def walk(node):
     if not isinstance(node, ir.Node):
         return
     yield node
-    for f in dataclasses.fields(node):
-        if f.name not in ("span", "lines"):
-            yield from walk(getattr(node, f.name))
+    for name, value in ir.content(node):
+        if name not in ("span", "lines"):
+            yield from walk(value)
 
 
 # ---------------------------------------------------------------- whole files
