@@ -254,6 +254,8 @@ class Kinematics:
                 pb.orient_space_fixed(pa, tuple(qs), kind[5:])
             w = pb.ang_vel_in(pa)
             return [kin.simplify_small(w.dot(e)) for e in (pb.x, pb.y, pb.z)]
+        if kind == "EULER" and len(qs) == 4:
+            return kin.euler_parameter_angvel(list(qs))
         m = kin.rotation_dcm(kind, list(qs))
         return kin.angvel_from_dcm(m)
 
