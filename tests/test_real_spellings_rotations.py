@@ -87,3 +87,81 @@ def test_euler_angular_velocity_inverts_the_kinematical_equations(tmp_path):
     w1 = 2 * (e[3] * de[0] - de[3] * e[0] - (e[1] * de[2] - e[2] * de[1]))
     assert sp.expand(w[0] - w1) == 0
     assert at_random(w[0]) == pytest.approx(at_random(w1))
+
+
+# -------------------------------------------- item 7: spellings and names
+
+SPEEDS = """Newtonian N
+Bodies A
+Constants G, L, K
+Variables U{3}', Q{3}'
+Specified FB
+Q1' = U1
+Q2' = U2
+Q3' = U3
+Simprot(N, A, 3, Q1)
+W_A_N> = U1*A3>
+V_AO_N> = U2*N1> + U3*N2>
+Mass A = 2
+Inertia A, 1, 1, 3
+Gravity(-G*N2>)
+Force_AO> += FB*A1>
+Torque_A> += -K*Q1*A3>
+Dependent[1] = U3 - L*U1
+Constrain(Dependent[U3])
+Zero = Fr() + FrStar()
+B = -Exclude(Zero, [U_Independent'; G; FB])
+Gin = Include(Zero, [G; FB])
+Ui = U_INDEPENDENT
+Ud = U_Dependent'
+P2 = U_PARTIALS[2]
+"""
+
+
+def test_reserved_speed_matrices_and_exclude_of_a_list(tmp_path):
+    m = module(tmp_path, SPEEDS)
+    a = m.AUTOLEV
+    t = sp.Symbol("t")
+    u1, u2, u3, q1 = m.U1, m.U2, m.U3, m.Q1
+    g, fb, k = m.G, m.FB, m.K
+    # U3 is dependent: U_INDEPENDENT = [U1; U2], U_DEPENDENT' = [U3']
+    assert list(a["UI"]) == [u1, u2]
+    assert list(a["UD"]) == [sp.diff(u3, t)]
+    assert a["P2"] == u2
+    # Zero[1] = -K*Q1 - L*(2*G - FB*sin(Q1)) - (3 + 2*L^2)*U1': only the
+    # spring term has none of U1', U2', G, FB.
+    assert sp.expand(a["B"][0] - k * q1) == 0
+    assert a["B"][1] == 0
+    # Include with a list: the terms with G or FB, nothing else
+    gin = sp.expand(a["GIN"][0])
+    assert gin.has(g) and gin.has(fb)
+    assert not gin.has(k) and not gin.has(sp.diff(u1, t))
+
+
+def test_reserved_speed_matrices_cannot_be_assigned():
+    with pytest.raises(AutolevError, match="reserved"):
+        convert("Variables U{2}'\nU_INDEPENDENT = [U1]\n", "x.al")
+
+
+def test_longer_spellings_of_builtins_are_the_builtin(tmp_path):
+    m = module(
+        tmp_path,
+        "M = [2, 1; 1, 1]\nMI = inverse(M)\nMT = Transposed(M)\nC = Cosine(0)\n",
+    )
+    assert m.AUTOLEV["MI"] == sp.Matrix([[1, -1], [-1, 2]])
+    assert m.AUTOLEV["MT"] == sp.Matrix([[2, 1], [1, 1]])
+    assert m.AUTOLEV["C"] == 1
+
+
+def test_a_macro_file_wins_over_a_longer_spelling(tmp_path):
+    (tmp_path / "inverse.r").write_text("2*#1#\n")
+    text = "Constants A\nX = inverse(A)\n"
+    code = convert(text, str(tmp_path / "s.al"), script_dir=tmp_path).code
+    m = load_module(code, tmp_path, "s")
+    assert m.AUTOLEV["X"] == 2 * sp.Symbol("A", real=True)
+
+
+def test_abbreviations_and_short_stems_stay_errors():
+    for text in ("M = [1]\nX = Trans(M)\n", "Constants A\nX = Dtx(A)\n"):
+        with pytest.raises(AutolevError, match="unknown function"):
+            convert(text, "x.al")
