@@ -165,3 +165,11 @@ def test_abbreviations_and_short_stems_stay_errors():
     for text in ("M = [1]\nX = Trans(M)\n", "Constants A\nX = Dtx(A)\n"):
         with pytest.raises(AutolevError, match="unknown function"):
             convert(text, "x.al")
+
+
+def test_an_empty_speed_class_is_a_located_error(tmp_path):
+    from al2py_runtime import AutolevRuntimeError
+
+    with pytest.raises(AutolevRuntimeError, match="U_DEPENDENT is empty") as err:
+        module(tmp_path, "Variables U{2}'\nX = U_DEPENDENT\n", "e")
+    assert err.value.line == 2
