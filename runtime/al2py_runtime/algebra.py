@@ -609,14 +609,22 @@ def _coef_one(y: sp.Expr, x: sp.Expr) -> sp.Expr:
     return _thaw(c, table)
 
 
-def _split_terms(y: sp.Expr, x: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
-    """(terms containing x, other terms) of the expanded ``y``."""
-    table = _freeze_table([y], [x])
-    s = table.get(x, x)
+def _split_terms(y: sp.Expr, x: Any) -> tuple[sp.Expr, sp.Expr]:
+    """(terms containing x, other terms) of the expanded ``y``.  A matrix
+    ``x`` (``Exclude(Zero, [U1'; G])``) lists names: a term containing any
+    of them goes with the first group."""
+    xs = list(x) if isinstance(x, sp.MatrixBase) else [x]
+    table = _freeze_table([y], xs)
+    frozen = [table.get(v, v) for v in xs]
     terms = sp.Add.make_args(_expand_terms(_freeze(y, table)))
-    has = [a for a in terms if a.has(s)]
-    rest = [a for a in terms if not a.has(s)]
+    has = [a for a in terms if any(a.has(s) for s in frozen)]
+    rest = [a for a in terms if not any(a.has(s) for s in frozen)]
     return _thaw(sp.Add(*has), table), _thaw(sp.Add(*rest), table)
+
+
+def _names(x: Any) -> Any:
+    """The second argument of Include/Exclude: a name or a matrix of names."""
+    return x if isinstance(x, sp.MatrixBase) else sp.sympify(x)
 
 
 def exclude(y: Any, x: Any) -> Any:
@@ -626,7 +634,7 @@ def exclude(y: Any, x: Any) -> Any:
     >>> exclude(A*(X + B) + 3, X)
     A*B + 3
     """
-    return _elementwise(lambda e: _split_terms(e, sp.sympify(x))[1], y)
+    return _elementwise(lambda e: _split_terms(e, _names(x))[1], y)
 
 
 def include(y: Any, x: Any) -> Any:
@@ -636,7 +644,7 @@ def include(y: Any, x: Any) -> Any:
     >>> include(A*(X + B) + 3, X)
     A*X
     """
-    return _elementwise(lambda e: _split_terms(e, sp.sympify(x))[0], y)
+    return _elementwise(lambda e: _split_terms(e, _names(x))[0], y)
 
 
 def arrange(y: Any, n: int, x: Any) -> Any:

@@ -32,6 +32,7 @@ __all__ = [
     "rotation_dcm",
     "angvel_from_dcm",
     "euler_parameter_rates",
+    "euler_parameter_angvel",
 ]
 
 t = dynamicsymbols._t
@@ -300,10 +301,13 @@ def rotation_dcm(kind: str, qs: list[Any]) -> sp.Matrix:
     if kind == "EULER":
         if len(qs) != 4:
             raise ValueError("EULER needs 4 Euler parameters e1, e2, e3, e4")
+        # Autolev's form (its generated programs write A_B[1,1] as
+        # 1 - 2*e2^2 - 2*e3^2): the unit norm of the parameters is used on
+        # the diagonal, so e4 appears only off the diagonal.
         e = sp.Matrix(qs[:3])
         e4 = qs[3]
         return (
-            (e4**2 - (e.T * e)[0]) * sp.eye(3) + 2 * e * e.T + 2 * e4 * _skew(e)
+            (1 - 2 * (e.T * e)[0]) * sp.eye(3) + 2 * e * e.T + 2 * e4 * _skew(e)
         ).applyfunc(sp.expand)
     if kind == "RODRIGUES":
         if len(qs) != 3:
@@ -328,6 +332,17 @@ def simplify_small(expr: Any) -> Any:
     if expr.has(sp.sin, sp.cos):
         return sp.factor_terms(sp.trigsimp(sp.expand(expr)))
     return sp.factor_terms(sp.factor(sp.cancel(expr)))
+
+
+def euler_parameter_angvel(es: list[Any]) -> list[Any]:
+    """The ``B`` measure numbers of ``W_B_A>`` from Euler parameters and their
+    rates: ``w = 2*(e4*e' - e4'*e - e x e')`` (Kane, Likins and Levinson,
+    *Spacecraft Dynamics*), the inverse of :func:`euler_parameter_rates`."""
+    e = sp.Matrix(es[:3])
+    e4 = es[3]
+    de = e.diff(t)
+    w = 2 * (e4 * de - sp.diff(e4, t) * e - e.cross(de))
+    return [sp.expand(x) for x in w]
 
 
 def euler_parameter_rates(es: list[Any], w: list[Any]) -> list[Any]:

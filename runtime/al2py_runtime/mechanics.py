@@ -90,6 +90,7 @@ MODEL_COMMANDS = frozenset(
         "dircos",
         "angvel",
         "kindiffs",
+        "speed_matrix",
         "v2pts",
         "a2pts",
         "v1pt",

@@ -77,6 +77,10 @@ class Workspace(Mapping):
         self._entries_by_obj: dict[sp.Basic, str] = {}
         self._saves: list[str] = []
         self._exit_line: int | None = None
+        #: Quantities the script constrains to unit norm (the Euler parameters
+        #: of ``Dircos``/``Angvel``/``Kindiffs(..., EULER, E1, E2, E3, E4)``):
+        #: ``al2py check`` draws its random points on that sphere.
+        self.unit_norms: list[tuple[Any, ...]] = []
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(self)

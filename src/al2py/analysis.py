@@ -60,6 +60,9 @@ _DECL_KIND = {
     "POINTS": "point",
 }
 _FRAME_KINDS = frozenset({"newtonian", "frame", "body"})
+#: Reserved names for the columns of generalized speeds (tutorial 2.4:
+#: "U_INDEPENDENT, U_INDEPENDENT', ... are reserved"), kind "speeds".
+SPEED_MATRICES = ("U_INDEPENDENT", "U_DEPENDENT", "U_AUXILIARY", "U_PARTIALS")
 _POINT_KINDS = frozenset({"point", "particle"})
 
 SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
@@ -140,6 +143,8 @@ class Symbol:
             return Kind.FRAME
         if self.kind in _POINT_KINDS:
             return Kind.POINT
+        if self.kind == "speeds":
+            return Kind.MATRIX
         try:
             return Kind(self.kind)
         except ValueError:
@@ -156,6 +161,8 @@ class SymbolTable:
         self._seq = 0
         self.define("T", "time", "t")
         self.define("PI", "constant", "pi")
+        for key in SPEED_MATRICES:
+            self.define(key, "speeds", key)
 
     def define(self, key: str, kind: str, ident: str, **kw: object) -> Symbol:
         self._seq += 1
@@ -391,7 +398,12 @@ class Analysis:
                 f"undeclared name '{node.name}'{hint}", node.span, name=node.key
             )
         self.resolved[node.nid] = sym
-        if node.primes and sym.kind not in ("variable", "specified", "scalar"):
+        if node.primes and sym.kind not in (
+            "variable",
+            "specified",
+            "scalar",
+            "speeds",
+        ):
             raise SemanticError(
                 f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
             )
@@ -451,7 +463,7 @@ class Analysis:
             return Kind.SCALAR
         sym = self.lookup(expr.base)
         self._check_bounds(sym, expr)
-        if sym.kind != "matrix":
+        if sym.kind not in ("matrix", "speeds"):
             raise SemanticError(f"'{expr.base.name}' is not a matrix", expr.base.span)
         if len(expr.indices) > 2:
             raise SemanticError("a matrix element takes one or two indices", expr.span)
@@ -1083,7 +1095,11 @@ class Analysis:
 
     def _assign_name(self, target: ir.Name, kind: str) -> Symbol:
         sym = self.table.quantity(target.name)
-        if sym is not None and sym.kind in ("time", "imaginary") or target.key == "PI":
+        if (
+            sym is not None
+            and sym.kind in ("time", "imaginary", "speeds")
+            or target.key == "PI"
+        ):
             raise SemanticError(
                 f"'{target.name}' is reserved and cannot be assigned", target.span
             )

@@ -181,6 +181,9 @@ class FileResult:
     failures: list[ResponseFailure] = field(default_factory=list)
     seconds: float = 0.0
     jobs_run: int = 0  # CODE jobs performed (0 with --no-run or without CODE)
+    #: responses of the transcript not compared: definitions of Autolev's
+    #: AutoZ intermediates (``Z12 = ...``), expanded where they are used
+    not_compared: int = 0
 
     @property
     def responses(self) -> str:
@@ -254,27 +257,36 @@ def _check_in_this_process(
         result.message = _import_failure(exc, module_path, display)
         return result
 
+    job_failure = ""
     if run_jobs:
-        failure = _run_jobs(module, display, workdir / "outputs")
+        job_failure = _run_jobs(module, display, workdir / "outputs")
         result.jobs_run = len(getattr(module.al, "jobs", []))
-        if failure:
-            result.message = failure
-            return result
     if transcript is None:
-        result.status = PASSED
+        result.message = job_failure
+        result.status = ERRORED if job_failure else PASSED
         return result
+    # A failed CODE job does not stop the comparison: the symbolic responses
+    # are compared and reported beside the job's failure.
     from .checking import check_responses, parse_transcript
 
     try:
         entries = parse_transcript(
             transcript.read_text(encoding="utf-8", errors="replace")
         )
-        checks = check_responses(entries, module.al)
+        every = check_responses(entries, module.al)
     except Exception as exc:  # noqa: BLE001
-        result.message = f"checking failed: {type(exc).__name__}: {exc}"
+        result.message = "\n".join(
+            m
+            for m in (job_failure, f"checking failed: {type(exc).__name__}: {exc}")
+            if m
+        )
         return result
-    result.total = len(checks)
+    checks = [c for c in every if c.compared]
+    unread = [c for c in every if not c.compared and not c.ok]
+    result.not_compared = len(every) - len(checks)
+    result.total = len(checks) + len(unread)
     result.matched = sum(c.ok for c in checks)
+    checks += unread
     result.failures = [
         ResponseFailure(
             c.entry.line,
@@ -287,7 +299,11 @@ def _check_in_this_process(
         for c in checks
         if not c.ok
     ]
-    result.status = FAILED if result.failures else PASSED
+    result.message = job_failure
+    if job_failure:
+        result.status = ERRORED
+    else:
+        result.status = FAILED if result.failures else PASSED
     return result
 
 
@@ -548,8 +564,15 @@ def _outcome(result: FileResult) -> str:
         ran = " and ran its CODE job" if result.jobs_run else ""
         return f"passed (no transcript to compare: converted, imported{ran})"
     if result.transcript:
-        return f"{result.status} ({result.responses} responses)"
+        return f"{result.status} ({result.responses} responses{_z_note(result)})"
     return result.status
+
+
+def _z_note(result: FileResult) -> str:
+    """``, 12 Z not compared`` when AutoZ intermediates were skipped."""
+    if not result.not_compared:
+        return ""
+    return f", {result.not_compared} Z not compared"
 
 
 def _duration(seconds: float) -> str:
@@ -604,17 +627,27 @@ def format_table(results: Sequence[FileResult]) -> str:
 
 
 def format_file_report(result: FileResult) -> str:
-    """The diff-like report for one failing or erroring file ('' if passed)."""
+    """The diff-like report for one failing or erroring file ('' if passed).
+
+    A file whose CODE job failed still reports its compared responses."""
+    lines = []
     if result.status == ERRORED:
         body = "\n".join("  " + line for line in result.message.splitlines())
-        return f"{result.path}: errored\n{body}"
-    if result.status != FAILED:
+        lines.append(f"{result.path}: errored\n{body}")
+        if not (result.transcript and (result.total or result.not_compared)):
+            return lines[0]
+    elif result.status != FAILED:
         return ""
     n = len(result.failures)
-    lines = [
+    skipped = (
+        f" ({result.not_compared} AutoZ intermediate definitions not compared)"
+        if result.not_compared
+        else ""
+    )
+    lines.append(
         f"{result.path}: {n} of {result.total} responses differ from "
-        f"{result.transcript}"
-    ]
+        f"{result.transcript}{skipped}"
+    )
     for f in result.failures:
         lines.append(
             f"  {result.transcript}:{f.line}: ({f.number}) {f.label}: {f.reason}"
@@ -632,6 +665,15 @@ def summary_line(results: Sequence[FileResult], seconds: float | None = None) ->
         f"{counts[FAILED]} failed, {counts[ERRORED]} errored"
     )
     text += f" in {seconds:.1f}s" if seconds is not None else ""
+    checked = [r for r in results if r.transcript]
+    if checked:
+        compared = sum(r.total for r in checked)
+        matching = sum(r.matched for r in checked)
+        skipped = sum(r.not_compared for r in checked)
+        text += (
+            f"\nresponses: {compared} compared, {matching} matching, "
+            f"{skipped} not compared (AutoZ intermediate definitions)"
+        )
     bare = [r.path for r in results if r.status == PASSED and not r.transcript]
     if bare:
         shown = ", ".join(bare[:5]) + (

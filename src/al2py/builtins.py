@@ -27,6 +27,7 @@ __all__ = [
     "DUAL_FUNCTIONS",
     "LIST_COMMANDS",
     "lookup",
+    "by_spelling",
 ]
 
 
@@ -323,6 +324,31 @@ DUAL_FUNCTIONS = frozenset(b.name for b in _TABLE if b.dual) | {"EXPRESS"}
 def lookup(name: str) -> Builtin | None:
     """The built-in called ``name`` (any case), or None."""
     return BUILTINS.get(name.upper())
+
+
+#: The shortest built-in name that a longer spelling may extend.
+_SHORTEST_EXTENDED = 3
+
+
+def by_spelling(name: str) -> Builtin | None:
+    """The built-in that a call spelled ``name`` means in Autolev.
+
+    The built-in of that name, else the built-in whose full name (three
+    letters or more) ``name`` begins with and then goes on in letters only,
+    the longest such: a published transcript answers ``inverse(GTran)`` as
+    ``Inv(GTran)`` (docs/semantics.md, "Spellings").  Abbreviations shorter
+    than a built-in's name are not accepted (no evidence that Autolev did).
+    Callers look for a macro file of the spelled name first."""
+    key = name.upper()
+    found = BUILTINS.get(key)
+    if found is not None or not key.isalpha():
+        return found
+    stems = [
+        b
+        for b in BUILTINS
+        if len(b) >= _SHORTEST_EXTENDED and key.startswith(b) and b.isalpha()
+    ]
+    return BUILTINS[max(stems, key=len)] if stems else None
 
 
 #: Command words followed by a list (``Encode A, B'``, ``Units T=S``); any

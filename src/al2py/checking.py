@@ -105,6 +105,8 @@ def _unfinished(text: str) -> bool:
 
 
 _UNIT_VECTOR = re.compile(r"^(\w+?)([123])>$")
+_Z_NAME = re.compile(r"^Z\d+$")
+_T = sp.Symbol("t")  # dynamicsymbols._t
 
 _FUNCS = {
     "SIN": sp.sin,
@@ -137,8 +139,9 @@ def _declared(ws: object, name: str) -> bool:
 class _Evaluator:
     """Evaluates an expression IR in a workspace (names -> its symbols/values)."""
 
-    def __init__(self, ws: object) -> None:
+    def __init__(self, ws: object, zs: dict[str, object] | None = None) -> None:
         self.ws = ws
+        self.zs = zs or {}
 
     def __call__(self, node: ir.Expr) -> object:
         return getattr(self, type(node).__name__)(node)
@@ -153,6 +156,11 @@ class _Evaluator:
             return sp.I
         if key == "0>":
             return Vector(0)
+        if key in self.zs:  # one of the transcript's own AutoZ intermediates
+            value = self.zs[key]
+            for _ in range(node.primes):
+                value = sp.diff(value, _T)
+            return value
         unit = _UNIT_VECTOR.match(key)
         if unit and node.primes == 0:
             try:
@@ -207,13 +215,14 @@ class _Evaluator:
         return sp.Matrix(rows)
 
 
-def evaluate_text(text: str, ws: object) -> object:
-    """Evaluate Autolev expression ``text`` with names taken from ``ws``."""
+def evaluate_text(text: str, ws: object, zs: dict[str, object] | None = None) -> object:
+    """Evaluate Autolev expression ``text`` with names taken from ``ws``
+    (and the transcript's AutoZ intermediates ``zs``, name -> value)."""
     script = parse(f"CHECKED_VALUE_ = {text}\n", "<response>")
     stmts = [s for s in script.statements if isinstance(s, ir.Assign)]
     if len(stmts) != 1:
         raise ValueError(f"not one expression: {text!r}")
-    return _Evaluator(ws)(stmts[0].value)
+    return _Evaluator(ws, zs)(stmts[0].value)
 
 
 # ------------------------------------------------------------- comparison
@@ -266,10 +275,40 @@ def _as_matrices(expected: object, ours: object) -> tuple[sp.Matrix, sp.Matrix]:
     return a, b
 
 
+def _on_unit_spheres(
+    values: dict[sp.Basic, sp.Basic], groups: Sequence[Sequence[object]], rng
+) -> None:
+    """Move the random point onto each group's unit sphere (Euler parameters:
+    ``E1^2 + E2^2 + E3^2 + E4^2 = 1``), with first derivatives tangent to it,
+    so that expressions equal only under that constraint compare equal."""
+    for group in groups:
+        qs = [sp.sympify(q) for q in group]
+        if not any(q in values or sp.Derivative(q, _T) in values for q in qs):
+            continue
+        head = [sp.Float(rng.uniform(-0.5, 0.5), 30) for _ in qs[:-1]]
+        last = sp.sqrt(1 - sum(x**2 for x in head)).evalf(30)
+        rates = [sp.Float(rng.uniform(-1, 1), 30) for _ in qs[:-1]]
+        for q, x, r in zip(qs, head, rates, strict=False):
+            values[q], values[sp.Derivative(q, _T)] = x, r
+        values[qs[-1]] = last
+        values[sp.Derivative(qs[-1], _T)] = (
+            -sum(x * r for x, r in zip(head, rates, strict=True)) / last
+        )
+
+
 def compare(
-    expected: object, ours: object, digits: int = 7, *, trials: int = 3, seed: int = 1
+    expected: object,
+    ours: object,
+    digits: int = 7,
+    *,
+    trials: int = 3,
+    seed: int = 1,
+    unit_norms: Sequence[Sequence[object]] = (),
 ) -> str | None:
-    """None if equal (within ``digits``) at random points, else a reason."""
+    """None if equal (within ``digits``) at random points, else a reason.
+
+    ``unit_norms`` lists groups of quantities the script keeps at unit norm
+    (Euler parameters); the points respect them."""
     a, b = _as_matrices(expected, ours)
     if a.shape != b.shape:
         if a.shape == b.T.shape and 1 in a.shape:
@@ -287,6 +326,7 @@ def compare(
                 for leaf in _leaves(sp.sympify(e)):
                     if leaf not in values:
                         values[leaf] = sp.Float(rng.uniform(0.5, 1.5), 30)
+        _on_unit_spheres(values, unit_norms, rng)
         for i, (x, y) in enumerate(zip(a, b, strict=True)):
             x, y = sp.sympify(x), sp.sympify(y)
             xv = complex(x.xreplace(values).evalf(30))
@@ -333,6 +373,10 @@ class ResponseCheck:
     ok: bool
     how: str  # "strict", "resolved", or the reason for failure
     ours: str = ""
+    #: False for a response that is not compared: the definition of one of
+    #: Autolev's AutoZ intermediates (``Z12 = ...``), whose numbering al2py
+    #: does not reproduce; it is expanded into the responses that use it.
+    compared: bool = True
 
 
 def _our_value(
@@ -372,8 +416,12 @@ def check_responses(
         responses = ws.responses  # type: ignore[attr-defined]
     out = []
     cursor = 0
+    zs: dict[str, object] = {}
     for entry in entries:
         if not entry.is_response:
+            continue
+        if _Z_NAME.match(entry.label) and not _declared(ws, entry.label):
+            out.append(_z_definition(entry, ws, zs))
             continue
         try:
             ours, digits, k = _our_value(entry.label, responses, cursor)
@@ -381,12 +429,33 @@ def check_responses(
             out.append(ResponseCheck(entry, False, "no such response from the module"))
             continue
         cursor = k
-        out.append(_check_one(entry, ours, digits, ws))
+        out.append(_check_one(entry, ours, digits, ws, zs))
     return out
 
 
+def _z_definition(
+    entry: TranscriptEntry, ws: object, zs: dict[str, object]
+) -> ResponseCheck:
+    """Record ``Z12 = ...`` (earlier intermediates expanded) for the
+    responses that use it; the line itself is not compared."""
+    try:
+        zs[entry.label] = evaluate_text(entry.value_text, ws, zs)
+    except Exception as exc:  # noqa: BLE001 - a verdict, never a crash
+        text = getattr(exc, "message", None) or str(exc)
+        return ResponseCheck(
+            entry, False, f"cannot read Autolev's intermediate: {text}", compared=False
+        )
+    return ResponseCheck(
+        entry, True, "AutoZ intermediate, not compared", compared=False
+    )
+
+
 def _check_one(
-    entry: TranscriptEntry, ours: object, digits: int, ws: object
+    entry: TranscriptEntry,
+    ours: object,
+    digits: int,
+    ws: object,
+    zs: dict[str, object] | None = None,
 ) -> ResponseCheck:
     from al2py_runtime.printing import autolev_str
 
@@ -395,7 +464,7 @@ def _check_one(
     except Exception:  # noqa: BLE001 - only for the report
         shown = str(ours)
     try:
-        expected = evaluate_text(entry.value_text, ws)
+        expected = evaluate_text(entry.value_text, ws, zs)
     except AutolevError as exc:
         return ResponseCheck(
             entry, False, f"cannot read Autolev's response: {exc.message}", shown
@@ -404,13 +473,14 @@ def _check_one(
         return ResponseCheck(
             entry, False, f"cannot read Autolev's response: {exc}", shown
         )
+    norms = list(getattr(ws, "unit_norms", ()))
     try:
-        reason = compare(expected, ours, digits)
+        reason = compare(expected, ours, digits, unit_norms=norms)
         if reason is None:
             return ResponseCheck(entry, True, "strict", shown)
         resolve = ws.resolve  # type: ignore[attr-defined]
         a, b = _as_matrices(expected, ours)
-        if compare(resolve(a), resolve(b), digits) is None:
+        if compare(resolve(a), resolve(b), digits, unit_norms=norms) is None:
             return ResponseCheck(entry, True, "resolved", shown)
     except Exception as exc:  # noqa: BLE001 - a verdict, never a crash
         return ResponseCheck(

@@ -549,6 +549,8 @@ class Generator:
         sym = self.facts.resolution(node)
         if isinstance(sym, Form):
             return self._form(sym), ATOM
+        if sym.kind == "speeds":
+            return self._speed_matrix(sym, node), ATOM
         ident = sym.ident
         if sym.kind == "time":
             self.imports.use(_RUNTIME, "t")
@@ -770,7 +772,15 @@ class Generator:
         sym = self.facts.resolution(node)
         if isinstance(sym, Form):
             return self._form(sym)
+        if sym.kind == "speeds":
+            return self._speed_matrix(sym, node)
         return sym.ident
+
+    @staticmethod
+    def _speed_matrix(sym: Symbol, node: ir.Name) -> str:
+        """``U_INDEPENDENT'`` -> ``al.speed_matrix("U_INDEPENDENT", 1)``."""
+        primes = f", {node.primes}" if node.primes else ""
+        return f'al.speed_matrix("{sym.key}"{primes})'
 
 
 def _isort_key(name: str) -> tuple[int, str]:

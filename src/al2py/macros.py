@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import ir
-from .builtins import BUILTINS
+from .builtins import BUILTINS, by_spelling
 from .errors import MacroError, ParseError
 from .ir import map_expr
 
@@ -573,7 +573,7 @@ class Expander:
             return None
         path = self._find(node.func, "r")
         if path is None:
-            return None
+            return _spelled(node)
         text = self._expand_text(path, node).strip()
         script = self._parse_nested(f"MACRO_RESULT_ = {text}", path, node.span)
         stmts = [s for s in script.statements if not isinstance(s, ir.Comment)]
@@ -584,6 +584,15 @@ class Expander:
         value = _respan_expr(stmts[0].value, node.span)
         inner = self._child(script.lines)
         return map_expr(value, inner._result_macro)
+
+
+def _spelled(call: ir.Call) -> ir.Call | None:
+    """``inverse(M)`` as ``Inv(M)``: a longer spelling of a built-in that
+    no macro file defines (:func:`al2py.builtins.by_spelling`)."""
+    builtin = by_spelling(call.func)
+    if builtin is None or builtin.name == call.key:
+        return None
+    return dataclasses.replace(call, func=builtin.name.title())
 
 
 def _resolve(filename: str, script_dir: Path, autolevpath: str | None) -> Path | None:

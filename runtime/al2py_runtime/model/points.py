@@ -232,6 +232,7 @@ class Kinematics:
         parameters, RODRIGUES): forms ``A_B``."""
         m = kin.rotation_dcm(kind, list(qs))
         kind = kind.upper()
+        self._note_unit_norm(kind, qs)
         if kind.startswith("BODY"):
             b.orient_body_fixed(a, tuple(qs), kind[4:])
         elif kind.startswith("SPACE"):
@@ -242,9 +243,16 @@ class Kinematics:
         self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
+    def _note_unit_norm(self, kind: str, qs: tuple) -> None:
+        """Euler parameters have unit norm (for ``al2py check``'s points)."""
+        if kind.upper() == "EULER" and len(qs) == 4:
+            if tuple(qs) not in self.ws.unit_norms:
+                self.ws.unit_norms.append(tuple(qs))
+
     def _dcm_angvel(self, a, b, kind, qs) -> list:
         """B measure numbers of the angular velocity implied by the
         orientation (sympy's closed forms for Euler angles)."""
+        self._note_unit_norm(kind, qs)
         kind = kind.upper()
         if kind.startswith(("BODY", "SPACE")) and len(qs) == 3:
             pa, pb = ReferenceFrame("_PA"), ReferenceFrame("_PB")
@@ -254,6 +262,8 @@ class Kinematics:
                 pb.orient_space_fixed(pa, tuple(qs), kind[5:])
             w = pb.ang_vel_in(pa)
             return [kin.simplify_small(w.dot(e)) for e in (pb.x, pb.y, pb.z)]
+        if kind == "EULER" and len(qs) == 4:
+            return kin.euler_parameter_angvel(list(qs))
         m = kin.rotation_dcm(kind, list(qs))
         return kin.angvel_from_dcm(m)
 

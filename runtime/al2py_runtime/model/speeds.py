@@ -73,6 +73,33 @@ class Speeds:
                 out.append(dq)
         return out
 
+    def speed_matrix(self, which: str, primes: int = 0) -> sp.Matrix:
+        """Autolev's reserved ``U_INDEPENDENT``, ``U_DEPENDENT``,
+        ``U_AUXILIARY`` and ``U_PARTIALS`` (tutorial 2.4): a column of the
+        generalized speeds of that class in declaration order (``U_PARTIALS``:
+        the independent and auxiliary ones, whose partial velocities form
+        Fr and Fr*); ``primes`` 1 gives their time derivatives.  The speeds
+        are symbols, never their solutions, so ``Exclude(Zero,
+        [U_INDEPENDENT'; G])`` removes the terms in the speeds' derivatives."""
+        st = self._mech
+        speeds = self._speeds()
+        which = which.upper().removeprefix("U_")
+        dependent, auxiliary = set(st.dependent), set(st.auxiliary)
+        chosen = {
+            "INDEPENDENT": [
+                u for u in speeds if u not in dependent and u not in auxiliary
+            ],
+            "DEPENDENT": [u for u in speeds if u in dependent],
+            "AUXILIARY": [u for u in speeds if u in auxiliary],
+            "PARTIALS": [u for u in speeds if u not in dependent],
+        }[which]
+        if not chosen:
+            raise ValueError(
+                f"U_{which} is empty: there are no {which.lower()} generalized "
+                "speeds here"
+            )
+        return sp.Matrix([sp.diff(u, t, primes) if primes else u for u in chosen])
+
     def _kinematic(self, x: Any) -> Any:
         """``x`` with the kinematical differential equations applied (each
         ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
