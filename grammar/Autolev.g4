@@ -165,8 +165,9 @@ settingArg
     | sign? NUMBER                                             # settingNumber
     ;
 
+// `Units VX=M/S`: a unit word may be a product or quotient of units.
 settingWord
-    : ident
+    : unit
     | NUMBER
     ;
 

@@ -20,7 +20,9 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
+from sympy.physics.vector import Dyadic, Vector
 
+from .kinematics import vmap
 from .matrices import as_matrix
 
 __all__ = [
@@ -49,9 +51,10 @@ Range = tuple[int, int]
 
 
 def _elementwise(func: Callable[[sp.Expr], sp.Expr], y: Any) -> Any:
-    """Apply ``func`` to ``y`` or to each element of a matrix ``y``."""
-    if isinstance(y, sp.MatrixBase):
-        return sp.Matrix(y).applyfunc(func)
+    """Apply ``func`` to ``y``, to each element of a matrix ``y``, or to each
+    measure number of a vector or dyadic ``y`` (``Replace(W_DA_N>, ...)``)."""
+    if isinstance(y, sp.MatrixBase | Vector | Dyadic):
+        return vmap(y, func)
     return func(sp.sympify(y))
 
 
@@ -610,41 +613,45 @@ def _coef_one(y: sp.Expr, x: sp.Expr) -> sp.Expr:
 
 
 def _split_terms(y: sp.Expr, x: Any) -> tuple[sp.Expr, sp.Expr]:
-    """(terms containing x, other terms) of the expanded ``y``.  A matrix
-    ``x`` (``Exclude(Zero, [U1'; G])``) lists names: a term containing any
-    of them goes with the first group."""
-    xs = list(x) if isinstance(x, sp.MatrixBase) else [x]
+    """(terms containing x, other terms) of the expanded ``y``; a matrix
+    ``x`` lists several names, and a term containing any of them counts."""
+    xs = list(x) if isinstance(x, sp.MatrixBase) else [sp.sympify(x)]
     table = _freeze_table([y], xs)
-    frozen = [table.get(v, v) for v in xs]
+    ss = [table.get(e, e) for e in xs]
     terms = sp.Add.make_args(_expand_terms(_freeze(y, table)))
-    has = [a for a in terms if any(a.has(s) for s in frozen)]
-    rest = [a for a in terms if not any(a.has(s) for s in frozen)]
+    has = [a for a in terms if any(a.has(s) for s in ss)]
+    rest = [a for a in terms if not any(a.has(s) for s in ss)]
     return _thaw(sp.Add(*has), table), _thaw(sp.Add(*rest), table)
 
 
-def _names(x: Any) -> Any:
-    """The second argument of Include/Exclude: a name or a matrix of names."""
-    return x if isinstance(x, sp.MatrixBase) else sp.sympify(x)
+def _names_arg(x: Any) -> Any:
+    return sp.Matrix(x) if isinstance(x, sp.MatrixBase | list | tuple) else x
 
 
 def exclude(y: Any, x: Any) -> Any:
-    """Autolev ``Exclude(y, x)``: the terms of expanded ``y`` without ``x``.
+    """Autolev ``Exclude(y, x)``: the terms of expanded ``y`` without ``x``
+    (``Exclude(F, [U4, U5])``: without any of them; y's shape is kept).
 
-    >>> A, B, X = sp.symbols("A B X")
+    >>> A, B, X, Y = sp.symbols("A B X Y")
     >>> exclude(A*(X + B) + 3, X)
     A*B + 3
+    >>> exclude(A*X + B*Y + 3, sp.Matrix([X, Y]))
+    3
     """
-    return _elementwise(lambda e: _split_terms(e, _names(x))[1], y)
+    x = _names_arg(x)
+    return _elementwise(lambda e: _split_terms(e, x)[1], y)
 
 
 def include(y: Any, x: Any) -> Any:
-    """Autolev ``Include(y, x)``: the terms of expanded ``y`` containing ``x``.
+    """Autolev ``Include(y, x)``: the terms of expanded ``y`` containing ``x``
+    (or any name of a matrix ``x``).
 
     >>> A, B, X = sp.symbols("A B X")
     >>> include(A*(X + B) + 3, X)
     A*X
     """
-    return _elementwise(lambda e: _split_terms(e, _names(x))[0], y)
+    x = _names_arg(x)
+    return _elementwise(lambda e: _split_terms(e, x)[0], y)
 
 
 def arrange(y: Any, n: int, x: Any) -> Any:

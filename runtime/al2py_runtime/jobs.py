@@ -325,6 +325,10 @@ def _computed_inputs(
         for key, (expr, factor) in list(pending.items()):
             value = sp.sympify(sp.sympify(expr).xreplace(subs))
             if value.free_symbols or value.atoms(AppliedUndef):
+                # ``QQ1 = PI/4`` then ``Input E4 = COS(QQ1/2)``: the script's
+                # assigned values as they are when the job runs.
+                value = sp.sympify(_resolve(value, job.rhs)).xreplace(subs)
+            if value.free_symbols or value.atoms(AppliedUndef):
                 continue
             try:
                 out[key] = float(value) * factor
@@ -336,8 +340,14 @@ def _computed_inputs(
             progress = True
         if not progress:
             key, (expr, _) = next(iter(pending.items()))
+            value = _resolve(sp.sympify(expr), job.rhs)
+            atoms = value.free_symbols | value.atoms(AppliedUndef)
+            missing = sorted(
+                {job.names.get(a, str(a)) for a in atoms} - set(computed), key=str
+            ) or sorted(pending)
             raise NumericsError(
-                f"Input {key} = {expr}: every name in it needs an Input value"
+                f"Input {key} = {expr}: {', '.join(missing)} "
+                f"{'has' if len(missing) == 1 else 'have'} no Input value"
             )
     return out
 

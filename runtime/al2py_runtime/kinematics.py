@@ -203,6 +203,24 @@ class VectorMatrix:
     def __repr__(self) -> str:
         return f"VectorMatrix({self.rows!r})"
 
+    @property
+    def shape(self) -> tuple[int, int]:
+        return len(self.rows), len(self.rows[0]) if self.rows else 0
+
+    def __getitem__(self, index: Any) -> Vector:
+        """``VCA[1]`` (row by row, as a matrix's single index counts) or
+        ``VCA[i,j]``, with Python's 0-based indices."""
+        rows, cols = self.shape
+        if isinstance(index, tuple):
+            i, j = (int(k) for k in index)
+        else:
+            i, j = divmod(int(index), cols)
+        if not (0 <= i < rows and 0 <= j < cols):
+            raise IndexError(
+                f"element {i + 1},{j + 1} of a {rows}x{cols} matrix of vectors"
+            )
+        return self.rows[i][j]
+
 
 def vdot_matrix(a: Any, b: Any) -> sp.Matrix:
     """``Dot`` with a matrix of vectors on either side: elementwise."""

@@ -111,6 +111,8 @@ def _selection(sel: Sequence[Selector], size: int, what: str, kind: str) -> list
             if lo > hi:
                 raise ValueError(f"{what}: range {lo}:{hi} is empty")
             span = range(lo, hi + 1)
+        elif isinstance(s, sp.MatrixBase):  # ``Rows(A, [1, 3])``: a list
+            span = [_index(k, what) for k in s]
         else:
             span = range(_index(s, what), _index(s, what) + 1)
         for k in span:

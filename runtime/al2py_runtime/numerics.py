@@ -31,8 +31,10 @@ from pathlib import PurePath
 from typing import Any
 
 import sympy as sp
+from sympy.physics.vector import Vector
 
 from .jobs import ode_function, run_job
+from .printing import element_labels
 from .records import (
     KINDS,
     InputValue,
@@ -55,6 +57,8 @@ class _NumericsState:
     outputs: list[OutputSpec] = field(default_factory=list)
     jobs: list[Job] = field(default_factory=list)
     encoded: list[str] = field(default_factory=list)  # names, in order
+    #: matrices (and vectors) an Output lists: name -> shape of its elements
+    shapes: dict[str, tuple[int, int]] = field(default_factory=dict)
     #: ``Units T=S, X=m``: the unit of a name in later Inputs and Outputs
     #: that give none.
     units_of: dict[str, str] = field(default_factory=dict)
@@ -111,16 +115,35 @@ class Numerics:
     ) -> None:
         """``Output T, X m, QA deg``: one output table (file ``STEM.n``)."""
         default = self._numerics.units_of
-        spec = OutputSpec(
-            tuple(
-                OutputItem(
-                    str(lab), expr, unit or default.get(normalize_name(lab)) or None
+        columns: list[OutputItem] = []
+        for lab, expr, unit in items:
+            unit = unit or default.get(normalize_name(lab)) or None
+            columns.extend(self._output_items(str(lab), expr, unit))
+        self._numerics.outputs.append(OutputSpec(tuple(columns), line))
+
+    def _output_items(self, label: str, value: Any, unit: str | None) -> list:
+        """One column per element of a matrix, row by row, named as the
+        transcript names them (``A[1,2]``, ``B[2]``); a vector gives its
+        measure numbers in the Newtonian frame (``G>[1]``...)."""
+        if isinstance(value, Vector):
+            frame = self._newtonian()
+            if frame is None:
+                raise ValueError(
+                    f"Output {label}: a vector's measure numbers need a "
+                    "Newtonian frame"
                 )
-                for lab, expr, unit in items
-            ),
-            line,
-        )
-        self._numerics.outputs.append(spec)
+            value = value.to_matrix(frame) if value != 0 else sp.zeros(3, 1)
+        if not isinstance(value, sp.MatrixBase):
+            return [OutputItem(label, value, unit)]
+        self._numerics.shapes[normalize_name(label)] = value.shape
+        names = element_labels(label, value.rows, value.cols)
+        return [OutputItem(n, e, unit) for n, e in zip(names, value, strict=True)]
+
+    def _newtonian(self) -> Any:
+        for entry in self._ws._names.values():
+            if entry.kind == "newtonian":
+                return entry.obj
+        return None
 
     def encode(self, *names: str, line: int | None = None) -> None:
         """``Encode A, B'``: the CODE job that follows computes these
@@ -139,9 +162,10 @@ class Numerics:
             value = self._ws[key]
             if isinstance(value, sp.MatrixBase):
                 shapes[key] = value.shape
-                for i in range(value.rows):
-                    for j in range(value.cols):
-                        items.append(OutputItem(f"{key}[{i + 1},{j + 1}]", value[i, j]))
+                names = element_labels(key, value.rows, value.cols)
+                items.extend(
+                    OutputItem(n, e) for n, e in zip(names, value, strict=True)
+                )
             else:
                 items.append(OutputItem(key, value))
         if not items:
@@ -222,7 +246,7 @@ class Numerics:
             rhs=dict(self._ws._rhs),
             zero=zero,
             outputs=outputs,
-            encoded=shapes,
+            encoded={**state.shapes, **shapes},
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
             digits=self._ws.settings.digits,

@@ -35,8 +35,9 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
 from .autoz import Intermediate
+from .kinematics import VectorMatrix
 
-__all__ = ["autolev_str", "format_response", "format_number"]
+__all__ = ["autolev_str", "element_labels", "format_response", "format_number"]
 
 _t = dynamicsymbols._t
 
@@ -455,6 +456,14 @@ def autolev_str(value: Any, digits: int = 7) -> str:
     '[-1.650629; -0.1746854 - 1.546869*i]'
     """
     printer = _AutolevPrinter(digits)
+    if isinstance(value, VectorMatrix):  # ``[N1> + N3>, 3*N2>]``
+        return (
+            "["
+            + "; ".join(
+                ", ".join(_vector_str(printer, v) for v in row) for row in value.rows
+            )
+            + "]"
+        )
     if _is_vector(value):
         return _vector_str(printer, value)
     if _is_dyadic(value):
@@ -494,17 +503,21 @@ def format_response(
     return [f"{label} = {autolev_str(value, digits)}"]
 
 
+def element_labels(label: str, rows: int, cols: int) -> list[str]:
+    """The names of a matrix's elements, row by row, as Autolev's responses
+    spell them: ``R[1]``, ``R[2]`` for a row or column matrix, else
+    ``M5[1,1]``, ``M5[1,2]``, ..."""
+    if rows == 1 or cols == 1:
+        return [f"{label}[{k + 1}]" for k in range(rows * cols)]
+    return [f"{label}[{i + 1},{j + 1}]" for i in range(rows) for j in range(cols)]
+
+
 def _element_lines(label: str, value: sp.MatrixBase, digits: int) -> list[str]:
-    lines = []
-    vector_like = value.rows == 1 or value.cols == 1
-    for i in range(value.rows):
-        for j in range(value.cols):
-            if vector_like:
-                index = f"[{max(i, j) + 1}]"
-            else:
-                index = f"[{i + 1},{j + 1}]"
-            lines.append(f"{label}{index} = {autolev_str(value[i, j], digits)}")
-    return lines
+    names = element_labels(label, value.rows, value.cols)
+    return [
+        f"{name} = {autolev_str(element, digits)}"
+        for name, element in zip(names, value, strict=True)
+    ]
 
 
 def _has_denominator(value: sp.MatrixBase) -> bool:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .printing import element_labels
 from .records import NumericsError, normalize_name
 from .results import ResultViews, TableViews
 
@@ -71,15 +72,13 @@ class Result(ResultViews):
     notes: list[str] = field(default_factory=list)
     time_unit: str | None = None
     nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
-    #: ``Encode``d matrices: name -> shape; ``result["AMAT"]`` is an array of
-    #: shape (rows, m, n), one matrix per output row.
+    #: ``Encode``d and ``Output`` matrices: name -> shape; ``result["AMAT"]``
+    #: is an array of shape (rows, m, n), one matrix per output row.
     encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
 
     def _encoded(self, key: str) -> np.ndarray:
         m, n = self.encoded[key]
-        cols = [
-            self[f"{key}[{i},{j}]"] for i in range(1, m + 1) for j in range(1, n + 1)
-        ]
+        cols = [self[label] for label in element_labels(key, m, n)]
         return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
 
     @property

@@ -121,6 +121,11 @@ RESERVED_IDENTIFIERS = (
 )
 
 
+#: kinds whose values Units and computed Inputs may name: declared and
+#: assigned quantities.
+_VALUE_KINDS = ("constant", "variable", "specified", "scalar", "matrix")
+
+
 @dataclass
 class Symbol:
     """Everything the analysis knows about one Autolev name."""
@@ -134,6 +139,7 @@ class Symbol:
     has_rhs: bool = False
     seq: int = 0  # definition order: the latest definition of a name wins
     shape: tuple[int, int] | None = None  # matrices, when known statically
+    of_vectors: bool = False  # a matrix whose entries are vectors (``[V1>, V2>]``)
 
     @property
     def value_kind(self) -> Kind:
@@ -469,7 +475,7 @@ class Analysis:
             raise SemanticError("a matrix element takes one or two indices", expr.span)
         for i in expr.indices:
             self._expect_scalar(i)
-        return Kind.SCALAR
+        return Kind.VECTOR if sym.of_vectors else Kind.SCALAR
 
     @staticmethod
     def _grow_shape(sym: Symbol, idx: list[int | None]) -> None:
@@ -570,6 +576,10 @@ class Analysis:
 
     def _kind_MatrixLit(self, expr: ir.MatrixLit) -> Kind:
         kinds = [[self.kind_of(e) for e in row] for row in expr.rows]
+        if any(k is Kind.VECTOR for row in kinds for k in row):
+            # ``VCA = [COEF(V_CA_N>, U2), COEF(V_CA_N>, U3)]``: a matrix of
+            # vectors, whose elements are vectors (``DOT(VCA[1], N1>)``).
+            return self._vector_matrix(expr)
         if all(k is Kind.SCALAR for row in kinds for k in row):
             widths = {len(row) for row in expr.rows}
             if len(widths) > 1:
@@ -1091,6 +1101,10 @@ class Analysis:
         kind = "matrix" if value_kind is Kind.MATRIX else "scalar"
         sym = self._assign_name(target, kind)
         sym.shape = _literal_shape(stmt.value) if stmt.op in ("=", ":=") else None
+        sym.of_vectors = (
+            isinstance(stmt.value, ir.MatrixLit)
+            and stmt.value.nid in self.vector_matrices
+        )
         return self._facts(target=sym)
 
     def _assign_name(self, target: ir.Name, kind: str) -> Symbol:
@@ -1258,9 +1272,12 @@ class Analysis:
                 name = item.lhs
                 if name.key not in INTEGRATION_PARAMETERS | {"T"}:
                     sym = self.lookup(name)
-                    if sym.kind not in ("constant", "variable", "specified"):
+                    # ``Units POP1X=M``: also the assigned scalars (and
+                    # matrices) a script outputs.
+                    if sym.kind not in _VALUE_KINDS:
                         raise SemanticError(
-                            f"Units gives units of constants and variables, not a {sym.kind}",
+                            "Units gives units of constants, variables and"
+                            f" assigned quantities, not a {sym.kind}",
                             name.span,
                         )
                 try:
@@ -1289,10 +1306,13 @@ class Analysis:
                         n.span,
                     )
                 sym = self.lookup(n, Kind.SCALAR)
-                if sym.kind not in ("constant", "variable", "specified"):
+                # ``QQ1 = PI/4`` then ``Input E4 = COS(QQ1/2)``, ``Input P =
+                # V[1]``: the script's own values, evaluated when the CODE job
+                # runs, with the Input values known then.
+                if sym.kind not in _VALUE_KINDS:
                     raise SemanticError(
-                        f"an Input value may use other Inputs, not the {sym.kind} "
-                        f"'{n.name}'",
+                        f"an Input value may use other Inputs and assigned "
+                        f"values, not the {sym.kind} '{n.name}'",
                         n.span,
                     )
             self._expect_scalar(item.value)
@@ -1303,7 +1323,17 @@ class Analysis:
 
     def _enter_OutputStmt(self, stmt: ir.OutputStmt) -> StmtFacts:
         for item in stmt.items:
-            self._expect_scalar(item.expr)
+            # ``Output A, G>``: a matrix gives one column per element, a
+            # vector its measure numbers in the Newtonian frame.
+            kind = self.kind_of(item.expr)
+            if kind is Kind.VECTOR and not self._has_newtonian():
+                raise SemanticError(
+                    "an Output vector gives its measure numbers in the Newtonian "
+                    "frame: declare one, or output DOT(V>, A1>), ...",
+                    item.expr.span,
+                )
+            if kind not in (Kind.MATRIX, Kind.VECTOR):
+                self._expect_scalar(item.expr)
         return self._facts()
 
     def _enter_CodeStmt(self, stmt: ir.CodeStmt) -> StmtFacts:

@@ -463,7 +463,29 @@ class Expander:
                 if path is not None:
                     yield self.macro_statement(stmt, call, path)
                     return
+                if self._find(call.func, "r") is None:
+                    self._missing_macro(call)
         yield self.expand_results(stmt)
+
+    def _missing_macro(self, call: ir.Call) -> None:
+        """``contact(RHeel)`` as a statement, with no ``contact.a``: say
+        where the macro file was looked for."""
+        from .static_checks import UNSUPPORTED_COMMANDS
+
+        if call.key in UNSUPPORTED_COMMANDS:
+            return
+        name = call.func
+        dirs = [d for d in (self.autolevpath or "").split(os.pathsep) if d]
+        where = f"the script's folder ({self.script_dir})" + (
+            f" or on AUTOLEVPATH ({os.pathsep.join(dirs)})"
+            if dirs
+            else "; AUTOLEVPATH is not set"
+        )
+        raise MacroError(
+            f"unknown command '{name}': no macro file {name}.a or {name}.r "
+            f"was found in {where}",
+            call.span,
+        )
 
     def _find(self, name: str, kind: str) -> Path | None:
         return find_macro(name, kind, self.script_dir, self.autolevpath)

@@ -804,11 +804,14 @@ class _IRBuilder(AutolevVisitor):
         if word is None:
             return name
         value_span = self._ctx_span(word)
-        value: ir.Expr = (
-            ir.Number(value_span, word.getText())
-            if word.NUMBER() is not None
-            else ir.Name(value_span, word.getText())
-        )
+        unit = word.unit()
+        value: ir.Expr
+        if unit is None:
+            value = ir.Number(value_span, word.getText())
+        elif len(unit.unitFactor()) == 1 and unit.unitFactor(0).NUMBER() is None:
+            value = ir.Name(value_span, word.getText())
+        else:  # ``Units VX=M/S``
+            value = self.visit(unit)
         return ir.Equation(span, name, value)
 
     def visitSettingNumber(self, ctx: AutolevParser.SettingNumberContext) -> ir.Expr:

@@ -137,7 +137,7 @@ def serializedATN():
         325,1,0,0,0,322,320,1,0,0,0,323,324,5,31,0,0,324,326,3,54,27,0,325,
         323,1,0,0,0,325,326,1,0,0,0,326,332,1,0,0,0,327,329,3,22,11,0,328,
         327,1,0,0,0,328,329,1,0,0,0,329,330,1,0,0,0,330,332,5,20,0,0,331,
-        310,1,0,0,0,331,328,1,0,0,0,332,53,1,0,0,0,333,336,3,84,42,0,334,
+        310,1,0,0,0,331,328,1,0,0,0,332,53,1,0,0,0,333,336,3,36,18,0,334,
         336,5,20,0,0,335,333,1,0,0,0,335,334,1,0,0,0,336,55,1,0,0,0,337,
         338,3,58,29,0,338,57,1,0,0,0,339,345,3,62,31,0,340,341,3,60,30,0,
         341,342,3,62,31,0,342,344,1,0,0,0,343,340,1,0,0,0,344,347,1,0,0,
@@ -2445,8 +2445,8 @@ class AutolevParser ( Parser ):
             super().__init__(parent, invokingState)
             self.parser = parser
 
-        def ident(self):
-            return self.getTypedRuleContext(AutolevParser.IdentContext,0)
+        def unit(self):
+            return self.getTypedRuleContext(AutolevParser.UnitContext,0)
 
 
         def NUMBER(self):
@@ -2475,7 +2475,7 @@ class AutolevParser ( Parser ):
             if token in [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 21]:
                 self.enterOuterAlt(localctx, 1)
                 self.state = 333
-                self.ident()
+                self.unit()
                 pass
             elif token in [20]:
                 self.enterOuterAlt(localctx, 2)
