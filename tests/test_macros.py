@@ -186,3 +186,25 @@ def test_expansion_parses_as_autolev():
     stmt = parse(f"PLUS = {result.text}").statements[0]
     assert isinstance(stmt, ir.Assign)
     assert isinstance(stmt.value, ir.BinOp) and stmt.value.op == "+"
+
+
+def test_labels_of_statements_from_run_files_and_macros_are_their_own(tmp_path):
+    """An Output or a bare expression in a RUN file (or a macro) is labelled
+    with its own text, not the text at the same place in the main file."""
+    from conftest import load_module
+
+    from al2py import convert
+
+    (tmp_path / "part.al").write_text("Variables X'\nX' = -2*X\nOutput X, X'/2\n")
+    (tmp_path / "show.a").write_text("Y2 = X^2\nY2 + 1\n")
+    main = tmp_path / "main.al"
+    main.write_text(
+        "% one\n% two\nRUN part.al\nshow()\n"
+        "Input X=1, TFINAL=1, INTEGSTP=0.5\nCODE ODE() m.c\n"
+    )
+    module = load_module(convert(main.read_text(), str(main)).code, tmp_path, "m")
+    result = module.run()
+    assert result.tables[0].names == ["X", "X'/2"]
+    assert result.tables[0]["X'/2"] == pytest.approx(-result["X"])
+    labels = [r.label for r in module.al.responses]
+    assert "Y2+1" in labels

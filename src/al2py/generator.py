@@ -29,7 +29,6 @@ from .analysis import (
 from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
 from .forms import Form
-from .parser import span_text
 from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
@@ -368,7 +367,7 @@ class Generator:
                 return self._eig_outputs(expr)
             if b is not None and b.name == "SOLVE":
                 return [self._solve(expr)]
-        label = re.sub(r"\s+", "", _source(self.lines, expr.span)).upper()
+        label = ir.autolev_text(expr)  # also from RUN files and macros
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
 
     def _sympy_hint(self, call: ir.Call, b: Builtin) -> list[str]:
@@ -476,7 +475,7 @@ class Generator:
             pairs = []
             for item in stmt.items:
                 assert isinstance(item, ir.Equation) and isinstance(item.lhs, ir.Name)
-                word = _source(self.lines, item.rhs.span).strip()
+                word = ir.autolev_text(item.rhs, upper=False)
                 pairs.append(f"{item.lhs.autolev!r}: {word!r}")
             return [f"al.units_of({{{', '.join(pairs)}}}, line={self._line})"]
         raise InternalError(f"no emitter for {stmt.name}")
@@ -497,7 +496,7 @@ class Generator:
     def stmt_OutputStmt(self, stmt: ir.OutputStmt) -> list[str]:
         columns = []
         for item in stmt.items:
-            label = re.sub(r"\s+", "", _source(self.lines, item.expr.span)).upper()
+            label = ir.autolev_text(item.expr)  # also from RUN files and macros
             unit = repr(item.unit.text) if item.unit is not None else "None"
             columns.append(f"({label!r}, {self.expr(item.expr)}, {unit})")
         return [f"al.output([{', '.join(columns)}], line={self._line})"]
@@ -734,7 +733,7 @@ class Generator:
         return f"al.input_value({name.autolev!r}{extra})"
 
     def call_units(self, node: ir.Call, b: Builtin) -> str:
-        texts = [re.sub(r"\s+", "", _source(self.lines, a.span)) for a in node.args]
+        texts = [ir.autolev_text(a, upper=False) for a in node.args]
         return f"al.units({texts[0]!r}, {texts[1]!r})"
 
     def call_eig(self, node: ir.Call, b: Builtin) -> str:
@@ -821,8 +820,3 @@ def comment_lines(text: str, prefix: str = "") -> list[str]:
             lead = prefix if k == 0 else " " * len(prefix)
             out.append(f"# {lead}{c}".rstrip())
     return out
-
-
-def _source(lines: tuple[str, ...], span: ir.Span) -> str:
-    """The source text under ``span``, continuation ampersands removed."""
-    return span_text(lines, span).replace("&", " ")

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 __all__ = [
+    "autolev_text",
     "content",
     "walk_expr",
     "map_expr",
@@ -562,3 +563,67 @@ def stmt_exprs(stmt: Stmt) -> Iterator[Expr]:
                             yield sub
                         elif isinstance(sub, tuple):
                             yield from (s for s in sub if isinstance(s, Expr))
+
+
+_PRECEDENCE = {"+": 1, "-": 1, "*": 2, "/": 2, "^": 4}  # unary minus: 3
+
+
+def autolev_text(expr: Expr, *, upper: bool = True) -> str:
+    """``expr`` written back as compact Autolev text (upper case, no spaces,
+    parentheses only where needed): the label of an Output column, whatever
+    file or macro the expression came from.
+
+    >>> s = Span("f.al", 1, 1)
+    >>> x, y = Name(s, "x", primes=1), Name(s, "v_p_n>")
+    >>> autolev_text(BinOp(s, "*", BinOp(s, "+", x, Number(s, "2")), x))
+    "(X'+2)*X'"
+    >>> autolev_text(Call(s, "Dot", (y, Name(s, "N1>"))))
+    'DOT(V_P_N>,N1>)'
+    >>> autolev_text(BinOp(s, "/", Name(s, "m"), Name(s, "sec")), upper=False)
+    'm/sec'
+    """
+    text = _text(expr, upper)[0]
+    return text.upper() if upper else text
+
+
+def _text(e: Expr, upper: bool) -> tuple[str, int]:
+    """(text, precedence): atoms 5, unary minus 3, then ``^ * / + -``."""
+    if isinstance(e, Name) and not upper:
+        return e.name + "'" * e.primes, 5
+    if isinstance(e, UnaryOp):
+        text, prec = _text(e.operand, upper)
+        return e.op + (f"({text})" if prec < 3 else text), 3
+    if isinstance(e, BinOp):
+        prec = _PRECEDENCE[e.op]
+        left, lp = _text(e.left, upper)
+        right, rp = _text(e.right, upper)
+        if lp < prec or (e.op == "^" and lp == prec):
+            left = f"({left})"
+        if rp < prec or (rp == prec and e.op in "-/^"):
+            right = f"({right})"
+        return f"{left}{e.op}{right}", prec
+    return _atom_text(e), 0 if isinstance(e, Range | Equation) else 5
+
+
+def _atom_text(e: Expr) -> str:
+    if isinstance(e, Number):
+        return e.text.upper()
+    if isinstance(e, Name):
+        return e.autolev
+    if isinstance(e, Element):
+        return f"{e.base.autolev}[{','.join(map(autolev_text, e.indices))}]"
+    if isinstance(e, IndexedNames):
+        braces = ",".join(f"{lo}:{hi}" for lo, hi in e.ranges)
+        return canon(f"{e.stem}{{{braces}}}{e.suffix}") + "'" * e.primes
+    if isinstance(e, Call):
+        return f"{e.key}({','.join(map(autolev_text, e.args))})"
+    if isinstance(e, MatrixLit):
+        rows = ";".join(",".join(map(autolev_text, row)) for row in e.rows)
+        return f"[{rows}]"
+    if isinstance(e, Range):
+        return f"{autolev_text(e.lo)}:{autolev_text(e.hi)}"
+    if isinstance(e, Equation):
+        return f"{autolev_text(e.lhs)}={autolev_text(e.rhs)}"
+    if isinstance(e, String):
+        return repr(e.value)
+    raise TypeError(f"no Autolev text for {type(e).__name__}")
