@@ -574,6 +574,14 @@ class Workspace(Mapping):
         was ON stay valid."""
         if not self.settings.autoz:
             return None
+        return self.book
+
+    @property
+    def book(self) -> Any:
+        """The book of ``Z`` intermediates, made on first use whatever
+        ``AutoZ`` says: with ``AutoZ OFF`` the large linear solves
+        (:meth:`solver_book`) name their entries too, and responses write
+        them out."""
         book = self.__dict__.get("_book")
         if book is None:
             from .autoz import Intermediates
@@ -585,6 +593,20 @@ class Workspace(Mapping):
         zee_not = self._values.get("ZEE_NOT")
         if isinstance(zee_not, sp.MatrixBase):
             book.exclude = frozenset(sp.sympify(x) for x in zee_not)
+        return book
+
+    def solver_book(self, unknowns: int) -> Any:
+        """The book for a linear solve of ``unknowns`` unknowns: the
+        intermediates while ``AutoZ`` is ON; with it OFF, the same book for a
+        system larger than :data:`al2py_runtime.elimination.SMALL` (a closed
+        form swells with the size: a 9x9 Cramer's rule did not finish in 15
+        minutes), else None (closed forms, readable, as Autolev prints
+        them)."""
+        from .elimination import SMALL
+
+        book = self.intermediates
+        if book is None and unknowns > SMALL:
+            book = self.book
         return book
 
     def _book_or_none(self) -> Any:
@@ -773,7 +795,7 @@ class Workspace(Mapping):
         else:
             eqs = sp.Matrix([self.val(eqs)])
         eqs = self.resolve(eqs, keep=unknowns)
-        book = self.intermediates
+        book = self.solver_book(len(unknowns))
         zero = self.model._configuration() if book is not None else ()
         solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
