@@ -135,3 +135,25 @@ def test_constrained_accelerations_keep_the_constraints(twin, seed):
         dtype=float,
     )
     assert np.abs(values).max() < 1e-9, values
+
+
+def test_autolev_of_a_large_value_comes_back_over_intermediates(twin, monkeypatch):
+    """``AUTOLEV[name]`` writes out values up to ``WRITE_OUT`` nodes only;
+    a larger one comes back at once over named intermediates, and
+    ``AUTOLEV.written_out(name)`` writes it out: both equal at a point."""
+    module, _ = twin[0]
+    names = module.AUTOLEV
+    name = next(u for u in DEPENDENT if has_intermediates(module.al.value(u)))
+    assert not has_intermediates(names[name])  # small: written out
+    monkeypatch.setattr(type(names), "WRITE_OUT", 1)
+    start = time.perf_counter()
+    short = names[name]
+    assert time.perf_counter() - start < 5
+    assert has_intermediates(short)
+    full = names.written_out(name)
+    assert not has_intermediates(full)
+    numbers = _subs(module, _point(7))
+    a = complex(short.xreplace(numbers).evalf())
+    b = complex(full.xreplace(numbers).evalf())
+    assert a == pytest.approx(b, rel=1e-10, abs=1e-12)
+    assert abs(a) > 1e-6  # a real value, not a vanishing one

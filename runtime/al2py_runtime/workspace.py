@@ -1017,15 +1017,34 @@ class _Partial:
 class AutolevNames(Mapping):
     """Read-only view of a workspace: ``AUTOLEV["ZERO[2]"]``, ``AUTOLEV["X'"]``.
 
-    Values are full expressions: AutoZ intermediates are written out (the
-    workspace itself, ``al.value(name)``, keeps them)."""
+    Values are full expressions: intermediates are written out (the
+    workspace itself, ``al.value(name)``, keeps them), unless the full
+    expression would exceed :attr:`WRITE_OUT` tree nodes: then the value
+    comes back over its named intermediates (``Z12``, each a sympy function
+    whose definition sympy can differentiate and evaluate), at once, and
+    :meth:`written_out` writes it out in full (time and memory grow with
+    the size: minutes for a bicycle's accelerations)."""
 
     __slots__ = ("_ws",)
+
+    #: largest value (tree nodes, written out) that ``AUTOLEV[name]`` writes out
+    WRITE_OUT = 20_000
 
     def __init__(self, ws: Workspace) -> None:
         self._ws = ws
 
     def __getitem__(self, name: str) -> Any:
+        value = self._ws.value(name)
+        book = self._ws._book_or_none()
+        if book is None or not isinstance(value, sp.Basic | sp.MatrixBase):
+            return value if book is None else book.expand(value)
+        if book.expanded_size(value) > self.WRITE_OUT:
+            return value
+        return book.expand(value)
+
+    def written_out(self, name: str) -> Any:
+        """``AUTOLEV[name]`` with every intermediate written out, however
+        large (may take minutes)."""
         value = self._ws.value(name)
         book = self._ws._book_or_none()
         return value if book is None else book.expand(value)
