@@ -14,6 +14,7 @@ through the runtime; then the growth exponent of each column.  ``FastKane``,
 
     python benchmarks/large.py                 # n = 2, 3, 4, 5, 6, 8
     python benchmarks/large.py 6 8 --budget 600
+    python benchmarks/large.py 2 4 8 --autoz off --no-sympy   # only the import
 """
 
 from __future__ import annotations
@@ -36,11 +37,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from budget import exponent, show, within  # noqa: E402
 
 
-def chain_source(n: int) -> str:
-    """An Autolev script for a 3-D chain of n rigid bodies (3n speeds)."""
+def chain_source(n: int, autoz: str = "ON") -> str:
+    """An Autolev script for a 3-D chain of n rigid bodies (3n speeds), with
+    ``AutoZ ON`` or ``OFF`` (Autolev's default)."""
     lines = [
         f"% {n}-body spatial chain: body-123 angles, speeds = angular velocities",
-        "AutoZ ON",
+        f"AutoZ {autoz}",
         "Newtonian N",
         f"Bodies B{{{n}}}",
         "Points O",
@@ -119,11 +121,11 @@ def fastkane_seconds(n: int) -> float:
     return time.perf_counter() - start
 
 
-def al2py_seconds(n: int) -> tuple[float, float, int]:
+def al2py_seconds(n: int, autoz: str = "ON") -> tuple[float, float, int]:
     """Convert the Autolev chain and import (derive) the module."""
     with tempfile.TemporaryDirectory() as tmp:
         workdir = Path(tmp)
-        source = chain_source(n)
+        source = chain_source(n, autoz)
         path = workdir / f"chain{n}.al"
         path.write_text(source)
         start = time.perf_counter()
@@ -152,7 +154,19 @@ def main(argv: list[str]) -> int:
     parser.add_argument(
         "--no-import", action="store_true", help="skip converting and importing the .al"
     )
+    parser.add_argument(
+        "--autoz",
+        choices=["on", "off"],
+        default="on",
+        help="the chain script's AutoZ setting (default on)",
+    )
+    parser.add_argument(
+        "--no-sympy",
+        action="store_true",
+        help="skip the FastKane and KanesMethod columns",
+    )
     args = parser.parse_args(argv)
+    print(f"chain scripts with AutoZ {args.autoz.upper()}", flush=True)
     print(
         f"{'bodies':>6} {'speeds':>6} {'FastKane s':>10} {'Kanes s':>8} {'ratio':>6} "
         f"{'convert s':>9} {'import s':>8}",
@@ -162,14 +176,19 @@ def main(argv: list[str]) -> int:
     for n in args.sizes:
         # In a child too: building the sympy chain (v2pt_theory through n
         # frames) grows steeply by itself.
-        status_f, t_fast, _ = within(
-            args.budget, best, fastkane_seconds, n, 3 if n <= 4 else 1
-        )
-        fast_col = show(status_f, t_fast if status_f == "ok" else 0, args.budget)
-        t_fast = t_fast if status_f == "ok" else None
-        status, t_kane, _ = within(args.budget, kanesmethod_seconds, n)
-        kane_col = show(status, t_kane if status == "ok" else 0, args.budget)
-        if t_fast is None:
+        if args.no_sympy:
+            status_f = status = "skipped"
+            t_fast = t_kane = None
+            fast_col = kane_col = "-"
+        else:
+            status_f, t_fast, _ = within(
+                args.budget, best, fastkane_seconds, n, 3 if n <= 4 else 1
+            )
+            fast_col = show(status_f, t_fast if status_f == "ok" else 0, args.budget)
+            t_fast = t_fast if status_f == "ok" else None
+            status, t_kane, _ = within(args.budget, kanesmethod_seconds, n)
+            kane_col = show(status, t_kane if status == "ok" else 0, args.budget)
+        if t_fast is None or args.no_sympy:
             ratio = "-"
         elif status == "ok":
             ratio = f"{t_kane / t_fast:.1f}"
@@ -179,7 +198,7 @@ def main(argv: list[str]) -> int:
             conv_col = imp_col = "-"
             t_imp = None
         else:
-            status_i, out, _ = within(args.budget, al2py_seconds, n)
+            status_i, out, _ = within(args.budget, al2py_seconds, n, args.autoz.upper())
             conv_col = f"{out[0]:.2f}" if status_i == "ok" else "-"
             imp_col = show(status_i, out[1] if status_i == "ok" else 0, args.budget)
             t_imp = out[1] if status_i == "ok" else None

@@ -576,6 +576,25 @@ class Intermediates:
                 self._full[z] = self.definition(z).xreplace(self._full)
         return expr.xreplace(self._full)
 
+    def expanded_size(self, expr: Any) -> int:
+        """Tree nodes of ``expr`` written out (:meth:`expand`), counted
+        without writing it out: each intermediate's size once, in order."""
+        parts = list(expr) if isinstance(expr, sp.MatrixBase) else [expr]
+        parts = [p for p in parts if isinstance(p, sp.Basic)]
+        sizes: dict[Any, int] = {}
+
+        def size(e: Any) -> int:
+            found = sizes.get(e)
+            if found is not None:
+                return found
+            if e.is_Atom:
+                return 1
+            return 1 + sum(size(a) for a in e.args)
+
+        for z in self._ordered(parts):
+            sizes[z] = size(self.definition(z))
+        return sum(size(p) for p in parts)
+
     def flatten(
         self, exprs: Sequence[Any], symbol: str = "_z"
     ) -> tuple[list[tuple[Any, Any]], list[Any]]:

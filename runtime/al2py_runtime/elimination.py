@@ -15,7 +15,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-__all__ = ["eliminate", "pivot_row"]
+__all__ = ["SMALL", "eliminate", "pivot_row"]
+
+#: with ``AutoZ OFF``, linear systems up to this many unknowns are solved in
+#: closed form (Cramer's rule: short, readable results, as Autolev prints
+#: them); larger ones always by :func:`eliminate` with named entries.
+SMALL = 3
 
 Probe = Callable[[Any, int], complex]
 

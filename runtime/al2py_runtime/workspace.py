@@ -585,6 +585,14 @@ class Workspace(Mapping):
         was ON stay valid."""
         if not self.settings.autoz:
             return None
+        return self.book
+
+    @property
+    def book(self) -> Any:
+        """The book of ``Z`` intermediates, made on first use whatever
+        ``AutoZ`` says: with ``AutoZ OFF`` the large linear solves
+        (:meth:`solver_book`) name their entries too, and responses write
+        them out."""
         book = self.__dict__.get("_book")
         if book is None:
             from .autoz import Intermediates
@@ -596,6 +604,20 @@ class Workspace(Mapping):
         zee_not = self._values.get("ZEE_NOT")
         if isinstance(zee_not, sp.MatrixBase):
             book.exclude = frozenset(sp.sympify(x) for x in zee_not)
+        return book
+
+    def solver_book(self, unknowns: int) -> Any:
+        """The book for a linear solve of ``unknowns`` unknowns: the
+        intermediates while ``AutoZ`` is ON; with it OFF, the same book for a
+        system larger than :data:`al2py_runtime.elimination.SMALL` (a closed
+        form swells with the size: a 9x9 Cramer's rule did not finish in 15
+        minutes), else None (closed forms, readable, as Autolev prints
+        them)."""
+        from .elimination import SMALL
+
+        book = self.intermediates
+        if book is None and unknowns > SMALL:
+            book = self.book
         return book
 
     def _book_or_none(self) -> Any:
@@ -784,7 +806,7 @@ class Workspace(Mapping):
         else:
             eqs = sp.Matrix([self.val(eqs)])
         eqs = self.resolve(eqs, keep=unknowns)
-        book = self.intermediates
+        book = self.solver_book(len(unknowns))
         zero = self.model._configuration() if book is not None else ()
         solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
@@ -1006,15 +1028,34 @@ class _Partial:
 class AutolevNames(Mapping):
     """Read-only view of a workspace: ``AUTOLEV["ZERO[2]"]``, ``AUTOLEV["X'"]``.
 
-    Values are full expressions: AutoZ intermediates are written out (the
-    workspace itself, ``al.value(name)``, keeps them)."""
+    Values are full expressions: intermediates are written out (the
+    workspace itself, ``al.value(name)``, keeps them), unless the full
+    expression would exceed :attr:`WRITE_OUT` tree nodes: then the value
+    comes back over its named intermediates (``Z12``, each a sympy function
+    whose definition sympy can differentiate and evaluate), at once, and
+    :meth:`written_out` writes it out in full (time and memory grow with
+    the size: minutes for a bicycle's accelerations)."""
 
     __slots__ = ("_ws",)
+
+    #: largest value (tree nodes, written out) that ``AUTOLEV[name]`` writes out
+    WRITE_OUT = 20_000
 
     def __init__(self, ws: Workspace) -> None:
         self._ws = ws
 
     def __getitem__(self, name: str) -> Any:
+        value = self._ws.value(name)
+        book = self._ws._book_or_none()
+        if book is None or not isinstance(value, sp.Basic | sp.MatrixBase):
+            return value if book is None else book.expand(value)
+        if book.expanded_size(value) > self.WRITE_OUT:
+            return value
+        return book.expand(value)
+
+    def written_out(self, name: str) -> Any:
+        """``AUTOLEV[name]`` with every intermediate written out, however
+        large (may take minutes)."""
         value = self._ws.value(name)
         book = self._ws._book_or_none()
         return value if book is None else book.expand(value)

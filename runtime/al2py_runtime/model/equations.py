@@ -14,6 +14,7 @@ from sympy.physics.vector import (
 )
 
 from .. import kinematics as kin
+from ..elimination import SMALL
 from ..kane import arrange, linear_terms, solve_speeds
 from .state import t
 
@@ -170,7 +171,7 @@ class KaneEquations:
             raise ValueError(f"Constrain: {which} has not been assigned")
         speeds = [sp.sympify(u) for u in speeds]
         eqs = [self.ws.resolve(e, keep=self._speeds()) for e in mat]
-        book = self.ws.intermediates
+        book = self.ws.solver_book(len(speeds))
         sols = solve_speeds(eqs, speeds, book, self._configuration())
         gens = self._gens()
         out = []
@@ -273,7 +274,10 @@ class KaneEquations:
                 raise ValueError(
                     f"Kane: {len(forces)} forces for {len(eqs)} auxiliary speeds"
                 )
-            sols = solve_speeds(eqs, forces)
+            # Few forces: closed form, as before, whatever AutoZ says.
+            many = len(forces) > SMALL
+            book = self.ws.solver_book(len(forces)) if many else None
+            sols = solve_speeds(eqs, forces, book, self._configuration())
             for f, s in zip(forces, sols, strict=True):
                 self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
         st.kane = {

@@ -1,0 +1,159 @@
+"""Large linear solves do not swell, whatever AutoZ says (issue 21).
+
+tests/models/twin_disc.al (our own: two rolling discs turning alike, nine
+velocity constraints) has ``AutoZ OFF``.  Its ``Constrain`` of nine dependent
+speeds, and the same nine-unknown system through ``Solve``, are solved by
+elimination with named entries (Cramer's rule on it did not finish in 15
+minutes).  The results must equal a written-out derivation at random points:
+the constraint matrix of the explicit ``DEPENDENT`` solved by numpy, and the
+time derivative of the constraints, written out by sympy, vanishing."""
+
+from __future__ import annotations
+
+import random
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+from al2py_runtime.autoz import has_intermediates
+from conftest import load_module
+
+from al2py import convert
+
+HERE = Path(__file__).resolve().parent
+SCRIPT = HERE / "models" / "twin_disc.al"
+DEPENDENT = ["U1", "U2", "U3", "U4", "U6", "U7", "U8", "U9", "U10"]
+
+
+def _module(tmp_path: Path, source: str, name: str):
+    path = tmp_path / f"{name}.al"
+    path.write_text(source)
+    result = convert(source, str(path))
+    start = time.perf_counter()
+    module = load_module(result.code, tmp_path, name)
+    return module, time.perf_counter() - start
+
+
+@pytest.fixture(scope="module")
+def twin(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("twin")
+    source = SCRIPT.read_text()
+    solve = source.replace(
+        "Constrain(DEPENDENT[" + ", ".join(DEPENDENT) + "])",
+        "Solve(DEPENDENT, " + ", ".join(DEPENDENT) + ")",
+    )
+    solve = solve[: solve.index("Gravity")]
+    assert "Solve(DEPENDENT" in solve
+    return _module(tmp, source, "twin_constrain"), _module(tmp, solve, "twin_solve")
+
+
+def _point(seed: int) -> dict:
+    rng = random.Random(seed)
+    point = {f"Q{k}": rng.uniform(-0.8, 0.8) for k in range(1, 11)}
+    point.update(R=rng.uniform(0.2, 0.5), G=9.81, M=rng.uniform(1, 3))
+    point["U5"] = rng.uniform(-3, 3)
+    point["U5'"] = rng.uniform(-3, 3)
+    return point
+
+
+def _subs(module, point: dict) -> dict:
+    """Symbols (module attributes: ``module.Q1``) -> the point's numbers."""
+    return {
+        getattr(module, key): value for key, value in point.items() if "'" not in key
+    }
+
+
+T = sp.Symbol("t")
+
+
+def _constraints(module) -> sp.Matrix:
+    """The explicit ``DEPENDENT`` with the kinematical equations Q' = U."""
+    rates = {
+        sp.Derivative(getattr(module, f"Q{k}"), T): getattr(module, f"U{k}")
+        for k in range(1, 11)
+    }
+    return sp.Matrix(module.AUTOLEV["DEPENDENT"]).xreplace(rates)
+
+
+def _written_out(module, point: dict) -> np.ndarray:
+    """The dependent speeds from the explicit constraints, solved by numpy."""
+    rows = _constraints(module)
+    unknowns = [getattr(module, u) for u in DEPENDENT]
+    numbers = _subs(module, point)
+    a = rows.jacobian(unknowns).xreplace(numbers)
+    b = rows.xreplace(dict.fromkeys(unknowns, 0)).xreplace(numbers)
+    return np.linalg.solve(
+        np.array(a.evalf(), dtype=float), -np.array(b.evalf(), dtype=float)
+    ).ravel()
+
+
+@pytest.mark.parametrize("which", [0, 1], ids=["constrain", "solve"])
+def test_nine_unknowns_derive_in_seconds(twin, which):
+    module, seconds = twin[which]
+    assert seconds < 60, f"import took {seconds:.1f} s"  # was > 900 s
+    # Named entries internally, AutoZ OFF notwithstanding ...
+    assert has_intermediates(module.al.value("U1"))
+
+
+@pytest.mark.parametrize("which", [0, 1], ids=["constrain", "solve"])
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_solutions_equal_written_out_derivation(twin, which, seed):
+    module, _ = twin[which]
+    point = _point(seed)
+    expected = _written_out(module, point)
+    ours = np.array([float(module.evaluate(u, **point)) for u in DEPENDENT])
+    assert np.allclose(ours, expected, rtol=1e-9, atol=1e-10), (ours, expected)
+
+
+@pytest.mark.parametrize("seed", [4, 5])
+def test_constrained_accelerations_keep_the_constraints(twin, seed):
+    """``Constrain`` also gives U1' ... U10': the time derivative of the
+    explicit constraints (written out by sympy, Q' = U) must vanish there."""
+    module, _ = twin[0]
+    point = _point(seed)
+    qs = [getattr(module, f"Q{k}") for k in range(1, 11)]
+    us = [getattr(module, f"U{k}") for k in range(1, 11)]
+    rates = (
+        _constraints(module)
+        .diff(T)
+        .xreplace({sp.Derivative(q, T): u for q, u in zip(qs, us, strict=True)})
+    )
+    speeds = {u: float(module.evaluate(u, **point)) for u in DEPENDENT + ["U5"]}
+    accels = {f"{u}'": float(module.evaluate(f"{u}'", **point)) for u in DEPENDENT}
+    accels["U5'"] = point["U5'"]
+    numbers = _subs(module, {k: v for k, v in point.items() if "'" not in k})
+    numbers.update({getattr(module, u): v for u, v in speeds.items()})
+    numbers.update(
+        {sp.Derivative(getattr(module, u[:-1]), T): v for u, v in accels.items()}
+    )
+    values = np.array(
+        rates.xreplace({k: v for k, v in numbers.items() if k.is_Derivative})
+        .xreplace({k: v for k, v in numbers.items() if not k.is_Derivative})
+        .evalf(),
+        dtype=float,
+    )
+    assert np.abs(values).max() < 1e-9, values
+
+
+def test_autolev_of_a_large_value_comes_back_over_intermediates(twin, monkeypatch):
+    """``AUTOLEV[name]`` writes out values up to ``WRITE_OUT`` nodes only;
+    a larger one comes back at once over named intermediates, and
+    ``AUTOLEV.written_out(name)`` writes it out: both equal at a point."""
+    module, _ = twin[0]
+    names = module.AUTOLEV
+    name = next(u for u in DEPENDENT if has_intermediates(module.al.value(u)))
+    assert not has_intermediates(names[name])  # small: written out
+    monkeypatch.setattr(type(names), "WRITE_OUT", 1)
+    start = time.perf_counter()
+    short = names[name]
+    assert time.perf_counter() - start < 5
+    assert has_intermediates(short)
+    full = names.written_out(name)
+    assert not has_intermediates(full)
+    numbers = _subs(module, _point(7))
+    a = complex(short.xreplace(numbers).evalf())
+    b = complex(full.xreplace(numbers).evalf())
+    assert a == pytest.approx(b, rel=1e-10, abs=1e-12)
+    assert abs(a) > 1e-6  # a real value, not a vanishing one
