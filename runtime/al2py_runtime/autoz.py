@@ -529,10 +529,14 @@ class Intermediates:
         seen: set[Any] = set()
         order: list[Any] = []
         stack: list[tuple[Any, bool]] = []
+        found: set[Any] = set()
         for e in exprs:
-            for z in sp.sympify(e).atoms(self.Z):
-                if z not in known:
-                    stack.append((z, False))
+            found |= sp.sympify(e).atoms(self.Z)
+        # Sets iterate in hash order, which varies between processes: visit
+        # in the order of the names, so every run writes the same sequence.
+        for z in self._by_name(found, reverse=True):
+            if z not in known:
+                stack.append((z, False))
         while stack:
             z, done = stack.pop()
             if done:
@@ -542,10 +546,17 @@ class Intermediates:
                 continue
             seen.add(z)
             stack.append((z, True))
-            for inner in self._uses(z):
+            for inner in self._by_name(self._uses(z), reverse=True):
                 if inner not in seen and inner not in known:
                     stack.append((inner, False))
         return order
+
+    @staticmethod
+    def _by_name(zs: Iterable[Any], reverse: bool = False) -> list[Any]:
+        """Intermediates by number (then by their arguments' text)."""
+        return sorted(
+            zs, key=lambda z: (int(z.args[0]), str(z.args[1:])), reverse=reverse
+        )
 
     def _uses(self, z: Intermediate) -> Any:
         """The intermediates in ``z``'s definition (kept for canonical ones)."""
