@@ -345,7 +345,7 @@ def write_in(prog: CProgram, values: dict[str, float], path: Path) -> None:
 
 def compile_program(src: Path, *, shared: bool) -> Path:
     out = src.with_suffix(".so" if shared else ".exe")
-    cmd = ["cc", "-O1", "-w", "-o", str(out), str(src), "-lm"]
+    cmd = ["cc", "-O0", "-w", "-o", str(out), str(src), "-lm"]
     if shared:
         cmd[1:1] = ["-shared", "-fPIC", "-Dmain=autolev_main"]
     subprocess.run(cmd, check=True, capture_output=True, text=True)
