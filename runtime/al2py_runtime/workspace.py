@@ -805,12 +805,26 @@ class Workspace(Mapping):
             eqs = sp.Matrix(eqs)
         else:
             eqs = sp.Matrix([self.val(eqs)])
-        eqs = self.resolve(eqs, keep=unknowns)
+        eqs = self.resolve(eqs, keep=[*unknowns, *self._specified_inputs(unknowns)])
         book = self.solver_book(len(unknowns))
         zero = self.model._configuration() if book is not None else ()
         solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
         return self.assign_all(names, solutions, line=line)
+
+    def _specified_inputs(self, unknowns: list[Any]) -> list[Any]:
+        """Specified quantities with an equation that ``Solve`` keeps as
+        names: Autolev's programs compute them first ("Quantities which were
+        specified") and solve with the name (PendulumDynamics.c's
+        ``D(omega', torque)`` is not zero).  One whose value involves an
+        unknown is substituted, so the equations stay complete."""
+        keep = []
+        for entry in self._names.values():
+            if entry.kind != "specified" or entry.obj not in self._rhs:
+                continue
+            if not sp.sympify(self.resolve(entry.obj)).has(*unknowns):
+                keep.append(entry.obj)
+        return keep
 
     def eig(self, m: Any) -> Any:
         from . import algebra

@@ -71,7 +71,9 @@ class KaneEquations:
             if book is None:
                 dots = self._dot_rows(f, self._partials(v, speeds))
             else:
-                mf = [book.name(e) for e in self._actual(f).to_matrix(frame)]
+                # Specified quantities stay names, as without AutoZ (Solve)
+                keep = self.ws._specified_inputs([])
+                mf = [book.name(e) for e in self._actual(f, keep).to_matrix(frame)]
                 parts = self._zpartials(v, speeds, frame, book)
                 dots = [self._zdot(mf, part, book) for part in parts]
             rows = [r + d for r, d in zip(rows, dots, strict=True)]

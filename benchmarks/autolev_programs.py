@@ -1,0 +1,714 @@
+"""Autolev's own programs as the judge (issue 23).
+
+Research groups published the C programs Autolev generated from their
+scripts.  For each such pair found in the fetched repositories (the git
+mirrors under ``$ALMIRROR``, default ``../.mirror`` beside the checkout),
+this checker
+
+* extracts the script (with the ``.al``/``.a``/``.r`` files of its folder)
+  and Autolev's program into a temporary folder (nothing is kept);
+* converts the script with ``python -m al2py`` and imports the module;
+* writes the program's ``.in`` file in Autolev's layout (six heading lines,
+  one value per line from column 60, a blank line after each group, in the
+  order of the program's ``readf`` calls) from the script's Inputs, with
+  seeded values for the quantities the script gives none;
+* compiles the program with ``cc`` and runs it; then loads it again as a
+  shared library (``main`` renamed) to call its equations at chosen states;
+* compares Autolev's output files with ``run()``'s tables column by column
+  (``1e-8 + 1e-5 * max|column|``: Autolev prints 7 digits), the state
+  derivatives Autolev's ``eqns1`` computes with ``ode_function()`` at the
+  initial state and at a perturbed one (``1e-9`` relative), and every
+  ``Encode``d array Autolev's program computes with the module's value.
+
+    python benchmarks/autolev_programs.py            # every pair, a table
+    python benchmarks/autolev_programs.py --list     # the pairs found
+    python benchmarks/autolev_programs.py Pendulum   # pairs whose name matches
+
+Exit status 1 when a pair differs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import ctypes
+import importlib.util
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+#: Autolev prints its tables with 7 significant digits (``%- 14.6E``).
+TABLE_ATOL, TABLE_RTOL = 1e-8, 1e-5
+RHS_RTOL = 1e-9
+INTEGRATION = ("TINITIAL", "TFINAL", "INTEGSTP", "_PRINTINT", "ABSERR", "RELERR")
+
+
+def mirror_root() -> Path:
+    env = os.environ.get("ALMIRROR")
+    return Path(env) if env else ROOT.parent / ".mirror"
+
+
+# --------------------------------------------------------------------- pairs
+
+
+@dataclass(frozen=True)
+class Pair:
+    """An Autolev script and a program Autolev generated from it."""
+
+    repo: str  # owner+name, the mirror folder
+    script: str  # path in the repository
+    program: str  # path in the repository
+    kind: str  # "dynamics" | "algebraic" (raw C with main) | "cleaned" | "matlab"
+    slow: bool = False
+
+    @property
+    def name(self) -> str:
+        return f"{self.repo.split('+')[1]}:{Path(self.program).name}"
+
+    def git_dir(self, root: Path | None = None) -> Path:
+        return (root or mirror_root()) / self.repo / "repo"
+
+
+def _git(git_dir: Path, *args: str) -> str:
+    return subprocess.run(
+        ["git", "-C", str(git_dir), *args],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+
+
+def _show(git_dir: Path, path: str) -> str:
+    return subprocess.run(
+        ["git", "-C", str(git_dir), "show", f"HEAD:{path}"],
+        check=True,
+        capture_output=True,
+    ).stdout.decode("latin-1")
+
+
+_CODE = re.compile(r"^\s*code\s+(\w+)\s*\([^)]*\)\s+(\S+)", re.I | re.M)
+_SLOW = ("whipple", "das3", "gait3d", "gait10dof18musc", "gait2d_osim")
+
+
+def discover(root: Path | None = None) -> list[Pair]:
+    """Every script whose ``CODE`` statement names a file Autolev wrote
+    that is in the same repository (beside the script, or elsewhere by
+    its name, case-insensitively; ``X_raw.c`` also as ``X.c`` after
+    ``autolevclean``)."""
+    root = root or mirror_root()
+    pairs: list[Pair] = []
+    if not root.is_dir():
+        return pairs
+    for repo_dir in sorted(root.iterdir()):
+        git_dir = repo_dir / "repo"
+        if not git_dir.exists():
+            continue
+        try:
+            files = _git(git_dir, "ls-tree", "-r", "--name-only", "HEAD").splitlines()
+        except subprocess.CalledProcessError:
+            continue
+        by_name: dict[str, list[str]] = {}
+        for f in files:
+            by_name.setdefault(Path(f).name.lower(), []).append(f)
+        for script in files:
+            if not script.lower().endswith(".al"):
+                continue
+            text = _show(git_dir, script)
+            for kind, target in _CODE.findall(text):
+                target = target.replace("\\", "/")
+                base = Path(target).name.lower()
+                found = _locate(script, target, files, by_name)
+                cleaned = False
+                if not found and base.endswith("_raw.c"):
+                    found = _locate(script, target[:-6] + ".c", files, by_name)
+                    cleaned = bool(found)
+                if not found:
+                    continue
+                if base.endswith(".m"):
+                    what = "matlab"
+                elif cleaned:
+                    what = "cleaned"
+                else:
+                    what = "dynamics" if kind.lower() in ("dynamics", "ode") else kind
+                    what = what.lower()
+                slow = any(s in script.lower() for s in _SLOW)
+                pairs.append(Pair(repo_dir.name, script, found, what, slow))
+    return pairs
+
+
+def _locate(script, target, files, by_name) -> str | None:
+    folder = str(Path(script).parent)
+    beside = os.path.normpath(os.path.join(folder, target)).lower()
+    for f in files:
+        if f.lower() == beside:
+            return f
+    same = [f for f in by_name.get(Path(target).name.lower(), [])]
+    return same[0] if len(same) == 1 else None
+
+
+# ------------------------------------------------------------------- results
+
+
+@dataclass
+class Row:
+    """One comparison: what, the largest error over the allowed one."""
+
+    what: str
+    max_error: float
+    allowed: float
+    detail: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.max_error <= self.allowed
+
+
+@dataclass
+class Report:
+    pair: Pair
+    rows: list[Row] = field(default_factory=list)
+    skipped: str | None = None
+    seconds: float = 0.0
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return self.skipped is None and all(r.ok for r in self.rows)
+
+    def verdict(self) -> str:
+        if self.skipped:
+            return "not compared"
+        return "match" if self.ok else "DIFFERS"
+
+
+# --------------------------------------------------------------- extraction
+
+
+def extract(pair: Pair, dest: Path, root: Path | None = None) -> tuple[Path, Path]:
+    """The script with its folder's macro and RUN files, and the program,
+    written under ``dest`` (the program keeps its path relative to the
+    script's folder when it lies below it)."""
+    git_dir = pair.git_dir(root)
+    folder = str(Path(pair.script).parent)
+    files = _git(
+        git_dir, "ls-tree", "--name-only", "HEAD", f"{folder}/" if folder != "." else ""
+    )
+    for f in files.splitlines():
+        if f.lower().endswith((".al", ".a", ".r")):
+            (dest / Path(f).name).write_text(_show(git_dir, f), encoding="latin-1")
+    prog = dest / "autolev" / Path(pair.program).name
+    prog.parent.mkdir(parents=True, exist_ok=True)
+    prog.write_text(_show(git_dir, pair.program), encoding="latin-1")
+    if pair.kind == "cleaned":  # the header the cleaned file includes
+        pfolder = str(Path(pair.program).parent)
+        for f in _git(
+            git_dir, "ls-tree", "--name-only", "HEAD", f"{pfolder}/"
+        ).splitlines():
+            if f.endswith(".h"):
+                (prog.parent / Path(f).name).write_text(_show(git_dir, f), "latin-1")
+    return dest / Path(pair.script).name, prog
+
+
+def convert_and_import(script: Path):
+    """``python -m al2py SCRIPT -o model.py`` beside the script, imported."""
+    out = script.parent / f"_al2py_{abs(hash(script.name)) % 10**8}.py"
+    proc = subprocess.run(
+        [sys.executable, "-m", "al2py", script.name, "-o", out.name],
+        cwd=script.parent,
+        capture_output=True,
+        text=True,
+    )
+    if proc.returncode:
+        raise RuntimeError(f"al2py failed:\n{proc.stdout}{proc.stderr}")
+    spec = importlib.util.spec_from_file_location(out.stem, out)
+    module = importlib.util.module_from_spec(spec)
+    with contextlib.chdir(script.parent):
+        spec.loader.exec_module(module)
+    return module
+
+
+# ------------------------------------------------------------ Autolev's C
+
+
+@dataclass
+class CProgram:
+    """What the checker needs to know about an Autolev C program."""
+
+    source: str
+    groups: list[list[str]]  # readf groups, C names in order
+    infile: str  # relative path main opens for reading
+    outfiles: str | None  # printf pattern of output files (``X.%d``)
+    state: list[str]  # VAR[i] = name, in order
+    arrays: dict[str, tuple[int, ...]]  # global double arrays and shapes
+
+    @classmethod
+    def parse(cls, source: str) -> CProgram:
+        body = re.sub(r"\s+", " ", source)
+        groups = [
+            [a.strip().lstrip("&").strip() for a in m.group(1).split(",")]
+            for m in re.finditer(r"readf\(Fptr\[0\],(.*?),\s*NULL\);", body)
+        ]
+        m_in = re.search(r'strcpy\(fileName, "([^"]+)"\)', source)
+        infile = m_in.group(1) if m_in else ""
+        out = re.search(r'sprintf\(fileName, "([^"]+)", iloop\)', source)
+        nout = re.search(r"iloop<=(\d+);", source)
+        outfiles = out.group(1) if out and nout and int(nout.group(1)) > 0 else None
+        state = [
+            name
+            for _i, name in sorted(
+                (int(i), n) for i, n in re.findall(r"VAR\[(\d+)\] = (\w+);", source)
+            )
+        ]
+        arrays: dict[str, tuple[int, ...]] = {}
+        for decl in re.findall(r"^double\s+(.*?);", source, re.M | re.S):
+            for m in re.finditer(r"(\w+)((?:\[\s*\d+\s*\])+)", decl):
+                dims = tuple(int(d) for d in re.findall(r"\d+", m.group(2)))
+                arrays[m.group(1)] = dims
+        # the unnamed static ``z`` is Autolev's intermediates, not a result
+        arrays.pop("z", None)
+        return cls(source, groups, infile, outfiles, state, arrays)
+
+    def _functions(self) -> list[tuple[int, int]]:
+        """Spans of the function definitions (a header at column 0)."""
+        heads = [
+            m.start()
+            for m in re.finditer(r"^(?:void|int)\s+\w+\s*\(", self.source, re.M)
+        ]
+        return list(zip(heads, heads[1:] + [len(self.source)], strict=True))
+
+    def _hiding(self) -> list[tuple[int, int, str]]:
+        """(function span, name) where a function declares a local ``int``
+        named like a script quantity and never assigns it: its uses mean
+        the script's quantity (Autolev's ``output()`` declares ``int i1;``,
+        so a constant ``I1`` reads as that uninitialized local there)."""
+        globals_ = set()
+        for decl in re.findall(r"^double\s+(.*?);", self.source, re.M | re.S):
+            globals_.update(re.findall(r"(\w+)(?:\[[^]]*\])*\s*(?:,|$)", decl))
+        found = []
+        for a, b in self._functions():
+            body = self.source[a:b]
+            for decl in re.findall(r"^int\s+([\w, ]+);", body, re.M):
+                for name in (n.strip() for n in decl.split(",")):
+                    assigned = re.search(rf"\b{name}\s*(?:=[^=]|\+\+|--|\+=|-=)", body)
+                    if name in globals_ and not assigned:
+                        found.append((a, b, name))
+        return found
+
+    def shadowed(self) -> list[str]:
+        return sorted({name for _a, _b, name in self._hiding()})
+
+    def unshadowed(self) -> str:
+        """The source with each hiding local declaration renamed."""
+        src = self.source
+        for a, b, name in sorted(self._hiding(), reverse=True):
+            body = re.sub(
+                rf"^(int\s+(?:[\w, ]+,\s*)?){name}\b",
+                rf"\g<1>{name}_local_",
+                src[a:b],
+                flags=re.M,
+            )
+            src = src[:a] + body + src[b:]
+        return src
+
+
+def write_in(prog: CProgram, values: dict[str, float], path: Path) -> None:
+    """The ``.in`` file in Autolev's layout: the program skips six lines,
+    reads each value from column 60 of its line (``strtod``), and skips
+    one line after each group."""
+    lines = [
+        f"File: {path.name}",
+        "-" * 77,
+        "Note: written by al2py's checker.",
+        "-" * 58 + "+" + "-" * 18,
+        "Description  Quantity  Units".ljust(58) + "| Value",
+        "-" * 58 + "|" + "-" * 18,
+    ]
+    for group in prog.groups:
+        for name in group:
+            label = f"Value                {name}"[:57].ljust(58)
+            lines.append(f"{label}| {values[name.upper()]!r}")
+        lines.append("")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text("\n".join(lines) + "\n" * 4)
+
+
+def compile_program(src: Path, *, shared: bool) -> Path:
+    out = src.with_suffix(".so" if shared else ".exe")
+    cmd = ["cc", "-O0", "-w", "-o", str(out), str(src), "-lm"]
+    if shared:
+        cmd[1:1] = ["-shared", "-fPIC", "-Dmain=autolev_main"]
+    subprocess.run(cmd, check=True, capture_output=True, text=True)
+    return out
+
+
+def read_table(path: Path) -> np.ndarray:
+    rows = []
+    for line in path.read_text().splitlines():
+        if line.strip() and not line.startswith("%"):
+            rows.append([float(x) for x in line.split()])
+    return np.array(rows)
+
+
+@contextlib.contextmanager
+def _quiet_stdout():
+    """Send the C library's stdout to /dev/null (Autolev's main prints
+    every row)."""
+    libc = ctypes.CDLL(None)
+    sys.stdout.flush()
+    saved = os.dup(1)
+    with open(os.devnull, "w") as null:
+        os.dup2(null.fileno(), 1)
+    try:
+        yield
+    finally:
+        libc.fflush(None)
+        os.dup2(saved, 1)
+        os.close(saved)
+
+
+class Loaded:
+    """An Autolev program as a shared library: its globals by name."""
+
+    def __init__(self, so: Path, prog: CProgram):
+        self.lib = ctypes.CDLL(str(so))
+        self.prog = prog
+
+    def main(self, cwd: Path) -> None:
+        with contextlib.chdir(cwd), _quiet_stdout():
+            self.lib.autolev_main()
+
+    def array(self, name: str) -> np.ndarray:
+        dims = self.prog.arrays[name]
+        n = math.prod(dims)
+        return np.array((ctypes.c_double * n).in_dll(self.lib, name)).reshape(dims)
+
+    def eqns1(self, t: float, y: list[float]) -> np.ndarray:
+        n = len(y)
+        var = (ctypes.c_double * n)(*y)
+        varp = (ctypes.c_double * n)()
+        fn = self.lib.eqns1
+        fn.argtypes = [ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_char]
+        fn(t, var, varp, b"\0")
+        return np.array(varp)
+
+
+# ----------------------------------------------------------- value choice
+
+
+def _seeded(name: str, lo: float, hi: float) -> float:
+    """A value for a quantity the script gives none: fixed per name."""
+    seed = zlib.crc32(name.upper().encode())
+    return float(np.random.default_rng(seed).uniform(lo, hi))
+
+
+def _al_name(cname: str, variables: dict[str, int]) -> str:
+    """Autolev's C spells ``Q1'`` as ``q1p`` and ``Q1''`` as ``q1pp``."""
+    up = cname.upper()
+    for k in (2, 1):
+        base = up[:-k]
+        if up.endswith("P" * k) and variables.get(base, -1) >= k:
+            return base + "'" * k
+    return up
+
+
+def job_for(module, program: str):
+    for job in module.al.jobs:
+        if job.filename and Path(job.filename.replace("\\", "/")).name.lower() == (
+            Path(program).name.lower()
+        ):
+            return job
+    raise LookupError(f"no CODE statement writes {program}")
+
+
+def _values(prog: CProgram, job, integration: dict[str, float]) -> dict[str, float]:
+    """Values for every name the program reads: the script's Input (in its
+    own unit, as the program reads it), else a seeded one."""
+    variables = {name.upper(): order for name, _obj, order in job.variables}
+    inputs = {k.upper(): v.value for k, v in job.inputs.items()}
+    values = {}
+    for group in prog.groups:
+        for cname in group:
+            up = cname.upper()
+            if up in INTEGRATION:
+                values[up] = integration[up]
+            elif _al_name(cname, variables) in inputs:
+                values[up] = float(inputs[_al_name(cname, variables)])
+            elif _al_name(cname, variables).rstrip("'") in variables:
+                values[up] = _seeded(up, -0.6, 0.6)
+            else:
+                values[up] = _seeded(up, 0.5, 1.5)
+    return values
+
+
+def _overrides(prog: CProgram, job, values: dict[str, float]) -> dict[str, float]:
+    variables = {name.upper(): order for name, _obj, order in job.variables}
+    out = {}
+    for group in prog.groups:
+        for cname in group:
+            if cname.upper() in INTEGRATION:
+                continue
+            out[_al_name(cname, variables)] = values[cname.upper()]
+    for key in ("TINITIAL", "TFINAL", "INTEGSTP", "ABSERR", "RELERR"):
+        if key in values:
+            out[key] = values[key]
+    if "_PRINTINT" in values:
+        out["PRINTINT"] = int(values["_PRINTINT"])
+    return out
+
+
+def _rel(a: np.ndarray, b: np.ndarray) -> float:
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    scale = max(np.max(np.abs(b), initial=0.0), 1e-300)
+    return float(np.max(np.abs(a - b), initial=0.0) / max(scale, 1.0))
+
+
+# --------------------------------------------------------------- checking
+
+
+def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Report:
+    report = Report(pair)
+    start = time.perf_counter()
+    if pair.kind == "matlab":
+        report.skipped = "MATLAB program: needs Octave (not installed)"
+        return report
+    if shutil.which("cc") is None:
+        report.skipped = "no C compiler (cc)"
+        return report
+    with tempfile.TemporaryDirectory(prefix="al2py-judge-") as tmp:
+        work = keep or Path(tmp)
+        script, program = extract(pair, work, root)
+        module = convert_and_import(script)
+        job = job_for(module, pair.program)
+        if pair.kind == "cleaned":
+            report.skipped = "cleaned (autolevclean) function: no harness yet"
+        elif job.kind in ("DYNAMICS", "ODE"):
+            _check_dynamics(report, module, job, program)
+        else:
+            _check_algebraic(report, module, job, program)
+    report.seconds = time.perf_counter() - start
+    return report
+
+
+def _integration_for(job, tight: bool = True) -> dict[str, float]:
+    inputs = {k.upper(): v.value for k, v in job.inputs.items()}
+    t0 = float(inputs.get("TINITIAL", 0.0))
+    t1 = float(inputs.get("TFINAL", t0 + 2.0))
+    step = float(inputs.get("INTEGSTP", (t1 - t0) / 100))
+    return {
+        "TINITIAL": t0,
+        "TFINAL": t1,
+        "INTEGSTP": step,
+        "_PRINTINT": float(int(inputs.get("PRINTINT", 1))),
+        # both integrators run tight, so the tables judge the equations
+        "ABSERR": 1e-11,
+        "RELERR": 1e-11,
+    }
+
+
+def _check_dynamics(report: Report, module, job, program: Path) -> None:
+    from al2py_runtime import jobs as rjobs
+
+    prog = _unshadow(report, program)
+    cwd = program.parent
+    for label, perturb in (("script Inputs", False), ("perturbed state", True)):
+        integ = _integration_for(job)
+        values = _values(prog, job, integ)
+        if perturb:
+            for name in prog.state:
+                values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
+        write_in(prog, values, cwd / prog.infile)
+        exe = compile_program(program, shared=False)
+        proc = subprocess.run(
+            [str(exe)], cwd=cwd, capture_output=True, text=True, timeout=600
+        )
+        if proc.returncode:
+            raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
+        overrides = _overrides(prog, job, values)
+        result = module.al.run_job(job, overrides)
+        tables = (
+            [t for t in result.tables if not t.encoded]
+            if hasattr(result.tables[0], "encoded")
+            else result.tables
+        )
+        if prog.outfiles:
+            for i, table in enumerate(tables, start=1):
+                path = cwd / (prog.outfiles % i)
+                theirs = read_table(path)
+                ours = np.asarray(table.data, float)
+                if theirs.shape != ours.shape:
+                    report.rows.append(
+                        Row(
+                            f"{label}: table {i} shape",
+                            math.inf,
+                            0.0,
+                            f"Autolev {theirs.shape}, al2py {ours.shape}",
+                        )
+                    )
+                    continue
+                worst, allowed, where = 0.0, 0.0, ""
+                for j, col in enumerate(table.columns):
+                    tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
+                    err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
+                    if err / tol > (worst / allowed if allowed else -1):
+                        worst, allowed, where = err, tol, col.label
+                report.rows.append(
+                    Row(
+                        f"{label}: {prog.outfiles % i} ({ours.shape[0]}x{ours.shape[1]})",
+                        worst,
+                        allowed,
+                        f"worst column {where}",
+                    )
+                )
+        # The right-hand side and encoded arrays at the initial state: the
+        # program's main with TFINAL = TINITIAL computes its constants and
+        # calls output() once.
+        values0 = dict(values, TFINAL=values["TINITIAL"])
+        write_in(prog, values0, cwd / prog.infile)
+        so = compile_program(program, shared=True)
+        lib = Loaded(so, prog)
+        lib.main(cwd)
+        f, y0, names = rjobs.ode_function(job, overrides)
+        variables = {n.upper(): o for n, _obj, o in job.variables}
+        y_al = dict(zip(names, y0, strict=True))
+        ours_d = dict(
+            zip(names, f(values["TINITIAL"], np.array(y0, float)), strict=True)
+        )
+        var = [y_al[_al_name(n, variables)] for n in prog.state]
+        theirs_d = lib.eqns1(values["TINITIAL"], var)
+        ours_v = np.array([ours_d[_al_name(n, variables)] for n in prog.state])
+        report.rows.append(
+            Row(
+                f"{label}: state derivatives at t0 ({len(var)})",
+                _rel(ours_v, theirs_d),
+                RHS_RTOL,
+            )
+        )
+        _compare_encoded(report, label, job, lib, result, row=0)
+        del lib
+
+
+def _unshadow(report: Report, program: Path) -> CProgram:
+    """Parse the program; where a local hides a script name, note it and
+    compile the program with the local renamed (Autolev's defect, not the
+    script's meaning)."""
+    prog = CProgram.parse(program.read_text(encoding="latin-1"))
+    hidden = prog.shadowed()
+    if hidden:
+        report.notes.append(
+            "Autolev's program declares local int "
+            + ", ".join(hidden)
+            + " hiding the script's constant(s) of that name; compared with"
+            " the local renamed"
+        )
+        program.write_text(prog.unshadowed(), encoding="latin-1")
+        prog = CProgram.parse(prog.unshadowed())
+    return prog
+
+
+def _compare_encoded(report, label, job, lib, result, row) -> None:
+    for name, (m, n) in job.encoded.items():
+        cname = next((c for c in lib.prog.arrays if c.upper() == name.upper()), None)
+        if cname is None:
+            continue
+        theirs = lib.array(cname).reshape(m, n)
+        ours = (
+            np.array(
+                [
+                    [
+                        result[f"{name}[{i + 1},{j + 1}]" if n > 1 or m > 1 else name][
+                            row
+                        ]
+                        for j in range(n)
+                    ]
+                    for i in range(m)
+                ],
+                float,
+            )
+            if (m, n) != (1, 1)
+            else np.array([[result[name][row]]])
+        )
+        report.rows.append(
+            Row(f"{label}: Encode {name} ({m}x{n})", _rel(ours, theirs), RHS_RTOL)
+        )
+
+
+def _check_algebraic(report: Report, module, job, program: Path) -> None:
+    prog = _unshadow(report, program)
+    cwd = program.parent
+    values = _values(prog, job, {})
+    write_in(prog, values, cwd / prog.infile)
+    exe = compile_program(program, shared=False)
+    proc = subprocess.run(
+        [str(exe)], cwd=cwd, capture_output=True, text=True, timeout=600
+    )
+    if proc.returncode or "error" in proc.stdout.lower():
+        raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
+    result = module.al.run_job(job, _overrides(prog, job, values))
+    lib = Loaded(compile_program(program, shared=True), prog)
+    lib.main(cwd)
+    _compare_encoded(report, "seeded values", job, lib, result, row=0)
+    if not report.rows:
+        report.skipped = "the program computes no Encoded array to compare"
+
+
+# -------------------------------------------------------------------- CLI
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument(
+        "names", nargs="*", help="only pairs whose name contains one of these"
+    )
+    ap.add_argument("--list", action="store_true", help="list the pairs found")
+    ap.add_argument("--root", type=Path, default=None, help="mirror root ($ALMIRROR)")
+    ap.add_argument("--keep", type=Path, default=None, help="work in this folder")
+    args = ap.parse_args(argv)
+    pairs = [
+        p
+        for p in discover(args.root)
+        if not args.names or any(n.lower() in p.name.lower() for n in args.names)
+    ]
+    if not pairs:
+        print(f"no pairs found under {args.root or mirror_root()}")
+        return 0
+    if args.list:
+        for p in pairs:
+            print(f"{p.name:45} {p.kind:10} {p.repo}:{p.script}")
+        return 0
+    failed = False
+    print(f"{'pair':40} {'compared':55} {'max error':>10} {'allowed':>10}  verdict")
+    for p in pairs:
+        if args.keep:
+            args.keep.mkdir(parents=True, exist_ok=True)
+        try:
+            rep = check(p, args.root, args.keep)
+        except Exception as exc:  # noqa: BLE001 - a report line per pair
+            print(f"{p.name:40} error: {str(exc).strip()[:300]}")
+            failed = True
+            continue
+        if rep.skipped:
+            print(f"{p.name:40} {rep.skipped}")
+        for note in rep.notes:
+            print(f"{p.name:40} note: {note}")
+        for r in rep.rows:
+            mark = "match" if r.ok else "DIFFERS"
+            print(
+                f"{p.name:40} {r.what:55} {r.max_error:10.2e} {r.allowed:10.2e}  {mark} {r.detail}"
+            )
+        failed |= not rep.ok and not rep.skipped
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

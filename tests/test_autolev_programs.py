@@ -1,0 +1,167 @@
+"""Autolev's own programs as the judge (issue 23, benchmarks/autolev_programs.py).
+
+The pairs (a script and the program Autolev generated from it) live in the
+fetched repositories under ``$ALMIRROR``; these tests skip when they are
+absent.  Our own small script checks the finding they led to."""
+
+from __future__ import annotations
+
+import importlib.util
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from al2py import convert
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "benchmarks"))
+import autolev_programs as judge  # noqa: E402
+
+# A rotor driven by a Specified torque that has an equation: Autolev keeps
+# the name TQ in the solved U' (its programs compute TQ first), so
+# D(U', TQ) = 1/K, as PendulumDynamics.c's B matrix shows.
+SPECIFIED = """\
+AutoZ {autoz}
+Newtonian N
+Bodies A
+Constants M, K, C
+Variables Q'
+MotionVariables' U'
+Specified TQ, DR
+Mass A = M
+Inertia A, 0, 0, K
+Simprot(N, A, 3, Q)
+Q' = U
+Angvel(N, A)
+P_NO_AO> = 0>
+V_AO_N> = 0>
+A_AO_N> = 0>
+TQ = 10*SIN(T) - C*Q
+DR = 2*U'
+Torque(N/A, (TQ - DR)*N3>)
+Zero = Fr() + FrStar()
+Solve(Zero, U')
+B = D(U', TQ)
+G = D(U', Q)
+Input M = 1, K = 3, C = 2, Q = 0.3
+Code Dynamics() spec_own.c
+"""
+
+
+def _module(tmp_path, text, name):
+    code = convert(text, f"{name}.al").code
+    path = tmp_path / f"{name}.py"
+    path.write_text(code)
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("autoz", ["OFF", "ON"])
+def test_solve_keeps_a_specified_name(tmp_path, autoz):
+    m = _module(tmp_path, SPECIFIED.format(autoz=autoz), f"spec_{autoz.lower()}")
+    # D(U', TQ): the name is kept (DR, which involves U', is substituted:
+    # U' = TQ/(K + 2)), while D(U', Q) still sees through TQ's equation.
+    assert m.evaluate("B", K=3.0) == pytest.approx(0.2, rel=1e-14)
+    assert m.evaluate("G", K=3.0, C=2.0) == pytest.approx(-0.4, rel=1e-14)
+    assert "TQ" in str(m.AUTOLEV["U'"]) or autoz == "ON"
+    # The numbers still use TQ's equation: U' at t = 0.5, Q = 0.3.
+    f, y0, names = m.ode_function()
+    got = dict(zip(names, f(0.5, np.array(y0, float)), strict=True))["U"]
+    assert got == pytest.approx((10 * np.sin(0.5) - 2.0 * 0.3) / 5.0, rel=1e-12)
+
+
+def test_in_file_layout(tmp_path):
+    """The .in file reads back through Autolev's rule: six heading lines,
+    a value from column 60, a blank line after each group."""
+    prog = judge.CProgram(
+        "", [["a", "bb"], ["TINITIAL", "_printint"]], "x.in", None, [], {}
+    )
+    path = tmp_path / "x.in"
+    judge.write_in(
+        prog, {"A": 1.5, "BB": -2.0, "TINITIAL": 0.0, "_PRINTINT": 3.0}, path
+    )
+    lines = path.read_text().splitlines()
+    read = [float(line[59:]) for line in lines[6:9:1] if line.strip()]
+    assert read == [1.5, -2.0]
+    assert lines[8] == "" and float(lines[9][59:]) == 0.0 and lines[11] == ""
+    assert int(float(lines[10][59:])) == 3
+
+
+def test_shadowed_local_is_found():
+    src = (
+        "double   g,i,i1,l1;\ndouble   z[3],A[2][2];\nvoid output(void)\n{\nint      i1;\n"
+        "  k = i1*g;\n}\nint kutta(void)\n{\nint      i;\nfor( i=0; i<2; i++) ;\n}\n"
+    )
+    prog = judge.CProgram.parse(src)
+    assert prog.shadowed() == ["i1"]
+    assert "int      i1_local_;" in prog.unshadowed()
+    assert "int      i;" in prog.unshadowed()  # kutta's counter is its own
+
+
+def _pairs():
+    return {p.name: p for p in judge.discover()}
+
+
+def _need(name):
+    if shutil.which("cc") is None:
+        pytest.skip("no C compiler (cc)")
+    pairs = _pairs()
+    if name not in pairs:
+        pytest.skip(f"{name} not fetched under {judge.mirror_root()}")
+    return pairs[name]
+
+
+def _assert_matches(report):
+    assert report.rows, report.skipped
+    bad = [
+        f"{r.what}: {r.max_error:.3g} > {r.allowed:.3g}"
+        for r in report.rows
+        if not r.ok
+    ]
+    assert not bad, bad
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["AutolevToolKit:PendulumDynamics.c", "AutolevToolKit:DoublePendulumDynamics.c"],
+)
+def test_autolev_program_matches(name):
+    report = judge.check(_need(name))
+    _assert_matches(report)
+    # tables, state derivatives and Encoded matrices were all compared
+    whats = " ".join(r.what for r in report.rows)
+    assert (
+        ".1 (101x5)" in whats and "state derivatives" in whats and "Encode B" in whats
+    )
+
+
+def test_double_pendulum_program_hides_i1():
+    """DoublePendulumDynamics.c's output() declares ``int i1`` and so prints
+    the kinetic energy without the constant I1's term: Autolev's defect."""
+    report = judge.check(_need("AutolevToolKit:DoublePendulumDynamics.c"))
+    assert any("local int i1" in n for n in report.notes)
+
+
+SLOW = [
+    "AutolevToolKit:WhippleDynamics.c",
+    "BioMAC-Sim-Toolbox:contact_2d_raw.c",
+    "BioMAC-Sim-Toolbox:contact_3d_raw.c",
+    "BioMAC-Sim-Toolbox:gait2d_osim_FK_raw.c",
+    "BioMAC-Sim-Toolbox:gait2d_osim_NoDer_raw.c",
+    "BioMAC-Sim-Toolbox:gait10dof18musc_FK_raw.c",
+    "BioMAC-Sim-Toolbox:gait10dof18musc_NoDer_raw.c",
+    "BioMAC-Sim-Toolbox:gait3d_pelvis213_FK_raw.c",
+    "BioMAC-Sim-Toolbox:gait3d_pelvis213_NoDer_raw.c",
+    "DAS3:das3_al_raw.c",
+]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", SLOW)
+def test_autolev_program_matches_slow(name):
+    _assert_matches(judge.check(_need(name)))
