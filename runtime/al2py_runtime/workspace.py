@@ -533,10 +533,15 @@ class Workspace(Mapping):
                 self.resolve(value, keep=[p[0] for p in points]), orders, points
             )
         mode = self.settings.autorhs
+        # Auxiliary speeds stay symbols (Constrain made them 0 or solved
+        # them, but later velocities need them for the partial velocities).
+        kept = self.model._auxiliary_kept()
         if mode == "ALL":
-            value = self.resolve(value)
+            value = self.resolve(value, kept)
         elif mode == "ON":
-            simple = {k: v for k, v in self._rhs.items() if _is_simple(v)}
+            simple = {
+                k: v for k, v in self._rhs.items() if _is_simple(v) and k not in kept
+            }
             if simple:
                 value = _xreplace(value, simple)
         if rearrange and self.settings.factoring and value.is_Add and is_small(value):
@@ -759,10 +764,12 @@ class Workspace(Mapping):
         return diff(y, x)
 
     def dt(self, y: Any, frame: Any = None) -> Any:
-        """``Dt(y)``: total time derivative, seeing through right-hand sides."""
+        """``Dt(y)``: total time derivative, seeing through right-hand sides
+        (except the auxiliary speeds', see ``Model._auxiliary_kept``)."""
+        keep = self.model._auxiliary_kept()
         if frame is not None or _is_vectorial(self.val(y)):
-            return self.model._vector_dt(self.resolve(self.val(y)), frame)
-        y = self.resolve(self.val(y))
+            return self.model._vector_dt(self.resolve(self.val(y), keep), frame)
+        y = self.resolve(self.val(y), keep)
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: sp.diff(e, t))
         return sp.diff(y, t)

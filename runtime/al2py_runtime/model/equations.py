@@ -145,15 +145,34 @@ class KaneEquations:
                 tq = self._inertia_torque(o, n)
                 add(tq, self.ang_vel(o, n), o)
         if st.massive and not all(moved):
-            still = [
-                self.ws.name_of(u) for u, m in zip(speeds, moved, strict=True) if not m
-            ]
-            raise ValueError(
-                "FrStar(): no velocity or angular velocity of a massive object"
-                f" depends on the generalized speed {', '.join(still)}; is a"
-                " kinematical differential equation (Q' = ...) missing?"
-            )
+            raise ValueError(self._unmoved(speeds, moved))
         return sp.Matrix([sp.Add(*r) for r in rows])
+
+    def _unmoved(self, speeds: list, moved: list) -> str:
+        """The error for speeds that no velocity of a massive object depends
+        on.  An auxiliary speed has no kinematical equation to forget: it is
+        missing from the velocities that should carry it."""
+        still = [u for u, m in zip(speeds, moved, strict=True) if not m]
+        aux = [self.ws.name_of(u) for u in still if u in self._mech.auxiliary]
+        other = [self.ws.name_of(u) for u in still if u not in self._mech.auxiliary]
+        head = "FrStar(): no velocity or angular velocity of a massive object"
+        parts = []
+        if other:
+            parts.append(
+                f"{head} depends on the generalized speed {', '.join(other)}; is"
+                " a kinematical differential equation (Q' = ...) missing?"
+            )
+        if aux:
+            n = self._n().name
+            one = len(aux) == 1
+            parts.append(
+                f"{head} depends on the auxiliary speed{'' if one else 's'}"
+                f" {', '.join(aux)}; give {'it' if one else 'them'} to the"
+                " velocity of the point where the constraint force acts"
+                f" (V_P_{n}> = ... + {aux[0]}*{n}1>) and form the massive"
+                " objects' velocities from it (V2pts, or Dt of their positions)"
+            )
+        return "; ".join(parts)
 
     # ------------------------------------------------------ Constrain
 

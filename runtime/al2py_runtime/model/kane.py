@@ -174,15 +174,24 @@ def kane_inputs(model: Any) -> KaneInputs:
             bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
         else:
             bodies.append(Particle(p.name, p, m))
+    # Loads are values of the actual motion, where the auxiliary speeds are
+    # zero (a force formed after Constrain, tutor6f's damping through
+    # STRETCH', keeps them as symbols; KanesMethod zeroes them only in the
+    # inertia forces).
+    zero = {sp.Derivative(u, t): 0 for u in aux} | dict.fromkeys(aux, 0)
+
+    def actual(x: Any) -> Any:
+        return kin.vmap(fix(x), lambda e: sp.sympify(e).xreplace(zero))
+
     loads = []
     for p, f in st.forces.items():
         if f != Vector(0):
             p.set_vel(n, fix(model.vel(p, n)))
-            loads.append((p, fix(f)))
+            loads.append((p, actual(f)))
     for b, tq in st.torques.items():
         if tq != Vector(0):
             b.set_ang_vel(n, fix(model.ang_vel(b, n)))
-            loads.append((b, fix(tq)))
+            loads.append((b, actual(tq)))
     return KaneInputs(
         frame=n,
         q_ind=q_ind,

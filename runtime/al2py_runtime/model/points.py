@@ -81,13 +81,24 @@ class Kinematics:
     def _tidy(self, e: Any) -> Any:
         return e if self.ws.settings.autoz else kin.tidy(e)
 
+    def _auxiliary_kept(self) -> list:
+        """The auxiliary speeds and their derivatives: what formed quantities
+        keep as symbols although Constrain gave them values (they are needed
+        for the partial velocities; docs/semantics.md, "AUXILIARY")."""
+        aux = self._mech.auxiliary
+        return [*aux, *(sp.Derivative(u, t) for u in aux)]
+
     def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
-        v = self._actual(v)
+        # Everything is substituted except the auxiliary speeds: a velocity
+        # formed after Constrain(AUXILIARY[U1]) must still depend on U1, as
+        # one formed before it does (U1 is set to zero in the equations).
+        keep = self._auxiliary_kept()
+        v = self._actual(v, keep)
         if isinstance(v, Vector | Dyadic):
             out = time_derivative(v, frame)
         else:
             out = sp.diff(v, t)
-        out = self._actual(out)
+        out = self._actual(out, keep)
         book = self.ws.intermediates
         if book is not None:
             # AutoZ: name the coefficients of the speeds and their derivatives
