@@ -18,30 +18,70 @@ from typing import Any
 
 from . import budget
 from .jobs import check_overrides
-from .records import INTEGRATION_DEFAULTS, NumericsError
+from .records import INTEGRATION_DEFAULTS, NumericsError, job_where
 from .safety import AutolevRuntimeError, describe
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "help_text"]
 
 
-def build_parser(ws: Any) -> argparse.ArgumentParser:
-    name = PurePath(ws.filename).stem or "autolev"
-    inputs = ws.inputs
+def help_text(
+    filename: str,
+    inputs: Sequence[tuple[str, str, str | None]],
+    jobs: Sequence[tuple[str, str | None, int | None]],
+) -> str:
+    """What ``python module.py --help`` prints, from what the script states:
+    its Input values as written and ``(kind, file, line)`` of each CODE job.
+    The converter writes it into the module, which prints it before
+    importing anything, so a bicycle's ``--help`` answers at once.
+
+    >>> print(help_text("m.al", [("X", "2", "m")], [("ODE", "m.c", 3)]))
+    ... # doctest: +ELLIPSIS
+    usage: python m.py [-h] ...
+    Input values (change with --set NAME=VALUE, in these units):
+      X = 2 m
+    Jobs (--job STEM runs one; default: all, in script order):
+      m: CODE Ode m.c (line 3) -> m.1, ...
+    ...
+    """
+    described = [
+        (
+            PurePath(file).stem if file else PurePath(filename).stem or "autolev",
+            job_where(kind, file, line),
+        )
+        for kind, file, line in jobs
+    ]
+    return build_parser(filename, inputs, described).format_help()
+
+
+def _described(ws: Any) -> tuple[list, list]:
+    """Inputs and jobs of a derived workspace, as :func:`build_parser` takes."""
+    inputs = []
+    for key, item in ws.inputs.items():
+        try:
+            shown = format(float(item.value), "g")
+        except (TypeError, ValueError):  # an Input given as an expression
+            shown = str(item.value)
+        inputs.append((key, shown, item.unit))
+    return inputs, [(j.stem, j.where) for j in ws.jobs]
+
+
+def build_parser(
+    filename: str,
+    inputs: Sequence[tuple[str, str, str | None]],
+    jobs: Sequence[tuple[str, str]],
+) -> argparse.ArgumentParser:
+    """The command line of ``python module.py``: ``inputs`` are ``(name,
+    value as shown, unit)``, ``jobs`` are ``(file stem, description)``."""
+    name = PurePath(filename).stem or "autolev"
     lines = []
     if inputs:
         lines.append("Input values (change with --set NAME=VALUE, in these units):")
-        for key, item in inputs.items():
-            unit = f" {item.unit}" if item.unit else ""
-            try:
-                shown = format(float(item.value), "g")
-            except (TypeError, ValueError):  # an Input given as an expression
-                shown = str(item.value)
-            lines.append(f"  {key} = {shown}{unit}")
-    jobs = ws.jobs
+        for key, shown, unit in inputs:
+            lines.append(f"  {key} = {shown}" + (f" {unit}" if unit else ""))
     if jobs:
         lines.append("Jobs (--job STEM runs one; default: all, in script order):")
-        for j in jobs:
-            lines.append(f"  {j.stem}: {j.where} -> {j.stem}.1, ...")
+        for stem, where in jobs:
+            lines.append(f"  {stem}: {where} -> {stem}.1, ...")
     else:
         lines.append(
             "This script has no CODE statement: it only prints its transcript."
@@ -50,11 +90,14 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog=f"python {name}.py",
         description=(
-            f"Print the Autolev transcript of {ws.filename} and perform its"
+            f"Print the Autolev transcript of {filename} and perform its"
             " numerical CODE job."
         ),
         epilog="\n".join(lines),
-        formatter_class=argparse.RawDescriptionHelpFormatter,
+        # one width everywhere: the converter writes this help into modules
+        formatter_class=lambda prog: argparse.RawDescriptionHelpFormatter(
+            prog, width=79
+        ),
     )
     parser.add_argument(
         "--set",
@@ -90,8 +133,8 @@ def build_parser(ws: Any) -> argparse.ArgumentParser:
     parser.add_argument(
         "--zero-missing",
         action="store_true",
-        help="use 0 for constants and initial values that no Input gives"
-        " (by default the job stops and names them; or AL2PY_ZERO_MISSING=1)",
+        help="use 0 for constants that no Input gives (by default the job stops"
+        " and names them; or AL2PY_ZERO_MISSING=1)",
     )
     parser.add_argument(
         "--emit-code",
@@ -176,7 +219,7 @@ def _error(ws: Any, message: str, line: int | None = None) -> int:
 
 
 def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> int:
-    parser = build_parser(ws)
+    parser = build_parser(ws.filename, *_described(ws))
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2)

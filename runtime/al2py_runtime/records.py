@@ -119,9 +119,18 @@ class Job:
 
     @property
     def where(self) -> str:
-        what = f"CODE {self.kind.title()}"
-        if self.filename:
-            what += f" {self.filename}"
-        if self.line is not None:
-            what += f" (line {self.line})"
-        return what
+        return job_where(self.kind, self.filename, self.line)
+
+
+def job_where(kind: str, filename: str | None, line: int | None) -> str:
+    """How messages name a job: ``CODE Dynamics tutor6.c (line 57)``.
+
+    >>> job_where("DYNAMICS", "tutor6.c", 57)
+    'CODE Dynamics tutor6.c (line 57)'
+    """
+    what = f"CODE {kind.title()}"
+    if filename:
+        what += f" {filename}"
+    if line is not None:
+        what += f" (line {line})"
+    return what

@@ -80,16 +80,18 @@ def _is_generated(frame: FrameType) -> bool:
     return doc.startswith("Autolev script ") and "by al2py" in doc
 
 
-def register(filename: str, frame: FrameType | None) -> None:
+def register(filename: str, frame: FrameType | None) -> bool:
     """Called by ``Workspace.__init__``: remember the generated module that
-    creates the workspace (``frame`` is its frame) and install the hook."""
+    creates the workspace (``frame`` is its frame) and install the hook.
+    True if ``frame`` is a generated module's."""
     global _installed
     if frame is None or not _is_generated(frame):
-        return
+        return False
     _MODULES[frame.f_code.co_filename] = filename
     if not _installed:
         _installed = True
         sys.excepthook = excepthook
+    return True
 
 
 def output_path(outdir: str | os.PathLike, name: str) -> Any:

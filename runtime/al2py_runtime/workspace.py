@@ -35,6 +35,7 @@ from .kinematics import doit_derivatives, is_small, one_or_tuple
 from .mechanics import MODEL_COMMANDS, Model
 from .names import Key, parse_key
 from .numerics import Numerics
+from .progress import ImportWatch
 from .safety import guard_methods
 from .safety import register as register_module
 from .settings import Response, Settings
@@ -68,7 +69,11 @@ class Workspace(Mapping):
 
     def __init__(self, filename: str = "<autolev>") -> None:
         self.filename = filename
-        register_module(filename, sys._getframe(1))  # errors name the .al line
+        frame = sys._getframe(1)
+        generated = register_module(filename, frame)  # errors name the .al line
+        #: a progress line while a long import derives (stopped by names())
+        self._watch = ImportWatch(filename, frame if generated else None)
+        self._watch.start()
         self.settings = Settings()
         self.responses: list[Response] = []
         self._names: dict[str, _Entry] = {}
@@ -636,7 +641,9 @@ class Workspace(Mapping):
         return value
 
     def names(self) -> Mapping[str, Any]:
-        """A read-only, case-insensitive view: Autolev name -> current value."""
+        """A read-only, case-insensitive view: Autolev name -> current value
+        (a generated module asks for it last: its derivation is done)."""
+        self._watch.stop()
         return AutolevNames(self)
 
     def name_of(self, obj: Any) -> str:

@@ -116,6 +116,10 @@ class Generator:
         self._line = 0
         self.stopped_at: int | None = None
         self.has_job = False  # a CODE statement was generated
+        #: what ``--help`` lists: Inputs ``(name, value as written, unit)``
+        #: and CODE jobs ``(kind, file, line)``, in script order
+        self.help_inputs: list[tuple[str, str, str | None]] = []
+        self.help_jobs: list[tuple[str, str | None, int]] = []
         self.has_kane = False  # Fr() or FrStar() was generated
 
     # ------------------------------------------------------------ driving
@@ -491,6 +495,10 @@ class Generator:
                 value = f"({value}, {item.unit.text!r})"
             for name in input_names(item.name):
                 items.append(f"{name.autolev!r}: {value}")
+                unit = item.unit.text if item.unit is not None else None
+                self.help_inputs.append(
+                    (name.autolev, ir.autolev_text(item.value), unit)
+                )
         return [f"al.input({{{', '.join(items)}}}, line={self._line})"]
 
     def stmt_OutputStmt(self, stmt: ir.OutputStmt) -> list[str]:
@@ -503,6 +511,7 @@ class Generator:
 
     def stmt_CodeStmt(self, stmt: ir.CodeStmt) -> list[str]:
         self.has_job = True
+        self.help_jobs.append((stmt.option, stmt.filename, self._line))
         args = [repr(stmt.option)]
         if stmt.args:
             eqs, *unknowns = stmt.args

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import black
 import jinja2
+from al2py_runtime.cli import help_text
 
 from . import __version__, ir, static_checks
 from .analysis import Analysis
@@ -53,6 +54,15 @@ def _source_literal(lines: tuple[str, ...]) -> str:
         chunks = [line[i : i + _CHUNK] for i in range(0, len(line), _CHUNK)]
         items.append("(\n" + "\n".join(repr(c) for c in chunks) + "\n)")
     return "(\n" + "".join(item + ",\n" for item in items) + ")"
+
+
+def _help_literal(text: str) -> str:
+    """The ``--help`` text as adjacent string literals, a line (or a piece of
+    a long line) each, all within 88 columns."""
+    pieces = []
+    for line in text.splitlines(keepends=True):
+        pieces += [line[i : i + _CHUNK] for i in range(0, len(line), _CHUNK)]
+    return "\n".join(repr(p) for p in pieces)
 
 
 def module_name(filename: str) -> str:
@@ -134,6 +144,9 @@ def convert(
         body="\n".join(body),
         source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
+        help_text=_help_literal(
+            help_text(source_name, generator.help_inputs, generator.help_jobs)
+        ),
         has_kane=generator.has_kane,
     )
     try:

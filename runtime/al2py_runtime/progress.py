@@ -1,0 +1,113 @@
+"""Progress while a generated module derives: never a silent wait.
+
+Importing a large model can take seconds.  While a generated module is being
+imported for more than :data:`AFTER` seconds and standard error is a terminal,
+one line on standard error names the Autolev statement being derived (the
+``# al>`` echo above the Python line running now) and the time so far; the
+line is cleared when the module is done.  Anywhere else (a pipe, a file, CI)
+nothing is written.
+
+>>> watch = ImportWatch("m.al", None)  # no module frame: nothing to watch
+>>> watch.start(); watch.stop()
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+import time
+from types import FrameType
+from typing import Any, TextIO
+
+__all__ = ["AFTER", "ImportWatch"]
+
+#: seconds of deriving before the progress line appears
+AFTER = 2.0
+#: seconds between updates of the line
+EVERY = 0.5
+
+_ECHO = "# al> "
+
+
+def _is_terminal(stream: Any) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):
+        return False
+
+
+class ImportWatch:
+    """Shows which statement the module in ``frame`` is deriving (see the
+    module docstring); :meth:`stop` when the module is done."""
+
+    def __init__(
+        self, filename: str, frame: FrameType | None, stream: TextIO | None = None
+    ) -> None:
+        self.filename = filename
+        self.stream = stream if stream is not None else sys.stderr
+        self._file = frame.f_code.co_filename if frame is not None else None
+        self._thread_id = threading.get_ident()
+        self._done = threading.Event()
+        self._shown = 0  # width of the line on screen
+        self._thread: threading.Thread | None = None
+
+    def start(self) -> None:
+        if self._file is None or not _is_terminal(self.stream):
+            return
+        self._thread = threading.Thread(target=self._watch, daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._done.set()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join()
+
+    # ----------------------------------------------------------- the watch
+
+    def _watch(self) -> None:
+        t0 = time.perf_counter()
+        if self._done.wait(AFTER):
+            return
+        while not self._done.is_set():
+            statement = self._statement()
+            if statement is None:  # the module stopped (an error): be quiet
+                break
+            self._show(f"{self.filename}: deriving {statement}", t0)
+            if self._done.wait(EVERY):
+                break
+        self._clear()
+
+    def _statement(self) -> str | None:
+        """The echoed source of the statement running now, '' if not known;
+        None once the module's frame is gone."""
+        frame = sys._current_frames().get(self._thread_id)
+        while frame is not None and frame.f_code.co_filename != self._file:
+            frame = frame.f_back
+        if frame is None:
+            return None
+        import linecache
+
+        lines = linecache.getlines(self._file, frame.f_globals)
+        for i in range(min(frame.f_lineno, len(lines)) - 1, -1, -1):
+            text = lines[i].strip()
+            if text.startswith(_ECHO):
+                return text[len(_ECHO) :]
+        return ""
+
+    def _show(self, text: str, t0: float) -> None:
+        text = f"{text[:60]} ({time.perf_counter() - t0:.0f} s)"
+        pad = " " * max(0, self._shown - len(text))
+        self._write("\r" + text + pad)
+        self._shown = len(text)
+
+    def _clear(self) -> None:
+        if self._shown:
+            self._write("\r" + " " * self._shown + "\r")
+            self._shown = 0
+
+    def _write(self, text: str) -> None:
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+        except (OSError, ValueError):  # a closed terminal: nothing to show
+            self._done.set()
