@@ -14,18 +14,8 @@ import re
 import textwrap
 from collections import defaultdict
 
-from al2py_runtime.vocabulary import (
-    BUILTINS,
-    FRAME_DECLS,
-    OBJECT_DECLS,
-    QUANTITY_DECLS,
-    Builtin,
-    Decl,
-    Form,
-    Kind,
-    Match,
-    Style,
-)
+from al2py_runtime import vocabulary as vocab
+from al2py_runtime.vocabulary import BUILTINS, Builtin, Decl, Form, Kind, Match, Style
 
 from . import ir
 from .analysis import (
@@ -152,7 +142,7 @@ class Generator:
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
         decl = Decl.of_keyword(stmt.keyword)
-        if decl in OBJECT_DECLS:
+        if decl in vocab.OBJECT_DECLS:
             return self._objects(stmt)
         if stmt.keyword == "MASS":
             return self._mass(stmt)
@@ -192,7 +182,7 @@ class Generator:
         idents = ", ".join(s.ident for s in syms)
         keys = ", ".join(repr(s.key) for s in syms)
         out = [f"{idents} = al.{stmt.keyword.lower()}({keys})"]
-        if Decl.of_keyword(stmt.keyword) in FRAME_DECLS:
+        if Decl.of_keyword(stmt.keyword) in vocab.FRAME_DECLS:
             for s in syms:
                 point = self.facts.table.physical(s.key + "O")
                 if point is not None and point.key in self.facts.mentioned:
@@ -275,7 +265,7 @@ class Generator:
         label = self._label(target)
         call = f"al.assign({label!r}, {value}, line={self._line})"
         if isinstance(target, ir.Name) and (
-            target.primes or sym.kind in QUANTITY_DECLS
+            target.primes or sym.kind in vocab.QUANTITY_DECLS
         ):
             return [call]
         return [f"{sym.ident} = {call}"]
@@ -323,7 +313,7 @@ class Generator:
             if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
-                bind = "" if sym.kind in QUANTITY_DECLS else f"{sym.ident} = "
+                bind = "" if sym.kind in vocab.QUANTITY_DECLS else f"{sym.ident} = "
                 return [f"{bind}al.update({sym.key!r}, {value}, line={self._line})"]
             if b is not None and b.name == "EIG" and len(expr.args) >= 2:
                 return self._eig_outputs(expr)
