@@ -44,6 +44,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from .elimination import eliminate
 from .kane import linear_terms
+from .vocabulary import complex_functions
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
@@ -689,31 +690,6 @@ class Intermediates:
 
 # ---------------------------------------------------------------- numbers
 
-_FUNCS: dict[type, Any] = {}
-
-
-def _funcs() -> dict[type, Any]:
-    if not _FUNCS:
-        import cmath
-
-        _FUNCS.update(
-            {
-                sp.sin: cmath.sin,
-                sp.cos: cmath.cos,
-                sp.tan: cmath.tan,
-                sp.asin: cmath.asin,
-                sp.acos: cmath.acos,
-                sp.atan: cmath.atan,
-                sp.sinh: cmath.sinh,
-                sp.cosh: cmath.cosh,
-                sp.tanh: cmath.tanh,
-                sp.exp: cmath.exp,
-                sp.log: cmath.log,
-                sp.Abs: abs,
-            }
-        )
-    return _FUNCS
-
 
 def _num(e: Any, env: dict) -> complex:
     """The value of a numeric expression (its intermediates in ``env``)."""
@@ -734,7 +710,7 @@ def _num(e: Any, env: dict) -> complex:
         if exp.is_Integer:
             return base ** int(exp)
         return base ** _num(exp, env)
-    f = _funcs().get(e.func)
+    f = complex_functions().get(e.func)
     if f is not None and len(e.args) == 1:
         return complex(f(_num(e.args[0], env)))
     if e.func is sp.atan2:

@@ -53,6 +53,8 @@ import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 
+from .vocabulary import numeric_namespace
+
 __all__ = [
     "BACKENDS",
     "BackendError",
@@ -273,11 +275,6 @@ def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
 
 # ----------------------------------------------------------------- lambdify
 
-_NAMESPACE = {
-    "trunc": lambda x: float(math.trunc(x)),
-    "nint": lambda x: math.copysign(math.floor(abs(x) + 0.5), x),
-}
-
 
 def _inline(spec: DynamicsSpec, exprs: list[Any]) -> list[Any]:
     """``exprs`` with the intermediates substituted (last to first)."""
@@ -324,7 +321,7 @@ def _lambdify(
         return lambda *a: []
     args, exprs, intermediates = _undummied(args, list(exprs), intermediates)
     return sp.lambdify(
-        args, exprs, modules=[_NAMESPACE, "math"], cse=cse_with(intermediates)
+        args, exprs, modules=[numeric_namespace(), "math"], cse=cse_with(intermediates)
     )
 
 

@@ -1,12 +1,10 @@
 """Autolev's library functions under Python-safe names for generated code.
 
 Where Autolev's function is sympy's, sympy's is re-exported unchanged
-(``sin``, ``atan2``, ``sqrt``, ...).  :data:`AUTOLEV_FUNCTIONS` maps each
-Autolev name to the name exported here; :data:`DEGREE_VARIANTS` gives the
-variants used while ``Degrees ON`` is in force.
+(``sin``, ``atan2``, ``sqrt``, ...).  Which Autolev name each stands for,
+and the variants used while ``Degrees ON`` is in force, are the built-in
+rows of :mod:`al2py_runtime.vocabulary`.
 
->>> AUTOLEV_FUNCTIONS["ROUND"], DEGREE_VARIANTS["COS"]
-('nint', 'cos_deg')
 >>> cos_deg(90), asin_deg(sp.Rational(1, 2))
 (0, 30)
 """
@@ -71,8 +69,6 @@ __all__ = [
     "tan_deg",
     "tanh",
     "trunc",
-    "AUTOLEV_FUNCTIONS",
-    "DEGREE_VARIANTS",
 ]
 
 #: Autolev ``ABS``.
@@ -257,43 +253,3 @@ def atan2_deg(y: Any, x: Any) -> sp.Expr:
     135
     """
     return _atrig_deg(atan2, y, x)
-
-
-#: Autolev function name -> name exported by this module.
-AUTOLEV_FUNCTIONS: dict[str, str] = {
-    "ABS": "Abs",
-    "SIN": "sin",
-    "COS": "cos",
-    "TAN": "tan",
-    "SINH": "sinh",
-    "COSH": "cosh",
-    "TANH": "tanh",
-    "ASIN": "asin",
-    "ACOS": "acos",
-    "ATAN": "atan",
-    "ATAN2": "atan2",
-    "LOG": "log",
-    "LOG10": "log10",
-    "EXP": "exp",
-    "SQR": "sqr",
-    "SQRT": "sqrt",
-    "FACTORIAL": "factorial",
-    "CEIL": "ceil",
-    "FLOOR": "floor",
-    "INT": "trunc",
-    "ROUND": "nint",
-    "MAX": "maxof",
-    "MIN": "minof",
-    "SIGN": "sign",
-}
-
-#: Autolev function name -> degree-mode variant (``Degrees ON``).
-DEGREE_VARIANTS: dict[str, str] = {
-    "SIN": "sin_deg",
-    "COS": "cos_deg",
-    "TAN": "tan_deg",
-    "ASIN": "asin_deg",
-    "ACOS": "acos_deg",
-    "ATAN": "atan_deg",
-    "ATAN2": "atan2_deg",
-}

@@ -36,6 +36,7 @@ from sympy.physics.mechanics import dynamicsymbols
 
 from .autoz import Intermediate
 from .kinematics import VectorMatrix
+from .vocabulary import printed_name
 
 __all__ = ["autolev_str", "element_labels", "format_response", "format_number"]
 
@@ -44,16 +45,6 @@ _t = dynamicsymbols._t
 # Precedence levels: a child printed with a lower level than its context needs
 # parentheses.
 _ADD, _MUL, _NEG, _POW, _ATOM = 10, 20, 15, 30, 40
-
-_FUNCTION_NAMES = {
-    "Abs": "ABS",
-    "ceiling": "CEIL",
-    "trunc": "INT",
-    "nint": "ROUND",
-    "Max": "MAX",
-    "Min": "MIN",
-    "factorial": "FACTORIAL",
-}
 
 
 def format_number(value: Any, digits: int = 7) -> str:
@@ -326,7 +317,7 @@ class _AutolevPrinter:
 
     def function(self, expr: sp.Function) -> str:
         name = type(expr).__name__
-        label = _FUNCTION_NAMES.get(name, name.upper())
+        label = printed_name(expr)
         args = expr.args
         if name in ("Max", "Min") and len(args) > 2:
             head = type(expr)(*args[1:])

@@ -39,13 +39,12 @@ from .progress import ImportWatch
 from .safety import guard_methods
 from .safety import register as register_module
 from .settings import Response, Settings
+from .vocabulary import OBJECT_DECLS
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
 #: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
 t = dynamicsymbols._t
-
-_OBJECT_KINDS = ("frame", "body", "particle", "point", "newtonian")
 
 
 @dataclass
@@ -441,7 +440,7 @@ class Workspace(Mapping):
     def _store_scalar(self, key: Key, value: Any) -> Any:
         entry = self._names.get(key.name)
         self._values.pop(key.name, None)
-        if entry is not None and entry.kind in _OBJECT_KINDS and not key.primes:
+        if entry is not None and entry.kind in OBJECT_DECLS and not key.primes:
             entry = None  # a quantity named like a frame or point (ruletest7)
         if entry is None or entry.kind == "quantity":
             if key.primes:
@@ -459,7 +458,7 @@ class Workspace(Mapping):
                 raise ValueError(f"{key.name} is defined in terms of itself")
             self._rhs[sym] = value
             return sym
-        if entry.kind in _OBJECT_KINDS:
+        if entry.kind in OBJECT_DECLS:
             raise ValueError(f"{key.name} is a {entry.kind}, not a scalar")
         rkey = self._rhs_key(key.name, key.primes)
         if isinstance(value, sp.Basic) and value.has(rkey) and rkey in self._rhs:

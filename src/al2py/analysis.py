@@ -18,9 +18,24 @@ from dataclasses import dataclass
 
 from al2py_runtime.records import INTEGRATION_DEFAULTS as _INTEGRATION_DEFAULTS
 from al2py_runtime.records import KINDS as _CODE_KINDS
+from al2py_runtime.vocabulary import (
+    BUILTINS,
+    FRAME_DECLS,
+    MASSIVE_DECLS,
+    OBJECT_DECLS,
+    POINT_DECLS,
+    QUANTITY_DECLS,
+    TIME_DECLS,
+    Builtin,
+    Decl,
+    Form,
+    Kind,
+    Match,
+    Style,
+    match,
+)
 
 from . import ir
-from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import (
     AutolevError,
     ErrorList,
@@ -28,10 +43,9 @@ from .errors import (
     SemanticError,
     UnsupportedError,
 )
-from .forms import FORM_KINDS, Form, match
 from .ir import stmt_exprs, walk_expr
 from .macros import expand, flatten
-from .naming import PHYSICAL_KINDS, Namer
+from .naming import Namer
 from .static_checks import matrix_sum_error, unknown_call_message
 
 __all__ = [
@@ -45,25 +59,9 @@ __all__ = [
     "walk_expr",
 ]
 
-SCALAR_KINDS = frozenset(
-    {"constant", "variable", "specified", "imaginary", "scalar", "time"}
-)
-_DECL_KIND = {
-    "CONSTANTS": "constant",
-    "VARIABLES": "variable",
-    "SPECIFIED": "specified",
-    "IMAGINARY": "imaginary",
-    "NEWTONIAN": "newtonian",
-    "FRAMES": "frame",
-    "BODIES": "body",
-    "PARTICLES": "particle",
-    "POINTS": "point",
-}
-_FRAME_KINDS = frozenset({"newtonian", "frame", "body"})
 #: Reserved names for the columns of generalized speeds (tutorial 2.4:
 #: "U_INDEPENDENT, U_INDEPENDENT', ... are reserved"), kind "speeds".
 SPEED_MATRICES = ("U_INDEPENDENT", "U_DEPENDENT", "U_AUXILIARY", "U_PARTIALS")
-_POINT_KINDS = frozenset({"point", "particle"})
 
 SOLVE_OPTIONS = frozenset({"GAUSS", "MINORS", "IMPLICIT"})
 _MATRIX_FIRST = frozenset({"DET", "INV", "TRANSPOSE", "EIG", "ROWS", "COLS", "ELEMENT"})
@@ -89,9 +87,10 @@ INTERACTIVE_WORDS = {
 
 #: Python names every generated module uses; user names avoid them.
 def _runtime_names() -> frozenset[str]:
-    from al2py_runtime.functions import AUTOLEV_FUNCTIONS, DEGREE_VARIANTS
-
-    return frozenset(AUTOLEV_FUNCTIONS.values()) | frozenset(DEGREE_VARIANTS.values())
+    library = [b for b in BUILTINS.values() if b.style is Style.FUNC]
+    return frozenset(b.python for b in library) | frozenset(
+        b.degrees.__name__ for b in library if b.degrees is not None
+    )
 
 
 RESERVED_IDENTIFIERS = (
@@ -123,7 +122,7 @@ RESERVED_IDENTIFIERS = (
 
 #: kinds whose values Units and computed Inputs may name: declared and
 #: assigned quantities.
-_VALUE_KINDS = ("constant", "variable", "specified", "scalar", "matrix")
+_VALUE_KINDS = QUANTITY_DECLS | {Decl.SCALAR, Decl.MATRIX}
 
 
 @dataclass
@@ -131,7 +130,7 @@ class Symbol:
     """Everything the analysis knows about one Autolev name."""
 
     key: str  # canonical spelling
-    kind: str  # constant, variable, specified, imaginary, scalar, matrix, vector, ...
+    kind: Decl
     ident: str
     span: ir.Span | None = None
     order: int = 0  # highest derivative order, for variables/specified
@@ -143,16 +142,8 @@ class Symbol:
 
     @property
     def value_kind(self) -> Kind:
-        if self.kind in SCALAR_KINDS:
-            return Kind.SCALAR
-        if self.kind in _FRAME_KINDS:
-            return Kind.FRAME
-        if self.kind in _POINT_KINDS:
-            return Kind.POINT
-        if self.kind == "speeds":
-            return Kind.MATRIX
         try:
-            return Kind(self.kind)
+            return Decl(self.kind).value_kind
         except ValueError:
             return Kind.UNKNOWN
 
@@ -165,15 +156,15 @@ class SymbolTable:
         self._symbols: dict[str, Symbol] = {}
         self._physical: dict[str, Symbol] = {}
         self._seq = 0
-        self.define("T", "time", "t")
-        self.define("PI", "constant", "pi")
+        self.define("T", Decl.TIME, "t")
+        self.define("PI", Decl.CONSTANT, "pi")
         for key in SPEED_MATRICES:
-            self.define(key, "speeds", key)
+            self.define(key, Decl.SPEEDS, key)
 
-    def define(self, key: str, kind: str, ident: str, **kw: object) -> Symbol:
+    def define(self, key: str, kind: Decl, ident: str, **kw: object) -> Symbol:
         self._seq += 1
         sym = Symbol(key, kind, ident, seq=self._seq, **kw)  # type: ignore[arg-type]
-        if kind in PHYSICAL_KINDS:
+        if kind in OBJECT_DECLS:
             self._physical[key] = sym
         else:
             self._symbols[key] = sym
@@ -203,7 +194,7 @@ class StmtFacts:
     degrees: bool = False
     target: Symbol | None = None  # symbol assigned by an Assign
     stop: bool = False  # EXIT/QUIT: nothing after this runs
-    form: Form | None = None  # syntactical form assigned (``P_O_P> = ...``)
+    form: Match | None = None  # syntactical form assigned (``P_O_P> = ...``)
     new_constants: tuple[Symbol, ...] = ()  # declared by Mass/Inertia items
     #: An interactive command with nothing to do in a batch run (``Pause``),
     #: and why.
@@ -238,7 +229,7 @@ class Facts:
     def of(self, stmt: ir.Stmt) -> StmtFacts:
         return self._stmt.get(stmt.nid, StmtFacts())
 
-    def resolution(self, node: ir.Name) -> Symbol | Form:
+    def resolution(self, node: ir.Name) -> Symbol | Match:
         found = self._resolved.get(node.nid)
         if found is None:  # never a guess: a miss is a bug, not a name to look up
             raise InternalError(f"{node.name} at {node.span} was not analysed")
@@ -264,7 +255,7 @@ class Facts:
 
     def is_point(self, spelling: str) -> bool:
         sym = self.table.physical(spelling)
-        return sym is not None and sym.kind in _POINT_KINDS
+        return sym is not None and sym.kind in POINT_DECLS
 
 
 # ------------------------------------------------------------------ helpers
@@ -291,9 +282,9 @@ class Analysis:
         self._as_value: set[int] = set()  # nids of Name nodes
         #: Name nodes where the context takes a frame or point (``Simprot``).
         self._as_object: set[int] = set()
-        #: What each Name node means (a :class:`Symbol` or a :class:`Form`),
+        #: What each Name node means (a :class:`Symbol` or a :class:`~al2py_runtime.vocabulary.Match`),
         #: and the kind of each expression, by node identity (``nid``).
-        self.resolved: dict[int, Symbol | Form] = {}
+        self.resolved: dict[int, Symbol | Match] = {}
         self.kinds: dict[int, Kind] = {}
         #: Facts of each statement, by ``nid``, filled by :meth:`run`.
         self.stmt_facts: dict[int, StmtFacts] = {}
@@ -313,16 +304,16 @@ class Analysis:
         """Fix every Python identifier up front (see :mod:`al2py.naming`)."""
         flat = list(flatten(stmts))
         for s in flat:
-            if isinstance(s, ir.Declaration) and s.keyword in _DECL_KIND:
-                kind = _DECL_KIND[s.keyword]
-                if kind in PHYSICAL_KINDS:
+            if isinstance(s, ir.Declaration) and Decl.of_keyword(s.keyword):
+                kind = Decl.of_keyword(s.keyword)
+                if kind in OBJECT_DECLS:
                     for name in self._decl_names(s):
                         self.namer.note_physical(name)
-                        if kind in _FRAME_KINDS:
+                        if kind in FRAME_DECLS:
                             self.namer.note_physical(name + "O")
         for s in flat:
-            if isinstance(s, ir.Declaration) and s.keyword in _DECL_KIND:
-                kind = _DECL_KIND[s.keyword]
+            if isinstance(s, ir.Declaration) and Decl.of_keyword(s.keyword):
+                kind = Decl.of_keyword(s.keyword)
                 for name in self._decl_names(s):
                     self._ident(name, kind)
             for e in stmt_exprs(s):
@@ -332,7 +323,7 @@ class Analysis:
                         self.mentioned.update(_parts(node.name))
                     elif isinstance(node, ir.IndexedNames):
                         for n in node.expand():
-                            self._ident(n, "scalar")
+                            self._ident(n, Decl.SCALAR)
 
     def _decl_names(self, s: ir.Declaration) -> Iterator[str]:
         for item in s.items:
@@ -341,14 +332,14 @@ class Analysis:
             elif isinstance(item.target, ir.IndexedNames):
                 yield from item.target.expand()
 
-    def _ident(self, spelling: str, kind: str) -> str:
+    def _ident(self, spelling: str, kind: Decl) -> str:
         key = spelling.upper()
-        if key in ("T", "PI", "0>", "1>>") or (key == "I" and kind == "imaginary"):
+        if key in ("T", "PI", "0>", "1>>") or (key == "I" and kind == Decl.IMAGINARY):
             return {"T": "t", "PI": "pi", "I": "I"}.get(key, key)
-        ns = ("phys:" if kind in PHYSICAL_KINDS else "") + key
+        ns = ("phys:" if kind in OBJECT_DECLS else "") + key
         return self.namer.assign(ns, spelling, kind)
 
-    def ident(self, spelling: str, kind: str = "scalar") -> str:
+    def ident(self, spelling: str, kind: Decl = Decl.SCALAR) -> str:
         """The Python identifier for an Autolev name."""
         return self._ident(spelling, kind)
 
@@ -356,17 +347,17 @@ class Analysis:
 
     def is_frame(self, name: str) -> bool:
         sym = self.table.physical(name)
-        return sym is not None and sym.kind in _FRAME_KINDS
+        return sym is not None and sym.kind in FRAME_DECLS
 
     def is_point(self, name: str) -> bool:
         sym = self.table.physical(name)
-        return sym is not None and sym.kind in _POINT_KINDS
+        return sym is not None and sym.kind in POINT_DECLS
 
     def is_body(self, name: str) -> bool:
         sym = self.table.physical(name)
-        return sym is not None and sym.kind in ("body", "particle")
+        return sym is not None and sym.kind in MASSIVE_DECLS
 
-    def form(self, node: ir.Name) -> Form | None:
+    def form(self, node: ir.Name) -> Match | None:
         """The syntactical form ``node`` spells (``V_P_N>``, ``A1>``), if any."""
         if node.key in ("0>", "1>>") or "_" not in node.name and not node.rank:
             return None
@@ -404,12 +395,7 @@ class Analysis:
                 f"undeclared name '{node.name}'{hint}", node.span, name=node.key
             )
         self.resolved[node.nid] = sym
-        if node.primes and sym.kind not in (
-            "variable",
-            "specified",
-            "scalar",
-            "speeds",
-        ):
+        if node.primes and sym.kind not in TIME_DECLS | {Decl.SCALAR, Decl.SPEEDS}:
             raise SemanticError(
                 f"'{node.name}' is a {sym.kind} and has no time derivative", node.span
             )
@@ -444,7 +430,7 @@ class Analysis:
             if expr.primes:
                 raise SemanticError(f"'{expr.name}' has no time derivative", expr.span)
             self.resolved[expr.nid] = form
-            return FORM_KINDS[form.kind]
+            return form.row.value_kind
         return self.lookup(expr).value_kind
 
     def _check_indices(self, indices: tuple[ir.Expr, ...]) -> None:
@@ -461,7 +447,7 @@ class Analysis:
         form = self.form(expr.base)
         if (
             form is not None
-            and form.kind == "dcm"
+            and form.kind is Form.DCM
             and self.table.get(expr.base.name) is None
         ):
             # ``N_A[1,1]``: an element of the direction-cosine matrix.
@@ -469,7 +455,7 @@ class Analysis:
             return Kind.SCALAR
         sym = self.lookup(expr.base)
         self._check_bounds(sym, expr)
-        if sym.kind not in ("matrix", "speeds"):
+        if sym.kind not in (Decl.MATRIX, Decl.SPEEDS):
             raise SemanticError(f"'{expr.base.name}' is not a matrix", expr.base.span)
         if len(expr.indices) > 2:
             raise SemanticError("a matrix element takes one or two indices", expr.span)
@@ -695,7 +681,7 @@ class Analysis:
                     )
 
     def _has_newtonian(self) -> bool:
-        return any(s.kind == "newtonian" for s in self.table)
+        return any(s.kind == Decl.NEWTONIAN for s in self.table)
 
     def _load_target(self, arg: ir.Expr, command: str) -> Kind:
         want = Kind.POINT if command == "FORCE" else Kind.FRAME
@@ -720,7 +706,7 @@ class Analysis:
                 "Constrain takes DEPENDENT[speeds] or AUXILIARY[speeds]", arg.span
             )
         sym = self.table.quantity(arg.base.key)
-        if sym is None or sym.kind != "matrix":
+        if sym is None or sym.kind != Decl.MATRIX:
             raise SemanticError(f"{arg.base.name} has not been assigned", arg.span)
         for i in arg.indices:
             assert isinstance(i, ir.Name)
@@ -888,20 +874,20 @@ class Analysis:
             return self._enter_mass(stmt)
         if stmt.keyword == "INERTIA":
             return self._enter_inertia(stmt)
-        kind = _DECL_KIND.get(stmt.keyword)
+        kind = Decl.of_keyword(stmt.keyword)
         if kind is None:
             raise UnsupportedError(
                 f"declaration {stmt.keyword} is not supported", stmt.span
             )
         for item in stmt.items:
             names, primes = self._decl_target(item, kind)
-            if item.values and kind not in ("constant", "specified"):
+            if item.values and kind not in (Decl.CONSTANT, Decl.SPECIFIED):
                 raise SemanticError(
                     f"{stmt.keyword.title()} cannot assign values", item.values[0].span
                 )
             if len(item.values) > 1:
                 raise SemanticError("one value per declared name", item.values[1].span)
-            if kind in PHYSICAL_KINDS and primes:
+            if kind in OBJECT_DECLS and primes:
                 raise SemanticError("objects have no derivatives", item.target.span)
             for name in names:
                 self._declare(name, kind, item, primes)
@@ -910,17 +896,17 @@ class Analysis:
         return self._facts()
 
     def _declare(
-        self, name: str, kind: str, item: ir.DeclItem, primes: int = 0
+        self, name: str, kind: Decl, item: ir.DeclItem, primes: int = 0
     ) -> Symbol:
         key = name.upper()
         old = self.table.quantity(key)
-        if old is not None and old.kind == "time":
+        if old is not None and old.kind == Decl.TIME:
             raise SemanticError(f"'{name}' is reserved (time)", item.target.span)
-        if kind in PHYSICAL_KINDS and "_" in name:
+        if kind in OBJECT_DECLS and "_" in name:
             raise SemanticError(
                 f"object names cannot contain underscores ('{name}')", item.target.span
             )
-        order = primes if kind in ("variable", "specified") else 0
+        order = primes if kind in TIME_DECLS else 0
         sym = self.table.define(
             key,
             kind,
@@ -930,8 +916,8 @@ class Analysis:
             sign=item.sign,
             has_rhs=bool(item.values),
         )
-        if kind in _FRAME_KINDS:
-            point = "particle" if kind == "body" else "point"
+        if kind in FRAME_DECLS:
+            point = Decl.PARTICLE if kind is Decl.BODY else Decl.POINT
             self.table.define(
                 key + "O", point, self._ident(name + "o", point), span=item.target.span
             )
@@ -1012,14 +998,16 @@ class Analysis:
                 sym.has_rhs = True
         return self._facts(new_constants=tuple(new))
 
-    def _decl_target(self, item: ir.DeclItem, kind: str) -> tuple[tuple[str, ...], int]:
+    def _decl_target(
+        self, item: ir.DeclItem, kind: Decl
+    ) -> tuple[tuple[str, ...], int]:
         target = item.target
         if isinstance(target, ir.Name):
             if target.rank:
                 raise SemanticError(
                     f"cannot declare '{target.name}' this way", target.span
                 )
-            if target.primes and kind not in ("variable", "specified"):
+            if target.primes and kind not in TIME_DECLS:
                 raise SemanticError(
                     f"only variables and specified quantities take primes ('{target.autolev}')",
                     target.span,
@@ -1047,13 +1035,13 @@ class Analysis:
                     f"a matrix element must be a scalar, not a {value_kind.value}",
                     stmt.value.span,
                 )
-            sym = self._assign_name(target.base, "matrix")
+            sym = self._assign_name(target.base, Decl.MATRIX)
             self._grow_shape(sym, [int_literal(i) for i in target.indices])
             return self._facts(target=sym)
         form = self.form(target)
         if form is not None:
-            want = FORM_KINDS[form.kind]
-            if form.kind == "unit" or target.primes:
+            want = form.row.value_kind
+            if form.kind is Form.UNIT or target.primes:
                 raise SemanticError(f"'{target.name}' cannot be assigned", target.span)
             if value_kind not in (want, Kind.UNKNOWN) and not (
                 want is Kind.VECTOR
@@ -1086,7 +1074,7 @@ class Analysis:
             sym = self.table.quantity(target.name)
             if sym is None:
                 raise SemanticError(f"undeclared name '{target.name}'", target.span)
-            if sym.kind not in ("variable", "specified"):
+            if sym.kind not in TIME_DECLS:
                 raise SemanticError(
                     f"'{target.name}' is a {sym.kind}; only variables have derivatives",
                     target.span,
@@ -1098,7 +1086,7 @@ class Analysis:
             sym.order = max(sym.order, target.primes)
             sym.has_rhs = True
             return self._facts(target=sym)
-        kind = "matrix" if value_kind is Kind.MATRIX else "scalar"
+        kind = Decl.MATRIX if value_kind is Kind.MATRIX else Decl.SCALAR
         sym = self._assign_name(target, kind)
         sym.shape = _literal_shape(stmt.value) if stmt.op in ("=", ":=") else None
         sym.of_vectors = (
@@ -1107,18 +1095,18 @@ class Analysis:
         )
         return self._facts(target=sym)
 
-    def _assign_name(self, target: ir.Name, kind: str) -> Symbol:
+    def _assign_name(self, target: ir.Name, kind: Decl) -> Symbol:
         sym = self.table.quantity(target.name)
         if (
             sym is not None
-            and sym.kind in ("time", "imaginary", "speeds")
+            and sym.kind in (Decl.TIME, Decl.IMAGINARY, Decl.SPEEDS)
             or target.key == "PI"
         ):
             raise SemanticError(
                 f"'{target.name}' is reserved and cannot be assigned", target.span
             )
-        if sym is not None and sym.kind in ("constant", "variable", "specified"):
-            if kind == "matrix":
+        if sym is not None and sym.kind in QUANTITY_DECLS:
+            if kind == Decl.MATRIX:
                 raise SemanticError(
                     f"'{target.name}' is a declared {sym.kind}, not a matrix",
                     target.span,
@@ -1149,7 +1137,7 @@ class Analysis:
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
                 return self._enter_command(expr, b)
-            if b is not None and b.name in DUAL_FUNCTIONS and expr.args:
+            if b is not None and b.dual and expr.args:
                 first = expr.args[0]
                 self.kind_of(expr)
                 if (
@@ -1158,7 +1146,7 @@ class Analysis:
                     and not self.form(first)
                 ):
                     sym = self.lookup(first)
-                    if sym.kind not in ("time", "imaginary") and sym.key != "PI":
+                    if sym.kind not in (Decl.TIME, Decl.IMAGINARY) and sym.key != "PI":
                         return self._facts(target=sym)
                 return self._facts()
             if b is not None and b.name == "EIG" and len(expr.args) >= 2:
@@ -1168,7 +1156,7 @@ class Analysis:
                         raise SemanticError(
                             "Eig(A, values, vectors) needs names", out.span
                         )
-                    self._assign_name(out, "matrix")
+                    self._assign_name(out, Decl.MATRIX)
                 return self._facts()
             if b is not None and b.name == "SOLVE":
                 self.kind_of(expr)
@@ -1294,7 +1282,7 @@ class Analysis:
                 if n.key in INTEGRATION_PARAMETERS and not n.primes:
                     continue
                 sym = self.lookup(n)
-                if sym.kind not in ("constant", "variable", "specified"):
+                if sym.kind not in QUANTITY_DECLS:
                     raise SemanticError(
                         f"Input takes constants and variables, not a {sym.kind}", n.span
                     )
@@ -1356,7 +1344,7 @@ class Analysis:
                 raise SemanticError("name the unknowns after the equations", eqs.span)
             for u in unknowns:
                 for n in self._input_names(u):
-                    if self.lookup(n).kind not in ("variable", "constant", "specified"):
+                    if self.lookup(n).kind not in QUANTITY_DECLS:
                         raise SemanticError(f"'{n.name}' cannot be an unknown", n.span)
         elif stmt.option in ("NONLINEAR",):
             raise SemanticError(
@@ -1429,9 +1417,9 @@ def _parts(name: str) -> set[str]:
     return {p for p in name.upper().rstrip(">").split("_") if p}
 
 
-def _kind_from_spelling(name: str) -> str:
+def _kind_from_spelling(name: str) -> Decl:
     rank = len(name) - len(name.rstrip(">"))
-    return {0: "scalar", 1: "vector", 2: "dyadic"}.get(rank, "polyadic")
+    return {0: Decl.SCALAR, 1: Decl.VECTOR, 2: Decl.DYADIC}.get(rank, Decl.POLYADIC)
 
 
 _COMMENTED_ASSIGNMENT = re.compile(r"\s*%*\s*([A-Za-z]\w*)'*\s*(?::=|[-+*/^]?=)")

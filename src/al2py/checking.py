@@ -23,6 +23,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
+from al2py_runtime.vocabulary import BUILTINS, Style, unit_vector
 from sympy.physics.vector import Dyadic, Vector
 
 from . import ir
@@ -104,29 +105,8 @@ def _unfinished(text: str) -> bool:
 # ------------------------------------------------------------- evaluation
 
 
-_UNIT_VECTOR = re.compile(r"^(\w+?)([123])>$")
 _Z_NAME = re.compile(r"^Z\d+$")
 _T = sp.Symbol("t")  # dynamicsymbols._t
-
-_FUNCS = {
-    "SIN": sp.sin,
-    "COS": sp.cos,
-    "TAN": sp.tan,
-    "SINH": sp.sinh,
-    "COSH": sp.cosh,
-    "TANH": sp.tanh,
-    "ASIN": sp.asin,
-    "ACOS": sp.acos,
-    "ATAN": sp.atan,
-    "ATAN2": sp.atan2,
-    "LOG": sp.log,
-    "EXP": sp.exp,
-    "SQRT": sp.sqrt,
-    "ABS": sp.Abs,
-    "SIGN": sp.sign,
-    "LOG10": lambda x: sp.log(x, 10),
-    "SQR": lambda x: x**2,
-}
 
 
 def _declared(ws: object, name: str) -> bool:
@@ -161,14 +141,14 @@ class _Evaluator:
             for _ in range(node.primes):
                 value = sp.diff(value, _T)
             return value
-        unit = _UNIT_VECTOR.match(key)
+        unit = unit_vector(key)
         if unit and node.primes == 0:
             try:
-                frame = ws.frame(unit.group(1))  # type: ignore[attr-defined]
+                frame = ws.frame(unit[0])  # type: ignore[attr-defined]
             except (KeyError, AttributeError):
                 pass
             else:
-                return (frame.x, frame.y, frame.z)[int(unit.group(2)) - 1]
+                return (frame.x, frame.y, frame.z)[unit[1] - 1]
         try:
             kind = ws.kind(key)  # type: ignore[attr-defined]
             if kind in (None, "value"):
@@ -203,10 +183,14 @@ class _Evaluator:
         return a**b
 
     def Call(self, node: ir.Call) -> object:  # noqa: N802
-        f = _FUNCS.get(node.key)
-        if f is None:
+        row = BUILTINS.get(node.key)
+        if (
+            row is None
+            or row.style is not Style.FUNC
+            or row.arity_error(len(node.args))
+        ):
             raise ValueError(f"cannot evaluate {node.func}(...) in a response")
-        return f(*(self(a) for a in node.args))
+        return row.implementation(*(self(a) for a in node.args))
 
     def MatrixLit(self, node: ir.MatrixLit) -> object:  # noqa: N802
         rows = [[self(e) for e in row] for row in node.rows]

@@ -3,7 +3,7 @@
 Statement emitters (``stmt_<Node>``) return lines of Python; expression
 emitters (``expr_<Node>``) return ``(code, precedence)`` so parentheses appear
 only where Python needs them.  Built-in functions are spelled through the
-table in :mod:`al2py.builtins`.  Every string that comes from the ``.al``
+rows of :mod:`al2py_runtime.vocabulary`.  Every string that comes from the ``.al``
 file reaches the output through :func:`repr` or a ``#`` comment, so a script
 cannot inject code.
 """
@@ -14,7 +14,8 @@ import re
 import textwrap
 from collections import defaultdict
 
-from al2py_runtime.functions import DEGREE_VARIANTS
+from al2py_runtime import vocabulary as vocab
+from al2py_runtime.vocabulary import BUILTINS, Builtin, Decl, Form, Kind, Match, Style
 
 from . import ir
 from .analysis import (
@@ -26,9 +27,7 @@ from .analysis import (
     int_literal,
     walk_expr,
 )
-from .builtins import BUILTINS, DUAL_FUNCTIONS, Builtin, Kind, Style
 from .errors import InternalError, SemanticError
-from .forms import Form
 from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
@@ -39,49 +38,12 @@ ATOM, POWER, UNARY, MUL, ADD = 100, 90, 80, 70, 60
 _RUNTIME = "al2py_runtime"
 _FUNCTIONS = "al2py_runtime.functions"
 _VECTOR = "sympy.physics.vector"
-#: Python spelling of each syntactical form's value (see al2py.forms).
-_FORM_GETTERS = {
-    "pos": "al.pos({0}, {1})",
-    "vel": "al.vel({0}, {1})",
-    "acc": "al.acc({0}, {1})",
-    "angvel": "al.ang_vel({0}, {1})",
-    "angacc": "al.ang_acc({0}, {1})",
-    "inertia": "al.inertia_dyadic({0}, {1})",
-    "force": "al.force_on({0})",
-    "torque": "al.torque_on({0})",
-    "dcm": "al.dcm({0}, {1})",
-}
-#: Assignments to syntactical forms: the runtime's setters, named (and with
-#: arguments in the order of) the sympy calls they make (``P_O_P> = v`` is
-#: sympy's ``P.set_pos(O, v)``).
-_FORM_SETTERS = {
-    "pos": "al.set_pos({1}, {0}, {value}, line={line})",
-    "vel": "al.set_vel({0}, {1}, {value}, line={line})",
-    "acc": "al.set_acc({0}, {1}, {value}, line={line})",
-    "angvel": "al.set_ang_vel({0}, {1}, {value}, line={line})",
-    "angacc": "al.set_ang_acc({0}, {1}, {value}, line={line})",
-    "inertia": "al.set_inertia_about({0}, {1}, {value}, line={line})",
-    "force": "al.set_force({0}, {value}, line={line})",
-    "torque": "al.set_torque({0}, {value}, line={line})",
-    "dcm": "al.set_dcm({0}, {1}, {value}, line={line})",
-}
 _UNIT_AXES = {"1": "x", "2": "y", "3": "z"}
 _POINT_THEORIES = {
     "V2PTS": "v2pt_theory",
     "A2PTS": "a2pt_theory",
     "V1PT": "v1pt_theory",
     "A1PT": "a1pt_theory",
-}
-#: Stand-alone commands that print a response (they take ``line=``).
-_RESPONDING = frozenset(
-    "SIMPROT DIRCOS ANGVEL KINDIFFS V2PTS A2PTS V1PT A1PT CONSTRAIN KANE".split()
-)
-_OBJECT_DECLS = {
-    "NEWTONIAN": "newtonian",
-    "FRAMES": "frames",
-    "BODIES": "bodies",
-    "PARTICLES": "particles",
-    "POINTS": "points",
 }
 _COMMENT_WIDTH = 84
 
@@ -183,18 +145,16 @@ class Generator:
         return [f"al.set({stmt.name.title()!r}, {arg})"]
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
-        if stmt.keyword in _OBJECT_DECLS:
+        decl = Decl.of_keyword(stmt.keyword)
+        if decl in vocab.OBJECT_DECLS:
             return self._objects(stmt)
         if stmt.keyword == "MASS":
             return self._mass(stmt)
         if stmt.keyword == "INERTIA":
             return self._inertia(stmt)
-        method = {
-            "CONSTANTS": "constants",
-            "VARIABLES": "variables",
-            "SPECIFIED": "specified",
-            "IMAGINARY": "imaginary",
-        }[stmt.keyword]
+        if decl is None:
+            raise InternalError(f"no emitter for declaration {stmt.keyword}")
+        method = stmt.keyword.lower()  # the runtime's declaration command
         if stmt.motion:
             method = "motion_variables"
         names: list[str] = []
@@ -225,8 +185,8 @@ class Generator:
         syms = [self.facts.object(n) for n in names]
         idents = ", ".join(s.ident for s in syms)
         keys = ", ".join(repr(s.key) for s in syms)
-        out = [f"{idents} = al.{_OBJECT_DECLS[stmt.keyword]}({keys})"]
-        if stmt.keyword in ("NEWTONIAN", "FRAMES", "BODIES"):
+        out = [f"{idents} = al.{stmt.keyword.lower()}({keys})"]
+        if Decl.of_keyword(stmt.keyword) in vocab.FRAME_DECLS:
             for s in syms:
                 point = self.facts.table.physical(s.key + "O")
                 if point is not None and point.key in self.facts.mentioned:
@@ -289,11 +249,11 @@ class Generator:
                 op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
                 value = f"{self.expr(target)} {op} ({value})"
             form = self._facts.form
-            setter = _FORM_SETTERS.get(form.kind)
+            setter = form.row.setter
             if setter is None or target.primes:
                 return [f"al.assign({target.key!r}, {value}, line={self._line})"]
-            objs = [self._object(p) for p in form.parts]
-            return [setter.format(*objs, value=value, line=self._line)]
+            objs = [self._object(form.parts[i]) for i in form.row.setter_order]
+            return [f"al.{setter}({', '.join(objs)}, {value}, line={self._line})"]
         sym = self._facts.target
         if sym is None:
             raise InternalError("assignment without a target symbol")
@@ -309,7 +269,7 @@ class Generator:
         label = self._label(target)
         call = f"al.assign({label!r}, {value}, line={self._line})"
         if isinstance(target, ir.Name) and (
-            target.primes or sym.kind in ("constant", "variable", "specified")
+            target.primes or sym.kind in vocab.QUANTITY_DECLS
         ):
             return [call]
         return [f"{sym.ident} = {call}"]
@@ -321,7 +281,7 @@ class Generator:
         return self.expr(node)
 
     def _current(self, sym: Symbol) -> str:
-        if sym.kind in ("matrix", "vector", "dyadic"):
+        if sym.kind in (Decl.MATRIX, Decl.VECTOR, Decl.DYADIC):
             return sym.ident
         return f"al.val({sym.ident})"
 
@@ -354,18 +314,10 @@ class Generator:
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
                 return [*self._sympy_hint(expr, b), self._command(expr, b)]
-            if (
-                b is not None
-                and b.name in DUAL_FUNCTIONS
-                and self._facts.target is not None
-            ):
+            if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
-                bind = (
-                    ""
-                    if sym.kind in ("constant", "variable", "specified")
-                    else f"{sym.ident} = "
-                )
+                bind = "" if sym.kind in vocab.QUANTITY_DECLS else f"{sym.ident} = "
                 return [f"{bind}al.update({sym.key!r}, {value}, line={self._line})"]
             if b is not None and b.name == "EIG" and len(expr.args) >= 2:
                 return self._eig_outputs(expr)
@@ -417,7 +369,7 @@ class Generator:
             return "\n".join(calls)
         else:
             code = self._args(tuple(args), b)
-        if b.name in _RESPONDING:
+        if b.responds:  # it prints a response: say which line
             code += f"{', ' if code else ''}line={self._line}"
         return f"al.{method}({code})"
 
@@ -555,12 +507,12 @@ class Generator:
         if node.key == "1>>":
             return "al.unit_dyadic()", ATOM
         sym = self.facts.resolution(node)
-        if isinstance(sym, Form):
+        if isinstance(sym, Match):
             return self._form(sym), ATOM
-        if sym.kind == "speeds":
+        if sym.kind == Decl.SPEEDS:
             return self._speed_matrix(sym, node), ATOM
         ident = sym.ident
-        if sym.kind == "time":
+        if sym.kind == Decl.TIME:
             self.imports.use(_RUNTIME, "t")
         elif ident == "pi":
             self.imports.use("sympy", "pi")
@@ -568,7 +520,7 @@ class Generator:
             self.imports.use("sympy", "I")
         if not node.primes:
             return ident, ATOM
-        if sym.kind == "scalar":
+        if sym.kind == Decl.SCALAR:
             code = f"al.dt({ident})"
             for _ in range(node.primes - 1):
                 code = f"al.dt({code})"
@@ -577,12 +529,12 @@ class Generator:
         order = "" if node.primes == 1 else f", {node.primes}"
         return f"{ident}.diff(t{order})", ATOM
 
-    def _form(self, form: Form) -> str:
-        if form.kind == "unit":
+    def _form(self, form: Match) -> str:
+        if form.kind is Form.UNIT:
             frame = self._object(form.parts[0])
             return f"{frame}.{_UNIT_AXES[form.parts[1]]}"
         objs = [self._object(p) for p in form.parts]
-        return _FORM_GETTERS[form.kind].format(*objs)
+        return f"al.{form.row.getter}({', '.join(objs)})"
 
     def _object(self, name: str) -> str:
         return self.facts.object(name).ident
@@ -671,8 +623,8 @@ class Generator:
             return emit(node, b), ATOM
         if b.style is Style.FUNC:
             name = b.python
-            if self._facts.degrees and b.name in DEGREE_VARIANTS:
-                name = DEGREE_VARIANTS[b.name]
+            if self._facts.degrees and b.degrees is not None:
+                name = b.degrees.__name__
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:
@@ -778,9 +730,9 @@ class Generator:
 
     def _resolved_ident(self, node: ir.Name) -> str:
         sym = self.facts.resolution(node)
-        if isinstance(sym, Form):
+        if isinstance(sym, Match):
             return self._form(sym)
-        if sym.kind == "speeds":
+        if sym.kind == Decl.SPEEDS:
             return self._speed_matrix(sym, node)
         return sym.ident
 

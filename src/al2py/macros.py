@@ -28,8 +28,9 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from al2py_runtime.vocabulary import BUILTINS, by_spelling
+
 from . import ir
-from .builtins import BUILTINS, by_spelling
 from .errors import MacroError, ParseError
 from .ir import map_expr
 
@@ -610,7 +611,7 @@ class Expander:
 
 def _spelled(call: ir.Call) -> ir.Call | None:
     """``inverse(M)`` as ``Inv(M)``: a longer spelling of a built-in that
-    no macro file defines (:func:`al2py.builtins.by_spelling`)."""
+    no macro file defines (:func:`al2py_runtime.vocabulary.by_spelling`)."""
     builtin = by_spelling(call.func)
     if builtin is None or builtin.name == call.key:
         return None

@@ -30,10 +30,11 @@ import builtins
 import keyword
 import re
 
-__all__ = ["Namer", "PHYSICAL_KINDS"]
+from al2py_runtime.vocabulary import OBJECT_DECLS, Decl
 
-PHYSICAL_KINDS = frozenset({"newtonian", "frame", "body", "particle", "point"})
-_SUFFIX = {"vector": "_vec", "dyadic": "_dyad", "polyadic": "_poly"}
+__all__ = ["Namer"]
+
+_SUFFIX = {Decl.VECTOR: "_vec", Decl.DYADIC: "_dyad", Decl.POLYADIC: "_poly"}
 _VALID = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _PYTHON_NAMES = (
     frozenset(keyword.kwlist)
@@ -62,7 +63,7 @@ class Namer:
     def get(self, key: str) -> str | None:
         return self._by_key.get(key)
 
-    def assign(self, key: str, spelling: str, kind: str) -> str:
+    def assign(self, key: str, spelling: str, kind: Decl) -> str:
         """The identifier for canonical ``key`` (first call decides)."""
         if key in self._by_key:
             return self._by_key[key]
@@ -73,7 +74,7 @@ class Namer:
                 base = "n_" + base
         base += _SUFFIX.get(kind, "")
         shared = key.rstrip(">") in self._physical and kind not in _SUFFIX
-        if kind not in PHYSICAL_KINDS and shared:
+        if kind not in OBJECT_DECLS and shared:
             base += "_val"
         if base in _PYTHON_NAMES or base in self._reserved or base.startswith("__"):
             base += "_"

@@ -23,6 +23,7 @@ import dataclasses
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
+from al2py_runtime.vocabulary import LIST_COMMANDS
 from antlr4 import CommonTokenStream, InputStream, Token
 from antlr4.error.ErrorListener import ErrorListener
 from antlr4.error.Errors import InputMismatchException
@@ -32,7 +33,6 @@ from . import ir
 from ._antlr.AutolevLexer import AutolevLexer
 from ._antlr.AutolevParser import AutolevParser
 from ._antlr.AutolevVisitor import AutolevVisitor
-from .builtins import LIST_COMMANDS
 from .errors import AutolevError, InternalError, ParseError, ParseErrorList
 
 __all__ = ["parse", "parse_partial", "span_text", "join_continuations"]

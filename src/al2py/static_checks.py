@@ -230,7 +230,7 @@ def unknown_call_message(name: str) -> str:
             f"the Autolev command '{name}' is not supported by al2py "
             f"({UNSUPPORTED_COMMANDS[key]})"
         )
-    from .builtins import BUILTINS
+    from al2py_runtime.vocabulary import BUILTINS
 
     pool = {b.lower(): b for b in BUILTINS}
     close = difflib.get_close_matches(name.lower(), list(pool), n=1, cutoff=0.6)

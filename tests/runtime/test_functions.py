@@ -6,17 +6,20 @@ import math
 
 import sympy as sp
 from al2py_runtime import functions as fn
+from al2py_runtime import vocabulary
 
 x = sp.Symbol("x", real=True)
 
 
 def test_table_names_exist():
-    for autolev, python in fn.AUTOLEV_FUNCTIONS.items():
-        assert autolev == autolev.upper()
-        assert hasattr(fn, python), python
-    for autolev, python in fn.DEGREE_VARIANTS.items():
-        assert autolev in fn.AUTOLEV_FUNCTIONS
-        assert hasattr(fn, python)
+    """Every library row's implementation is what generated modules import
+    from ``al2py_runtime.functions`` under the row's Python name."""
+    rows = [b for b in vocabulary.BUILTINS.values() if b.style is vocabulary.Style.FUNC]
+    for row in rows:
+        assert row.name == row.name.upper()
+        assert getattr(fn, row.python) is row.implementation, row.name
+        if row.degrees is not None:
+            assert getattr(fn, row.degrees.__name__) is row.degrees
     expected = {
         "SIN",
         "COS",
@@ -29,7 +32,9 @@ def test_table_names_exist():
         "LOG10",
         "CEIL",
     }
-    assert expected <= set(fn.AUTOLEV_FUNCTIONS)
+    assert expected <= {row.name for row in rows}
+    degrees = {r.name for r in rows if r.degrees}
+    assert degrees == set("SIN COS TAN ASIN ACOS ATAN ATAN2".split())
 
 
 def test_reexports_are_sympy():

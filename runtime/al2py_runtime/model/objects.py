@@ -16,6 +16,7 @@ from sympy.physics.vector import (
 )
 
 from .. import kinematics as kin
+from ..vocabulary import Decl, Form, match
 from .state import _as_dyadic, _Body
 
 __all__ = ["Objects"]
@@ -24,7 +25,7 @@ __all__ = ["Objects"]
 class Objects:
     """Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned."""
 
-    def _new_point(self, name: str, kind: str = "point") -> Point:
+    def _new_point(self, name: str, kind: Decl = Decl.POINT) -> Point:
         st = self._mech
         p = Point(name.upper())
         st.points[name.upper()] = p
@@ -32,12 +33,12 @@ class Objects:
         self.ws._declare(name, kind, p)
         return p
 
-    def _new_frame(self, name: str, kind: str) -> ReferenceFrame:
+    def _new_frame(self, name: str, kind: Decl) -> ReferenceFrame:
         st = self._mech
         f = ReferenceFrame(name.upper())
         st.frames[name.upper()] = f
         self.ws._declare(name, kind, f)
-        origin = self._new_point(name.upper() + "O", "point")
+        origin = self._new_point(name.upper() + "O", Decl.POINT)
         st.fixed_in[origin] = f
         return f
 
@@ -45,20 +46,20 @@ class Objects:
 
     def newtonian(self, name: str) -> ReferenceFrame:
         """``Newtonian N``: frame N and point NO fixed in N."""
-        f = self._new_frame(name, "newtonian")
+        f = self._new_frame(name, Decl.NEWTONIAN)
         self._mech.newtonian = f
         return f
 
     def frames(self, *names: str) -> Any:
         """``Frames A, B``: frames and their fixed points AO, BO."""
-        return kin.one_or_tuple([self._new_frame(n, "frame") for n in names])
+        return kin.one_or_tuple([self._new_frame(n, Decl.FRAME) for n in names])
 
     def bodies(self, *names: str) -> Any:
         """``Bodies A, B``: frames and mass centers AO, BO."""
         out = []
         st = self._mech
         for n in names:
-            f = self._new_frame(n, "body")
+            f = self._new_frame(n, Decl.BODY)
             st.bodies[f] = _Body(f, self.point(n.upper() + "O"))
             st.massive.append(f)
             out.append(f)
@@ -69,7 +70,7 @@ class Objects:
         out = []
         st = self._mech
         for n in names:
-            p = self._new_point(n, "particle")
+            p = self._new_point(n, Decl.PARTICLE)
             st.particles[p] = None
             st.massive.append(p)
             out.append(p)
@@ -147,39 +148,24 @@ class Objects:
     # --------------------------------------------------- syntactical forms
 
     def _parse_form(self, name: str) -> tuple | None:
-        if "_" not in name:
-            return None
+        """``(form, *objects)`` for a syntactical form of declared objects
+        (:func:`al2py_runtime.vocabulary.match`), else None."""
         st = self._mech
-        base = name.rstrip(">")
-        arrows = len(name) - len(base)
-        parts = base.split("_")
         pts, frs = st.points, st.frames
-        if arrows == 0 and len(parts) == 2:
-            if parts[0] in frs and parts[1] in frs:
-                return ("DCM", frs[parts[0]], frs[parts[1]])
+
+        def is_body(n: str) -> bool:
+            return (n in frs and frs[n] in st.bodies) or (
+                n in pts and pts[n] in st.particles
+            )
+
+        found = match(name, frs.__contains__, pts.__contains__, is_body)
+        if found is None or found.kind is Form.UNIT:
             return None
-        head = parts[0]
-        if arrows == 1 and len(parts) == 3:
-            a, b = parts[1], parts[2]
-            if head == "P" and a in pts and b in pts:
-                return ("POS", pts[a], pts[b])
-            if head in ("V", "A") and a in pts and b in frs:
-                return ("VEL" if head == "V" else "ACC", pts[a], frs[b])
-            if head in ("W", "ALF") and a in frs and b in frs:
-                return ("ANGVEL" if head == "W" else "ANGACC", frs[a], frs[b])
-            return None
-        if arrows == 1 and len(parts) == 2:
-            if head == "FORCE" and parts[1] in pts:
-                return ("FORCE", pts[parts[1]])
-            if head == "TORQUE" and parts[1] in frs:
-                return ("TORQUE", frs[parts[1]])
-            return None
-        if arrows == 2 and len(parts) == 3 and head == "I":
-            if parts[1] in frs and frs[parts[1]] in st.bodies and parts[2] in pts:
-                return ("INERTIA", frs[parts[1]], pts[parts[2]])
-            if parts[1] in pts and pts[parts[1]] in st.particles and parts[2] in pts:
-                return ("INERTIA", pts[parts[1]], pts[parts[2]])
-        return None
+        objs = [
+            frs[part] if role == "f" or (role == "b" and part in frs) else pts[part]
+            for role, part in zip(found.row.roles, found.parts, strict=True)
+        ]
+        return (found.kind, *objs)
 
     def _assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
         """Store a syntactical form (``P_O_Q>``, ``V_P_N>``, ``N_A``...).
@@ -195,14 +181,14 @@ class Objects:
         return self._set_form(kind, objs, value, key.name, line)
 
     def _set_form(
-        self, kind: str, objs: list, value: Any, label: str, line: int | None
+        self, kind: Form, objs: list, value: Any, label: str, line: int | None
     ) -> Any:
         """Give a frame, point or body one of its kinematic or mass
         properties (``value`` already normalized) and respond with ``label``."""
         st = self._mech
         if isinstance(value, Vector | Dyadic):
             value = kin.vmap(value, self.ws.normalize)
-        if kind == "DCM":
+        if kind is Form.DCM:
             a, b = objs
             m = sp.Matrix(value)
             if m.shape != (3, 3):
@@ -210,7 +196,7 @@ class Objects:
             b.orient_explicit(a, m)
             self.ws.respond(label, m, line=line)
             return m
-        if kind == "INERTIA":
+        if kind is Form.INERTIA:
             body, p = objs
             value = _as_dyadic(value)
             b = self._body(body)
@@ -218,27 +204,28 @@ class Objects:
             self.ws.respond(label, value, line=line)
             return value
         value = kin.as_vector(value)
-        if kind == "POS":
+        if kind is Form.POS:
             self._set_pos(objs[0], objs[1], value)
-        elif kind == "VEL":
+        elif kind is Form.VEL:
             st.vel[(objs[0], objs[1])] = value
             objs[0].set_vel(objs[1], value)
-        elif kind == "ACC":
+        elif kind is Form.ACC:
             st.acc[(objs[0], objs[1])] = value
-        elif kind == "ANGVEL":
+        elif kind is Form.ANGVEL:
             objs[0].set_ang_vel(objs[1], value)
-        elif kind == "ANGACC":
+        elif kind is Form.ANGACC:
             st.angacc[(objs[0], objs[1])] = value
             st.angacc[(objs[1], objs[0])] = -value
-        elif kind == "FORCE":
+        elif kind is Form.FORCE:
             st.forces[objs[0]] = value
-        elif kind == "TORQUE":
+        elif kind is Form.TORQUE:
             st.torques[objs[0]] = value
         self.ws.respond(label, value, line=line)
         return value
 
-    def _set(self, kind: str, objs: list, value: Any, label: str, line: Any) -> Any:
+    def _set(self, kind: Form, objs: list, value: Any, line: Any) -> Any:
         value = self.ws.normalize(value, rearrange=self.ws.settings.factoring)
+        label = kind.row.spell(*(o.name for o in objs))
         return self._set_form(kind, objs, value, label, line)
 
     # Autolev's assignments to syntactical forms, named after the sympy
@@ -248,39 +235,39 @@ class Objects:
     def set_pos(self, p: Point, o: Point, value: Any, *, line=None) -> Vector:
         """``P_O_P> = v``: P's position from O (``P.set_pos(O, v)``); Autolev
         positions reverse and chain."""
-        return self._set("POS", [o, p], value, f"P_{o.name}_{p.name}>", line)
+        return self._set(Form.POS, [o, p], value, line)
 
     def set_vel(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``V_P_N> = v`` (``P.set_vel(N, v)``)."""
-        return self._set("VEL", [p, frame], value, f"V_{p.name}_{frame.name}>", line)
+        return self._set(Form.VEL, [p, frame], value, line)
 
     def set_acc(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``A_P_N> = v`` (``P.set_acc(N, v)``)."""
-        return self._set("ACC", [p, frame], value, f"A_{p.name}_{frame.name}>", line)
+        return self._set(Form.ACC, [p, frame], value, line)
 
     def set_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``W_B_A> = w`` (``B.set_ang_vel(A, w)``)."""
-        return self._set("ANGVEL", [b, a], value, f"W_{b.name}_{a.name}>", line)
+        return self._set(Form.ANGVEL, [b, a], value, line)
 
     def set_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``ALF_B_A> = v`` (``B.set_ang_acc(A, v)``)."""
-        return self._set("ANGACC", [b, a], value, f"ALF_{b.name}_{a.name}>", line)
+        return self._set(Form.ANGACC, [b, a], value, line)
 
     def set_force(self, p: Point, value: Any, *, line=None) -> Vector:
         """``Force_P> = v``: the resultant force on P (a load ``(P, v)``)."""
-        return self._set("FORCE", [p], value, f"FORCE_{p.name}>", line)
+        return self._set(Form.FORCE, [p], value, line)
 
     def set_torque(self, b: ReferenceFrame, value: Any, *, line=None) -> Vector:
         """``Torque_B> = v``: the resultant torque on B (a load ``(B, v)``)."""
-        return self._set("TORQUE", [b], value, f"TORQUE_{b.name}>", line)
+        return self._set(Form.TORQUE, [b], value, line)
 
     def set_dcm(self, a: ReferenceFrame, b: ReferenceFrame, value, *, line=None):
         """``A_B = M`` (``B.orient_explicit(A, M)``)."""
-        return self._set("DCM", [a, b], value, f"{a.name}_{b.name}", line)
+        return self._set(Form.DCM, [a, b], value, line)
 
     def set_inertia_about(self, body: Any, p: Point, value: Any, *, line=None):
         """``I_B_P>> = d``: the inertia dyadic of body B about P."""
-        return self._set("INERTIA", [body, p], value, f"I_{body.name}_{p.name}>>", line)
+        return self._set(Form.INERTIA, [body, p], value, line)
 
     def _form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""
@@ -292,22 +279,12 @@ class Objects:
         if form is None:
             return NotImplemented
         kind, *objs = form
-        getter = {
-            "DCM": self.dcm,
-            "POS": self.pos,
-            "VEL": self.vel,
-            "ACC": self.acc,
-            "ANGVEL": self.ang_vel,
-            "ANGACC": self.ang_acc,
-            "FORCE": self.force_on,
-            "TORQUE": self.torque_on,
-            "INERTIA": self.inertia_dyadic,
-        }[kind]
+        getter = getattr(self, kind.row.getter)
         try:
             value = getter(*objs)
         except ValueError as exc:
             raise KeyError(f"{key.name}: {exc}") from None
-        if kind == "DCM" and key.index:
+        if kind is Form.DCM and key.index:
             if len(key.index) != 2:
                 raise KeyError(f"{key}: use two indices")
             i, j = key.index

@@ -1,48 +1,67 @@
-"""The table of Autolev's built-in functions and commands.
+"""Autolev's built-in functions and commands: one row each.
 
-Each entry says how many arguments a built-in takes, what kind of value it
-returns, and how the generator spells it in Python:
+A row (:class:`Builtin`) says how many arguments a built-in takes, what kind
+of value it returns (a rule on the argument kinds), how the runtime spells
+it, and, for a library function, its implementation, its ``Degrees ON``
+variant, the sympy function its values print with, and the plain-number
+function the numeric backends use.  The styles:
 
-* ``FUNC``: a library function imported from ``al2py_runtime.functions``
-  (``SIN`` -> ``sin``).
-* ``METHOD``: a workspace method (``EXPAND`` -> ``al.expand``); the runtime
-  resolves the first argument's right-hand side, as Autolev does.
-* ``SPECIAL``: emitted by a dedicated generator method (``Solve``, ``Eig`` with
-  three arguments, ``Evaluate``...).
-* ``PENDING``: valid Autolev that al2py does not translate yet; using it is a
-  clear ``not supported yet`` error, never silently dropped.
+* ``FUNC``: a library function that generated modules import from
+  :mod:`al2py_runtime.functions` (``SIN`` -> ``sin``);
+* ``METHOD``: a workspace method (``EXPAND`` -> ``al.expand``);
+* ``SPECIAL``: the transpiler emits it with a dedicated method (``Solve``,
+  ``Evaluate``...);
+* ``PENDING``: valid Autolev that al2py does not translate yet.
+
+>>> row = lookup("cos")
+>>> row.style, row.python, row.arity_error(2), row.degrees.__name__
+(<Style.FUNC: 'func'>, 'cos', 'Cos takes exactly 1 argument, not 2', 'cos_deg')
+>>> printed_name(sympy.ceiling(sympy.Symbol("x"))), by_spelling("inverse").name
+('CEIL', 'INV')
+
+A made-up function is one more row (:func:`registered` adds it for a while):
+
+>>> class hav(sympy.Function):
+...     '''A haversine that stays unevaluated.'''
+>>> with registered(library("HAVERSINE", "hav", hav)) as row:
+...     import al2py_runtime.functions as fn
+...     fn.hav is hav, printed_name(hav(sympy.Symbol("x")))
+(True, 'HAVERSINE')
+>>> lookup("haversine") is None
+True
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import cmath
+import math
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from enum import Enum
+from functools import cache
+from typing import Any
+
+import sympy
+
+from .. import functions as fn
+from .kinds import Kind
 
 __all__ = [
     "Style",
-    "Kind",
     "Builtin",
     "BUILTINS",
-    "DUAL_FUNCTIONS",
     "LIST_COMMANDS",
+    "library",
     "lookup",
     "by_spelling",
+    "register",
+    "unregister",
+    "registered",
+    "printed_name",
+    "numeric_namespace",
+    "complex_functions",
 ]
-
-
-class Kind(Enum):
-    """What an expression evaluates to."""
-
-    SCALAR = "scalar"
-    MATRIX = "matrix"
-    VECTOR = "vector"
-    DYADIC = "dyadic"
-    POLYADIC = "polyadic"
-    FRAME = "frame"
-    POINT = "point"
-    WORD = "word"
-    UNKNOWN = "unknown"
 
 
 class Style(Enum):
@@ -86,15 +105,10 @@ def _represent(kinds: list[Kind]) -> Kind:
 
 
 def _unknown(_: list[Kind]) -> Kind:
-    return Kind.UNKNOWN  # decided at run time (Partials: one vector or several)
-
-
-def _momentum(kinds: list[Kind]) -> Kind:
-    return Kind.UNKNOWN  # LINEAR/ANGULAR give vectors, GENERALIZED a matrix
-
-
-def _gyrostat(kinds: list[Kind]) -> Kind:
-    return Kind.UNKNOWN  # FRSTAR: matrix, ANGMOM: vector, KE: scalar
+    # Decided at run time: Partials gives one vector or several; Momentum's
+    # LINEAR/ANGULAR give vectors, GENERALIZED a matrix; Gyrostat's FRSTAR a
+    # matrix, ANGMOM a vector, KE a scalar.
+    return Kind.UNKNOWN
 
 
 def _first(kinds: list[Kind]) -> Kind:
@@ -123,7 +137,9 @@ def _coef(kinds: list[Kind]) -> Kind:
 
 @dataclass(frozen=True, slots=True)
 class Builtin:
-    name: str  # canonical Autolev spelling
+    """One Autolev built-in (see the module's docstring)."""
+
+    name: str  # canonical Autolev spelling, also the printed name
     style: Style
     python: str  # function or method name in the runtime
     min_args: int
@@ -131,7 +147,8 @@ class Builtin:
     result: KindRule = _scalar
     dual: bool = False  # ``Expand(E)`` alone means ``E := Expand(E)``
     issue: str = ""  # for PENDING: what brings it
-    statement: bool = False  # a stand-alone command that responds (``V2pts``)
+    statement: bool = False  # a stand-alone command (``V2pts``, ``Gravity``)
+    responds: bool = False  # it prints a response (generated calls pass line=)
     words: tuple[int, ...] = ()  # argument positions holding option words
     #: Argument positions that name a frame, body, particle or point; from
     #: ``objects_from`` on, every argument does (``Gravity(v>, A, B)``).  A
@@ -139,6 +156,25 @@ class Builtin:
     #: means the object there and the quantity elsewhere.
     objects: tuple[int, ...] = ()
     objects_from: int | None = None
+    #: FUNC: the function generated code calls (exported by
+    #: :mod:`al2py_runtime.functions` as ``python``).
+    implementation: Callable[..., Any] | None = None
+    #: FUNC: the variant used while ``Degrees ON`` is in force.
+    degrees: Callable[..., Any] | None = None
+    #: FUNC: the sympy function class its unevaluated values have (``MAX``
+    #: gives ``Max(...)``); by default the implementation, when a class.
+    head: type | None = None
+    #: FUNC: the function on plain numbers (float or complex) the numeric
+    #: backends call for ``head``; None when Python's ``math``/``cmath``
+    #: spell it as sympy does.
+    numeric: Callable[..., Any] | None = None
+
+    @property
+    def sympy_head(self) -> type | None:
+        if self.head is not None:
+            return self.head
+        impl = self.implementation
+        return impl if isinstance(impl, type) else None
 
     def takes_object(self, i: int) -> bool:
         return i in self.objects or (
@@ -160,8 +196,39 @@ class Builtin:
         return f"{self.name.title()} takes {want} argument{plural}, not {n}"
 
 
-def _func(name: str, python: str, n: int = 1, hi: int | None = -1) -> Builtin:
-    return Builtin(name, Style.FUNC, python, n, n if hi == -1 else hi, _first)
+def library(
+    name: str,
+    python: str,
+    implementation: Callable[..., Any],
+    n: int = 1,
+    hi: int | None = -1,
+    **more: Any,
+) -> Builtin:
+    """The row of a library function: ``n`` arguments (up to ``hi``; None
+    for no limit), the kind of its first argument."""
+    top = n if hi == -1 else hi
+    return Builtin(
+        name, Style.FUNC, python, n, top, _first, implementation=implementation, **more
+    )
+
+
+def _trunc(x: Any) -> float:
+    """``INT`` on a plain number: toward zero."""
+    return float(math.trunc(_real(x)))
+
+
+def _nint(x: Any) -> float:
+    """``ROUND`` on a plain number: halves away from zero."""
+    x = _real(x)
+    return math.copysign(math.floor(abs(x) + 0.5), x)
+
+
+def _real(x: Any) -> float:
+    if isinstance(x, complex):
+        if x.imag:
+            raise ValueError(f"{x} is not real")
+        return x.real
+    return x
 
 
 _NUMERICS = "numerical CODE jobs"
@@ -175,6 +242,7 @@ def _command(
     words: tuple[int, ...] = (),
     objects: tuple[int, ...] = (),
     objects_from: int | None = None,
+    responds: bool = True,
 ) -> Builtin:
     return Builtin(
         name,
@@ -183,6 +251,7 @@ def _command(
         lo,
         hi,
         statement=True,
+        responds=responds,
         words=words,
         objects=objects,
         objects_from=objects_from,
@@ -195,30 +264,30 @@ def _pending(name: str, issue: str, lo: int = 0, hi: int | None = None) -> Built
 
 _TABLE: list[Builtin] = [
     # -- library functions (tutorial Summary: operators and library functions)
-    _func("ABS", "Abs"),
-    _func("SIN", "sin"),
-    _func("COS", "cos"),
-    _func("TAN", "tan"),
-    _func("SINH", "sinh"),
-    _func("COSH", "cosh"),
-    _func("TANH", "tanh"),
-    _func("ASIN", "asin"),
-    _func("ACOS", "acos"),
-    _func("ATAN", "atan"),
-    _func("ATAN2", "atan2", 2),
-    _func("LOG", "log"),
-    _func("LOG10", "log10"),
-    _func("EXP", "exp"),
-    _func("SQR", "sqr"),
-    _func("SQRT", "sqrt"),
-    _func("FACTORIAL", "factorial"),
-    _func("CEIL", "ceil"),
-    _func("FLOOR", "floor"),
-    _func("INT", "trunc"),
-    _func("ROUND", "nint"),
-    _func("MAX", "maxof", 2, None),
-    _func("MIN", "minof", 2, None),
-    _func("SIGN", "sign"),
+    library("ABS", "Abs", fn.Abs, numeric=abs),
+    library("SIN", "sin", fn.sin, degrees=fn.sin_deg),
+    library("COS", "cos", fn.cos, degrees=fn.cos_deg),
+    library("TAN", "tan", fn.tan, degrees=fn.tan_deg),
+    library("SINH", "sinh", fn.sinh),
+    library("COSH", "cosh", fn.cosh),
+    library("TANH", "tanh", fn.tanh),
+    library("ASIN", "asin", fn.asin, degrees=fn.asin_deg),
+    library("ACOS", "acos", fn.acos, degrees=fn.acos_deg),
+    library("ATAN", "atan", fn.atan, degrees=fn.atan_deg),
+    library("ATAN2", "atan2", fn.atan2, 2, degrees=fn.atan2_deg),
+    library("LOG", "log", fn.log),
+    library("LOG10", "log10", fn.log10),
+    library("EXP", "exp", fn.exp),
+    library("SQR", "sqr", fn.sqr),
+    library("SQRT", "sqrt", fn.sqrt),
+    library("FACTORIAL", "factorial", fn.factorial),
+    library("CEIL", "ceil", fn.ceil),
+    library("FLOOR", "floor", fn.floor),
+    library("INT", "trunc", fn.trunc, numeric=_trunc),
+    library("ROUND", "nint", fn.nint, numeric=_nint),
+    library("MAX", "maxof", fn.maxof, 2, None, head=sympy.Max),
+    library("MIN", "minof", fn.minof, 2, None, head=sympy.Min),
+    library("SIGN", "sign", fn.sign),
     # -- mathematical commands
     Builtin("D", Style.METHOD, "d", 2, 3, _d, objects=(2,)),
     Builtin("DT", Style.METHOD, "dt", 1, 2, _first, objects=(1,)),
@@ -276,7 +345,7 @@ _TABLE: list[Builtin] = [
         "momentum",
         1,
         None,
-        _momentum,
+        _unknown,
         words=(0,),
         objects_from=1,
     ),
@@ -290,11 +359,11 @@ _TABLE: list[Builtin] = [
         "gyrostat",
         5,
         5,
-        _gyrostat,
+        _unknown,
         words=(0, 1),
         objects=(2, 3),
     ),
-    # -- stand-alone physics commands (statements; they respond)
+    # -- stand-alone physics commands (statements; most respond)
     _command("SIMPROT", "simprot", 4, 4, objects=(0, 1)),
     _command("DIRCOS", "dircos", 4, None, words=(2,), objects=(0, 1)),
     _command("ANGVEL", "angvel", 2, None, words=(2,), objects=(0, 1)),
@@ -303,9 +372,9 @@ _TABLE: list[Builtin] = [
     _command("A2PTS", "a2pts", 4, 4, objects=(0, 1, 2, 3)),
     _command("V1PT", "v1pt", 4, 4, objects=(0, 1, 2, 3)),
     _command("A1PT", "a1pt", 4, 4, objects=(0, 1, 2, 3)),
-    _command("GRAVITY", "gravity", 1, None, objects_from=1),
-    _command("FORCE", "add_force", 2, 2, objects=(0,)),
-    _command("TORQUE", "add_torque", 2, 2, objects=(0,)),
+    _command("GRAVITY", "gravity", 1, None, objects_from=1, responds=False),
+    _command("FORCE", "add_force", 2, 2, objects=(0,), responds=False),
+    _command("TORQUE", "add_torque", 2, 2, objects=(0,), responds=False),
     _command("CONSTRAIN", "constrain", 1, None),
     _command("KANE", "kane", 0, None),
     Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2),
@@ -314,11 +383,12 @@ _TABLE: list[Builtin] = [
     *(_pending(n, _NUMERICS) for n in ("SPLINE",)),
 ]
 
+#: Every built-in by its canonical (upper-case) name.
 BUILTINS: dict[str, Builtin] = {b.name: b for b in _TABLE}
 
-#: Built-ins that, used alone on a line with a name as first argument, assign
-#: the result back to that name (tutorial §6.3).
-DUAL_FUNCTIONS = frozenset(b.name for b in _TABLE if b.dual) | {"EXPRESS"}
+#: Command words followed by a list (``Encode A, B'``, ``Units T=S``); any
+#: other word followed by one word or number is a setting (``Digits 7``).
+LIST_COMMANDS = frozenset({"ENCODE", "UNITS"})
 
 
 def lookup(name: str) -> Builtin | None:
@@ -351,6 +421,92 @@ def by_spelling(name: str) -> Builtin | None:
     return BUILTINS[max(stems, key=len)] if stems else None
 
 
-#: Command words followed by a list (``Encode A, B'``, ``Units T=S``); any
-#: other word followed by one word or number is a setting (``Digits 7``).
-LIST_COMMANDS = frozenset({"ENCODE", "UNITS"})
+# ------------------------------------------------------------ registration
+
+
+def register(row: Builtin) -> Builtin:
+    """Add a built-in.  A library function's implementation (and degree
+    variant) become names of :mod:`al2py_runtime.functions`, which generated
+    modules import."""
+    if row.name in BUILTINS:
+        raise ValueError(f"{row.name} is already a built-in")
+    for impl in (row.implementation, row.degrees):
+        if row.style is Style.FUNC and impl is not None:
+            name = row.python if impl is row.implementation else impl.__name__
+            if getattr(fn, name, impl) is not impl:
+                raise ValueError(f"al2py_runtime.functions already has {name}")
+            setattr(fn, name, impl)
+    BUILTINS[row.name] = row
+    _changed()
+    return row
+
+
+def unregister(name: str) -> None:
+    """Remove the built-in ``name`` added by :func:`register`."""
+    row = BUILTINS.pop(name.upper())
+    if row.style is Style.FUNC:
+        for attr in (row.python, getattr(row.degrees, "__name__", None)):
+            if attr is not None and hasattr(fn, attr):
+                delattr(fn, attr)
+    _changed()
+
+
+@contextmanager
+def registered(row: Builtin) -> Iterator[Builtin]:
+    """:func:`register` ``row`` for the ``with`` block."""
+    register(row)
+    try:
+        yield row
+    finally:
+        unregister(row.name)
+
+
+def _changed() -> None:
+    _printed_names.cache_clear()
+    numeric_namespace.cache_clear()
+    complex_functions.cache_clear()
+
+
+def _library() -> list[Builtin]:
+    return [b for b in BUILTINS.values() if b.style is Style.FUNC]
+
+
+# ------------------------------------------------------------ readers
+
+
+@cache
+def _printed_names() -> dict[str, str]:
+    return {b.sympy_head.__name__: b.name for b in _library() if b.sympy_head}
+
+
+def printed_name(expr: sympy.Basic) -> str:
+    """The Autolev name a sympy function application prints with: its
+    built-in's name, else the sympy name in capitals."""
+    name = type(expr).__name__
+    return _printed_names().get(name, name.upper())
+
+
+@cache
+def numeric_namespace() -> dict[str, Callable[..., Any]]:
+    """``lambdify``'s namespace for the built-ins whose number functions
+    Python's ``math`` does not spell as sympy does (``trunc``, ``nint``)."""
+    return {
+        b.sympy_head.__name__: b.numeric
+        for b in _library()
+        if b.numeric is not None and b.sympy_head is not None
+    }
+
+
+@cache
+def complex_functions() -> dict[type, Callable[[complex], Any]]:
+    """Sympy function class -> its one-argument function on complex numbers
+    (``cmath``'s, or the built-in's own ``numeric``)."""
+    out: dict[type, Callable[[complex], Any]] = {}
+    for b in _library():
+        head = b.sympy_head
+        if head is None or b.min_args != 1 or b.max_args != 1:
+            continue
+        f = b.numeric or getattr(cmath, head.__name__, None)
+        if f is not None:
+            out[head] = f
+    return out
