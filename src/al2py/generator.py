@@ -431,7 +431,12 @@ class Generator:
             pairs = []
             for item in stmt.items:
                 assert isinstance(item, ir.Equation) and isinstance(item.lhs, ir.Name)
-                word = ir.autolev_text(item.rhs, upper=False)
+                rhs = item.rhs
+                word = (
+                    rhs.text
+                    if isinstance(rhs, ir.UnitExpr)
+                    else ir.autolev_text(rhs, upper=False)
+                )
                 pairs.append(f"{item.lhs.autolev!r}: {word!r}")
             return [f"al.units_of({{{', '.join(pairs)}}}, line={self._line})"]
         raise InternalError(f"no emitter for {stmt.name}")
