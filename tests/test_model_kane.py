@@ -116,6 +116,45 @@ def test_kanes_method_matches_ode_function(tutorial, name):
         assert np.allclose(kane, ours, rtol=1e-8, atol=1e-8), (kane, ours)
 
 
+def test_tutor8_kanes_method_is_the_model_before_evaluate(tutorial):
+    """What ``kanes_method()`` represents (README): the script's bodies, loads
+    and kinematical equations with its constants as symbols, not ZERO as the
+    script changed it after Kane().  tutor8's ``Zero := Evaluate(Zero, L=1,
+    MA=10, MB=1, G=9.81)`` puts numbers in ZERO only; given the same numbers,
+    KanesMethod's matrices give ode_function()'s state derivatives, matched
+    by name: ode_function() lists the states in Autolev's order (U1, U2, X,
+    THETA, ...), KanesMethod in ``[q; u]`` order (X, THETA, U1, U2)."""
+    mod = tutorial("tutor8")
+    km = mod.kanes_method()
+    fixed = {mod.al.symbol(k): v for k, v in FIXED["tutor8"].items()}
+    free = km.mass_matrix_full.free_symbols | km.forcing_full.free_symbols
+    assert set(fixed) <= free  # symbols in the exported model ...
+    assert not set(fixed) & sp.Matrix(mod.AUTOLEV["ZERO"]).free_symbols  # not in ZERO
+    f, y0, names = mod.ode_function()
+    states = [*km.q, *km.u]
+    index = [names.index(mod.al.name_of(s)) for s in states]
+    assert index != list(range(len(states)))  # the orders differ
+    gains = {
+        mod.al.symbol(k): float(mod.al.input_value(k, True))
+        for k in ("K1", "K2", "K3", "K4")
+    }
+    rng = np.random.default_rng(22)
+    for _ in range(4):
+        y = rng.uniform(-2.0, 2.0, len(names))
+        at = fixed | gains | {s: y[i] for s, i in zip(states, index, strict=True)}
+        m_num = np.array(km.mass_matrix_full.subs(at).evalf(), dtype=float)
+        f_num = np.array(km.forcing_full.subs(at).evalf(), dtype=float).ravel()
+        kane = np.linalg.solve(m_num, f_num)
+        ours = np.asarray(f(0.0, y))[index]
+        assert np.allclose(kane, ours, rtol=1e-9, atol=1e-9), (kane, ours)
+        # without the script's numbers the model is another system
+        loose = {k: v for k, v in at.items() if k not in fixed}
+        loose |= {k: 2 * v for k, v in fixed.items()}
+        m2 = np.array(km.mass_matrix_full.subs(loose).evalf(), dtype=float)
+        f2 = np.array(km.forcing_full.subs(loose).evalf(), dtype=float).ravel()
+        assert not np.allclose(np.linalg.solve(m2, f2), ours, rtol=1e-3)
+
+
 def test_solve_ivp_on_ode_function_reproduces_run(tutorial):
     from scipy.integrate import solve_ivp
 
