@@ -213,6 +213,38 @@ def test_generated_source_speaks_sympy(name):
     assert "# al> " in code
     assert "al.set_pos(" in code
     if name == "tutor6":
+        assert "P_particle, Q_particle = al.particle(P), al.particle(Q)" in code
+        assert "kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=33))" in code
+        assert not re.search(r'al\.assign\("Q[AB]\'"', code)
         assert "al.set_pos(P, O_, LA * A.x, line=29)" in code
         assert "# sympy: A.orient_axis(N, N.z, QA)" in code
         assert "# sympy: Q.v2pt_theory(P, N, B)" in code
+
+
+@pytest.mark.parametrize("name", ["tutor6", "tutor8"])
+def test_module_holds_sympy_bodies_and_kd_eqs(tutorial, name):
+    """The module's RigidBody/Particle objects carry the declared masses and
+    are the bodies KanesMethod gets; its kd_eqs are sympy equations
+    ``Eq(q', rhs)`` equal to the runtime's (issue 22, module shape)."""
+    mod = tutorial(name)
+    if name == "tutor6":
+        bodies = {"P": (mod.P_particle, "MP"), "Q": (mod.Q_particle, "MQ")}
+        assert all(isinstance(b, Particle) for b, _m in bodies.values())
+    else:
+        bodies = {"A": (mod.A_body, "MA"), "B": (mod.B_body, "MB")}
+        assert all(isinstance(b, RigidBody) for b, _m in bodies.values())
+        assert mod.B_body.frame is mod.B and mod.B_body.masscenter is mod.Bo
+    for _name, (body, mass) in bodies.items():
+        assert body.mass == mod.al.symbol(mass)
+    eqs = mod.kd_eqs
+    assert eqs and all(isinstance(e, sp.Eq) for e in eqs)
+    coords = [e.lhs.expr for e in eqs]
+    rhs = {
+        sp.Derivative(q, t): mod.al.resolve(mod.AUTOLEV[mod.al.name_of(q) + "'"])
+        for q in coords
+    }
+    assert all(sp.simplify(e.rhs - rhs[e.lhs]) == 0 for e in eqs)
+    kd = {sp.Derivative(q, t) - r for q, r in ((e.lhs.expr, e.rhs) for e in eqs)}
+    assert set(mod.al.kd_eqs) <= kd
+    km = mod.kanes_method()
+    assert {id(b) for b in km.bodies} == {id(b) for b, _m in bodies.values()}
