@@ -116,6 +116,45 @@ def test_kanes_method_matches_ode_function(tutorial, name):
         assert np.allclose(kane, ours, rtol=1e-8, atol=1e-8), (kane, ours)
 
 
+def test_tutor8_kanes_method_is_the_model_before_evaluate(tutorial):
+    """What ``kanes_method()`` represents (README): the script's bodies, loads
+    and kinematical equations with its constants as symbols, not ZERO as the
+    script changed it after Kane().  tutor8's ``Zero := Evaluate(Zero, L=1,
+    MA=10, MB=1, G=9.81)`` puts numbers in ZERO only; given the same numbers,
+    KanesMethod's matrices give ode_function()'s state derivatives, matched
+    by name: ode_function() lists the states in Autolev's order (U1, U2, X,
+    THETA, ...), KanesMethod in ``[q; u]`` order (X, THETA, U1, U2)."""
+    mod = tutorial("tutor8")
+    km = mod.kanes_method()
+    fixed = {mod.al.symbol(k): v for k, v in FIXED["tutor8"].items()}
+    free = km.mass_matrix_full.free_symbols | km.forcing_full.free_symbols
+    assert set(fixed) <= free  # symbols in the exported model ...
+    assert not set(fixed) & sp.Matrix(mod.AUTOLEV["ZERO"]).free_symbols  # not in ZERO
+    f, y0, names = mod.ode_function()
+    states = [*km.q, *km.u]
+    index = [names.index(mod.al.name_of(s)) for s in states]
+    assert index != list(range(len(states)))  # the orders differ
+    gains = {
+        mod.al.symbol(k): float(mod.al.input_value(k, True))
+        for k in ("K1", "K2", "K3", "K4")
+    }
+    rng = np.random.default_rng(22)
+    for _ in range(4):
+        y = rng.uniform(-2.0, 2.0, len(names))
+        at = fixed | gains | {s: y[i] for s, i in zip(states, index, strict=True)}
+        m_num = np.array(km.mass_matrix_full.subs(at).evalf(), dtype=float)
+        f_num = np.array(km.forcing_full.subs(at).evalf(), dtype=float).ravel()
+        kane = np.linalg.solve(m_num, f_num)
+        ours = np.asarray(f(0.0, y))[index]
+        assert np.allclose(kane, ours, rtol=1e-9, atol=1e-9), (kane, ours)
+        # without the script's numbers the model is another system
+        loose = {k: v for k, v in at.items() if k not in fixed}
+        loose |= {k: 2 * v for k, v in fixed.items()}
+        m2 = np.array(km.mass_matrix_full.subs(loose).evalf(), dtype=float)
+        f2 = np.array(km.forcing_full.subs(loose).evalf(), dtype=float).ravel()
+        assert not np.allclose(np.linalg.solve(m2, f2), ours, rtol=1e-3)
+
+
 def test_solve_ivp_on_ode_function_reproduces_run(tutorial):
     from scipy.integrate import solve_ivp
 
@@ -174,6 +213,38 @@ def test_generated_source_speaks_sympy(name):
     assert "# al> " in code
     assert "al.set_pos(" in code
     if name == "tutor6":
+        assert "P_particle, Q_particle = al.particle(P), al.particle(Q)" in code
+        assert "kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=33))" in code
+        assert not re.search(r'al\.assign\("Q[AB]\'"', code)
         assert "al.set_pos(P, O_, LA * A.x, line=29)" in code
         assert "# sympy: A.orient_axis(N, N.z, QA)" in code
         assert "# sympy: Q.v2pt_theory(P, N, B)" in code
+
+
+@pytest.mark.parametrize("name", ["tutor6", "tutor8"])
+def test_module_holds_sympy_bodies_and_kd_eqs(tutorial, name):
+    """The module's RigidBody/Particle objects carry the declared masses and
+    are the bodies KanesMethod gets; its kd_eqs are sympy equations
+    ``Eq(q', rhs)`` equal to the runtime's (issue 22, module shape)."""
+    mod = tutorial(name)
+    if name == "tutor6":
+        bodies = {"P": (mod.P_particle, "MP"), "Q": (mod.Q_particle, "MQ")}
+        assert all(isinstance(b, Particle) for b, _m in bodies.values())
+    else:
+        bodies = {"A": (mod.A_body, "MA"), "B": (mod.B_body, "MB")}
+        assert all(isinstance(b, RigidBody) for b, _m in bodies.values())
+        assert mod.B_body.frame is mod.B and mod.B_body.masscenter is mod.Bo
+    for _name, (body, mass) in bodies.items():
+        assert body.mass == mod.al.symbol(mass)
+    eqs = mod.kd_eqs
+    assert eqs and all(isinstance(e, sp.Eq) for e in eqs)
+    coords = [e.lhs.expr for e in eqs]
+    rhs = {
+        sp.Derivative(q, t): mod.al.resolve(mod.AUTOLEV[mod.al.name_of(q) + "'"])
+        for q in coords
+    }
+    assert all(sp.simplify(e.rhs - rhs[e.lhs]) == 0 for e in eqs)
+    kd = {sp.Derivative(q, t) - r for q, r in ((e.lhs.expr, e.rhs) for e in eqs)}
+    assert set(mod.al.kd_eqs) <= kd
+    km = mod.kanes_method()
+    assert {id(b) for b in km.bodies} == {id(b) for b, _m in bodies.values()}

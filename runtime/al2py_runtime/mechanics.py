@@ -66,6 +66,8 @@ MODEL_COMMANDS = frozenset(
         "frames",
         "bodies",
         "particles",
+        "rigid_body",
+        "particle",
         "points",
         "point",
         "frame",

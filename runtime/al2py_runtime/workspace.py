@@ -386,6 +386,15 @@ class Workspace(Mapping):
         """
         return self._store(target, value, line=line, rearrange=self.settings.factoring)
 
+    def kd(self, eq: sp.Eq, *, line: int | None = None) -> sp.Eq:
+        """``Q' = rhs`` given as the sympy equation ``Eq(Q.diff(t), rhs)``:
+        assigned as :meth:`assign` does (same response), and returned, so a
+        module holds its kinematical differential equations as sympy
+        objects (``kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=32))``).
+        """
+        self.assign(self.name_of(eq.lhs), eq.rhs, line=line)
+        return eq
+
     def update(self, target: str, value: Any, *, line: int | None = None) -> Any:
         """Like :meth:`assign` but without automatic factoring (dual functions);
         the response prints the value as the command produced it."""

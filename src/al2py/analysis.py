@@ -101,6 +101,7 @@ RESERVED_IDENTIFIERS = (
             "pi",
             "I",
             "Matrix",
+            "Eq",
             "Rational",
             "Integer",
             "Vector",
@@ -225,6 +226,12 @@ class Facts:
         self._kinds = analysis.kinds
         self._vector_matrices = frozenset(analysis.vector_matrices)
         self._namer = analysis.namer
+
+    def helper_ident(self, key: str, spelling: str) -> str:
+        """The identifier of a name the generator adds (a body's sympy
+        ``RigidBody``, the list ``kd_eqs``).  Chosen after every Autolev name
+        has its identifier, so the script's names keep theirs."""
+        return self._namer.assign("#" + key, spelling, "body")
 
     def of(self, stmt: ir.Stmt) -> StmtFacts:
         return self._stmt.get(stmt.nid, StmtFacts())

@@ -83,6 +83,7 @@ class Generator:
         self.help_inputs: list[tuple[str, str, str | None]] = []
         self.help_jobs: list[tuple[str, str | None, int]] = []
         self.has_kane = False  # Fr() or FrStar() was generated
+        self._kd_started = False  # ``kd_eqs = []`` was emitted
 
     # ------------------------------------------------------------ driving
 
@@ -191,6 +192,17 @@ class Generator:
                 point = self.facts.table.physical(s.key + "O")
                 if point is not None and point.key in self.facts.mentioned:
                     out.append(f"{point.ident} = al.point({point.key!r})")
+        # The module holds sympy's RigidBody/Particle objects (their mass and
+        # inertia follow the Mass and Inertia declarations).
+        sympy_class = {"BODIES": "rigid_body", "PARTICLES": "particle"}
+        if stmt.keyword in sympy_class:
+            method = sympy_class[stmt.keyword]
+            suffix = "_body" if method == "rigid_body" else "_particle"
+            lhs = [
+                self.facts.helper_ident(s.key + suffix, s.ident + suffix) for s in syms
+            ]
+            rhs = [f"al.{method}({s.ident})" for s in syms]
+            out.append(f"{', '.join(lhs)} = {', '.join(rhs)}")
         return out
 
     def _declare_new(self) -> list[str]:
@@ -266,6 +278,14 @@ class Generator:
             )
             op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
             value = f"{current} {op} ({value})"
+        if (
+            isinstance(target, ir.Name)
+            and target.primes == 1
+            and stmt.op == "="
+            and sym.kind == "variable"
+            and self.facts.kind(stmt.value) is Kind.SCALAR
+        ):
+            return self._kinematical(sym, value)
         label = self._label(target)
         call = f"al.assign({label!r}, {value}, line={self._line})"
         if isinstance(target, ir.Name) and (
@@ -273,6 +293,22 @@ class Generator:
         ):
             return [call]
         return [f"{sym.ident} = {call}"]
+
+    def _kinematical(self, sym: Symbol, value: str) -> list[str]:
+        """``Q' = rhs``: a sympy equation the module keeps in ``kd_eqs``
+        (the runtime assigns it as ``al.assign("Q'", rhs)`` would)."""
+        eqs = self.facts.helper_ident("KD_EQS", "kd_eqs")
+        eq = self.imports.use("sympy", "Eq")
+        time = self.imports.use(_RUNTIME, "t")
+        out = []
+        if not self._kd_started:
+            self._kd_started = True
+            out.append(f"{eqs} = []  # kinematical differential equations, Eq(q', rhs)")
+        out.append(
+            f"{eqs}.append(al.kd({eq}({sym.ident}.diff({time}), {value}),"
+            f" line={self._line}))"
+        )
+        return out
 
     def _form_value(self, node: ir.Expr) -> str:
         if isinstance(node, ir.Number) and node.value == 0:

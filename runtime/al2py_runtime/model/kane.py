@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
-from sympy.physics.mechanics import KanesMethod, Particle, RigidBody
+from sympy.physics.mechanics import KanesMethod
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
 from .. import kinematics as kin
@@ -171,9 +171,12 @@ def kane_inputs(model: Any) -> KaneInputs:
             inertia = fix(model.central_inertia(o))
             if inertia == 0:
                 inertia = Dyadic(0)
-            bodies.append(RigidBody(o.name, p, o, m, (inertia, p)))
+            body = st.sympy_bodies[o]  # the module's RigidBody, actual values
+            body.mass, body.inertia = m, (inertia, p)
         else:
-            bodies.append(Particle(p.name, p, m))
+            body = st.sympy_bodies[o]
+            body.mass = m
+        bodies.append(body)
     # Loads are values of the actual motion, where the auxiliary speeds are
     # zero (a force formed after Constrain, tutor6f's damping through
     # STRETCH', keeps them as symbols; KanesMethod zeroes them only in the

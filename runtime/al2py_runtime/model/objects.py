@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.physics.mechanics import Particle, RigidBody
 from sympy.physics.vector import (
     Dyadic,
     Point,
@@ -62,6 +63,13 @@ class Objects:
             f = self._new_frame(n, Decl.BODY)
             st.bodies[f] = _Body(f, self.point(n.upper() + "O"))
             st.massive.append(f)
+            st.sympy_bodies[f] = RigidBody(
+                f.name,
+                st.bodies[f].point,
+                f,
+                sp.S.Zero,
+                (Dyadic(0), st.bodies[f].point),
+            )
             out.append(f)
         return kin.one_or_tuple(out)
 
@@ -73,8 +81,38 @@ class Objects:
             p = self._new_point(n, Decl.PARTICLE)
             st.particles[p] = None
             st.massive.append(p)
+            st.sympy_bodies[p] = Particle(p.name, p, sp.S.Zero)
             out.append(p)
         return kin.one_or_tuple(out)
+
+    def rigid_body(self, frame: ReferenceFrame) -> RigidBody:
+        """The sympy ``RigidBody`` of a declared body: its frame, mass center,
+        and the mass and central inertia as declared (kept up to date by
+        ``Mass`` and ``Inertia``)."""
+        self._body(frame)
+        return self._mech.sympy_bodies[frame]
+
+    def particle(self, point: Point) -> Particle:
+        """The sympy ``Particle`` of a declared particle (its point and its
+        mass as declared)."""
+        if point not in self._mech.particles:
+            raise ValueError(f"{point} is not a particle")
+        return self._mech.sympy_bodies[point]
+
+    def _sync_sympy_body(self, obj: Any) -> None:
+        """Give the module's ``RigidBody``/``Particle`` the declared mass and
+        central inertia."""
+        st = self._mech
+        body = st.sympy_bodies[obj]
+        body.mass = self._mass(obj, strict=False)
+        if isinstance(obj, ReferenceFrame):
+            try:
+                central = self.central_inertia(obj)
+            except (ValueError, KeyError):
+                # Inertia about a point whose position (or the mass) is not
+                # given yet: kanes_method() gives the body its actual values.
+                return
+            body.inertia = (central, body.masscenter)
 
     def points(self, *names: str) -> Any:
         """``Points O, P``."""
@@ -113,6 +151,7 @@ class Objects:
             st.particles[obj] = value
         else:
             raise ValueError(f"{obj} is not a body or particle; it has no mass")
+        self._sync_sympy_body(obj)
 
     def set_inertia(
         self,
@@ -137,6 +176,7 @@ class Objects:
         )
         b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
+        self._sync_sympy_body(body)
         return b.inertia
 
     def _body(self, body: Any) -> _Body:

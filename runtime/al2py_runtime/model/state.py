@@ -32,6 +32,9 @@ class _State:
     bodies: dict = field(default_factory=dict)  # ReferenceFrame -> _Body
     particles: dict = field(default_factory=dict)  # Point -> mass or None
     massive: list = field(default_factory=list)  # bodies' frames and particles
+    sympy_bodies: dict = field(
+        default_factory=dict
+    )  # frame/Point -> RigidBody/Particle
     edges: dict = field(default_factory=dict)  # Point -> {Point: P_from_to>}
     vel: dict = field(default_factory=dict)  # (Point, frame) -> Vector
     acc: dict = field(default_factory=dict)
