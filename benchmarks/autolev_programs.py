@@ -517,7 +517,7 @@ def _integration_for(job, tight: bool = True) -> dict[str, float]:
 
 
 def _check_dynamics(report: Report, module, job, program: Path) -> None:
-    from al2py_runtime import jobs as rjobs
+    from al2py_runtime.jobs import run as rjobs
 
     prog = _unshadow(report, program)
     cwd = program.parent

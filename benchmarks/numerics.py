@@ -40,7 +40,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
-from al2py_runtime import backends, jobs  # noqa: E402
+from al2py_runtime.jobs import backends  # noqa: E402
+from al2py_runtime.jobs import run as jobs  # noqa: E402
 from large import chain_inputs, chain_source  # noqa: E402
 from pendulum import LENGTH, MASS, G, autolev_source, hand_derive  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402

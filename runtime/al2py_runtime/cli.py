@@ -16,9 +16,9 @@ from collections.abc import Sequence
 from pathlib import Path, PurePath
 from typing import Any
 
-from . import budget
-from .jobs import check_overrides
-from .records import INTEGRATION_DEFAULTS, NumericsError
+from .jobs import budget
+from .jobs.records import INTEGRATION_DEFAULTS, NumericsError
+from .jobs.run import check_overrides
 from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser"]

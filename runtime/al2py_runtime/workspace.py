@@ -31,13 +31,13 @@ import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 from . import algebra, matrices
-from .kinematics import doit_derivatives, is_small, one_or_tuple
-from .mechanics import MODEL_COMMANDS, Model
-from .names import Key, parse_key
-from .numerics import Numerics
+from .jobs.numerics import Numerics
+from .model.kinematics import doit_derivatives, is_small, one_or_tuple
+from .model.model import MODEL_COMMANDS, Model
+from .names.keys import Key, parse_key
+from .names.settings import Response, Settings
 from .safety import guard_methods
 from .safety import register as register_module
-from .settings import Response, Settings
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
@@ -159,7 +159,7 @@ class Workspace(Mapping):
 
     def document_run(self, run: Any) -> Any:
         """Give a module's ``run`` its Inputs as keyword parameters (see
-        :func:`al2py_runtime.results.document_run`)."""
+        :func:`al2py_runtime.jobs.results.document_run`)."""
         return self.numerics.document_run(run)
 
     def ode_function(
@@ -506,7 +506,7 @@ class Workspace(Mapping):
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
         if _is_vectorial(value):
-            from .kinematics import vmap
+            from .model.kinematics import vmap
 
             return vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
         if isinstance(value, list | tuple):
@@ -585,7 +585,7 @@ class Workspace(Mapping):
 
     @property
     def intermediates(self) -> Any:
-        """The book of ``Z`` intermediates (:mod:`al2py_runtime.autoz`) while
+        """The book of ``Z`` intermediates (:mod:`al2py_runtime.intermediates.autoz`) while
         ``AutoZ`` is ON (None while it is OFF).  Intermediates made while it
         was ON stay valid."""
         if not self.settings.autoz:
@@ -600,7 +600,7 @@ class Workspace(Mapping):
         them out."""
         book = self.__dict__.get("_book")
         if book is None:
-            from .autoz import Intermediates
+            from .intermediates.autoz import Intermediates
 
             book = self._book = Intermediates(taken=self._names)
         book.rates = frozenset(
@@ -614,11 +614,11 @@ class Workspace(Mapping):
     def solver_book(self, unknowns: int) -> Any:
         """The book for a linear solve of ``unknowns`` unknowns: the
         intermediates while ``AutoZ`` is ON; with it OFF, the same book for a
-        system larger than :data:`al2py_runtime.elimination.SMALL` (a closed
+        system larger than :data:`al2py_runtime.intermediates.elimination.SMALL` (a closed
         form swells with the size: a 9x9 Cramer's rule did not finish in 15
         minutes), else None (closed forms, readable, as Autolev prints
         them)."""
-        from .elimination import SMALL
+        from .intermediates.elimination import SMALL
 
         book = self.intermediates
         if book is None and unknowns > SMALL:
@@ -666,7 +666,7 @@ class Workspace(Mapping):
 
     def transcript(self, source: Iterable[str]) -> list[str]:
         """The transcript lines Autolev would print for ``source``."""
-        from .transcript import transcript_lines
+        from .names.transcript import transcript_lines
 
         lines = list(source)
         if self._exit_line is not None:
@@ -686,7 +686,7 @@ class Workspace(Mapping):
             return list(responses)
         from sympy.physics.vector import Vector
 
-        from .autoz import has_intermediates
+        from .intermediates.autoz import has_intermediates
 
         out: list[Response] = []
         defined: set[Any] = set()

@@ -1,4 +1,4 @@
-"""AutoZ intermediates (al2py_runtime.autoz): chain rule, numbers, solves.
+"""AutoZ intermediates (al2py_runtime.intermediates.autoz): chain rule, numbers, solves.
 
 Every check compares with the written-out expression at random points."""
 
@@ -8,8 +8,8 @@ import random
 
 import pytest
 import sympy as sp
-from al2py_runtime import autoz
-from al2py_runtime.autoz import Intermediates, has_intermediates
+from al2py_runtime.intermediates import autoz
+from al2py_runtime.intermediates.autoz import Intermediates, has_intermediates
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 

@@ -793,7 +793,7 @@ def test_dircos_body_and_space_match_sympy():
     "kind, n", [("BODY123", 3), ("SPACE321", 3), ("EULER", 4), ("RODRIGUES", 3)]
 )
 def test_kindiffs_reproduce_the_angular_velocity(kind, n):
-    from al2py_runtime import kinematics as kin
+    from al2py_runtime.model import kinematics as kin
 
     al = Workspace()
     N = al.newtonian("N")

@@ -6,7 +6,7 @@ import json
 import math
 from typing import Any
 
-from .. import backends
+from ..jobs import backends
 from .program import Assign, Program
 
 __all__ = ["c_source"]

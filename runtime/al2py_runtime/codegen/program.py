@@ -19,8 +19,8 @@ from typing import Any
 
 import sympy as sp
 
-from .. import __version__, backends
-from ..jobs import (
+from ..jobs import backends
+from ..jobs.run import (
     Column,
     Job,
     NumericsError,
@@ -33,7 +33,8 @@ from ..jobs import (
     label_of,
     normalize_name,
 )
-from ..tables import format_table
+from ..jobs.tables import format_table
+from ..version import __version__
 
 __all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 

@@ -1,4 +1,4 @@
-"""MassAndLoads: part of :class:`al2py_runtime.mechanics.Model`.
+"""MassAndLoads: part of :class:`al2py_runtime.model.model.Model`.
 
 Mass distribution (``Mass()``, ``CM``, inertia dyadics and the transfer theorem) and loads (``Force_P>``, ``Torque_B>``, ``Force(O/Q, v>)``, ``Gravity``).
 """
@@ -15,7 +15,7 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
 
 __all__ = ["MassAndLoads"]
 

@@ -1,4 +1,4 @@
-"""Energy: part of :class:`al2py_runtime.mechanics.Model`.
+"""Energy: part of :class:`al2py_runtime.model.model.Model`.
 
 ``KE()``, ``Momentum``, ``Gyrostat``, power and ``NiCheck()``.
 """
@@ -15,7 +15,7 @@ from sympy.physics.vector import (
     dynamicsymbols,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
 from .state import t
 
 __all__ = ["Energy"]

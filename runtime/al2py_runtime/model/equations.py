@@ -1,4 +1,4 @@
-"""KaneEquations: part of :class:`al2py_runtime.mechanics.Model`.
+"""KaneEquations: part of :class:`al2py_runtime.model.model.Model`.
 
 ``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model.
 """
@@ -13,9 +13,9 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
-from ..elimination import SMALL
-from ..kane import arrange, linear_terms, solve_speeds
+from ..intermediates.elimination import SMALL
+from . import kinematics as kin
+from .arrange import arrange, linear_terms, solve_speeds
 from .state import t
 
 __all__ = ["KaneEquations"]

@@ -17,7 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import KanesMethod, Particle, RigidBody
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
-from .. import kinematics as kin
+from . import kinematics as kin
 
 t = dynamicsymbols._t
 
@@ -85,7 +85,7 @@ def _plain_dcms(frames: list, book: Any) -> None:
 
 
 def kane_inputs(model: Any) -> KaneInputs:
-    """A script's model (``al.model``, see :class:`~al2py_runtime.mechanics.Model`) as
+    """A script's model (``al.model``, see :class:`~al2py_runtime.model.model.Model`) as
     :class:`KaneInputs`: the one place where the script becomes
     ``KanesMethod``'s inputs.
 

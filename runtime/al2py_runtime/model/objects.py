@@ -1,4 +1,4 @@
-"""Objects: part of :class:`al2py_runtime.mechanics.Model`.
+"""Objects: part of :class:`al2py_runtime.model.model.Model`.
 
 Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned.
 """
@@ -15,7 +15,7 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
 from .state import _as_dyadic, _Body
 
 __all__ = ["Objects"]

@@ -1,4 +1,4 @@
-"""Kinematics: part of :class:`al2py_runtime.mechanics.Model`.
+"""Kinematics: part of :class:`al2py_runtime.model.model.Model`.
 
 Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet).
 """
@@ -17,8 +17,8 @@ from sympy.physics.vector import (
     time_derivative,
 )
 
-from .. import kinematics as kin
-from ..kane import solve_speeds
+from . import kinematics as kin
+from .arrange import solve_speeds
 from .state import t
 
 __all__ = ["Kinematics"]

@@ -1,4 +1,4 @@
-"""Speeds: part of :class:`al2py_runtime.mechanics.Model`.
+"""Speeds: part of :class:`al2py_runtime.model.model.Model`.
 
 Generalized speeds and coordinates as Autolev identifies them (docs/semantics.md, "Generalized speeds"), kinematical differential equations, partial velocities.
 """
@@ -13,7 +13,7 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
 from .state import _SPEED, _mentions, t
 
 __all__ = ["Speeds"]

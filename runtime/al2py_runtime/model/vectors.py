@@ -1,4 +1,4 @@
-"""VectorCommands: part of :class:`al2py_runtime.mechanics.Model`.
+"""VectorCommands: part of :class:`al2py_runtime.model.model.Model`.
 
 Autolev's vector and dyadic commands: ``Express``, ``Represent``, ``Dot``, ``Cross``, ``Mag``, ``UnitVec``, ``1>>``, ``D`` and ``Dt`` of vectors.
 """
@@ -14,7 +14,7 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
 
 __all__ = ["VectorCommands"]
 

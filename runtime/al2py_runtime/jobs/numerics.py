@@ -33,8 +33,7 @@ from typing import Any
 import sympy as sp
 from sympy.physics.vector import Vector
 
-from .jobs import ode_function, run_job
-from .printing import element_labels
+from ..names.printing import element_labels
 from .records import (
     KINDS,
     InputValue,
@@ -44,6 +43,7 @@ from .records import (
     OutputSpec,
     normalize_name,
 )
+from .run import ode_function, run_job
 from .tables import Result
 from .units import UnitSystem, units_factor
 
@@ -329,7 +329,7 @@ class Numerics:
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.backends`.  A constant the job needs that no
+        see :mod:`al2py_runtime.jobs.backends`.  A constant the job needs that no
         Input gives stops it with the names; ``zero_missing=True`` uses 0."""
         merged = dict(values or {})
         merged.update(overrides)
@@ -391,7 +391,7 @@ class Numerics:
         here (also in the Input's units; names without an Input are in the
         unit system's units, radians for angles) and every named intermediate
         are substituted.  Time is TINITIAL unless ``T`` is given."""
-        from .jobs import evaluate_with_inputs
+        from .run import evaluate_with_inputs
 
         merged = dict(values or {})
         merged.update(more)

@@ -32,14 +32,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from .model.bodies import MassAndLoads
-from .model.energy import Energy
-from .model.equations import KaneEquations
-from .model.objects import Objects
-from .model.points import Kinematics
-from .model.speeds import Speeds
-from .model.state import _State
-from .model.vectors import VectorCommands
+from .bodies import MassAndLoads
+from .energy import Energy
+from .equations import KaneEquations
+from .objects import Objects
+from .points import Kinematics
+from .speeds import Speeds
+from .state import _State
+from .vectors import VectorCommands
 
 __all__ = ["Model", "MODEL_COMMANDS"]
 

@@ -42,8 +42,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
+from ..model.arrange import linear_terms
 from .elimination import eliminate
-from .kane import linear_terms
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
@@ -571,7 +571,7 @@ class Intermediates:
     def expand(self, expr: Any) -> Any:
         """``expr`` with every intermediate replaced by what it stands for
         (a matrix or vector: each element)."""
-        from .kinematics import vmap
+        from ..model.kinematics import vmap
 
         if isinstance(expr, sp.MatrixBase):
             return expr.applyfunc(self.expand)

@@ -34,8 +34,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
-from .autoz import Intermediate
-from .kinematics import VectorMatrix
+from ..intermediates.autoz import Intermediate
+from ..model.kinematics import VectorMatrix
 
 __all__ = ["autolev_str", "element_labels", "format_response", "format_number"]
 

@@ -11,7 +11,7 @@ from typing import Any
 
 import sympy as sp
 
-from .safety import AutolevRuntimeError
+from ..safety import AutolevRuntimeError
 from .units import UnitSystem
 
 __all__ = [

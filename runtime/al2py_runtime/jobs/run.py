@@ -7,7 +7,7 @@ the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
 statements, unit system and ``Digits``.  :func:`run_job` turns it into scalar
 Python functions (``sympy.lambdify(..., cse=True, modules="math")``, built once
 and cached per job) and integrates or solves with SciPy.  Values inside a run
-are in internal units (see :mod:`al2py_runtime.units`); ``Input`` values are
+are in internal units (see :mod:`al2py_runtime.jobs.units`); ``Input`` values are
 converted in, ``Output`` values are converted out.
 """
 
@@ -25,8 +25,9 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from . import autoz, backends, budget
-from .kane import linear_terms
+from ..intermediates import autoz
+from ..model.arrange import linear_terms
+from . import backends, budget
 from .records import (
     INTEGRATION_DEFAULTS,
     InputValue,
