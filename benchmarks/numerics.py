@@ -264,8 +264,8 @@ def _import(source: str, name: str, workdir: Path):
 def al2py_model(module):
     """(spec, parameter values, initial state) of the module's CODE job."""
     job = module.al.jobs[-1]
-    vals, keep = jobs._input_values(job, {})
-    c = jobs._dynamics_equations(job, frozenset(keep))
+    vals, keep = jobs.input_values(job, {})
+    c = jobs.dynamics_equations(job, frozenset(keep))
     p = [vals.param(obj) for obj in c.params]
     y0 = np.array([vals.get(name, 0.0, note=False) for name in c.state_names])
     return c.spec, p, y0

@@ -101,7 +101,7 @@ class Numerics:
                     f"Input {name} (line {line}): {value!r} is not a number"
                 ) from None
             # ``Input E4 = COS(QQ1/2)``: computed from the other Inputs at run
-            # time (in internal units), see jobs._input_values.
+            # time (in internal units), see jobs.input_values.
             number = float(expr) if expr.is_number else expr
             store[normalize_name(name)] = InputValue(
                 number, unit if unit else None, line
@@ -140,7 +140,7 @@ class Numerics:
         return [OutputItem(n, e, unit) for n, e in zip(names, value, strict=True)]
 
     def _newtonian(self) -> Any:
-        for entry in self._ws._names.values():
+        for entry in self._ws.table.entries.values():
             if entry.kind == "newtonian":
                 return entry.obj
         return None
@@ -227,7 +227,7 @@ class Numerics:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._ws._values.get("ZERO")
+            value = self._ws.table.stored.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
@@ -243,7 +243,7 @@ class Numerics:
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._ws._rhs),
+            rhs=dict(self._ws.table.rhs),
             zero=zero,
             outputs=outputs,
             encoded={**state.shapes, **shapes},
@@ -252,19 +252,21 @@ class Numerics:
             digits=self._ws.settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._ws._entries_by_obj),
-            entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
+            names=dict(self._ws.table.by_obj),
+            entries={
+                name: (e.kind, e.obj) for name, e in self._ws.table.entries.items()
+            },
             declared={
                 name: e.line
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if e.line is not None
             },
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -272,11 +274,11 @@ class Numerics:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._ws._values.items():
+        for name, stored in self._ws.table.stored.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._ws._values.items():
+            for name, stored in self._ws.table.stored.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None

@@ -115,7 +115,7 @@ class Job:
     declared: dict[str, int] = field(default_factory=dict)
     #: words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case
     options: tuple[str, ...] = ()
-    _cache: dict = field(default_factory=dict, repr=False)
+    cache: dict = field(default_factory=dict, repr=False)
 
     @property
     def where(self) -> str:

@@ -16,7 +16,7 @@ from sympy.physics.vector import (
 )
 
 from . import kinematics as kin
-from .state import _as_dyadic, _Body
+from .state import BodyRecord, as_dyadic, command
 
 __all__ = ["Objects"]
 
@@ -29,41 +29,45 @@ class Objects:
         p = Point(name.upper())
         st.points[name.upper()] = p
         st.edges.setdefault(p, {})
-        self.ws._declare(name, kind, p)
+        self.ws.table.declare(name, kind, p)
         return p
 
     def _new_frame(self, name: str, kind: str) -> ReferenceFrame:
         st = self._mech
         f = ReferenceFrame(name.upper())
         st.frames[name.upper()] = f
-        self.ws._declare(name, kind, f)
+        self.ws.table.declare(name, kind, f)
         origin = self._new_point(name.upper() + "O", "point")
         st.fixed_in[origin] = f
         return f
 
     # ---------------------------------------------------------- declarations
 
+    @command
     def newtonian(self, name: str) -> ReferenceFrame:
         """``Newtonian N``: frame N and point NO fixed in N."""
         f = self._new_frame(name, "newtonian")
         self._mech.newtonian = f
         return f
 
+    @command
     def frames(self, *names: str) -> Any:
         """``Frames A, B``: frames and their fixed points AO, BO."""
         return kin.one_or_tuple([self._new_frame(n, "frame") for n in names])
 
+    @command
     def bodies(self, *names: str) -> Any:
         """``Bodies A, B``: frames and mass centers AO, BO."""
         out = []
         st = self._mech
         for n in names:
             f = self._new_frame(n, "body")
-            st.bodies[f] = _Body(f, self.point(n.upper() + "O"))
+            st.bodies[f] = BodyRecord(f, self.point(n.upper() + "O"))
             st.massive.append(f)
             out.append(f)
         return kin.one_or_tuple(out)
 
+    @command
     def particles(self, *names: str) -> Any:
         """``Particles P, Q``: massive points."""
         out = []
@@ -75,10 +79,12 @@ class Objects:
             out.append(p)
         return kin.one_or_tuple(out)
 
+    @command
     def points(self, *names: str) -> Any:
         """``Points O, P``."""
         return kin.one_or_tuple([self._new_point(n) for n in names])
 
+    @command
     def point(self, name: str) -> Point:
         """The declared point, particle or mass center named ``name``."""
         try:
@@ -86,6 +92,7 @@ class Objects:
         except KeyError:
             raise KeyError(f"{name} is not a point, particle or mass center") from None
 
+    @command
     def frame(self, name: str) -> ReferenceFrame:
         """The declared frame, body or Newtonian frame named ``name``."""
         try:
@@ -93,7 +100,7 @@ class Objects:
         except KeyError:
             raise KeyError(f"{name} is not a frame or body") from None
 
-    def _n(self) -> ReferenceFrame:
+    def newtonian_frame(self) -> ReferenceFrame:
         n = self._mech.newtonian
         if n is None:
             raise ValueError("no Newtonian frame has been declared")
@@ -102,6 +109,7 @@ class Objects:
     def _scalar(self, value: Any) -> Any:
         return self.ws.normalize(value)
 
+    @command
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
         st = self._mech
@@ -113,6 +121,7 @@ class Objects:
         else:
             raise ValueError(f"{obj} is not a body or particle; it has no mass")
 
+    @command
     def set_inertia(
         self,
         body: ReferenceFrame,
@@ -138,7 +147,7 @@ class Objects:
         b.inertia_point = about if about is not None else b.point
         return b.inertia
 
-    def _body(self, body: Any) -> _Body:
+    def _body(self, body: Any) -> BodyRecord:
         try:
             return self._mech.bodies[body]
         except (KeyError, TypeError):
@@ -181,7 +190,7 @@ class Objects:
                 return ("INERTIA", pts[parts[1]], pts[parts[2]])
         return None
 
-    def _assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
+    def assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
         """Store a syntactical form (``P_O_Q>``, ``V_P_N>``, ``N_A``...).
 
         Return the Python binding, or ``NotImplemented`` if ``key`` is not a
@@ -212,7 +221,7 @@ class Objects:
             return m
         if kind == "INERTIA":
             body, p = objs
-            value = _as_dyadic(value)
+            value = as_dyadic(value)
             b = self._body(body)
             b.inertia, b.inertia_point = value, p
             self.ws.respond(label, value, line=line)
@@ -245,44 +254,53 @@ class Objects:
     # calls they make (``P_O_P> = v`` is ``set_pos(P, O, v)``: sympy's
     # ``P.set_pos(O, v)``).  Each also records Autolev's response.
 
+    @command
     def set_pos(self, p: Point, o: Point, value: Any, *, line=None) -> Vector:
         """``P_O_P> = v``: P's position from O (``P.set_pos(O, v)``); Autolev
         positions reverse and chain."""
         return self._set("POS", [o, p], value, f"P_{o.name}_{p.name}>", line)
 
+    @command
     def set_vel(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``V_P_N> = v`` (``P.set_vel(N, v)``)."""
         return self._set("VEL", [p, frame], value, f"V_{p.name}_{frame.name}>", line)
 
+    @command
     def set_acc(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``A_P_N> = v`` (``P.set_acc(N, v)``)."""
         return self._set("ACC", [p, frame], value, f"A_{p.name}_{frame.name}>", line)
 
+    @command
     def set_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``W_B_A> = w`` (``B.set_ang_vel(A, w)``)."""
         return self._set("ANGVEL", [b, a], value, f"W_{b.name}_{a.name}>", line)
 
+    @command
     def set_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``ALF_B_A> = v`` (``B.set_ang_acc(A, v)``)."""
         return self._set("ANGACC", [b, a], value, f"ALF_{b.name}_{a.name}>", line)
 
+    @command
     def set_force(self, p: Point, value: Any, *, line=None) -> Vector:
         """``Force_P> = v``: the resultant force on P (a load ``(P, v)``)."""
         return self._set("FORCE", [p], value, f"FORCE_{p.name}>", line)
 
+    @command
     def set_torque(self, b: ReferenceFrame, value: Any, *, line=None) -> Vector:
         """``Torque_B> = v``: the resultant torque on B (a load ``(B, v)``)."""
         return self._set("TORQUE", [b], value, f"TORQUE_{b.name}>", line)
 
+    @command
     def set_dcm(self, a: ReferenceFrame, b: ReferenceFrame, value, *, line=None):
         """``A_B = M`` (``B.orient_explicit(A, M)``)."""
         return self._set("DCM", [a, b], value, f"{a.name}_{b.name}", line)
 
+    @command
     def set_inertia_about(self, body: Any, p: Point, value: Any, *, line=None):
         """``I_B_P>> = d``: the inertia dyadic of body B about P."""
         return self._set("INERTIA", [body, p], value, f"I_{body.name}_{p.name}>>", line)
 
-    def _form_value(self, key: Any) -> Any:
+    def form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""
         if key.name == "0>":
             return Vector(0)
