@@ -18,7 +18,7 @@ from typing import Any
 
 from .jobs import budget
 from .jobs.records import INTEGRATION_DEFAULTS, NumericsError
-from .jobs.run import check_overrides
+from .jobs.run import check_overrides, run_job
 from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser"]
@@ -228,7 +228,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     budget.PROGRESS = _is_terminal(sys.stdout)
     for job in jobs:
         try:
-            result = ws.run_job(
+            result = run_job(
                 job,
                 overrides,
                 backend=args.backend,

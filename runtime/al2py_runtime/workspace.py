@@ -149,20 +149,6 @@ class Workspace(Mapping):
         :meth:`Numerics.ode_function`)."""
         return self.numerics.ode_function(values, **overrides)
 
-    def run_job(
-        self,
-        job: Any,
-        values: Mapping[str, Any] | None = None,
-        *,
-        backend: str | None = None,
-        zero_missing: bool | None = None,
-    ) -> Any:
-        """Perform one recorded job with optional overrides (``backend``: see
-        :mod:`.backends`)."""
-        return self.numerics.run_job(
-            job, values, backend=backend, zero_missing=zero_missing
-        )
-
     def main(self, source_lines: Any, argv: Any = None) -> int:
         """The ``python module.py`` entry point (see :mod:`.cli`)."""
         from .cli import main

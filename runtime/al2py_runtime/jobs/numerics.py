@@ -399,16 +399,3 @@ class Numerics:
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
         return evaluate_with_inputs(job, self._ws[name], name, merged)
-
-    def run_job(
-        self,
-        job: Job,
-        values: Mapping[str, Any] | None = None,
-        *,
-        backend: str | None = None,
-        zero_missing: bool | None = None,
-    ) -> Result:
-        """Perform one recorded job with optional overrides."""
-        return run_job(
-            job, dict(values or {}), backend=backend, zero_missing=zero_missing
-        )
