@@ -517,7 +517,7 @@ def _integration_for(job, tight: bool = True) -> dict[str, float]:
 
 
 def _check_dynamics(report: Report, module, job, program: Path) -> None:
-    from al2py_runtime import jobs as rjobs
+    from al2py_runtime.jobs import run as rjobs
 
     prog = _unshadow(report, program)
     cwd = program.parent
@@ -535,7 +535,7 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
         if proc.returncode:
             raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
         overrides = _overrides(prog, job, values)
-        result = module.al.run_job(job, overrides)
+        result = rjobs.run_job(job, overrides)
         tables = (
             [t for t in result.tables if not t.encoded]
             if hasattr(result.tables[0], "encoded")
@@ -654,7 +654,9 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     )
     if proc.returncode or "error" in proc.stdout.lower():
         raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
-    result = module.al.run_job(job, _overrides(prog, job, values))
+    from al2py_runtime.jobs.run import run_job
+
+    result = run_job(job, _overrides(prog, job, values))
     lib = Loaded(compile_program(program, shared=True), prog)
     lib.main(cwd)
     _compare_encoded(report, "seeded values", job, lib, result, row=0)

@@ -5,7 +5,7 @@ spherical joint and oriented by body-fixed 1-2-3 angles, so the model has 3n
 generalized speeds (n = 8 gives 24, the size of a detailed bicycle model).
 
 For each size it prints the derivation time with intermediate variables
-(``al2py_runtime.fastkane.FastKane``, meant for al2py's own derivation, issue 10),
+(``al2py_runtime.model.fastkane.FastKane``, meant for al2py's own derivation, issue 10),
 sympy's ``KanesMethod`` without intermediates on the same sympy model, their
 ratio, and the conversion and import time of the converted Autolev script
 through the runtime; then the growth exponent of each column.  ``FastKane``,
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import al2py_runtime  # noqa: F401  (library import is not model derivation)
 import sympy as sp  # noqa: E402  (after al2py_runtime, as users would)
-from al2py_runtime.fastkane import FastKane  # noqa: E402
+from al2py_runtime.model.fastkane import FastKane  # noqa: E402
 from sympy.physics import mechanics as me  # noqa: E402
 
 from al2py import convert  # noqa: E402

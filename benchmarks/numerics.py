@@ -40,7 +40,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
-from al2py_runtime import backends, jobs  # noqa: E402
+from al2py_runtime.jobs import backends  # noqa: E402
+from al2py_runtime.jobs import run as jobs  # noqa: E402
 from large import chain_inputs, chain_source  # noqa: E402
 from pendulum import LENGTH, MASS, G, autolev_source, hand_derive  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
@@ -263,8 +264,8 @@ def _import(source: str, name: str, workdir: Path):
 def al2py_model(module):
     """(spec, parameter values, initial state) of the module's CODE job."""
     job = module.al.jobs[-1]
-    vals, keep = jobs._input_values(job, {})
-    c = jobs._dynamics_equations(job, frozenset(keep))
+    vals, keep = jobs.input_values(job, {})
+    c = jobs.dynamics_equations(job, frozenset(keep))
     p = [vals.param(obj) for obj in c.params]
     y0 = np.array([vals.get(name, 0.0, note=False) for name in c.state_names])
     return c.spec, p, y0

@@ -57,7 +57,7 @@ def measure(n: int, workdir: Path) -> dict[str, float]:
 
     def fresh_run():
         for job in module.al.jobs:  # each run() regenerates its functions
-            job._cache.clear()
+            job.cache.clear()
         return module.run()
 
     run, t_run = min((_timed(fresh_run) for _ in range(3)), key=lambda r: r[1])

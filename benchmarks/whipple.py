@@ -30,7 +30,7 @@ from pathlib import Path
 
 import al2py_runtime  # noqa: F401  (library import is not model derivation)
 import numpy as np
-from al2py_runtime.fastkane import FastKane
+from al2py_runtime.model.fastkane import FastKane
 from sympy.physics import mechanics as me
 
 from al2py import convert

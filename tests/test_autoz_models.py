@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime.autoz import has_intermediates
+from al2py_runtime.intermediates.autoz import has_intermediates
 from conftest import load_module
 from sympy.core.function import AppliedUndef
 
@@ -110,13 +110,20 @@ def test_autolev_names_are_written_out(disc):
     off, on, _tmp = disc
     full = on.AUTOLEV["ZERO"]
     assert not has_intermediates(full) and has_intermediates(on.al.value("ZERO"))
-    subs = {on.al._names[k].obj: v for k, v in STATE.items() if not k.endswith("'")}
+    subs = {
+        on.al.table.entries[k].obj: v for k, v in STATE.items() if not k.endswith("'")
+    }
     subs.update(
-        {on.al._names[k].obj: v for k, v in {"R": 0.3, "G": 9.81, "M": 2}.items()}
+        {
+            on.al.table.entries[k].obj: v
+            for k, v in {"R": 0.3, "G": 9.81, "M": 2}.items()
+        }
     )
-    t = on.al._names["T"].obj
+    t = on.al.table.entries["T"].obj
     accel = {
-        on.al._names[k[:-1]].obj.diff(t): v for k, v in STATE.items() if k.endswith("'")
+        on.al.table.entries[k[:-1]].obj.diff(t): v
+        for k, v in STATE.items()
+        if k.endswith("'")
     }
     got = np.array([float(e.xreplace(accel).xreplace(subs)) for e in full])
     want = np.asarray(off.evaluate("ZERO", **STATE), dtype=float).ravel()
@@ -156,7 +163,7 @@ def test_tutorial_zero_same_with_autoz(name, tmp_path):
     a = off.al.resolve(off.AUTOLEV["ZERO"])
     b = on.al.resolve(on.AUTOLEV["ZERO"])
     assert a.shape == b.shape
-    t = off.al._names["T"].obj
+    t = off.al.table.entries["T"].obj
     atoms = set()
     for m in (a, b):
         for e in m:

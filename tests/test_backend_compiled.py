@@ -14,9 +14,9 @@ import sys
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime import backends
 from al2py_runtime.functions import nint, trunc
-from al2py_runtime.jobs import NumericsError
+from al2py_runtime.jobs import backends
+from al2py_runtime.jobs.run import NumericsError
 from conftest import ROOT, SHARED
 
 HAS_CC = backends.available("c")

@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 import pytest
-from al2py_runtime import backends
+from al2py_runtime.jobs import backends
 from conftest import ROOT, SHARED
 
 from al2py.cli import main as al2py_main

@@ -9,7 +9,7 @@ import subprocess
 
 import numpy as np
 import pytest
-from al2py_runtime import backends
+from al2py_runtime.jobs import backends
 from conftest import SHARED
 from test_codegen_c import _pendulum_source, _same_tables
 

@@ -10,7 +10,7 @@ import random
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime.fastkane import FastKane
+from al2py_runtime.model.fastkane import FastKane
 from sympy.physics import mechanics as me
 
 

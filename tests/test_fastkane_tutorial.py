@@ -11,7 +11,7 @@ import random
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime.fastkane import FastKane
+from al2py_runtime.model.fastkane import FastKane
 from conftest import SHARED
 from sympy.physics import mechanics as me
 

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime.autoz import has_intermediates
+from al2py_runtime.intermediates.autoz import has_intermediates
 from conftest import load_module
 
 from al2py import convert

@@ -99,7 +99,7 @@ def test_kanes_method_matches_ode_function(tutorial, name):
     # Constraint forces (tutor7c's FC1, FC2 at R) may remain with coefficients
     # that vanish on the constraint: they get random values.
     forces = find_dynamicsymbols(mm.row_join(ff)) - set(states)
-    assert forces <= set(mod.al.model._mech.kane["forces"]), forces
+    assert forces <= set(mod.al.model.registry.kane["forces"]), forces
     rng = np.random.default_rng(8)
     for _ in range(5):
         y = rng.uniform(-1.0, 1.0, len(names))

@@ -132,7 +132,7 @@ def test_each_declaration_style_gives_the_pendulum(style, tmp_path):
     theta = mod.al.symbol(theta_name)
     u = mod.al.symbol(speed)
     G, L, M, I = (mod.al.symbol(k) for k in ("G", "L", "M", "I"))  # noqa: E741
-    assert mod.al.model._speeds() == [u]
+    assert mod.al.model.generalized_speeds() == [u]
     zero = mod.AUTOLEV["ZERO"]
     assert zero.shape == (1, 1)
     a = sp.Symbol("a")  # u'
@@ -255,7 +255,7 @@ def test_rolling_disc_matches_sympy_kanes_method(tmp_path):
     motion variables, coordinates from solved kinematical equations."""
     mod = _load(DISC, tmp_path, "rolling_disc")
     ws = [mod.al.symbol(f"W{k}") for k in (1, 2, 3)]
-    assert mod.al.model._speeds() == ws
+    assert mod.al.model.generalized_speeds() == ws
     km = mod.al.kanes_method()
     names = ["X", "Y", "PSI", "PHI", "TH"]
     assert list(km.q) == [mod.al.symbol(n) for n in names]

@@ -271,7 +271,7 @@ def test_tfinal_before_tinitial_is_refused(tmp_path):
 
 
 def test_budget_can_be_raised_from_python(tmp_path, monkeypatch):
-    from al2py_runtime import budget
+    from al2py_runtime.jobs import budget
 
     m = load_module(convert(STIFF.replace("10", "0.0001"), "s.al").code, tmp_path, "s")
     monkeypatch.setitem(budget.LIMITS, "evaluations", 50)
@@ -405,7 +405,7 @@ def test_unknown_and_unsupported_commands(tmp_path):
 
 
 def test_long_integration_shows_progress_on_a_terminal(monkeypatch, capsys):
-    from al2py_runtime import budget
+    from al2py_runtime.jobs import budget
 
     clock = [100.0]
     monkeypatch.setattr(budget.time, "monotonic", lambda: clock[0])

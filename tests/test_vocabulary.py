@@ -13,7 +13,8 @@ import random
 
 import pytest
 import sympy as sp
-from al2py_runtime import autoz, vocabulary, workspace
+from al2py_runtime import vocabulary, workspace
+from al2py_runtime.intermediates import autoz
 from al2py_runtime.vocabulary import builtins, forms, kinds
 from conftest import load_module
 

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from al2py_runtime.fastkane import FastKane
+from al2py_runtime.model.fastkane import FastKane
 
 HERE = Path(__file__).resolve().parent
 

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
-from al2py_runtime.fastkane import FastKane
+from al2py_runtime.model.fastkane import FastKane
 from test_whipple import TABLE2  # Meijaard et al. (2007), Table 2
 
 from al2py import convert
@@ -84,7 +84,7 @@ def test_whipple_script_eigenvalues(whipple_module, speed):
 def test_whipple_script_uses_intermediates(whipple_module):
     """AutoZ ON: ZERO is written with Z intermediates, and sympy's model of
     the script (KanesMethod's inputs) has them written out."""
-    from al2py_runtime.autoz import has_intermediates
+    from al2py_runtime.intermediates.autoz import has_intermediates
     from al2py_runtime.model import kane_inputs
 
     assert has_intermediates(whipple_module.al.value("ZERO"))

@@ -8,7 +8,14 @@ optional, for plots) and installs without the transpiler::
 """
 
 from .safety import AutolevRuntimeError
+from .version import __version__
 from .workspace import Response, Settings, Workspace, t
 
-__all__ = ["Workspace", "Settings", "Response", "AutolevRuntimeError", "t"]
-__version__ = "0.1.0"
+__all__ = [
+    "Workspace",
+    "Settings",
+    "Response",
+    "AutolevRuntimeError",
+    "t",
+    "__version__",
+]

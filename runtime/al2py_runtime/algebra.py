@@ -22,8 +22,8 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
-from .kinematics import vmap
 from .matrices import as_matrix
+from .model.kinematics import vmap
 
 __all__ = [
     "expand",
@@ -84,7 +84,7 @@ def _is_time_derivative(e: sp.Basic) -> bool:
 
 def _book_of(y: Any) -> Any:
     """The AutoZ book of the intermediates in ``y``, if it holds any."""
-    from .autoz import Intermediate
+    from .intermediates.autoz import Intermediate
 
     items = y if isinstance(y, sp.MatrixBase) else [y]
     for item in items:
@@ -505,7 +505,7 @@ def solve_linear(
 
     ``unknowns`` may be symbols, variables or derivatives.  Returns the
     solutions in order; raises ValueError for nonlinear or singular systems.
-    With a book of intermediates (``AutoZ ON``, :mod:`al2py_runtime.autoz`)
+    With a book of intermediates (``AutoZ ON``, :mod:`al2py_runtime.intermediates.autoz`)
     the elimination names every entry (pivots chosen non-zero where the
     variables in ``zero`` vanish).
 

@@ -16,9 +16,9 @@ from collections.abc import Sequence
 from pathlib import Path, PurePath
 from typing import Any
 
-from . import budget
-from .jobs import check_overrides
-from .records import INTEGRATION_DEFAULTS, NumericsError, job_where
+from .jobs import budget
+from .jobs.records import INTEGRATION_DEFAULTS, NumericsError, job_where
+from .jobs.run import check_overrides, run_job
 from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser", "help_text"]
@@ -271,7 +271,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     budget.PROGRESS = _is_terminal(sys.stdout)
     for job in jobs:
         try:
-            result = ws.run_job(
+            result = run_job(
                 job,
                 overrides,
                 backend=args.backend,

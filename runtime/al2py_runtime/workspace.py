@@ -22,41 +22,31 @@ A + 7*B
 
 from __future__ import annotations
 
+import functools
 import sys
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import Any
 
 import sympy as sp
 from sympy.physics.mechanics import dynamicsymbols
 
 from . import algebra, matrices
-from .kinematics import doit_derivatives, is_small, one_or_tuple
-from .mechanics import MODEL_COMMANDS, Model
-from .names import Key, parse_key
-from .numerics import Numerics
+from .jobs.numerics import Numerics
+from .model.kinematics import doit_derivatives, is_small, one_or_tuple
+from .model.model import MODEL_COMMANDS, Model
+from .names.keys import Key, parse_key
+from .names.settings import Response, Settings
+from .names.table import Entry, NameTable
 from .progress import ImportWatch
 from .safety import guard_methods
 from .safety import register as register_module
-from .settings import Response, Settings
 from .vocabulary import OBJECT_DECLS
 
 __all__ = ["Workspace", "Settings", "Response", "t"]
 
 #: Autolev's reserved time variable ``T`` (shared with sympy.physics.mechanics).
 t = dynamicsymbols._t
-
-
-@dataclass
-class _Entry:
-    """What a name is: ``kind`` and the sympy/mechanics object standing for it."""
-
-    kind: str
-    obj: Any
-    sign: str | None = None
-    order: int = 0  # highest declared derivative for variables
-    extra: dict = field(default_factory=dict)
-    line: int | None = None  # the script line that declared it
 
 
 class Workspace(Mapping):
@@ -75,10 +65,8 @@ class Workspace(Mapping):
         self._watch.start()
         self.settings = Settings()
         self.responses: list[Response] = []
-        self._names: dict[str, _Entry] = {}
-        self._rhs: dict[sp.Basic, Any] = {}
-        self._values: dict[str, Any] = {}
-        self._entries_by_obj: dict[sp.Basic, str] = {}
+        #: the script's names (:class:`~.names.table.NameTable`)
+        self.table = NameTable()
         self._saves: list[str] = []
         self._exit_line: int | None = None
         #: Quantities the script constrains to unit norm (the Euler parameters
@@ -90,22 +78,14 @@ class Workspace(Mapping):
         self.model = Model(self)
         #: Inputs, Outputs, UnitSystem and CODE jobs (``run()``).
         self.numerics = Numerics(self)
-        self._declare("T", "variable", t)
-        self._declare("PI", "constant", sp.pi)
-        self._declare("I", "imaginary", sp.I)
+        self.table.declare("T", "variable", t)
+        self.table.declare("PI", "constant", sp.pi)
+        self.table.declare("I", "imaginary", sp.I)
 
     # ------------------------------------------------ the model (mechanics.py)
 
-    def __getattr__(self, name: str) -> Any:
-        """The model's commands (:data:`MODEL_COMMANDS`: ``al.simprot``,
-        ``al.fr``...) are answered by :attr:`model`."""
-        model = self.__dict__.get("model")
-        if model is not None and name in MODEL_COMMANDS:
-            return getattr(model, name)
-        raise AttributeError(f"{type(self).__name__!r} has no attribute {name!r}")
-
-    def __dir__(self) -> list[str]:
-        return sorted(set(super().__dir__()) | MODEL_COMMANDS)
+    # Its commands (``al.simprot``, ``al.fr``...) are methods of this class
+    # too: see :func:`_offer_model_commands` below the class.
 
     # ------------------------------------------- numerical jobs (numerics.py)
 
@@ -163,7 +143,7 @@ class Workspace(Mapping):
 
     def document_run(self, run: Any) -> Any:
         """Give a module's ``run`` its Inputs as keyword parameters (see
-        :func:`al2py_runtime.results.document_run`)."""
+        :func:`al2py_runtime.jobs.results.document_run`)."""
         return self.numerics.document_run(run)
 
     def ode_function(
@@ -172,20 +152,6 @@ class Workspace(Mapping):
         """``(f, y0, names)`` for ``solve_ivp`` (see
         :meth:`Numerics.ode_function`)."""
         return self.numerics.ode_function(values, **overrides)
-
-    def run_job(
-        self,
-        job: Any,
-        values: Mapping[str, Any] | None = None,
-        *,
-        backend: str | None = None,
-        zero_missing: bool | None = None,
-    ) -> Any:
-        """Perform one recorded job with optional overrides (``backend``: see
-        :mod:`.backends`)."""
-        return self.numerics.run_job(
-            job, values, backend=backend, zero_missing=zero_missing
-        )
 
     def main(self, source_lines: Any, argv: Any = None) -> int:
         """The ``python module.py`` entry point (see :mod:`.cli`)."""
@@ -200,15 +166,15 @@ class Workspace(Mapping):
 
     def __iter__(self) -> Iterator[str]:
         seen = []
-        for name, entry in self._names.items():
+        for name, entry in self.table.entries.items():
             if name in ("T", "PI", "I"):
                 continue
             seen.append(name)
             if entry.kind == "variable":
                 for k in range(1, entry.order + 1):
-                    if self._rhs_key(name, k) in self._rhs:
+                    if self.table.rhs_key(name, k) in self.table.rhs:
                         seen.append(name + "'" * k)
-        seen.extend(n for n in self._values if n not in self._names)
+        seen.extend(n for n in self.table.stored if n not in self.table.entries)
         return iter(seen)
 
     def __len__(self) -> int:
@@ -224,13 +190,6 @@ class Workspace(Mapping):
         return True
 
     # ----------------------------------------------------------- declarations
-
-    def _declare(self, name: str, kind: str, obj: Any, **kw: Any) -> Any:
-        key = name.upper()
-        self._names[key] = _Entry(kind, obj, **kw)
-        if isinstance(obj, sp.Basic):
-            self._entries_by_obj[obj] = key
-        return obj
 
     def _assumptions(self, sign: str | None) -> dict[str, bool]:
         if self.settings.complex == "ON":
@@ -249,7 +208,7 @@ class Workspace(Mapping):
         for spec in names:
             name, sign = _split_sign(spec)
             sym = sp.Symbol(name.upper(), **self._assumptions(sign))
-            out.append(self._declare(name, "constant", sym, sign=sign, line=line))
+            out.append(self.table.declare(name, "constant", sym, sign=sign, line=line))
         return one_or_tuple(out)
 
     def variables(self, *names: str, line: int | None = None) -> Any:
@@ -268,28 +227,28 @@ class Workspace(Mapping):
             base = spec.rstrip("'")
             order = len(spec) - len(base)
             func = dynamicsymbols(base.upper(), **self._assumptions(None))
-            out.append(self._declare(base, kind, func, order=order, line=line))
+            out.append(self.table.declare(base, kind, func, order=order, line=line))
         return one_or_tuple(out)
 
     def imaginary(self, name: str, line: int | None = None) -> Any:
         """``Imaginary j``: ``j`` is the imaginary unit."""
-        return self._declare(name, "imaginary", sp.I, line=line)
+        return self.table.declare(name, "imaginary", sp.I, line=line)
 
     # -------------------------------------------------------------- lookups
 
     def kind(self, name: str) -> str | None:
         """The kind of a declared or assigned name, or None."""
-        entry = self._names.get(parse_key(name).name)
+        entry = self.table.entries.get(parse_key(name).name)
         if entry is not None:
             return entry.kind
-        if parse_key(name).name in self._values:
+        if parse_key(name).name in self.table.stored:
             return "value"
         return None
 
     def symbol(self, name: str) -> Any:
         """The sympy object standing for ``name`` (``"X'"`` -> ``X(t).diff(t)``)."""
         key = parse_key(name)
-        entry = self._names.get(key.name)
+        entry = self.table.entries.get(key.name)
         if entry is None:
             raise KeyError(f"{name!r} is not declared")
         obj = entry.obj
@@ -302,40 +261,36 @@ class Workspace(Mapping):
     def value(self, name: str) -> Any:
         """The current value of an Autolev name, element or derivative."""
         key = parse_key(name)
-        form = self.model._form_value(key)
+        form = self.model.form_value(key)
         if form is not NotImplemented:
             return form
-        if key.name in self._values:
-            val = self._values[key.name]
+        if key.name in self.table.stored:
+            val = self.table.stored[key.name]
             if key.index:
                 return _element(val, key.index, name)
             if key.primes:
                 raise KeyError(f"{name!r}: only scalars have derivatives here")
             return val
-        entry = self._names.get(key.name)
+        entry = self.table.entries.get(key.name)
         if entry is None:
             raise KeyError(f"{name!r} is not defined")
         if key.index:
             raise KeyError(f"{name!r}: {key.name} is not a matrix")
-        rhs_key = self._rhs_key(key.name, key.primes)
-        if rhs_key in self._rhs:
-            return self._rhs[rhs_key]
+        rhs_key = self.table.rhs_key(key.name, key.primes)
+        if rhs_key in self.table.rhs:
+            return self.table.rhs[rhs_key]
         return self.symbol(name)
-
-    def _rhs_key(self, name: str, primes: int = 0) -> Any:
-        obj = self._names[name].obj
-        return sp.Derivative(obj, t, primes) if primes else obj
 
     def rhs(self, x: Any) -> Any:
         """``Rhs(y)``: the right-hand side of a name (or ``y`` itself)."""
         if isinstance(x, str):
             return self.value(x)
-        return self._rhs.get(x, x)
+        return self.table.rhs.get(x, x)
 
     def val(self, x: Any) -> Any:
         """The value behind a quantity symbol (used by dual functions)."""
-        if isinstance(x, sp.Basic) and x in self._rhs:
-            return self._rhs[x]
+        if isinstance(x, sp.Basic) and x in self.table.rhs:
+            return self.table.rhs[x]
         return x
 
     # ------------------------------------------------------------ resolution
@@ -354,13 +309,13 @@ class Workspace(Mapping):
         Objects in ``keep`` are left alone, so ``D(y, x)`` can see through every
         name except ``x`` itself.
         """
-        return self._resolver(keep)(expr)
+        return self.resolver(keep)(expr)
 
-    def _resolver(self, keep: Iterable[Any] = ()) -> Callable[[Any], Any]:
+    def resolver(self, keep: Iterable[Any] = ()) -> Callable[[Any], Any]:
         """:meth:`resolve` with the substitution table built once, for applying
         to many expressions (the measure numbers of a vector)."""
         keep = {sp.sympify(k) for k in keep}
-        table = {k: v for k, v in self._rhs.items() if k not in keep}
+        table = {k: v for k, v in self.table.rhs.items() if k not in keep}
 
         def apply(expr: Any) -> Any:
             for _ in range(100 if table else 0):
@@ -423,7 +378,7 @@ class Workspace(Mapping):
     ) -> Any:
         key = parse_key(target)
         value = self.normalize(value, rearrange=rearrange)
-        form = self.model._assign_form(key, value, line=line)
+        form = self.model.assign_form(key, value, line=line)
         if form is not NotImplemented:
             return form
         if key.index:
@@ -434,10 +389,10 @@ class Workspace(Mapping):
                 raise ValueError(
                     f"cannot assign to derivative {target} of a non-scalar"
                 )
-            old = self._names.get(key.name)
+            old = self.table.entries.get(key.name)
             if old is not None and old.kind == "quantity":
-                del self._names[key.name]
-            self._values[key.name] = value
+                del self.table.entries[key.name]
+            self.table.stored[key.name] = value
             binding = value
             label = key.name
         else:
@@ -447,8 +402,8 @@ class Workspace(Mapping):
         return binding
 
     def _store_scalar(self, key: Key, value: Any) -> Any:
-        entry = self._names.get(key.name)
-        self._values.pop(key.name, None)
+        entry = self.table.entries.get(key.name)
+        self.table.stored.pop(key.name, None)
         if entry is not None and entry.kind in OBJECT_DECLS and not key.primes:
             entry = None  # a quantity named like a frame or point (ruletest7)
         if entry is None or entry.kind == "quantity":
@@ -456,29 +411,29 @@ class Workspace(Mapping):
                 raise ValueError(f"{key.name} is not a variable; cannot assign {key}")
             if entry is None:
                 sym = sp.Symbol(key.name, **self._assumptions(None))
-                entry = _Entry("quantity", sym)
-                self._names[key.name] = entry
-                self._entries_by_obj[sym] = key.name
+                entry = Entry("quantity", sym)
+                self.table.entries[key.name] = entry
+                self.table.by_obj[sym] = key.name
             sym = entry.obj
-            old = self._rhs.get(sym)
+            old = self.table.rhs.get(sym)
             if old is not None and isinstance(value, sp.Basic) and value.has(sym):
                 value = value.xreplace({sym: old})
             elif isinstance(value, sp.Basic) and value.has(sym):
                 raise ValueError(f"{key.name} is defined in terms of itself")
-            self._rhs[sym] = value
+            self.table.rhs[sym] = value
             return sym
         if entry.kind in OBJECT_DECLS:
             raise ValueError(f"{key.name} is a {entry.kind}, not a scalar")
-        rkey = self._rhs_key(key.name, key.primes)
-        if isinstance(value, sp.Basic) and value.has(rkey) and rkey in self._rhs:
-            value = value.xreplace({rkey: self._rhs[rkey]})
+        rkey = self.table.rhs_key(key.name, key.primes)
+        if isinstance(value, sp.Basic) and value.has(rkey) and rkey in self.table.rhs:
+            value = value.xreplace({rkey: self.table.rhs[rkey]})
         if key.primes > entry.order:
             entry.order = key.primes
-        self._rhs[rkey] = value
+        self.table.rhs[rkey] = value
         return self.symbol(str(key))
 
     def _store_element(self, key: Key, value: Any) -> Any:
-        current = self._values.get(key.name)
+        current = self.table.stored.get(key.name)
         if current is None:
             current = sp.zeros(*_shape_for(key.index))
         elif not isinstance(current, sp.MatrixBase):
@@ -508,10 +463,10 @@ class Workspace(Mapping):
             if j > current.cols:
                 current = current.row_join(sp.zeros(current.rows, j - current.cols))
             current[i - 1, j - 1] = value
-        old = self._names.get(key.name)
+        old = self.table.entries.get(key.name)
         if old is not None and old.kind == "quantity":
-            del self._names[key.name]
-        self._values[key.name] = current
+            del self.table.entries[key.name]
+        self.table.stored[key.name] = current
         return current
 
     # ---------------------------------------------------------- normalizing
@@ -519,7 +474,7 @@ class Workspace(Mapping):
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
         if _is_vectorial(value):
-            from .kinematics import vmap
+            from .model.kinematics import vmap
 
             return vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
         if isinstance(value, list | tuple):
@@ -548,12 +503,14 @@ class Workspace(Mapping):
         mode = self.settings.autorhs
         # Auxiliary speeds stay symbols (Constrain made them 0 or solved
         # them, but later velocities need them for the partial velocities).
-        kept = self.model._auxiliary_kept()
+        kept = self.model.auxiliary_kept()
         if mode == "ALL":
             value = self.resolve(value, kept)
         elif mode == "ON":
             simple = {
-                k: v for k, v in self._rhs.items() if _is_simple(v) and k not in kept
+                k: v
+                for k, v in self.table.rhs.items()
+                if _is_simple(v) and k not in kept
             }
             if simple:
                 value = _xreplace(value, simple)
@@ -598,7 +555,7 @@ class Workspace(Mapping):
 
     @property
     def intermediates(self) -> Any:
-        """The book of ``Z`` intermediates (:mod:`al2py_runtime.autoz`) while
+        """The book of ``Z`` intermediates (:mod:`al2py_runtime.intermediates.autoz`) while
         ``AutoZ`` is ON (None while it is OFF).  Intermediates made while it
         was ON stay valid."""
         if not self.settings.autoz:
@@ -613,13 +570,13 @@ class Workspace(Mapping):
         them out."""
         book = self.__dict__.get("_book")
         if book is None:
-            from .autoz import Intermediates
+            from .intermediates.autoz import Intermediates
 
-            book = self._book = Intermediates(taken=self._names)
+            book = self._book = Intermediates(taken=self.table.entries)
         book.rates = frozenset(
-            u for u in self.model._speeds() if isinstance(u, sp.Derivative)
+            u for u in self.model.generalized_speeds() if isinstance(u, sp.Derivative)
         )
-        zee_not = self._values.get("ZEE_NOT")
+        zee_not = self.table.stored.get("ZEE_NOT")
         if isinstance(zee_not, sp.MatrixBase):
             book.exclude = frozenset(sp.sympify(x) for x in zee_not)
         return book
@@ -627,18 +584,18 @@ class Workspace(Mapping):
     def solver_book(self, unknowns: int) -> Any:
         """The book for a linear solve of ``unknowns`` unknowns: the
         intermediates while ``AutoZ`` is ON; with it OFF, the same book for a
-        system larger than :data:`al2py_runtime.elimination.SMALL` (a closed
+        system larger than :data:`al2py_runtime.intermediates.elimination.SMALL` (a closed
         form swells with the size: a 9x9 Cramer's rule did not finish in 15
         minutes), else None (closed forms, readable, as Autolev prints
         them)."""
-        from .elimination import SMALL
+        from .intermediates.elimination import SMALL
 
         book = self.intermediates
         if book is None and unknowns > SMALL:
             book = self.book
         return book
 
-    def _book_or_none(self) -> Any:
+    def book_if_made(self) -> Any:
         """The book if any intermediate was ever made (for expansion)."""
         return self.__dict__.get("_book")
 
@@ -664,7 +621,7 @@ class Workspace(Mapping):
         ):
             primes = len(obj.variables)
             obj = obj.expr
-        name = self._entries_by_obj.get(obj)
+        name = self.table.by_obj.get(obj)
         if name is None:
             raise KeyError(f"{obj} is not an Autolev name")
         return name + "'" * primes
@@ -681,13 +638,13 @@ class Workspace(Mapping):
 
     def transcript(self, source: Iterable[str]) -> list[str]:
         """The transcript lines Autolev would print for ``source``."""
-        from .transcript import transcript_lines
+        from .names.transcript import transcript_lines
 
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
         shown = [
-            r if r.verbatim else replace(r, value=self.model._display(r.value))
+            r if r.verbatim else replace(r, value=self.model.displayed(r.value))
             for r in self._with_intermediates(self.responses)
         ]
         return transcript_lines(lines, shown)
@@ -696,12 +653,12 @@ class Workspace(Mapping):
         """Responses given while AutoZ was ON show intermediates by name, each
         defined (``Z12 = ...``) just before the first response that uses it;
         those given while it was OFF write them out."""
-        book = self._book_or_none()
+        book = self.book_if_made()
         if book is None:
             return list(responses)
         from sympy.physics.vector import Vector
 
-        from .autoz import has_intermediates
+        from .intermediates.autoz import has_intermediates
 
         out: list[Response] = []
         defined: set[Any] = set()
@@ -717,7 +674,7 @@ class Workspace(Mapping):
             elif not r.autoz:
                 out.append(replace(r, value=book.expand(value)))
             else:
-                for z in book._ordered(parts, defined):
+                for z in book.ordered(parts, defined):
                     defined.add(z)
                     out.append(
                         Response(
@@ -766,8 +723,8 @@ class Workspace(Mapping):
         row i, column j is the derivative of element i of ``y`` by element j.
         """
         if frame is not None or _is_vectorial(self.val(y)):
-            return self.model._vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
-        diff = _Partial(self._book_or_none())
+            return self.model.vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
+        diff = _Partial(self.book_if_made())
         if isinstance(x, sp.MatrixBase):
             xs = list(x)
             y = self.resolve(self.val(y), keep=xs)
@@ -781,9 +738,9 @@ class Workspace(Mapping):
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides
         (except the auxiliary speeds', see ``Model._auxiliary_kept``)."""
-        keep = self.model._auxiliary_kept()
+        keep = self.model.auxiliary_kept()
         if frame is not None or _is_vectorial(self.val(y)):
-            return self.model._vector_dt(self.resolve(self.val(y), keep), frame)
+            return self.model.vector_dt(self.resolve(self.val(y), keep), frame)
         y = self.resolve(self.val(y), keep)
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: sp.diff(e, t))
@@ -827,22 +784,22 @@ class Workspace(Mapping):
             eqs = sp.Matrix(eqs)
         else:
             eqs = sp.Matrix([self.val(eqs)])
-        eqs = self.resolve(eqs, keep=[*unknowns, *self._specified_inputs(unknowns)])
+        eqs = self.resolve(eqs, keep=[*unknowns, *self.specified_inputs(unknowns)])
         book = self.solver_book(len(unknowns))
-        zero = self.model._configuration() if book is not None else ()
+        zero = self.model.configuration_variables() if book is not None else ()
         solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
         return self.assign_all(names, solutions, line=line)
 
-    def _specified_inputs(self, unknowns: list[Any]) -> list[Any]:
+    def specified_inputs(self, unknowns: list[Any]) -> list[Any]:
         """Specified quantities with an equation that ``Solve`` keeps as
         names: Autolev's programs compute them first ("Quantities which were
         specified") and solve with the name (PendulumDynamics.c's
         ``D(omega', torque)`` is not zero).  One whose value involves an
         unknown is substituted, so the equations stay complete."""
         keep = []
-        for entry in self._names.values():
-            if entry.kind != "specified" or entry.obj not in self._rhs:
+        for entry in self.table.entries.values():
+            if entry.kind != "specified" or entry.obj not in self.table.rhs:
                 continue
             if not sp.sympify(self.resolve(entry.obj)).has(*unknowns):
                 keep.append(entry.obj)
@@ -1082,7 +1039,7 @@ class AutolevNames(Mapping):
 
     def __getitem__(self, name: str) -> Any:
         value = self._ws.value(name)
-        book = self._ws._book_or_none()
+        book = self._ws.book_if_made()
         if book is None or not isinstance(value, sp.Basic | sp.MatrixBase):
             return value if book is None else book.expand(value)
         if book.expanded_size(value) > self.WRITE_OUT:
@@ -1093,7 +1050,7 @@ class AutolevNames(Mapping):
         """``AUTOLEV[name]`` with every intermediate written out, however
         large (may take minutes)."""
         value = self._ws.value(name)
-        book = self._ws._book_or_none()
+        book = self._ws.book_if_made()
         return value if book is None else book.expand(value)
 
     def __iter__(self) -> Iterator[str]:
@@ -1108,6 +1065,40 @@ class AutolevNames(Mapping):
     def __repr__(self) -> str:
         return f"<Autolev names of {self._ws.filename}: {', '.join(self)}>"
 
+
+def _offer_model_commands() -> None:
+    """Give :class:`Workspace` one method per model command
+    (:data:`~.model.model.MODEL_COMMANDS`, the :class:`Model` methods marked
+    ``@command``) that calls it on :attr:`Workspace.model`, with the
+    command's name, signature and docstring."""
+    for name in sorted(MODEL_COMMANDS):
+        if name in Workspace.__dict__:
+            raise TypeError(f"Workspace.{name} hides the model command {name}")
+        attr = getattr(Model, name)
+        if isinstance(attr, property):
+            offered: Any = property(
+                functools.update_wrapper(_model_property(name), attr.fget)
+            )
+        else:
+            offered = functools.update_wrapper(_model_method(name), attr)
+        setattr(Workspace, name, offered)
+
+
+def _model_method(name: str) -> Callable[..., Any]:
+    def command(self: Workspace, *args: Any, **kw: Any) -> Any:
+        return getattr(self.model, name)(*args, **kw)
+
+    return command
+
+
+def _model_property(name: str) -> Callable[[Workspace], Any]:
+    def command(self: Workspace) -> Any:
+        return getattr(self.model, name)
+
+    return command
+
+
+_offer_model_commands()
 
 # failures inside a generated module name the .al line (model commands are
 # answered by Model's methods, so those are guarded too)

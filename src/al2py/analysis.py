@@ -16,8 +16,8 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from al2py_runtime.records import INTEGRATION_DEFAULTS as _INTEGRATION_DEFAULTS
-from al2py_runtime.records import KINDS as _CODE_KINDS
+from al2py_runtime.jobs.records import INTEGRATION_DEFAULTS as _INTEGRATION_DEFAULTS
+from al2py_runtime.jobs.records import KINDS as _CODE_KINDS
 from al2py_runtime.vocabulary import (
     BUILTINS,
     FRAME_DECLS,
@@ -865,7 +865,7 @@ class Analysis:
         return self._facts()
 
     def _enter_Setting(self, stmt: ir.Setting) -> StmtFacts:
-        from al2py_runtime.settings import SETTINGS, check_setting
+        from al2py_runtime.names.settings import SETTINGS, check_setting
 
         message = check_setting(stmt.name, stmt.value)
         if message is not None:
@@ -1257,7 +1257,7 @@ class Analysis:
                     )
             return self._facts()
         if stmt.name == "UNITS":
-            from al2py_runtime.units import UnitError, parse_unit
+            from al2py_runtime.jobs.units import UnitError, parse_unit
 
             for item in stmt.items:
                 if not isinstance(item, ir.Equation) or not isinstance(

@@ -309,10 +309,12 @@ def _check_in_this_process(
 
 def _run_jobs(module, display: str, outdir: Path) -> str:
     """Perform every CODE job of an imported module ('' or what failed)."""
+    from al2py_runtime.jobs.run import run_job
+
     jobs = list(getattr(module.al, "jobs", []))
     for job in jobs:
         try:
-            result = module.al.run_job(job)
+            result = run_job(job)
             result.write(outdir)
         except BaseException as exc:  # noqa: BLE001 - a verdict, never a traceback
             where = getattr(job, "where", "CODE")

@@ -441,7 +441,7 @@ def _check_one(
     ws: object,
     zs: dict[str, object] | None = None,
 ) -> ResponseCheck:
-    from al2py_runtime.printing import autolev_str
+    from al2py_runtime.names.printing import autolev_str
 
     try:
         shown = autolev_str(ours, digits)

@@ -115,7 +115,7 @@ def _check_number(node: ir.Number) -> None:
 
 
 def _unit_names() -> dict:
-    from al2py_runtime.units import UNIT_NAMES
+    from al2py_runtime.jobs.units import UNIT_NAMES
 
     return UNIT_NAMES
 
@@ -124,7 +124,7 @@ def _check_unit(node: ir.UnitExpr) -> None:
     for word, _power in node.factors:
         _check_unit_word(word, node.span)
     if node.text:
-        from al2py_runtime.units import UnitError, parse_unit
+        from al2py_runtime.jobs.units import UnitError, parse_unit
 
         try:
             parse_unit(node.text)

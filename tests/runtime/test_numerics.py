@@ -1,4 +1,4 @@
-"""Tests for the numerical CODE jobs (al2py_runtime.numerics, .jobs, .cli).
+"""Tests for the numerical CODE jobs (al2py_runtime.jobs.numerics, .jobs, .cli).
 
 Workspaces are built by hand, as a generated module would build them, from
 the tutorial's scripts and printed equations.
@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 import sympy as sp
 from al2py_runtime import Workspace, t
-from al2py_runtime.jobs import NumericsError, output_times
+from al2py_runtime.jobs.run import NumericsError, output_times
 from scipy.integrate import solve_ivp
 
 # ------------------------------------------------------------------ scripts
@@ -429,7 +429,7 @@ def test_missing_constants_are_named_before_code_is_generated(monkeypatch):
     ws = _defaults()
     calls = []
     monkeypatch.setattr(
-        "al2py_runtime.backends.compile_dynamics", lambda *a: calls.append(a)
+        "al2py_runtime.jobs.backends.compile_dynamics", lambda *a: calls.append(a)
     )
     message = (
         "CODE Ode defaults.m (line 9): no value for H (declared on line 3), "

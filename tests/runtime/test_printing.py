@@ -1,4 +1,4 @@
-"""Tests for al2py_runtime.printing (Autolev-syntax responses)."""
+"""Tests for al2py_runtime.names.printing (Autolev-syntax responses)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 import sympy as sp
 from al2py_runtime import algebra as al
 from al2py_runtime import matrices as mt
-from al2py_runtime.printing import autolev_str, format_number, format_response
+from al2py_runtime.names.printing import autolev_str, format_number, format_response
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import ReferenceFrame
 
@@ -321,6 +321,6 @@ def test_dyadics_points_frames():
 def test_doctests():
     import doctest
 
-    from al2py_runtime import printing
+    from al2py_runtime.names import printing
 
     assert doctest.testmod(printing).failed == 0

@@ -1,4 +1,4 @@
-"""Tests for al2py_runtime.units (UnitSystem, Input/Output units, Units(a, b))."""
+"""Tests for al2py_runtime.jobs.units (UnitSystem, Input/Output units, Units(a, b))."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import math
 
 import pytest
 from al2py_runtime import Workspace
-from al2py_runtime.units import UnitError, UnitSystem, parse_unit, units_factor
+from al2py_runtime.jobs.units import UnitError, UnitSystem, parse_unit, units_factor
 
 SI = UnitSystem("kg", "meter", "sec")
 

@@ -18,8 +18,8 @@ from __future__ import annotations
 from pathlib import Path, PurePath
 from typing import Any
 
-from .. import backends
-from ..jobs import Job, NumericsError
+from ..jobs import backends
+from ..jobs.run import Job, NumericsError
 from .infile import in_text
 from .program import Program, describe
 

@@ -6,7 +6,7 @@ import json
 import math
 from typing import Any
 
-from .. import backends
+from ..jobs import backends
 from .program import Assign, Program
 
 __all__ = ["c_source"]
@@ -24,7 +24,7 @@ def _assign(a: Assign, printer: Any, n: int) -> str:
     kind = a.target[0]
     if kind == "ud":
         return f"    const double {a.target[2]} = ud[{a.target[1]}];"
-    e = backends._ccode(a.expr, printer)
+    e = backends.c_expression(a.expr, printer)
     if kind == "tmp":
         return f"    const double {a.target[1]} = {e};"
     if kind == "m":
@@ -48,7 +48,7 @@ def _unpack(program: Program, block: list[Assign]) -> list[str]:
 
 def equations(program: Program, api: str) -> list[str]:
     """``eqns`` and ``outputs`` (with ``al_solve`` when needed)."""
-    printer = backends._Printer()
+    printer = backends.CPrinter()
     n = program.nu
     lines = [
         f"#define AL_NY {program.ny}  /* states */",
@@ -57,7 +57,7 @@ def equations(program: Program, api: str) -> list[str]:
         f"#define AL_NOUT {program.nout}  /* outputs, all tables */",
     ]
     if n:
-        lines.append(backends._SOLVE_C)
+        lines.append(backends.SOLVE_C)
     used = [a.expr for a in program.eqns]
     lines += [
         "/* The derivatives dy of the states y at time T with the constants p,",

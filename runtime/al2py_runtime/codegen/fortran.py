@@ -11,7 +11,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.fortran import FCodePrinter
 
-from ..jobs import NumericsError
+from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
 __all__ = ["fortran_source"]

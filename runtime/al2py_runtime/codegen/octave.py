@@ -10,7 +10,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.octave import OctaveCodePrinter
 
-from ..jobs import NumericsError
+from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]

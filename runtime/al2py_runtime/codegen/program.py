@@ -19,21 +19,22 @@ from typing import Any
 
 import sympy as sp
 
-from .. import __version__, backends
-from ..jobs import (
+from ..jobs import backends
+from ..jobs.run import (
     Column,
     Job,
     NumericsError,
     Table,
-    _dynamics_equations,
-    _initial_state,
-    _input_values,
-    _integration,
-    _output_factors,
+    dynamics_equations,
+    initial_state,
+    input_values,
+    integration_parameters,
     label_of,
     normalize_name,
+    output_factors,
 )
-from ..tables import format_table
+from ..jobs.tables import format_table
+from ..version import __version__
 
 __all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 
@@ -322,10 +323,10 @@ def describe(
             f"{job.where}: code for CODE {job.kind.title()} is not written yet"
             " (only Dynamics and ODE); run it with python or run()"
         )
-    vals, keep = _input_values(job, {})
-    c = _dynamics_equations(job, frozenset(keep))
+    vals, keep = input_values(job, {})
+    c = dynamics_equations(job, frozenset(keep))
     us = job.unit_system
-    y0 = _initial_state(job, c, vals)
+    y0 = initial_state(job, c, vals)
     spec = c.spec
     taken: set[str] = set()
 
@@ -354,7 +355,7 @@ def describe(
         e = entry("Initial Value", name, value)
         initials.append(e)
         rename[d] = sp.Symbol(e.ident, real=True)
-    ip = _integration(vals)
+    ip = integration_parameters(vals)
     integration = []
     for group, key in INTEGRATION_LINES:
         unit = unit_of(key) if key in vals.values else None
@@ -411,7 +412,7 @@ def describe(
         flat, [("out", k) for k in range(len(flat))], inter, x_names, set()
     )
     outputs += more
-    factors = [x for row in _output_factors(job, vals) for x in row]
+    factors = [x for row in output_factors(job, vals) for x in row]
     tables = []
     pos = 0
     for number, ospec in enumerate(job.outputs, start=1):

@@ -1,4 +1,4 @@
-"""MassAndLoads: part of :class:`al2py_runtime.mechanics.Model`.
+"""MassAndLoads: part of :class:`al2py_runtime.model.model.Model`.
 
 Mass distribution (``Mass()``, ``CM``, inertia dyadics and the transfer theorem) and loads (``Force_P>``, ``Torque_B>``, ``Force(O/Q, v>)``, ``Gravity``).
 """
@@ -15,7 +15,8 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
+from .state import command
 
 __all__ = ["MassAndLoads"]
 
@@ -25,7 +26,7 @@ class MassAndLoads:
 
     # ------------------------------------------------- mass distribution
 
-    def _mass(self, obj: Any, *, strict: bool = True) -> Any:
+    def body_mass(self, obj: Any, *, strict: bool = True) -> Any:
         st = self._mech
         if isinstance(obj, ReferenceFrame) and obj in st.bodies:
             m = st.bodies[obj].mass
@@ -42,28 +43,30 @@ class MassAndLoads:
     def _objects(self, objs: tuple) -> list:
         return list(objs) if objs else list(self._mech.massive)
 
-    def _center(self, obj: Any) -> Point:
+    def mass_center(self, obj: Any) -> Point:
         if isinstance(obj, ReferenceFrame):
             return self._body(obj).point
         return obj
 
+    @command
     def mass_of(self, *objs: Any) -> Any:
         """``Mass(A, B)``; ``Mass()`` is the total mass."""
         return sum(
-            (self._mass(o, strict=bool(objs)) for o in self._objects(objs)),
+            (self.body_mass(o, strict=bool(objs)) for o in self._objects(objs)),
             sp.Integer(0),
         )
 
+    @command
     def cm(self, p: Point, *objs: Any) -> Vector:
         """``CM(P, A, B)``: position vector from P to the mass center."""
         total = sp.Integer(0)
         r = Vector(0)
         for o in self._objects(objs):
-            m = self._mass(o, strict=bool(objs))
+            m = self.body_mass(o, strict=bool(objs))
             if m == 0:
                 continue
             total += m
-            r += m * self.pos(p, self._center(o))
+            r += m * self.pos(p, self.mass_center(o))
         if total == 0:
             raise ValueError("CM: the system has no mass")
         return kin.vmap(r, lambda e: kin.tidy(e / total))
@@ -72,6 +75,7 @@ class MassAndLoads:
         one = (frame.x | frame.x) + (frame.y | frame.y) + (frame.z | frame.z)
         return kin.tidy(r.dot(r)) * one - (r | r)
 
+    @command
     def central_inertia(self, body: ReferenceFrame) -> Dyadic:
         """``I_B_Bo>>``: the central inertia dyadic of a body."""
         b = self._body(body)
@@ -79,10 +83,11 @@ class MassAndLoads:
             return Dyadic(0)
         if b.inertia_point is None or b.inertia_point is b.point:
             return b.inertia
-        m = self._mass(body)
+        m = self.body_mass(body)
         r = self.pos(b.inertia_point, b.point)
         return kin.vmap(b.inertia - m * self._transfer(r, body), kin.tidy)
 
+    @command
     def inertia_dyadic(self, body: Any, p: Point) -> Dyadic:
         """``I_B_P>>``: inertia dyadic of body (or particle) B about point P."""
         if isinstance(body, Point):
@@ -93,10 +98,11 @@ class MassAndLoads:
         central = self.central_inertia(body)
         if p is b.point:
             return central
-        m = self._mass(body)
+        m = self.body_mass(body)
         r = self.pos(p, b.point)
         return kin.vmap(central + m * self._transfer(r, body), kin.tidy)
 
+    @command
     def inertia(self, p: Point, *objs: Any) -> Dyadic:
         """``Inertia(P, A, B)``: inertia dyadic of the objects about P
         (no objects: the whole system)."""
@@ -106,7 +112,7 @@ class MassAndLoads:
             if isinstance(o, ReferenceFrame):
                 out += self.inertia_dyadic(o, p)
             else:
-                m = self._mass(o, strict=bool(objs))
+                m = self.body_mass(o, strict=bool(objs))
                 if m != 0:
                     r = self.pos(p, o)
                     frame = st.newtonian or (
@@ -117,42 +123,49 @@ class MassAndLoads:
 
     # --------------------------------------------------------- loads
 
+    @command
     def force_on(self, p: Point) -> Vector:
         """``Force_P>`` (the zero vector if none was applied)."""
         return self._mech.forces.get(p, Vector(0))
 
+    @command
     def torque_on(self, b: ReferenceFrame) -> Vector:
         """``Torque_B>`` (the zero vector if none was applied)."""
         return self._mech.torques.get(b, Vector(0))
 
+    @command
     def add_force(self, p: Point, v: Any) -> Vector:
         st = self._mech
         st.forces[p] = self.force_on(p) + kin.as_vector(v)
         return st.forces[p]
 
+    @command
     def add_torque(self, b: ReferenceFrame, v: Any) -> Vector:
         st = self._mech
         st.torques[b] = self.torque_on(b) + kin.as_vector(v)
         return st.torques[b]
 
+    @command
     def force_between(self, o: Point, q: Point, v: Any) -> None:
         """``Force(O/Q, v>)``: -v> on O and +v> on Q."""
         v = kin.as_vector(v)
         self.add_force(o, -v)
         self.add_force(q, v)
 
+    @command
     def torque_between(self, a: ReferenceFrame, b: ReferenceFrame, v: Any) -> None:
         """``Torque(A/B, v>)``: -v> on A and +v> on B."""
         v = kin.as_vector(v)
         self.add_torque(a, -v)
         self.add_torque(b, v)
 
+    @command
     def gravity(self, vec: Any, *objs: Any, line: int | None = None) -> None:
         """``Gravity(G*N1>)``: adds mass*vec to every particle and mass center
         (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
         listed bodies and particles only."""
         vec = kin.as_vector(vec)
         for o in self._objects(objs):
-            m = self._mass(o, strict=False)
+            m = self.body_mass(o, strict=False)
             if m != 0:
-                self.add_force(self._center(o), m * vec)
+                self.add_force(self.mass_center(o), m * vec)

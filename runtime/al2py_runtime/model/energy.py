@@ -1,4 +1,4 @@
-"""Energy: part of :class:`al2py_runtime.mechanics.Model`.
+"""Energy: part of :class:`al2py_runtime.model.model.Model`.
 
 ``KE()``, ``Momentum``, ``Gyrostat``, power and ``NiCheck()``.
 """
@@ -15,8 +15,8 @@ from sympy.physics.vector import (
     dynamicsymbols,
 )
 
-from .. import kinematics as kin
-from .state import t
+from . import kinematics as kin
+from .state import command, t
 
 __all__ = ["Energy"]
 
@@ -26,22 +26,24 @@ class Energy:
 
     # ---------------------------------------------- energy and momentum
 
+    @command
     def ke(self, *objs: Any) -> Any:
         """``KE()``: kinetic energy of all particles and bodies in N;
         ``KE(A, P)`` of the bodies and particles named."""
-        n = self._n()
+        n = self.newtonian_frame()
         total = sp.Integer(0)
         for o in self._objects(objs):
-            m = self._mass(o, strict=False)
-            p = self._center(o)
+            m = self.body_mass(o, strict=False)
+            p = self.mass_center(o)
             if m != 0:
-                v = self._actual(self.vel(p, n))
+                v = self.actual_value(self.vel(p, n))
                 total += m * v.dot(v) / 2
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
-                w = self._actual(self.ang_vel(o, n))
+                w = self.actual_value(self.ang_vel(o, n))
                 total += w.dot(self.central_inertia(o) & w) / 2
         return kin.tidy(total, self._gens())
 
+    @command
     def momentum(self, kind: str, *objs: Any) -> Any:
         """``Momentum(LINEAR)``, ``Momentum(ANGULAR, P)`` (about P; default:
         the mass center of the system) or ``Momentum(GENERALIZED)`` (the
@@ -49,7 +51,7 @@ class Energy:
         and particles listed after (``Momentum(LINEAR, A, B)``,
         ``Momentum(ANGULAR, P, A)``) restrict it to them."""
         kind = kind.upper()
-        n = self._n()
+        n = self.newtonian_frame()
         p: Point | None = None
         if kind == "ANGULAR" and objs and isinstance(objs[0], Point):
             p, objs = objs[0], objs[1:]
@@ -61,24 +63,25 @@ class Energy:
             raise ValueError("Momentum takes LINEAR, ANGULAR or GENERALIZED")
         out = Vector(0)
         for o in massive:
-            m = self._mass(o, strict=False)
-            c = self._center(o)
+            m = self.body_mass(o, strict=False)
+            c = self.mass_center(o)
             if kind == "LINEAR":
                 if m != 0:
-                    out += m * self._actual(self.vel(c, n))
+                    out += m * self.actual_value(self.vel(c, n))
                 continue
             if m != 0:
                 r = self.pos(p, c) if p is not None else self._from_cm(c)
                 if r != Vector(0):
-                    out += r ^ (m * self._actual(self.vel(c, n)))
+                    out += r ^ (m * self.actual_value(self.vel(c, n)))
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
-                w = self._actual(self.ang_vel(o, n))
+                w = self.actual_value(self.ang_vel(o, n))
                 out += self.central_inertia(o) & w
         return kin.tidy_vector(out)
 
     def _from_cm(self, c: Point) -> Vector:
         return -self.cm(c)
 
+    @command
     def gyrostat(
         self, option: str, shape: str, a: ReferenceFrame, b: ReferenceFrame, j: Any
     ) -> Any:
@@ -91,9 +94,9 @@ class Energy:
         if shape.upper() != "CYLINDER":
             raise ValueError("Gyrostat supports the CYLINDER rotor only")
         option = option.upper()
-        n = self._n()
-        wba = self._actual(self.ang_vel(b, a))
-        wa = self._actual(self.ang_vel(a, n))
+        n = self.newtonian_frame()
+        wba = self.actual_value(self.ang_vel(b, a))
+        wa = self.actual_value(self.ang_vel(a, n))
         if option == "ANGMOM":
             return kin.tidy_vector(j * wba)
         if option == "KE":
@@ -113,30 +116,32 @@ class Energy:
         gens = self._gens()
         return sp.Matrix([kin.tidy(r, gens) for r in rows])
 
+    @command
     def power(self) -> Any:
         """Power of all forces and torques in N (actual motion)."""
-        n = self._n()
+        n = self.newtonian_frame()
         st = self._mech
         total = sp.Integer(0)
         for p, f in st.forces.items():
             if f != Vector(0):
-                total += f.dot(self._actual(self.vel(p, n)))
+                total += f.dot(self.actual_value(self.vel(p, n)))
         for b, tq in st.torques.items():
             if tq != Vector(0):
-                total += tq.dot(self._actual(self.ang_vel(b, n)))
+                total += tq.dot(self.actual_value(self.ang_vel(b, n)))
         return kin.tidy(total, self._gens())
 
+    @command
     def nicheck(self) -> Any:
         """``NiCheck()``: ``KE() - WORK`` where ``WORK`` is a new variable
         (``NICHECK_WORK``, initially 0) with ``WORK' = `` the power of all
         forces and torques; it stays constant along exact solutions."""
         name = "NICHECK_WORK"
         k = 1
-        while name in self.ws._names:
+        while name in self.ws.table.entries:
             k += 1
             name = f"NICHECK_WORK{k}"
         work = dynamicsymbols(name, real=True)
         self._mech.checks.append(work)
-        self.ws._declare(name, "variable", work, order=1)
-        self.ws._rhs[sp.Derivative(work, t)] = self.power()
+        self.ws.table.declare(name, "variable", work, order=1)
+        self.ws.table.rhs[sp.Derivative(work, t)] = self.power()
         return self.ke() - work

@@ -1,4 +1,4 @@
-"""KaneEquations: part of :class:`al2py_runtime.mechanics.Model`.
+"""KaneEquations: part of :class:`al2py_runtime.model.model.Model`.
 
 ``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model.
 """
@@ -13,10 +13,10 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
-from ..elimination import SMALL
-from ..kane import arrange, linear_terms, solve_speeds
-from .state import t
+from ..intermediates.elimination import SMALL
+from . import kinematics as kin
+from .arrange import arrange, linear_terms, solve_speeds
+from .state import command, t
 
 __all__ = ["KaneEquations"]
 
@@ -38,7 +38,7 @@ class KaneEquations:
         """The partial velocities of ``v`` by ``speeds``: for each speed, the
         three named measure numbers in ``frame``."""
         keep = speeds + [sp.Derivative(u, t) for u in speeds]
-        v = self._actual(v, keep)
+        v = self.actual_value(v, keep)
         if v == Vector(0):
             return [[sp.S.Zero] * 3 for _ in speeds]
         measures = [book.name_linear(e, speeds) for e in v.to_matrix(frame)]
@@ -55,10 +55,11 @@ class KaneEquations:
     def _zdot(a: list, b: list, book: Any) -> Any:
         return book.name(sp.Add(*[x * y for x, y in zip(a, b, strict=True)]))
 
+    @command
     def fr(self) -> sp.Matrix:
         """``Fr()``: generalized active forces (one row per independent or
         auxiliary speed; dependent speeds are eliminated)."""
-        n = self._n()
+        n = self.newtonian_frame()
         st = self._mech
         speeds = self._rows_speeds("Fr()")
         rows = [sp.Integer(0)] * len(speeds)
@@ -72,8 +73,8 @@ class KaneEquations:
                 dots = self._dot_rows(f, self._partials(v, speeds))
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
-                keep = self.ws._specified_inputs([])
-                mf = [book.name(e) for e in self._actual(f, keep).to_matrix(frame)]
+                keep = self.ws.specified_inputs([])
+                mf = [book.name(e) for e in self.actual_value(f, keep).to_matrix(frame)]
                 parts = self._zpartials(v, speeds, frame, book)
                 dots = [self._zdot(mf, part, book) for part in parts]
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
@@ -81,14 +82,16 @@ class KaneEquations:
 
     def _inertia_torque(self, b: ReferenceFrame, n: ReferenceFrame) -> Vector:
         inertia = self.central_inertia(b)
-        w = self._actual(self.ang_vel(b, n))
-        alf = self._actual(self.ang_acc(b, n))
+        w = self.actual_value(self.ang_vel(b, n))
+        alf = self.actual_value(self.ang_acc(b, n))
         return -((inertia & alf) + (w ^ (inertia & w)))
 
+    @command
     def tstar(self, b: ReferenceFrame, n: ReferenceFrame | None = None) -> Vector:
         """``TStar(B, N)``: inertia torque of body B in N."""
-        return kin.tidy_vector(self._inertia_torque(b, n or self._n()))
+        return kin.tidy_vector(self._inertia_torque(b, n or self.newtonian_frame()))
 
+    @command
     def frstar(self) -> sp.Matrix:
         """``FrStar()``: generalized inertia forces (rows as :meth:`fr`).
 
@@ -96,10 +99,10 @@ class KaneEquations:
         ``rest + sum(coef_k * Uk')`` before they are dotted with the partial
         velocities, so each row is built already arranged in the speeds'
         derivatives (large models never differentiate whole rows)."""
-        n = self._n()
+        n = self.newtonian_frame()
         st = self._mech
         speeds = self._rows_speeds("FrStar()")
-        accels = [sp.Derivative(u, t) for u in self._speeds()]
+        accels = [sp.Derivative(u, t) for u in self.generalized_speeds()]
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
 
@@ -135,10 +138,10 @@ class KaneEquations:
                         r.append(c * a)
 
         for o in st.massive:
-            m = self._mass(o, strict=False)
-            p = self._center(o)
+            m = self.body_mass(o, strict=False)
+            p = self.mass_center(o)
             if m != 0:
-                a = self._actual(self.acc(p, n))
+                a = self.actual_value(self.acc(p, n))
                 if a != Vector(0):
                     add(-m * a, self.vel(p, n), n)
             if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
@@ -163,7 +166,7 @@ class KaneEquations:
                 " a kinematical differential equation (Q' = ...) missing?"
             )
         if aux:
-            n = self._n().name
+            n = self.newtonian_frame().name
             one = len(aux) == 1
             parts.append(
                 f"{head} depends on the auxiliary speed{'' if one else 's'}"
@@ -176,6 +179,7 @@ class KaneEquations:
 
     # ------------------------------------------------------ Constrain
 
+    @command
     def constrain(self, which: str, speeds: Any, *, line: int | None = None) -> tuple:
         """``Constrain(DEPENDENT[U2, U3])`` or ``Constrain(AUXILIARY[...])``.
 
@@ -187,13 +191,13 @@ class KaneEquations:
         if which not in ("DEPENDENT", "AUXILIARY"):
             raise ValueError("Constrain takes DEPENDENT[...] or AUXILIARY[...]")
         st = self._mech
-        mat = self.ws._values.get(which)
+        mat = self.ws.table.stored.get(which)
         if not isinstance(mat, sp.MatrixBase):
             raise ValueError(f"Constrain: {which} has not been assigned")
         speeds = [sp.sympify(u) for u in speeds]
-        eqs = [self.ws.resolve(e, keep=self._speeds()) for e in mat]
+        eqs = [self.ws.resolve(e, keep=self.generalized_speeds()) for e in mat]
         book = self.ws.solver_book(len(speeds))
-        sols = solve_speeds(eqs, speeds, book, self._configuration())
+        sols = solve_speeds(eqs, speeds, book, self.configuration_variables())
         gens = self._gens()
         out = []
         for u, s in zip(speeds, sols, strict=True):
@@ -205,7 +209,7 @@ class KaneEquations:
             st.speed_dt[du] = ds
             name = self.ws.name_of(u)
             base = name.rstrip("'")
-            if self.ws._names[base].order > len(name) - len(base):
+            if self.ws.table.entries[base].order > len(name) - len(base):
                 self.ws.assign(name + "'", ds, line=line)
         target = st.dependent if which == "DEPENDENT" else st.auxiliary
         for u in speeds:
@@ -213,7 +217,7 @@ class KaneEquations:
                 target.append(u)
         return kin.one_or_tuple(out)
 
-    def _configuration(self) -> list:
+    def configuration_variables(self) -> list:
         """The coordinates (variables with a kinematical differential
         equation): 0 in the usual reference configuration, which is where
         pivots of symbolic eliminations must not vanish."""
@@ -224,14 +228,14 @@ class KaneEquations:
     def _speed_subs(self, expr: Any) -> Any:
         """Substitute kinematical equations, constrained speeds and their
         derivatives (named quantities are kept)."""
-        speeds = set(self._speeds())
+        speeds = set(self.generalized_speeds())
         table = dict(self._mech.speed_dt)
-        for k, v in self.ws._rhs.items():
+        for k, v in self.ws.table.rhs.items():
             if k in speeds:
                 table[k] = v
             elif isinstance(k, sp.Derivative):
-                name = self.ws._entries_by_obj.get(k.expr)
-                if name is not None and self.ws._names[name].kind == "variable":
+                name = self.ws.table.by_obj.get(k.expr)
+                if name is not None and self.ws.table.entries[name].kind == "variable":
                     table[k] = v
         for _ in range(50):
             new = expr.xreplace(table)
@@ -240,6 +244,7 @@ class KaneEquations:
             expr = new
         return kin.doit_derivatives(expr)
 
+    @command
     def kane(self, *forces: Any, line: int | None = None) -> sp.Matrix:
         """``Kane()`` / ``Kane(F1, F2)``: arrange ``ZERO`` for integration.
 
@@ -254,7 +259,7 @@ class KaneEquations:
         solution (so the constraint forces cancel), and, when force measure
         numbers are named, solved for them (assigned as their RHS)."""
         st = self._mech
-        zero = self.ws._values.get("ZERO")
+        zero = self.ws.table.stored.get("ZERO")
         if not isinstance(zero, sp.MatrixBase):
             raise ValueError("Kane: ZERO has not been assigned")
         speeds = st.fr_speeds if st.fr_speeds is not None else self._fr_speeds()
@@ -272,7 +277,7 @@ class KaneEquations:
         for i in ind:
             row = z[i]
             for x in aux:
-                c = sp.diff(self.ws.resolve(self.ws._rhs.get(x, x)), i)
+                c = sp.diff(self.ws.resolve(self.ws.table.rhs.get(x, x)), i)
                 if c != 0:
                     row += c * z[x]
             combined.append(row)
@@ -298,7 +303,7 @@ class KaneEquations:
             # Few forces: closed form, as before, whatever AutoZ says.
             many = len(forces) > SMALL
             book = self.ws.solver_book(len(forces)) if many else None
-            sols = solve_speeds(eqs, forces, book, self._configuration())
+            sols = solve_speeds(eqs, forces, book, self.configuration_variables())
             for f, s in zip(forces, sols, strict=True):
                 self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
         st.kane = {
@@ -312,7 +317,7 @@ class KaneEquations:
 
     # ------------------------------------------------ sympy's KanesMethod
 
-    def _coordinates(self, keep: list) -> list:
+    def coordinates_of(self, keep: list) -> list:
         """Variables with a kinematical differential equation in the speeds
         (NiCheck's work variables and perturbation variables are not)."""
         checks = set(self._mech.checks)
@@ -321,11 +326,12 @@ class KaneEquations:
             q = dq.expr
             if q in checks or q in keep or dq in keep:
                 continue
-            rhs = self._actual(self.ws._rhs[dq], keep)
+            rhs = self.actual_value(self.ws.table.rhs[dq], keep)
             if sp.sympify(rhs).has(*keep):
                 out.append((q, rhs))
         return out
 
+    @command
     def kane_inputs(self) -> Any:
         """The script's model as ``KanesMethod`` inputs (see
         :func:`al2py_runtime.model.kane_inputs`)."""
@@ -334,12 +340,14 @@ class KaneEquations:
         return kane_inputs(self)
 
     @property
+    @command
     def kd_eqs(self) -> list:
         """The kinematical differential equations ``Q' - rhs`` (coordinates
         in declaration order), as ``KanesMethod`` takes them."""
-        speeds = self._speeds()
-        return [sp.Derivative(q, t) - rhs for q, rhs in self._coordinates(speeds)]
+        speeds = self.generalized_speeds()
+        return [sp.Derivative(q, t) - rhs for q, rhs in self.coordinates_of(speeds)]
 
+    @command
     def kanes_method(self) -> Any:
         """``sympy.physics.mechanics.KanesMethod`` for this script, with its
         equations formed (``mass_matrix_full``, ``forcing_full``)."""

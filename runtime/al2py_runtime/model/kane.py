@@ -17,7 +17,7 @@ import sympy as sp
 from sympy.physics.mechanics import KanesMethod
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
-from .. import kinematics as kin
+from . import kinematics as kin
 
 t = dynamicsymbols._t
 
@@ -85,7 +85,7 @@ def _plain_dcms(frames: list, book: Any) -> None:
 
 
 def kane_inputs(model: Any) -> KaneInputs:
-    """A script's model (``al.model``, see :class:`~al2py_runtime.mechanics.Model`) as
+    """A script's model (``al.model``, see :class:`~al2py_runtime.model.model.Model`) as
     :class:`KaneInputs`: the one place where the script becomes
     ``KanesMethod``'s inputs.
 
@@ -93,14 +93,14 @@ def kane_inputs(model: Any) -> KaneInputs:
     ones, with every right-hand side substituted except the speeds; the
     sympy points and frames of the script are given these velocities
     (``mod.Q.vel(mod.N)`` is ``V_Q_N>``)."""
-    n = model._n()
-    st = model._mech
+    n = model.newtonian_frame()
+    st = model.registry
     if st.gyrostat:
         raise ValueError(
             "kanes_method(): Gyrostat(FRSTAR, ...) terms have no sympy"
             " RigidBody; the model would miss the rotor"
         )
-    speeds = model._speeds()
+    speeds = model.generalized_speeds()
     if not speeds:
         raise ValueError(
             "kanes_method(): there are no generalized speeds; declare them"
@@ -125,12 +125,12 @@ def kane_inputs(model: Any) -> KaneInputs:
 
     # sympy's KanesMethod (and PyDy, Linearizer) take plain expressions: the
     # AutoZ intermediates are written out.
-    book = model.ws._book_or_none()
+    book = model.ws.book_if_made()
     if book is not None:
         _plain_dcms(list(st.frames.values()) + [n], book)
 
     def fix(x: Any) -> Any:
-        x = model._actual(x, keep)
+        x = model.actual_value(x, keep)
         if book is not None:
             x = book.expand(x)
         return kin.vmap(x, lambda e: sp.sympify(e).xreplace(swap)) if swap else x
@@ -138,7 +138,7 @@ def kane_inputs(model: Any) -> KaneInputs:
     # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
     # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
     zero_aux = [
-        u for u in st.auxiliary if model.ws.resolve(model.ws._rhs.get(u, u)) == 0
+        u for u in st.auxiliary if model.ws.resolve(model.ws.table.rhs.get(u, u)) == 0
     ]
     solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
     solved = [u for u in solved if u not in zero_aux]
@@ -146,18 +146,18 @@ def kane_inputs(model: Any) -> KaneInputs:
     dep = [swap.get(u, u) for u in solved]
     aux = [swap.get(u, u) for u in zero_aux]
     ind = [u for u in us if u not in dep and u not in aux]
-    coords = model._coordinates(speeds)
+    coords = model.coordinates_of(speeds)
     q_ind = [q for q, _rhs in coords]
     kd_eqs = [sp.Derivative(q, t) - fix(rhs) for q, rhs in coords]
     for u, new in swap.items():
         if isinstance(u, sp.Derivative) and u.derivative_count == 1:
             q_ind.append(u.expr)
             kd_eqs.append(u - new)
-    constraints = [swap.get(u, u) - fix(model.ws._rhs[u]) for u in solved]
+    constraints = [swap.get(u, u) - fix(model.ws.table.rhs[u]) for u in solved]
     bodies = []
     for o in st.massive:
-        m = fix(model._mass(o, strict=False))
-        p = model._center(o)
+        m = fix(model.body_mass(o, strict=False))
+        p = model.mass_center(o)
         # Accelerations are the velocities' derivatives with every speed
         # kept (an Autolev A2pts result has dependent speeds' derivatives
         # substituted, which KanesMethod's constraints would count twice).

@@ -1,4 +1,4 @@
-"""Objects: part of :class:`al2py_runtime.mechanics.Model`.
+"""Objects: part of :class:`al2py_runtime.model.model.Model`.
 
 Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned.
 """
@@ -16,9 +16,9 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
 from ..vocabulary import Decl, Form, match
-from .state import _as_dyadic, _Body
+from . import kinematics as kin
+from .state import BodyRecord, as_dyadic, command
 
 __all__ = ["Objects"]
 
@@ -31,37 +31,40 @@ class Objects:
         p = Point(name.upper())
         st.points[name.upper()] = p
         st.edges.setdefault(p, {})
-        self.ws._declare(name, kind, p)
+        self.ws.table.declare(name, kind, p)
         return p
 
     def _new_frame(self, name: str, kind: Decl) -> ReferenceFrame:
         st = self._mech
         f = ReferenceFrame(name.upper())
         st.frames[name.upper()] = f
-        self.ws._declare(name, kind, f)
+        self.ws.table.declare(name, kind, f)
         origin = self._new_point(name.upper() + "O", Decl.POINT)
         st.fixed_in[origin] = f
         return f
 
     # ---------------------------------------------------------- declarations
 
+    @command
     def newtonian(self, name: str) -> ReferenceFrame:
         """``Newtonian N``: frame N and point NO fixed in N."""
         f = self._new_frame(name, Decl.NEWTONIAN)
         self._mech.newtonian = f
         return f
 
+    @command
     def frames(self, *names: str) -> Any:
         """``Frames A, B``: frames and their fixed points AO, BO."""
         return kin.one_or_tuple([self._new_frame(n, Decl.FRAME) for n in names])
 
+    @command
     def bodies(self, *names: str) -> Any:
         """``Bodies A, B``: frames and mass centers AO, BO."""
         out = []
         st = self._mech
         for n in names:
             f = self._new_frame(n, Decl.BODY)
-            st.bodies[f] = _Body(f, self.point(n.upper() + "O"))
+            st.bodies[f] = BodyRecord(f, self.point(n.upper() + "O"))
             st.massive.append(f)
             st.sympy_bodies[f] = RigidBody(
                 f.name,
@@ -73,6 +76,7 @@ class Objects:
             out.append(f)
         return kin.one_or_tuple(out)
 
+    @command
     def particles(self, *names: str) -> Any:
         """``Particles P, Q``: massive points."""
         out = []
@@ -85,6 +89,7 @@ class Objects:
             out.append(p)
         return kin.one_or_tuple(out)
 
+    @command
     def rigid_body(self, frame: ReferenceFrame) -> RigidBody:
         """The sympy ``RigidBody`` of a declared body: its frame, mass center,
         and the mass and central inertia as declared (kept up to date by
@@ -92,6 +97,7 @@ class Objects:
         self._body(frame)
         return self._mech.sympy_bodies[frame]
 
+    @command
     def particle(self, point: Point) -> Particle:
         """The sympy ``Particle`` of a declared particle (its point and its
         mass as declared)."""
@@ -104,7 +110,7 @@ class Objects:
         central inertia."""
         st = self._mech
         body = st.sympy_bodies[obj]
-        body.mass = self._mass(obj, strict=False)
+        body.mass = self.body_mass(obj, strict=False)
         if isinstance(obj, ReferenceFrame):
             try:
                 central = self.central_inertia(obj)
@@ -114,10 +120,12 @@ class Objects:
                 return
             body.inertia = (central, body.masscenter)
 
+    @command
     def points(self, *names: str) -> Any:
         """``Points O, P``."""
         return kin.one_or_tuple([self._new_point(n) for n in names])
 
+    @command
     def point(self, name: str) -> Point:
         """The declared point, particle or mass center named ``name``."""
         try:
@@ -125,6 +133,7 @@ class Objects:
         except KeyError:
             raise KeyError(f"{name} is not a point, particle or mass center") from None
 
+    @command
     def frame(self, name: str) -> ReferenceFrame:
         """The declared frame, body or Newtonian frame named ``name``."""
         try:
@@ -132,7 +141,7 @@ class Objects:
         except KeyError:
             raise KeyError(f"{name} is not a frame or body") from None
 
-    def _n(self) -> ReferenceFrame:
+    def newtonian_frame(self) -> ReferenceFrame:
         n = self._mech.newtonian
         if n is None:
             raise ValueError("no Newtonian frame has been declared")
@@ -141,6 +150,7 @@ class Objects:
     def _scalar(self, value: Any) -> Any:
         return self.ws.normalize(value)
 
+    @command
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
         st = self._mech
@@ -153,6 +163,7 @@ class Objects:
             raise ValueError(f"{obj} is not a body or particle; it has no mass")
         self._sync_sympy_body(obj)
 
+    @command
     def set_inertia(
         self,
         body: ReferenceFrame,
@@ -179,7 +190,7 @@ class Objects:
         self._sync_sympy_body(body)
         return b.inertia
 
-    def _body(self, body: Any) -> _Body:
+    def _body(self, body: Any) -> BodyRecord:
         try:
             return self._mech.bodies[body]
         except (KeyError, TypeError):
@@ -207,7 +218,7 @@ class Objects:
         ]
         return (found.kind, *objs)
 
-    def _assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
+    def assign_form(self, key: Any, value: Any, *, line: int | None) -> Any:
         """Store a syntactical form (``P_O_Q>``, ``V_P_N>``, ``N_A``...).
 
         Return the Python binding, or ``NotImplemented`` if ``key`` is not a
@@ -238,7 +249,7 @@ class Objects:
             return m
         if kind is Form.INERTIA:
             body, p = objs
-            value = _as_dyadic(value)
+            value = as_dyadic(value)
             b = self._body(body)
             b.inertia, b.inertia_point = value, p
             self.ws.respond(label, value, line=line)
@@ -272,44 +283,53 @@ class Objects:
     # calls they make (``P_O_P> = v`` is ``set_pos(P, O, v)``: sympy's
     # ``P.set_pos(O, v)``).  Each also records Autolev's response.
 
+    @command
     def set_pos(self, p: Point, o: Point, value: Any, *, line=None) -> Vector:
         """``P_O_P> = v``: P's position from O (``P.set_pos(O, v)``); Autolev
         positions reverse and chain."""
         return self._set(Form.POS, [o, p], value, line)
 
+    @command
     def set_vel(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``V_P_N> = v`` (``P.set_vel(N, v)``)."""
         return self._set(Form.VEL, [p, frame], value, line)
 
+    @command
     def set_acc(self, p: Point, frame: ReferenceFrame, value: Any, *, line=None):
         """``A_P_N> = v`` (``P.set_acc(N, v)``)."""
         return self._set(Form.ACC, [p, frame], value, line)
 
+    @command
     def set_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``W_B_A> = w`` (``B.set_ang_vel(A, w)``)."""
         return self._set(Form.ANGVEL, [b, a], value, line)
 
+    @command
     def set_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, value, *, line=None):
         """``ALF_B_A> = v`` (``B.set_ang_acc(A, v)``)."""
         return self._set(Form.ANGACC, [b, a], value, line)
 
+    @command
     def set_force(self, p: Point, value: Any, *, line=None) -> Vector:
         """``Force_P> = v``: the resultant force on P (a load ``(P, v)``)."""
         return self._set(Form.FORCE, [p], value, line)
 
+    @command
     def set_torque(self, b: ReferenceFrame, value: Any, *, line=None) -> Vector:
         """``Torque_B> = v``: the resultant torque on B (a load ``(B, v)``)."""
         return self._set(Form.TORQUE, [b], value, line)
 
+    @command
     def set_dcm(self, a: ReferenceFrame, b: ReferenceFrame, value, *, line=None):
         """``A_B = M`` (``B.orient_explicit(A, M)``)."""
         return self._set(Form.DCM, [a, b], value, line)
 
+    @command
     def set_inertia_about(self, body: Any, p: Point, value: Any, *, line=None):
         """``I_B_P>> = d``: the inertia dyadic of body B about P."""
         return self._set(Form.INERTIA, [body, p], value, line)
 
-    def _form_value(self, key: Any) -> Any:
+    def form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""
         if key.name == "0>":
             return Vector(0)

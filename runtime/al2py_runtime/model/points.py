@@ -1,4 +1,4 @@
-"""Kinematics: part of :class:`al2py_runtime.mechanics.Model`.
+"""Kinematics: part of :class:`al2py_runtime.model.model.Model`.
 
 Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet).
 """
@@ -17,9 +17,9 @@ from sympy.physics.vector import (
     time_derivative,
 )
 
-from .. import kinematics as kin
-from ..kane import solve_speeds
-from .state import t
+from . import kinematics as kin
+from .arrange import solve_speeds
+from .state import command, t
 
 __all__ = ["Kinematics"]
 
@@ -53,6 +53,7 @@ class Kinematics:
                     todo.append(s)
         return None
 
+    @command
     def pos(self, p: Point, q: Point) -> Vector:
         """``P_P_Q>``: position vector from ``p`` to ``q``."""
         if p is q:
@@ -68,10 +69,10 @@ class Kinematics:
 
     # ------------------------------------------------------- resolution
 
-    def _actual(self, x: Any, keep: Any = ()) -> Any:
+    def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         keep = list(keep)
-        return kin.vmap(x, self.ws._resolver(keep))
+        return kin.vmap(x, self.ws.resolver(keep))
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
@@ -81,7 +82,7 @@ class Kinematics:
     def _tidy(self, e: Any) -> Any:
         return e if self.ws.settings.autoz else kin.tidy(e)
 
-    def _auxiliary_kept(self) -> list:
+    def auxiliary_kept(self) -> list:
         """The auxiliary speeds and their derivatives: what formed quantities
         keep as symbols although Constrain gave them values (they are needed
         for the partial velocities; docs/semantics.md, "AUXILIARY")."""
@@ -92,18 +93,18 @@ class Kinematics:
         # Everything is substituted except the auxiliary speeds: a velocity
         # formed after Constrain(AUXILIARY[U1]) must still depend on U1, as
         # one formed before it does (U1 is set to zero in the equations).
-        keep = self._auxiliary_kept()
-        v = self._actual(v, keep)
+        keep = self.auxiliary_kept()
+        v = self.actual_value(v, keep)
         if isinstance(v, Vector | Dyadic):
             out = time_derivative(v, frame)
         else:
             out = sp.diff(v, t)
-        out = self._actual(out, keep)
+        out = self.actual_value(out, keep)
         book = self.ws.intermediates
         if book is not None:
             # AutoZ: name the coefficients of the speeds and their derivatives
             # (and the rest), so later derivatives stay short.
-            speeds = self._speeds()
+            speeds = self.generalized_speeds()
             xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
             out = kin.vmap(out, lambda e: book.name_linear(e, xs))
         return out
@@ -120,6 +121,7 @@ class Kinematics:
             return Vector(0)
         return None
 
+    @command
     def vel(self, p: Point, frame: ReferenceFrame) -> Vector:
         """``V_P_N>``: given, formed, or the derivative of a position from the
         nearest point whose velocity in ``frame`` is known."""
@@ -141,6 +143,7 @@ class Kinematics:
                 todo.append(s)
         raise ValueError(f"V_{p.name}_{frame.name}> is not defined")
 
+    @command
     def acc(self, p: Point, frame: ReferenceFrame) -> Vector:
         """``A_P_N>``: given, formed, or the derivative of ``V_P_N>``."""
         st = self._mech
@@ -156,6 +159,7 @@ class Kinematics:
             raise ValueError(f"A_{p.name}_{frame.name}> is not defined") from None
         return self._tidyv(self._dt(v, frame))
 
+    @command
     def ang_vel(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
         """``W_B_A>``: given, or from the direction cosine matrices."""
         if a is b:
@@ -165,6 +169,7 @@ class Kinematics:
         except ValueError:
             raise ValueError(f"W_{b.name}_{a.name}> is not defined") from None
 
+    @command
     def ang_acc(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
         """``ALF_B_A>``: given, or the derivative of ``W_B_A>`` in ``a``."""
         if a is b:
@@ -174,6 +179,7 @@ class Kinematics:
             return st.angacc[(b, a)]
         return self._tidyv(self._dt(self.ang_vel(b, a), a))
 
+    @command
     def dcm(self, a: ReferenceFrame, b: ReferenceFrame) -> sp.Matrix:
         """``A_B``: element [i,j] is Dot(Ai>, Bj>)."""
         try:
@@ -212,6 +218,7 @@ class Kinematics:
                 g._dcm_cache[b] = m
                 b._dcm_cache[g] = m.T
 
+    @command
     def simprot(
         self, a: ReferenceFrame, b: ReferenceFrame, axis: Any, angle: Any, *, line=None
     ) -> sp.Matrix:
@@ -236,6 +243,7 @@ class Kinematics:
         self.ws.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
+    @command
     def dircos(
         self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
     ) -> sp.Matrix:
@@ -278,6 +286,7 @@ class Kinematics:
         m = kin.rotation_dcm(kind, list(qs))
         return kin.angvel_from_dcm(m)
 
+    @command
     def angvel(
         self,
         a: ReferenceFrame,
@@ -297,6 +306,7 @@ class Kinematics:
         self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
 
+    @command
     def kindiffs(
         self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
     ) -> tuple:
@@ -307,14 +317,14 @@ class Kinematics:
         wq = self._dcm_angvel(a, b, kind, qs)
         given = None
         try:
-            given = self._actual(b.ang_vel_in(a))
+            given = self.actual_value(b.ang_vel_in(a))
         except ValueError:
             pass
         qdots = [sp.Derivative(q, t) for q in qs]
         if given is not None and not any(given.to_matrix(b).has(d) for d in qdots):
             w = [self._tidy(given.dot(e)) for e in (b.x, b.y, b.z)]
         else:
-            speeds = self._speeds()
+            speeds = self.generalized_speeds()
             if len(speeds) < 3:
                 raise ValueError("Kindiffs needs W_B_A> or speeds U1, U2, U3")
             w = speeds[:3]
@@ -375,6 +385,7 @@ class Kinematics:
             return None
         return self._set_formed(which, p, n, v, line)
 
+    @command
     def v2pts(self, n, a, o, p, *, line=None) -> Vector | None:
         """``V2pts(N, A, O, P)``: O and P fixed on A;
         ``V_P_N> = V_O_N> + Cross(W_A_N>, P_O_P>)``.  If a term is not
@@ -382,10 +393,12 @@ class Kinematics:
         used when ``V_P_N>`` is needed."""
         return self._two_points("V", n, a, o, p, line)
 
+    @command
     def a2pts(self, n, a, o, p, *, line=None) -> Vector | None:
         """``A2pts(N, A, O, P)``: O and P fixed on A (deferred as V2pts)."""
         return self._two_points("A", n, a, o, p, line)
 
+    @command
     def v1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         r = self.pos(o, p)
@@ -395,6 +408,7 @@ class Kinematics:
         v = self.vel(o, n) + vpa + (self.ang_vel(a, n) ^ r)
         return self._set_formed("V", p, n, self._tidyv(v), line)
 
+    @command
     def a1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         st = self._mech

@@ -1,4 +1,4 @@
-"""Speeds: part of :class:`al2py_runtime.mechanics.Model`.
+"""Speeds: part of :class:`al2py_runtime.model.model.Model`.
 
 Generalized speeds and coordinates as Autolev identifies them (docs/semantics.md, "Generalized speeds"), kinematical differential equations, partial velocities.
 """
@@ -13,8 +13,8 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
-from .state import _SPEED, _mentions, t
+from . import kinematics as kin
+from .state import SPEED_NAME, command, mentions, t
 
 __all__ = ["Speeds"]
 
@@ -24,6 +24,7 @@ class Speeds:
 
     # ------------------------------------------------------- speeds
 
+    @command
     def motion_variables(self, *names: str, line: int | None = None) -> Any:
         """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
         that also describe the motion (see :meth:`_speeds`)."""
@@ -33,7 +34,7 @@ class Speeds:
         st.motion.extend(o for o in objs if o not in st.motion)
         return out
 
-    def _speeds(self) -> list:
+    def generalized_speeds(self) -> list:
         """Generalized speeds.
 
         The declared variables U1, U2... in order, if there are any.  Otherwise
@@ -48,15 +49,15 @@ class Speeds:
         if self._mech.speeds is not None:
             return list(self._mech.speeds)
         found = []
-        for name, entry in self.ws._names.items():
-            m = _SPEED.match(name)
+        for name, entry in self.ws.table.entries.items():
+            m = SPEED_NAME.match(name)
             if m and entry.kind == "variable":
                 found.append((int(m.group(1)), entry.obj))
         if found:
             return [obj for _, obj in sorted(found, key=lambda x: x[0])]
         st = self._mech
         solved = set(st.dependent) | set(st.auxiliary)
-        rhs = self.ws._rhs
+        rhs = self.ws.table.rhs
         kin_eqs = [rhs[dq] for dq in self._kinematical_equations()]
         out = []
         for q in st.motion:
@@ -65,7 +66,7 @@ class Speeds:
                 continue
             if dq in rhs and dq not in solved:
                 continue
-            if self.ws._names[self.ws.name_of(q)].order == 1 or any(
+            if self.ws.table.entries[self.ws.name_of(q)].order == 1 or any(
                 sp.sympify(e).has(q) for e in kin_eqs
             ):
                 out.append(q)
@@ -73,6 +74,7 @@ class Speeds:
                 out.append(dq)
         return out
 
+    @command
     def speed_matrix(self, which: str, primes: int = 0) -> sp.Matrix:
         """Autolev's reserved ``U_INDEPENDENT``, ``U_DEPENDENT``,
         ``U_AUXILIARY`` and ``U_PARTIALS`` (tutorial 2.4): a column of the
@@ -82,7 +84,7 @@ class Speeds:
         are symbols, never their solutions, so ``Exclude(Zero,
         [U_INDEPENDENT'; G])`` removes the terms in the speeds' derivatives."""
         st = self._mech
-        speeds = self._speeds()
+        speeds = self.generalized_speeds()
         which = which.upper().removeprefix("U_")
         dependent, auxiliary = set(st.dependent), set(st.auxiliary)
         chosen = {
@@ -104,13 +106,13 @@ class Speeds:
         """``x`` with the kinematical differential equations applied (each
         ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
         terms of the generalized speeds."""
-        speeds = set(self._speeds())
+        speeds = set(self.generalized_speeds())
         table = {
-            dq: self.ws._rhs[dq]
+            dq: self.ws.table.rhs[dq]
             for dq in self._kinematical_equations()
             if dq.expr not in speeds and dq not in speeds
         }
-        if not table or not _mentions(x, list(table)):
+        if not table or not mentions(x, list(table)):
             return x
         return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
 
@@ -119,10 +121,10 @@ class Speeds:
         not) that have a right-hand side while ``Q`` itself has none: the
         kinematical differential equations ``Q' = ...``, in declaration
         order."""
-        rhs = self.ws._rhs
+        rhs = self.ws.table.rhs
         solved = set(self._mech.dependent) | set(self._mech.auxiliary)
         out = []
-        for entry in self.ws._names.values():
+        for entry in self.ws.table.entries.values():
             q = entry.obj
             if entry.kind != "variable" or q is t or q in rhs:
                 continue
@@ -134,7 +136,7 @@ class Speeds:
     def _fr_speeds(self) -> list:
         """Speeds with a row in Fr/Fr*: independent and auxiliary speeds."""
         dep = set(self._mech.dependent)
-        return [u for u in self._speeds() if u not in dep]
+        return [u for u in self.generalized_speeds() if u not in dep]
 
     def _rows_speeds(self, what: str) -> list:
         """:meth:`_fr_speeds` for ``Fr()``/``FrStar()``: an error when there
@@ -143,7 +145,7 @@ class Speeds:
         if speeds and self._mech.speeds is None:
             # Fixed from now on: a later Solve(Zero, OMEGA') gives OMEGA' a
             # right-hand side, which must not make OMEGA a coordinate.
-            self._mech.speeds = self._speeds()
+            self._mech.speeds = self.generalized_speeds()
         if not speeds:
             raise ValueError(
                 f"{what}: there are no generalized speeds; declare them with"
@@ -153,7 +155,7 @@ class Speeds:
         self._mech.fr_speeds = speeds
         return speeds
 
-    def _display(self, value: Any) -> Any:
+    def displayed(self, value: Any) -> Any:
         """A response value simplified for printing (cosmetic, size-gated)."""
         if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
             return value
@@ -161,14 +163,15 @@ class Speeds:
         return kin.vmap(value, lambda e: kin.tidy(e, gens))
 
     def _gens(self) -> list:
-        us = self._speeds()
+        us = self.generalized_speeds()
         return [sp.Derivative(u, t) for u in us] + us
 
     def _partials(self, v: Vector, speeds: list) -> list:
         keep = speeds + [sp.Derivative(u, t) for u in speeds]
-        v = self._actual(v, keep)
+        v = self.actual_value(v, keep)
         return [kin.vmap(v, lambda e, u=u: sp.diff(e, u)) for u in speeds]
 
+    @command
     def partials(self, v: Any, *speeds: Any) -> Any:
         """``Partials(V_P_N>, U1, U2)``: partial velocities (no speeds: with
         respect to each independent/auxiliary speed).  One speed gives one
@@ -177,10 +180,11 @@ class Speeds:
         out = [kin.tidy_vector(x) for x in self._partials(self.ws.val(v), speeds)]
         return out[0] if len(out) == 1 else tuple(out)
 
+    @command
     def remainder(self, v: Any) -> Vector:
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
         speeds = self._fr_speeds()
-        v = self._actual(self.ws.val(v), speeds)
+        v = self.actual_value(self.ws.val(v), speeds)
         return kin.tidy_vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
         )

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -11,11 +12,11 @@ from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector, dynamics
 
 t = dynamicsymbols._t
 
-_SPEED = re.compile(r"U(\d+)$")
+SPEED_NAME = re.compile(r"U(\d+)$")
 
 
 @dataclass
-class _Body:
+class BodyRecord:
     frame: ReferenceFrame
     point: Point
     mass: Any = None
@@ -24,12 +25,12 @@ class _Body:
 
 
 @dataclass
-class _State:
+class ModelState:
     newtonian: ReferenceFrame | None = None
     frames: dict = field(default_factory=dict)  # name -> ReferenceFrame
     points: dict = field(default_factory=dict)  # name -> Point
     fixed_in: dict = field(default_factory=dict)  # Point -> frame (origins)
-    bodies: dict = field(default_factory=dict)  # ReferenceFrame -> _Body
+    bodies: dict = field(default_factory=dict)  # ReferenceFrame -> BodyRecord
     particles: dict = field(default_factory=dict)  # Point -> mass or None
     massive: list = field(default_factory=list)  # bodies' frames and particles
     sympy_bodies: dict = field(
@@ -54,18 +55,26 @@ class _State:
     kane: dict | None = None
 
 
+def command(method: Callable) -> Callable:
+    """Mark a model method as an Autolev command that scripts call: the
+    workspace offers each one under the same name (``al.simprot``), see
+    :data:`al2py_runtime.model.model.MODEL_COMMANDS`."""
+    method.autolev_command = True  # type: ignore[attr-defined]
+    return method
+
+
 def _undef(label: str) -> KeyError:
     return KeyError(f"{label} is not defined")
 
 
-def _mentions(x: Any, objs: list) -> bool:
+def mentions(x: Any, objs: list) -> bool:
     """Whether a vector (or scalar) contains any of ``objs``."""
     if isinstance(x, Vector):
         return any(m.has(*objs) for m, _frame in x.args)
     return isinstance(x, sp.Basic) and x.has(*objs)
 
 
-def _as_dyadic(value: Any) -> Dyadic:
+def as_dyadic(value: Any) -> Dyadic:
     if isinstance(value, Dyadic):
         return value
     if value == 0:

@@ -1,4 +1,4 @@
-"""VectorCommands: part of :class:`al2py_runtime.mechanics.Model`.
+"""VectorCommands: part of :class:`al2py_runtime.model.model.Model`.
 
 Autolev's vector and dyadic commands: ``Express``, ``Represent``, ``Dot``, ``Cross``, ``Mag``, ``UnitVec``, ``1>>``, ``D`` and ``Dt`` of vectors.
 """
@@ -14,7 +14,8 @@ from sympy.physics.vector import (
     Vector,
 )
 
-from .. import kinematics as kin
+from . import kinematics as kin
+from .state import command
 
 __all__ = ["VectorCommands"]
 
@@ -24,6 +25,7 @@ class VectorCommands:
 
     # ------------------------------------------------ vector operations
 
+    @command
     def express(self, v: Any, frame: ReferenceFrame) -> Any:
         """``Express(v>, A)``: ``v>`` in terms of A1>, A2>, A3>.  The unit
         dyadic ``1>>`` is the identity in every frame, whether or not A is
@@ -36,6 +38,7 @@ class VectorCommands:
             return kin.vmap(v.express(frame, frame), kin.tidy)
         return v
 
+    @command
     def represent(self, x: Any, frame: ReferenceFrame) -> Any:
         """``Represent(x, A)``: a vector -> the row matrix of its A measure
         numbers, a dyadic -> the 3x3 matrix; and back: a 3-element matrix ->
@@ -56,6 +59,7 @@ class VectorCommands:
             return sp.zeros(1, 3)
         raise TypeError(f"cannot represent {x!r} in {frame}")
 
+    @command
     def matrix(self, frame: ReferenceFrame, x: Any) -> sp.Matrix:
         """``Matrix(A, v>)``: see :meth:`represent`."""
         x = self.ws.val(x)
@@ -63,12 +67,14 @@ class VectorCommands:
             raise TypeError("Matrix(A, x) needs a vector or dyadic")
         return self.represent(x, frame)
 
+    @command
     def vector(self, frame: ReferenceFrame, *m: Any) -> Vector:
         """``Vector(A, x, y, z)`` or ``Vector(A, M)``."""
         if len(m) == 1:
             m = list(self.ws.val(m[0]))
         return kin.frame_vector(frame, m)
 
+    @command
     def dyadic(self, frame: ReferenceFrame, *m: Any) -> Dyadic:
         """``Dyadic(A, M)`` (3x3), nine scalars (row by row) or three (diagonal)."""
         if len(m) == 1:
@@ -83,27 +89,32 @@ class VectorCommands:
             raise ValueError("Dyadic(A, M) needs a 3x3 matrix")
         return kin.frame_dyadic(frame, mat)
 
+    @command
     def dot(self, a: Any, b: Any) -> Any:
         a, b = self.ws.val(a), self.ws.val(b)
         if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
             return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
         return kin.tidy(kin.vdot(a, b))
 
+    @command
     def cross(self, a: Any, b: Any) -> Any:
         return kin.vmap(kin.vcross(self.ws.val(a), self.ws.val(b)), kin.tidy)
 
+    @command
     def magsq(self, v: Any) -> Any:
         v = self.ws.val(v)
         if isinstance(v, Vector):
             return kin.tidy(v.dot(v))
         return sp.sympify(v) ** 2
 
+    @command
     def mag(self, v: Any) -> Any:
         v = self.ws.val(v)
         if isinstance(v, Vector):
             return sp.sqrt(self.magsq(v))
         return sp.Abs(sp.sympify(v))
 
+    @command
     def unitvec(self, v: Any) -> Vector:
         v = self.ws.val(v)
         m = self.mag(v)
@@ -111,6 +122,7 @@ class VectorCommands:
             raise ValueError("UnitVec of the zero vector")
         return kin.vmap(v, lambda e: e / m)
 
+    @command
     def unit_dyadic(self) -> Dyadic:
         """``1>>``, expressed in the Newtonian frame (without one, in the first
         declared frame; ``Express(1>>, A)`` gives it in any frame)."""
@@ -120,12 +132,14 @@ class VectorCommands:
             raise ValueError("1>> needs a frame: declare one first")
         return kin.unit_dyadic(n)
 
+    @command
     def vector_matrix(self, rows: list) -> kin.VectorMatrix:
         """A matrix literal of vectors, ``[V1>; V2>]`` (an argument of Dot)."""
         return kin.VectorMatrix(
             [[kin.as_vector(self.ws.val(e)) for e in r] for r in rows]
         )
 
+    @command
     def trace(self, y: Any) -> Any:
         """``Trace(A)`` of a matrix or a dyadic."""
         y = self.ws.val(y)
@@ -138,7 +152,7 @@ class VectorCommands:
 
         return trace(y)
 
-    def _vector_d(self, y: Any, x: Any, frame: Any) -> Any:
+    def vector_d(self, y: Any, x: Any, frame: Any) -> Any:
         """``D(v>, x, A)``: partial derivative of a vector in frame A."""
         if frame is None:
             frame = self._mech.newtonian
@@ -152,10 +166,10 @@ class VectorCommands:
             return kin.vmap(y, lambda e: sp.diff(e, x))
         return kin.tidy_vector(y.diff(x, frame))
 
-    def _vector_dt(self, y: Any, frame: Any) -> Any:
+    def vector_dt(self, y: Any, frame: Any) -> Any:
         """``Dt(v>, A)``: time derivative in frame A (default: Newtonian)."""
         if frame is None:
-            frame = self._n()
+            frame = self.newtonian_frame()
         if not isinstance(y, Vector | Dyadic):
             return self._dt(y, frame)
         return kin.vmap(self._dt(y, frame), kin.tidy)

@@ -7,7 +7,7 @@ the right-hand sides (RHS) in force, the ``Input`` values, ``Output``
 statements, unit system and ``Digits``.  :func:`run_job` turns it into scalar
 Python functions (``sympy.lambdify(..., cse=True, modules="math")``, built once
 and cached per job) and integrates or solves with SciPy.  Values inside a run
-are in internal units (see :mod:`al2py_runtime.units`); ``Input`` values are
+are in internal units (see :mod:`al2py_runtime.jobs.units`); ``Input`` values are
 converted in, ``Output`` values are converted out.
 """
 
@@ -25,8 +25,9 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from . import autoz, backends, budget
-from .kane import linear_terms
+from ..intermediates import autoz
+from ..model.arrange import linear_terms
+from . import backends, budget
 from .records import (
     INTEGRATION_DEFAULTS,
     InputValue,
@@ -107,7 +108,7 @@ def _base(obj: Any) -> tuple[Any, int]:
 
 # ---------------------------------------------------------- numeric functions
 
-_lambdify = backends._lambdify  # one lambdify for CODE jobs and backends
+lambdify_job = backends.lambdify_job  # one lambdify for CODE jobs and backends
 
 
 class _Slots:
@@ -142,7 +143,7 @@ class _Slots:
         if zs:
             book = next(iter(zs)).book
             expr = book.rebase(expr)
-            for z in book._ordered([expr], self.known):
+            for z in book.ordered([expr], self.known):
                 body = self.numeric(book.definition(z), what)
                 d = sp.Dummy(f"z{len(self.intermediates)}")
                 self.known[z] = d
@@ -262,7 +263,7 @@ class _Values:
         return self.get(label_of(obj, self.job.names))
 
 
-def _input_values(
+def input_values(
     job: Job, overrides: Mapping[str, Any], zero_missing: bool | None = None
 ) -> tuple[_Values, set]:
     """Convert Input values (with overrides) to internal units; return the
@@ -361,7 +362,7 @@ def evaluate_with_inputs(
         k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
     }
     free = {k: v for k, v in given.items() if k not in settable}
-    vals, keep = _input_values(job, settable)
+    vals, keep = input_values(job, settable)
     numbers = dict(vals.values)
     for key, v in free.items():
         try:
@@ -449,7 +450,7 @@ def _check_override(job: Job, key: str, name: str) -> None:
         raise NumericsError(f"{name} is defined by an equation; it cannot be set")
 
 
-def _integration(vals: _Values) -> dict[str, float]:
+def integration_parameters(vals: _Values) -> dict[str, float]:
     p = {}
     for key, default in INTEGRATION_DEFAULTS.items():
         if key in vals.values:
@@ -508,7 +509,7 @@ def run_job(
     :mod:`.backends`; default ``$AL2PY_BACKEND`` or ``auto``).  A value the
     job needs and nobody gave stops it, named, before any code is generated;
     ``zero_missing`` (default ``$AL2PY_ZERO_MISSING=1``) uses 0 instead."""
-    vals, keep = _input_values(job, overrides or {}, zero_missing)
+    vals, keep = input_values(job, overrides or {}, zero_missing)
     if job.kind in ("DYNAMICS", "ODE"):
         try:
             return _run_dynamics(job, vals, keep, backend)
@@ -543,7 +544,7 @@ def _output_exprs(job: Job, table: dict, slots: _Slots) -> list[list[Any]]:
     return out
 
 
-def _output_factors(job: Job, vals: _Values) -> list[list[float]]:
+def output_factors(job: Job, vals: _Values) -> list[list[float]]:
     us = job.unit_system
     factors = []
     for spec in job.outputs:
@@ -586,7 +587,7 @@ def _compile_dynamics(job: Job, formed: _Dynamics, backend: str | None) -> _Dyna
     return dataclasses.replace(formed, compiled=compiled)
 
 
-def _dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
+def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
     """The job's states, parameters and equations as sympy expressions."""
     table = _without(job.rhs, keep)
     explicit: list[tuple[Any, int]] = []
@@ -691,7 +692,7 @@ def _state_aliases(job: Job, c: _Dynamics) -> dict[str, str]:
     return aliases
 
 
-def _initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
+def initial_state(job: Job, c: _Dynamics, vals: _Values) -> list[float]:
     """The states' values at TINITIAL, in internal units."""
     aliases = _state_aliases(job, c)
     y0 = []
@@ -730,14 +731,14 @@ def _compiled(
     generated: see :meth:`_Values.require`)."""
     keep = frozenset(keep)
     formed = ("equations", keep)
-    if formed not in job._cache:
-        job._cache[formed] = _dynamics_equations(job, keep)
+    if formed not in job.cache:
+        job.cache[formed] = dynamics_equations(job, keep)
     if vals is not None:
-        vals.require(job._cache[formed].params)
+        vals.require(job.cache[formed].params)
     key = ("dyn", keep, backends.choose(backend))
-    if key not in job._cache:
-        job._cache[key] = _compile_dynamics(job, job._cache[formed], key[2])
-    return job._cache[key]
+    if key not in job.cache:
+        job.cache[key] = _compile_dynamics(job, job.cache[formed], key[2])
+    return job.cache[key]
 
 
 def ode_system(
@@ -756,7 +757,7 @@ def ode_system(
         raise NumericsError(str(exc)) from None
     vals.unused([label_of(o, job.names) for o in c.params] + c.state_names)
     p = [vals.param(obj) for obj in c.params]
-    y0 = _initial_state(job, c, vals)
+    y0 = initial_state(job, c, vals)
     bound = c.compiled.bind(p)
     clock = [t0]  # time of the latest evaluation, for messages
     rhs = bound.rhs
@@ -798,8 +799,8 @@ def ode_function(
     ``overrides`` (as ``run()``), evaluated by ``backend``."""
     if job.kind not in ("DYNAMICS", "ODE"):
         raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
-    vals, keep = _input_values(job, overrides or {}, zero_missing)
-    ip = _integration(vals)
+    vals, keep = input_values(job, overrides or {}, zero_missing)
+    ip = integration_parameters(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
     return system.fun, list(system.y0), list(system.names)
 
@@ -809,7 +810,7 @@ def _run_dynamics(
 ) -> Result:
     from scipy.integrate import solve_ivp
 
-    ip = _integration(vals)
+    ip = integration_parameters(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
     c, y0, fun, clock = system.compiled, system.y0, system.fun, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
@@ -836,7 +837,7 @@ def _run_dynamics(
                 )
             ys, nfev = sol.y, sol.nfev
         tables = []
-        factors = _output_factors(job, vals)
+        factors = output_factors(job, vals)
         rows_all = [[] for _ in job.outputs]
         for i, tt in enumerate(times):
             clock[0] = float(tt)
@@ -925,7 +926,7 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
     z = slots.intermediates
     eqs = _inline_dependent(z, eqs, xs)  # the Jacobian must see through them
     jac = sp.Matrix(eqs).jacobian(xs) if eqs else sp.Matrix()
-    residual = _lambdify([*args, *slots.param_dummies], eqs, z)
+    residual = lambdify_job([*args, *slots.param_dummies], eqs, z)
     rhs = None
     if job.kind == "ALGEBRAIC":
         bad = [u for u, x in zip(unknowns, xs, strict=True) if jac.has(x)]
@@ -936,13 +937,13 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
                 + "; use CODE Nonlinear"
             )
         at0 = dict.fromkeys(xs, 0)
-        rhs = _lambdify(
+        rhs = lambdify_job(
             [slots.time, *slots.param_dummies], [-e.xreplace(at0) for e in eqs], z
         )
-        jacobian = _lambdify([slots.time, *slots.param_dummies], list(jac), z)
+        jacobian = lambdify_job([slots.time, *slots.param_dummies], list(jac), z)
     else:
-        jacobian = _lambdify([*args, *slots.param_dummies], list(jac), z)
-    out_funcs = [_lambdify([*args, *slots.param_dummies], row, z) for row in outputs]
+        jacobian = lambdify_job([*args, *slots.param_dummies], list(jac), z)
+    out_funcs = [lambdify_job([*args, *slots.param_dummies], row, z) for row in outputs]
     return _Static(
         [label_of(u, job.names) for u in unknowns],
         residual,
@@ -955,9 +956,9 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
 
 def _static(job: Job, keep: set, vals: _Values) -> _Static:
     key = ("static", frozenset(keep))
-    if key not in job._cache:
-        job._cache[key] = _compile_static(job, frozenset(keep))
-    c = job._cache[key]
+    if key not in job.cache:
+        job.cache[key] = _compile_static(job, frozenset(keep))
+    c = job.cache[key]
     vals.unused([label_of(o, job.names) for o in c.params] + c.unknown_names)
     return c
 
@@ -979,7 +980,7 @@ def _static_result(
         solution[name] = np.array([x[j] for x, _p in rows]) / us.to_internal(unit)
     tables = []
     if job.outputs:
-        factors = _output_factors(job, vals)
+        factors = output_factors(job, vals)
         for number, (cols, func, fac, spec) in enumerate(
             zip(_columns(job), c.outputs, factors, job.outputs, strict=True), start=1
         ):
@@ -1011,7 +1012,7 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
 
     c = _static(job, keep, vals)
     vals.require(c.params)
-    ip = _integration(vals)
+    ip = integration_parameters(vals)
     t0 = ip["TINITIAL"]
     p = [vals.param(obj) for obj in c.params]
     x0 = [vals.get(name) for name in c.unknown_names]
@@ -1058,7 +1059,7 @@ def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
     c = _static(job, keep, vals)
     sweep_obj = job.sweep[0] if job.sweep is not None else None
     vals.require([obj for obj in c.params if obj != sweep_obj])
-    ip = _integration(vals)
+    ip = integration_parameters(vals)
     t0 = ip["TINITIAL"]
     base = [0.0 if obj == sweep_obj else vals.param(obj) for obj in c.params]
     n = len(c.unknown_names)

@@ -11,7 +11,7 @@ from typing import Any
 
 import sympy as sp
 
-from .safety import AutolevRuntimeError
+from ..safety import AutolevRuntimeError
 from .units import UnitSystem
 
 __all__ = [
@@ -115,7 +115,7 @@ class Job:
     declared: dict[str, int] = field(default_factory=dict)
     #: words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case
     options: tuple[str, ...] = ()
-    _cache: dict = field(default_factory=dict, repr=False)
+    cache: dict = field(default_factory=dict, repr=False)
 
     @property
     def where(self) -> str:

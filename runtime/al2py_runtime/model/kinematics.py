@@ -1,4 +1,4 @@
-"""Vector helpers and rotation kinematics for :mod:`al2py_runtime.mechanics`.
+"""Vector helpers and rotation kinematics for :mod:`al2py_runtime.model.model`.
 
 Everything here is pure: functions of sympy expressions, ``Vector``/``Dyadic``
 objects and ``ReferenceFrame``s, with no workspace state.

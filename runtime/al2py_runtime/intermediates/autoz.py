@@ -42,9 +42,9 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
+from ..model.arrange import linear_terms
+from ..vocabulary import complex_functions
 from .elimination import eliminate
-from .kane import linear_terms
-from .vocabulary import complex_functions
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
@@ -356,6 +356,11 @@ class Intermediates:
             return self._labels[k]
         return self._labels[k] + "(" + ", ".join(str(a) for a in z.args[1:]) + ")"
 
+    def canonical(self, k: int) -> tuple[tuple[Any, ...], Any]:
+        """Intermediate number ``k``'s own variables and its definition over
+        them."""
+        return self._vars[k], self._defs[k]
+
     def definition(self, z: Intermediate) -> Any:
         """What ``z`` stands for, at its own arguments (one level)."""
         k = int(z.args[0])
@@ -482,7 +487,7 @@ class Intermediates:
             raise ValueError("taylor: orders above 1 go through sympy")
         exprs = [self.rebase(sp.sympify(e)) for e in exprs]
         xs = list(point)
-        zs = self._ordered(exprs)
+        zs = self.ordered(exprs)
         keep: dict = {}  # derivatives not moved stay whole (q' is not q)
         for e in exprs:
             for d in self._scan(e)[0]:
@@ -524,7 +529,7 @@ class Intermediates:
 
     # ---------------------------------------------------------- expansion
 
-    def _ordered(self, exprs: Iterable[Any], known: Any = ()) -> list[Any]:
+    def ordered(self, exprs: Iterable[Any], known: Any = ()) -> list[Any]:
         """Intermediates that ``exprs`` use, each after those it uses (those
         in ``known`` and what only they use are left out)."""
         seen: set[Any] = set()
@@ -572,7 +577,7 @@ class Intermediates:
     def expand(self, expr: Any) -> Any:
         """``expr`` with every intermediate replaced by what it stands for
         (a matrix or vector: each element)."""
-        from .kinematics import vmap
+        from ..model.kinematics import vmap
 
         if isinstance(expr, sp.MatrixBase):
             return expr.applyfunc(self.expand)
@@ -580,7 +585,7 @@ class Intermediates:
             if hasattr(expr, "args") and not isinstance(expr, list | tuple):
                 return vmap(expr, self.expand)
             return expr
-        zs = self._ordered([expr])
+        zs = self.ordered([expr])
         if not zs:
             return expr
         for z in zs:
@@ -603,7 +608,7 @@ class Intermediates:
                 return 1
             return 1 + sum(size(a) for a in e.args)
 
-        for z in self._ordered(parts):
+        for z in self.ordered(parts):
             sizes[z] = size(self.definition(z))
         return sum(size(p) for p in parts)
 
@@ -613,7 +618,7 @@ class Intermediates:
         """``(assignments, reduced)`` in the form of ``sympy.cse``: plain
         symbols for the intermediates, each defined after those it uses."""
         exprs = list(exprs)
-        zs = self._ordered(exprs)
+        zs = self.ordered(exprs)
         rule = {z: sp.Symbol(f"{symbol}{i}") for i, z in enumerate(zs)}
         assignments = [(rule[z], self.definition(z).xreplace(rule)) for z in zs]
         reduced = [
@@ -633,7 +638,7 @@ class Intermediates:
             return cache[key]
         dps = sp.core.evalf.prec_to_dps(prec)
         values: dict[Any, Any] = {}
-        for inner in self._ordered([z]):
+        for inner in self.ordered([z]):
             k = (inner, prec)
             if k not in cache:
                 body = self.definition(inner).xreplace(values)
@@ -661,7 +666,7 @@ class Intermediates:
                         env[x] = complex(rng.uniform(0.5, 1.5))
 
         fill(self._scan(expr)[0])
-        for z in self._ordered([expr], env):
+        for z in self.ordered([expr], env):
             fill(z.args[1:])
             try:
                 env[z] = _num_z(self, z, env)
@@ -743,17 +748,17 @@ def number(expr: Any, env: dict) -> complex:
     if zs:
         book = next(iter(zs)).book
         expr = book.rebase(expr)
-        for z in book._ordered([expr], env):
+        for z in book.ordered([expr], env):
             if z not in env:
                 env[z] = _num_z(book, z, env)
     return _num(expr, env)
 
 
 def _num_z(book: Intermediates, z: Any, env: dict) -> complex:
-    k = int(z.args[0])
+    variables, body = book.canonical(int(z.args[0]))
     args = tuple(z.args[1:])
-    if args == book._vars[k]:
-        return _num(book._defs[k], env)
+    if args == variables:
+        return _num(body, env)
     # Evaluated elsewhere than at its own variables: bind them.
-    local = {v: _num(a, env) for v, a in zip(book._vars[k], args, strict=True)}
-    return number(book._defs[k], local)
+    local = {v: _num(a, env) for v, a in zip(variables, args, strict=True)}
+    return number(body, local)

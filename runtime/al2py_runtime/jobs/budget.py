@@ -9,7 +9,7 @@ billions of tiny steps; integrating backwards through damping blows up.  Every
 
 Change them for one process with the environment variables
 ``AL2PY_MAX_SECONDS`` and ``AL2PY_MAX_EVALS``, from Python by assigning
-``al2py_runtime.budget.LIMITS["seconds"] = 600``, or for ``python model.py``
+``al2py_runtime.jobs.budget.LIMITS["seconds"] = 600``, or for ``python model.py``
 with ``--max-seconds`` and ``--max-evals``.  When a budget is exhausted the job
 stops with an error naming the time reached.  ``TFINAL`` before ``TINITIAL``
 is an error too.
@@ -38,7 +38,7 @@ PROGRESS = False
 
 
 def _error(message: str) -> Exception:
-    from .jobs import NumericsError
+    from .records import NumericsError
 
     return NumericsError(message)
 

@@ -1,6 +1,6 @@
 """Dictionary views, a short ``repr`` and pandas export for job results.
 
-``run()`` returns a :class:`~al2py_runtime.jobs.Result`; these mixins give it
+``run()`` returns a :class:`~al2py_runtime.jobs.run.Result`; these mixins give it
 (and each of its tables) the habits of a mapping from column names to numpy
 arrays::
 
@@ -39,7 +39,7 @@ def _names(names: list[str], limit: int = 6) -> str:
 
 
 class TableViews:
-    """Mapping habits of a :class:`~al2py_runtime.jobs.Table`."""
+    """Mapping habits of a :class:`~al2py_runtime.jobs.run.Table`."""
 
     def keys(self) -> list[str]:
         return list(self.names)  # type: ignore[attr-defined]
@@ -69,7 +69,7 @@ class TableViews:
 
 
 class ResultViews:
-    """Mapping habits of a :class:`~al2py_runtime.jobs.Result`: keys are every
+    """Mapping habits of a :class:`~al2py_runtime.jobs.run.Result`: keys are every
     output column (in table order), then solved and state quantities."""
 
     def keys(self) -> list[str]:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .printing import element_labels
+from ..names.printing import element_labels
 from .records import NumericsError, normalize_name
 from .results import ResultViews, TableViews
 

@@ -2,8 +2,6 @@
 
 >>> import sympy as sp
 >>> from sympy.physics.mechanics import dynamicsymbols
-
-from .autoz import Intermediate
 >>> X, Y = dynamicsymbols("X Y")
 >>> autolev_str(-sp.pi + (X + 2*Y)**2 + 3*X.diff()**2)
 "-3.141593 + (X+2*Y)^2 + 3*X'^2"
@@ -34,13 +32,13 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
-from .autoz import Intermediate
-from .kinematics import VectorMatrix
-from .vocabulary import printed_name
+from ..intermediates.autoz import Intermediate
+from ..model.kinematics import VectorMatrix
+from ..vocabulary import printed_name
 
 __all__ = ["autolev_str", "element_labels", "format_response", "format_number"]
 
-_t = dynamicsymbols._t
+_T = dynamicsymbols._t
 
 # Precedence levels: a child printed with a lower level than its context needs
 # parentheses.
@@ -132,7 +130,7 @@ class _AutolevPrinter:
         if isinstance(expr, sp.Expr) and expr.is_number and not expr.has(AppliedUndef):
             return self.number(expr, top)
         if isinstance(expr, sp.Symbol):
-            return ("T" if expr == _t else expr.name.upper()), _ATOM
+            return ("T" if expr == _T else expr.name.upper()), _ATOM
         if isinstance(expr, sp.Add):
             return self.add(expr, top)
         if isinstance(expr, sp.Mul):
@@ -145,7 +143,7 @@ class _AutolevPrinter:
             return expr.book.label(expr).upper(), _ATOM
         if isinstance(expr, AppliedUndef):
             name = expr.func.__name__.upper()
-            if expr.args == (_t,):
+            if expr.args == (_T,):
                 return name, _ATOM
             return f"{name}({self.args(expr.args)})", _ATOM
         if isinstance(expr, sp.Function | sp.Max | sp.Min):
@@ -301,13 +299,13 @@ class _AutolevPrinter:
     def derivative(self, expr: sp.Derivative) -> str:
         inner = expr.expr
         counts = expr.variable_count
-        if isinstance(inner, AppliedUndef) and inner.args == (_t,):
-            if all(v == _t for v, _ in counts):
+        if isinstance(inner, AppliedUndef) and inner.args == (_T,):
+            if all(v == _T for v, _ in counts):
                 return self.text(inner) + "'" * sum(int(n) for _, n in counts)
         text = self.text(inner)
         for var, n in counts:
             for _ in range(int(n)):
-                if var == _t:
+                if var == _T:
                     text = f"DT({text})"
                 else:
                     text = f"D({text}, {self.text(var)})"

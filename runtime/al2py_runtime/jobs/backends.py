@@ -53,7 +53,7 @@ import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 
-from .vocabulary import numeric_namespace
+from ..vocabulary import numeric_namespace
 
 __all__ = [
     "BACKENDS",
@@ -312,7 +312,7 @@ def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
     return cse
 
 
-def _lambdify(
+def lambdify_job(
     args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
 ) -> Callable[..., list[float]]:
     """A scalar function ``f(*args) -> list of floats`` (math module, CSE);
@@ -427,9 +427,9 @@ def _build_lambdify(spec: DynamicsSpec) -> Compiled:
     y, ud, p, t = spec.states, spec.accels, spec.params, spec.time
     z = spec.intermediates
     first = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
-    step = _lambdify([t, *y, *p], first, z)
-    late_f = _lambdify([t, *y, *ud, *p], [spec.derivs[i] for i in uses], z)
-    outs = [_lambdify([t, *y, *ud, *p], row, z) for row in spec.outputs]
+    step = lambdify_job([t, *y, *p], first, z)
+    late_f = lambdify_job([t, *y, *ud, *p], [spec.derivs[i] for i in uses], z)
+    outs = [lambdify_job([t, *y, *ud, *p], row, z) for row in spec.outputs]
     n, ny = len(ud), len(y)
 
     def mf(tt, yy, pp):
@@ -481,7 +481,7 @@ def _build_llvm(spec: DynamicsSpec) -> Compiled:
         raise BackendError(
             f"llvm backend cannot compile the equations: {exc}"
         ) from None
-    outs = [_lambdify([t, *y, *ud, *p], _inline(spec, row)) for row in spec.outputs]
+    outs = [lambdify_job([t, *y, *ud, *p], _inline(spec, row)) for row in spec.outputs]
     n, ny, np_ = len(ud), len(y), len(p)
     buf = np.empty(1 + ny + np_)
 
@@ -506,7 +506,7 @@ def _build_llvm(spec: DynamicsSpec) -> Compiled:
 # ------------------------------------------------------------------------ C
 
 
-class _Printer(C99CodePrinter):
+class CPrinter(C99CodePrinter):
     """C99 with small integer powers as products and Autolev's functions."""
 
     def __init__(self) -> None:
@@ -542,7 +542,7 @@ class _Printer(C99CodePrinter):
         return f"(double)(((({x}) > 0) - (({x}) < 0)))"
 
 
-def _ccode(expr: Any, printer: _Printer) -> str:
+def c_expression(expr: Any, printer: CPrinter) -> str:
     try:
         return printer.doprint(expr)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
@@ -551,20 +551,22 @@ def _ccode(expr: Any, printer: _Printer) -> str:
 
 
 def _block(
-    exprs: list[Any], targets: list[str], printer: _Printer, prefix: str, indent: str
+    exprs: list[Any], targets: list[str], printer: CPrinter, prefix: str, indent: str
 ) -> list[str]:
     """C statements assigning ``exprs`` to ``targets`` after common
     subexpression elimination (temporaries ``double {prefix}N``)."""
     if not exprs:
         return []
     temps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="none")
-    lines = [f"{indent}const double {s} = {_ccode(e, printer)};" for s, e in temps]
+    lines = [
+        f"{indent}const double {s} = {c_expression(e, printer)};" for s, e in temps
+    ]
     for target, e in zip(targets, reduced, strict=True):
-        lines.append(f"{indent}{target} = {_ccode(e, printer)};")
+        lines.append(f"{indent}{target} = {c_expression(e, printer)};")
     return lines
 
 
-_SOLVE_C = r"""
+SOLVE_C = r"""
 /* Solve a x = b (n x n, row-major) by Gaussian elimination with partial
    pivoting; a and b are overwritten, x is left in b.  Returns 1 if a is
    singular (an exactly zero pivot, as LAPACK reports), else 0. */
@@ -618,7 +620,7 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     const double *p, double *out)`` writes every output, table after table.
     ``api`` prefixes both (``static`` for a standalone program)."""
     spec = _canonical(spec) if not _is_canonical(spec) else spec
-    printer = _Printer()
+    printer = CPrinter()
     n, ny, nout = len(spec.accels), len(spec.states), sum(map(len, spec.outputs))
     free, uses, _plan_ = _plan(spec)
     lines = [
@@ -630,7 +632,7 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
         f"#define AL_NOUT {nout}  /* outputs, all tables */",
     ]
     if n:
-        lines.append(_SOLVE_C)
+        lines.append(SOLVE_C)
     # M, f and the derivatives free of ud: one function, shared by both.
     lines += [
         "/* M (row-major), f, and the state derivatives that do not need ud */",
@@ -690,11 +692,11 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
 
 
 def _intermediates(
-    spec: DynamicsSpec, exprs: list[Any], printer: _Printer, indent: str
+    spec: DynamicsSpec, exprs: list[Any], printer: CPrinter, indent: str
 ) -> list[str]:
     """Declarations of the intermediates that ``exprs`` need, in order."""
     return [
-        f"{indent}const double {s} = {_ccode(e, printer)};"
+        f"{indent}const double {s} = {c_expression(e, printer)};"
         for s, e in needed(spec.intermediates, exprs)
     ]
 

@@ -1,7 +1,7 @@
 """Symbolic Gauss-Jordan elimination with named entries and numeric pivots.
 
-Shared by :class:`al2py_runtime.fastkane.FastKane` and the AutoZ book
-(:class:`al2py_runtime.autoz.Intermediates`): each keeps its own names and
+Shared by :class:`al2py_runtime.model.fastkane.FastKane` and the AutoZ book
+(:class:`al2py_runtime.intermediates.autoz.Intermediates`): each keeps its own names and
 its own probe values, and both solve the same way.
 
 >>> import sympy as sp

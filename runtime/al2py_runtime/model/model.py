@@ -32,14 +32,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from .model.bodies import MassAndLoads
-from .model.energy import Energy
-from .model.equations import KaneEquations
-from .model.objects import Objects
-from .model.points import Kinematics
-from .model.speeds import Speeds
-from .model.state import _State
-from .model.vectors import VectorCommands
+from .bodies import MassAndLoads
+from .energy import Energy
+from .equations import KaneEquations
+from .objects import Objects
+from .points import Kinematics
+from .speeds import Speeds
+from .state import ModelState
+from .vectors import VectorCommands
 
 __all__ = ["Model", "MODEL_COMMANDS"]
 
@@ -55,88 +55,26 @@ class Model(
 
     def __init__(self, ws: Any) -> None:
         self.ws = ws
-        self._mech = _State()
+        self._mech = ModelState()
+
+    @property
+    def registry(self) -> ModelState:
+        """The model's state: frames, points, bodies, loads, speeds (read by
+        :mod:`.kane` to build ``KanesMethod``'s inputs)."""
+        return self._mech
 
 
 #: The commands a :class:`Model` answers for its workspace (``al.simprot``,
-#: ``al.v2pts``, ``al.fr``...): generated modules call them on the workspace.
-MODEL_COMMANDS = frozenset(
-    {
-        "newtonian",
-        "frames",
-        "bodies",
-        "particles",
-        "rigid_body",
-        "particle",
-        "points",
-        "point",
-        "frame",
-        "set_mass",
-        "set_inertia",
-        "set_pos",
-        "set_vel",
-        "set_acc",
-        "set_ang_vel",
-        "set_ang_acc",
-        "set_force",
-        "set_torque",
-        "set_dcm",
-        "set_inertia_about",
-        "pos",
-        "vel",
-        "acc",
-        "ang_vel",
-        "ang_acc",
-        "dcm",
-        "simprot",
-        "dircos",
-        "angvel",
-        "kindiffs",
-        "speed_matrix",
-        "v2pts",
-        "a2pts",
-        "v1pt",
-        "a1pt",
-        "express",
-        "represent",
-        "matrix",
-        "vector",
-        "dyadic",
-        "dot",
-        "cross",
-        "magsq",
-        "mag",
-        "unitvec",
-        "unit_dyadic",
-        "vector_matrix",
-        "trace",
-        "mass_of",
-        "cm",
-        "central_inertia",
-        "inertia_dyadic",
-        "inertia",
-        "force_on",
-        "torque_on",
-        "add_force",
-        "add_torque",
-        "force_between",
-        "torque_between",
-        "gravity",
-        "motion_variables",
-        "partials",
-        "remainder",
-        "fr",
-        "tstar",
-        "frstar",
-        "constrain",
-        "kane",
-        "kane_inputs",
-        "kd_eqs",
-        "kanes_method",
-        "ke",
-        "momentum",
-        "gyrostat",
-        "power",
-        "nicheck",
-    }
-)
+#: ``al.v2pts``, ``al.fr``...): its methods marked ``@command``.  Generated
+#: modules call them on the workspace, which offers each one.
+def _commands(cls: type) -> frozenset[str]:
+    out = set()
+    for name in dir(cls):
+        attr = getattr(cls, name)
+        func = attr.fget if isinstance(attr, property) else attr
+        if getattr(func, "autolev_command", False):
+            out.add(name)
+    return frozenset(out)
+
+
+MODEL_COMMANDS = _commands(Model)

@@ -33,8 +33,7 @@ from typing import Any
 import sympy as sp
 from sympy.physics.vector import Vector
 
-from .jobs import ode_function, run_job
-from .printing import element_labels
+from ..names.printing import element_labels
 from .records import (
     KINDS,
     InputValue,
@@ -44,6 +43,7 @@ from .records import (
     OutputSpec,
     normalize_name,
 )
+from .run import ode_function, run_job
 from .tables import Result
 from .units import UnitSystem, units_factor
 
@@ -101,7 +101,7 @@ class Numerics:
                     f"Input {name} (line {line}): {value!r} is not a number"
                 ) from None
             # ``Input E4 = COS(QQ1/2)``: computed from the other Inputs at run
-            # time (in internal units), see jobs._input_values.
+            # time (in internal units), see jobs.input_values.
             number = float(expr) if expr.is_number else expr
             store[normalize_name(name)] = InputValue(
                 number, unit if unit else None, line
@@ -140,7 +140,7 @@ class Numerics:
         return [OutputItem(n, e, unit) for n, e in zip(names, value, strict=True)]
 
     def _newtonian(self) -> Any:
-        for entry in self._ws._names.values():
+        for entry in self._ws.table.entries.values():
             if entry.kind == "newtonian":
                 return entry.obj
         return None
@@ -227,7 +227,7 @@ class Numerics:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._ws._values.get("ZERO")
+            value = self._ws.table.stored.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
@@ -243,7 +243,7 @@ class Numerics:
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._ws._rhs),
+            rhs=dict(self._ws.table.rhs),
             zero=zero,
             outputs=outputs,
             encoded={**state.shapes, **shapes},
@@ -252,19 +252,21 @@ class Numerics:
             digits=self._ws.settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._ws._entries_by_obj),
-            entries={name: (e.kind, e.obj) for name, e in self._ws._names.items()},
+            names=dict(self._ws.table.by_obj),
+            entries={
+                name: (e.kind, e.obj) for name, e in self._ws.table.entries.items()
+            },
             declared={
                 name: e.line
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if e.line is not None
             },
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._ws._names.items()
+                for name, e in self._ws.table.entries.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -272,11 +274,11 @@ class Numerics:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._ws._values.items():
+        for name, stored in self._ws.table.stored.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._ws._values.items():
+            for name, stored in self._ws.table.stored.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -329,7 +331,7 @@ class Numerics:
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.backends`.  A constant the job needs that no
+        see :mod:`al2py_runtime.jobs.backends`.  A constant the job needs that no
         Input gives stops it with the names; ``zero_missing=True`` uses 0."""
         merged = dict(values or {})
         merged.update(overrides)
@@ -391,22 +393,9 @@ class Numerics:
         here (also in the Input's units; names without an Input are in the
         unit system's units, radians for angles) and every named intermediate
         are substituted.  Time is TINITIAL unless ``T`` is given."""
-        from .jobs import evaluate_with_inputs
+        from .run import evaluate_with_inputs
 
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
         return evaluate_with_inputs(job, self._ws[name], name, merged)
-
-    def run_job(
-        self,
-        job: Job,
-        values: Mapping[str, Any] | None = None,
-        *,
-        backend: str | None = None,
-        zero_missing: bool | None = None,
-    ) -> Result:
-        """Perform one recorded job with optional overrides."""
-        return run_job(
-            job, dict(values or {}), backend=backend, zero_missing=zero_missing
-        )

@@ -46,7 +46,7 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
-from .elimination import eliminate
+from ..intermediates.elimination import eliminate
 
 __all__ = ["FastKane"]
 
