@@ -88,8 +88,8 @@ def test_progress_lines_and_table_say_what_was_compared():
     table = batch.format_table([bare, compared]).splitlines()
     assert table[1].split()[:2] == ["passed", "none"]
     assert table[2].split()[:2] == ["passed", "3/3"]
-    assert batch.summary_line([bare, compared]).splitlines()[1] == (
-        "1 passed with no transcript, so nothing was compared: a.al"
+    assert "1 passed with no transcript, so nothing was compared: a.al" in (
+        batch.summary_line([bare, compared]).splitlines()
     )
     assert batch.eta_seconds(2, 10, 20.0) == 80.0
     assert batch.eta_seconds(10, 10, 20.0) is None
