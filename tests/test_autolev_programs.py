@@ -165,3 +165,45 @@ SLOW = [
 @pytest.mark.parametrize("name", SLOW)
 def test_autolev_program_matches_slow(name):
     _assert_matches(judge.check(_need(name)))
+
+
+# A torque given through an assigned name, T4 = TQ (as Whipple.al's
+# T4 = Tphi): Autolev substitutes the name's value, so D(U', T4) is
+# D(U', TQ) (WhippleDynamics.c's bMat has that column); a name that stands
+# for an expression stays a name.
+ALIAS = """\
+AutoZ {autoz}
+Newtonian N
+Bodies A
+Constants M, K
+Variables Q'
+MotionVariables' U'
+Specified TQ
+T4 = TQ
+T5 = 2*TQ
+Mass A = M
+Inertia A, 0, 0, K
+Simprot(N, A, 3, Q)
+Q' = U
+Angvel(N, A)
+P_NO_AO> = 0>
+V_AO_N> = 0>
+A_AO_N> = 0>
+Torque(N/A, T4*N3>)
+Zero = Fr() + FrStar()
+Solve(Zero, U')
+B = D(U', T4)
+B2 = D(U', TQ)
+B5 = D(U' + T5, T5)
+V = [T4, T4]
+J = D([U'; Q'], V)
+"""
+
+
+@pytest.mark.parametrize("autoz", ["OFF", "ON"])
+def test_d_by_a_name_for_a_specified(tmp_path, autoz):
+    m = _module(tmp_path, ALIAS.format(autoz=autoz), f"alias_{autoz.lower()}")
+    K = m.AUTOLEV["K"]
+    assert m.AUTOLEV["B"] == 1 / K and m.AUTOLEV["B2"] == 1 / K
+    assert m.AUTOLEV["B5"] == 1
+    assert list(m.AUTOLEV["J"]) == [1 / K, 1 / K, 0, 0]
