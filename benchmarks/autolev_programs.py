@@ -489,9 +489,12 @@ def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Rep
         work = keep or Path(tmp)
         script, program = extract(pair, work, root)
         module = convert_and_import(script)
-        job = job_for(module, pair.program)
+        written = pair.program
+        if pair.kind == "cleaned":  # the CODE statement wrote X_raw.c
+            written = str(Path(pair.program).with_suffix("")) + "_raw.c"
+        job = job_for(module, written)
         if pair.kind == "cleaned":
-            report.skipped = "cleaned (autolevclean) function: no harness yet"
+            _check_cleaned(report, module, job, program)
         elif job.kind in ("DYNAMICS", "ODE"):
             _check_dynamics(report, module, job, program)
         else:
@@ -640,22 +643,8 @@ def _compare_encoded(report, label, job, lib, result, row) -> None:
         if cname is None:
             continue
         theirs = lib.array(cname).reshape(m, n)
-        ours = (
-            np.array(
-                [
-                    [
-                        result[f"{name}[{i + 1},{j + 1}]" if n > 1 or m > 1 else name][
-                            row
-                        ]
-                        for j in range(n)
-                    ]
-                    for i in range(m)
-                ],
-                float,
-            )
-            if (m, n) != (1, 1)
-            else np.array([[result[name][row]]])
-        )
+        # result[NAME] is an array of shape (rows, m, n)
+        ours = np.asarray(result[name], float)[row].reshape(m, n)
         report.rows.append(
             Row(f"{label}: Encode {name} ({m}x{n})", _rel(ours, theirs), RHS_RTOL)
         )
@@ -678,6 +667,155 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     _compare_encoded(report, "seeded values", job, lib, result, row=0)
     if not report.rows:
         report.skipped = "the program computes no Encoded array to compare"
+
+
+# ------------------------------------------------- cleaned C functions
+
+
+@dataclass
+class CleanedFunction:
+    """A function the authors' ``autolevclean`` made of Autolev's code:
+    ``void NAME(STRUCT* par, double q[NDOF], ..., double out[N][M])``.
+    The script's constant ``par__X`` is the field ``par->X``; an input
+    array's elements are named by ``double q1 = q[0];`` lines; every other
+    array is an output."""
+
+    name: str
+    struct: tuple[str, str] | None  # (type, parameter name)
+    arrays: list[tuple[str, str]]  # (name, "[NDOF][NMOM]") in order
+    elements: dict[str, tuple[str, int]]  # q1p -> ("qd", 0)
+    fields: list[str]  # par->X used
+
+    @classmethod
+    def parse(cls, source: str) -> CleanedFunction:
+        head = re.search(r"^void\s+(\w+)\s*\((.*?)\)\s*\{", source, re.M | re.S)
+        if head is None:
+            raise ValueError("no function definition in the cleaned program")
+        struct, arrays = None, []
+        for param in head.group(2).split(","):
+            param = " ".join(param.split())
+            if m := re.fullmatch(r"(\w+)\s*\*\s*(\w+)", param):
+                struct = (m.group(1), m.group(2))
+            elif m := re.fullmatch(r"double (\w+)\s*((?:\[\s*\w+\s*\])+)", param):
+                arrays.append((m.group(1), m.group(2).replace(" ", "")))
+            else:
+                raise ValueError(f"unexpected parameter {param!r}")
+        elements = {
+            m.group(1): (m.group(2), int(m.group(3)))
+            for m in re.finditer(r"double\s+(\w+)\s*=\s*(\w+)\[(\d+)\];", source)
+        }
+        fields = []
+        if struct:
+            for f in re.findall(rf"\b{struct[1]}->(\w+)", source):
+                if f not in fields:
+                    fields.append(f)
+        return cls(head.group(1), struct, arrays, elements, fields)
+
+    @property
+    def inputs(self) -> set[str]:
+        return {arr for arr, _i in self.elements.values()}
+
+    def harness(self, values: dict[str, float], header: str) -> str:
+        """C source of a main() that fills the struct and the input arrays
+        with ``values`` (keyed by the C names: field or element), calls the
+        function and prints every output array, one ``name index value``
+        line per element (row by row)."""
+        lines = ["#include <stdio.h>", "#include <string.h>"]
+        lines += [f'#include "{header}"', "int main(void)", "{"]
+        call = []
+        if self.struct:
+            stype, sname = self.struct
+            lines.append(f"  static {stype} {sname}_;")
+            lines.append(f"  memset(&{sname}_, 0, sizeof {sname}_);")
+            for f in self.fields:
+                lines.append(f"  {sname}_.{f} = {values[f]!r};")
+            call.append(f"&{sname}_")
+        for name, dims in self.arrays:
+            lines.append(f"  static double {name}{dims};")
+            call.append(name)
+        for cname, (arr, i) in self.elements.items():
+            lines.append(f"  {arr}[{i}] = {values[cname]!r};")
+        lines.append(f"  {self.name}({', '.join(call)});")
+        for name, _dims in self.arrays:
+            if name in self.inputs:
+                continue
+            lines += [
+                "  {",
+                f"    const double *p = (const double *) {name};",
+                f"    size_t i, n = sizeof {name} / sizeof(double);",
+                f'    for (i = 0; i < n; i++) printf("{name} %zu %.17g\\n", i, p[i]);',
+                "  }",
+            ]
+        lines += ["  return 0;", "}", ""]
+        return "\n".join(lines)
+
+
+class _Printed:
+    """The arrays a harness printed, looked up as :class:`Loaded` is."""
+
+    def __init__(self, stdout: str):
+        found: dict[str, list[float]] = {}
+        for line in stdout.splitlines():
+            name, _i, value = line.split()
+            found.setdefault(name, []).append(float(value))
+        self.values = {k: np.array(v) for k, v in found.items()}
+        self.prog = self
+        self.arrays = {k: v.shape for k, v in self.values.items()}
+
+    def array(self, name: str) -> np.ndarray:
+        return self.values[name]
+
+
+def _check_cleaned(report: Report, module, job, program: Path) -> None:
+    """Call the cleaned function at the script's Inputs and at two seeded
+    states through a C harness written here, and compare every Encoded
+    array it returns with the module's."""
+    source = program.read_text(encoding="latin-1")
+    fn = CleanedFunction.parse(source)
+    header = re.search(r'#include\s+"([^"]+)"', source)
+    if header is None:
+        raise ValueError("the cleaned program includes no header")
+    variables = {name.upper(): order for name, _obj, order in job.variables}
+    inputs = {k.upper(): float(v.value) for k, v in job.inputs.items()}
+    prefix = f"{fn.struct[1]}__" if fn.struct else ""
+    cwd = program.parent
+    obj = program.with_suffix(".o")
+    subprocess.run(
+        ["cc", "-O0", "-w", "-c", "-o", str(obj), str(program)],
+        check=True,
+        capture_output=True,
+        text=True,
+    )
+    for k, label in enumerate(("script Inputs", "seeded state 1", "seeded state 2")):
+        values, overrides = {}, {}
+        for f in fn.fields:
+            al = (prefix + f).upper()
+            values[f] = inputs.get(al, _seeded(al, 0.5, 1.5))
+            overrides[al] = values[f]
+        for cname in fn.elements:
+            al = _al_name(cname, variables)
+            tag = al + "~" * k
+            values[cname] = (
+                inputs[al] if k == 0 and al in inputs else _seeded(tag, -0.6, 0.6)
+            )
+            overrides[al] = values[cname]
+        src = cwd / f"al2py_harness_{k}.c"
+        src.write_text(fn.harness(values, header.group(1)))
+        exe = src.with_suffix(".exe")
+        subprocess.run(
+            ["cc", "-O0", "-w", "-I", str(cwd), "-o", str(exe), str(src), str(obj)]
+            + ["-lm"],
+            check=True,
+            capture_output=True,
+            text=True,
+        )
+        proc = subprocess.run(
+            [str(exe)], capture_output=True, text=True, check=True, timeout=600
+        )
+        result = module.al.run_job(job, overrides)
+        _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
+    if not report.rows:
+        report.skipped = "the cleaned function returns no Encoded array"
 
 
 # -------------------------------------------------------------------- CLI
