@@ -479,10 +479,10 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
 def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Report:
     report = Report(pair)
     start = time.perf_counter()
-    if pair.kind == "matlab":
-        report.skipped = "MATLAB program: needs Octave (not installed)"
+    if pair.kind == "matlab" and shutil.which("octave") is None:
+        report.skipped = "MATLAB program: needs GNU Octave (octave not on PATH)"
         return report
-    if shutil.which("cc") is None:
+    if pair.kind != "matlab" and shutil.which("cc") is None:
         report.skipped = "no C compiler (cc)"
         return report
     with tempfile.TemporaryDirectory(prefix="al2py-judge-") as tmp:
@@ -495,6 +495,8 @@ def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Rep
         job = job_for(module, written)
         if pair.kind == "cleaned":
             _check_cleaned(report, module, job, program)
+        elif pair.kind == "matlab":
+            _check_matlab(report, module, job, program)
         elif job.kind in ("DYNAMICS", "ODE"):
             _check_dynamics(report, module, job, program)
         else:
@@ -540,34 +542,7 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
             else result.tables
         )
         if prog.outfiles:
-            for i, table in enumerate(tables, start=1):
-                path = cwd / (prog.outfiles % i)
-                theirs = read_table(path)
-                ours = np.asarray(table.data, float)
-                if theirs.shape != ours.shape:
-                    report.rows.append(
-                        Row(
-                            f"{label}: table {i} shape",
-                            math.inf,
-                            0.0,
-                            f"Autolev {theirs.shape}, al2py {ours.shape}",
-                        )
-                    )
-                    continue
-                worst, allowed, where = 0.0, 0.0, ""
-                for j, col in enumerate(table.columns):
-                    tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
-                    err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
-                    if err / tol > (worst / allowed if allowed else -1):
-                        worst, allowed, where = err, tol, col.label
-                report.rows.append(
-                    Row(
-                        f"{label}: {prog.outfiles % i} ({ours.shape[0]}x{ours.shape[1]})",
-                        worst,
-                        allowed,
-                        f"worst column {where}",
-                    )
-                )
+            _compare_tables(report, label, tables, cwd, prog.outfiles)
         # The right-hand side and encoded arrays at the initial state: the
         # program's main with TFINAL = TINITIAL computes its constants and
         # calls output() once.
@@ -617,6 +592,38 @@ def _run_program(report, label, prog: CProgram, exe: Path, values: dict) -> dict
         )
         values = dict(values, TFINAL=t0 + (t1 - t0) / 2)
     raise RuntimeError(f"Autolev's program does not integrate:\n{proc.stdout[-500:]}")
+
+
+def _compare_tables(report, label, tables, cwd: Path, pattern: str) -> None:
+    """Autolev's output files ``pattern % i`` against ``run()``'s tables,
+    column by column."""
+    for i, table in enumerate(tables, start=1):
+        theirs = read_table(cwd / (pattern % i))
+        ours = np.asarray(table.data, float)
+        if theirs.shape != ours.shape:
+            report.rows.append(
+                Row(
+                    f"{label}: table {i} shape",
+                    math.inf,
+                    0.0,
+                    f"Autolev {theirs.shape}, al2py {ours.shape}",
+                )
+            )
+            continue
+        worst, allowed, where = 0.0, 0.0, ""
+        for j, col in enumerate(table.columns):
+            tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
+            err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
+            if err / tol > (worst / allowed if allowed else -1):
+                worst, allowed, where = err, tol, col.label
+        report.rows.append(
+            Row(
+                f"{label}: {pattern % i} ({ours.shape[0]}x{ours.shape[1]})",
+                worst,
+                allowed,
+                f"worst column {where}",
+            )
+        )
 
 
 def _unshadow(report: Report, program: Path) -> CProgram:
@@ -816,6 +823,161 @@ def _check_cleaned(report: Report, module, job, program: Path) -> None:
         _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
     if not report.rows:
         report.skipped = "the cleaned function returns no Encoded array"
+
+
+# ------------------------------------------------------ MATLAB programs
+
+
+_OCTAVE = ["octave", "--no-gui", "--no-history", "--norc", "--quiet"]
+_M_VALUE = re.compile(r"^(\w+)(\s+=\s*)(-?[0-9.]+(?:[Ee][-+]?\d+)?)(\s*;)", re.M)
+
+
+class MProgram:
+    """An Autolev MATLAB program: ``ReadUserInput`` holds one value per
+    line (``q1 = 0.0;  % m  Initial Value``) up to ``% Unit conversions``;
+    a Dynamics program integrates ``mdlDerivatives`` with ode45, an
+    Algebraic one computes its Encoded arrays as globals."""
+
+    def __init__(self, source: str, stem: str):
+        self.source, self.stem = source, stem
+        start = re.search(r"^function\s+(?:\w+\s*=\s*)?ReadUserInput", source, re.M)
+        end = source.index("% Unit conversions", start.end())
+        self.span = (start.end(), end)
+        self.names = [m.group(1) for m in _M_VALUE.finditer(source, *self.span)]
+        self.state = [
+            n
+            for _i, n in sorted(
+                (int(i), n)
+                for i, n in re.findall(r"^VAR\((\d+)\) = (\w+);", source, re.M)
+            )
+        ]
+        out = re.search(r"fopen\('([^']+)\.1'", source)
+        self.outfiles = f"{out.group(1)}.%d" if out else None
+        self.arrays = sorted(set(re.findall(r"^(\w+)\(1,1\) = ", source, re.M)))
+
+    def with_values(self, values: dict[str, float]) -> str:
+        a, b = self.span
+
+        def put(m):
+            value = values.get(m.group(1).upper())
+            if value is None:
+                return m.group(0)
+            return f"{m.group(1)}{m.group(2)}{value!r}{m.group(4)}"
+
+        return self.source[:a] + _M_VALUE.sub(put, self.source[a:b]) + self.source[b:]
+
+    def rhs_variant(self, values: dict[str, float]) -> str:
+        """The program with its main replaced by: read the inputs, print
+        ``mdlDerivatives`` at TINITIAL."""
+        text = self.with_values(values)
+        second = re.search(r"^function\s", text[1:], re.M).start() + 1
+        main = (
+            "function al2py_rhs\n"
+            "VAR = ReadUserInput;\n"
+            "global TINITIAL\n"
+            "d = mdlDerivatives(TINITIAL, VAR, 0);\n"
+            "printf('%.17g\\n', d);\n\n"
+        )
+        return main + text[second:]
+
+
+def _octave(cwd: Path, command: str) -> str:
+    proc = subprocess.run(
+        [*_OCTAVE, "--eval", command],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    if proc.returncode or "error:" in proc.stderr:
+        raise RuntimeError(f"Octave failed:\n{proc.stderr[-2000:]}")
+    return proc.stdout
+
+
+def _check_matlab(report: Report, module, job, program: Path) -> None:
+    """Run the MATLAB program in GNU Octave on the script's Inputs (values
+    edited into ``ReadUserInput``) and on a perturbed state; compare its
+    output files with ``run()``'s tables, ``mdlDerivatives`` at the
+    initial state with ``ode_function()``, and the Encoded globals of an
+    Algebraic program with the module's."""
+    from al2py_runtime import jobs as rjobs
+
+    mprog = MProgram(program.read_text(encoding="latin-1"), program.stem)
+    cprog = CProgram("", [mprog.names], "", None, mprog.state, {})
+    cwd = program.parent
+    variables = {n.upper(): o for n, _obj, o in job.variables}
+    dynamic = job.kind in ("DYNAMICS", "ODE")
+    phases = (("script Inputs", False), ("perturbed state", True))
+    for label, perturb in phases:
+        integ = _integration_for(job)
+        integ.update(ABSERR=1e-10, RELERR=1e-10)  # Octave's ode45
+        values = _values(cprog, job, integ)
+        if "PRINTINT" in values:  # the C programs' _printint
+            values["PRINTINT"] = values["_PRINTINT"] = integ["_PRINTINT"]
+        if perturb:
+            for name in mprog.names:
+                if _al_name(name, variables).rstrip("'") in variables:
+                    values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
+        if perturb and dynamic:
+            # the perturbed system is followed over a quarter of the
+            # interval (a perturbed bicycle falls over)
+            t0, t1 = values["TINITIAL"], values["TFINAL"]
+            values["TFINAL"] = t0 + (t1 - t0) / 4
+        program.write_text(mprog.with_values(values), encoding="latin-1")
+        overrides = _overrides(cprog, job, values)
+        result = module.al.run_job(job, overrides)
+        tables = [t for t in result.tables if not getattr(t, "encoded", False)]
+        encoded = [
+            a for a in mprog.arrays if a.upper() in {k.upper() for k in job.encoded}
+        ]
+        printing = "".join(
+            f"printf('@ {a}\\n'); printf('%.17g\\n', {a}.');" for a in encoded
+        )
+        glob = f"global {' '.join(encoded)}; " if encoded else ""
+        out = _octave(cwd, f"{glob}{program.stem}; {printing}")
+        if mprog.outfiles:
+            _compare_tables(report, label, tables, cwd, mprog.outfiles)
+        if encoded:
+            _compare_encoded(report, label, job, _OctavePrinted(out), result, 0)
+        if dynamic:
+            (cwd / "al2py_rhs.m").write_text(
+                mprog.rhs_variant(values), encoding="latin-1"
+            )
+            theirs = np.array(
+                [float(x) for x in _octave(cwd, "al2py_rhs").split()], float
+            )
+            f, y0, names = rjobs.ode_function(job, overrides)
+            ours_d = dict(
+                zip(names, f(values["TINITIAL"], np.array(y0, float)), strict=True)
+            )
+            ours = np.array([ours_d[_al_name(n, variables)] for n in mprog.state])
+            report.rows.append(
+                Row(
+                    f"{label}: state derivatives at t0 ({len(ours)})",
+                    _rel(ours, theirs),
+                    RHS_RTOL,
+                )
+            )
+
+
+class _OctavePrinted(_Printed):
+    """Arrays Octave printed as ``@ NAME`` then one value a line."""
+
+    def __init__(self, stdout: str):
+        lines, name = [], None
+        found: dict[str, list[float]] = {}
+        for line in stdout.splitlines():
+            if line.startswith("@ "):
+                name = line[2:].strip()
+                found[name] = []
+            elif name is not None and line.strip():
+                try:
+                    found[name].append(float(line))
+                except ValueError:
+                    name = None
+        super().__init__("\n".join(lines))
+        self.values = {k: np.array(v) for k, v in found.items()}
+        self.arrays = {k: v.shape for k, v in self.values.items()}
 
 
 # -------------------------------------------------------------------- CLI
