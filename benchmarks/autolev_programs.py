@@ -201,12 +201,16 @@ def extract(pair: Pair, dest: Path, root: Path | None = None) -> tuple[Path, Pat
     script's folder when it lies below it)."""
     git_dir = pair.git_dir(root)
     folder = str(Path(pair.script).parent)
-    files = _git(
-        git_dir, "ls-tree", "--name-only", "HEAD", f"{folder}/" if folder != "." else ""
-    )
-    for f in files.splitlines():
+    base = _run_root(git_dir, pair.script)
+    under = f"{base}/" if base != "." else ""
+    listing = _git(git_dir, "ls-tree", "-r", "--name-only", "HEAD", under)
+    for f in listing.splitlines():
+        rel = Path(f).relative_to(base) if base != "." else Path(f)
+        if base == folder and len(rel.parts) > 1:
+            continue  # only the script's own folder
         if f.lower().endswith((".al", ".a", ".r")):
-            (dest / Path(f).name).write_text(_show(git_dir, f), encoding="latin-1")
+            (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+            (dest / rel).write_text(_show(git_dir, f), encoding="latin-1")
     prog = dest / "autolev" / Path(pair.program).name
     prog.parent.mkdir(parents=True, exist_ok=True)
     prog.write_text(_show(git_dir, pair.program), encoding="latin-1")
@@ -217,17 +221,37 @@ def extract(pair: Pair, dest: Path, root: Path | None = None) -> tuple[Path, Pat
         ).splitlines():
             if f.endswith(".h"):
                 (prog.parent / Path(f).name).write_text(_show(git_dir, f), "latin-1")
-    return dest / Path(pair.script).name, prog
+    script = Path(pair.script)
+    return dest / (script.relative_to(base) if base != "." else script), prog
 
 
-def convert_and_import(script: Path):
-    """``python -m al2py SCRIPT -o model.py`` beside the script, imported."""
+def _run_root(git_dir: Path, script: str) -> str:
+    """The folder Autolev ran the script in: its own, or its parent where
+    a ``RUN sub/x.al`` names a file from there (BioMAC's NoDer scripts RUN
+    ``gait2d_osim/gait2d_osim_FK.al`` from c_files/)."""
+    folder = Path(script).parent
+    files = set(_git(git_dir, "ls-tree", "-r", "--name-only", "HEAD").splitlines())
+    for target in re.findall(r"^\s*run\s+(\S+)", _show(git_dir, script), re.I | re.M):
+        target = target.replace("\\", "/")
+        if str(folder / target) not in files and str(folder.parent / target) in files:
+            return str(folder.parent)
+    return str(folder)
+
+
+def convert_and_import(script: Path, run_dir: Path | None = None):
+    """``python -m al2py SCRIPT -o model.py`` beside the script, imported;
+    ``run_dir`` (the folder Autolev ran it in, see _run_root) is put on
+    AUTOLEVPATH."""
     out = script.parent / f"_al2py_{abs(hash(script.name)) % 10**8}.py"
+    env = dict(os.environ)
+    if run_dir is not None:
+        env["AUTOLEVPATH"] = str(run_dir)
     proc = subprocess.run(
         [sys.executable, "-m", "al2py", script.name, "-o", out.name],
         cwd=script.parent,
         capture_output=True,
         text=True,
+        env=env,
     )
     if proc.returncode:
         raise RuntimeError(f"al2py failed:\n{proc.stdout}{proc.stderr}")
@@ -488,7 +512,7 @@ def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Rep
     with tempfile.TemporaryDirectory(prefix="al2py-judge-") as tmp:
         work = keep or Path(tmp)
         script, program = extract(pair, work, root)
-        module = convert_and_import(script)
+        module = convert_and_import(script, work if script.parent != work else None)
         written = pair.program
         if pair.kind == "cleaned":  # the CODE statement wrote X_raw.c
             written = str(Path(pair.program).with_suffix("")) + "_raw.c"
