@@ -157,6 +157,23 @@ def _locate(script, target, files, by_name) -> str | None:
     return same[0] if len(same) == 1 else None
 
 
+def present(pair: Pair, root: Path | None = None) -> bool:
+    """Whether the program's blob is in the mirror (a snapshot may list its
+    largest files without their contents)."""
+    proc = subprocess.run(
+        [
+            "git",
+            "-C",
+            str(pair.git_dir(root)),
+            "cat-file",
+            "-e",
+            f"HEAD:{pair.program}",
+        ],
+        capture_output=True,
+    )
+    return proc.returncode == 0
+
+
 # ------------------------------------------------------------------- results
 
 
@@ -201,12 +218,16 @@ def extract(pair: Pair, dest: Path, root: Path | None = None) -> tuple[Path, Pat
     script's folder when it lies below it)."""
     git_dir = pair.git_dir(root)
     folder = str(Path(pair.script).parent)
-    files = _git(
-        git_dir, "ls-tree", "--name-only", "HEAD", f"{folder}/" if folder != "." else ""
-    )
-    for f in files.splitlines():
+    base = _run_root(git_dir, pair.script)
+    under = f"{base}/" if base != "." else ""
+    listing = _git(git_dir, "ls-tree", "-r", "--name-only", "HEAD", under)
+    for f in listing.splitlines():
+        rel = Path(f).relative_to(base) if base != "." else Path(f)
+        if base == folder and len(rel.parts) > 1:
+            continue  # only the script's own folder
         if f.lower().endswith((".al", ".a", ".r")):
-            (dest / Path(f).name).write_text(_show(git_dir, f), encoding="latin-1")
+            (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+            (dest / rel).write_text(_show(git_dir, f), encoding="latin-1")
     prog = dest / "autolev" / Path(pair.program).name
     prog.parent.mkdir(parents=True, exist_ok=True)
     prog.write_text(_show(git_dir, pair.program), encoding="latin-1")
@@ -217,17 +238,37 @@ def extract(pair: Pair, dest: Path, root: Path | None = None) -> tuple[Path, Pat
         ).splitlines():
             if f.endswith(".h"):
                 (prog.parent / Path(f).name).write_text(_show(git_dir, f), "latin-1")
-    return dest / Path(pair.script).name, prog
+    script = Path(pair.script)
+    return dest / (script.relative_to(base) if base != "." else script), prog
 
 
-def convert_and_import(script: Path):
-    """``python -m al2py SCRIPT -o model.py`` beside the script, imported."""
+def _run_root(git_dir: Path, script: str) -> str:
+    """The folder Autolev ran the script in: its own, or its parent where
+    a ``RUN sub/x.al`` names a file from there (BioMAC's NoDer scripts RUN
+    ``gait2d_osim/gait2d_osim_FK.al`` from c_files/)."""
+    folder = Path(script).parent
+    files = set(_git(git_dir, "ls-tree", "-r", "--name-only", "HEAD").splitlines())
+    for target in re.findall(r"^\s*run\s+(\S+)", _show(git_dir, script), re.I | re.M):
+        target = target.replace("\\", "/")
+        if str(folder / target) not in files and str(folder.parent / target) in files:
+            return str(folder.parent)
+    return str(folder)
+
+
+def convert_and_import(script: Path, run_dir: Path | None = None):
+    """``python -m al2py SCRIPT -o model.py`` beside the script, imported;
+    ``run_dir`` (the folder Autolev ran it in, see _run_root) is put on
+    AUTOLEVPATH."""
     out = script.parent / f"_al2py_{abs(hash(script.name)) % 10**8}.py"
+    env = dict(os.environ)
+    if run_dir is not None:
+        env["AUTOLEVPATH"] = str(run_dir)
     proc = subprocess.run(
         [sys.executable, "-m", "al2py", script.name, "-o", out.name],
         cwd=script.parent,
         capture_output=True,
         text=True,
+        env=env,
     )
     if proc.returncode:
         raise RuntimeError(f"al2py failed:\n{proc.stdout}{proc.stderr}")
@@ -479,19 +520,30 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
 def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Report:
     report = Report(pair)
     start = time.perf_counter()
-    if pair.kind == "matlab":
-        report.skipped = "MATLAB program: needs Octave (not installed)"
+    if pair.kind == "matlab" and shutil.which("octave") is None:
+        report.skipped = "MATLAB program: needs GNU Octave (octave not on PATH)"
         return report
-    if shutil.which("cc") is None:
+    if pair.kind != "matlab" and shutil.which("cc") is None:
         report.skipped = "no C compiler (cc)"
+        return report
+    if not present(pair, root):
+        report.skipped = (
+            f"{pair.program} is listed in the repository's tree but its blob"
+            " is absent from the mirror (git cat-file -e fails)"
+        )
         return report
     with tempfile.TemporaryDirectory(prefix="al2py-judge-") as tmp:
         work = keep or Path(tmp)
         script, program = extract(pair, work, root)
-        module = convert_and_import(script)
-        job = job_for(module, pair.program)
+        module = convert_and_import(script, work if script.parent != work else None)
+        written = pair.program
+        if pair.kind == "cleaned":  # the CODE statement wrote X_raw.c
+            written = str(Path(pair.program).with_suffix("")) + "_raw.c"
+        job = job_for(module, written)
         if pair.kind == "cleaned":
-            report.skipped = "cleaned (autolevclean) function: no harness yet"
+            _check_cleaned(report, module, job, program)
+        elif pair.kind == "matlab":
+            _check_matlab(report, module, job, program)
         elif job.kind in ("DYNAMICS", "ODE"):
             _check_dynamics(report, module, job, program)
         else:
@@ -521,19 +573,14 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
 
     prog = _unshadow(report, program)
     cwd = program.parent
+    exe = compile_program(program, shared=False)
     for label, perturb in (("script Inputs", False), ("perturbed state", True)):
         integ = _integration_for(job)
         values = _values(prog, job, integ)
         if perturb:
             for name in prog.state:
                 values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
-        write_in(prog, values, cwd / prog.infile)
-        exe = compile_program(program, shared=False)
-        proc = subprocess.run(
-            [str(exe)], cwd=cwd, capture_output=True, text=True, timeout=600
-        )
-        if proc.returncode:
-            raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
+        values = _run_program(report, label, prog, exe, values)
         overrides = _overrides(prog, job, values)
         result = rjobs.run_job(job, overrides)
         tables = (
@@ -542,34 +589,7 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
             else result.tables
         )
         if prog.outfiles:
-            for i, table in enumerate(tables, start=1):
-                path = cwd / (prog.outfiles % i)
-                theirs = read_table(path)
-                ours = np.asarray(table.data, float)
-                if theirs.shape != ours.shape:
-                    report.rows.append(
-                        Row(
-                            f"{label}: table {i} shape",
-                            math.inf,
-                            0.0,
-                            f"Autolev {theirs.shape}, al2py {ours.shape}",
-                        )
-                    )
-                    continue
-                worst, allowed, where = 0.0, 0.0, ""
-                for j, col in enumerate(table.columns):
-                    tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
-                    err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
-                    if err / tol > (worst / allowed if allowed else -1):
-                        worst, allowed, where = err, tol, col.label
-                report.rows.append(
-                    Row(
-                        f"{label}: {prog.outfiles % i} ({ours.shape[0]}x{ours.shape[1]})",
-                        worst,
-                        allowed,
-                        f"worst column {where}",
-                    )
-                )
+            _compare_tables(report, label, tables, cwd, prog.outfiles)
         # The right-hand side and encoded arrays at the initial state: the
         # program's main with TFINAL = TINITIAL computes its constants and
         # calls output() once.
@@ -598,6 +618,61 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
         del lib
 
 
+def _run_program(report, label, prog: CProgram, exe: Path, values: dict) -> dict:
+    """Run Autolev's program on ``values``; where its integrator gives up
+    (a perturbed bicycle falls over), halve the interval, up to four times,
+    so that both programs are compared where Autolev's integrates."""
+    cwd = exe.parent
+    for _ in range(5):
+        write_in(prog, values, cwd / prog.infile)
+        proc = subprocess.run(
+            [str(exe)], cwd=cwd, capture_output=True, text=True, timeout=600
+        )
+        if proc.returncode:
+            raise RuntimeError(f"Autolev's program failed:\n{proc.stdout[-2000:]}")
+        if "integration failed" not in proc.stdout:
+            return values
+        t0, t1 = values["TINITIAL"], values["TFINAL"]
+        report.notes.append(
+            f"{label}: Autolev's program stops (its integration fails to converge)"
+            f" before TFINAL = {t1:g}; compared up to {t0 + (t1 - t0) / 2:g}"
+        )
+        values = dict(values, TFINAL=t0 + (t1 - t0) / 2)
+    raise RuntimeError(f"Autolev's program does not integrate:\n{proc.stdout[-500:]}")
+
+
+def _compare_tables(report, label, tables, cwd: Path, pattern: str) -> None:
+    """Autolev's output files ``pattern % i`` against ``run()``'s tables,
+    column by column."""
+    for i, table in enumerate(tables, start=1):
+        theirs = read_table(cwd / (pattern % i))
+        ours = np.asarray(table.data, float)
+        if theirs.shape != ours.shape:
+            report.rows.append(
+                Row(
+                    f"{label}: table {i} shape",
+                    math.inf,
+                    0.0,
+                    f"Autolev {theirs.shape}, al2py {ours.shape}",
+                )
+            )
+            continue
+        worst, allowed, where = 0.0, 0.0, ""
+        for j, col in enumerate(table.columns):
+            tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
+            err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
+            if err / tol > (worst / allowed if allowed else -1):
+                worst, allowed, where = err, tol, col.label
+        report.rows.append(
+            Row(
+                f"{label}: {pattern % i} ({ours.shape[0]}x{ours.shape[1]})",
+                worst,
+                allowed,
+                f"worst column {where}",
+            )
+        )
+
+
 def _unshadow(report: Report, program: Path) -> CProgram:
     """Parse the program; where a local hides a script name, note it and
     compile the program with the local renamed (Autolev's defect, not the
@@ -622,22 +697,8 @@ def _compare_encoded(report, label, job, lib, result, row) -> None:
         if cname is None:
             continue
         theirs = lib.array(cname).reshape(m, n)
-        ours = (
-            np.array(
-                [
-                    [
-                        result[f"{name}[{i + 1},{j + 1}]" if n > 1 or m > 1 else name][
-                            row
-                        ]
-                        for j in range(n)
-                    ]
-                    for i in range(m)
-                ],
-                float,
-            )
-            if (m, n) != (1, 1)
-            else np.array([[result[name][row]]])
-        )
+        # result[NAME] is an array of shape (rows, m, n)
+        ours = np.asarray(result[name], float)[row].reshape(m, n)
         report.rows.append(
             Row(f"{label}: Encode {name} ({m}x{n})", _rel(ours, theirs), RHS_RTOL)
         )
@@ -662,6 +723,310 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     _compare_encoded(report, "seeded values", job, lib, result, row=0)
     if not report.rows:
         report.skipped = "the program computes no Encoded array to compare"
+
+
+# ------------------------------------------------- cleaned C functions
+
+
+@dataclass
+class CleanedFunction:
+    """A function the authors' ``autolevclean`` made of Autolev's code:
+    ``void NAME(STRUCT* par, double q[NDOF], ..., double out[N][M])``.
+    The script's constant ``par__X`` is the field ``par->X``; an input
+    array's elements are named by ``double q1 = q[0];`` lines; every other
+    array is an output."""
+
+    name: str
+    struct: tuple[str, str] | None  # (type, parameter name)
+    arrays: list[tuple[str, str]]  # (name, "[NDOF][NMOM]") in order
+    elements: dict[str, tuple[str, int]]  # q1p -> ("qd", 0)
+    fields: list[str]  # par->X used
+
+    @classmethod
+    def parse(cls, source: str) -> CleanedFunction:
+        head = re.search(r"^void\s+(\w+)\s*\((.*?)\)\s*\{", source, re.M | re.S)
+        if head is None:
+            raise ValueError("no function definition in the cleaned program")
+        struct, arrays = None, []
+        for param in head.group(2).split(","):
+            param = " ".join(param.split())
+            if m := re.fullmatch(r"(\w+)\s*\*\s*(\w+)", param):
+                struct = (m.group(1), m.group(2))
+            elif m := re.fullmatch(r"double (\w+)\s*((?:\[\s*\w+\s*\])+)", param):
+                arrays.append((m.group(1), m.group(2).replace(" ", "")))
+            else:
+                raise ValueError(f"unexpected parameter {param!r}")
+        elements = {
+            m.group(1): (m.group(2), int(m.group(3)))
+            for m in re.finditer(r"double\s+(\w+)\s*=\s*(\w+)\[(\d+)\];", source)
+        }
+        fields = []
+        if struct:
+            for f in re.findall(rf"\b{struct[1]}->(\w+)", source):
+                if f not in fields:
+                    fields.append(f)
+        return cls(head.group(1), struct, arrays, elements, fields)
+
+    @property
+    def inputs(self) -> set[str]:
+        return {arr for arr, _i in self.elements.values()}
+
+    def harness(self, values: dict[str, float], header: str) -> str:
+        """C source of a main() that fills the struct and the input arrays
+        with ``values`` (keyed by the C names: field or element), calls the
+        function and prints every output array, one ``name index value``
+        line per element (row by row)."""
+        lines = ["#include <stdio.h>", "#include <string.h>"]
+        lines += [f'#include "{header}"', "int main(void)", "{"]
+        call = []
+        if self.struct:
+            stype, sname = self.struct
+            lines.append(f"  static {stype} {sname}_;")
+            lines.append(f"  memset(&{sname}_, 0, sizeof {sname}_);")
+            for f in self.fields:
+                lines.append(f"  {sname}_.{f} = {values[f]!r};")
+            call.append(f"&{sname}_")
+        for name, dims in self.arrays:
+            lines.append(f"  static double {name}{dims};")
+            call.append(name)
+        for cname, (arr, i) in self.elements.items():
+            lines.append(f"  {arr}[{i}] = {values[cname]!r};")
+        lines.append(f"  {self.name}({', '.join(call)});")
+        for name, _dims in self.arrays:
+            if name in self.inputs:
+                continue
+            lines += [
+                "  {",
+                f"    const double *p = (const double *) {name};",
+                f"    size_t i, n = sizeof {name} / sizeof(double);",
+                f'    for (i = 0; i < n; i++) printf("{name} %zu %.17g\\n", i, p[i]);',
+                "  }",
+            ]
+        lines += ["  return 0;", "}", ""]
+        return "\n".join(lines)
+
+
+class _Printed:
+    """The arrays a harness printed, looked up as :class:`Loaded` is."""
+
+    def __init__(self, stdout: str):
+        found: dict[str, list[float]] = {}
+        for line in stdout.splitlines():
+            name, _i, value = line.split()
+            found.setdefault(name, []).append(float(value))
+        self.values = {k: np.array(v) for k, v in found.items()}
+        self.prog = self
+        self.arrays = {k: v.shape for k, v in self.values.items()}
+
+    def array(self, name: str) -> np.ndarray:
+        return self.values[name]
+
+
+def _check_cleaned(report: Report, module, job, program: Path) -> None:
+    """Call the cleaned function at the script's Inputs and at two seeded
+    states through a C harness written here, and compare every Encoded
+    array it returns with the module's."""
+    source = program.read_text(encoding="latin-1")
+    fn = CleanedFunction.parse(source)
+    header = re.search(r'#include\s+"([^"]+)"', source)
+    if header is None:
+        raise ValueError("the cleaned program includes no header")
+    variables = {name.upper(): order for name, _obj, order in job.variables}
+    inputs = {k.upper(): float(v.value) for k, v in job.inputs.items()}
+    prefix = f"{fn.struct[1]}__" if fn.struct else ""
+    cwd = program.parent
+    obj = program.with_suffix(".o")
+    subprocess.run(
+        ["cc", "-O0", "-w", "-c", "-o", str(obj), str(program)],
+        check=True,
+        capture_output=True,
+        text=True,
+    )
+    for k, label in enumerate(("script Inputs", "seeded state 1", "seeded state 2")):
+        values, overrides = {}, {}
+        for f in fn.fields:
+            al = (prefix + f).upper()
+            values[f] = inputs.get(al, _seeded(al, 0.5, 1.5))
+            overrides[al] = values[f]
+        for cname in fn.elements:
+            al = _al_name(cname, variables)
+            tag = al + "~" * k
+            values[cname] = (
+                inputs[al] if k == 0 and al in inputs else _seeded(tag, -0.6, 0.6)
+            )
+            overrides[al] = values[cname]
+        src = cwd / f"al2py_harness_{k}.c"
+        src.write_text(fn.harness(values, header.group(1)))
+        exe = src.with_suffix(".exe")
+        subprocess.run(
+            ["cc", "-O0", "-w", "-I", str(cwd), "-o", str(exe), str(src), str(obj)]
+            + ["-lm"],
+            check=True,
+            capture_output=True,
+            text=True,
+        )
+        proc = subprocess.run(
+            [str(exe)], capture_output=True, text=True, check=True, timeout=600
+        )
+        result = module.al.run_job(job, overrides)
+        _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
+    if not report.rows:
+        report.skipped = "the cleaned function returns no Encoded array"
+
+
+# ------------------------------------------------------ MATLAB programs
+
+
+_OCTAVE = ["octave", "--no-gui", "--no-history", "--norc", "--quiet"]
+_M_VALUE = re.compile(r"^(\w+)(\s+=\s*)(-?[0-9.]+(?:[Ee][-+]?\d+)?)(\s*;)", re.M)
+
+
+class MProgram:
+    """An Autolev MATLAB program: ``ReadUserInput`` holds one value per
+    line (``q1 = 0.0;  % m  Initial Value``) up to ``% Unit conversions``;
+    a Dynamics program integrates ``mdlDerivatives`` with ode45, an
+    Algebraic one computes its Encoded arrays as globals."""
+
+    def __init__(self, source: str, stem: str):
+        self.source, self.stem = source, stem
+        start = re.search(r"^function\s+(?:\w+\s*=\s*)?ReadUserInput", source, re.M)
+        end = source.index("% Unit conversions", start.end())
+        self.span = (start.end(), end)
+        self.names = [m.group(1) for m in _M_VALUE.finditer(source, *self.span)]
+        self.state = [
+            n
+            for _i, n in sorted(
+                (int(i), n)
+                for i, n in re.findall(r"^VAR\((\d+)\) = (\w+);", source, re.M)
+            )
+        ]
+        out = re.search(r"fopen\('([^']+)\.1'", source)
+        self.outfiles = f"{out.group(1)}.%d" if out else None
+        self.arrays = sorted(set(re.findall(r"^(\w+)\(1,1\) = ", source, re.M)))
+
+    def with_values(self, values: dict[str, float]) -> str:
+        a, b = self.span
+
+        def put(m):
+            value = values.get(m.group(1).upper())
+            if value is None:
+                return m.group(0)
+            return f"{m.group(1)}{m.group(2)}{value!r}{m.group(4)}"
+
+        return self.source[:a] + _M_VALUE.sub(put, self.source[a:b]) + self.source[b:]
+
+    def rhs_variant(self, values: dict[str, float]) -> str:
+        """The program with its main replaced by: read the inputs, print
+        ``mdlDerivatives`` at TINITIAL."""
+        text = self.with_values(values)
+        second = re.search(r"^function\s", text[1:], re.M).start() + 1
+        main = (
+            "function al2py_rhs\n"
+            "VAR = ReadUserInput;\n"
+            "global TINITIAL\n"
+            "d = mdlDerivatives(TINITIAL, VAR, 0);\n"
+            "printf('%.17g\\n', d);\n\n"
+        )
+        return main + text[second:]
+
+
+def _octave(cwd: Path, command: str) -> str:
+    proc = subprocess.run(
+        [*_OCTAVE, "--eval", command],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    if proc.returncode or "error:" in proc.stderr:
+        raise RuntimeError(f"Octave failed:\n{proc.stderr[-2000:]}")
+    return proc.stdout
+
+
+def _check_matlab(report: Report, module, job, program: Path) -> None:
+    """Run the MATLAB program in GNU Octave on the script's Inputs (values
+    edited into ``ReadUserInput``) and on a perturbed state; compare its
+    output files with ``run()``'s tables, ``mdlDerivatives`` at the
+    initial state with ``ode_function()``, and the Encoded globals of an
+    Algebraic program with the module's."""
+    from al2py_runtime import jobs as rjobs
+
+    mprog = MProgram(program.read_text(encoding="latin-1"), program.stem)
+    cprog = CProgram("", [mprog.names], "", None, mprog.state, {})
+    cwd = program.parent
+    variables = {n.upper(): o for n, _obj, o in job.variables}
+    dynamic = job.kind in ("DYNAMICS", "ODE")
+    phases = (("script Inputs", False), ("perturbed state", True))
+    for label, perturb in phases:
+        integ = _integration_for(job)
+        integ.update(ABSERR=1e-10, RELERR=1e-10)  # Octave's ode45 too
+        values = _values(cprog, job, integ)
+        if "PRINTINT" in values:  # the C programs' _printint
+            values["PRINTINT"] = values["_PRINTINT"] = integ["_PRINTINT"]
+        if perturb:
+            for name in mprog.names:
+                if _al_name(name, variables).rstrip("'") in variables:
+                    values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
+        if dynamic:
+            # Octave's ode45 interprets mdlDerivatives at every stage (a
+            # minute per few output steps for bicycle14.m): ten print steps
+            t0, t1, h = values["TINITIAL"], values["TFINAL"], values["INTEGSTP"]
+            values["TFINAL"] = min(t1, t0 + 10 * h) if t1 > t0 else t1
+        program.write_text(mprog.with_values(values), encoding="latin-1")
+        overrides = _overrides(cprog, job, values)
+        result = module.al.run_job(job, overrides)
+        tables = [t for t in result.tables if not getattr(t, "encoded", False)]
+        encoded = [
+            a for a in mprog.arrays if a.upper() in {k.upper() for k in job.encoded}
+        ]
+        printing = "".join(
+            f"printf('@ {a}\\n'); printf('%.17g\\n', {a}.');" for a in encoded
+        )
+        glob = f"global {' '.join(encoded)}; " if encoded else ""
+        out = _octave(cwd, f"{glob}{program.stem}; {printing}")
+        if mprog.outfiles:
+            _compare_tables(report, label, tables, cwd, mprog.outfiles)
+        if encoded:
+            _compare_encoded(report, label, job, _OctavePrinted(out), result, 0)
+        if dynamic:
+            (cwd / "al2py_rhs.m").write_text(
+                mprog.rhs_variant(values), encoding="latin-1"
+            )
+            theirs = np.array(
+                [float(x) for x in _octave(cwd, "al2py_rhs").split()], float
+            )
+            f, y0, names = rjobs.ode_function(job, overrides)
+            ours_d = dict(
+                zip(names, f(values["TINITIAL"], np.array(y0, float)), strict=True)
+            )
+            ours = np.array([ours_d[_al_name(n, variables)] for n in mprog.state])
+            report.rows.append(
+                Row(
+                    f"{label}: state derivatives at t0 ({len(ours)})",
+                    _rel(ours, theirs),
+                    RHS_RTOL,
+                )
+            )
+
+
+class _OctavePrinted(_Printed):
+    """Arrays Octave printed as ``@ NAME`` then one value a line."""
+
+    def __init__(self, stdout: str):
+        lines, name = [], None
+        found: dict[str, list[float]] = {}
+        for line in stdout.splitlines():
+            if line.startswith("@ "):
+                name = line[2:].strip()
+                found[name] = []
+            elif name is not None and line.strip():
+                try:
+                    found[name].append(float(line))
+                except ValueError:
+                    name = None
+        super().__init__("\n".join(lines))
+        self.values = {k: np.array(v) for k, v in found.items()}
+        self.arrays = {k: v.shape for k, v in self.values.items()}
 
 
 # -------------------------------------------------------------------- CLI

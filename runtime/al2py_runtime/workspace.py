@@ -29,6 +29,7 @@ from dataclasses import replace
 from typing import Any
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
 from . import algebra, matrices
@@ -722,6 +723,11 @@ class Workspace(Mapping):
         With a matrix ``x`` (``D(Xp, Xm)``) the result is the Jacobian whose
         row i, column j is the derivative of element i of ``y`` by element j.
         """
+        x = (
+            x.applyfunc(self._through_alias)
+            if isinstance(x, sp.MatrixBase)
+            else self._through_alias(x)
+        )
         if frame is not None or _is_vectorial(self.val(y)):
             return self.model.vector_d(self.resolve(self.val(y), keep=[x]), x, frame)
         diff = _Partial(self.book_if_made())
@@ -734,6 +740,21 @@ class Workspace(Mapping):
         if isinstance(y, sp.MatrixBase):
             return y.applyfunc(lambda e: diff(e, x))
         return diff(y, x)
+
+    def _through_alias(self, x: Any) -> Any:
+        """An assigned name that stands for one quantity (``T4 = Tphi``) is
+        that quantity in ``D(y, T4)``: Autolev substitutes an assigned name's
+        value wherever it is used, so ``D(u4', T4)`` is ``D(u4', Tphi)``
+        (WhippleDynamics.c's ``bMat`` column of ``T4``).  A name for an
+        expression, or a declared quantity, stays a name."""
+        if not isinstance(x, sp.Symbol) or x not in self._rhs:
+            return x
+        entry = self._names.get(self._entries_by_obj.get(x, ""))
+        if entry is None or entry.kind != "quantity":
+            return x
+        value = self.resolve(x)
+        atom = isinstance(value, sp.Symbol | sp.Derivative | AppliedUndef)
+        return value if atom else x
 
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides

@@ -619,6 +619,10 @@ def _spelled(call: ir.Call) -> ir.Call | None:
 
 
 def _resolve(filename: str, script_dir: Path, autolevpath: str | None) -> Path | None:
+    # Autolev ran on Windows: ``RUN sub\x.al`` names sub/x.al
+    # (BioMAC's gait10dof18musc_NoDer.al).
+    if os.sep == "/" and "\\" in filename:
+        filename = filename.replace("\\", "/")
     candidates = [script_dir / filename]
     for d in (autolevpath or "").split(os.pathsep):
         if d:
