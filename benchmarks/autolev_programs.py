@@ -949,7 +949,7 @@ def _check_matlab(report: Report, module, job, program: Path) -> None:
     output files with ``run()``'s tables, ``mdlDerivatives`` at the
     initial state with ``ode_function()``, and the Encoded globals of an
     Algebraic program with the module's."""
-    from al2py_runtime import jobs as rjobs
+    from al2py_runtime.jobs import run as rjobs
 
     mprog = MProgram(program.read_text(encoding="latin-1"), program.stem)
     cprog = CProgram("", [mprog.names], "", None, mprog.state, {})
