@@ -974,7 +974,7 @@ def _check_matlab(report: Report, module, job, program: Path) -> None:
             values["TFINAL"] = min(t1, t0 + 10 * h) if t1 > t0 else t1
         program.write_text(mprog.with_values(values), encoding="latin-1")
         overrides = _overrides(cprog, job, values)
-        result = module.al.run_job(job, overrides)
+        result = rjobs.run_job(job, overrides)
         tables = [t for t in result.tables if not getattr(t, "encoded", False)]
         encoded = [
             a for a in mprog.arrays if a.upper() in {k.upper() for k in job.encoded}
