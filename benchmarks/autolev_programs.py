@@ -826,6 +826,8 @@ def _check_cleaned(report: Report, module, job, program: Path) -> None:
     """Call the cleaned function at the script's Inputs and at two seeded
     states through a C harness written here, and compare every Encoded
     array it returns with the module's."""
+    from al2py_runtime.jobs import run as rjobs
+
     source = program.read_text(encoding="latin-1")
     fn = CleanedFunction.parse(source)
     header = re.search(r'#include\s+"([^"]+)"', source)
@@ -868,7 +870,7 @@ def _check_cleaned(report: Report, module, job, program: Path) -> None:
         proc = subprocess.run(
             [str(exe)], capture_output=True, text=True, check=True, timeout=600
         )
-        result = module.al.run_job(job, overrides)
+        result = rjobs.run_job(job, overrides)
         _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
     if not report.rows:
         report.skipped = "the cleaned function returns no Encoded array"
