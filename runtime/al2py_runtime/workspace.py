@@ -747,9 +747,9 @@ class Workspace(Mapping):
         value wherever it is used, so ``D(u4', T4)`` is ``D(u4', Tphi)``
         (WhippleDynamics.c's ``bMat`` column of ``T4``).  A name for an
         expression, or a declared quantity, stays a name."""
-        if not isinstance(x, sp.Symbol) or x not in self._rhs:
+        if not isinstance(x, sp.Symbol) or x not in self.table.rhs:
             return x
-        entry = self._names.get(self._entries_by_obj.get(x, ""))
+        entry = self.table.entries.get(self.table.by_obj.get(x, ""))
         if entry is None or entry.kind != "quantity":
             return x
         value = self.resolve(x)

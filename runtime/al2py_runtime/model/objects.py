@@ -267,6 +267,7 @@ class Objects:
         elif kind is Form.ANGACC:
             st.angacc[(objs[0], objs[1])] = value
             st.angacc[(objs[1], objs[0])] = -value
+            st.angacc_given.setdefault(objs[0], []).append((objs[1], value))
         elif kind is Form.FORCE:
             st.forces[objs[0]] = value
         elif kind is Form.TORQUE:

@@ -171,12 +171,27 @@ class Kinematics:
 
     @command
     def ang_acc(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
-        """``ALF_B_A>``: given, or the derivative of ``W_B_A>`` in ``a``."""
+        """``ALF_B_A>``: given; else, where the script gave B's angular
+        acceleration in another frame C (``ALF_B_C> = ...``), composed as
+        Autolev does, ``ALF_C_A> + ALF_B_C> + W_C_A> x W_B_C>``; else the
+        derivative of ``W_B_A>`` in ``a``."""
+        return self._ang_acc(b, a, frozenset())
+
+    def _ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, seen: frozenset) -> Vector:
         if a is b:
             return Vector(0)
         st = self._mech
         if (b, a) in st.angacc:
             return st.angacc[(b, a)]
+        for c, given in reversed(st.angacc_given.get(b, [])):
+            if c is a or c in seen:
+                continue
+            try:
+                w_ca, w_bc = self.ang_vel(c, a), self.ang_vel(b, c)
+            except ValueError:
+                continue
+            inner = self._ang_acc(c, a, seen | {b})
+            return self._tidyv(inner + given + (w_ca ^ w_bc))
         return self._tidyv(self._dt(self.ang_vel(b, a), a))
 
     @command

@@ -40,6 +40,8 @@ class ModelState:
     vel: dict = field(default_factory=dict)  # (Point, frame) -> Vector
     acc: dict = field(default_factory=dict)
     angacc: dict = field(default_factory=dict)  # (B, A) -> Vector
+    #: ``ALF_B_A> = v`` as the script wrote it: B -> [(A, v)], in order
+    angacc_given: dict = field(default_factory=dict)
     forces: dict = field(default_factory=dict)  # Point -> Vector
     torques: dict = field(default_factory=dict)  # frame -> Vector
     dependent: list = field(default_factory=list)
