@@ -11,6 +11,7 @@ at 4.6 m/s, a self-stable speed, with a lean rate of 0.5 rad/s; 501 printed
 rows; ``abserr = relerr = 1e-8``).  Printed:
 
 * Autolev's program (``cc -O2``, as our right-hand side), best of 3;
+* the import (derivation) of the converted script;
 * our script's first ``run()`` in a fresh process on a cold cache (code
   generation and compilation included; the import is not counted);
 * ``run()`` again in the same process (warm), best of 3, and the ratio to
@@ -23,7 +24,8 @@ Our own ``tests/models/whipple_benchmark.al`` (with the same motion and a
 ``Code Dynamics()`` line appended) is timed the same way; Autolev wrote no
 program for it.  With ``--before DIR`` every al2py figure is also measured
 with the runtime of the checkout ``DIR`` (its ``src`` and ``runtime``), in
-the same run, and the ratios before/after are printed.
+the same run (the two take turns, A B B A, best of two each), and the
+ratios before/after are printed.
 """
 
 from __future__ import annotations
@@ -121,18 +123,30 @@ def _convert(checkout: Path, script: Path) -> Path:
     return out
 
 
-def measure(checkout: Path, module: Path, program: str, overrides: dict) -> dict:
-    """Cold (fresh cache), warm (same process) and cached (new process)."""
-    with tempfile.TemporaryDirectory(prefix="al2py-cache-") as cache:
-        cold = _child(checkout, module, program, overrides, Path(cache))
-        cached = _child(checkout, module, program, overrides, Path(cache))
-    return {
-        "import": cold["import"],
-        "cold": cold["first"],
-        "warm": min(cold["warm"], cached["warm"]),
-        "cached": cached["first"],
-        "tables": cold["tables"],
-    }
+def measure(checkouts: list[Path], modules: dict, program: str, overrides: dict):
+    """Per checkout: cold (fresh cache), warm (same process) and cached (new
+    process, library cached).  The checkouts take turns (A B B A), and each
+    figure is the better of its two turns, so a change of the machine's load
+    during the run does not favour one of them."""
+    out: dict[Path, dict] = {}
+    order = checkouts + checkouts[::-1]
+    for checkout in order:
+        m = modules[checkout]
+        with tempfile.TemporaryDirectory(prefix="al2py-cache-") as cache:
+            cold = _child(checkout, m, program, overrides, Path(cache))
+            cached = _child(checkout, m, program, overrides, Path(cache))
+        new = {
+            "import": min(cold["import"], cached["import"]),
+            "cold": cold["first"],
+            "warm": min(cold["warm"], cached["warm"]),
+            "cached": cached["first"],
+            "tables": cold["tables"],
+        }
+        old = out.get(checkout)
+        if old is not None:
+            new = {k: v if k == "tables" else min(v, old[k]) for k, v in new.items()}
+        out[checkout] = new
+    return out
 
 
 # ------------------------------------------------------------------ Autolev
@@ -214,9 +228,7 @@ def main(argv: list[str]) -> int:
             f"Moore's Whipple.al, 5 s at {SPEED} m/s, 501 rows:"
             f" Autolev's WhippleDynamics.c {t_autolev:.4f} s (best of 3)"
         )
-        results = {
-            c: measure(c, modules[c], Path(PROGRAM).name, overrides) for c in checkouts
-        }
+        results = measure(checkouts, modules, Path(PROGRAM).name, overrides)
         after = results[ROOT]
         before = results.get(checkouts[-1]) if args.before else None
         _row("al2py", after, before, t_autolev)
@@ -232,7 +244,7 @@ def main(argv: list[str]) -> int:
         text = OURS.read_text() + OUR_LINES.format(u6=-SPEED / 0.3)
         (ours_dir / OURS.name).write_text(text)
         own = {c: _convert(c, ours_dir / OURS.name) for c in checkouts}
-        res = {c: measure(c, own[c], "whipple_ours.c", {}) for c in checkouts}
+        res = measure(checkouts, own, "whipple_ours.c", {})
         print("Our whipple_benchmark.al, the same motion (no Autolev program):")
         _row(
             "al2py",
