@@ -91,35 +91,31 @@ print(json.dumps({"import": t_import, "first": times[0], "warm": min(times[1:]),
 """
 
 
-def _child(checkout: Path, module: Path, program: str, overrides: dict, cache: Path):
+def _python(checkout: Path, args: list[str], cwd: Path, cache: Path | None = None):
+    """``python ARGS`` with ``checkout``'s al2py and runtime."""
     env = dict(os.environ)
     env["PYTHONPATH"] = f"{checkout / 'src'}{os.pathsep}{checkout / 'runtime'}"
-    env["AL2PY_CACHE_DIR"] = str(cache)
+    if cache is not None:
+        env["AL2PY_CACHE_DIR"] = str(cache)
     proc = subprocess.run(
-        [sys.executable, "-c", CHILD, str(module), program, json.dumps(overrides)],
-        cwd=module.parent,
-        env=env,
-        capture_output=True,
-        text=True,
+        [sys.executable, *args], cwd=cwd, env=env, capture_output=True, text=True
     )
     if proc.returncode:
-        raise RuntimeError(f"run failed with {checkout}:\n{proc.stderr[-3000:]}")
-    return json.loads(proc.stdout.strip().splitlines()[-1])
+        raise RuntimeError(
+            f"failed with {checkout}:\n{proc.stdout}{proc.stderr[-3000:]}"
+        )
+    return proc.stdout
+
+
+def _child(checkout: Path, module: Path, program: str, overrides: dict, cache: Path):
+    args = ["-c", CHILD, str(module), program, json.dumps(overrides)]
+    out = _python(checkout, args, module.parent, cache)
+    return json.loads(out.strip().splitlines()[-1])
 
 
 def _convert(checkout: Path, script: Path) -> Path:
-    env = dict(os.environ)
-    env["PYTHONPATH"] = f"{checkout / 'src'}{os.pathsep}{checkout / 'runtime'}"
     out = script.with_name(f"{script.stem}_{abs(hash(str(checkout))) % 10**6}.py")
-    proc = subprocess.run(
-        [sys.executable, "-m", "al2py", script.name, "-o", out.name],
-        cwd=script.parent,
-        env=env,
-        capture_output=True,
-        text=True,
-    )
-    if proc.returncode:
-        raise RuntimeError(f"al2py failed:\n{proc.stdout}{proc.stderr}")
+    _python(checkout, ["-m", "al2py", script.name, "-o", out.name], script.parent)
     return out
 
 

@@ -155,14 +155,9 @@ class _Slots:
             found = [a for a in expr.atoms(kind) if a not in self.known]
             for obj in sorted(found, key=sp.default_sort_key):
                 if isinstance(obj, sp.Derivative):
-                    base, _k = _base(obj)
-                    state = base in self.known and base not in self._given
-                    if state or not isinstance(base, AppliedUndef):
-                        raise NumericsError(
-                            f"{self.job.where}: cannot evaluate {self.label(obj)}"
-                            f" in {what}: it has no right-hand side"
-                        )
-                self._param(obj)
+                    self._derivative_param(obj, what)
+                else:
+                    self._param(obj)
             expr = expr.xreplace(self.known)
         for sym in sorted(expr.free_symbols, key=sp.default_sort_key):
             if sym in self._dummies or sym is self.time:
@@ -209,14 +204,7 @@ class _Slots:
         for obj in sorted(
             {d for d in derivs if d not in self.known}, key=sp.default_sort_key
         ):
-            base, _k = _base(obj)
-            state = base in self.known and base not in self._given
-            if state or not isinstance(base, AppliedUndef):
-                raise NumericsError(
-                    f"{self.job.where}: cannot evaluate {self.label(obj)}"
-                    f" in {what}: it has no right-hand side"
-                )
-            self._param(obj)
+            self._derivative_param(obj, what)
         for obj in sorted(
             {f for f in funcs if f not in self.known}, key=sp.default_sort_key
         ):
@@ -234,6 +222,18 @@ class _Slots:
         for obj in (*zs, *derivs, *funcs):
             rule[obj] = self.known[obj]
         return body.xreplace(rule)
+
+    def _derivative_param(self, obj: Any, what: str) -> None:
+        """A derivative with no right-hand side: a parameter when it is the
+        rate of a given function of time, else an error."""
+        base, _k = _base(obj)
+        state = base in self.known and base not in self._given
+        if state or not isinstance(base, AppliedUndef):
+            raise NumericsError(
+                f"{self.job.where}: cannot evaluate {self.label(obj)}"
+                f" in {what}: it has no right-hand side"
+            )
+        self._param(obj)
 
     def _param(self, obj: Any) -> None:
         d = sp.Dummy(f"p{len(self.params)}")
