@@ -310,3 +310,42 @@ def test_rhs_outlives_its_bound_object(name):
     dy, _rows = _expected(spec, 0.5, y, p)
     assert rhs(0.5, np.array(y)) == pytest.approx(dy, rel=1e-10)
     assert len(junk) == 1000
+
+
+def _chain_spec(n: int):
+    """One acceleration and outputs over a chain of ``n`` intermediates
+    (each uses the previous one, a state and the acceleration's forcing)."""
+    t = sp.Dummy("t")
+    q, u, a, c = sp.symbols("q u a c")
+    zs = sp.symbols(f"z0:{n}")
+    inter = [(zs[0], sp.sin(q) * c + u)]
+    for k in range(1, n):
+        inter.append((zs[k], sp.cos(zs[k - 1]) * q - zs[k - 1] ** 2 / (2 + u**2)))
+    outputs = [[q, a * zs[-1]], [zs[k] + t for k in range(0, n, 3)]]
+    return backends.DynamicsSpec(
+        t, [q, u], [a], [c], [2 + sp.cos(q)], [-c * zs[2]], [u, a], outputs, inter
+    )
+
+
+@pytest.mark.skipif(not backends.available("c"), reason="no C compiler")
+def test_large_outputs_compile_in_parallel_parts(monkeypatch):
+    """Above SPLIT intermediates, al_out and its intermediates are compiled
+    in several translation units (functions of _CHUNK statements, the
+    intermediates in one array): the same numbers as lambdify."""
+    monkeypatch.setattr(backends, "SPLIT", 10)
+    monkeypatch.setattr(backends, "_CHUNK", 7)
+    spec = _chain_spec(40)
+    units = backends.c_model_units(spec)
+    assert len(units) >= 3  # the right-hand side, the parts, al_out
+    assert units[0][1] == ("-O2",) and units[-1][1] == backends.OUT_FLAGS
+    compiled = backends.compile_dynamics(spec, "c")
+    reference = backends.compile_dynamics(spec, "lambdify")
+    rng = random.Random(5)
+    for _ in range(4):
+        y = np.array([rng.uniform(-1, 1), rng.uniform(-1, 1)])
+        p = [rng.uniform(0.5, 2)]
+        tt = rng.uniform(0, 1)
+        ours, theirs = compiled.bind(p), reference.bind(p)
+        assert ours.rhs(tt, y) == pytest.approx(theirs.rhs(tt, y), rel=1e-12)
+        for a, b in zip(ours.outputs(tt, y), theirs.outputs(tt, y), strict=True):
+            assert a == pytest.approx(b, rel=1e-12, abs=1e-14)

@@ -158,9 +158,10 @@ class Intermediates:
         #: ZEE_NOT: quantities that no intermediate may contain
         self.exclude: frozenset = frozenset()
         self._rebased: dict[Any, Any] = {}
-        self._children: dict[int, Any] = {}
+        self._children: dict[Any, Any] = {}  # k, or a z not at its own variables
         self._numbers: dict[Any, Any] = {}
         self._keys: dict[Any, Any] = {}
+        self._name_keys: dict[Any, tuple[int, str]] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -557,18 +558,25 @@ class Intermediates:
                     stack.append((inner, False))
         return order
 
-    @staticmethod
-    def _by_name(zs: Iterable[Any], reverse: bool = False) -> list[Any]:
+    def _by_name(self, zs: Iterable[Any], reverse: bool = False) -> list[Any]:
         """Intermediates by number (then by their arguments' text)."""
-        return sorted(
-            zs, key=lambda z: (int(z.args[0]), str(z.args[1:])), reverse=reverse
-        )
+        return sorted(zs, key=self._name_key, reverse=reverse)
+
+    def _name_key(self, z: Intermediate) -> tuple[int, str]:
+        # Printing the arguments is most of the cost of ordering: once per z.
+        found = self._name_keys.get(z)
+        if found is None:
+            found = self._name_keys[z] = (int(z.args[0]), str(z.args[1:]))
+        return found
 
     def _uses(self, z: Intermediate) -> Any:
         """The intermediates in ``z``'s definition (kept for canonical ones)."""
         k = int(z.args[0])
         if tuple(z.args[1:]) != self._vars[k]:
-            return self.definition(z).atoms(self.Z)
+            found = self._children.get(z)
+            if found is None:
+                found = self._children[z] = self.definition(z).atoms(self.Z)
+            return found
         found = self._children.get(k)
         if found is None:
             found = self._children[k] = self._defs[k].atoms(self.Z)

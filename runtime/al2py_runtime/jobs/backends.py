@@ -507,17 +507,28 @@ def _build_llvm(spec: DynamicsSpec) -> Compiled:
 
 
 class CPrinter(C99CodePrinter):
-    """C99 with small integer powers as products and Autolev's functions."""
+    """C99 with small integer powers as products and Autolev's functions;
+    with ``z_array`` the intermediates ``zK`` are the elements ``z[K]``."""
 
-    def __init__(self) -> None:
+    def __init__(self, z_array: bool = False) -> None:
         super().__init__(
             {
                 "strict": True,
                 "user_functions": {"trunc": "trunc"},
                 # Strict C99 has no M_PI, M_SQRT2, ...: print numbers.
                 "math_macros": {sp.Symbol("_al2py_none_"): "_AL2PY_NONE_"},
+                # Terms in sympy's own argument order: sorting them for print
+                # is half the printing time of a large model.
+                "order": "none",
             }
         )
+        self._z_array = z_array
+
+    def _print_Symbol(self, expr: Any) -> str:
+        name = expr.name
+        if self._z_array and name[:1] == "z" and name[1:].isdigit():
+            return f"z[{name[1:]}]"  # an intermediate kept in the array z
+        return super()._print_Symbol(expr)
 
     def _print_Pi(self, expr: Any) -> str:
         return repr(math.pi)
@@ -621,8 +632,16 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     ``api`` prefixes both (``static`` for a standalone program)."""
     spec = _canonical(spec) if not _is_canonical(spec) else spec
     printer = CPrinter()
+    lines = _rhs_lines(spec, printer, api, "static ")
+    lines += _out_head(spec, api)
+    all_out = [e for row in spec.outputs for e in row]
+    lines += _intermediates(spec, all_out, printer, "    ")
+    lines += _out_tail(spec, printer)
+    return "\n".join(lines)
+
+
+def _header(spec: DynamicsSpec) -> list[str]:
     n, ny, nout = len(spec.accels), len(spec.states), sum(map(len, spec.outputs))
-    free, uses, _plan_ = _plan(spec)
     lines = [
         "#include <math.h>",
         "",
@@ -633,11 +652,26 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     ]
     if n:
         lines.append(SOLVE_C)
-    # M, f and the derivatives free of ud: one function, shared by both.
+    return lines
+
+
+_MF = (
+    "void al_mf(double t, const double *y, const double *p,"
+    " double *m, double *f, double *dy)"
+)
+
+
+def _rhs_lines(
+    spec: DynamicsSpec, printer: CPrinter, api: str, mf_api: str
+) -> list[str]:
+    """The header, ``al_mf`` (``M``, ``f`` and the state derivatives free of
+    ``ud``) and ``al_rhs``."""
+    n = len(spec.accels)
+    free, uses, _plan_ = _plan(spec)
+    lines = _header(spec)
     lines += [
         "/* M (row-major), f, and the state derivatives that do not need ud */",
-        "static void al_mf(double t, const double *y, const double *p,"
-        " double *m, double *f, double *dy)",
+        mf_api + _MF,
         "{",
         "    (void)t; (void)y; (void)p; (void)m; (void)f; (void)dy;",
     ]
@@ -647,13 +681,10 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     lines += _intermediates(spec, exprs, printer, "    ")
     lines += _block(exprs, targets, printer, "x", "    ")
     lines += ["}", ""]
-    m_decl = (
-        [f"    double m[{n * n}], ud[{n}];"] if n else ["    double *m = 0, *ud = 0;"]
-    )
     lines += [
         f"{api}int al_rhs(double t, const double *y, const double *p, double *dy)",
         "{",
-        *m_decl,
+        *_m_decl(n),
         "    al_mf(t, y, p, m, ud, dy);",
     ]
     if n:
@@ -661,13 +692,7 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     if uses:
         late = [spec.derivs[i] for i in uses]
         lines += ["    {", *_intermediates(spec, late, printer, "        ")]
-        lines += _block(
-            late,
-            [f"dy[{i}]" for i in uses],
-            printer,
-            "w",
-            "        ",
-        )
+        lines += _block(late, [f"dy[{i}]" for i in uses], printer, "w", "        ")
         lines.append("    }")
     lines += [
         "    for (int i = 0; i < AL_NY; i++)",
@@ -675,20 +700,98 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
         "    return 0;",
         "}",
         "",
+    ]
+    return lines
+
+
+def _m_decl(n: int) -> list[str]:
+    return (
+        [f"    double m[{n * n}], ud[{n}];"] if n else ["    double *m = 0, *ud = 0;"]
+    )
+
+
+def _out_head(spec: DynamicsSpec, api: str) -> list[str]:
+    """``al_out`` up to its outputs: ``M``, ``f`` and ``ud`` at the point."""
+    n, ny = len(spec.accels), len(spec.states)
+    lines = [
         f"{api}int al_out(double t, const double *y, const double *p, double *out)",
         "{",
-        *m_decl,
+        *_m_decl(n),
         f"    double dy[{max(ny, 1)}];",
         "    (void)t; (void)y; (void)p; (void)out; (void)ud;",
         "    al_mf(t, y, p, m, ud, dy);",
     ]
     if n:
         lines.append(f"    if (al_solve({n}, m, ud)) return 1;")
+    return lines
+
+
+def _out_tail(spec: DynamicsSpec, printer: CPrinter) -> list[str]:
     all_out = [e for row in spec.outputs for e in row]
-    lines += _intermediates(spec, all_out, printer, "    ")
-    lines += _block(all_out, [f"out[{k}]" for k in range(nout)], printer, "o", "    ")
-    lines += ["    return 0;", "}", ""]
-    return "\n".join(lines)
+    targets = [f"out[{k}]" for k in range(len(all_out))]
+    lines = _block(all_out, targets, printer, "o", "    ")
+    return [*lines, "    return 0;", "}", ""]
+
+
+#: ``al_out`` needing more intermediates than this is compiled apart from
+#: the right-hand side: in parts, in parallel, with ``OUT_FLAGS``.
+SPLIT = 400
+#: statements per C function in the parts (compile time grows faster than
+#: the size of a function)
+_CHUNK = 200
+#: the outputs are evaluated once per printed row, not per step: compiling
+#: thousands of their statements with -O2 took most of a large model's
+#: first run (the Whipple bicycle's Encode'd Jacobians: 10 s of 12)
+OUT_FLAGS = ("-O1",)
+
+
+def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
+    """``spec`` as C translation units with their optimisation flags: the
+    right-hand side (``-O2``), and when the outputs need more than
+    :data:`SPLIT` intermediates, ``al_out`` and its intermediates in parts
+    (kept in one array ``z``, functions of :data:`_CHUNK` statements)."""
+    spec = _canonical(spec) if not _is_canonical(spec) else spec
+    printer = CPrinter()
+    all_out = [e for row in spec.outputs for e in row]
+    zs = needed(spec.intermediates, all_out)
+    if len(zs) <= SPLIT:
+        return [(c_model_source(spec), ("-O2",))]
+    rhs = "\n".join(_rhs_lines(spec, printer, "", ""))
+    arrays = CPrinter(z_array=True)
+    args = "double t, const double *y, const double *p, const double *ud, double *z"
+    bodies = []
+    for k in range(0, len(zs), _CHUNK):
+        lines = [
+            f"void al_z{len(bodies)}({args})",
+            "{",
+            "    (void)t; (void)y; (void)p; (void)ud;",
+        ]
+        for sym, expr in zs[k : k + _CHUNK]:
+            lines.append(
+                f"    {c_expression(sym, arrays)} = {c_expression(expr, arrays)};"
+            )
+        bodies.append("\n".join([*lines, "}", ""]))
+    parts = max(1, min(os.cpu_count() or 1, 4, len(zs) // 1000))
+    per = -(-len(bodies) // parts)
+    units = [(rhs, ("-O2",))]
+    for k in range(0, len(bodies), per):
+        units.append(
+            ("#include <math.h>\n\n" + "\n".join(bodies[k : k + per]), OUT_FLAGS)
+        )
+    size = max(int(str(s)[1:]) for s, _e in zs) + 1
+    main = _header(spec)
+    main += ["#include <stdlib.h>", "", f"{_MF};"]
+    main += [f"void al_z{j}({args});" for j in range(len(bodies))]
+    main += _out_head(spec, "")
+    main += [
+        f"    double *z = malloc({size} * sizeof(double));",
+        "    if (!z) return 2;",
+        *(f"    al_z{j}(t, y, p, ud, z);" for j in range(len(bodies))),
+    ]
+    tail = _out_tail(spec, arrays)
+    main += [*tail[:-3], "    free(z);", *tail[-3:]]
+    units.append(("\n".join(main), OUT_FLAGS))
+    return units
 
 
 def _intermediates(
@@ -730,17 +833,26 @@ def cache_dir() -> Path:
 
 
 C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-shared")
+_UNIT_FLAGS = ("-std=c99", "-fPIC")
 
 
 def build_shared(source: str) -> tuple[Path, bool]:
     """Compile ``source`` into a shared library in :func:`cache_dir`, named
     by the hash of the source, compiler and flags.  Returns (path, cache hit)."""
+    return build_units([(source, ("-O2",))])
+
+
+def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]:
+    """Compile C translation units ``(source, flags)`` into one shared
+    library in :func:`cache_dir`, named by the hash of the sources, compiler
+    and flags; several units compile in parallel.  Returns (path, cache hit)."""
     cc = find_compiler()
     if cc is None:
         raise BackendError(_unavailable("c"))
-    key = hashlib.sha256(
-        "\0".join([source, cc, *C_FLAGS, sys.platform, platform.machine()]).encode()
-    ).hexdigest()[:24]
+    text = [cc, *C_FLAGS, sys.platform, platform.machine()]
+    for source, flags in units:
+        text += [source, *flags]
+    key = hashlib.sha256("\0".join(text).encode()).hexdigest()[:24]
     suffix = ".dll" if sys.platform == "win32" else ".so"
     folder = cache_dir()
     try:
@@ -753,20 +865,51 @@ def build_shared(source: str) -> tuple[Path, bool]:
     if lib.exists():
         return lib, True
     with tempfile.TemporaryDirectory(dir=folder) as tmp:
-        src = Path(tmp) / "model.c"
-        src.write_text(source, encoding="utf-8")
         out = Path(tmp) / f"model{suffix}"
-        cmd = [*cc.split(), *C_FLAGS, "-o", str(out), str(src), "-lm"]
-        try:
-            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
-        except (OSError, subprocess.TimeoutExpired) as exc:
-            raise BackendError(f"the C compiler failed: {exc}") from None
-        if proc.returncode != 0:
-            lines = proc.stderr.strip().splitlines() or ["(no message)"]
-            first = next((ln for ln in lines if "error" in ln), lines[0])
-            raise BackendError(f"the C compiler failed: {first}")
+        if len(units) == 1:
+            src = Path(tmp) / "model.c"
+            src.write_text(units[0][0], encoding="utf-8")
+            flags = [*units[0][1], *C_FLAGS[1:]]
+            _run_compiler([[*cc.split(), *flags, "-o", str(out), str(src), "-lm"]])
+        else:
+            objs, cmds = [], []
+            for k, (source, flags) in enumerate(units):
+                src = Path(tmp) / f"model{k}.c"
+                src.write_text(source, encoding="utf-8")
+                objs.append(str(src.with_suffix(".o")))
+                cmds.append(
+                    [*cc.split(), *flags, *_UNIT_FLAGS, "-c", "-o", objs[-1], str(src)]
+                )
+            _run_compiler(cmds)
+            _run_compiler([[*cc.split(), "-shared", "-o", str(out), *objs, "-lm"]])
         os.replace(out, lib)  # atomic: concurrent builds of one model are safe
     return lib, False
+
+
+def _run_compiler(cmds: list[list[str]]) -> None:
+    """Run the compiler commands side by side; the first error is raised."""
+    procs = []
+    try:
+        for cmd in cmds:
+            procs.append(
+                subprocess.Popen(
+                    cmd,
+                    stdout=subprocess.DEVNULL,
+                    stderr=subprocess.PIPE,
+                    text=True,
+                )
+            )
+        errors = [proc.communicate(timeout=600)[1] for proc in procs]
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        for proc in procs:
+            proc.kill()
+            proc.wait()
+        raise BackendError(f"the C compiler failed: {exc}") from None
+    for proc, err in zip(procs, errors, strict=True):
+        if proc.returncode != 0:
+            lines = err.strip().splitlines() or ["(no message)"]
+            first = next((ln for ln in lines if "error" in ln), lines[0])
+            raise BackendError(f"the C compiler failed: {first}")
 
 
 class _CBound(Bound):
@@ -821,8 +964,7 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
     import time
 
     start = time.perf_counter()
-    source = c_model_source(spec, api="")
-    path, hit = build_shared(source)
+    path, hit = build_units(c_model_units(spec))
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:
