@@ -19,6 +19,7 @@ from typing import Any
 from .jobs import budget
 from .jobs.records import INTEGRATION_DEFAULTS, NumericsError, job_where
 from .jobs.run import check_overrides, run_job
+from .progress import is_terminal
 from .safety import AutolevRuntimeError, describe
 
 __all__ = ["main", "build_parser", "help_text"]
@@ -268,7 +269,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         budget.LIMITS["seconds"] = args.max_seconds
     if args.max_evals is not None:
         budget.LIMITS["evaluations"] = args.max_evals
-    budget.PROGRESS = _is_terminal(sys.stdout)
+    budget.PROGRESS = is_terminal(sys.stdout)
     for job in jobs:
         try:
             result = run_job(
@@ -314,10 +315,3 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
             budget.clear_progress()
             return _error(ws, f"{job.where} failed: {describe(exc)}", job.line)
     return 0
-
-
-def _is_terminal(stream: Any) -> bool:
-    try:
-        return bool(stream.isatty())
-    except (AttributeError, ValueError):
-        return False

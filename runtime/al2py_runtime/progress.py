@@ -13,23 +13,25 @@ nothing is written.
 
 from __future__ import annotations
 
+import linecache
 import sys
 import threading
 import time
 from types import FrameType
 from typing import Any, TextIO
 
-__all__ = ["AFTER", "ImportWatch"]
+from .safety import echo_above
+
+__all__ = ["AFTER", "ImportWatch", "is_terminal"]
 
 #: seconds of deriving before the progress line appears
 AFTER = 2.0
 #: seconds between updates of the line
 EVERY = 0.5
 
-_ECHO = "# al> "
 
-
-def _is_terminal(stream: Any) -> bool:
+def is_terminal(stream: Any) -> bool:
+    """True if ``stream`` is a terminal (progress lines go only there)."""
     try:
         return bool(stream.isatty())
     except (AttributeError, ValueError):
@@ -52,7 +54,7 @@ class ImportWatch:
         self._thread: threading.Thread | None = None
 
     def start(self) -> None:
-        if self._file is None or not _is_terminal(self.stream):
+        if self._file is None or not is_terminal(self.stream):
             return
         self._thread = threading.Thread(target=self._watch, daemon=True)
         self._thread.start()
@@ -85,14 +87,8 @@ class ImportWatch:
             frame = frame.f_back
         if frame is None:
             return None
-        import linecache
-
         lines = linecache.getlines(self._file, frame.f_globals)
-        for i in range(min(frame.f_lineno, len(lines)) - 1, -1, -1):
-            text = lines[i].strip()
-            if text.startswith(_ECHO):
-                return text[len(_ECHO) :]
-        return ""
+        return echo_above(lines, frame.f_lineno)[1]
 
     def _show(self, text: str, t0: float) -> None:
         text = f"{text[:60]} ({time.perf_counter() - t0:.0f} s)"

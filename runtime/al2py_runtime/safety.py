@@ -134,18 +134,29 @@ def _al_source(lines: list[str]) -> list[str] | None:
     return None
 
 
-def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
-    """``(line, source text)`` of the ``.al`` statement that Python line
-    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown)."""
-    lines = linecache.getlines(module_file, module_globals)
-    if not lines or pyline < 1:
-        return None, ""
+def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
+    """``(index, text)`` of the ``# al>`` echo at or above Python line
+    ``pyline`` of a generated module's ``lines``: the Autolev statement that
+    line belongs to (``(None, "")`` if there is none).
+
+    >>> echo_above(["x = 1", "# al> Q' = U", "al.kd(...)"], 3)
+    (1, "Q' = U")
+    """
     start = min(pyline, len(lines)) - 1
     while start >= 0 and not lines[start].lstrip().startswith(_ECHO):
         start -= 1
     if start < 0:
         return None, ""
-    echoed = lines[start].lstrip()[len(_ECHO) :].rstrip()
+    return start, lines[start].lstrip()[len(_ECHO) :].rstrip()
+
+
+def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
+    """``(line, source text)`` of the ``.al`` statement that Python line
+    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown)."""
+    lines = linecache.getlines(module_file, module_globals)
+    start, echoed = echo_above(lines, pyline)
+    if start is None:
+        return None, ""
     source = _al_source(lines) or []
     end = start + 1
     while end < len(lines) and not lines[end].lstrip().startswith(_ECHO):
