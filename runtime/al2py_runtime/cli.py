@@ -17,7 +17,7 @@ from pathlib import Path, PurePath
 from typing import Any
 
 from .jobs import budget
-from .jobs.records import INTEGRATION_DEFAULTS, NumericsError, job_where
+from .jobs.records import INTEGRATION_DEFAULTS, NumericsError, job_stem, job_where
 from .jobs.run import check_overrides, run_job
 from .progress import is_terminal
 from .safety import AutolevRuntimeError, describe
@@ -45,10 +45,7 @@ def help_text(
     ...
     """
     described = [
-        (
-            PurePath(file).stem if file else PurePath(filename).stem or "autolev",
-            job_where(kind, file, line),
-        )
+        (job_stem(file, filename), job_where(kind, file, line))
         for kind, file, line in jobs
     ]
     return build_parser(filename, inputs, described).format_help()

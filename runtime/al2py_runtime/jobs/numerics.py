@@ -27,7 +27,6 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from pathlib import PurePath
 from typing import Any
 
 import sympy as sp
@@ -41,6 +40,7 @@ from .records import (
     NumericsError,
     OutputItem,
     OutputSpec,
+    job_stem,
     normalize_name,
 )
 from .run import ode_function, run_job
@@ -230,12 +230,11 @@ class Numerics:
             value = self._ws.table.stored.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
-        stem = PurePath(file).stem if file else PurePath(self._ws.filename).stem
         encoded, shapes = self._encoded_spec(line)
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
-            stem=stem or "autolev",
+            stem=job_stem(file, self._ws.filename),
             filename=file,
             line=line,
             source=self._ws.filename,

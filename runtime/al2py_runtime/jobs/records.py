@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import Any
 
 import sympy as sp
@@ -120,6 +121,16 @@ class Job:
     @property
     def where(self) -> str:
         return job_where(self.kind, self.filename, self.line)
+
+
+def job_stem(file: str | None, script: str) -> str:
+    """The stem naming a job's output files: its CODE file's, else the
+    script's (``job_stem("tutor6.c", "x.al")`` is ``"tutor6"``).
+
+    >>> job_stem(None, "dir/tutor6.al")
+    'tutor6'
+    """
+    return (PurePath(file).stem if file else PurePath(script).stem) or "autolev"
 
 
 def job_where(kind: str, filename: str | None, line: int | None) -> str:
