@@ -38,11 +38,11 @@ def _names(names: list[str], limit: int = 6) -> str:
     return shown + (f", ... ({len(names)} columns)" if len(names) > limit else "")
 
 
-class TableViews:
-    """Mapping habits of a :class:`~al2py_runtime.jobs.run.Table`."""
+class _Views:
+    """``values``/``items``/iteration from ``keys`` and ``[key]``."""
 
-    def keys(self) -> list[str]:
-        return list(self.names)  # type: ignore[attr-defined]
+    def keys(self) -> list[str]:  # pragma: no cover - defined by subclasses
+        raise NotImplementedError
 
     def values(self) -> list[Any]:
         return [self[k] for k in self.keys()]  # type: ignore[index]
@@ -52,6 +52,13 @@ class TableViews:
 
     def __iter__(self) -> Iterator[str]:
         return iter(self.keys())
+
+
+class TableViews(_Views):
+    """Mapping habits of a :class:`~al2py_runtime.jobs.run.Table`."""
+
+    def keys(self) -> list[str]:
+        return list(self.names)  # type: ignore[attr-defined]
 
     def to_dict(self) -> dict[str, Any]:
         """``{column name: numpy array}``: ``pandas.DataFrame(t.to_dict())``."""
@@ -68,7 +75,7 @@ class TableViews:
         )
 
 
-class ResultViews:
+class ResultViews(_Views):
     """Mapping habits of a :class:`~al2py_runtime.jobs.run.Result`: keys are every
     output column (in table order), then solved and state quantities."""
 
@@ -85,15 +92,6 @@ class ResultViews:
                     seen.add(key)
                     out.append(name)
         return out
-
-    def values(self) -> list[Any]:
-        return [self[k] for k in self.keys()]  # type: ignore[index]
-
-    def items(self) -> list[tuple[str, Any]]:
-        return [(k, self[k]) for k in self.keys()]  # type: ignore[index]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self.keys())
 
     def __len__(self) -> int:
         return len(self.keys())
