@@ -24,14 +24,8 @@ import autolev_programs as judge  # noqa: E402
 # A rotor driven by a Specified torque that has an equation: Autolev keeps
 # the name TQ in the solved U' (its programs compute TQ first), so
 # D(U', TQ) = 1/K, as PendulumDynamics.c's B matrix shows.
-SPECIFIED = """\
-AutoZ {autoz}
-Newtonian N
-Bodies A
-Constants M, K, C
-Variables Q'
-MotionVariables' U'
-Specified TQ, DR
+#: a rotor A about N3> (both scripts below)
+ROTOR = """\
 Mass A = M
 Inertia A, 0, 0, K
 Simprot(N, A, 3, Q)
@@ -40,7 +34,17 @@ Angvel(N, A)
 P_NO_AO> = 0>
 V_AO_N> = 0>
 A_AO_N> = 0>
-TQ = 10*SIN(T) - C*Q
+"""
+
+SPECIFIED = """\
+AutoZ {autoz}
+Newtonian N
+Bodies A
+Constants M, K, C
+Variables Q'
+MotionVariables' U'
+Specified TQ, DR
+{rotor}TQ = 10*SIN(T) - C*Q
 DR = 2*U'
 Torque(N/A, (TQ - DR)*N3>)
 Zero = Fr() + FrStar()
@@ -64,7 +68,9 @@ def _module(tmp_path, text, name):
 
 @pytest.mark.parametrize("autoz", ["OFF", "ON"])
 def test_solve_keeps_a_specified_name(tmp_path, autoz):
-    m = _module(tmp_path, SPECIFIED.format(autoz=autoz), f"spec_{autoz.lower()}")
+    m = _module(
+        tmp_path, SPECIFIED.format(autoz=autoz, rotor=ROTOR), f"spec_{autoz.lower()}"
+    )
     # D(U', TQ): the name is kept (DR, which involves U', is substituted:
     # U' = TQ/(K + 2)), while D(U', Q) still sees through TQ's equation.
     assert m.evaluate("B", K=3.0) == pytest.approx(0.2, rel=1e-14)
@@ -252,15 +258,7 @@ MotionVariables' U'
 Specified TQ
 T4 = TQ
 T5 = 2*TQ
-Mass A = M
-Inertia A, 0, 0, K
-Simprot(N, A, 3, Q)
-Q' = U
-Angvel(N, A)
-P_NO_AO> = 0>
-V_AO_N> = 0>
-A_AO_N> = 0>
-Torque(N/A, T4*N3>)
+{rotor}Torque(N/A, T4*N3>)
 Zero = Fr() + FrStar()
 Solve(Zero, U')
 B = D(U', T4)
@@ -273,7 +271,9 @@ J = D([U'; Q'], V)
 
 @pytest.mark.parametrize("autoz", ["OFF", "ON"])
 def test_d_by_a_name_for_a_specified(tmp_path, autoz):
-    m = _module(tmp_path, ALIAS.format(autoz=autoz), f"alias_{autoz.lower()}")
+    m = _module(
+        tmp_path, ALIAS.format(autoz=autoz, rotor=ROTOR), f"alias_{autoz.lower()}"
+    )
     K = m.AUTOLEV["K"]
     assert m.AUTOLEV["B"] == 1 / K and m.AUTOLEV["B2"] == 1 / K
     assert m.AUTOLEV["B5"] == 1
