@@ -44,25 +44,27 @@ def _template() -> jinja2.Template:
 _CHUNK = 70  # characters of source per string literal in AL_SOURCE
 
 
+def _literals(text: str) -> str:
+    """``text`` as adjacent string literals of at most ``_CHUNK`` characters
+    each, one per line, so that every line fits in 88 columns."""
+    return "\n".join(repr(text[i : i + _CHUNK]) for i in range(0, len(text), _CHUNK))
+
+
 def _source_literal(lines: tuple[str, ...]) -> str:
     """``AL_SOURCE`` as a tuple literal whose lines all fit in 88 columns."""
     items = []
     for line in lines:
         if len(repr(line)) <= _CHUNK + 10:
             items.append(repr(line))
-            continue
-        chunks = [line[i : i + _CHUNK] for i in range(0, len(line), _CHUNK)]
-        items.append("(\n" + "\n".join(repr(c) for c in chunks) + "\n)")
+        else:
+            items.append("(\n" + _literals(line) + "\n)")
     return "(\n" + "".join(item + ",\n" for item in items) + ")"
 
 
 def _help_literal(text: str) -> str:
     """The ``--help`` text as adjacent string literals, a line (or a piece of
     a long line) each, all within 88 columns."""
-    pieces = []
-    for line in text.splitlines(keepends=True):
-        pieces += [line[i : i + _CHUNK] for i in range(0, len(line), _CHUNK)]
-    return "\n".join(repr(p) for p in pieces)
+    return "\n".join(_literals(line) for line in text.splitlines(keepends=True))
 
 
 def module_name(filename: str) -> str:
