@@ -56,10 +56,24 @@ def disc(tmp_path_factory):
     return _module(tmp, False, "disc_off"), _module(tmp, True, "disc_on"), tmp
 
 
-def test_autoz_on_uses_intermediates(disc):
-    off, on, _tmp = disc
+def test_both_settings_derive_with_intermediates(disc, tmp_path):
+    """Issue 21: ``AutoZ`` changes what is shown, not how equations are
+    formed.  Both derive over intermediates; with it OFF, ``AUTOLEV[...]``
+    and the transcript write them out (no ``Z`` name is ever printed)."""
+    off, on, tmp = disc
     assert has_intermediates(on.al.value("ZERO"))
-    assert not has_intermediates(off.al.value("ZERO"))
+    assert has_intermediates(off.al.value("ZERO"))
+    assert not has_intermediates(off.AUTOLEV["ZERO"])
+    done = subprocess.run(
+        [sys.executable, "disc_off.py", "--outdir", str(tmp_path)],
+        cwd=tmp,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr
+    shown = [line for line in done.stdout.splitlines() if line.startswith("->")]
+    assert shown and not any(re.search(r"\bZ\d+\b", line) for line in shown)
 
 
 @pytest.mark.parametrize("name", ["U1", "U2", "U1'", "U2'", "ZERO"])

@@ -564,6 +564,11 @@ class Workspace(Mapping):
         return self.book
 
     @property
+    def derive_book(self) -> Any:
+        """The book the mechanics derive with, whatever ``AutoZ`` says."""
+        return self.book
+
+    @property
     def book(self) -> Any:
         """The book of ``Z`` intermediates, made on first use whatever
         ``AutoZ`` says: with ``AutoZ OFF`` the large linear solves
@@ -773,6 +778,9 @@ class Workspace(Mapping):
         y = self.resolve(self.val(y), keep=subs)
         y = doit_derivatives(_xreplace(y, subs))
         if self.settings.degrees:
+            # numbers reach trig arguments inside intermediates' definitions
+            book = self.book_if_made()
+            y = y if book is None else book.expand(y)
             y = (
                 y.applyfunc(degrees_pass)
                 if isinstance(y, sp.MatrixBase)

@@ -106,7 +106,7 @@ class KaneEquations:
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
 
-        book = self.ws.intermediates
+        book = self.ws.derive_book
 
         def add(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
             if book is not None:

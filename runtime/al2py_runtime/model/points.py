@@ -100,7 +100,7 @@ class Kinematics:
         else:
             out = sp.diff(v, t)
         out = self.actual_value(out, keep)
-        book = self.ws.intermediates
+        book = self.ws.derive_book
         if book is not None:
             # AutoZ: name the coefficients of the speeds and their derivatives
             # (and the rest), so later derivatives stay short.
@@ -214,7 +214,7 @@ class Kinematics:
         each entry named (the product along the tree of short matrices), in
         sympy's own cache, so that dot products, ``express`` and time
         derivatives work with short expressions."""
-        book = self.ws.intermediates
+        book = self.ws.derive_book
         if book is None or len(b._dcm_dict) != 1:
             return
         (a,) = b._dcm_dict
