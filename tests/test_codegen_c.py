@@ -113,7 +113,7 @@ def test_tutor6_program_with_tight_tolerances_and_overrides(tutor6_program, tuto
 def test_tutor6_program_rejects_unknown_names(tutor6_program):
     done = _run_c(tutor6_program, tutor6_program.parent, "NOPE=1")
     assert done.returncode == 2
-    assert "NOPE is not an input; inputs: LA LB C D G" in done.stderr
+    assert "NOPE is not an input; inputs: C D G K LA LB" in done.stderr
     done = _run_c(tutor6_program, tutor6_program.parent, "QA=abc")
     assert done.returncode == 2 and "'abc' is not a number" in done.stderr
     done = _run_c(tutor6_program, tutor6_program.parent, "--help")

@@ -144,7 +144,21 @@ def test_in_file_layout(tmp_path, capsys):
         else:
             break
     assert [len(g) for g in groups] == [9, 5, 6]
-    assert groups[0][0] == ("Constant", "LA", 1.0)
+    # Autolev's order: each group sorted without case (WhippleDynamics.c
+    # reads c, g, IBxx, IBxz, ..., lam, mB, ...)
+    assert [g[1] for g in groups[0]] == [
+        "C",
+        "D",
+        "G",
+        "K",
+        "LA",
+        "LB",
+        "LO",
+        "MP",
+        "MQ",
+    ]
+    assert groups[0][0] == ("Constant", "C", 300.0)
+    assert [g[1] for g in groups[1]][1:] == ["QA", "QB", "U1", "U2"]
     assert ("Initial Value", "QA", 20.0) in groups[1]
     assert ("Initial Value", "QB", 60.0) in groups[1]  # as the Input says
     assert [g[1] for g in groups[2]] == [

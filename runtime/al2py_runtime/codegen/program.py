@@ -345,16 +345,32 @@ def describe(
 
     rename: dict[Any, Any] = {spec.time: sp.Symbol("T", real=True)}
     taken.add("t")
+    # The .in order of Autolev's programs: names sorted without case, within
+    # each group (docs/semantics.md); a Specified quantity with neither an
+    # equation nor an Input is 0 in the program, not read.
     constants = []
-    for obj, d in zip(c.params, spec.params, strict=True):
-        e = entry("Constant", label_of(obj, job.names), vals.param(obj))
+    unspecified: list[sp.Symbol] = []
+    for obj, d in sorted(
+        zip(c.params, spec.params, strict=True),
+        key=lambda od: in_order(label_of(od[0], job.names)),
+    ):
+        name = label_of(obj, job.names)
+        if job.entries.get(name, ("", None))[0] == "specified" and (
+            job.inputs.get(normalize_name(name)) is None
+        ):
+            s = sp.Symbol(identifier(name, taken), real=True)
+            unspecified.append(s)
+            rename[d] = s
+            continue
+        e = entry("Constant", name, vals.param(obj))
         constants.append(e)
         rename[d] = sp.Symbol(e.ident, real=True)
     initials = []
-    for name, value, d in zip(c.state_names, y0, spec.states, strict=True):
-        e = entry("Initial Value", name, value)
+    states = sorted(range(len(spec.states)), key=lambda i: in_order(c.state_names[i]))
+    for i in states:
+        e = entry("Initial Value", c.state_names[i], y0[i])
         initials.append(e)
-        rename[d] = sp.Symbol(e.ident, real=True)
+        rename[spec.states[i]] = sp.Symbol(e.ident, real=True)
     ip = integration_parameters(vals)
     integration = []
     for group, key in INTEGRATION_LINES:
@@ -378,7 +394,7 @@ def describe(
 
     n = len(spec.accels)
     accel_syms = {rename[d] for d in spec.accels}
-    derivs = [sub(e) for e in spec.derivs]
+    derivs = [sub(spec.derivs[i]) for i in states]
     late_ids = {
         i
         for i, e in enumerate(derivs)
@@ -393,6 +409,7 @@ def describe(
     first += [derivs[i] for i in free]
     first_targets += [("dy", i) for i in free]
     eqns, defined = _block(first, first_targets, inter, x_names, set())
+    eqns = _zeros(unspecified, eqns) + eqns
     solve_at = len(eqns)
     late = [derivs[i] for i in sorted(late_ids)]
     unpack = [Assign(("ud", k, name), 0) for k, name in enumerate(accel_names)]
@@ -412,6 +429,7 @@ def describe(
         flat, [("out", k) for k in range(len(flat))], inter, x_names, set()
     )
     outputs += more
+    outputs = _zeros(unspecified, outputs) + outputs
     factors = [x for row in output_factors(job, vals) for x in row]
     tables = []
     pos = 0
@@ -448,6 +466,19 @@ def describe(
         tables,
         job.digits,
     )
+
+
+def in_order(name: str) -> tuple[int, str]:
+    """Autolev's order of a ``.in`` group: without case (``c, g, IBxx, lam``;
+    ``G1, G10, G2``), derivatives after the names (``q1 .. q9, q1' .. q9'``)."""
+    return name.count("'"), name.lower()
+
+
+def _zeros(names: list[sp.Symbol], block: list[Assign]) -> list[Assign]:
+    """``NAME = 0`` for the Specified quantities without a value that
+    ``block`` uses (Autolev's "Quantities to be specified")."""
+    used = _free([sp.sympify(a.expr) for a in block], [])
+    return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
 
 
 def iter_names(prefix: str, taken: set[str]) -> Any:
