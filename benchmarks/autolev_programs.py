@@ -1076,7 +1076,7 @@ def _octave(cwd: Path, command: str) -> str:
 
 
 def _check_matlab(
-    report: Report, module, job, program: Path, ours: OurProgram | None = None
+    report: Report, module, job, program: Path, own: OurProgram | None = None
 ) -> None:
     """Run the MATLAB program in GNU Octave on the script's Inputs (values
     edited into ``ReadUserInput``) and on a perturbed state; compare its
@@ -1120,11 +1120,11 @@ def _check_matlab(
         out = _octave(cwd, f"{glob}{program.stem}; {printing}")
         if mprog.outfiles:
             _compare_tables(report, label, tables, cwd, mprog.outfiles)
-            if ours is not None:
+            if own is not None:
                 by_name = {_al_name(k, variables): v for k, v in values.items()}
-                ours.write_in(by_name)
-                ours.run()
-                _compare_files(report, f"{label}: {ours.label}", cwd, ours.folder)
+                own.write_in(by_name)
+                own.run()
+                _compare_files(report, f"{label}: {own.label}", cwd, own.folder)
         if encoded:
             _compare_encoded(report, label, job, _OctavePrinted(out), result, 0)
         if dynamic:
