@@ -54,10 +54,14 @@ def program_source(program: Program, target: str) -> str:
         from .c import c_source
 
         return c_source(program, target)
-    if suffix == ".m":
+    if suffix == ".m" and program.kind not in ("ALGEBRAIC", "NONLINEAR"):
         from .octave import octave_source
 
         return octave_source(program, target)
+    if program.kind in ("ALGEBRAIC", "NONLINEAR"):
+        raise NumericsError(
+            f"code for CODE {program.kind.title()} in {suffix} is not written yet"
+        )
     from .fortran import fortran_source
 
     return fortran_source(program, target)
