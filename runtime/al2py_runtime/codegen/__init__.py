@@ -58,10 +58,6 @@ def program_source(program: Program, target: str) -> str:
         from .octave import octave_source
 
         return octave_source(program, target)
-    if program.kind in ("ALGEBRAIC", "NONLINEAR"):
-        raise NumericsError(
-            f"code for CODE {program.kind.title()} in {suffix} is not written yet"
-        )
     from .fortran import fortran_source
 
     return fortran_source(program, target)
