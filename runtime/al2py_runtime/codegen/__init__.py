@@ -54,7 +54,7 @@ def program_source(program: Program, target: str) -> str:
         from .c import c_source
 
         return c_source(program, target)
-    if suffix == ".m" and program.kind not in ("ALGEBRAIC", "NONLINEAR"):
+    if suffix == ".m":
         from .octave import octave_source
 
         return octave_source(program, target)
