@@ -397,9 +397,11 @@ def _row(program: Program) -> str:
     )
 
 
-def _where(program: Program) -> list[str]:
-    """``write(*, '(A)', advance='no') 'error: CODE ... (line N): '``"""
-    return _string_write("*", f"error: {program.job.where}: ", advance=True)
+def _error(program: Program, condition: str, *writes: str) -> list[str]:
+    """A branch of :func:`_close`: ``error: CODE ... (line N): `` and then
+    ``writes`` when ``condition`` holds."""
+    where = _string_write("*", f"error: {program.job.where}: ", advance=True)
+    return [f"      else if ({condition}) then", *where, *writes]
 
 
 def _algebraic_main(program: Program) -> list[str]:
@@ -451,17 +453,14 @@ def _algebraic_main(program: Program) -> list[str]:
             "      end do",
         ]
         at = [f"        write(*, '(A, ES14.6)') ' at {name} =', x"]
-    errors = [
-        "      else if (ierr .eq. 1) then",
-        *_where(program),
+    at = at or ["        write(*, '(A)') ''"]
+    singular = [
         "        write(*, '(A)', advance='no') 'the equations are singular'",
         "     &    // ' (no unique solution)'",
-        *(at or ["        write(*, '(A)') ''"]),
-        "      else if (ierr .eq. 2) then",
-        *_where(program),
-        "        write(*, '(A)', advance='no') 'a value is not finite'",
-        *(at or ["        write(*, '(A)') ''"]),
     ]
+    finite = ["        write(*, '(A)', advance='no') 'a value is not finite'"]
+    errors = _error(program, "ierr .eq. 1", *singular, *at)
+    errors += _error(program, "ierr .eq. 2", *finite, *at)
     return lines + _close(program, errors)
 
 
@@ -492,22 +491,21 @@ def _nonlinear_main(program: Program) -> list[str]:
         "      end if",
     ]
     stem = program.stem
-    errors = [
-        "      else if (ierr .eq. 1) then",
-        *_where(program),
+    singular = [
         "        write(*, '(A, I0, A)') 'the Jacobian of the equations is'",
         "     &    // ' singular after ', iters, ' Newton iterations; try'",
         f"     &    // ' other guesses in {stem}.in'",
-        "      else if (ierr .eq. 4) then",
-        *_where(program),
+    ]
+    stalled = [
         "        write(*, '(A, A, A, ES10.3, A, I0, A)') 'no solution found'",
         f"     &    // ' from the guesses in {stem}.in: |', trim(label(worst)),",
         "     &    '| = ', res, ' after ', iters,",
         "     &    ' Newton iterations; try other guesses'",
-        "      else if (ierr .ne. 0) then",
-        *_where(program),
-        "        write(*, '(A)') 'an output is not finite at the solution'",
     ]
+    output = ["        write(*, '(A)') 'an output is not finite at the solution'"]
+    errors = _error(program, "ierr .eq. 1", *singular)
+    errors += _error(program, "ierr .eq. 4", *stalled)
+    errors += _error(program, "ierr .ne. 0", *output)
     return lines + _close(program, errors)
 
 

@@ -481,28 +481,33 @@ def describe(
         eqns += more
     flat = [sub(e) for row in spec.outputs for e in row]
     outputs = output_block(flat, unpack, inter, x_names)
-    return Program(
+    return new_program(
         job,
-        job.stem,
-        source or job.source,
-        __version__,
-        _nosubs(job, nosubs),
-        constants,
-        initials,
-        integration,
-        n,
-        eqns,
-        solve_at,
-        outputs,
+        source,
+        nosubs,
+        (constants, initials, integration),
+        (n, eqns, solve_at, outputs),
         output_tables(job, vals),
-        job.digits,
     )
 
 
-def _nosubs(job: Job, nosubs: bool | None) -> bool:
+def new_program(
+    job: Job,
+    source: str | None,
+    nosubs: bool | None,
+    entries: tuple[list[Entry], list[Entry], list[Entry]],
+    equations: tuple[int, list[Assign], int, list[Assign]],
+    tables: list[OutputTable],
+    **more: Any,
+) -> Program:
+    """A :class:`Program` of ``job`` (NOSUBS as its CODE statement says
+    unless ``nosubs`` is given): ``entries`` are (constants, initials,
+    integration), ``equations`` (nu, eqns, solve_at, outputs)."""
     if nosubs is None:
-        return "NOSUBS" in getattr(job, "options", ())
-    return nosubs
+        nosubs = "NOSUBS" in getattr(job, "options", ())
+    source = source or job.source
+    head = (job, job.stem, source, __version__, nosubs)
+    return Program(*head, *entries, *equations, tables, job.digits, **more)
 
 
 def named_intermediates(

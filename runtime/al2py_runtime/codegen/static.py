@@ -34,17 +34,16 @@ from ..jobs.run import (
     static_equations,
 )
 from ..jobs.units import UnitError
-from ..version import __version__
 from .program import (
     Assign,
     Entry,
     Program,
     _block,
     _Entries,
-    _nosubs,
     identifier,
     iter_names,
     named_intermediates,
+    new_program,
     output_block,
     output_tables,
 )
@@ -131,21 +130,13 @@ def describe_static(
         tables = output_tables(job, vals, columns)
     except UnitError as exc:
         raise NumericsError(f"{job.where}: {exc}") from None
-    return Program(
+    return new_program(
         job,
-        job.stem,
-        source or job.source,
-        __version__,
-        _nosubs(job, nosubs),
-        constants,
-        initials,
-        integration,
-        n,
-        eqns,
-        len(eqns),
-        outputs,
+        source,
+        nosubs,
+        (constants, initials, integration),
+        (n, eqns, len(eqns), outputs),
         tables,
-        job.digits,
         kind=job.kind,
         ranges=ranges,
         t0=integration_parameters(vals)["TINITIAL"],
