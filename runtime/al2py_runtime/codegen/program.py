@@ -1,4 +1,5 @@
-"""One description of the program a ``CODE Dynamics``/``ODE`` job writes.
+"""One description of the program a ``CODE`` job writes (Dynamics and ODE
+here, Algebraic and Nonlinear in :mod:`.static`).
 
 :func:`describe` turns a job into a :class:`Program`: the ``.in`` entries
 (constants, initial values, integration parameters, in the Input's units
