@@ -138,7 +138,7 @@ def build_parser(
         "--emit-code",
         metavar="DIR",
         help="write the program (C, MATLAB or Fortran, as CODE names it) and"
-        " STEM.in of each CODE Dynamics/ODE job into DIR (as 'al2py code'"
+        " STEM.in of each CODE job into DIR (as 'al2py code'"
         " does) instead of running",
     )
     parser.add_argument(
