@@ -16,6 +16,14 @@ What is checked, and how far a static check can see:
   *other libraries* the runtime must use are listed in :data:`FOREIGN` with
   their owner; the test also proves that no runtime module defines a name
   of that list, so none of our own objects can hide behind it.
+* **No private name shared across modules through ``self``**: ``self._x``
+  only in the module that defines ``_x`` (a ``def``, a class or an
+  assignment).  This is what keeps the parts of
+  :class:`~al2py_runtime.model.model.Model` (one mixin per module of
+  ``model/``) honest: a part that needs another's method calls a public one.
+* **The model parts' interface is explicit**: a method that one module of
+  ``model/`` defines and another calls on ``self`` is public, has a docstring
+  and a return annotation.
 """
 
 from __future__ import annotations
@@ -215,3 +223,111 @@ def test_foreign_private_names_are_not_ours():
             elif isinstance(node, ast.arg):
                 defined.add(node.arg)
     assert defined & set(FOREIGN) == set()
+
+
+def _defined(tree: ast.AST) -> set[str]:
+    """Names a module defines: functions, classes, assigned names and
+    attributes (``self._x = ...``) and parameters."""
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+            out.add(node.name)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            out.add(node.id)
+        elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store):
+            out.add(node.attr)
+    return out
+
+
+def foreign_self_private(tree: ast.AST) -> list[tuple[int, str]]:
+    """``self._x``/``cls._x`` where this module defines no ``_x``: a private
+    name of another module (a sibling mixin's or a base class's)."""
+    own = _defined(tree)
+    return [
+        (node.lineno, ast.unparse(node))
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Attribute)
+        and _private(node.attr)
+        and _own(node.value)
+        and node.attr not in own
+        and node.attr not in FOREIGN
+    ]
+
+
+def test_the_checker_finds_a_siblings_private_name():
+    mine = ast.parse("class A:\n    def _a(self):\n        self._b = self._a()\n")
+    assert foreign_self_private(mine) == []
+    theirs = ast.parse("class B:\n    def f(self):\n        return self._a(self._b)\n")
+    assert [line for line, _ in foreign_self_private(theirs)] == [3, 3]
+
+
+def test_no_private_name_used_outside_its_module():
+    found = [
+        f"{MODULES[m].relative_to(ROOT)}:{line}: {text}"
+        for m, tree in TREES.items()
+        for line, text in foreign_self_private(tree)
+    ]
+    assert found == []
+
+
+MODEL = f"{PACKAGE}.model."
+
+
+def model_interface() -> dict[tuple[str, str], list[str]]:
+    """``(defining module, method) -> [calling modules]`` for the methods of
+    one ``model/`` module's classes called on ``self`` in another."""
+    methods: dict[str, tuple[str, ast.FunctionDef]] = {}
+    for m, tree in TREES.items():
+        if m.startswith(MODEL):
+            for cls in tree.body:
+                if isinstance(cls, ast.ClassDef):
+                    for f in cls.body:
+                        if isinstance(f, ast.FunctionDef):
+                            methods.setdefault(f.name, (m, f))
+    used: dict[tuple[str, str], list[str]] = {}
+    for m, tree in TREES.items():
+        if not m.startswith(MODEL):
+            continue
+        for node in ast.walk(tree):
+            if (
+                isinstance(node, ast.Attribute)
+                and isinstance(node.value, ast.Name)
+                and node.value.id == "self"
+                and node.attr in methods
+                and methods[node.attr][0] != m
+            ):
+                users = used.setdefault((methods[node.attr][0], node.attr), [])
+                if m not in users:
+                    users.append(m)
+    return used
+
+
+def test_the_model_parts_call_each_other():
+    """The interface check sees real calls (else it would prove nothing)."""
+    used = model_interface()
+    assert f"{MODEL}equations" in used[(f"{MODEL}speeds", "fr_speeds")]
+    assert f"{MODEL}objects" in used[(f"{MODEL}points", "add_position")]
+
+
+def test_the_model_parts_interface_is_public_documented_and_typed():
+    bad = []
+    for (m, name), users in sorted(model_interface().items()):
+        f = next(
+            f
+            for cls in TREES[m].body
+            if isinstance(cls, ast.ClassDef)
+            for f in cls.body
+            if isinstance(f, ast.FunctionDef) and f.name == name
+        )
+        missing = [
+            what
+            for what, ok in (
+                ("public", not _private(name)),
+                ("docstring", ast.get_docstring(f) is not None),
+                ("return annotation", f.returns is not None),
+            )
+            if not ok
+        ]
+        if missing:
+            bad.append(f"{m}.{name} (used by {', '.join(users)}): {missing}")
+    assert bad == []
