@@ -21,6 +21,11 @@ What is checked, and how far a static check can see:
   assignment).  This is what keeps the parts of
   :class:`~al2py_runtime.model.model.Model` (one mixin per module of
   ``model/``) honest: a part that needs another's method calls a public one.
+* **No one-line forwarder**: no method's whole body hands its own
+  parameters, unchanged, to the method of the same name of one of its
+  attributes (``def run(self, v): return self.numerics.run(v)``).  A generated module
+  calls the part that does the work (``al.numerics.run``,
+  ``al.settings.set``; see :func:`test_a_run_parameter_goes_straight_to_the_job`).
 * **The model parts' interface is explicit**: a method that one module of
   ``model/`` defines and another calls on ``self`` is public, has a docstring
   and a return annotation.
@@ -29,9 +34,11 @@ What is checked, and how far a static check can see:
 from __future__ import annotations
 
 import ast
+import math
 from pathlib import Path
 
 import al2py_runtime
+import pytest
 
 ROOT = Path(al2py_runtime.__file__).parent
 PACKAGE = ROOT.name
@@ -331,3 +338,121 @@ def test_the_model_parts_interface_is_public_documented_and_typed():
         if missing:
             bad.append(f"{m}.{name} (used by {', '.join(users)}): {missing}")
     assert bad == []
+
+
+def _parameters(f: ast.FunctionDef) -> list[str]:
+    a = f.args
+    return [p.arg for p in [*a.posonlyargs, *a.args, *a.kwonlyargs]][1:] + [
+        p.arg for p in (a.vararg, a.kwarg) if p is not None
+    ]
+
+
+def _passed(call: ast.Call) -> list[str] | None:
+    out = []
+    for a in [*call.args, *(k.value for k in call.keywords)]:
+        if isinstance(a, ast.Starred):
+            a = a.value
+        if not isinstance(a, ast.Name):
+            return None
+        out.append(a.id)
+    return out
+
+
+def forwarders(tree: ast.AST) -> list[tuple[int, str]]:
+    """Methods whose whole body is ``self.part.<same name>(<its parameters>)``."""
+    found = []
+    for cls in ast.walk(tree):
+        if not isinstance(cls, ast.ClassDef):
+            continue
+        for f in cls.body:
+            if not isinstance(f, ast.FunctionDef):
+                continue
+            body = f.body[1:] if ast.get_docstring(f) is not None else f.body
+            if len(body) != 1 or not isinstance(body[0], ast.Return | ast.Expr):
+                continue
+            call = body[0].value
+            if (
+                isinstance(call, ast.Call)
+                and isinstance(call.func, ast.Attribute)
+                and isinstance(call.func.value, ast.Attribute)
+                and _own(call.func.value.value)
+                and call.func.attr.lstrip("_") == f.name.lstrip("_")
+                and _passed(call) == _parameters(f)
+            ):
+                found.append((f.lineno, f"{cls.name}.{f.name}"))
+    return found
+
+
+def test_the_checker_finds_a_forwarder():
+    tree = ast.parse(
+        "class W:\n"
+        "    def run(self, values=None, /, **more):\n"
+        "        'Run.'\n"
+        "        return self.numerics.run(values, **more)\n"
+        "    def set(self, name, value):\n"
+        "        self.settings.set(name, value.upper())\n"
+        "    def save(self, name):\n"
+        "        self.saves.append(name)\n"
+    )
+    assert forwarders(tree) == [(2, "W.run")]
+
+
+def test_no_one_line_forwarder():
+    found = [
+        f"{MODULES[m].relative_to(ROOT)}:{line}: {name}"
+        for m, tree in TREES.items()
+        for line, name in forwarders(tree)
+    ]
+    assert found == []
+
+
+PATH_SCRIPT = """\
+Variables X'
+Constants A
+X' = -A*X
+Input A = 2, X = 1, TFINAL = 1, INTEGSTP = 0.5
+Output T, X
+CODE ODE() decay.c
+"""
+
+
+def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
+    """The path of ``run(job=..., backend=..., A=3)`` and of ``Input``
+    values, from the generated module to where they are used:
+
+    * ``Input A = 2`` is ``al.numerics.input({"A": 2}, line=N)``:
+      :meth:`Numerics.input` stores an ``InputValue``, and ``CODE``
+      (``al.numerics.code``) snapshots the Inputs into its ``Job``;
+    * the module's ``run(values, **overrides)`` is
+      ``al.numerics.run(values, **overrides)``: :meth:`Numerics.run` picks
+      the ``Job`` (``job=``) and merges the overrides, then
+      :func:`~al2py_runtime.jobs.run.run_job` converts Inputs and overrides
+      to internal units (``input_values``) and hands ``backend`` to the
+      dynamics (``ode_system`` -> ``backends.choose``/``compile_dynamics``).
+
+    No workspace method sits between: the module's ``al`` holds the parts."""
+    from al2py_runtime.jobs import numerics
+
+    from al2py import convert
+
+    code = convert(PATH_SCRIPT, "decay.al").code
+    assert "al.numerics.input({" in code
+    assert "return al.numerics.run(values, **overrides)" in code
+    path = tmp_path / "decay_path.py"
+    path.write_text(code, encoding="utf-8")
+    namespace: dict = {"__name__": "decay_path", "__file__": str(path)}
+    exec(compile(code, str(path), "exec"), namespace)
+
+    seen = []
+    real = numerics.run_job
+
+    def spy(job, overrides, **kw):
+        seen.append((job.inputs["A"].value, dict(overrides), kw))
+        return real(job, overrides, **kw)
+
+    monkeypatch.setattr(numerics, "run_job", spy)
+    result = namespace["run"](A=3, backend="lambdify", job="decay")
+    ((given, overrides, kw),) = seen
+    assert given == 2 and overrides == {"A": 3}
+    assert kw == {"backend": "lambdify", "zero_missing": None}
+    assert result["X"][-1] == pytest.approx(math.exp(-3), rel=1e-4)

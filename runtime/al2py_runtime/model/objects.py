@@ -148,14 +148,11 @@ class Objects:
             raise ValueError("no Newtonian frame has been declared")
         return n
 
-    def _scalar(self, value: Any) -> Any:
-        return self.ws.normalize(value)
-
     @command
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
         st = self.registry
-        value = self._scalar(value)
+        value = self.ws.normalize(value)
         if isinstance(obj, ReferenceFrame) and obj in st.bodies:
             st.bodies[obj].mass = value
         elif isinstance(obj, Point) and obj in st.particles:
@@ -184,7 +181,7 @@ class Objects:
         ``Inertia A(B), ...`` gives the scalars in frame ``basis``'s basis."""
         b = self.body_record(body)
         m = sp.Matrix([[i11, i12, i31], [i12, i22, i23], [i31, i23, i33]]).applyfunc(
-            self._scalar
+            self.ws.normalize
         )
         b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
