@@ -74,6 +74,15 @@ TREES = {
 }
 
 
+def everywhere(check) -> list[str]:
+    """``path:line: what`` for each finding of ``check`` in every module."""
+    return [
+        f"{MODULES[m].relative_to(ROOT)}:{line}: {what}"
+        for m, tree in TREES.items()
+        for line, what in check(tree)
+    ]
+
+
 def _imported(module: str, node: ast.Import | ast.ImportFrom) -> list[str]:
     """The runtime modules that an import statement names."""
     if isinstance(node, ast.Import):
@@ -207,12 +216,7 @@ def test_the_checker_finds_private_access():
 
 
 def test_no_cross_object_private_access():
-    found = [
-        f"{MODULES[m].relative_to(ROOT)}:{line}: {text}"
-        for m, tree in TREES.items()
-        for line, text in private_access(tree)
-    ]
-    assert found == []
+    assert everywhere(private_access) == []
 
 
 def test_foreign_private_names_are_not_ours():
@@ -269,12 +273,7 @@ def test_the_checker_finds_a_siblings_private_name():
 
 
 def test_no_private_name_used_outside_its_module():
-    found = [
-        f"{MODULES[m].relative_to(ROOT)}:{line}: {text}"
-        for m, tree in TREES.items()
-        for line, text in foreign_self_private(tree)
-    ]
-    assert found == []
+    assert everywhere(foreign_self_private) == []
 
 
 MODEL = f"{PACKAGE}.model."
@@ -398,12 +397,7 @@ def test_the_checker_finds_a_forwarder():
 
 
 def test_no_one_line_forwarder():
-    found = [
-        f"{MODULES[m].relative_to(ROOT)}:{line}: {name}"
-        for m, tree in TREES.items()
-        for line, name in forwarders(tree)
-    ]
-    assert found == []
+    assert everywhere(forwarders) == []
 
 
 PATH_SCRIPT = """\

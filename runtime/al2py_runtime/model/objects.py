@@ -18,7 +18,7 @@ from sympy.physics.vector import (
 
 from ..vocabulary import Decl, Form, match
 from . import kinematics as kin
-from .state import BodyRecord, as_dyadic, command
+from .state import BodyRecord, command
 
 __all__ = ["Objects"]
 
@@ -249,7 +249,7 @@ class Objects:
             return m
         if kind is Form.INERTIA:
             body, p = objs
-            value = as_dyadic(value)
+            value = kin.as_dyadic(value)
             b = self.body_record(body)
             b.inertia, b.inertia_point = value, p
             self.ws.respond(label, value, line=line)
