@@ -450,3 +450,24 @@ def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
     assert given == 2 and overrides == {"A": 3}
     assert kw == {"backend": "lambdify", "zero_missing": None}
     assert result["X"][-1] == pytest.approx(math.exp(-3), rel=1e-4)
+
+
+def test_the_readme_layout_names_every_runtime_module():
+    """The README's layout table names each folder and module of the runtime
+    (with the one concept it owns)."""
+    import re
+
+    readme = (ROOT.parents[1] / "README.md").read_text(encoding="utf-8")
+    layout = readme[readme.index("## Layout") :]
+    layout = layout[: layout.index("\n## ", 1)]
+    words = set(re.findall(r"\w+", layout))
+    missing = [
+        str(path.relative_to(ROOT))
+        for path in sorted(ROOT.rglob("*.py"))
+        if path.name != "__init__.py" and path.stem not in words
+    ] + [
+        f"{d.name}/"
+        for d in sorted(ROOT.iterdir())
+        if d.is_dir() and (d / "__init__.py").exists() and f"{d.name}/" not in layout
+    ]
+    assert missing == []
