@@ -464,7 +464,7 @@ def _al_name(cname: str, variables: dict[str, int]) -> str:
 
 
 def job_for(module, program: str):
-    for job in module.al.jobs:
+    for job in module.al.numerics.jobs:
         if job.filename and Path(job.filename.replace("\\", "/")).name.lower() == (
             Path(program).name.lower()
         ):

@@ -84,7 +84,7 @@ def main(argv: list[str]) -> int:
     from al2py_runtime.codegen import write_programs
 
     ws = module.al
-    if not ws.jobs:
+    if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
     written, errors = write_programs(ws, args.outdir, lang=args.lang)

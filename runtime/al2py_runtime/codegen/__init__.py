@@ -79,7 +79,7 @@ def write_programs(
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
-    for job in ws.jobs if jobs is None else jobs:
+    for job in ws.numerics.jobs if jobs is None else jobs:
         try:
             name = PurePath(target_file(job, lang)).name
             static = job.kind in ("ALGEBRAIC", "NONLINEAR")

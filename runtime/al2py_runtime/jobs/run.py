@@ -919,16 +919,21 @@ def _run_dynamics(
     for j, name in enumerate(c.state_names):
         unit = vals.units.get(name)
         states[name] = ys[j] / job.unit_system.to_internal(unit)
+    return _result(job, tables, vals, states=states, nfev=nfev)
+
+
+def _result(job: Job, tables: list[Table], vals: _Values, **more: Any) -> Result:
+    """The ``Result`` of ``job``: its tables, Encode values and the notes
+    the Input values raised (each once), plus what the kind of job adds."""
     return Result(
         job.kind,
         job.stem,
         tables,
         job.digits,
         encoded=dict(job.encoded),
-        states=states,
         notes=_unique(vals.notes),
         time_unit=job.unit_system.time_unit,
-        nfev=nfev,
+        **more,
     )
 
 
@@ -1090,17 +1095,7 @@ def _static_result(
         cols = [Column(n, units[n]) for n in c.unknown_names]
         data = np.column_stack([solution[n] for n in c.unknown_names])
         tables.append(Table(1, cols, data, job.line))
-    return Result(
-        job.kind,
-        job.stem,
-        tables,
-        job.digits,
-        encoded=dict(job.encoded),
-        solution=solution,
-        solution_units=units,
-        notes=_unique(vals.notes),
-        time_unit=us.time_unit,
-    )
+    return _result(job, tables, vals, solution=solution, solution_units=units)
 
 
 def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
