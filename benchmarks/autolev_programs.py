@@ -464,7 +464,7 @@ def _al_name(cname: str, variables: dict[str, int]) -> str:
 
 
 def job_for(module, program: str):
-    for job in module.al.jobs:
+    for job in module.al.numerics.jobs:
         if job.filename and Path(job.filename.replace("\\", "/")).name.lower() == (
             Path(program).name.lower()
         ):
@@ -517,7 +517,15 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
 # --------------------------------------------------------------- checking
 
 
-def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Report:
+def check(
+    pair: Pair,
+    root: Path | None = None,
+    keep: Path | None = None,
+    same_language: bool = False,
+) -> Report:
+    """Compare Autolev's program with al2py's module; with ``same_language``
+    also with the program ``al2py code`` writes for the same ``CODE``
+    statement (rows named ``al2py C``/``al2py MATLAB``)."""
     report = Report(pair)
     start = time.perf_counter()
     if pair.kind == "matlab" and shutil.which("octave") is None:
@@ -540,12 +548,16 @@ def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Rep
         if pair.kind == "cleaned":  # the CODE statement wrote X_raw.c
             written = str(Path(pair.program).with_suffix("")) + "_raw.c"
         job = job_for(module, written)
+        ours = None
+        if same_language:
+            run_dir = work if script.parent != work else None
+            ours = OurProgram.write(report, script, written, run_dir)
         if pair.kind == "cleaned":
             _check_cleaned(report, module, job, program)
         elif pair.kind == "matlab":
-            _check_matlab(report, module, job, program)
+            _check_matlab(report, module, job, program, ours)
         elif job.kind in ("DYNAMICS", "ODE"):
-            _check_dynamics(report, module, job, program)
+            _check_dynamics(report, module, job, program, ours)
         else:
             _check_algebraic(report, module, job, program)
     report.seconds = time.perf_counter() - start
@@ -568,7 +580,9 @@ def _integration_for(job, tight: bool = True) -> dict[str, float]:
     }
 
 
-def _check_dynamics(report: Report, module, job, program: Path) -> None:
+def _check_dynamics(
+    report: Report, module, job, program: Path, ours: OurProgram | None = None
+) -> None:
     from al2py_runtime.jobs import run as rjobs
 
     prog = _unshadow(report, program)
@@ -581,6 +595,11 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
             for name in prog.state:
                 values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
         values = _run_program(report, label, prog, exe, values)
+        if ours is not None and prog.outfiles:
+            # the very .in file Autolev's program read
+            shutil.copy(cwd / prog.infile, ours.folder / prog.infile)
+            ours.run()
+            _compare_files(report, f"{label}: {ours.label}", cwd, ours.folder)
         overrides = _overrides(prog, job, values)
         result = rjobs.run_job(job, overrides)
         tables = (
@@ -671,6 +690,117 @@ def _compare_tables(report, label, tables, cwd: Path, pattern: str) -> None:
                 f"worst column {where}",
             )
         )
+
+
+def _compare_files(report, label, theirs_dir: Path, ours_dir: Path) -> None:
+    """Each output file Autolev's program wrote (``STEM.1``, ...) against
+    the one al2py's program wrote, column by column (the tables' rule)."""
+    files = sorted(
+        f
+        for f in theirs_dir.iterdir()
+        if re.fullmatch(r"\d+", f.suffix[1:] or "x") and f.is_file()
+    )
+    if not files:
+        report.rows.append(Row(f"{label}: output files", math.inf, 0.0, "none"))
+    for theirs_file in files:
+        ours_file = ours_dir / theirs_file.name
+        what = f"{label}: {theirs_file.name}"
+        if not ours_file.exists():
+            report.rows.append(Row(what, math.inf, 0.0, "al2py wrote no such file"))
+            continue
+        theirs, ours = read_table(theirs_file), read_table(ours_file)
+        if theirs.shape != ours.shape:
+            detail = f"Autolev {theirs.shape}, al2py {ours.shape}"
+            report.rows.append(Row(f"{what} shape", math.inf, 0.0, detail))
+            continue
+        worst, allowed, where = 0.0, 0.0, 0
+        for j in range(theirs.shape[1]):
+            tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
+            err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
+            if err / tol > (worst / allowed if allowed else -1):
+                worst, allowed, where = err, tol, j + 1
+        shape = f"{ours.shape[0]}x{ours.shape[1]}"
+        report.rows.append(
+            Row(f"{what} ({shape})", worst, allowed, f"worst column {where}")
+        )
+
+
+@dataclass
+class OurProgram:
+    """The program ``al2py code`` writes for the same ``CODE`` statement,
+    in the language of Autolev's (C compiled with ``cc -std=c99``, MATLAB
+    run in Octave), in its own folder."""
+
+    path: Path
+    exe: Path | None
+
+    @property
+    def folder(self) -> Path:
+        return self.path.parent
+
+    @property
+    def label(self) -> str:
+        return "al2py C" if self.path.suffix == ".c" else "al2py MATLAB"
+
+    @classmethod
+    def write(
+        cls, report: Report, script: Path, written: str, run_dir: Path | None
+    ) -> OurProgram | None:
+        folder = script.parent / "al2py_code"
+        env = dict(os.environ)
+        if run_dir is not None:
+            env["AUTOLEVPATH"] = str(run_dir)
+        proc = subprocess.run(
+            [sys.executable, "-m", "al2py", "code", script.name, "-o", str(folder)],
+            cwd=script.parent,
+            capture_output=True,
+            text=True,
+            env=env,
+        )
+        path = folder / Path(written.replace("\\", "/")).name
+        if not path.exists():
+            why = (proc.stderr or proc.stdout).strip().splitlines()
+            report.notes.append(
+                f"al2py code wrote no {path.name}: {why[-1] if why else proc.returncode}"
+            )
+            return None
+        exe = None
+        if path.suffix == ".c":
+            exe = path.with_suffix(".exe")
+            subprocess.run(
+                ["cc", "-O0", "-std=c99", "-o", str(exe), str(path), "-lm"],
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+        return cls(path, exe)
+
+    def run(self) -> None:
+        for old in self.folder.glob(f"{self.path.stem}.[0-9]*"):
+            old.unlink()
+        if self.exe is not None:
+            cmd = [str(self.exe)]
+        else:
+            cmd = [*_OCTAVE, "--eval", self.path.stem]
+        proc = subprocess.run(
+            cmd, cwd=self.folder, capture_output=True, text=True, timeout=1800
+        )
+        if proc.returncode or "error" in proc.stderr.lower():
+            raise RuntimeError(f"al2py's program failed:\n{proc.stderr[-2000:]}")
+
+    def write_in(self, values: dict[str, float]) -> None:
+        """Our ``STEM.in`` with ``values`` (by the script's name, upper case)
+        put from column 60: the values Autolev's MATLAB program holds."""
+        path = self.folder / f"{self.path.stem}.in"
+        lines = path.read_text().splitlines()
+        for k, line in enumerate(lines[6:], start=6):
+            if len(line) < 59 or line[58] != "|":
+                continue
+            name = line[21:42].strip().upper()
+            if name not in values:
+                raise LookupError(f"al2py's {path.name} reads {name}, Autolev's not")
+            lines[k] = f"{line[:58]}| {values[name]!r}"
+        path.write_text("\n".join(lines) + "\n")
 
 
 def _unshadow(report: Report, program: Path) -> CProgram:
@@ -945,7 +1075,9 @@ def _octave(cwd: Path, command: str) -> str:
     return proc.stdout
 
 
-def _check_matlab(report: Report, module, job, program: Path) -> None:
+def _check_matlab(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
     """Run the MATLAB program in GNU Octave on the script's Inputs (values
     edited into ``ReadUserInput``) and on a perturbed state; compare its
     output files with ``run()``'s tables, ``mdlDerivatives`` at the
@@ -988,6 +1120,11 @@ def _check_matlab(report: Report, module, job, program: Path) -> None:
         out = _octave(cwd, f"{glob}{program.stem}; {printing}")
         if mprog.outfiles:
             _compare_tables(report, label, tables, cwd, mprog.outfiles)
+            if own is not None:
+                by_name = {_al_name(k, variables): v for k, v in values.items()}
+                own.write_in(by_name)
+                own.run()
+                _compare_files(report, f"{label}: {own.label}", cwd, own.folder)
         if encoded:
             _compare_encoded(report, label, job, _OctavePrinted(out), result, 0)
         if dynamic:
@@ -1042,6 +1179,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--list", action="store_true", help="list the pairs found")
     ap.add_argument("--root", type=Path, default=None, help="mirror root ($ALMIRROR)")
     ap.add_argument("--keep", type=Path, default=None, help="work in this folder")
+    ap.add_argument(
+        "--same-language",
+        action="store_true",
+        help="also run the program al2py code writes (same language, same .in)",
+    )
     args = ap.parse_args(argv)
     pairs = [
         p
@@ -1061,7 +1203,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.keep:
             args.keep.mkdir(parents=True, exist_ok=True)
         try:
-            rep = check(p, args.root, args.keep)
+            rep = check(p, args.root, args.keep, args.same_language)
         except Exception as exc:  # noqa: BLE001 - a report line per pair
             print(f"{p.name:40} error: {str(exc).strip()[:300]}")
             failed = True
