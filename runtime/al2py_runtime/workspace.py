@@ -99,7 +99,9 @@ class Workspace(Mapping):
     # ------------------------------------------------------------ mapping API
 
     def __getitem__(self, name: str) -> Any:
-        return self.value(name)
+        """The value of ``name`` as the script sees it: with ``AutoZ OFF``
+        written out (:meth:`form`); :meth:`value` keeps intermediates."""
+        return self.form(self.value(name))
 
     def __iter__(self) -> Iterator[str]:
         seen = []
@@ -230,6 +232,18 @@ class Workspace(Mapping):
             return self.table.rhs[x]
         return x
 
+    def form(self, x: Any) -> Any:
+        """The value behind ``x`` as a command that reads its *form* sees it
+        (``Coef``, ``Exclude``, ``Factor``, small ``Solve``...).  With
+        ``AutoZ OFF`` the intermediates the derivation made are written out
+        (they are internal: issue 21); with it ON they stay, as Autolev's
+        ``Z``'s did."""
+        x = self.val(x)
+        book = self.book_if_made()
+        if book is None or self.settings.autoz:
+            return x
+        return book.expand(x)
+
     # ------------------------------------------------------------ resolution
 
     def explicit(self, y: Any, x: Any = None) -> Any:
@@ -238,7 +252,7 @@ class Workspace(Mapping):
         (``Explicit(y, x)`` gives the same result: substituting everything makes
         ``y`` an explicit function of ``x``.)
         """
-        return self.resolve(self.val(y))
+        return self.resolve(self.form(y))
 
     def resolve(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
         """Substitute right-hand sides until none is left.
@@ -707,7 +721,7 @@ class Workspace(Mapping):
     def evaluate(self, y: Any, subs: Mapping[Any, Any] | None = None) -> Any:
         """``Evaluate(y, a=x, b=2)``: substitute, seeing through other names."""
         subs = {sp.sympify(k): sp.sympify(v) for k, v in (subs or {}).items()}
-        y = self.resolve(self.val(y), keep=subs)
+        y = self.resolve(self.form(y), keep=subs)
         y = doit_derivatives(_xreplace(y, subs))
         if self.settings.degrees:
             # numbers reach trig arguments inside intermediates' definitions
@@ -726,7 +740,7 @@ class Workspace(Mapping):
 
         pts = [(p[0], p[1], p[2] if len(p) > 2 else None) for p in points]
         orders = tuple(order) if isinstance(order, tuple | list) else (0, int(order))
-        y = self.resolve(self.val(y), keep=[p[0] for p in pts])
+        y = self.resolve(self.form(y), keep=[p[0] for p in pts])
         return algebra.taylor(y, orders, pts)
 
     def solve(
@@ -747,6 +761,8 @@ class Workspace(Mapping):
             eqs = sp.Matrix([self.val(eqs)])
         eqs = self.resolve(eqs, keep=[*unknowns, *self.specified_inputs(unknowns)])
         book = self.solver_book(len(unknowns))
+        if book is None:  # a closed form reads the equations' form
+            eqs = self.form(eqs)
         zero = self.model.configuration_variables() if book is not None else ()
         solutions = algebra.solve_linear(eqs, unknowns, book, zero)
         names = [self.name_of(u) for u in unknowns]
@@ -794,43 +810,43 @@ class Workspace(Mapping):
 
     def expand(self, y: Any, *args: Any) -> Any:
         """Autolev ``Expand``: see :func:`al2py_runtime.algebra.expand`."""
-        return algebra.expand(self.val(y), *args)
+        return algebra.expand(self.form(y), *args)
 
     def factor(self, y: Any, *args: Any) -> Any:
         """Autolev ``Factor``: see :func:`al2py_runtime.algebra.factor`."""
-        return algebra.factor(self.val(y), *args)
+        return algebra.factor(self.form(y), *args)
 
     def polynomial(self, y: Any, *args: Any) -> Any:
         """Autolev ``Polynomial``: see :func:`al2py_runtime.algebra.polynomial`."""
-        return algebra.polynomial(self.val(y), *args)
+        return algebra.polynomial(self.form(y), *args)
 
     def roots(self, y: Any, *args: Any) -> Any:
         """Autolev ``Roots``: see :func:`al2py_runtime.algebra.roots`."""
-        return algebra.roots(self.val(y), *args)
+        return algebra.roots(self.form(y), *args)
 
     def coef(self, y: Any, *args: Any) -> Any:
         """Autolev ``Coef``: see :func:`al2py_runtime.algebra.coef`."""
-        return algebra.coef(self.val(y), *args)
+        return algebra.coef(self.form(y), *args)
 
     def exclude(self, y: Any, *args: Any) -> Any:
         """Autolev ``Exclude``: see :func:`al2py_runtime.algebra.exclude`."""
-        return algebra.exclude(self.val(y), *args)
+        return algebra.exclude(self.form(y), *args)
 
     def include(self, y: Any, *args: Any) -> Any:
         """Autolev ``Include``: see :func:`al2py_runtime.algebra.include`."""
-        return algebra.include(self.val(y), *args)
+        return algebra.include(self.form(y), *args)
 
     def arrange(self, y: Any, *args: Any) -> Any:
         """Autolev ``Arrange``: see :func:`al2py_runtime.algebra.arrange`."""
-        return algebra.arrange(self.val(y), *args)
+        return algebra.arrange(self.form(y), *args)
 
     def replace(self, y: Any, *args: Any) -> Any:
         """Autolev ``Replace``: see :func:`al2py_runtime.algebra.replace`."""
-        return algebra.replace(self.val(y), *args)
+        return algebra.replace(self.form(y), *args)
 
     def epsilon(self, y: Any, *args: Any) -> Any:
         """Autolev ``Epsilon``: see :func:`al2py_runtime.algebra.epsilon`."""
-        return algebra.epsilon(self.val(y), *args)
+        return algebra.epsilon(self.form(y), *args)
 
     def rows(self, y: Any, *args: Any) -> Any:
         """Autolev ``Rows``: see :func:`al2py_runtime.matrices.rows`."""
@@ -842,7 +858,7 @@ class Workspace(Mapping):
 
     def det(self, y: Any, *args: Any) -> Any:
         """Autolev ``Det``: see :func:`al2py_runtime.matrices.det`."""
-        return matrices.det(self.val(y), *args)
+        return matrices.det(self.form(y), *args)
 
     def diagmat(self, y: Any, *args: Any) -> Any:
         """Autolev ``Diagmat``: see :func:`al2py_runtime.matrices.diagmat`."""
@@ -854,7 +870,7 @@ class Workspace(Mapping):
 
     def inv(self, y: Any, *args: Any) -> Any:
         """Autolev ``Inv``: see :func:`al2py_runtime.matrices.inv`."""
-        return matrices.inv(self.val(y), *args)
+        return matrices.inv(self.form(y), *args)
 
     def transpose(self, y: Any, *args: Any) -> Any:
         """Autolev ``Transpose``: see :func:`al2py_runtime.matrices.transpose`."""

@@ -162,7 +162,7 @@ class Numerics:
         items: list[OutputItem] = []
         shapes: dict[str, tuple[int, int]] = {}
         for key in self._numerics.encoded:
-            value = self._ws[key]
+            value = self._ws.value(key)
             if isinstance(value, sp.MatrixBase):
                 shapes[key] = value.shape
                 names = element_labels(key, value.rows, value.cols)
@@ -400,4 +400,4 @@ class Numerics:
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        return evaluate_with_inputs(job, self._ws[name], name, merged)
+        return evaluate_with_inputs(job, self._ws.value(name), name, merged)

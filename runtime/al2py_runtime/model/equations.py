@@ -200,6 +200,8 @@ class KaneEquations:
         speeds = [sp.sympify(u) for u in speeds]
         eqs = [self.ws.resolve(e, keep=self.generalized_speeds()) for e in mat]
         book = self.ws.solver_book(len(speeds))
+        if book is None:  # a closed form reads the equations' form
+            eqs = [self.ws.form(e) for e in eqs]
         sols = solve_speeds(eqs, speeds, book, self.configuration_variables())
         gens = self.rates_and_speeds()
         out = []
@@ -306,6 +308,8 @@ class KaneEquations:
             # Few forces: closed form, as before, whatever AutoZ says.
             many = len(forces) > SMALL
             book = self.ws.solver_book(len(forces)) if many else None
+            if book is None:
+                eqs = [self.ws.form(e) for e in eqs]
             sols = solve_speeds(eqs, forces, book, self.configuration_variables())
             for f, s in zip(forces, sols, strict=True):
                 self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
