@@ -334,3 +334,61 @@ def test_nonlinear_job_through_intermediates(tmp_path):
     x = np.cos(qa) + 2 * np.cos(qa + qb) + 2 * np.cos(qa + qb + qc)
     y = np.sin(qa) + 2 * np.sin(qa + qb) + 2 * np.sin(qa + qb + qc)
     assert (x, y) == pytest.approx((1.0, 0.0), abs=1e-7)  # the loop closes
+
+
+FORMS = """\
+% A double pendulum of two rigid rods (our own), AutoZ OFF (the default)
+Newtonian N
+Bodies A, B
+Points O
+Variables Q{2}', U{2}'
+Constants L, M, G
+Q1' = U1
+Q2' = U2
+Simprot(N, A, 3, Q1)
+Simprot(A, B, 3, Q2)
+W_A_N> = U1*A3>
+W_B_A> = U2*B3>
+Mass A=M, B=M
+Inertia A, 0, 0, M*L^2/12
+Inertia B, 0, 0, M*L^2/12
+P_O_Ao> = L/2*A1>
+P_O_Bo> = L*A1> + L/2*B1>
+V_O_N> = 0>
+V_Ao_N> = Dt(P_O_Ao>, N)
+V_Bo_N> = Dt(P_O_Bo>, N)
+A_Ao_N> = Dt(V_Ao_N>, N)
+A_Bo_N> = Dt(V_Bo_N>, N)
+Gravity(G*N1>)
+Zero = Fr() + FrStar()
+Kane()
+GRAV = Coef(Zero, G)
+INER = Coef(Zero, M)
+REST = Exclude(Zero, G)
+CHECK = Evaluate(Zero, Q1=0, Q2=0, U1=0, U2=0, U1'=0, U2'=0)
+"""
+
+
+def test_form_reading_commands_see_written_out_values(tmp_path):
+    """AutoZ OFF: the derivation's intermediates are internal, so ``Coef``,
+    ``Exclude`` and ``Evaluate`` read the full expressions (a constant
+    inside an intermediate would otherwise be missed: ``Coef(Zero, G)``
+    would be 0)."""
+    path = tmp_path / "forms.al"
+    path.write_text(FORMS)
+    mod = load_module(convert(FORMS, str(path)).code, tmp_path, "forms")
+    zero = mod.AUTOLEV["ZERO"]
+    assert has_intermediates(mod.al.value("ZERO"))
+    g = next(s for s in zero.free_symbols if s.name == "G")
+    m = next(s for s in zero.free_symbols if s.name == "M")
+    grav, iner = mod.AUTOLEV["GRAV"], mod.AUTOLEV["INER"]
+    rest = mod.AUTOLEV["REST"]
+    # the commands' results themselves hold no intermediate
+    for name in ("GRAV", "INER", "REST", "CHECK"):
+        assert not has_intermediates(mod.al.value(name)), name
+    assert grav != sp.zeros(2, 1)
+    # ZERO is linear in G and in M: the coefficients rebuild it
+    assert sp.expand(zero - grav * g - rest) == sp.zeros(2, 1)
+    assert sp.expand(zero - iner * m) == sp.zeros(2, 1)
+    # gravity along N1> is zero torque when hanging straight: exact zeros
+    assert mod.al["CHECK"] == sp.zeros(2, 1)
