@@ -559,7 +559,7 @@ def check(
         elif job.kind in ("DYNAMICS", "ODE"):
             _check_dynamics(report, module, job, program, ours)
         else:
-            _check_algebraic(report, module, job, program)
+            _check_algebraic(report, module, job, program, ours)
     report.seconds = time.perf_counter() - start
     return report
 
@@ -917,7 +917,12 @@ def _compare_encoded(report, label, job, lib, result, row) -> None:
         )
 
 
-def _check_algebraic(report: Report, module, job, program: Path) -> None:
+def _check_algebraic(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
+    """Run Autolev's program on seeded values and compare its Encoded
+    arrays with the module's; with ``own``, also with those al2py's C
+    program computes from the very ``.in`` Autolev's program read."""
     prog = _unshadow(report, program)
     cwd = program.parent
     values = _values(prog, job, {})
@@ -934,6 +939,11 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     lib = Loaded(compile_program(program, shared=True), prog)
     lib.main(cwd)
     _compare_encoded(report, "seeded values", job, lib, result, row=0)
+    if own is not None and own.path.suffix == ".c":
+        shutil.copy(cwd / prog.infile, own.folder / f"{own.path.stem}.in")
+        encoded = {k.upper() for k in job.encoded}
+        theirs = {a: lib.array(a) for a in prog.arrays if a.upper() in encoded}
+        _compare_own_outputs(report, "seeded values", own, theirs, None)
     if not report.rows:
         report.skipped = "the program computes no Encoded array to compare"
 
@@ -1091,27 +1101,34 @@ def _check_cleaned(
         theirs = _Printed(proc.stdout)
         _compare_encoded(report, label, job, theirs, result, row=0)
         if own is not None:
-            _compare_own_outputs(report, label, own, theirs, overrides)
+            _compare_own_outputs(report, label, own, theirs.values, overrides)
     if not report.rows:
         report.skipped = "the cleaned function returns no Encoded array"
 
 
 def _compare_own_outputs(
-    report: Report, label: str, own: OurProgram, theirs: _Printed, values: dict
+    report: Report,
+    label: str,
+    own: OurProgram,
+    theirs: dict[str, np.ndarray],
+    values: dict | None,
 ) -> None:
-    """Every array Autolev's function returned against the one al2py's
-    program computes from a ``.in`` holding ``values`` (names the cleaned
-    function does not read are seeded, and noted)."""
-    names = own.in_names()
-    unread = [n for n in names if n not in values]
-    if unread and not any(n.startswith("al2py's .in also") for n in report.notes):
-        report.notes.append(
-            "al2py's .in also reads " + ", ".join(unread) + " (seeded values),"
-            " which Autolev's function does not"
-        )
-    own.write_in({n: values.get(n, _seeded(n, 0.5, 1.5)) for n in names})
+    """Every array Autolev's program computed (``theirs``, by its C name)
+    against the one al2py's program computes from a ``.in`` holding
+    ``values`` (names Autolev's function does not read are seeded, and
+    noted); ``values`` None: from the ``.in`` already in its folder."""
+    if values is not None:
+        names = own.in_names()
+        unread = [n for n in names if n not in values]
+        if unread and not any(n.startswith("al2py's .in also") for n in report.notes):
+            report.notes.append(
+                "al2py's .in also reads " + ", ".join(unread) + " (seeded values),"
+                " which Autolev's function does not"
+            )
+        own.write_in({n: values.get(n, _seeded(n, 0.5, 1.5)) for n in names})
     ours = own.call_outputs()
-    for name, arr in theirs.values.items():
+    for name, arr in theirs.items():
+        arr = np.ravel(arr)
         what = f"{label}: {own.label} {name} ({arr.size})"
         mine = ours.get(name.upper())
         if mine is None or mine.shape != arr.shape:
