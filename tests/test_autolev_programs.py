@@ -282,6 +282,10 @@ SAME_LANGUAGE_SLOW = [
     "BioMAC-Sim-Toolbox:gait2dc_stick_al.c",
     "BioMAC-Sim-Toolbox:contact_2d_raw.c",
     "BioMAC-Sim-Toolbox:contact_3d_raw.c",
+    "BioMAC-Sim-Toolbox:gait2d_osim_FK_raw.c",
+    "BioMAC-Sim-Toolbox:gait2d_osim_NoDer_raw.c",
+    "BioMAC-Sim-Toolbox:gait10dof18musc_FK_raw.c",
+    "BioMAC-Sim-Toolbox:gait10dof18musc_NoDer_raw.c",
 ]
 
 
