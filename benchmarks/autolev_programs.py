@@ -553,13 +553,13 @@ def check(
             run_dir = work if script.parent != work else None
             ours = OurProgram.write(report, script, written, run_dir)
         if pair.kind == "cleaned":
-            _check_cleaned(report, module, job, program)
+            _check_cleaned(report, module, job, program, ours)
         elif pair.kind == "matlab":
             _check_matlab(report, module, job, program, ours)
         elif job.kind in ("DYNAMICS", "ODE"):
             _check_dynamics(report, module, job, program, ours)
         else:
-            _check_algebraic(report, module, job, program)
+            _check_algebraic(report, module, job, program, ours)
     report.seconds = time.perf_counter() - start
     return report
 
@@ -788,6 +788,15 @@ class OurProgram:
         if proc.returncode or "error" in proc.stderr.lower():
             raise RuntimeError(f"al2py's program failed:\n{proc.stderr[-2000:]}")
 
+    def in_names(self) -> list[str]:
+        """The names our ``STEM.in`` reads, in order (upper case)."""
+        path = self.folder / f"{self.path.stem}.in"
+        return [
+            line[21:42].strip().upper()
+            for line in path.read_text().splitlines()[6:]
+            if len(line) >= 59 and line[58] == "|"
+        ]
+
     def write_in(self, values: dict[str, float]) -> None:
         """Our ``STEM.in`` with ``values`` (by the script's name, upper case)
         put from column 60: the values Autolev's MATLAB program holds."""
@@ -801,6 +810,80 @@ class OurProgram:
                 raise LookupError(f"al2py's {path.name} reads {name}, Autolev's not")
             lines[k] = f"{line[:58]}| {values[name]!r}"
         path.write_text("\n".join(lines) + "\n")
+
+    def call_outputs(self) -> dict[str, np.ndarray]:
+        """The quantities al2py's C program computes from its ``STEM.in``,
+        at full precision: a harness includes the program (its ``main``
+        renamed), reads the ``.in`` with the program's own ``al_start``,
+        calls its ``outputs`` and prints every value (an ``Encode``d array
+        has no output file).  Keyed by the column labels of the program's
+        headers: ``FK[1]``, ``DFK_DQ[1,2]`` ... grouped as ``FK``, ``DFK_DQ``
+        (row by row)."""
+        source = self.path.read_text()
+        labels = _header_labels(source)
+        stem = self.path.stem
+        harness = self.folder / "al2py_own_harness.c"
+        exe = harness.with_suffix(".exe")
+        if not exe.exists():
+            harness.write_text(_OWN_HARNESS.format(program=self.path.name))
+            subprocess.run(
+                ["cc", "-O0", "-std=c99", "-w", "-I", str(self.folder)]
+                + ["-o", str(exe), str(harness), "-lm"],
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+        proc = subprocess.run(
+            [str(exe)], cwd=self.folder, capture_output=True, text=True, timeout=600
+        )
+        if proc.returncode or proc.stderr:
+            raise RuntimeError(f"al2py's {stem} failed:\n{proc.stderr[-2000:]}")
+        values = [float(x) for x in proc.stdout.split()]
+        if len(values) != len(labels):
+            raise RuntimeError(
+                f"al2py's {stem}: {len(values)} outputs, {len(labels)} column labels"
+            )
+        found: dict[str, list[float]] = {}
+        for label, value in zip(labels, values, strict=True):
+            found.setdefault(label.split("[")[0].upper(), []).append(value)
+        return {k: np.array(v) for k, v in found.items()}
+
+
+#: main() of the harness around al2py's Algebraic C program (no range: the
+#: constants p are the inputs v, as the program's own main copies them).
+_OWN_HARNESS = """\
+#define main al2py_program_main
+#include "{program}"
+#undef main
+#if AL_NIN != AL_NP
+#error "the harness calls an Algebraic program without a range"
+#endif
+int main(void)
+{{
+    char name[] = "al2py_own_harness";
+    char *argv[] = {{name, 0}};
+    double v[AL_NIN > 0 ? AL_NIN : 1], p[AL_NP > 0 ? AL_NP : 1], y[1] = {{0.0}};
+    static double out[AL_NOUT > 0 ? AL_NOUT : 1];
+    if (al_start(1, argv, v)) return 2;
+    for (int i = 0; i < AL_NP; i++) p[i] = v[i];
+    int code = outputs(AL_T0, y, p, out);
+    for (int i = 0; i < AL_NOUT; i++) printf("%.17g\\n", out[i] * al_factor[i]);
+    return code;
+}}
+"""
+
+
+def _header_labels(source: str) -> list[str]:
+    """The column labels of al2py's C program, every table in order: the
+    third line of each ``al_header`` string (``%      FK[1]    FK[2] ...``)."""
+    block = re.search(r"al_header\[\d+\] = \{(.*?)\n\};", source, re.S)
+    if block is None:
+        raise ValueError("al2py's program has no al_header")
+    labels = []
+    for text in re.findall(r'"((?:[^"\\]|\\.)*)"', block.group(1)):
+        lines = text.split("\\n")
+        labels += lines[2].lstrip("%").split()
+    return labels
 
 
 def _unshadow(report: Report, program: Path) -> CProgram:
@@ -834,7 +917,12 @@ def _compare_encoded(report, label, job, lib, result, row) -> None:
         )
 
 
-def _check_algebraic(report: Report, module, job, program: Path) -> None:
+def _check_algebraic(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
+    """Run Autolev's program on seeded values and compare its Encoded
+    arrays with the module's; with ``own``, also with those al2py's C
+    program computes from the very ``.in`` Autolev's program read."""
     prog = _unshadow(report, program)
     cwd = program.parent
     values = _values(prog, job, {})
@@ -851,6 +939,11 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     lib = Loaded(compile_program(program, shared=True), prog)
     lib.main(cwd)
     _compare_encoded(report, "seeded values", job, lib, result, row=0)
+    if own is not None and own.path.suffix == ".c":
+        shutil.copy(cwd / prog.infile, own.folder / f"{own.path.stem}.in")
+        encoded = {k.upper() for k in job.encoded}
+        theirs = {a: lib.array(a) for a in prog.arrays if a.upper() in encoded}
+        _compare_own_outputs(report, "seeded values", own, theirs, None)
     if not report.rows:
         report.skipped = "the program computes no Encoded array to compare"
 
@@ -952,10 +1045,14 @@ class _Printed:
         return self.values[name]
 
 
-def _check_cleaned(report: Report, module, job, program: Path) -> None:
+def _check_cleaned(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
     """Call the cleaned function at the script's Inputs and at two seeded
     states through a C harness written here, and compare every Encoded
-    array it returns with the module's."""
+    array it returns with the module's; with ``own`` (al2py's C program for
+    the same CODE statement) also with the arrays that program computes
+    from a ``.in`` holding the same values (see OurProgram.call_outputs)."""
     from al2py_runtime.jobs import run as rjobs
 
     source = program.read_text(encoding="latin-1")
@@ -1001,9 +1098,44 @@ def _check_cleaned(report: Report, module, job, program: Path) -> None:
             [str(exe)], capture_output=True, text=True, check=True, timeout=600
         )
         result = rjobs.run_job(job, overrides)
-        _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
+        theirs = _Printed(proc.stdout)
+        _compare_encoded(report, label, job, theirs, result, row=0)
+        if own is not None:
+            _compare_own_outputs(report, label, own, theirs.values, overrides)
     if not report.rows:
         report.skipped = "the cleaned function returns no Encoded array"
+
+
+def _compare_own_outputs(
+    report: Report,
+    label: str,
+    own: OurProgram,
+    theirs: dict[str, np.ndarray],
+    values: dict | None,
+) -> None:
+    """Every array Autolev's program computed (``theirs``, by its C name)
+    against the one al2py's program computes from a ``.in`` holding
+    ``values`` (names Autolev's function does not read are seeded, and
+    noted); ``values`` None: from the ``.in`` already in its folder."""
+    if values is not None:
+        names = own.in_names()
+        unread = [n for n in names if n not in values]
+        if unread and not any(n.startswith("al2py's .in also") for n in report.notes):
+            report.notes.append(
+                "al2py's .in also reads " + ", ".join(unread) + " (seeded values),"
+                " which Autolev's function does not"
+            )
+        own.write_in({n: values.get(n, _seeded(n, 0.5, 1.5)) for n in names})
+    ours = own.call_outputs()
+    for name, arr in theirs.items():
+        arr = np.ravel(arr)
+        what = f"{label}: {own.label} {name} ({arr.size})"
+        mine = ours.get(name.upper())
+        if mine is None or mine.shape != arr.shape:
+            got = "none" if mine is None else f"{mine.size} values"
+            report.rows.append(Row(what, math.inf, 0.0, f"al2py's program: {got}"))
+            continue
+        report.rows.append(Row(what, _rel(mine, arr), RHS_RTOL))
 
 
 # ------------------------------------------------------ MATLAB programs

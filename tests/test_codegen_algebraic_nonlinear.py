@@ -6,12 +6,16 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 from conftest import SHARED
 from test_codegen_c import _same_tables
 from test_codegen_targets import CC, LANGS, _code, _run, _set_in, needs
+
+ROOT = Path(__file__).resolve().parent.parent
 
 SUFFIX = {"c": ".c", "f": ".f", "m": ".m"}
 
@@ -167,3 +171,46 @@ def test_nosubs_nonlinear_c_gives_residuals_and_newton_step(tmp_path, capsys):
     jac = np.array([[4.0, 2.0], [-1.0, 1.0]])
     assert code == "0"
     assert [float(v) for v in values] == pytest.approx([*f, *np.linalg.solve(jac, -f)])
+
+
+# Variables declared before the constants and named so that sorting all
+# names together would mix them: Autolev's Algebraic programs read the
+# constants, then the variables, then their derivatives (BioMAC's
+# gait2d_osim_NoDer_raw.c: par__..., G1 .. G6, q1 .., q1p ..).  The CODE
+# file is named with a Windows path, as BioMAC's gait10dof18musc scripts do.
+ALG_ORDER = """\
+MotionVariables' Q{2}''
+Variables G{2}
+Constants ZK, Bk, a1
+E1 = ZK*Q1'' + Bk*Q2' + a1*G1 - Q1
+E2 = G2*Q2 + A1
+Encode E1, E2
+Code Algebraic() sub\\alg_raw.c
+"""
+
+
+@needs["c"]
+def test_algebraic_in_order_constants_then_variables(tmp_path, capsys):
+    script = tmp_path / "alg.al"
+    script.write_text(ALG_ORDER)
+    assert _code(script, tmp_path, capsys) == [
+        "Wrote",
+        str(tmp_path / "alg_raw.c"),
+        "Wrote",
+        str(tmp_path / "alg_raw.in"),
+    ]
+    lines = (tmp_path / "alg_raw.in").read_text().splitlines()[6:]
+    names = [line[21:41].strip() for line in lines if line[58:59] == "|"]
+    assert names == ["A1", "BK", "ZK", "G1", "G2", "Q1", "Q2", "Q2'", "Q1''"]
+    numbers = [0.5, 2.0, 3.0, 7.0, 11.0, 13.0, 17.0, 19.0, 23.0]
+    values = dict(zip(names, numbers, strict=True))
+    _set_in(tmp_path / "alg_raw.in", values)
+    # the harness the judge uses prints outputs() at full precision
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import autolev_programs as judge
+
+    own = judge.OurProgram(tmp_path / "alg_raw.c", None)
+    got = own.call_outputs()
+    assert list(got) == ["E1", "E2"]
+    assert got["E1"][0] == 3.0 * 23.0 + 2.0 * 19.0 + 0.5 * 7.0 - 13.0
+    assert got["E2"][0] == 11.0 * 17.0 + 0.5

@@ -260,7 +260,7 @@ def _check_in_this_process(
     job_failure = ""
     if run_jobs:
         job_failure = _run_jobs(module, display, workdir / "outputs")
-        result.jobs_run = len(getattr(module.al, "jobs", []))
+        result.jobs_run = len(module.al.numerics.jobs)
     if transcript is None:
         result.message = job_failure
         result.status = ERRORED if job_failure else PASSED
@@ -311,7 +311,7 @@ def _run_jobs(module, display: str, outdir: Path) -> str:
     """Perform every CODE job of an imported module ('' or what failed)."""
     from al2py_runtime.jobs.run import run_job
 
-    jobs = list(getattr(module.al, "jobs", []))
+    jobs = list(module.al.numerics.jobs)
     for job in jobs:
         try:
             result = run_job(job)

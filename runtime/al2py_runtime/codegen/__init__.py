@@ -37,7 +37,8 @@ LANG_SUFFIX = {"c": ".c", "m": ".m", "matlab": ".m", "f": ".f", "fortran": ".f"}
 def target_file(job: Job, lang: str | None = None) -> str:
     """The file a job's ``CODE`` statement names (``STEM.c`` if none); with
     ``lang`` (``c``, ``m``, ``f``) the same stem in that language."""
-    name = job.filename or f"{job.stem}.c"
+    # a Windows path names its file after the last backslash, as RUN's does
+    name = (job.filename or f"{job.stem}.c").replace("\\", "/")
     suffix = PurePath(name).suffix.lower()
     if lang is not None:
         want = LANG_SUFFIX[lang.lower()]

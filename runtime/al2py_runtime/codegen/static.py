@@ -23,6 +23,7 @@ from typing import Any
 
 import sympy as sp
 
+from ..jobs.records import normalize_name
 from ..jobs.run import (
     Column,
     Job,
@@ -61,10 +62,9 @@ def describe_static(
     taken = made.taken
     nonlinear = job.kind == "NONLINEAR"
     sweep = job.sweep[0] if job.sweep is not None else None
-    # Autolev's .in order: sorted without case (BioMAC's Algebraic .in files)
     pairs = sorted(
         zip(spec.params, spec.param_dummies, strict=True),
-        key=lambda od: in_order(label_of(od[0], job.names)),
+        key=lambda od: static_in_order(job, label_of(od[0], job.names)),
     )
     params = [obj for obj, _d in pairs]
     dummies = [d for _obj, d in pairs]
@@ -149,6 +149,19 @@ def describe_static(
         labels=eq_labels(job),
         unknowns=names,
     )
+
+
+def static_in_order(job: Job, name: str) -> tuple[int, str]:
+    """Autolev's ``.in`` order of an Algebraic or Nonlinear program: the
+    constants (and Specified quantities), then the variables, then their
+    first and their second derivatives, each group sorted without case
+    (BioMAC's gait2d_osim_NoDer_raw.c reads ``par__wind``, then ``G1 .. G6``
+    and ``q1 .. q9`` though the script declares ``q`` before ``G``, then
+    ``q1p ..``, ``q1pp ..``; docs/semantics.md)."""
+    primes, low = in_order(name)
+    base = normalize_name(name).rstrip("'")
+    variable = primes or job.entries.get(base, ("",))[0] == "variable"
+    return (1 + primes if variable else 0), low
 
 
 def _ranges(job: Job, quantity: Entry) -> list[Entry]:
