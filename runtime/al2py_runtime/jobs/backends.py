@@ -44,6 +44,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -54,6 +55,7 @@ import sympy as sp
 from sympy.printing.c import C99CodePrinter
 
 from ..vocabulary import numeric_namespace
+from .kutta import ADVANCE_C, StepError
 
 __all__ = [
     "BACKENDS",
@@ -114,6 +116,13 @@ class Bound:
 
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         raise NotImplementedError  # pragma: no cover
+
+    def stepper(
+        self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float
+    ) -> CStepper | None:
+        """Kutta-Merson compiled with the equations, or None (``run()``
+        then steps in Python: :class:`.kutta.KuttaMerson`)."""
+        return None
 
 
 @dataclass
@@ -699,7 +708,7 @@ def _rhs_lines(
         "        if (!isfinite(dy[i])) return 2;",
         "    return 0;",
         "}",
-        "",
+        ADVANCE_C,
     ]
     return lines
 
@@ -832,8 +841,8 @@ def cache_dir() -> Path:
     return base / "al2py"
 
 
-C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-shared")
-_UNIT_FLAGS = ("-std=c99", "-fPIC")
+C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-fno-math-errno", "-shared")
+_UNIT_FLAGS = ("-std=c99", "-fPIC", "-fno-math-errno")
 
 
 def build_shared(source: str) -> tuple[Path, bool]:
@@ -953,11 +962,67 @@ class _CBound(Bound):
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         return self._outs(t, y)
 
+    def stepper(
+        self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float
+    ) -> CStepper:
+        """Kutta-Merson from ``(t0, y0)`` inside the library."""
+        return CStepper(self._lib, self._p, t0, y0, step, abserr, relerr)
+
+
+#: ``al_advance`` keeps its budget in static variables: one call at a time
+_ADVANCE_LOCK = threading.Lock()
+
+
+class CStepper:
+    """The library's ``al_advance`` (:data:`.kutta.ADVANCE_C`): ``advance``
+    integrates ``y`` from ``t`` to a target time in one compiled call.
+    ``max_evals`` and ``seconds`` (processor time, 0: none) bound the call;
+    ``evals`` counts the evaluations so far."""
+
+    def __init__(self, lib, p, t0, y0, step, abserr, relerr) -> None:
+        self._lib, self._p = lib, p
+        self.y = np.array(y0, dtype=float)
+        self._s = np.array([t0, 0.0, t0, 0.0])  # t, sub-step, failure, seconds
+        self._n = np.array([20, 0, 0], dtype=np.int64)  # cuts, evals, budget
+        self._args = (float(step), float(abserr), float(relerr))
+        self.max_evals = 5_000_000
+        self.seconds = 0.0
+
+    @property
+    def t(self) -> float:
+        return float(self._s[0])
+
+    @property
+    def evals(self) -> int:
+        return int(self._n[1])
+
+    def advance(self, target: float) -> None:
+        self._s[3] = self.seconds
+        self._n[2] = self.max_evals
+        pp = self._p.ctypes.data if self._p.size else None
+        with _ADVANCE_LOCK:
+            code = self._lib.al_advance(
+                float(target),
+                *self._args,
+                pp,
+                self.y.ctypes.data,
+                self._s.ctypes.data,
+                self._n.ctypes.data,
+            )
+        if code == 1:
+            _raise(code, float(self._s[2]))
+        if code:
+            raise StepError(code, float(self._s[2]))
+
+
+#: a compiled evaluation whose value is not finite
+NOT_FINITE = "a value is not finite (division by zero or a math domain error)"
+
 
 def _raise(code: int, t: float) -> None:
     if code == 1:
         raise SingularMatrixError(t)
-    raise ValueError("a value is not finite (division by zero or a math domain error)")
+    raise ValueError(NOT_FINITE)
 
 
 def _build_c(spec: DynamicsSpec) -> Compiled:
@@ -978,6 +1043,8 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
             ctypes.c_void_p,
         ]
         fn.restype = ctypes.c_int
+    lib.al_advance.argtypes = [ctypes.c_double] * 4 + [ctypes.c_void_p] * 4
+    lib.al_advance.restype = ctypes.c_int
     ny = len(spec.states)
     nout = sum(map(len, spec.outputs))
     rows = [len(r) for r in spec.outputs]
