@@ -117,6 +117,15 @@ class Bound:
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         raise NotImplementedError  # pragma: no cover
 
+    def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
+        """Every output (all tables side by side) at each time, the states
+        ``ys[:, i]``; ``clock[0]`` is the time being evaluated."""
+        rows = []
+        for i, tt in enumerate(times):
+            clock[0] = float(tt)
+            rows.append([x for row in self.outputs(clock[0], ys[:, i]) for x in row])
+        return np.array(rows, dtype=float).reshape(len(rows), -1)
+
     def stepper(
         self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float
     ) -> CStepper | None:
@@ -958,9 +967,23 @@ class _CBound(Bound):
 
         self.rhs = rhs
         self._outs = outs
+        self._nout = nout
 
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         return self._outs(t, y)
+
+    def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
+        out = np.empty((len(times), max(self._nout, 1)))
+        yt = np.ascontiguousarray(ys.T, dtype=float)
+        c_out, pp = self._lib.al_out, self._pp
+        size, rows = out.itemsize * out.shape[1], yt.itemsize * yt.shape[1]
+        o, y = out.ctypes.data, yt.ctypes.data
+        for i, tt in enumerate(times):
+            clock[0] = t = float(tt)
+            code = c_out(t, y + i * rows, pp, o + i * size)
+            if code:
+                _raise(code, t)
+        return out[:, : self._nout]
 
     def stepper(
         self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float

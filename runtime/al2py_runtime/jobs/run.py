@@ -782,7 +782,7 @@ class OdeSystem:
     compiled: _Dynamics
     params: list[float]
     clock: list[float]
-    bound: backends.Bound | None = None
+    bound: backends.Bound
 
 
 def _compiled(
@@ -876,24 +876,22 @@ def _run_dynamics(
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
     try:
         ys, nfev = _integrate(job, system, times, ip)
-        tables = []
         factors = output_factors(job, vals)
-        rows_all = [[] for _ in job.outputs]
-        for i, tt in enumerate(times):
-            clock[0] = float(tt)
-            for rows, row in zip(
-                rows_all, system.outputs(clock[0], ys[:, i]), strict=True
-            ):
-                rows.append(row)
+        try:
+            values = system.bound.table(times, ys, clock)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
     except NumericsError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
         hint = "; check the Input values" if vals.notes else ""
         raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None
-    for number, (cols, rows, fac, spec) in enumerate(
-        zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
+    tables, k = [], 0
+    for number, (cols, fac, spec) in enumerate(
+        zip(_columns(job), factors, job.outputs, strict=True), start=1
     ):
-        data = np.array(rows, dtype=float).reshape(len(rows), len(cols)) * fac
+        data = values[:, k : k + len(cols)] * fac
+        k += len(cols)
         tables.append(Table(number, cols, data, spec.line, spec.encoded))
     states = {"T": np.asarray(times, dtype=float)}
     for j, name in enumerate(c.state_names):
@@ -922,7 +920,7 @@ def _integrate(
     args = (t0, system.y0, ip["INTEGSTP"], ip["ABSERR"], ip["RELERR"])
     ys = np.empty((len(system.y0), len(times)))
     ys[:, 0] = system.y0
-    compiled = system.bound.stepper(*args) if system.bound is not None else None
+    compiled = system.bound.stepper(*args)
     meter = budget.Meter(job.where, t0, t1)
     if compiled is not None:
         compiled.max_evals = meter.max_evals
