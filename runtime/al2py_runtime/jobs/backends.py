@@ -212,19 +212,31 @@ def compile_dynamics(spec: DynamicsSpec, backend: str | None = None) -> Compiled
     ``lambdify``; ``None`` reads ``$AL2PY_BACKEND``).  An explicit backend
     that cannot be used raises :class:`BackendError`; ``auto`` falls back."""
     name = choose(backend)
-    spec = _canonical(spec)
-    builders = {"c": _build_c, "llvm": _build_llvm, "lambdify": _build_lambdify}
+    canonical: list[DynamicsSpec] = []
+
+    def form(candidate: str) -> DynamicsSpec:
+        if candidate == "c":
+            return spec  # printed with names (_c_form): no substitution
+        if not canonical:
+            canonical.append(_canonical(spec))
+        return canonical[0]
+
+    builders = {
+        "c": lambda: _build_c(form("c")),
+        "llvm": lambda: _build_llvm(form("llvm")),
+        "lambdify": lambda: _build_lambdify(form("lambdify")),
+    }
     if name != "auto":
         if not available(name):
             raise BackendError(_unavailable(name))
-        return builders[name](spec)
+        return builders[name]()
     reasons = []
     for candidate in BACKENDS:
         if not available(candidate):
             reasons.append(_unavailable(candidate))
             continue
         try:
-            compiled = builders[candidate](spec)
+            compiled = builders[candidate]()
         except BackendError as exc:
             reasons.append(str(exc))
             continue
@@ -528,7 +540,9 @@ class CPrinter(C99CodePrinter):
     """C99 with small integer powers as products and Autolev's functions;
     with ``z_array`` the intermediates ``zK`` are the elements ``z[K]``."""
 
-    def __init__(self, z_array: bool = False) -> None:
+    def __init__(
+        self, z_array: bool = False, names: dict[Any, str] | None = None
+    ) -> None:
         super().__init__(
             {
                 "strict": True,
@@ -541,12 +555,17 @@ class CPrinter(C99CodePrinter):
             }
         )
         self._z_array = z_array
+        self._names = names or {}
 
     def _print_Symbol(self, expr: Any) -> str:
-        name = expr.name
+        name = self._names.get(expr, expr.name)
         if self._z_array and name[:1] == "z" and name[1:].isdigit():
             return f"z[{name[1:]}]"  # an intermediate kept in the array z
+        if expr in self._names:
+            return name
         return super()._print_Symbol(expr)
+
+    _print_Dummy = _print_Symbol
 
     def _print_Pi(self, expr: Any) -> str:
         return repr(math.pi)
@@ -648,8 +667,8 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     that is not finite.  ``int al_out(double t, const double *y,
     const double *p, double *out)`` writes every output, table after table.
     ``api`` prefixes both (``static`` for a standalone program)."""
-    spec = _canonical(spec) if not _is_canonical(spec) else spec
-    printer = CPrinter()
+    spec, names = _c_form(spec)
+    printer = CPrinter(names=names)
     lines = _rhs_lines(spec, printer, api, "static ")
     lines += _out_head(spec, api)
     all_out = [e for row in spec.outputs for e in row]
@@ -768,14 +787,14 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
     right-hand side (``-O2``), and when the outputs need more than
     :data:`SPLIT` intermediates, ``al_out`` and its intermediates in parts
     (kept in one array ``z``, functions of :data:`_CHUNK` statements)."""
-    spec = _canonical(spec) if not _is_canonical(spec) else spec
-    printer = CPrinter()
+    spec, names = _c_form(spec)
+    printer = CPrinter(names=names)
     all_out = [e for row in spec.outputs for e in row]
     zs = needed(spec.intermediates, all_out)
     if len(zs) <= SPLIT:
         return [(c_model_source(spec), ("-O2",))]
     rhs = "\n".join(_rhs_lines(spec, printer, "", ""))
-    arrays = CPrinter(z_array=True)
+    arrays = CPrinter(z_array=True, names=names)
     args = "double t, const double *y, const double *p, const double *ud, double *z"
     bodies = []
     for k in range(0, len(zs), _CHUNK):
@@ -796,7 +815,7 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
         units.append(
             ("#include <math.h>\n\n" + "\n".join(bodies[k : k + per]), OUT_FLAGS)
         )
-    size = max(int(str(s)[1:]) for s, _e in zs) + 1
+    size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
     main = _header(spec)
     main += ["#include <stdlib.h>", "", f"{_MF};"]
     main += [f"void al_z{j}({args});" for j in range(len(bodies))]
@@ -817,9 +836,30 @@ def _intermediates(
 ) -> list[str]:
     """Declarations of the intermediates that ``exprs`` need, in order."""
     return [
-        f"{indent}const double {s} = {c_expression(e, printer)};"
+        f"{indent}const double {c_expression(s, printer)} = {c_expression(e, printer)};"
         for s, e in needed(spec.intermediates, exprs)
     ]
+
+
+def _c_form(spec: DynamicsSpec) -> tuple[DynamicsSpec, dict[Any, str]]:
+    """``spec`` and the C names of its symbols (``t``, ``y[k]``, ``ud[k]``,
+    ``p[k]``, ``zK``) when they all are symbols (a job's are), so that the
+    printer names them and no expression is rebuilt; else the canonical form
+    (:func:`_canonical`) and no names."""
+    if _is_canonical(spec):
+        return spec, {}
+    groups = (("y", spec.states), ("ud", spec.accels), ("p", spec.params))
+    objs = [spec.time, *(o for _p, g in groups for o in g)]
+    objs += [z for z, _e in spec.intermediates]
+    if not all(isinstance(o, sp.Symbol) for o in objs):
+        return _canonical(spec), {}
+    names: dict[Any, str] = {spec.time: "t"}
+    for prefix, group in groups:
+        names.update((o, f"{prefix}[{k}]") for k, o in enumerate(group))
+    names.update((z, f"z{k}") for k, (z, _e) in enumerate(spec.intermediates))
+    if len(names) != len(objs):  # one symbol in two roles
+        return _canonical(spec), {}
+    return spec, names
 
 
 def _is_canonical(spec: DynamicsSpec) -> bool:
