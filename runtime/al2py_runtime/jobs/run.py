@@ -223,7 +223,7 @@ class _Slots:
             rule[sym] = self.known[sym]
         for obj in (*zs, *derivs, *funcs):
             rule[obj] = self.known[obj]
-        return body.xreplace(rule)
+        return renamed(body, rule)
 
     def _derivative_param(self, obj: Any, what: str) -> None:
         """A derivative with no right-hand side: a parameter when it is the
@@ -247,6 +247,24 @@ class _Slots:
 
     def label(self, obj: Any) -> str:
         return label_of(obj, self.job.names)
+
+
+def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
+    """``expr.xreplace(rule)`` for a rule that only renames (objects to
+    distinct symbols): sums, products and powers are rebuilt as they are,
+    without sympy's evaluation, which is most of the cost of substituting
+    into thousands of intermediates and cannot change anything here."""
+    found = rule.get(expr)
+    if found is not None:
+        return found
+    if not expr.args:
+        return expr
+    args = [renamed(a, rule) for a in expr.args]
+    if all(a is b for a, b in zip(args, expr.args, strict=True)):
+        return expr
+    if isinstance(expr, sp.Add | sp.Mul | sp.Pow):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
 
 
 def label_of(obj: Any, names: Mapping[Any, str]) -> str:
