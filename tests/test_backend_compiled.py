@@ -338,6 +338,11 @@ def test_large_outputs_compile_in_parallel_parts(monkeypatch):
     units = backends.c_model_units(spec)
     assert len(units) >= 3  # the right-hand side, the parts, al_out
     assert units[0][1] == ("-O2",) and units[-1][1] == backends.OUT_FLAGS
+    # a function of the states alone is computed once, in al_out, before the
+    # parts (which read it from z); functions of intermediates stay in place
+    assert units[-1][0].count("sin(y[0])") == 1
+    assert not any("sin(" in text for text, _flags in units[1:-1])
+    assert all("cos(z[" in text for text, _flags in units[1:-1])
     compiled = backends.compile_dynamics(spec, "c")
     reference = backends.compile_dynamics(spec, "lambdify")
     rng = random.Random(5)

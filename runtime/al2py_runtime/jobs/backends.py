@@ -542,7 +542,10 @@ class CPrinter(C99CodePrinter):
     with ``z_array`` the intermediates ``zK`` are the elements ``z[K]``."""
 
     def __init__(
-        self, z_array: bool = False, names: dict[Any, str] | None = None
+        self,
+        z_array: bool = False,
+        names: dict[Any, str] | None = None,
+        hoist: tuple[set[Any], int] | None = None,
     ) -> None:
         super().__init__(
             {
@@ -557,6 +560,24 @@ class CPrinter(C99CodePrinter):
         )
         self._z_array = z_array
         self._names = names or {}
+        self._hoist = hoist
+        #: with ``hoist = (symbols, base)``: each call of a function of those
+        #: symbols alone, printed, and the element ``z[base + k]`` it is kept in
+        self.hoisted: dict[str, str] = {}
+
+    def _print(self, expr: Any, **kwargs: Any) -> str:
+        text = super()._print(expr, **kwargs)
+        if (
+            self._hoist is not None
+            and isinstance(expr, sp.Function)
+            and expr.free_symbols <= self._hoist[0]
+        ):
+            found = self.hoisted.get(text)
+            if found is None:
+                found = f"z[{self._hoist[1] + len(self.hoisted)}]"
+                self.hoisted[text] = found
+            return found
+        return text
 
     def _print_Symbol(self, expr: Any) -> str:
         name = self._names.get(expr, expr.name)
@@ -801,7 +822,7 @@ def _out_tail(spec: DynamicsSpec, printer: CPrinter) -> list[str]:
 SPLIT = 400
 #: statements per C function in the parts (compile time grows faster than
 #: the size of a function)
-_CHUNK = 200
+_CHUNK = 50
 #: the outputs are evaluated once per printed row, not per step: compiling
 #: thousands of their statements with -O2 took most of a large model's
 #: first run (the Whipple bicycle's Encode'd Jacobians: 10 s of 12)
@@ -820,7 +841,10 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
     if len(zs) <= SPLIT:
         return [(c_model_source(spec), ("-O2",))]
     rhs = "\n".join(_rhs_lines(spec, printer, "", ""))
-    arrays = CPrinter(z_array=True, names=names)
+    size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
+    # sin(q1) and the like, used all over the parts: computed once, first
+    hoist = {spec.time, *spec.states, *spec.params}
+    arrays = CPrinter(z_array=True, names=names, hoist=(hoist, size))
     args = "double t, const double *y, const double *p, const double *ud, double *z"
     bodies = []
     for k in range(0, len(zs), _CHUNK):
@@ -841,7 +865,8 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
         units.append(
             ("#include <math.h>\n\n" + "\n".join(bodies[k : k + per]), OUT_FLAGS)
         )
-    size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
+    tail = _out_tail(spec, arrays)
+    size += len(arrays.hoisted)
     main = _header(spec)
     main += ["#include <stdlib.h>", "", f"{_MF};"]
     main += [f"void al_z{j}({args});" for j in range(len(bodies))]
@@ -849,9 +874,9 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
     main += [
         f"    double *z = malloc({size} * sizeof(double));",
         "    if (!z) return 2;",
+        *(f"    {at} = {text};" for text, at in arrays.hoisted.items()),
         *(f"    al_z{j}(t, y, p, ud, z);" for j in range(len(bodies))),
     ]
-    tail = _out_tail(spec, arrays)
     main += [*tail[:-3], "    free(z);", *tail[-3:]]
     units.append(("\n".join(main), OUT_FLAGS))
     return units
