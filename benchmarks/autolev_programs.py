@@ -464,7 +464,7 @@ def _al_name(cname: str, variables: dict[str, int]) -> str:
 
 
 def job_for(module, program: str):
-    for job in module.al.jobs:
+    for job in module.al.numerics.jobs:
         if job.filename and Path(job.filename.replace("\\", "/")).name.lower() == (
             Path(program).name.lower()
         ):
@@ -517,7 +517,15 @@ def _rel(a: np.ndarray, b: np.ndarray) -> float:
 # --------------------------------------------------------------- checking
 
 
-def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Report:
+def check(
+    pair: Pair,
+    root: Path | None = None,
+    keep: Path | None = None,
+    same_language: bool = False,
+) -> Report:
+    """Compare Autolev's program with al2py's module; with ``same_language``
+    also with the program ``al2py code`` writes for the same ``CODE``
+    statement (rows named ``al2py C``/``al2py MATLAB``)."""
     report = Report(pair)
     start = time.perf_counter()
     if pair.kind == "matlab" and shutil.which("octave") is None:
@@ -540,14 +548,18 @@ def check(pair: Pair, root: Path | None = None, keep: Path | None = None) -> Rep
         if pair.kind == "cleaned":  # the CODE statement wrote X_raw.c
             written = str(Path(pair.program).with_suffix("")) + "_raw.c"
         job = job_for(module, written)
+        ours = None
+        if same_language:
+            run_dir = work if script.parent != work else None
+            ours = OurProgram.write(report, script, written, run_dir)
         if pair.kind == "cleaned":
-            _check_cleaned(report, module, job, program)
+            _check_cleaned(report, module, job, program, ours)
         elif pair.kind == "matlab":
-            _check_matlab(report, module, job, program)
+            _check_matlab(report, module, job, program, ours)
         elif job.kind in ("DYNAMICS", "ODE"):
-            _check_dynamics(report, module, job, program)
+            _check_dynamics(report, module, job, program, ours)
         else:
-            _check_algebraic(report, module, job, program)
+            _check_algebraic(report, module, job, program, ours)
     report.seconds = time.perf_counter() - start
     return report
 
@@ -568,7 +580,9 @@ def _integration_for(job, tight: bool = True) -> dict[str, float]:
     }
 
 
-def _check_dynamics(report: Report, module, job, program: Path) -> None:
+def _check_dynamics(
+    report: Report, module, job, program: Path, ours: OurProgram | None = None
+) -> None:
     from al2py_runtime.jobs import run as rjobs
 
     prog = _unshadow(report, program)
@@ -581,6 +595,11 @@ def _check_dynamics(report: Report, module, job, program: Path) -> None:
             for name in prog.state:
                 values[name.upper()] = _seeded(name + "~", -0.5, 0.5)
         values = _run_program(report, label, prog, exe, values)
+        if ours is not None and prog.outfiles:
+            # the very .in file Autolev's program read
+            shutil.copy(cwd / prog.infile, ours.folder / prog.infile)
+            ours.run()
+            _compare_files(report, f"{label}: {ours.label}", cwd, ours.folder)
         overrides = _overrides(prog, job, values)
         result = rjobs.run_job(job, overrides)
         tables = (
@@ -673,6 +692,200 @@ def _compare_tables(report, label, tables, cwd: Path, pattern: str) -> None:
         )
 
 
+def _compare_files(report, label, theirs_dir: Path, ours_dir: Path) -> None:
+    """Each output file Autolev's program wrote (``STEM.1``, ...) against
+    the one al2py's program wrote, column by column (the tables' rule)."""
+    files = sorted(
+        f
+        for f in theirs_dir.iterdir()
+        if re.fullmatch(r"\d+", f.suffix[1:] or "x") and f.is_file()
+    )
+    if not files:
+        report.rows.append(Row(f"{label}: output files", math.inf, 0.0, "none"))
+    for theirs_file in files:
+        ours_file = ours_dir / theirs_file.name
+        what = f"{label}: {theirs_file.name}"
+        if not ours_file.exists():
+            report.rows.append(Row(what, math.inf, 0.0, "al2py wrote no such file"))
+            continue
+        theirs, ours = read_table(theirs_file), read_table(ours_file)
+        if theirs.shape != ours.shape:
+            detail = f"Autolev {theirs.shape}, al2py {ours.shape}"
+            report.rows.append(Row(f"{what} shape", math.inf, 0.0, detail))
+            continue
+        worst, allowed, where = 0.0, 0.0, 0
+        for j in range(theirs.shape[1]):
+            tol = TABLE_ATOL + TABLE_RTOL * np.max(np.abs(theirs[:, j]))
+            err = float(np.max(np.abs(theirs[:, j] - ours[:, j])))
+            if err / tol > (worst / allowed if allowed else -1):
+                worst, allowed, where = err, tol, j + 1
+        shape = f"{ours.shape[0]}x{ours.shape[1]}"
+        report.rows.append(
+            Row(f"{what} ({shape})", worst, allowed, f"worst column {where}")
+        )
+
+
+@dataclass
+class OurProgram:
+    """The program ``al2py code`` writes for the same ``CODE`` statement,
+    in the language of Autolev's (C compiled with ``cc -std=c99``, MATLAB
+    run in Octave), in its own folder."""
+
+    path: Path
+    exe: Path | None
+
+    @property
+    def folder(self) -> Path:
+        return self.path.parent
+
+    @property
+    def label(self) -> str:
+        return "al2py C" if self.path.suffix == ".c" else "al2py MATLAB"
+
+    @classmethod
+    def write(
+        cls, report: Report, script: Path, written: str, run_dir: Path | None
+    ) -> OurProgram | None:
+        folder = script.parent / "al2py_code"
+        env = dict(os.environ)
+        if run_dir is not None:
+            env["AUTOLEVPATH"] = str(run_dir)
+        proc = subprocess.run(
+            [sys.executable, "-m", "al2py", "code", script.name, "-o", str(folder)],
+            cwd=script.parent,
+            capture_output=True,
+            text=True,
+            env=env,
+        )
+        path = folder / Path(written.replace("\\", "/")).name
+        if not path.exists():
+            why = (proc.stderr or proc.stdout).strip().splitlines()
+            report.notes.append(
+                f"al2py code wrote no {path.name}: {why[-1] if why else proc.returncode}"
+            )
+            return None
+        exe = None
+        if path.suffix == ".c":
+            exe = path.with_suffix(".exe")
+            subprocess.run(
+                ["cc", "-O0", "-std=c99", "-o", str(exe), str(path), "-lm"],
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+        return cls(path, exe)
+
+    def run(self) -> None:
+        for old in self.folder.glob(f"{self.path.stem}.[0-9]*"):
+            old.unlink()
+        if self.exe is not None:
+            cmd = [str(self.exe)]
+        else:
+            cmd = [*_OCTAVE, "--eval", self.path.stem]
+        proc = subprocess.run(
+            cmd, cwd=self.folder, capture_output=True, text=True, timeout=1800
+        )
+        if proc.returncode or "error" in proc.stderr.lower():
+            raise RuntimeError(f"al2py's program failed:\n{proc.stderr[-2000:]}")
+
+    def in_names(self) -> list[str]:
+        """The names our ``STEM.in`` reads, in order (upper case)."""
+        path = self.folder / f"{self.path.stem}.in"
+        return [
+            line[21:42].strip().upper()
+            for line in path.read_text().splitlines()[6:]
+            if len(line) >= 59 and line[58] == "|"
+        ]
+
+    def write_in(self, values: dict[str, float]) -> None:
+        """Our ``STEM.in`` with ``values`` (by the script's name, upper case)
+        put from column 60: the values Autolev's MATLAB program holds."""
+        path = self.folder / f"{self.path.stem}.in"
+        lines = path.read_text().splitlines()
+        for k, line in enumerate(lines[6:], start=6):
+            if len(line) < 59 or line[58] != "|":
+                continue
+            name = line[21:42].strip().upper()
+            if name not in values:
+                raise LookupError(f"al2py's {path.name} reads {name}, Autolev's not")
+            lines[k] = f"{line[:58]}| {values[name]!r}"
+        path.write_text("\n".join(lines) + "\n")
+
+    def call_outputs(self) -> dict[str, np.ndarray]:
+        """The quantities al2py's C program computes from its ``STEM.in``,
+        at full precision: a harness includes the program (its ``main``
+        renamed), reads the ``.in`` with the program's own ``al_start``,
+        calls its ``outputs`` and prints every value (an ``Encode``d array
+        has no output file).  Keyed by the column labels of the program's
+        headers: ``FK[1]``, ``DFK_DQ[1,2]`` ... grouped as ``FK``, ``DFK_DQ``
+        (row by row)."""
+        source = self.path.read_text()
+        labels = _header_labels(source)
+        stem = self.path.stem
+        harness = self.folder / "al2py_own_harness.c"
+        exe = harness.with_suffix(".exe")
+        if not exe.exists():
+            harness.write_text(_OWN_HARNESS.format(program=self.path.name))
+            subprocess.run(
+                ["cc", "-O0", "-std=c99", "-w", "-I", str(self.folder)]
+                + ["-o", str(exe), str(harness), "-lm"],
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+        proc = subprocess.run(
+            [str(exe)], cwd=self.folder, capture_output=True, text=True, timeout=600
+        )
+        if proc.returncode or proc.stderr:
+            raise RuntimeError(f"al2py's {stem} failed:\n{proc.stderr[-2000:]}")
+        values = [float(x) for x in proc.stdout.split()]
+        if len(values) != len(labels):
+            raise RuntimeError(
+                f"al2py's {stem}: {len(values)} outputs, {len(labels)} column labels"
+            )
+        found: dict[str, list[float]] = {}
+        for label, value in zip(labels, values, strict=True):
+            found.setdefault(label.split("[")[0].upper(), []).append(value)
+        return {k: np.array(v) for k, v in found.items()}
+
+
+#: main() of the harness around al2py's Algebraic C program (no range: the
+#: constants p are the inputs v, as the program's own main copies them).
+_OWN_HARNESS = """\
+#define main al2py_program_main
+#include "{program}"
+#undef main
+#if AL_NIN != AL_NP
+#error "the harness calls an Algebraic program without a range"
+#endif
+int main(void)
+{{
+    char name[] = "al2py_own_harness";
+    char *argv[] = {{name, 0}};
+    double v[AL_NIN > 0 ? AL_NIN : 1], p[AL_NP > 0 ? AL_NP : 1], y[1] = {{0.0}};
+    static double out[AL_NOUT > 0 ? AL_NOUT : 1];
+    if (al_start(1, argv, v)) return 2;
+    for (int i = 0; i < AL_NP; i++) p[i] = v[i];
+    int code = outputs(AL_T0, y, p, out);
+    for (int i = 0; i < AL_NOUT; i++) printf("%.17g\\n", out[i] * al_factor[i]);
+    return code;
+}}
+"""
+
+
+def _header_labels(source: str) -> list[str]:
+    """The column labels of al2py's C program, every table in order: the
+    third line of each ``al_header`` string (``%      FK[1]    FK[2] ...``)."""
+    block = re.search(r"al_header\[\d+\] = \{(.*?)\n\};", source, re.S)
+    if block is None:
+        raise ValueError("al2py's program has no al_header")
+    labels = []
+    for text in re.findall(r'"((?:[^"\\]|\\.)*)"', block.group(1)):
+        lines = text.split("\\n")
+        labels += lines[2].lstrip("%").split()
+    return labels
+
+
 def _unshadow(report: Report, program: Path) -> CProgram:
     """Parse the program; where a local hides a script name, note it and
     compile the program with the local renamed (Autolev's defect, not the
@@ -704,7 +917,12 @@ def _compare_encoded(report, label, job, lib, result, row) -> None:
         )
 
 
-def _check_algebraic(report: Report, module, job, program: Path) -> None:
+def _check_algebraic(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
+    """Run Autolev's program on seeded values and compare its Encoded
+    arrays with the module's; with ``own``, also with those al2py's C
+    program computes from the very ``.in`` Autolev's program read."""
     prog = _unshadow(report, program)
     cwd = program.parent
     values = _values(prog, job, {})
@@ -721,6 +939,11 @@ def _check_algebraic(report: Report, module, job, program: Path) -> None:
     lib = Loaded(compile_program(program, shared=True), prog)
     lib.main(cwd)
     _compare_encoded(report, "seeded values", job, lib, result, row=0)
+    if own is not None and own.path.suffix == ".c":
+        shutil.copy(cwd / prog.infile, own.folder / f"{own.path.stem}.in")
+        encoded = {k.upper() for k in job.encoded}
+        theirs = {a: lib.array(a) for a in prog.arrays if a.upper() in encoded}
+        _compare_own_outputs(report, "seeded values", own, theirs, None)
     if not report.rows:
         report.skipped = "the program computes no Encoded array to compare"
 
@@ -822,10 +1045,14 @@ class _Printed:
         return self.values[name]
 
 
-def _check_cleaned(report: Report, module, job, program: Path) -> None:
+def _check_cleaned(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
     """Call the cleaned function at the script's Inputs and at two seeded
     states through a C harness written here, and compare every Encoded
-    array it returns with the module's."""
+    array it returns with the module's; with ``own`` (al2py's C program for
+    the same CODE statement) also with the arrays that program computes
+    from a ``.in`` holding the same values (see OurProgram.call_outputs)."""
     from al2py_runtime.jobs import run as rjobs
 
     source = program.read_text(encoding="latin-1")
@@ -871,9 +1098,44 @@ def _check_cleaned(report: Report, module, job, program: Path) -> None:
             [str(exe)], capture_output=True, text=True, check=True, timeout=600
         )
         result = rjobs.run_job(job, overrides)
-        _compare_encoded(report, label, job, _Printed(proc.stdout), result, row=0)
+        theirs = _Printed(proc.stdout)
+        _compare_encoded(report, label, job, theirs, result, row=0)
+        if own is not None:
+            _compare_own_outputs(report, label, own, theirs.values, overrides)
     if not report.rows:
         report.skipped = "the cleaned function returns no Encoded array"
+
+
+def _compare_own_outputs(
+    report: Report,
+    label: str,
+    own: OurProgram,
+    theirs: dict[str, np.ndarray],
+    values: dict | None,
+) -> None:
+    """Every array Autolev's program computed (``theirs``, by its C name)
+    against the one al2py's program computes from a ``.in`` holding
+    ``values`` (names Autolev's function does not read are seeded, and
+    noted); ``values`` None: from the ``.in`` already in its folder."""
+    if values is not None:
+        names = own.in_names()
+        unread = [n for n in names if n not in values]
+        if unread and not any(n.startswith("al2py's .in also") for n in report.notes):
+            report.notes.append(
+                "al2py's .in also reads " + ", ".join(unread) + " (seeded values),"
+                " which Autolev's function does not"
+            )
+        own.write_in({n: values.get(n, _seeded(n, 0.5, 1.5)) for n in names})
+    ours = own.call_outputs()
+    for name, arr in theirs.items():
+        arr = np.ravel(arr)
+        what = f"{label}: {own.label} {name} ({arr.size})"
+        mine = ours.get(name.upper())
+        if mine is None or mine.shape != arr.shape:
+            got = "none" if mine is None else f"{mine.size} values"
+            report.rows.append(Row(what, math.inf, 0.0, f"al2py's program: {got}"))
+            continue
+        report.rows.append(Row(what, _rel(mine, arr), RHS_RTOL))
 
 
 # ------------------------------------------------------ MATLAB programs
@@ -945,7 +1207,9 @@ def _octave(cwd: Path, command: str) -> str:
     return proc.stdout
 
 
-def _check_matlab(report: Report, module, job, program: Path) -> None:
+def _check_matlab(
+    report: Report, module, job, program: Path, own: OurProgram | None = None
+) -> None:
     """Run the MATLAB program in GNU Octave on the script's Inputs (values
     edited into ``ReadUserInput``) and on a perturbed state; compare its
     output files with ``run()``'s tables, ``mdlDerivatives`` at the
@@ -988,6 +1252,11 @@ def _check_matlab(report: Report, module, job, program: Path) -> None:
         out = _octave(cwd, f"{glob}{program.stem}; {printing}")
         if mprog.outfiles:
             _compare_tables(report, label, tables, cwd, mprog.outfiles)
+            if own is not None:
+                by_name = {_al_name(k, variables): v for k, v in values.items()}
+                own.write_in(by_name)
+                own.run()
+                _compare_files(report, f"{label}: {own.label}", cwd, own.folder)
         if encoded:
             _compare_encoded(report, label, job, _OctavePrinted(out), result, 0)
         if dynamic:
@@ -1042,6 +1311,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--list", action="store_true", help="list the pairs found")
     ap.add_argument("--root", type=Path, default=None, help="mirror root ($ALMIRROR)")
     ap.add_argument("--keep", type=Path, default=None, help="work in this folder")
+    ap.add_argument(
+        "--same-language",
+        action="store_true",
+        help="also run the program al2py code writes (same language, same .in)",
+    )
     args = ap.parse_args(argv)
     pairs = [
         p
@@ -1061,7 +1335,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.keep:
             args.keep.mkdir(parents=True, exist_ok=True)
         try:
-            rep = check(p, args.root, args.keep)
+            rep = check(p, args.root, args.keep, args.same_language)
         except Exception as exc:  # noqa: BLE001 - a report line per pair
             print(f"{p.name:40} error: {str(exc).strip()[:300]}")
             failed = True

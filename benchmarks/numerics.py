@@ -263,7 +263,7 @@ def _import(source: str, name: str, workdir: Path):
 
 def al2py_model(module):
     """(spec, parameter values, initial state) of the module's CODE job."""
-    job = module.al.jobs[-1]
+    job = module.al.numerics.jobs[-1]
     vals, keep = jobs.input_values(job, {})
     c = jobs.dynamics_equations(job, frozenset(keep))
     p = [vals.param(obj) for obj in c.params]

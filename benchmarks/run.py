@@ -56,7 +56,7 @@ def measure(n: int, workdir: Path) -> dict[str, float]:
     )
 
     def fresh_run():
-        for job in module.al.jobs:  # each run() regenerates its functions
+        for job in module.al.numerics.jobs:  # each run() regenerates its functions
             job.cache.clear()
         return module.run()
 

@@ -78,7 +78,7 @@ module = importlib.util.module_from_spec(spec)
 start = time.perf_counter()
 spec.loader.exec_module(module)
 t_import = time.perf_counter() - start
-job = next(j for j in module.al.jobs
+job = next(j for j in module.al.numerics.jobs
            if j.filename and j.filename.lower().endswith(program.lower()))
 times = []
 for _ in range(4):

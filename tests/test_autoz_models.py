@@ -238,7 +238,7 @@ def test_algebraic_job_with_rates_same_with_autoz(tmp_path):
         name = f"rates_{'on' if on else 'off'}"
         result = convert(source, str(tmp_path / f"{name}.al"))
         module = load_module(result.code, tmp_path, name)
-        results.append(module.al.run(RATES_VALUES))
+        results.append(module.al.numerics.run(RATES_VALUES))
     off, on = results
     names = off.tables[0].names
     assert on.tables[0].names == names and len(names) == 12
@@ -312,7 +312,7 @@ def test_nonlinear_job_through_intermediates(tmp_path):
         module = load_module(result.code, tmp_path, name)
         if on:
             assert has_intermediates(module.al.value("LOOP"))
-        results.append(module.al.run())
+        results.append(module.al.numerics.run())
     off, on = results
     for name in ("QB", "QC"):
         assert on[name][0] == pytest.approx(off[name][0], abs=1e-9)

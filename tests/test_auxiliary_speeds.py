@@ -208,7 +208,7 @@ def test_spherical_run_integrates(models):
     eqs, newton, energy = _spherical_by_hand(first)
     q4, q5, u4, u5 = _symbols(first, "Q4 Q5 U4 U5")
     consts = _symbols(first, "G L M IA IC")
-    params = {c: float(first.al.input_value(c.name, True)) for c in consts}
+    params = {c: float(first.al.numerics.input_value(c.name, True)) for c in consts}
     accels = [_acc(u4), _acc(u5)]
     state = [q4, q5, u4, u5]
     mm = sp.lambdify(state, eqs[0].subs(params))
@@ -287,7 +287,7 @@ def test_planar_run_integrates(models):
     u3d, newton, energy = _planar_by_hand(first)
     q3, u3 = _symbols(first, "Q3 U3")
     consts = _symbols(first, "G L M IZ")
-    params = {c: float(first.al.input_value(c.name, True)) for c in consts}
+    params = {c: float(first.al.numerics.input_value(c.name, True)) for c in consts}
     total = sp.lambdify([q3, u3], energy.subs(params))
     law = sp.lambdify([q3, u3], [e.subs(params) for e in newton])
     result = first.run()

@@ -283,7 +283,7 @@ def test_ode_function_integrates_to_run_results(tutorial, name):
     from scipy.integrate import solve_ivp
 
     module = tutorial("tutor6")
-    f, y0, names = module.al.ode_function(QA=30, backend=name)
+    f, y0, names = module.al.numerics.ode_function(QA=30, backend=name)
     assert names[:4] == ["U1", "U2", "QA", "QB"]  # declaration order
     assert y0[2] == pytest.approx(np.radians(30))
     result = module.run(QA=30, TFINAL=2, backend=name)
@@ -291,7 +291,7 @@ def test_ode_function_integrates_to_run_results(tutorial, name):
     assert np.degrees(sol.y[2, -1]) == pytest.approx(float(result["QA"][-1]), abs=1e-4)
     assert np.degrees(sol.y[3, -1]) == pytest.approx(float(result["QB"][-1]), abs=1e-4)
     # the compiled and the lambdify right-hand sides agree at a state
-    slow, _, _ = module.al.ode_function(QA=30, backend="lambdify")
+    slow, _, _ = module.al.numerics.ode_function(QA=30, backend="lambdify")
     assert f(0.3, sol.y[:, -1]) == pytest.approx(slow(0.3, sol.y[:, -1]), rel=1e-12)
     assert f(0.3, list(sol.y[:, -1])) == pytest.approx(slow(0.3, sol.y[:, -1]))
 

@@ -113,7 +113,7 @@ def test_tutor6_program_with_tight_tolerances_and_overrides(tutor6_program, tuto
 def test_tutor6_program_rejects_unknown_names(tutor6_program):
     done = _run_c(tutor6_program, tutor6_program.parent, "NOPE=1")
     assert done.returncode == 2
-    assert "NOPE is not an input; inputs: LA LB C D G" in done.stderr
+    assert "NOPE is not an input; inputs: C D G K LA LB" in done.stderr
     done = _run_c(tutor6_program, tutor6_program.parent, "QA=abc")
     assert done.returncode == 2 and "'abc' is not a number" in done.stderr
     done = _run_c(tutor6_program, tutor6_program.parent, "--help")
@@ -133,7 +133,7 @@ def test_eight_link_pendulum_program_matches_run(tmp_path, capsys, convert_and_i
     _same_tables(result, tmp_path, rtol=1e-5, atol=1e-5)
 
 
-def test_lang_c_and_unsupported_jobs(tmp_path, capsys):
+def test_lang_c_and_a_nonlinear_job(tmp_path, capsys):
     script = tmp_path / "odes.al"
     script.write_text(
         "Variables X'\nX' = -X\nInput X=1\nOutput T, X\nCODE ODE() odes.m\n"
@@ -148,9 +148,12 @@ def test_lang_c_and_unsupported_jobs(tmp_path, capsys):
         "Variables X\nConstants A\nE[1] = X^2 - A\nInput A=4, X=1\n"
         "CODE Nonlinear(E, X) roots.c\n"
     )
-    assert al2py_main(["code", str(script), "-o", str(tmp_path)]) == 2
-    err = capsys.readouterr().err
-    assert "code for CODE Nonlinear is not written yet" in err
+    (program,) = _build_with([], script, tmp_path / "n", capsys)
+    done = _run_c(program, program.parent)
+    assert done.returncode == 0, done.stderr
+    assert np.loadtxt(program.parent / "roots.1", comments="%") == pytest.approx(2)
+    done = _run_c(program, program.parent, "X=-3")  # another guess, another root
+    assert np.loadtxt(program.parent / "roots.1", comments="%") == pytest.approx(-2)
 
 
 def test_script_without_code_statement(tmp_path, capsys):

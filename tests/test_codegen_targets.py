@@ -144,7 +144,21 @@ def test_in_file_layout(tmp_path, capsys):
         else:
             break
     assert [len(g) for g in groups] == [9, 5, 6]
-    assert groups[0][0] == ("Constant", "LA", 1.0)
+    # Autolev's order: each group sorted without case (WhippleDynamics.c
+    # reads c, g, IBxx, IBxz, ..., lam, mB, ...)
+    assert [g[1] for g in groups[0]] == [
+        "C",
+        "D",
+        "G",
+        "K",
+        "LA",
+        "LB",
+        "LO",
+        "MP",
+        "MQ",
+    ]
+    assert groups[0][0] == ("Constant", "C", 300.0)
+    assert [g[1] for g in groups[1]][1:] == ["QA", "QB", "U1", "U2"]
     assert ("Initial Value", "QA", 20.0) in groups[1]
     assert ("Initial Value", "QB", 60.0) in groups[1]  # as the Input says
     assert [g[1] for g in groups[2]] == [
@@ -297,3 +311,61 @@ def test_run_and_ode_function_pick_a_job_by_name(tmp_path, convert_and_import):
         timeout=300,
     ).stdout
     assert "--job STEM" in helptext and "first: CODE Ode first.c" in helptext
+
+
+# Constants declared out of order, a Specified TQ with neither equation nor
+# Input, a Specified FZ with an Input, and a second-order variable.
+IN_ORDER = """\
+Newtonian N
+Bodies A
+Constants Kb, a2, A10, A1
+Specified TQ, Fz
+Variables Y'', Q'
+MotionVariables' U'
+Mass A = a2
+Inertia A, 0, 0, A1
+Simprot(N, A, 3, Q)
+Q' = U
+Y'' = -Kb*Y
+Angvel(N, A)
+P_NO_AO> = 0>
+V_AO_N> = 0>
+A_AO_N> = 0>
+Torque(N/A, (TQ - A10*U + Fz)*N3>)
+Zero = Fr() + FrStar()
+Solve(Zero, U')
+Input Kb = 2, a2 = 1, A10 = 0.5, A1 = 3, Fz = 0.25, Q = 0.1, Y = 1
+Input TFINAL = 2, INTEGSTP = 0.1, ABSERR = 1e-11, RELERR = 1e-11
+Output T, Q, U, Y
+Code Dynamics() inorder.c
+"""
+
+
+@needs["c"]
+def test_in_file_order_and_unspecified_quantities(tmp_path, capsys):
+    """Autolev's order (PendulumDynamics.c reads g, i, l, m and omega, theta;
+    WhippleDynamics.c c, g, IBxx, ...): each group sorted without case,
+    derivatives after names; a Specified without equation or Input is 0 in
+    the program ("Quantities to be specified"), not a line of the .in."""
+    from al2py import convert
+
+    script = tmp_path / "inorder.al"
+    script.write_text(IN_ORDER)
+    _code(script, tmp_path, capsys)
+    names = [
+        line[21:41].strip()
+        for line in (tmp_path / "inorder.in").read_text().splitlines()[6:]
+        if line[58:59] == "|"
+    ]
+    # A2 (the mass) does not enter the rotor's equations: not read
+    assert names[:8] == ["A1", "A10", "FZ", "KB", "Q", "U", "Y", "Y'"]
+    source = (tmp_path / "inorder.c").read_text()
+    assert "const double TQ = 0;" in source and '"TQ"' not in source
+    _run("c", tmp_path, "inorder")
+    ours = np.loadtxt(tmp_path / "inorder.1", comments="%")
+    code = convert(IN_ORDER, str(script)).code
+    from conftest import load_module
+
+    result = load_module(code, tmp_path, "inorder_mod").run()
+    theirs = np.column_stack([result[k] for k in ("T", "Q", "U", "Y")])
+    np.testing.assert_allclose(ours, theirs, rtol=1e-5, atol=1e-8)

@@ -83,9 +83,9 @@ def test_kanes_method_matches_ode_function(tutorial, name):
     f, y0, names = mod.ode_function()
     assert len(y0) == len(names)
     params = {}
-    for key in mod.al.inputs:
+    for key in mod.al.numerics.inputs:
         if mod.al.kind(key) == "constant":
-            params[mod.al.symbol(key)] = float(mod.al.input_value(key, True))
+            params[mod.al.symbol(key)] = float(mod.al.numerics.input_value(key, True))
     for key, value in FIXED.get(name, {}).items():
         params[mod.al.symbol(key)] = value
     states = [*km.q, *km.u]
@@ -135,7 +135,7 @@ def test_tutor8_kanes_method_is_the_model_before_evaluate(tutorial):
     index = [names.index(mod.al.name_of(s)) for s in states]
     assert index != list(range(len(states)))  # the orders differ
     gains = {
-        mod.al.symbol(k): float(mod.al.input_value(k, True))
+        mod.al.symbol(k): float(mod.al.numerics.input_value(k, True))
         for k in ("K1", "K2", "K3", "K4")
     }
     rng = np.random.default_rng(22)

@@ -5,6 +5,32 @@ statement.  The runtime depends only on sympy, numpy and scipy (matplotlib is
 optional, for plots) and installs without the transpiler::
 
     pip install ./runtime
+
+A falling particle, as a generated module writes it (``al`` is the module's
+workspace; its ``model`` and ``numerics`` parts do the mechanics and the
+numbers):
+
+>>> from sympy import Eq
+>>> from al2py_runtime import Workspace, t
+>>> al = Workspace("fall.al")
+>>> N = al.newtonian("N")
+>>> P = al.particles("P")
+>>> Q, G = al.variables("Q'"), al.constants("G")
+>>> U = al.motion_variables("U'")
+>>> al.set_mass(P, 2)
+>>> al.kd(Eq(Q.diff(t), U))
+Eq(Derivative(Q(t), t), U(t))
+>>> al.set_vel(P, N, U * N.x)
+U(t)*N.x
+>>> al.gravity(-G * N.x)
+>>> zero = al.assign("ZERO", al.fr() + al.frstar())
+>>> al["ZERO"]
+Matrix([[-2*(G + Derivative(U(t), t))]])
+>>> km = al.kanes_method()
+>>> km.mass_matrix_full, km.forcing_full.T
+(Matrix([
+[1, 0],
+[0, 2]]), Matrix([[U(t), -2*G]]))
 """
 
 from .safety import AutolevRuntimeError

@@ -54,13 +54,13 @@ def help_text(
 def _described(ws: Any) -> tuple[list, list]:
     """Inputs and jobs of a derived workspace, as :func:`build_parser` takes."""
     inputs = []
-    for key, item in ws.inputs.items():
+    for key, item in ws.numerics.inputs.items():
         try:
             shown = format(float(item.value), "g")
         except (TypeError, ValueError):  # an Input given as an expression
             shown = str(item.value)
         inputs.append((key, shown, item.unit))
-    return inputs, [(j.stem, j.where) for j in ws.jobs]
+    return inputs, [(j.stem, j.where) for j in ws.numerics.jobs]
 
 
 def build_parser(
@@ -138,7 +138,7 @@ def build_parser(
         "--emit-code",
         metavar="DIR",
         help="write the program (C, MATLAB or Fortran, as CODE names it) and"
-        " STEM.in of each CODE Dynamics/ODE job into DIR (as 'al2py code'"
+        " STEM.in of each CODE job into DIR (as 'al2py code'"
         " does) instead of running",
     )
     parser.add_argument(
@@ -222,7 +222,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2)
         return exc.code if isinstance(exc.code, int) else 2
-    jobs = ws.jobs
+    jobs = ws.numerics.jobs
     try:
         if args.job is not None:
             jobs = [ws.numerics.job(args.job)]
@@ -251,7 +251,7 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
             print(f"Wrote {path}")
         for message in errors:
             print(f"error: {message}", file=sys.stderr)
-        if not ws.jobs:
+        if not ws.numerics.jobs:
             print(f"error: {ws.filename} has no CODE statement", file=sys.stderr)
         return 2 if errors or not written else 0
     ws.print_transcript(source_lines)

@@ -220,9 +220,7 @@ def _source_line(module_file: str, line: int, module_globals: Any) -> str:
 
 #: methods with their own error reporting (jobs name their CODE statement),
 #: and those a module's own functions call (their errors are not statements')
-_UNGUARDED = frozenset(
-    {"run", "run_job", "main", "names", "evaluate_name", "document_run"}
-)
+_UNGUARDED = frozenset({"run", "main", "names", "evaluate_name", "document_run"})
 
 
 def guard_methods(cls: type) -> type:

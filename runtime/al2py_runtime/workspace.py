@@ -77,7 +77,9 @@ class Workspace(Mapping):
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(self)
-        #: Inputs, Outputs, UnitSystem and CODE jobs (``run()``).
+        #: Inputs, Outputs, UnitSystem and CODE jobs.  Generated modules call
+        #: it directly (``al.numerics.input(...)``, ``al.numerics.run(...)``):
+        #: an Input value or a ``backend`` reaches the job without a forwarder.
         self.numerics = Numerics(self)
         self.table.declare("T", "variable", t)
         self.table.declare("PI", "constant", sp.pi)
@@ -87,72 +89,6 @@ class Workspace(Mapping):
 
     # Its commands (``al.simprot``, ``al.fr``...) are methods of this class
     # too: see :func:`_offer_model_commands` below the class.
-
-    # ------------------------------------------- numerical jobs (numerics.py)
-
-    def unit_system(self, *units: str, line: int | None = None) -> None:
-        """``UnitSystem kg, meter, sec`` (see :class:`Numerics`)."""
-        self.numerics.unit_system(*units, line=line)
-
-    def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
-        """``Input A=1, QA=30 deg`` (see :class:`Numerics`)."""
-        self.numerics.input(values, line=line)
-
-    def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
-        """``Units T=S, X=m`` (see :meth:`Numerics.units_of`)."""
-        self.numerics.units_of(units, line=line)
-
-    def encode(self, *names: str, line: int | None = None) -> None:
-        """``Encode A, B'`` (see :meth:`Numerics.encode`)."""
-        self.numerics.encode(*names, line=line)
-
-    def evaluate_name(
-        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
-    ) -> Any:
-        """The named quantity as a number (see :meth:`Numerics.evaluate_name`)."""
-        return self.numerics.evaluate_name(name, values, **more)
-
-    def output(self, items: Iterable[Any], *, line: int | None = None) -> None:
-        """``Output T, X m`` (see :class:`Numerics`)."""
-        self.numerics.output(items, line=line)
-
-    def code(self, kind: str, *args: Any, **kw: Any) -> Any:
-        """``CODE Dynamics() file.c`` (see :meth:`Numerics.code`)."""
-        return self.numerics.code(kind, *args, **kw)
-
-    def input_value(self, name: str, unit_system: bool = False) -> Any:
-        """Autolev ``Input(X)`` (see :meth:`Numerics.input_value`)."""
-        return self.numerics.input_value(name, unit_system)
-
-    def units(self, a: str, b: str) -> Any:
-        """Autolev ``Units(a, b)`` (see :meth:`Numerics.units`)."""
-        return self.numerics.units(a, b)
-
-    @property
-    def jobs(self) -> list:
-        """The recorded ``CODE`` jobs, in script order."""
-        return self.numerics.jobs
-
-    @property
-    def inputs(self) -> dict:
-        """The ``Input`` values recorded so far (upper-case names)."""
-        return self.numerics.inputs
-
-    def run(self, values: Mapping[str, Any] | None = None, /, **overrides: Any):
-        """Perform the script's ``CODE`` job (see :meth:`Numerics.run`)."""
-        return self.numerics.run(values, **overrides)
-
-    def document_run(self, run: Any) -> Any:
-        """Give a module's ``run`` its Inputs as keyword parameters (see
-        :func:`al2py_runtime.jobs.results.document_run`)."""
-        return self.numerics.document_run(run)
-
-    def ode_function(
-        self, values: Mapping[str, Any] | None = None, /, **overrides: Any
-    ) -> tuple:
-        """``(f, y0, names)`` for ``solve_ivp`` (see
-        :meth:`Numerics.ode_function`)."""
-        return self.numerics.ode_function(values, **overrides)
 
     def main(self, source_lines: Any, argv: Any = None) -> int:
         """The ``python module.py`` entry point (see :mod:`.cli`)."""
@@ -549,10 +485,6 @@ class Workspace(Mapping):
                 autoz=self.settings.autoz,
             )
         )
-
-    def set(self, name: str, value: Any = None) -> None:
-        """A settings line: ``Digits 7``, ``AutoRHS ALL``, ``Degrees ON``."""
-        self.settings.set(name, value)
 
     @property
     def intermediates(self) -> Any:
@@ -1122,6 +1054,9 @@ def _model_property(name: str) -> Callable[[Workspace], Any]:
 _offer_model_commands()
 
 # failures inside a generated module name the .al line (model commands are
-# answered by Model's methods, so those are guarded too)
+# answered by Model's methods, numeric statements by Numerics' and setting
+# lines by Settings', so those are guarded too)
 guard_methods(Workspace)
 guard_methods(Model)
+guard_methods(Numerics)
+guard_methods(Settings)

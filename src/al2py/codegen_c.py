@@ -5,11 +5,11 @@
     al2py code tutor7.al --lang c     C although CODE names tutor7.for
 
 Converts the script, derives the model once as the generated module would on
-import, and writes each ``CODE Dynamics``/``ODE`` job's program in the
-language its file extension names (C ``.c``, MATLAB/Octave ``.m``, Fortran
-``.f``/``.for``; see :mod:`al2py_runtime.codegen`) with the ``.in`` file it
-reads.  Nonlinear and Algebraic jobs are not written yet: each gets one
-clear error line and the exit status is 2 (the other files are written).
+import, and writes each ``CODE Dynamics/ODE/Algebraic/Nonlinear`` job's
+program in the language its file extension names (C ``.c``, MATLAB/Octave
+``.m``, Fortran ``.f``/``.for``; see :mod:`al2py_runtime.codegen`) with the
+``.in`` file it reads.  A job that cannot be written gets one clear error
+line and the exit status is 2 (the other files are written).
 """
 
 from __future__ import annotations
@@ -27,11 +27,12 @@ __all__ = ["main", "parser"]
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="al2py code",
-        description="Write the program of every CODE Dynamics/ODE statement of "
-        "an Autolev script in the language its file names (C .c, MATLAB/Octave "
-        ".m, Fortran .f or .for), and the NAME.in file of Input values it "
-        "reads: the equations of motion, the outputs and a Kutta-Merson "
-        "driver that writes the tables NAME.1, ... as run() does.  "
+        description="Write the program of every CODE statement of an Autolev "
+        "script in the language its file names (C .c, MATLAB/Octave .m, "
+        "Fortran .f or .for), and the NAME.in file of Input values it reads: "
+        "the equations, the outputs and a driver (Kutta-Merson for Dynamics "
+        "and ODE, a linear solve for Algebraic, Newton's method for "
+        "Nonlinear) that writes the tables NAME.1, ... as run() does.  "
         "'CODE Dynamics() NAME.c, NOSUBS' writes the equations only.",
         epilog="C: 'cc -O2 -std=c99 -o NAME NAME.c -lm && ./NAME [X=VALUE ...]'; "
         "Fortran: 'gfortran -O2 -o NAME NAME.f && ./NAME'; MATLAB or Octave: "
@@ -83,7 +84,7 @@ def main(argv: list[str]) -> int:
     from al2py_runtime.codegen import write_programs
 
     ws = module.al
-    if not ws.jobs:
+    if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
     written, errors = write_programs(ws, args.outdir, lang=args.lang)

@@ -143,7 +143,7 @@ class Generator:
         arg = value if re.fullmatch(r"\d+", value) else repr(value.upper())
         if stmt.name == "AUTOEPSILON":
             arg = _number_code(value)
-        return [f"al.set({stmt.name.title()!r}, {arg})"]
+        return [f"al.settings.set({stmt.name.title()!r}, {arg})"]
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
         decl = Decl.of_keyword(stmt.keyword)
@@ -462,7 +462,7 @@ class Generator:
     def stmt_ListCommand(self, stmt: ir.ListCommand) -> list[str]:
         if stmt.name == "ENCODE":
             names = ", ".join(repr(item.autolev) for item in stmt.items)  # type: ignore[attr-defined]
-            return [f"al.encode({names}, line={self._line})"]
+            return [f"al.numerics.encode({names}, line={self._line})"]
         if stmt.name == "UNITS":
             pairs = []
             for item in stmt.items:
@@ -474,11 +474,11 @@ class Generator:
                     else ir.autolev_text(rhs, upper=False)
                 )
                 pairs.append(f"{item.lhs.autolev!r}: {word!r}")
-            return [f"al.units_of({{{', '.join(pairs)}}}, line={self._line})"]
+            return [f"al.numerics.units_of({{{', '.join(pairs)}}}, line={self._line})"]
         raise InternalError(f"no emitter for {stmt.name}")
 
     def stmt_UnitSystemStmt(self, stmt: ir.UnitSystemStmt) -> list[str]:
-        return [f"al.unit_system({', '.join(repr(u) for u in stmt.units)})"]
+        return [f"al.numerics.unit_system({', '.join(repr(u) for u in stmt.units)})"]
 
     def stmt_InputStmt(self, stmt: ir.InputStmt) -> list[str]:
         items = []
@@ -492,7 +492,7 @@ class Generator:
                 self.help_inputs.append(
                     (name.autolev, ir.autolev_text(item.value), unit)
                 )
-        return [f"al.input({{{', '.join(items)}}}, line={self._line})"]
+        return [f"al.numerics.input({{{', '.join(items)}}}, line={self._line})"]
 
     def stmt_OutputStmt(self, stmt: ir.OutputStmt) -> list[str]:
         columns = []
@@ -500,7 +500,7 @@ class Generator:
             label = ir.autolev_text(item.expr)  # also from RUN files and macros
             unit = repr(item.unit.text) if item.unit is not None else "None"
             columns.append(f"({label!r}, {self.expr(item.expr)}, {unit})")
-        return [f"al.output([{', '.join(columns)}], line={self._line})"]
+        return [f"al.numerics.output([{', '.join(columns)}], line={self._line})"]
 
     def stmt_CodeStmt(self, stmt: ir.CodeStmt) -> list[str]:
         self.has_job = True
@@ -519,7 +519,7 @@ class Generator:
             args.append(f"file={stmt.filename!r}")
         if stmt.options:
             args.append(f"options={tuple(stmt.options)!r}")
-        return [f"al.code({', '.join(args)}, line={self._line})"]
+        return [f"al.numerics.code({', '.join(args)}, line={self._line})"]
 
     # -------------------------------------------------------- expressions
 
@@ -732,11 +732,11 @@ class Generator:
         if not isinstance(name, ir.Name):
             raise SemanticError("Input(X) takes a name", name.span)
         extra = ", unit_system=True" if len(node.args) == 2 else ""
-        return f"al.input_value({name.autolev!r}{extra})"
+        return f"al.numerics.input_value({name.autolev!r}{extra})"
 
     def call_units(self, node: ir.Call, b: Builtin) -> str:
         texts = [ir.autolev_text(a, upper=False) for a in node.args]
-        return f"al.units({texts[0]!r}, {texts[1]!r})"
+        return f"al.numerics.units({texts[0]!r}, {texts[1]!r})"
 
     def call_eig(self, node: ir.Call, b: Builtin) -> str:
         if len(node.args) != 1:

@@ -460,7 +460,7 @@ def test_tutor6f_contact_forces():
 
 def tutor8():
     al = Workspace("tutor8.al")
-    al.set("Digits", 2)
+    al.settings.set("Digits", 2)
     N = al.newtonian("N")
     A, B = al.bodies("A", "B")
     O = al.points("O")
@@ -641,7 +641,7 @@ def test_tutor9_gyrostat():
 
 def tutor2():
     al = Workspace("tutor2.al")
-    al.set("Degrees", "ON")
+    al.settings.set("Degrees", "ON")
     A, B, C = al.bodies("A", "B", "C")
     O, P = al.points("O", "P")
     CM = al.points("CM")

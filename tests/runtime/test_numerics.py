@@ -27,9 +27,9 @@ def odexy(columns=None) -> Workspace:
     x, y = ws.variables("x'", "y'")
     ws.assign("x'", -a * x - b * y, line=7)
     ws.assign("y'", -y - t * x**2, line=8)
-    ws.input({"A": 1, "B": 2, "X": 2, "Y": 3}, line=9)
-    ws.input({"TINITIAL": 0, "TFINAL": 5, "INTEGSTP": 0.1}, line=10)
-    ws.output(
+    ws.numerics.input({"A": 1, "B": 2, "X": 2, "Y": 3}, line=9)
+    ws.numerics.input({"TINITIAL": 0, "TFINAL": 5, "INTEGSTP": 0.1}, line=10)
+    ws.numerics.output(
         (
             columns(x, y)
             if columns
@@ -43,7 +43,7 @@ def odexy(columns=None) -> Workspace:
         ),
         line=11,
     )
-    ws.code("ODE", file="odexy.c", line=12)
+    ws.numerics.code("ODE", file="odexy.c", line=12)
     return ws
 
 
@@ -53,9 +53,9 @@ def katy() -> Workspace:
     a, r = ws.constants("a", "r")
     ws.assign("eqn[1]", x**2 + y**2 - r)
     eqn = ws.assign("eqn[2]", y - a * sp.sin(x))
-    ws.input({"A": 1.0, "R": 1.0})
-    ws.input({"X": 0.5, "Y": 0.5})
-    ws.code("NONLINEAR", eqs=eqn, unknowns=[x, y], file="katy.m")
+    ws.numerics.input({"A": 1.0, "R": 1.0})
+    ws.numerics.input({"X": 0.5, "Y": 0.5})
+    ws.numerics.code("NONLINEAR", eqs=eqn, unknowns=[x, y], file="katy.m")
     return ws
 
 
@@ -65,8 +65,8 @@ def becky() -> Workspace:
     a11, a12, a21, a22, b1, b2 = ws.constants("a11", "a12", "a21", "a22", "b1", "b2")
     ws.assign("eqn[1]", a11 * x + a12 * y - b1)
     eqn = ws.assign("eqn[2]", a21 * x + a22 * y - b2)
-    ws.input({"A11": 1, "A12": 2, "A21": 3, "A22": 4, "B1": 5, "B2": 6})
-    ws.code("ALGEBRAIC", eqs=eqn, unknowns=[x, y], file="becky.for")
+    ws.numerics.input({"A11": 1, "A12": 2, "A21": 3, "A22": 4, "B1": 5, "B2": 6})
+    ws.numerics.code("ALGEBRAIC", eqs=eqn, unknowns=[x, y], file="becky.for")
     return ws
 
 
@@ -78,11 +78,17 @@ def tutor3() -> Workspace:
     config = ws.assign(
         "CONFIG[2]", la * sp.sin(qa) + lb * sp.sin(qb) - lc * sp.sin(qc) - ln
     )
-    ws.unit_system("kg", "meter", "sec")
-    ws.input({"LA": (1, "m"), "LB": (2, "m"), "LC": (2, "m"), "LN": (1, "m")}, line=31)
-    ws.input({"QA": (30, "deg"), "QB": (60, "deg"), "QC": (20, "deg")}, line=32)
-    ws.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=33)
-    ws.code("NONLINEAR", eqs=config, unknowns=[qb, qc], file="tutor3.for", line=36)
+    ws.numerics.unit_system("kg", "meter", "sec")
+    ws.numerics.input(
+        {"LA": (1, "m"), "LB": (2, "m"), "LC": (2, "m"), "LN": (1, "m")}, line=31
+    )
+    ws.numerics.input(
+        {"QA": (30, "deg"), "QB": (60, "deg"), "QC": (20, "deg")}, line=32
+    )
+    ws.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=33)
+    ws.numerics.code(
+        "NONLINEAR", eqs=config, unknowns=[qb, qc], file="tutor3.for", line=36
+    )
     return ws
 
 
@@ -102,8 +108,8 @@ def tutor4() -> Workspace:
             ]
         ),
     )
-    ws.unit_system("kg", "meter", "sec")
-    ws.input(
+    ws.numerics.unit_system("kg", "meter", "sec")
+    ws.numerics.input(
         {
             "G": (9.81, "m/sec^2"),
             "LA": (1, "m"),
@@ -114,9 +120,9 @@ def tutor4() -> Workspace:
             "MQ": (20, "kg"),
         }
     )
-    ws.input({"QA": (-30, "deg"), "QB": (30, "deg")})
-    ws.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07})
-    ws.code("NONLINEAR", eqs=zero, unknowns=[qa, qb], file="tutor4.c", line=52)
+    ws.numerics.input({"QA": (-30, "deg"), "QB": (30, "deg")})
+    ws.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07})
+    ws.numerics.code("NONLINEAR", eqs=zero, unknowns=[qa, qb], file="tutor4.c", line=52)
     return ws
 
 
@@ -162,17 +168,17 @@ def tutor6(*, digits: int | None = None) -> Workspace:
     ke = (mp * u1**2 + mq * (u1**2 + u2**2 + 2 * u1 * u2 * sp.cos(qa - qb))) / 2
     pe = -g * (mp * la * sp.cos(qa) + mq * (la * sp.cos(qa) + lb * sp.cos(qb)))
     echeck = ws.assign("ECHECK", ke + pe + k * stretch**2 / 2 - work)
-    ws.unit_system("kg", "meter", "sec")
-    ws.input({"G": (9.81, "m/sec^2"), "LA": (1, "m"), "LB": (2, "m")}, line=70)
-    ws.input({"LO": (1, "m"), "K": (200, "n/m")}, line=71)
-    ws.input({"C": (300, "n*sec/m"), "D": (300, "n*sec/m")}, line=72)
-    ws.input({"MP": (10, "kg"), "MQ": (20, "kg")}, line=73)
-    ws.input({"QA": (20, "deg"), "QB": (60, "deg")}, line=74)
-    ws.input({"U1": (0, "rad/sec"), "U2": (0, "rad/sec")}, line=75)
-    ws.input({"TINITIAL": 0, "TFINAL": 20}, line=76)
-    ws.input({"INTEGSTP": 0.2, "PRINTINT": 1}, line=77)
-    ws.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=78)
-    ws.output(
+    ws.numerics.unit_system("kg", "meter", "sec")
+    ws.numerics.input({"G": (9.81, "m/sec^2"), "LA": (1, "m"), "LB": (2, "m")}, line=70)
+    ws.numerics.input({"LO": (1, "m"), "K": (200, "n/m")}, line=71)
+    ws.numerics.input({"C": (300, "n*sec/m"), "D": (300, "n*sec/m")}, line=72)
+    ws.numerics.input({"MP": (10, "kg"), "MQ": (20, "kg")}, line=73)
+    ws.numerics.input({"QA": (20, "deg"), "QB": (60, "deg")}, line=74)
+    ws.numerics.input({"U1": (0, "rad/sec"), "U2": (0, "rad/sec")}, line=75)
+    ws.numerics.input({"TINITIAL": 0, "TFINAL": 20}, line=76)
+    ws.numerics.input({"INTEGSTP": 0.2, "PRINTINT": 1}, line=77)
+    ws.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=78)
+    ws.numerics.output(
         [
             ("T", t, None),
             ("STRETCH", stretch, "m"),
@@ -183,8 +189,8 @@ def tutor6(*, digits: int | None = None) -> Workspace:
         line=80,
     )
     if digits is not None:
-        ws.set("Digits", digits)
-    ws.code("DYNAMICS", file="tutor6.c", line=87)
+        ws.settings.set("Digits", digits)
+    ws.numerics.code("DYNAMICS", file="tutor6.c", line=87)
     return ws
 
 
@@ -202,12 +208,12 @@ def test_recording_does_no_work(tmp_path, monkeypatch, capsys):
     ws = tutor6()
     assert capsys.readouterr() == ("", "")
     assert list(tmp_path.iterdir()) == []
-    assert [j.kind for j in ws.jobs] == ["DYNAMICS"]
-    assert ws.jobs[0].stem == "tutor6"
+    assert [j.kind for j in ws.numerics.jobs] == ["DYNAMICS"]
+    assert ws.numerics.jobs[0].stem == "tutor6"
 
 
 def test_odexy():
-    result = odexy().run()
+    result = odexy().numerics.run()
     table = result.tables[0]
     assert table.names == ["T", "X", "Y", "X'", "Y'"]
     assert len(table) == 51  # every INTEGSTP when PRINTINT is not given
@@ -234,14 +240,14 @@ def test_odexy():
 
 
 def test_katy_nonlinear():
-    result = katy().run()
+    result = katy().numerics.run()
     assert result["X"][0] == pytest.approx(0.739085, abs=1e-6)
     assert result["Y"][0] == pytest.approx(0.673612, abs=1e-6)
     assert result.solution_lines() == ["X = 0.7390851", "Y = 0.673612"]
 
 
 def test_becky_algebraic():
-    result = becky().run()
+    result = becky().numerics.run()
     assert result["x"][0] == pytest.approx(-4)
     assert result["y"][0] == pytest.approx(4.5)
     assert result.tables[0].names == ["X", "Y"]
@@ -251,19 +257,19 @@ def test_algebraic_must_be_linear():
     ws = Workspace("bad.al")
     x, y = ws.variables("x", "y")
     eqs = ws.assign("E", sp.Matrix([x * y - 1, x + y]))
-    ws.code("ALGEBRAIC", eqs=eqs, unknowns=[x, y], file="bad.m")
+    ws.numerics.code("ALGEBRAIC", eqs=eqs, unknowns=[x, y], file="bad.m")
     with pytest.raises(NumericsError, match="not linear in X, Y; use CODE Nonlinear"):
-        ws.run()
+        ws.numerics.run()
 
 
 def test_tutor3_nonlinear_in_degrees():
     ws = tutor3()
-    result = ws.run()
+    result = ws.numerics.run()
     assert result["QB"][0] == pytest.approx(74.4775, abs=1e-4)
     assert result["QC"][0] == pytest.approx(45.5225, abs=1e-4)
     assert result.solution_units == {"QB": "deg", "QC": "deg"}
     assert result.solution_lines() == ["QB = 74.47751 deg", "QC = 45.52249 deg"]
-    assert ws.jobs[0].eqs_name == "CONFIG"
+    assert ws.numerics.jobs[0].eqs_name == "CONFIG"
 
 
 @pytest.mark.parametrize(
@@ -275,7 +281,7 @@ def test_tutor3_nonlinear_in_degrees():
     ],
 )
 def test_tutor4_guesses(guess, solution):
-    result = tutor4().run(qa=guess[0], QB=guess[1])  # overrides in Input units
+    result = tutor4().numerics.run(qa=guess[0], QB=guess[1])  # overrides in Input units
     assert result["QA"][0] == pytest.approx(solution[0], abs=1e-4)
     assert result["QB"][0] == pytest.approx(solution[1], abs=1e-4)
 
@@ -284,10 +290,10 @@ def test_nonconvergence_names_the_residual():
     ws = Workspace("nope.al")
     x = ws.variables("x")
     eqs = ws.assign("EQ", sp.Matrix([x**2 + 1]))
-    ws.input({"X": 0.5})
-    ws.code("NONLINEAR", eqs=eqs, unknowns=[x], file="nope.m", line=4)
+    ws.numerics.input({"X": 0.5})
+    ws.numerics.code("NONLINEAR", eqs=eqs, unknowns=[x], file="nope.m", line=4)
     with pytest.raises(NumericsError) as info:
-        ws.run()
+        ws.numerics.run()
     message = str(info.value)
     assert "CODE Nonlinear nope.m (line 4)" in message
     assert "no solution found" in message
@@ -297,7 +303,7 @@ def test_nonconvergence_names_the_residual():
 
 def test_tutor6_dynamics():
     ws = tutor6()
-    result = ws.run()
+    result = ws.numerics.run()
     (table,) = result.tables
     assert table.names == ["T", "STRETCH", "QA", "QB", "ECHECK"]
     assert [c.unit for c in table.columns] == [None, "m", "deg", "deg", "joules"]
@@ -322,15 +328,15 @@ def test_tutor6_dynamics():
 
 def test_tutor6_overrides_in_input_units():
     ws = tutor6()
-    result = ws.run(QA=30, tfinal=2, printint=5)  # every 5 steps of 0.2 s
+    result = ws.numerics.run(QA=30, tfinal=2, printint=5)  # every 5 steps of 0.2 s
     assert np.allclose(result["T"], [0, 1, 2])
     with pytest.raises(NumericsError, match="whole number of integration steps"):
-        ws.run(printint=0.5)
+        ws.numerics.run(printint=0.5)
     assert result["QA"][0] == pytest.approx(30)
     with pytest.raises(NumericsError, match="not an Input or a declared name"):
-        ws.run(NOPE=1)
+        ws.numerics.run(NOPE=1)
     with pytest.raises(NumericsError, match="defined by an equation"):
-        ws.run(ECHECK=1)
+        ws.numerics.run(ECHECK=1)
 
 
 def _spring_with_dependent_speed() -> Workspace:
@@ -347,16 +353,20 @@ def _spring_with_dependent_speed() -> Workspace:
     ws.assign("ZERO", sp.Matrix([-k * x1 - m1 * u1.diff(t) - m2 * u2.diff(t)]))
     f = ws.variables("F")
     ws.assign("F", m2 * u1.diff(t))
-    ws.input({"M1": 1, "M2": 3, "K": 4, "X1": 0.5, "X2": 0.5, "TFINAL": 3})
-    ws.input({"INTEGSTP": 0.05, "PRINTINT": 10, "ABSERR": 1e-9, "RELERR": 1e-9})
-    ws.output([("T", t, None), ("X1", x1, None), ("X2", x2, None), ("U2", u2, None)])
-    ws.output([("T", t, None), ("F", f, "n")])
-    ws.code("DYNAMICS", file="carts.for")
+    ws.numerics.input({"M1": 1, "M2": 3, "K": 4, "X1": 0.5, "X2": 0.5, "TFINAL": 3})
+    ws.numerics.input(
+        {"INTEGSTP": 0.05, "PRINTINT": 10, "ABSERR": 1e-9, "RELERR": 1e-9}
+    )
+    ws.numerics.output(
+        [("T", t, None), ("X1", x1, None), ("X2", x2, None), ("U2", u2, None)]
+    )
+    ws.numerics.output([("T", t, None), ("F", f, "n")])
+    ws.numerics.code("DYNAMICS", file="carts.for")
     return ws
 
 
 def test_dependent_speed_and_auxiliary_force():
-    result = _spring_with_dependent_speed().run()
+    result = _spring_with_dependent_speed().numerics.run()
     tt = result["T"]
     omega = math.sqrt(4 / 4)
     assert set(result.states) == {"T", "U1", "X1", "X2"}  # U2 is not integrated
@@ -372,16 +382,16 @@ def test_second_order_variable_and_initial_derivative():
     x = ws.variables("X''")
     w = ws.constants("W")
     ws.assign("X''", -(w**2) * x)
-    ws.input({"W": 2, "X": 1, "X'": (1, "m/sec"), "TFINAL": (1, "sec")})
-    ws.output([("T", t, None), ("X", x, "cm"), ("XD", x.diff(t), None)])
-    ws.code("ODE", file="osc.c")
-    result = ws.run()
+    ws.numerics.input({"W": 2, "X": 1, "X'": (1, "m/sec"), "TFINAL": (1, "sec")})
+    ws.numerics.output([("T", t, None), ("X", x, "cm"), ("XD", x.diff(t), None)])
+    ws.numerics.code("ODE", file="osc.c")
+    result = ws.numerics.run()
     tt = result["T"]
     exact = np.cos(2 * tt) + np.sin(2 * tt) / 2
     assert len(tt) == 101
     assert np.allclose(result["X"], 100 * exact, atol=1e-4)
     assert np.allclose(result["XD"], -2 * np.sin(2 * tt) + np.cos(2 * tt), atol=1e-6)
-    changed = ws.run({"X'": 0})
+    changed = ws.numerics.run({"X'": 0})
     assert np.allclose(changed["X"], 100 * np.cos(2 * tt), atol=1e-4)
 
 
@@ -389,9 +399,9 @@ def test_zero_not_linear_in_accelerations():
     ws = Workspace("bad.al")
     u = ws.variables("U'")
     ws.assign("ZERO", sp.Matrix([u.diff(t) ** 2 - 1]))
-    ws.code("DYNAMICS", file="bad.c")
+    ws.numerics.code("DYNAMICS", file="bad.c")
     with pytest.raises(NumericsError, match="not linear in U'"):
-        ws.run()
+        ws.numerics.run()
 
 
 def test_code_takes_a_snapshot():
@@ -400,13 +410,13 @@ def test_code_takes_a_snapshot():
     a = ws.constants("A")
     ws.assign("X'", -a * x)
     e = ws.assign("E", 2 * x)
-    ws.input({"A": 1, "X": 1, "TFINAL": 1, "INTEGSTP": 0.1, "PRINTINT": 5})
-    ws.output([("T", t, None), ("E", e, None)])
-    ws.code("ODE", file="snap.m")
+    ws.numerics.input({"A": 1, "X": 1, "TFINAL": 1, "INTEGSTP": 0.1, "PRINTINT": 5})
+    ws.numerics.output([("T", t, None), ("E", e, None)])
+    ws.numerics.code("ODE", file="snap.m")
     ws.assign("E", 100 * x)  # after CODE: does not change the job
     ws.assign("X'", 0)
-    ws.input({"A": 5})
-    result = ws.run()
+    ws.numerics.input({"A": 5})
+    result = ws.numerics.run()
     assert np.allclose(result["E"], 2 * np.exp(-np.array([0, 0.5, 1])), atol=1e-7)
 
 
@@ -416,10 +426,10 @@ def _defaults() -> Workspace:
     g = ws.constants("G", line=2)
     ws.assign("G", sp.Rational(981, 100))  # Constants G = 9.81
     h, _k, j = ws.constants("H", "K", "J", line=3)
-    ws.set("AutoRHS", "OFF")  # keep G in X' (AutoRHS ON substitutes 9.81)
+    ws.settings.set("AutoRHS", "OFF")  # keep G in X' (AutoRHS ON substitutes 9.81)
     ws.assign("X'", g + h + j)
-    ws.output([("T", t, None), ("X", x, None)])
-    ws.code("ODE", file="defaults.m", line=9)
+    ws.numerics.output([("T", t, None), ("X", x, None)])
+    ws.numerics.code("ODE", file="defaults.m", line=9)
     return ws
 
 
@@ -436,25 +446,25 @@ def test_missing_constants_are_named_before_code_is_generated(monkeypatch):
         "J (declared on line 3). Give them with Input"
     )
     with pytest.raises(NumericsError, match=re.escape(message)):
-        ws.run()
+        ws.numerics.run()
     with pytest.raises(NumericsError, match=re.escape(message)):
-        ws.ode_function()
+        ws.numerics.ode_function()
     assert calls == []  # K is not needed; X starts at 0 as in Autolev
     monkeypatch.undo()
-    assert ws.run(H=1, J=2)["X"][-1] == pytest.approx(128.1)
+    assert ws.numerics.run(H=1, J=2)["X"][-1] == pytest.approx(128.1)
     monkeypatch.setenv("AL2PY_ZERO_MISSING", "1")
-    assert ws.run()["X"][-1] == pytest.approx(98.1)
+    assert ws.numerics.run()["X"][-1] == pytest.approx(98.1)
 
 
 def test_constants_with_values_and_missing_inputs_default_to_zero():
     ws = _defaults()
-    result = ws.run(zero_missing=True)
+    result = ws.numerics.run(zero_missing=True)
     assert result["X"][-1] == pytest.approx(98.1)  # TFINAL defaults to 10
     assert len(result["T"]) == 101
     assert "H has no Input value; using 0" in result.notes
     assert "X has no Input value; using 0" in result.notes
     # a constant's value can still be changed from the command line
-    assert ws.run(G=1, H=1, J=0)["X"][-1] == pytest.approx(20)
+    assert ws.numerics.run(G=1, H=1, J=0)["X"][-1] == pytest.approx(20)
 
 
 def test_override_of_a_substituted_constant_is_noted():
@@ -463,16 +473,16 @@ def test_override_of_a_substituted_constant_is_noted():
     g = ws.constants("G")
     ws.assign("G", 2)
     ws.assign("X'", g)  # AutoRHS ON: X' = 2
-    ws.input({"X": 0, "TFINAL": 1})
-    ws.code("ODE", file="autorhs.m")
-    result = ws.run(G=5)
+    ws.numerics.input({"X": 0, "TFINAL": 1})
+    ws.numerics.code("ODE", file="autorhs.m")
+    result = ws.numerics.run(G=5)
     assert result.states["X"][-1] == pytest.approx(2)
     assert any(n.startswith("G does not appear") for n in result.notes)
 
 
 def test_algebraic_sweep_like_tutor2():
     ws = Workspace("tutor2.al")
-    ws.set("Degrees", "ON")
+    ws.settings.set("Degrees", "ON")
     phi = ws.variables("PHI")
     distance = ws.assign(
         "DISTANCE",
@@ -482,10 +492,14 @@ def test_algebraic_sweep_like_tutor2():
             - sp.Rational(1, 18) * sp.sin(phi)
         ),
     )
-    ws.unit_system("kg", "meter", "sec")
-    ws.output([("PHI", phi, "degrees"), ("DISTANCE", distance, "meters")], line=52)
-    ws.code("ALGEBRAIC", sweep=(phi, "deg", 0, 360, 1), file="tutor2.c", line=55)
-    result = ws.run()
+    ws.numerics.unit_system("kg", "meter", "sec")
+    ws.numerics.output(
+        [("PHI", phi, "degrees"), ("DISTANCE", distance, "meters")], line=52
+    )
+    ws.numerics.code(
+        "ALGEBRAIC", sweep=(phi, "deg", 0, 360, 1), file="tutor2.c", line=55
+    )
+    result = ws.numerics.run()
     (table,) = result.tables
     assert len(table) == 361
     assert np.allclose(table["PHI"], np.arange(361))
@@ -504,8 +518,8 @@ def test_output_times():
 
 def test_write_files_with_digits_of_code_statement(tmp_path):
     ws = tutor6(digits=5)
-    ws.set("Digits", 2)  # after CODE: the job keeps 5
-    result = ws.run(tfinal=3, printint=5)  # a row every 5*0.2 s
+    ws.settings.set("Digits", 2)  # after CODE: the job keeps 5
+    result = ws.numerics.run(tfinal=3, printint=5)  # a row every 5*0.2 s
     (path,) = result.write(tmp_path)
     assert path.name == "tutor6.1"
     lines = path.read_text().splitlines()
@@ -521,7 +535,7 @@ def test_write_files_with_digits_of_code_statement(tmp_path):
 
 def test_plot(tmp_path):
     pytest.importorskip("matplotlib")
-    result = odexy().run()
+    result = odexy().numerics.run()
     (path,) = result.plot(tmp_path)
     assert path.name == "odexy.1.png"
     assert path.read_bytes()[:4] == b"\x89PNG"
@@ -530,26 +544,26 @@ def test_plot(tmp_path):
 def test_plot_axes_are_time_else_the_row():
     """Plots read against time: the table's T column wherever it stands, else
     the job's time at each row; a job without time plots against the row."""
-    result = odexy().run()
+    result = odexy().numerics.run()
     x, label, ys = result.abscissa(result.tables[0])
     assert label == "T (sec)" and ys == [1, 2, 3, 4]
     assert np.allclose(x, np.arange(0, 5.0001, 0.1))
     time = x
-    result = odexy(lambda x, y: [("X", x, None), ("T", t, "s")]).run()
+    result = odexy(lambda x, y: [("X", x, None), ("T", t, "s")]).numerics.run()
     x, label, ys = result.abscissa(result.tables[0])
     assert label == "T (s)" and ys == [0]  # T is the second column here
     assert np.allclose(x, time)
-    result = odexy(lambda x, y: [("Y", y, None)]).run()
+    result = odexy(lambda x, y: [("Y", y, None)]).numerics.run()
     x, label, ys = result.abscissa(result.tables[0])  # no T column: the job's
     assert label == "T (sec)" and ys == [0] and np.allclose(x, time)  # time
-    solved = katy().run()
+    solved = katy().numerics.run()
     x, label, ys = solved.abscissa(solved.tables[0])
     assert label == "row (output step)" and list(x) == [1]
     assert ys == list(range(len(solved.tables[0].columns)))
 
 
 def test_plot_without_matplotlib(tmp_path, monkeypatch):
-    result = odexy().run()
+    result = odexy().numerics.run()
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
     monkeypatch.setitem(sys.modules, "matplotlib.backends.backend_agg", None)
@@ -612,7 +626,7 @@ def test_main_nonconvergence_exit_2(tmp_path, capsys):
     ws = Workspace("nope.al")
     x = ws.variables("x")
     eqs = ws.assign("EQ", sp.Matrix([x**2 + 1]))
-    ws.code("NONLINEAR", eqs=eqs, unknowns=[x], file="nope.m")
+    ws.numerics.code("NONLINEAR", eqs=eqs, unknowns=[x], file="nope.m")
     assert ws.main([], ["--outdir", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert "no solution found" in err
@@ -632,12 +646,14 @@ def test_english_unit_system_converts_inputs_and_outputs(tmp_path):
     x = ws.variables("X'")
     v = ws.constants("V")
     ws.assign("X'", v)
-    ws.unit_system("slug", "ft", "sec")
-    ws.input({"V": (1, "m/sec"), "X": (0, "m"), "TFINAL": (2, "sec")})
-    ws.input({"INTEGSTP": 1, "PRINTINT": 1})
-    ws.output([("T", t, None), ("X", x, "m"), ("XFT", x, None), ("XIN", x, "in")])
-    ws.code("ODE", file="feet.m")
-    result = ws.run(V=2)  # m/sec, the Input's unit
+    ws.numerics.unit_system("slug", "ft", "sec")
+    ws.numerics.input({"V": (1, "m/sec"), "X": (0, "m"), "TFINAL": (2, "sec")})
+    ws.numerics.input({"INTEGSTP": 1, "PRINTINT": 1})
+    ws.numerics.output(
+        [("T", t, None), ("X", x, "m"), ("XFT", x, None), ("XIN", x, "in")]
+    )
+    ws.numerics.code("ODE", file="feet.m")
+    result = ws.numerics.run(V=2)  # m/sec, the Input's unit
     assert np.allclose(result["X"], [0, 2, 4])
     assert np.allclose(result["XFT"], np.array([0, 2, 4]) / 0.3048)
     assert np.allclose(result["XIN"], np.array([0, 2, 4]) / 0.0254)
@@ -649,14 +665,14 @@ def test_english_unit_system_converts_inputs_and_outputs(tmp_path):
 def test_nonlinear_outputs_are_evaluated_at_the_solution():
     ws = katy()
     x, y = ws.symbol("X"), ws.symbol("Y")
-    ws.output([("X", x, None), ("R2", x**2 + y**2, None), ("XD", x, "deg")])
-    ws.code("NONLINEAR", eqs=ws["EQN"], unknowns=[x, y], file="katy2.m")
-    result = ws.run()
+    ws.numerics.output([("X", x, None), ("R2", x**2 + y**2, None), ("XD", x, "deg")])
+    ws.numerics.code("NONLINEAR", eqs=ws["EQN"], unknowns=[x, y], file="katy2.m")
+    result = ws.numerics.run()
     (table,) = result.tables
     assert table.names == ["X", "R2", "XD"]
     assert table["R2"][0] == pytest.approx(1.0)
     assert table["XD"][0] == pytest.approx(math.degrees(0.739085), abs=1e-4)
-    assert ws.jobs[-1].eqs_name == "EQN"
+    assert ws.numerics.jobs[-1].eqs_name == "EQN"
 
 
 def test_algebraic_sweep_with_unknowns():
@@ -664,9 +680,9 @@ def test_algebraic_sweep_with_unknowns():
     x = ws.variables("X")
     s, a = ws.constants("S", "A")
     eqs = ws.assign("E", sp.Matrix([a * x - s]))
-    ws.input({"A": 4})
-    ws.code("ALGEBRAIC", eqs=eqs, unknowns=[x], sweep=(s, None, 0, 2, 0.5))
-    result = ws.run()
+    ws.numerics.input({"A": 4})
+    ws.numerics.code("ALGEBRAIC", eqs=eqs, unknowns=[x], sweep=(s, None, 0, 2, 0.5))
+    result = ws.numerics.run()
     assert result.tables[0].names == ["S", "X"]
     assert np.allclose(result["X"], [0, 0.125, 0.25, 0.375, 0.5])
     assert np.allclose(result["S"], [0, 0.5, 1, 1.5, 2])
@@ -678,9 +694,9 @@ def test_division_by_a_defaulted_input_is_reported():
     ws.variables("X'")
     la = ws.constants("LA")
     ws.assign("X'", 1 / la)
-    ws.code("ODE", file="div.m")
+    ws.numerics.code("ODE", file="div.m")
     with pytest.raises(NumericsError, match="at t = 0; check the Input values"):
-        ws.run(zero_missing=True)
+        ws.numerics.run(zero_missing=True)
 
 
 def test_singular_mass_matrix():
@@ -688,7 +704,7 @@ def test_singular_mass_matrix():
     u = ws.variables("U'")
     m = ws.constants("M")
     ws.assign("ZERO", sp.Matrix([-m * u.diff(t) + 1]))
-    ws.code("DYNAMICS", file="sing.c")
+    ws.numerics.code("DYNAMICS", file="sing.c")
     with pytest.raises(NumericsError, match="matrix of U' in ZERO is singular"):
-        ws.run(zero_missing=True)
-    assert ws.run(M=2).states["U"][-1] == pytest.approx(5)
+        ws.numerics.run(zero_missing=True)
+    assert ws.numerics.run(M=2).states["U"][-1] == pytest.approx(5)

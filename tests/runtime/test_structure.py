@@ -16,14 +16,29 @@ What is checked, and how far a static check can see:
   *other libraries* the runtime must use are listed in :data:`FOREIGN` with
   their owner; the test also proves that no runtime module defines a name
   of that list, so none of our own objects can hide behind it.
+* **No private name shared across modules through ``self``**: ``self._x``
+  only in the module that defines ``_x`` (a ``def``, a class or an
+  assignment).  This is what keeps the parts of
+  :class:`~al2py_runtime.model.model.Model` (one mixin per module of
+  ``model/``) honest: a part that needs another's method calls a public one.
+* **No one-line forwarder**: no method's whole body hands its own
+  parameters, unchanged, to the method of the same name of one of its
+  attributes (``def run(self, v): return self.numerics.run(v)``).  A generated module
+  calls the part that does the work (``al.numerics.run``,
+  ``al.settings.set``; see :func:`test_a_run_parameter_goes_straight_to_the_job`).
+* **The model parts' interface is explicit**: a method that one module of
+  ``model/`` defines and another calls on ``self`` is public, has a docstring
+  and a return annotation.
 """
 
 from __future__ import annotations
 
 import ast
+import math
 from pathlib import Path
 
 import al2py_runtime
+import pytest
 
 ROOT = Path(al2py_runtime.__file__).parent
 PACKAGE = ROOT.name
@@ -57,6 +72,15 @@ MODULES = _modules()
 TREES = {
     name: ast.parse(path.read_text(encoding="utf-8")) for name, path in MODULES.items()
 }
+
+
+def everywhere(check) -> list[str]:
+    """``path:line: what`` for each finding of ``check`` in every module."""
+    return [
+        f"{MODULES[m].relative_to(ROOT)}:{line}: {what}"
+        for m, tree in TREES.items()
+        for line, what in check(tree)
+    ]
 
 
 def _imported(module: str, node: ast.Import | ast.ImportFrom) -> list[str]:
@@ -192,12 +216,7 @@ def test_the_checker_finds_private_access():
 
 
 def test_no_cross_object_private_access():
-    found = [
-        f"{MODULES[m].relative_to(ROOT)}:{line}: {text}"
-        for m, tree in TREES.items()
-        for line, text in private_access(tree)
-    ]
-    assert found == []
+    assert everywhere(private_access) == []
 
 
 def test_foreign_private_names_are_not_ours():
@@ -215,3 +234,240 @@ def test_foreign_private_names_are_not_ours():
             elif isinstance(node, ast.arg):
                 defined.add(node.arg)
     assert defined & set(FOREIGN) == set()
+
+
+def _defined(tree: ast.AST) -> set[str]:
+    """Names a module defines: functions, classes, assigned names and
+    attributes (``self._x = ...``) and parameters."""
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+            out.add(node.name)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            out.add(node.id)
+        elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store):
+            out.add(node.attr)
+    return out
+
+
+def foreign_self_private(tree: ast.AST) -> list[tuple[int, str]]:
+    """``self._x``/``cls._x`` where this module defines no ``_x``: a private
+    name of another module (a sibling mixin's or a base class's)."""
+    own = _defined(tree)
+    return [
+        (node.lineno, ast.unparse(node))
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Attribute)
+        and _private(node.attr)
+        and _own(node.value)
+        and node.attr not in own
+        and node.attr not in FOREIGN
+    ]
+
+
+def test_the_checker_finds_a_siblings_private_name():
+    mine = ast.parse("class A:\n    def _a(self):\n        self._b = self._a()\n")
+    assert foreign_self_private(mine) == []
+    theirs = ast.parse("class B:\n    def f(self):\n        return self._a(self._b)\n")
+    assert [line for line, _ in foreign_self_private(theirs)] == [3, 3]
+
+
+def test_no_private_name_used_outside_its_module():
+    assert everywhere(foreign_self_private) == []
+
+
+MODEL = f"{PACKAGE}.model."
+
+
+def model_interface() -> dict[tuple[str, str], list[str]]:
+    """``(defining module, method) -> [calling modules]`` for the methods of
+    one ``model/`` module's classes called on ``self`` in another."""
+    methods: dict[str, tuple[str, ast.FunctionDef]] = {}
+    for m, tree in TREES.items():
+        if m.startswith(MODEL):
+            for cls in tree.body:
+                if isinstance(cls, ast.ClassDef):
+                    for f in cls.body:
+                        if isinstance(f, ast.FunctionDef):
+                            methods.setdefault(f.name, (m, f))
+    used: dict[tuple[str, str], list[str]] = {}
+    for m, tree in TREES.items():
+        if not m.startswith(MODEL):
+            continue
+        for node in ast.walk(tree):
+            if (
+                isinstance(node, ast.Attribute)
+                and isinstance(node.value, ast.Name)
+                and node.value.id == "self"
+                and node.attr in methods
+                and methods[node.attr][0] != m
+            ):
+                users = used.setdefault((methods[node.attr][0], node.attr), [])
+                if m not in users:
+                    users.append(m)
+    return used
+
+
+def test_the_model_parts_call_each_other():
+    """The interface check sees real calls (else it would prove nothing)."""
+    used = model_interface()
+    assert f"{MODEL}equations" in used[(f"{MODEL}speeds", "fr_speeds")]
+    assert f"{MODEL}objects" in used[(f"{MODEL}points", "add_position")]
+
+
+def test_the_model_parts_interface_is_public_documented_and_typed():
+    bad = []
+    for (m, name), users in sorted(model_interface().items()):
+        f = next(
+            f
+            for cls in TREES[m].body
+            if isinstance(cls, ast.ClassDef)
+            for f in cls.body
+            if isinstance(f, ast.FunctionDef) and f.name == name
+        )
+        missing = [
+            what
+            for what, ok in (
+                ("public", not _private(name)),
+                ("docstring", ast.get_docstring(f) is not None),
+                ("return annotation", f.returns is not None),
+            )
+            if not ok
+        ]
+        if missing:
+            bad.append(f"{m}.{name} (used by {', '.join(users)}): {missing}")
+    assert bad == []
+
+
+def _parameters(f: ast.FunctionDef) -> list[str]:
+    a = f.args
+    return [p.arg for p in [*a.posonlyargs, *a.args, *a.kwonlyargs]][1:] + [
+        p.arg for p in (a.vararg, a.kwarg) if p is not None
+    ]
+
+
+def _passed(call: ast.Call) -> list[str] | None:
+    out = []
+    for a in [*call.args, *(k.value for k in call.keywords)]:
+        if isinstance(a, ast.Starred):
+            a = a.value
+        if not isinstance(a, ast.Name):
+            return None
+        out.append(a.id)
+    return out
+
+
+def forwarders(tree: ast.AST) -> list[tuple[int, str]]:
+    """Methods whose whole body is ``self.part.<same name>(<its parameters>)``."""
+    found = []
+    for cls in ast.walk(tree):
+        if not isinstance(cls, ast.ClassDef):
+            continue
+        for f in cls.body:
+            if not isinstance(f, ast.FunctionDef):
+                continue
+            body = f.body[1:] if ast.get_docstring(f) is not None else f.body
+            if len(body) != 1 or not isinstance(body[0], ast.Return | ast.Expr):
+                continue
+            call = body[0].value
+            if (
+                isinstance(call, ast.Call)
+                and isinstance(call.func, ast.Attribute)
+                and isinstance(call.func.value, ast.Attribute)
+                and _own(call.func.value.value)
+                and call.func.attr.lstrip("_") == f.name.lstrip("_")
+                and _passed(call) == _parameters(f)
+            ):
+                found.append((f.lineno, f"{cls.name}.{f.name}"))
+    return found
+
+
+def test_the_checker_finds_a_forwarder():
+    tree = ast.parse(
+        "class W:\n"
+        "    def run(self, values=None, /, **more):\n"
+        "        'Run.'\n"
+        "        return self.numerics.run(values, **more)\n"
+        "    def set(self, name, value):\n"
+        "        self.settings.set(name, value.upper())\n"
+        "    def save(self, name):\n"
+        "        self.saves.append(name)\n"
+    )
+    assert forwarders(tree) == [(2, "W.run")]
+
+
+def test_no_one_line_forwarder():
+    assert everywhere(forwarders) == []
+
+
+PATH_SCRIPT = """\
+Variables X'
+Constants A
+X' = -A*X
+Input A = 2, X = 1, TFINAL = 1, INTEGSTP = 0.5
+Output T, X
+CODE ODE() decay.c
+"""
+
+
+def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
+    """The path of ``run(job=..., backend=..., A=3)`` and of ``Input``
+    values, from the generated module to where they are used:
+
+    * ``Input A = 2`` is ``al.numerics.input({"A": 2}, line=N)``:
+      :meth:`Numerics.input` stores an ``InputValue``, and ``CODE``
+      (``al.numerics.code``) snapshots the Inputs into its ``Job``;
+    * the module's ``run(values, **overrides)`` is
+      ``al.numerics.run(values, **overrides)``: :meth:`Numerics.run` picks
+      the ``Job`` (``job=``) and merges the overrides, then
+      :func:`~al2py_runtime.jobs.run.run_job` converts Inputs and overrides
+      to internal units (``input_values``) and hands ``backend`` to the
+      dynamics (``ode_system`` -> ``backends.choose``/``compile_dynamics``).
+
+    No workspace method sits between: the module's ``al`` holds the parts."""
+    from al2py_runtime.jobs import numerics
+
+    from al2py import convert
+
+    code = convert(PATH_SCRIPT, "decay.al").code
+    assert "al.numerics.input({" in code
+    assert "return al.numerics.run(values, **overrides)" in code
+    path = tmp_path / "decay_path.py"
+    path.write_text(code, encoding="utf-8")
+    namespace: dict = {"__name__": "decay_path", "__file__": str(path)}
+    exec(compile(code, str(path), "exec"), namespace)
+
+    seen = []
+    real = numerics.run_job
+
+    def spy(job, overrides, **kw):
+        seen.append((job.inputs["A"].value, dict(overrides), kw))
+        return real(job, overrides, **kw)
+
+    monkeypatch.setattr(numerics, "run_job", spy)
+    result = namespace["run"](A=3, backend="lambdify", job="decay")
+    ((given, overrides, kw),) = seen
+    assert given == 2 and overrides == {"A": 3}
+    assert kw == {"backend": "lambdify", "zero_missing": None}
+    assert result["X"][-1] == pytest.approx(math.exp(-3), rel=1e-4)
+
+
+def test_the_readme_layout_names_every_runtime_module():
+    """The README's layout table names each folder and module of the runtime
+    (with the one concept it owns)."""
+    import re
+
+    readme = (ROOT.parents[1] / "README.md").read_text(encoding="utf-8")
+    layout = readme[readme.index("## Layout") :]
+    layout = layout[: layout.index("\n## ", 1)]
+    words = set(re.findall(r"\w+", layout))
+    missing = [
+        str(path.relative_to(ROOT))
+        for path in sorted(ROOT.rglob("*.py"))
+        if path.name != "__init__.py" and path.stem not in words
+    ] + [
+        f"{d.name}/"
+        for d in sorted(ROOT.iterdir())
+        if d.is_dir() and (d / "__init__.py").exists() and f"{d.name}/" not in layout
+    ]
+    assert missing == []

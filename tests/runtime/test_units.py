@@ -110,12 +110,18 @@ def test_dimension_mismatch():
 
 def test_workspace_units_and_input_value():
     ws = Workspace("u.al")
-    assert float(ws.units("n*m", "lbf*ft")) == pytest.approx(0.7375621, rel=1e-7)
-    ws.unit_system("slug", "ft", "sec")
-    ws.input({"LA": (1, "m"), "QA": (30, "deg"), "N": 3})
-    assert ws.input_value("la") == 1
-    assert float(ws.input_value("LA", unit_system=True)) == pytest.approx(1 / 0.3048)
-    assert float(ws.input_value("QA", unit_system=True)) == pytest.approx(math.pi / 6)
-    assert ws.input_value("N") == 3
+    assert float(ws.numerics.units("n*m", "lbf*ft")) == pytest.approx(
+        0.7375621, rel=1e-7
+    )
+    ws.numerics.unit_system("slug", "ft", "sec")
+    ws.numerics.input({"LA": (1, "m"), "QA": (30, "deg"), "N": 3})
+    assert ws.numerics.input_value("la") == 1
+    assert float(ws.numerics.input_value("LA", unit_system=True)) == pytest.approx(
+        1 / 0.3048
+    )
+    assert float(ws.numerics.input_value("QA", unit_system=True)) == pytest.approx(
+        math.pi / 6
+    )
+    assert ws.numerics.input_value("N") == 3
     with pytest.raises(KeyError):
-        ws.input_value("MISSING")
+        ws.numerics.input_value("MISSING")

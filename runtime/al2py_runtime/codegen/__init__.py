@@ -1,10 +1,12 @@
 """The programs ``CODE`` statements name: C, MATLAB/Octave and Fortran.
 
-:func:`write_programs` writes, for each ``CODE Dynamics``/``ODE`` job, what
-Autolev's ``CODE Dynamics() model.c`` (or ``.m``, ``.f``, ``.for``) wrote:
-a program with the equations of motion, the outputs and a driver that reads
-``model.in`` (see :mod:`.infile`), integrates with Kutta-Merson and writes
-the output tables ``model.1``, ``model.2``, ... -- and ``model.in`` itself,
+:func:`write_programs` writes, for each ``CODE`` job, what Autolev's
+``CODE Dynamics() model.c`` (or ``.m``, ``.f``, ``.for``) wrote: a program
+with the equations, the outputs and a driver that reads ``model.in`` (see
+:mod:`.infile`), integrates with Kutta-Merson (Dynamics, ODE), solves the
+linear equations (Algebraic, :mod:`.static`) or solves by Newton's method
+(Nonlinear) and writes the output tables ``model.1``, ``model.2``, ... --
+and ``model.in`` itself,
 with the script's Input values.  ``CODE ... model.c, NOSUBS`` writes the
 equations only (no driver).  One description of the program
 (:mod:`.program`) is spelled by three printers (:mod:`.c`, :mod:`.fortran`,
@@ -22,6 +24,7 @@ from ..jobs import backends
 from ..jobs.run import Job, NumericsError
 from .infile import in_text
 from .program import Program, describe
+from .static import describe_static
 
 __all__ = ["LANGUAGES", "in_text", "program_source", "target_file", "write_programs"]
 
@@ -34,7 +37,8 @@ LANG_SUFFIX = {"c": ".c", "m": ".m", "matlab": ".m", "f": ".f", "fortran": ".f"}
 def target_file(job: Job, lang: str | None = None) -> str:
     """The file a job's ``CODE`` statement names (``STEM.c`` if none); with
     ``lang`` (``c``, ``m``, ``f``) the same stem in that language."""
-    name = job.filename or f"{job.stem}.c"
+    # a Windows path names its file after the last backslash, as RUN's does
+    name = (job.filename or f"{job.stem}.c").replace("\\", "/")
     suffix = PurePath(name).suffix.lower()
     if lang is not None:
         want = LANG_SUFFIX[lang.lower()]
@@ -76,10 +80,11 @@ def write_programs(
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
-    for job in ws.jobs if jobs is None else jobs:
+    for job in ws.numerics.jobs if jobs is None else jobs:
         try:
             name = PurePath(target_file(job, lang)).name
-            program = describe(job, source)
+            static = job.kind in ("ALGEBRAIC", "NONLINEAR")
+            program = (describe_static if static else describe)(job, source)
             text = program_source(program, name)
         except (NumericsError, backends.BackendError) as exc:
             message = str(exc)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import textwrap
 from typing import Any
 
 from ..jobs import backends
@@ -15,6 +16,11 @@ __all__ = ["c_source"]
 
 def _string(text: str) -> str:
     return json.dumps(text)  # a valid C string literal for ASCII text
+
+
+def _block_comment(lines: list[str], first: str = "/* ") -> list[str]:
+    out = [("   " if i else first) + ln for i, ln in enumerate(lines)]
+    return out[:-1] + [out[-1] + " */"]
 
 
 def _double(x: float) -> str:
@@ -53,7 +59,7 @@ def equations(program: Program, api: str) -> list[str]:
     n = program.nu
     lines = [
         f"#define AL_NY {program.ny}  /* states */",
-        f"#define AL_NU {n}  /* accelerations solved from M ud = f */",
+        f"#define AL_NU {n}  /* solved from M ud = f */",
         f"#define AL_NP {program.np}  /* constants */",
         f"#define AL_NOUT {program.nout}  /* outputs, all tables */",
     ]
@@ -61,9 +67,7 @@ def equations(program: Program, api: str) -> list[str]:
         lines.append(backends.SOLVE_C)
     used = [a.expr for a in program.eqns]
     lines += [
-        "/* The derivatives dy of the states y at time T with the constants p,",
-        "   and the accelerations ud solved from M ud = f.  Returns 0, 1 when M",
-        "   is singular, 2 when a derivative is not finite. */",
+        *_block_comment(program.eqns_doc),
         f"{api}int eqns(double T, const double y[], const double p[], double dy[],",
         "         double ud[])",
         "{",
@@ -109,8 +113,9 @@ def c_source(program: Program, target: str) -> str:
     if program.nosubs:
         head += [
             "   NOSUBS: the equations only, no main program.  Link with your own:",
-            "   eqns(T, y, p, dy, ud) and outputs(T, y, p, out); y holds the states,",
-            "   p the constants, in the order listed below (internal units). */",
+            "   eqns(T, y, p, dy, ud) and outputs(T, y, p, out); y holds the states",
+            "   (Nonlinear: the unknowns), p the constants, in the order listed",
+            "   below (internal units). */",
             "#include <math.h>",
             "",
         ]
@@ -123,8 +128,8 @@ def c_source(program: Program, target: str) -> str:
         f"   Reads {program.stem}.in when it is in the current folder (the values",
         "   from column 60 on, a blank line after each group), else starts from",
         "   the script's Input values; NAME=VALUE changes one (in its Input's",
-        "   unit).  Integrates with Kutta-Merson (ABSERR, RELERR, steps of",
-        f"   INTEGSTP) and writes {program.stem}.1, ... every PRINTINT steps. */",
+        "   unit).",
+        *_block_comment(textwrap.wrap(program.task, 72), "   "),
         "#include <ctype.h>",
         "#include <math.h>",
         "#include <stdio.h>",
@@ -146,9 +151,8 @@ def c_source(program: Program, target: str) -> str:
         "static al_input al_inputs[AL_NIN] = {",
     ]
     for e in entries:
-        key = e.name.upper()
         lines.append(
-            f"    {{{_string(key)}, {_double(e.value)}, {_double(e.factor)}}},"
+            f"    {{{_string(e.setting)}, {_double(e.value)}, {_double(e.factor)}}},"
         )
     groups = [len(g) for g in program.groups]
     tables = program.tables
@@ -178,10 +182,77 @@ def c_source(program: Program, target: str) -> str:
         "};",
         f"#define AL_DIGITS {program.digits}",
         f"#define AL_STEM {_string(program.stem)}",
-        f"#define AL_I_STATE {program.np}  /* first state in al_inputs */",
-        f"#define AL_I_INTEG {program.np + program.ny}  /* TINITIAL, TFINAL, INTEGSTP,"
-        " PRINTINT, ABSERR, RELERR */",
-        _MAIN_C,
+        f"#define AL_WHERE {_string(job.where)}",
+        f"#define AL_I_STATE {len(program.inputs)}  /* first state in al_inputs */",
+        f"#define AL_I_INTEG {len(program.inputs) + program.ny}  /* after the states:"
+        " the range or the integration parameters */",
+    ]
+    if program.kind == "NONLINEAR":
+        labels = ", ".join(_string(x) for x in program.labels)
+        lines += [
+            f"#define AL_T0 {_double(program.t0)}  /* T in the equations */",
+            f"static const char *al_label[AL_NY] = {{{labels}}};",
+            _COMMON_C + _NEWTON_C,
+        ]
+    elif program.kind == "ALGEBRAIC":
+        lines += [
+            f"#define AL_T0 {_double(program.t0)}  /* T in the equations */",
+            _COMMON_C + _algebraic_main(program),
+        ]
+    else:
+        lines.append(_COMMON_C + _KUTTA_C + _MAIN_DYNAMICS_C)
+    return "\n".join(lines)
+
+
+def _algebraic_main(program: Program) -> str:
+    """One row, or one per value of the range ``[PHI deg=0,360,1]`` (the
+    last constant) with run()'s values: start + k*step while within the
+    final value (plus 1e-9 of a step), and the final value last."""
+    at, args = "", ", AL_WHERE"
+    if not program.ranges:
+        loop = [
+            "    if (al_open(files)) return 2;",
+            "    code = al_write_row(files, AL_T0, y, p);",
+        ]
+    else:
+        at, args = " at %s = %g", ", AL_WHERE, r[0].name, x"
+        loop = [
+            "    const al_input *r = &al_inputs[AL_I_INTEG];  /* start, final, step */",
+            "    double start = r[0].value, final = r[1].value, step = r[2].value, x = 0;",
+            "    if (step == 0.0 && final != start) {",
+            r'        fprintf(stderr, "error: the range step must not be 0\n");',
+            "        return 2;",
+            "    }",
+            "    if ((final - start) * step < 0) step = -step;",
+            "    long n = final == start ? 0 : (long)floor((final - start) / step + 1e-9);",
+            "    int extra = fabs(start + (double)n * step - final)"
+            " > 1e-9 * fmax(1.0, fabs(final));",
+            "    if (al_open(files)) return 2;",
+            "    for (long k = 0; k <= n + extra && !code; k++) {",
+            "        x = k < n || (k == n && extra) ? start + (double)k * step : final;",
+            "        p[AL_NP - 1] = x * r[0].factor;",
+            "        code = al_write_row(files, AL_T0, y, p);",
+            "    }",
+        ]
+    lines = [
+        "",
+        "int main(int argc, char **argv)",
+        "{",
+        "    double v[AL_NIN], p[AL_NP > 0 ? AL_NP : 1], y[1] = {0.0};",
+        "    FILE *files[AL_NTABLE > 0 ? AL_NTABLE : 1];",
+        "    int code = al_start(argc, argv, v);",
+        "    if (code) return code == 1 ? 0 : 2;",
+        f"    for (int i = 0; i < {len(program.inputs)}; i++) p[i] = v[i];",
+        *loop,
+        "    al_close(files, code);",
+        "    if (code == 1)",
+        '        fprintf(stderr, "error: %s: the equations are singular'
+        f' (no unique solution){at}\\n"{args});',
+        "    else if (code == 2)",
+        f'        fprintf(stderr, "error: %s: a value is not finite{at}\\n"{args});',
+        "    return code ? 2 : 0;",
+        "}",
+        "",
     ]
     return "\n".join(lines)
 
@@ -197,6 +268,8 @@ def _listing(program: Program) -> list[str]:
         f"     {i:3d}  {e.name} ({e.unit or 'UNITS'})"
         for i, e in enumerate(program.initials)
     ]
+    if program.kind == "ALGEBRAIC":
+        lines.append("   ud[] (solved by eqns): " + ", ".join(program.unknowns))
     lines.append("   out[]:")
     k = 0
     for t in program.tables:
@@ -205,10 +278,9 @@ def _listing(program: Program) -> list[str]:
     return lines + ["*/", ""]
 
 
-_MAIN_C = (
-    "\nstatic double al_t_error;  /* time of the failing evaluation */\n"
-    + KUTTA_C
-    + r"""
+_COMMON_C = r"""
+static double al_t_error;  /* time of the failing evaluation */
+
 static int al_same(const char *a, const char *b, size_t n)
 {
     if (strlen(b) != n) return 0;
@@ -298,23 +370,62 @@ static int al_write_row(FILE **files, double t, const double *y, const double *p
     return 0;
 }
 
-int main(int argc, char **argv)
+/* --help, STEM.in, then NAME=VALUE arguments; v: the inputs in internal
+   units.  Returns 0, 1 after --help, 2 after an error. */
+static int al_start(int argc, char **argv, double v[])
 {
-    double p[AL_NP > 0 ? AL_NP : 1], y[AL_NY];
-    FILE *files[AL_NTABLE > 0 ? AL_NTABLE : 1];
     if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
         printf("usage: %s [NAME=VALUE ...]\n"
                "reads %s.in if present; inputs (in their Input units):\n",
                argv[0], AL_STEM);
         for (int i = 0; i < AL_NIN; i++)
             printf("  %s = %.15g\n", al_inputs[i].name, al_inputs[i].value);
-        return 0;
+        return 1;
     }
     if (al_read_in(AL_STEM ".in")) return 2;
     for (int i = 1; i < argc; i++)
         if (al_set(argv[i])) return 2;
-    double v[AL_NIN];
     for (int i = 0; i < AL_NIN; i++) v[i] = al_inputs[i].value * al_inputs[i].factor;
+    return 0;
+}
+
+/* Opens the output files (not Encode's) and writes their headers. */
+static int al_open(FILE **files)
+{
+    for (int k = 0; k < AL_NTABLE; k++) {
+        char name[4096];
+        files[k] = 0;
+        if (!al_written[k]) continue;
+        snprintf(name, sizeof name, "%s.%d", AL_STEM, k + 1);
+        files[k] = fopen(name, "w");
+        if (!files[k]) {
+            perror(name);
+            return 2;
+        }
+        fputs(al_header[k], files[k]);
+    }
+    return 0;
+}
+
+/* Closes the output files; lists them when code is 0. */
+static void al_close(FILE **files, int code)
+{
+    for (int k = 0; k < AL_NTABLE; k++)
+        if (files[k]) fclose(files[k]);
+    for (int k = 0; k < AL_NTABLE && !code; k++)
+        if (al_written[k]) printf("Wrote %s.%d\n", AL_STEM, k + 1);
+}
+"""
+
+_KUTTA_C = "\n" + KUTTA_C  # the C text that run() compiles too
+
+_MAIN_DYNAMICS_C = r"""
+int main(int argc, char **argv)
+{
+    double v[AL_NIN], p[AL_NP > 0 ? AL_NP : 1], y[AL_NY];
+    FILE *files[AL_NTABLE > 0 ? AL_NTABLE : 1];
+    int code = al_start(argc, argv, v);
+    if (code) return code == 1 ? 0 : 2;
     for (int i = 0; i < AL_NP; i++) p[i] = v[i];
     for (int i = 0; i < AL_NY; i++) y[i] = v[AL_I_STATE + i];
     double t0 = v[AL_I_INTEG], t1 = v[AL_I_INTEG + 1], step = v[AL_I_INTEG + 2];
@@ -331,22 +442,11 @@ int main(int argc, char **argv)
         return 2;
     }
     if ((t1 - t0) * step < 0) step = -step;  /* toward TFINAL */
-    for (int k = 0; k < AL_NTABLE; k++) {
-        char name[4096];
-        files[k] = 0;
-        if (!al_written[k]) continue;
-        snprintf(name, sizeof name, "%s.%d", AL_STEM, k + 1);
-        files[k] = fopen(name, "w");
-        if (!files[k]) {
-            perror(name);
-            return 2;
-        }
-        fputs(al_header[k], files[k]);
-    }
+    if (al_open(files)) return 2;
     /* As Autolev's programs: a row at TINITIAL, after every PRINTINT steps
        of INTEGSTP, and at the first step within INTEGSTP/100 of TFINAL. */
     double t = t0, hc = 0.0;
-    int cuts = 20, code = 0;
+    int cuts = 20;
     long count = 0;
     double dy[AL_NY];
     code = al_f(t, y, p, dy);
@@ -360,8 +460,7 @@ int main(int argc, char **argv)
         code = kutta(&t, step, y, p, &hc, &cuts, atol, rtol);
         count--;
     }
-    for (int k = 0; k < AL_NTABLE; k++)
-        if (files[k]) fclose(files[k]);
+    al_close(files, code);
     if (code == 1)
         fprintf(stderr, "error: the mass matrix is singular at t = %g\n", al_t_error);
     else if (code == 2)
@@ -369,10 +468,102 @@ int main(int argc, char **argv)
     else if (code == 3)
         fprintf(stderr, "error: integration failed at t = %g: the step was halved"
                         " too often (ABSERR, RELERR)\n", t);
-    else
-        for (int k = 0; k < AL_NTABLE; k++)
-            if (al_written[k]) printf("Wrote %s.%d\n", AL_STEM, k + 1);
     return code ? 2 : 0;
 }
 """
-)
+
+_NEWTON_C = r"""
+#define AL_MAXIT 100  /* Newton iterations */
+#define AL_HALVINGS 30  /* of one step, while max|F| does not decrease */
+
+static double al_norm(const double *f, int *worst)
+{
+    double m = 0.0;
+    for (int i = 0; i < AL_NY; i++)
+        if (!(fabs(f[i]) <= m)) {  /* a NaN is the largest */
+            m = fabs(f[i]);
+            *worst = i;
+        }
+    return m;
+}
+
+/* Newton's method from the guesses y: eqns leaves the residuals F in f and
+   the step dx solving J dx = -F in dx.  A step is halved (up to
+   AL_HALVINGS times) until max|F| decreases.  Converged when max|F| <=
+   ABSERR * max(1, max|F(guesses)|) and every |dx[i]| <= ABSERR +
+   RELERR*|y[i]|; that last step is taken.  Returns 0, 1 (J singular), 2 (a
+   value not finite) or 4 (no convergence); *res: max|F|, *worst: its i. */
+static int al_newton(double *y, const double *p, double abserr, double relerr,
+                     double *res, int *worst, int *iters)
+{
+    double f[AL_NY], dx[AL_NY], yn[AL_NY], fn[AL_NY], dxn[AL_NY];
+    int code = eqns(AL_T0, y, p, f, dx);
+    double norm = *res = al_norm(f, worst);
+    double tol = abserr * (norm > 1.0 ? norm : 1.0);
+    for (*iters = 0; *iters < AL_MAXIT; (*iters)++) {
+        if (code) return code;
+        int small = 1;
+        for (int i = 0; i < AL_NY; i++)
+            if (fabs(dx[i]) > abserr + relerr * fabs(y[i])) small = 0;
+        if (small && norm <= tol) {
+            for (int i = 0; i < AL_NY; i++) y[i] += dx[i];
+            return 0;
+        }
+        double lambda = 1.0;
+        for (int half = 0;; half++) {
+            for (int i = 0; i < AL_NY; i++) yn[i] = y[i] + lambda * dx[i];
+            int w = 0, c = eqns(AL_T0, yn, p, fn, dxn);
+            double next = al_norm(fn, &w);
+            if (c != 2 && next < norm) {
+                memcpy(y, yn, sizeof yn);
+                memcpy(f, fn, sizeof fn);
+                memcpy(dx, dxn, sizeof dxn);
+                norm = *res = next;
+                *worst = w;
+                code = c;
+                break;
+            }
+            if (half == AL_HALVINGS) return 4;
+            lambda /= 2.0;
+        }
+    }
+    return 4;
+}
+
+int main(int argc, char **argv)
+{
+    double v[AL_NIN], p[AL_NP > 0 ? AL_NP : 1], y[AL_NY], res = 0.0;
+    FILE *files[AL_NTABLE > 0 ? AL_NTABLE : 1];
+    int code = al_start(argc, argv, v), worst = 0, iters = 0;
+    if (code) return code == 1 ? 0 : 2;
+    for (int i = 0; i < AL_NP; i++) p[i] = v[i];
+    for (int i = 0; i < AL_NY; i++) y[i] = v[AL_I_STATE + i];
+    double abserr = v[AL_I_INTEG], relerr = v[AL_I_INTEG + 1];
+    if (abserr <= 0 || relerr <= 0) {
+        fprintf(stderr, "error: ABSERR and RELERR must be positive\n");
+        return 2;
+    }
+    code = al_newton(y, p, abserr, relerr, &res, &worst, &iters);
+    if (code == 1) {
+        fprintf(stderr, "error: %s: the Jacobian of the equations is singular"
+                        " after %d Newton iterations; try other guesses in %s.in\n",
+                AL_WHERE, iters, AL_STEM);
+        return 2;
+    }
+    if (code) {
+        fprintf(stderr, "error: %s: no solution found from the guesses in %s.in:"
+                        " |%s| = %.3g after %d Newton iterations; try other"
+                        " guesses\n", AL_WHERE, AL_STEM, al_label[worst], res, iters);
+        return 2;
+    }
+    if (al_open(files)) return 2;
+    code = al_write_row(files, AL_T0, y, p);
+    al_close(files, code);
+    if (code) {
+        fprintf(stderr, "error: %s: an output is not finite at the solution\n",
+                AL_WHERE);
+        return 2;
+    }
+    return 0;
+}
+"""

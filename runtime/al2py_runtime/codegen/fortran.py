@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import re
+import textwrap
 from typing import Any
 
 import sympy as sp
@@ -47,12 +48,15 @@ def _comment(text: str) -> list[str]:
     return [f"C     {text}"[:_W].rstrip()]
 
 
-def _string_write(unit: str, text: str) -> list[str]:
-    """``write(unit, '(A)') 'text'`` split over continuation lines."""
-    quoted = [text[i : i + 40].replace("'", "''") for i in range(0, len(text), 40)]
+def _string_write(unit: str, text: str, advance: bool = False) -> list[str]:
+    """``write(unit, '(A)') 'text'`` split over continuation lines (with
+    ``advance``: no new line after it)."""
+    size = 30 if advance else 40
+    quoted = [text[i : i + size].replace("'", "''") for i in range(0, len(text), size)]
+    fmt = "'(A)', advance='no'" if advance else "'(A)'"
     if not quoted:
-        return [f"      write({unit}, '(A)') ''"]
-    lines = [f"      write({unit}, '(A)') '{quoted[0]}'"]
+        return [f"      write({unit}, {fmt}) ''"]
+    lines = [f"      write({unit}, {fmt}) '{quoted[0]}'"]
     lines += [f"     &  // '{q}'" for q in quoted[1:]]
     return lines
 
@@ -124,7 +128,7 @@ def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> lis
 
 def equations(program: Program) -> list[str]:
     printer = _Printer()
-    n, ny, np_, nout = program.nu, program.ny, program.np, program.nout
+    n, ny, np_, nout = program.nu, max(program.ny, 1), program.np, program.nout
     e = program.eqns
     lines = _comment("The derivatives dy of the states y at time T with the")
     lines += _comment("constants p and the accelerations ud (M ud = f).")
@@ -134,7 +138,7 @@ def equations(program: Program) -> list[str]:
         "      implicit none",
         f"      double precision T, y({ny}), p({max(np_, 1)}), dy({ny})",
         f"      double precision ud({max(n, 1)})",
-        "      integer ierr, i",
+        "      integer ierr" + (", i" if program.ny else ""),
     ]
     if n:
         lines.append(f"      double precision mm({n}, {n})")
@@ -149,15 +153,17 @@ def equations(program: Program) -> list[str]:
     if not n:
         lines.append("      ud(1) = 0d0")
     lines += _body(program, e, printer)
-    lines += [
-        f"      do i = 1, {ny}",
-        "        if (dy(i) .ne. dy(i) .or. abs(dy(i)) .gt. huge(1d0)) then",
-        "          ierr = 2",
-        "        end if",
-        "      end do",
-        "      end",
-        "",
-    ]
+    if program.ny:
+        lines += [
+            f"      do i = 1, {ny}",
+            "        if (dy(i) .ne. dy(i) .or. abs(dy(i)) .gt. huge(1d0)) then",
+            "          ierr = 2",
+            "        end if",
+            "      end do",
+        ]
+    else:
+        lines.append("      dy(1) = 0d0")
+    lines += ["      end", ""]
     o = program.outputs
     lines += _comment("The output quantities at (T, y), all tables in order.")
     lines += [
@@ -209,22 +215,43 @@ def fortran_source(program: Program, target: str) -> str:
     lines += _comment(f"Build: gfortran -O2 -o {stem} {target}")
     lines += _comment(f"Run:   ./{stem}   (reads {stem}.in when present, the")
     lines += _comment("values from column 60, a blank line after each group;")
-    lines += _comment("else the script's Input values).  Kutta-Merson with")
-    lines += _comment(f"ABSERR, RELERR; writes {stem}.1, ... every PRINTINT steps.")
+    lines += _comment("else the script's Input values).")
+    for text in textwrap.wrap(program.task, 64):
+        lines += _comment(text)
+    if program.kind == "NONLINEAR":
+        lines += _nonlinear_main(program)
+        tail = _NEWTON_F + _READ_F
+    elif program.kind == "ALGEBRAIC":
+        lines += _algebraic_main(program)
+        tail = _READ_F
+    else:
+        lines += _dynamics_main(program)
+        tail = _KUTTA_F + _READ_F
+    lines += equations(program)
+    lines += _row_routine(program.tables)
+    lines += tail.splitlines()
+    return "\n".join(lines) + "\n"
+
+
+def _prologue(program: Program, decls: list[str]) -> list[str]:
+    """The main program up to the constants p and the values y: the
+    declarations (with ``decls``), the Input values, ``STEM.in``."""
     entries = program.entries
-    nin, ny, np_, nout = len(entries), program.ny, program.np, program.nout
+    nin, ny, nout = len(entries), max(program.ny, 1), program.nout
+    np_ = len(program.inputs)
     tables = program.tables
     groups = [len(g) for g in program.groups]
-    lines += [
+    lines = [
         f"      program {_program_name(program)}",
         "      implicit none",
-        f"      integer, parameter :: nin = {nin}, ny = {ny}, np = {max(np_, 1)}",
+        f"      integer, parameter :: nin = {nin}, ny = {ny},"
+        f" np = {max(program.np, 1)}",
         f"      integer, parameter :: nout = {max(nout, 1)}, nt = {max(len(tables), 1)}",
-        "      double precision v(nin), fac(nin), y(ny), p(np), dy(ny)",
-        f"      double precision ud({max(program.nu, 1)}), of(nout)",
-        "      double precision t, t0, t1, step, prnt, atol, rtol, hc",
-        "      integer ncol(nt), iw(nt), ngrp(3), i, ierr, cuts, count",
-        "      logical there, last",
+        "      double precision v(nin), fac(nin), y(ny), p(np), of(nout)",
+        "      integer ncol(nt), iw(nt), ngrp(3), ierr"
+        + (", i" if np_ or program.ny else ""),
+        "      logical there",
+        *decls,
     ]
     for k, e in enumerate(entries, start=1):
         lines.append(f"      v({k}) = {_d(e.value)}")
@@ -240,25 +267,76 @@ def fortran_source(program: Program, target: str) -> str:
         lines += ["      ncol(1) = 0", "      iw(1) = 0"]
     for k in range(3):
         lines.append(f"      ngrp({k + 1}) = {groups[k] if k < len(groups) else 0}")
+    stem = program.stem
     lines += [
         f"      inquire(file='{stem}.in', exist=there)",
         "      if (there) then",
         f"        call alread('{stem}.in', nin, ngrp, v, ierr)",
         "        if (ierr .ne. 0) stop 2",
         "      end if",
-        "      do i = 1, np_fill(np)",
-        "        p(i) = v(i) * fac(i)",
-        "      end do",
     ]
     # a model without constants still passes p(1)
-    lines[-3] = f"      do i = 1, {np_}" if np_ else "      p(1) = 0d0"
-    if not np_:
-        del lines[-2:]
+    if np_:
+        lines += [
+            f"      do i = 1, {np_}",
+            "        p(i) = v(i) * fac(i)",
+            "      end do",
+        ]
+    else:
+        lines.append("      p(1) = 0d0")
+    if program.ny:
+        lines += [
+            "      do i = 1, ny",
+            f"        y(i) = v({np_} + i) * fac({np_} + i)",
+            "      end do",
+        ]
+    else:
+        lines.append("      y(1) = 0d0")
+    return lines
+
+
+def _open(program: Program) -> list[str]:
+    lines = []
+    for k, t in enumerate(program.tables, start=1):
+        if not t.written:
+            continue
+        lines.append(
+            f"      open({10 + k}, file='{program.stem}.{k}', status='replace',"
+        )
+        lines.append("     &     action='write')")
+        for text in t.header[:-1].split("\n"):
+            lines += _string_write(str(10 + k), text)
+    return lines
+
+
+def _close(program: Program, errors: list[str]) -> list[str]:
+    """Close the files, report ``errors`` (``(code, message lines)``) or
+    the files written; stop 2 after an error."""
+    written = [t.written for t in program.tables] or [False]
+    lines = [f"      close({10 + k})" for k, w in enumerate(written, start=1) if w]
     lines += [
-        "      do i = 1, ny",
-        f"        y(i) = v({np_} + i) * fac({np_} + i)",
-        "      end do",
+        ln.replace("      else if", "      if", 1) if i == 0 else ln
+        for i, ln in enumerate(errors)
     ]
+    lines.append("      else" if errors else "      if (ierr .eq. 0) then")
+    for k, w in enumerate(written, start=1):
+        if w:
+            lines.append(f"        write(*, '(A)') 'Wrote {program.stem}.{k}'")
+    lines += ["      end if", "      if (ierr .ne. 0) stop 2", "      end", ""]
+    return lines
+
+
+def _dynamics_main(program: Program) -> list[str]:
+    np_, ny = program.np, program.ny
+    lines = _prologue(
+        program,
+        [
+            f"      double precision dy(ny), ud({max(program.nu, 1)})",
+            "      double precision t, t0, t1, step, prnt, atol, rtol, hc",
+            "      integer cuts, count",
+            "      logical last",
+        ],
+    )
     base = np_ + ny
     lines += [
         f"      t0 = v({base + 1}) * fac({base + 1})",
@@ -275,14 +353,7 @@ def fortran_source(program: Program, target: str) -> str:
         "      end if",
         "      if ((t1 - t0) * step .lt. 0d0) step = -step",
     ]
-    for k, t in enumerate(tables, start=1):
-        if not t.written:
-            continue
-        lines.append(f"      open({10 + k}, file='{stem}.{k}', status='replace',")
-        lines.append("     &     action='write')")
-        for text in t.header[:-1].split("\n"):
-            lines += _string_write(str(10 + k), text)
-    written = [t.written for t in tables] or [False]
+    lines += _open(program)
     lines += [
         "      t = t0",
         "      hc = 0d0",
@@ -305,11 +376,8 @@ def fortran_source(program: Program, target: str) -> str:
         "        count = count - 1",
         "      end do",
     ]
-    for k, w in enumerate(written, start=1):
-        if w:
-            lines.append(f"      close({10 + k})")
-    lines += [
-        "      if (ierr .eq. 1) then",
+    errors = [
+        "      else if (ierr .eq. 1) then",
         "        write(*, '(A, ES14.6)') 'error: the mass matrix is singular'",
         "     &    // ' at t =', t",
         "      else if (ierr .eq. 2) then",
@@ -318,21 +386,127 @@ def fortran_source(program: Program, target: str) -> str:
         "      else if (ierr .eq. 3) then",
         "        write(*, '(A, ES14.6)') 'error: integration failed (the step'",
         "     &    // ' was halved too often) at t =', t",
-        "      else",
     ]
-    for k, w in enumerate(written, start=1):
-        if w:
-            lines.append(f"        write(*, '(A)') 'Wrote {stem}.{k}'")
+    return lines + _close(program, errors)
+
+
+def _row(program: Program) -> str:
+    return (
+        f"        call alrow({_d(program.t0)}, y, p, nout, of, nt, ncol, iw,"
+        f" {program.digits - 1},\n     &    ierr)"
+    )
+
+
+def _error(program: Program, condition: str, *writes: str) -> list[str]:
+    """A branch of :func:`_close`: ``error: CODE ... (line N): `` and then
+    ``writes`` when ``condition`` holds."""
+    where = _string_write("*", f"error: {program.job.where}: ", advance=True)
+    return [f"      else if ({condition}) then", *where, *writes]
+
+
+def _algebraic_main(program: Program) -> list[str]:
+    """One row, or one per value of the range (the last constant) with
+    run()'s values: start + k*step while within the final value (plus
+    1e-9 of a step), and the final value last."""
+    decls = []
+    if program.ranges:
+        decls = [
+            "      double precision start, final, step, x",
+            "      integer k, n, extra",
+        ]
+    lines = _prologue(program, decls)
+    at: list[str] = []
+    if not program.ranges:
+        lines += _open(program)
+        lines += ["      ierr = 0", _row(program).replace("        ", "      ", 1)]
+    else:
+        b = len(program.inputs) + 1
+        name = program.ranges[0].name
+        lines += [
+            f"      start = v({b})",
+            f"      final = v({b + 1})",
+            f"      step = v({b + 2})",
+            "      if (step .eq. 0d0 .and. final .ne. start) then",
+            "        write(*, '(A)') 'error: the range step must not be 0'",
+            "        stop 2",
+            "      end if",
+            "      if ((final - start) * step .lt. 0d0) step = -step",
+            "      n = 0",
+            "      if (final .ne. start) n = floor((final - start) / step + 1d-9)",
+            "      extra = 0",
+            "      if (abs(start + dble(n) * step - final) .gt.",
+            "     &    1d-9 * max(1d0, abs(final))) extra = 1",
+        ]
+        lines += _open(program)
+        lines += [
+            "      ierr = 0",
+            "      x = start",
+            "      do k = 0, n + extra",
+            "        if (k .lt. n .or. (k .eq. n .and. extra .eq. 1)) then",
+            "          x = start + dble(k) * step",
+            "        else",
+            "          x = final",
+            "        end if",
+            f"        p(np) = x * fac({b})",
+            _row(program),
+            "        if (ierr .ne. 0) exit",
+            "      end do",
+        ]
+        at = [f"        write(*, '(A, ES14.6)') ' at {name} =', x"]
+    at = at or ["        write(*, '(A)') ''"]
+    singular = [
+        "        write(*, '(A)', advance='no') 'the equations are singular'",
+        "     &    // ' (no unique solution)'",
+    ]
+    finite = ["        write(*, '(A)', advance='no') 'a value is not finite'"]
+    errors = _error(program, "ierr .eq. 1", *singular, *at)
+    errors += _error(program, "ierr .eq. 2", *finite, *at)
+    return lines + _close(program, errors)
+
+
+def _nonlinear_main(program: Program) -> list[str]:
+    width = max(len(x) for x in program.labels)
+    b = len(program.inputs) + program.ny
+    lines = _prologue(
+        program,
+        [
+            "      double precision res",
+            "      integer worst, iters",
+            f"      character(len={width}) label(ny)",
+        ],
+    )
+    for k, text in enumerate(program.labels, start=1):
+        lines.append(f"      label({k}) = '{text}'")
     lines += [
+        f"      if (v({b + 1}) .le. 0d0 .or. v({b + 2}) .le. 0d0) then",
+        "        write(*, '(A)') 'error: ABSERR and RELERR must be positive'",
+        "        stop 2",
         "      end if",
-        "      if (ierr .ne. 0) stop 2",
-        "      end",
-        "",
+        f"      call alnewt({_d(program.t0)}, ny, y, p, v({b + 1}), v({b + 2}),"
+        " res,",
+        "     &  worst, iters, ierr)",
+        "      if (ierr .eq. 0) then",
+        *_open(program),
+        _row(program),
+        "      end if",
     ]
-    lines += equations(program)
-    lines += _row_routine(tables)
-    lines += _DRIVER_F.splitlines()
-    return "\n".join(lines) + "\n"
+    stem = program.stem
+    singular = [
+        "        write(*, '(A, I0, A)') 'the Jacobian of the equations is'",
+        "     &    // ' singular after ', iters, ' Newton iterations; try'",
+        f"     &    // ' other guesses in {stem}.in'",
+    ]
+    stalled = [
+        "        write(*, '(A, A, A, ES10.3, A, I0, A)') 'no solution found'",
+        f"     &    // ' from the guesses in {stem}.in: |', trim(label(worst)),",
+        "     &    '| = ', res, ' after ', iters,",
+        "     &    ' Newton iterations; try other guesses'",
+    ]
+    output = ["        write(*, '(A)') 'an output is not finite at the solution'"]
+    errors = _error(program, "ierr .eq. 1", *singular)
+    errors += _error(program, "ierr .eq. 4", *stalled)
+    errors += _error(program, "ierr .ne. 0", *output)
+    return lines + _close(program, errors)
 
 
 def _row_routine(tables: list) -> list[str]:
@@ -414,7 +588,7 @@ C     pivoting; x is left in b.  ierr = 1 when a is singular.
       end
 """
 
-_DRIVER_F = """\
+_KUTTA_F = """\
 C     Kutta-Merson (L. Fox, 1962) with the step control of Autolev's
 C     programs: advance t by H in sub-steps hc, halved while the error
 C     estimate exceeds ABSERR and RELERR*|y|, doubled (up to H) while it
@@ -494,6 +668,9 @@ C     is 64 times smaller.  ierr: the eqns code, or 3 (step too small).
       t = tt
       ierr = 3
       end
+"""
+
+_READ_F = """\
 
 C     Read the values of name.in: 6 header lines, then each group's
 C     values from column 60, one more line after each group.
@@ -538,5 +715,76 @@ C     values from column 60, one more line after each group.
      &  line
       ierr = 1
       close(9)
+      end
+"""
+
+_NEWTON_F = """\
+C     Newton's method from the guesses y: eqns leaves the residuals F
+C     in f and the step dx solving J dx = -F in dx.  A step is halved
+C     (up to 30 times) until max|F| decreases.  Converged when max|F| <=
+C     ABSERR * max(1, max|F(guesses)|) and every |dx(i)| <= ABSERR +
+C     RELERR*|y(i)|; that last step is taken.  ierr: 0, 1 (J singular),
+C     2 (not finite) or 4 (no convergence in 100 iterations); res: max|F|,
+C     worst: its i.
+      subroutine alnewt(t, n, y, p, abserr, relerr, res, worst, iters,
+     &  ierr)
+      implicit none
+      integer n, worst, iters, ierr, i, half, w, c
+      double precision t, y(n), p(*), abserr, relerr, res
+      double precision f(n), dx(n), yn(n), fn(n), dxn(n), tol, lam, next
+      logical small
+      call eqns(t, y, p, f, dx, ierr)
+      call alnorm(n, f, res, worst)
+      tol = abserr * max(1d0, res)
+      iters = 0
+      do while (iters .lt. 100)
+        if (ierr .ne. 0) return
+        small = .true.
+        do i = 1, n
+          if (abs(dx(i)) .gt. abserr + relerr * abs(y(i))) then
+            small = .false.
+          end if
+        end do
+        if (small .and. res .le. tol) then
+          y = y + dx
+          return
+        end if
+        lam = 1d0
+        half = 0
+        do
+          yn = y + lam * dx
+          call eqns(t, yn, p, fn, dxn, c)
+          call alnorm(n, fn, next, w)
+          if (c .ne. 2 .and. next .lt. res) exit
+          if (half .eq. 30) then
+            ierr = 4
+            return
+          end if
+          half = half + 1
+          lam = lam / 2d0
+        end do
+        y = yn
+        dx = dxn
+        res = next
+        worst = w
+        ierr = c
+        iters = iters + 1
+      end do
+      ierr = 4
+      end
+
+C     m = max|f(i)| (a NaN is the largest), worst: its i.
+      subroutine alnorm(n, f, m, worst)
+      implicit none
+      integer n, worst, i
+      double precision f(n), m
+      m = 0d0
+      worst = 1
+      do i = 1, n
+        if (.not. (abs(f(i)) .le. m)) then
+          m = abs(f(i))
+          worst = i
+        end if
+      end do
       end
 """

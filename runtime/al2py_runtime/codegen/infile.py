@@ -9,6 +9,8 @@ edited in place as long as the value stays right of column 59.
 
 from __future__ import annotations
 
+import textwrap
+
 from .program import Entry, Program
 
 __all__ = ["VALUE_COLUMN", "in_text"]
@@ -51,8 +53,13 @@ def in_text(program: Program) -> str:
     lines += [
         rule + "+" + "-" * 18,
         "",
-        "INTEGSTP*PRINTINT is the time between rows of the output files.",
-        "ABSERR and RELERR bound each integration step's absolute and relative",
-        "error estimate (Kutta-Merson).",
     ]
+    if program.kind in ("ALGEBRAIC", "NONLINEAR"):
+        lines += textwrap.wrap(program.task, 72)
+    else:
+        lines += [
+            "INTEGSTP*PRINTINT is the time between rows of the output files.",
+            "ABSERR and RELERR bound each integration step's absolute and relative",
+            "error estimate (Kutta-Merson).",
+        ]
     return "\n".join(lines) + "\n"

@@ -5,6 +5,7 @@ Octave (``octave --eval STEM``) without warnings."""
 from __future__ import annotations
 
 import math
+import textwrap
 from typing import Any
 
 import sympy as sp
@@ -122,9 +123,8 @@ def octave_source(program: Program, target: str) -> str:
         lines += equations(program, "eqns")
         return "\n".join(lines)
     entries = program.entries
-    tables = program.tables
-    np_, ny = program.np, program.ny
-    base = np_ + ny
+    np_ = len(program.inputs)
+    base = np_ + program.ny
     lines = [
         f"function {stem}()",
         *head,
@@ -132,30 +132,42 @@ def octave_source(program: Program, target: str) -> str:
         f"% Run: octave --eval {stem}  (or {stem} at the MATLAB prompt).  Reads",
         f"% {stem}.in when it is in the current folder (values from column 60, a",
         "% blank line after each group), else starts from the script's Input",
-        "% values; integrates with Kutta-Merson (ABSERR, RELERR, steps of",
-        f"% INTEGSTP) and writes {stem}.1, ... every PRINTINT steps.",
+        "% values.",
+        *["% " + x for x in textwrap.wrap(program.task, 70)],
         "  % Inputs: value (in the Input's unit), factor to internal units",
         "  v = [" + "; ".join(_num(e.value) for e in entries) + "];",
         "  fac = [" + "; ".join(_num(e.factor) for e in entries) + "];",
         "  groups = [" + ", ".join(str(len(g)) for g in program.groups) + "];",
         f"  v = read_in({_str(stem + '.in')}, v, groups);",
+        "  raw = v;",
         "  v = v .* fac;",
-        f"  p = v(1:{np_});",
-        f"  y = v({np_ + 1}:{base});",
-        f"  t0 = v({base + 1}); t1 = v({base + 2}); step = v({base + 3});",
-        f"  printint = v({base + 4}) / fac({base + 4});",
-        f"  abserr = v({base + 5}); relerr = v({base + 6});",
-        "  if step == 0 || printint <= 0 || abserr <= 0 || relerr <= 0 ...",
-        "      || printint ~= fix(printint)",
-        "    error('INTEGSTP must not be 0; PRINTINT (whole), ABSERR and RELERR"
-        " must be positive');",
-        "  end",
-        "  if (t1 - t0) * step < 0",
-        "    step = -step;",
-        "  end",
-        "  ncol = [" + ", ".join(str(t.columns) for t in tables) + "];",
-        "  ofac = [" + "; ".join(_num(x) for t in tables for x in t.factors) + "];",
-        "  fids = zeros(1, numel(ncol));",
+        f"  p = v(1:{np_});" if np_ else "  p = 0;",
+        f"  y = v({np_ + 1}:{base});" if program.ny else "  y = 0;",
+    ]
+    if program.kind == "NONLINEAR":
+        lines += _nonlinear_main(program, base)
+        tail = _NEWTON_M
+    elif program.kind == "ALGEBRAIC":
+        lines += _algebraic_main(program, base)
+        tail = ""
+    else:
+        lines += _dynamics_main(base)
+        tail = _KUTTA_M
+    lines += ["end", ""]
+    lines += _files(program)
+    lines += equations(program, "eqns")
+    lines += (tail + _READ_M).splitlines()
+    return "\n".join(lines) + "\n"
+
+
+def _files(program: Program) -> list[str]:
+    """``open_files`` (the output files with their headers) and
+    ``write_row`` (one row of each, from the outputs at (t, y))."""
+    stem, tables = program.stem, program.tables
+    lines = [
+        "function fids = open_files()",
+        "  % The output files (0 for Encode's quantities), headers written.",
+        f"  fids = zeros(1, {len(tables)});",
     ]
     for k, t in enumerate(tables, start=1):
         if not t.written:
@@ -177,7 +189,55 @@ def octave_source(program: Program, target: str) -> str:
         for t in tables
     )
     lines += [
+        "end",
+        "",
+        "function ierr = write_row(fids, t, y, p)",
+        "  % One row of each output file: the outputs at (t, y) in their units.",
+        "  ncol = [" + ", ".join(str(t.columns) for t in tables) + "];",
+        "  ofac = [" + "; ".join(_num(x) for t in tables for x in t.factors) + "];",
         "  fmts = {" + fmts + "};",
+        "  [out, ierr] = outputs(t, y, p);",
+        "  if ierr",
+        "    return",
+        "  end",
+        "  out = out .* ofac;",
+        "  j = 0;",
+        "  for k = 1:numel(ncol)",
+        "    if fids(k) > 0",
+        "      fprintf(fids(k), fmts{k}, out(j + 1:j + ncol(k)));",
+        "    end",
+        "    j = j + ncol(k);",
+        "  end",
+        "end",
+        "",
+        "function close_files(fids)",
+        "  % Close the output files and list them.",
+        "  for k = find(fids > 0)",
+        "    fclose(fids(k));",
+        "  end",
+        "  for k = find(fids > 0)",
+        f"    fprintf('Wrote %s.%d\\n', {_str(stem)}, k);",
+        "  end",
+        "end",
+        "",
+    ]
+    return lines
+
+
+def _dynamics_main(base: int) -> list[str]:
+    return [
+        f"  t0 = v({base + 1}); t1 = v({base + 2}); step = v({base + 3});",
+        f"  printint = raw({base + 4});",
+        f"  abserr = v({base + 5}); relerr = v({base + 6});",
+        "  if step == 0 || printint <= 0 || abserr <= 0 || relerr <= 0 ...",
+        "      || printint ~= fix(printint)",
+        "    error('INTEGSTP must not be 0; PRINTINT (whole), ABSERR and RELERR"
+        " must be positive');",
+        "  end",
+        "  if (t1 - t0) * step < 0",
+        "    step = -step;",
+        "  end",
+        "  fids = open_files();",
         "  % As Autolev's programs: a row at TINITIAL, after every PRINTINT steps",
         "  % of INTEGSTP, and at the first step within INTEGSTP/100 of TFINAL.",
         "  t = t0; hc = 0; cuts = 20; count = 0;",
@@ -189,19 +249,8 @@ def octave_source(program: Program, target: str) -> str:
         "      last = t - 0.01 * abs(step) <= t1;",
         "    end",
         "    if count <= 0 || last",
-        "      [out, ierr] = outputs(t, y, p);",
-        "      if ierr",
-        "        break",
-        "      end",
-        "      out = out .* ofac;",
-        "      j = 0;",
-        "      for k = 1:numel(ncol)",
-        "        if fids(k) > 0",
-        "          fprintf(fids(k), fmts{k}, out(j + 1:j + ncol(k)));",
-        "        end",
-        "        j = j + ncol(k);",
-        "      end",
-        "      if last",
+        "      ierr = write_row(fids, t, y, p);",
+        "      if ierr || last",
         "        break",
         "      end",
         "      count = printint;",
@@ -209,8 +258,8 @@ def octave_source(program: Program, target: str) -> str:
         "    [t, y, hc, cuts, ierr] = kutta(t, step, y, p, hc, cuts, abserr, relerr);",
         "    count = count - 1;",
         "  end",
-        "  for k = find(fids > 0)",
-        "    fclose(fids(k));",
+        "  if ierr",
+        "    fclose('all');",
         "  end",
         "  if ierr == 1",
         "    error('the mass matrix is singular at t = %g', t);",
@@ -219,20 +268,91 @@ def octave_source(program: Program, target: str) -> str:
         "  elseif ierr == 3",
         "    error('integration failed at t = %g: the step was halved too often', t);",
         "  end",
-        "  for k = find(fids > 0)",
-        f"    fprintf('Wrote %s.%d\\n', {_str(stem)}, k);",
-        "  end",
-        "end",
-        "",
+        "  close_files(fids);",
     ]
-    if not np_:
-        lines = [ln.replace("  p = v(1:0);", "  p = 0;") for ln in lines]
-    lines += equations(program, "eqns")
-    lines += _DRIVER_M.splitlines()
-    return "\n".join(lines) + "\n"
 
 
-_DRIVER_M = r"""function [t, y, hc, cuts, ierr] = kutta(t, bigh, y, p, hc, cuts, abserr, relerr)
+def _algebraic_main(program: Program, base: int) -> list[str]:
+    """One row, or one per value of the range (the last constant) with
+    run()'s values: start + k*step while within the final value (plus
+    1e-9 of a step), and the final value last."""
+    where = _str(program.job.where)
+    t0 = _num(program.t0)
+    if not program.ranges:
+        return [
+            "  fids = open_files();",
+            f"  ierr = write_row(fids, {t0}, y, p);",
+            "  if ierr",
+            "    fclose('all');",
+            f"    error('%s: the equations are singular (no unique solution)"
+            f" or a value is not finite', {where});",
+            "  end",
+            "  close_files(fids);",
+        ]
+    name = _str(program.ranges[0].name)
+    return [
+        f"  start = raw({base + 1}); final = raw({base + 2}); step = raw({base + 3});",
+        "  if step == 0 && final ~= start",
+        "    error('the range step must not be 0');",
+        "  end",
+        "  if (final - start) * step < 0",
+        "    step = -step;",
+        "  end",
+        "  n = 0;",
+        "  if final ~= start",
+        "    n = floor((final - start) / step + 1e-9);",
+        "  end",
+        "  extra = abs(start + n * step - final) > 1e-9 * max(1, abs(final));",
+        "  fids = open_files();",
+        "  for k = 0:n + extra",
+        "    if k < n || (k == n && extra)",
+        "      x = start + k * step;",
+        "    else",
+        "      x = final;",
+        "    end",
+        f"    p({program.np}) = x * fac({base + 1});",
+        f"    if write_row(fids, {t0}, y, p)",
+        "      fclose('all');",
+        f"      error('%s: the equations are singular (no unique solution)"
+        f" or a value is not finite at %s = %g', {where}, {name}, x);",
+        "    end",
+        "  end",
+        "  close_files(fids);",
+    ]
+
+
+def _nonlinear_main(program: Program, base: int) -> list[str]:
+    where = _str(program.job.where)
+    labels = "{" + ", ".join(_str(x) for x in program.labels) + "}"
+    stem = _str(program.stem + ".in")
+    return [
+        f"  abserr = v({base + 1}); relerr = v({base + 2});",
+        "  if abserr <= 0 || relerr <= 0",
+        "    error('ABSERR and RELERR must be positive');",
+        "  end",
+        f"  [y, res, worst, iters, ierr] = newton({_num(program.t0)}, y, p,"
+        " abserr, relerr);",
+        f"  labels = {labels};",
+        "  if ierr == 1",
+        "    error(['%s: the Jacobian of the equations is singular after %d Newton'"
+        " ...",
+        f"           ' iterations; try other guesses in %s'], {where}, iters, {stem});",
+        "  elseif ierr",
+        "    error(['%s: no solution found from the guesses in %s: |%s| = %.3g' ...",
+        "           ' after %d Newton iterations; try other guesses'],"
+        f" {where}, {stem}, ...",
+        "          labels{worst}, res, iters);",
+        "  end",
+        "  fids = open_files();",
+        f"  if write_row(fids, {_num(program.t0)}, y, p)",
+        "    fclose('all');",
+        f"    error('%s: an output is not finite at the solution', {where});",
+        "  end",
+        "  close_files(fids);",
+    ]
+
+
+_KUTTA_M = r"""function [t, y, hc, cuts, ierr] = kutta(t, bigh, y, p, hc, cuts, abserr, relerr)
   % Kutta-Merson (L. Fox, 1962) with the step control of Autolev's
   % programs: advance t by bigh in sub-steps hc, halved while the error
   % estimate exceeds ABSERR and RELERR*|y|, doubled (up to bigh) while it
@@ -296,6 +416,61 @@ _DRIVER_M = r"""function [t, y, hc, cuts, ierr] = kutta(t, bigh, y, p, hc, cuts,
   ierr = 3;
 end
 
+"""
+
+_NEWTON_M = r"""function [y, res, worst, iters, ierr] = newton(t, y, p, abserr, relerr)
+  % Newton's method from the guesses y: eqns gives the residuals F and the
+  % step dx solving J dx = -F.  A step is halved (up to 30 times) until
+  % max|F| decreases.  Converged when max|F| <= ABSERR * max(1,
+  % max|F(guesses)|) and every |dx(i)| <= ABSERR + RELERR*|y(i)|; that last
+  % step is taken.  ierr: 0, 1 (J singular), 2 (not finite) or 4 (no
+  % convergence in 100 iterations); res: max|F|, worst: its i.
+  [f, dx, ierr] = eqns(t, y, p);
+  [res, worst] = maxabs(f);
+  tol = abserr * max(1, res);
+  iters = 0;
+  while iters < 100
+    if ierr
+      return
+    end
+    if all(abs(dx) <= abserr + relerr * abs(y)) && res <= tol
+      y = y + dx;
+      return
+    end
+    lam = 1;
+    for half = 0:30
+      yn = y + lam * dx;
+      [fn, dxn, c] = eqns(t, yn, p);
+      [next, w] = maxabs(fn);
+      if c ~= 2 && next < res
+        break
+      end
+      lam = lam / 2;
+    end
+    if c == 2 || next >= res || isnan(next)
+      ierr = 4;
+      return
+    end
+    y = yn;
+    dx = dxn;
+    res = next;
+    worst = w;
+    ierr = c;
+    iters = iters + 1;
+  end
+  ierr = 4;
+end
+
+function [m, worst] = maxabs(f)
+  % max|f(i)| (a NaN is the largest) and its i.
+  a = abs(f);
+  a(isnan(a)) = Inf;
+  [m, worst] = max(a);
+end
+
+"""
+
+_READ_M = r"""
 function v = read_in(name, v, groups)
   % name.in: 6 header lines, then each group's values from column 60, one
   % more line after each group.  Keeps v when the file is absent.

@@ -1,4 +1,5 @@
-"""One description of the program a ``CODE Dynamics``/``ODE`` job writes.
+"""One description of the program a ``CODE`` job writes (Dynamics and ODE
+here, Algebraic and Nonlinear in :mod:`.static`).
 
 :func:`describe` turns a job into a :class:`Program`: the ``.in`` entries
 (constants, initial values, integration parameters, in the Input's units
@@ -23,7 +24,6 @@ from ..jobs import backends
 from ..jobs.run import (
     Column,
     Job,
-    NumericsError,
     Table,
     dynamics_equations,
     initial_state,
@@ -210,6 +210,11 @@ class Entry:
     unit: str | None
     value: float  # in ``unit``
     factor: float  # ``unit`` -> internal units
+    key: str = ""  # its NAME=VALUE name when not ``name`` (a range's PHI_STEP)
+
+    @property
+    def setting(self) -> str:
+        return (self.key or self.name).upper()
 
 
 @dataclass
@@ -249,15 +254,80 @@ class Program:
     tables: list[OutputTable]
     digits: int
     time: sp.Symbol = field(default_factory=lambda: sp.Symbol("T", real=True))
+    #: DYNAMICS, ODE, ALGEBRAIC (solve M ud = f for the unknowns ud) or
+    #: NONLINEAR (Newton's method on the unknowns y: dy = F(y), M = dF/dy,
+    #: ud = -F, so the solve leaves the Newton step in ud)
+    kind: str = "DYNAMICS"
+    #: Algebraic ``[PHI deg=0,360,1]``: start, final value, step of the
+    #: last constant (which the .in file then leaves out of the constants)
+    ranges: list[Entry] = field(default_factory=list)
+    t0: float = 0.0  # the time of a Nonlinear/Algebraic job (TINITIAL)
+    labels: list[str] = field(default_factory=list)  # the equations' names
+    unknowns: list[str] = field(default_factory=list)  # the script's names
 
     @property
-    def entries(self) -> list[Entry]:
-        return [*self.constants, *self.initials, *self.integration]
+    def task(self) -> str:
+        """What the driver does, in one sentence (headers and .in files)."""
+        stem = self.stem
+        if self.kind == "ALGEBRAIC":
+            what = "Evaluates the outputs"
+            if self.unknowns:
+                what = "Solves the linear equations for " + ", ".join(self.unknowns)
+            rows = (
+                f"a row for each {self.ranges[0].name} from Range Start to"
+                " Range Final in steps of Range Step"
+                if self.ranges
+                else "one row"
+            )
+            return f"{what} and writes {stem}.1, ...: {rows}."
+        if self.kind == "NONLINEAR":
+            return (
+                "Solves the equations for "
+                + ", ".join(e.name for e in self.initials)
+                + " by Newton's method from the guesses (until each |residual| <="
+                " ABSERR, times the largest at the guesses when that is over 1,"
+                " and each step <= ABSERR + RELERR*|value|; at most 100"
+                f" iterations) and writes {stem}.1, ...: one row."
+            )
+        return (
+            "Integrates with Kutta-Merson (ABSERR, RELERR, steps of INTEGSTP)"
+            f" and writes {stem}.1, ... every PRINTINT steps."
+        )
+
+    @property
+    def eqns_doc(self) -> list[str]:
+        """What ``eqns`` computes (comment lines, any language)."""
+        if self.kind == "NONLINEAR":
+            return [
+                "The residuals dy = F(y) of the equations at the unknowns y with",
+                "the constants p, and Newton's step ud solved from J ud = -F",
+                "(J = dF/dy).  Code 0, 1 when J is singular, 2 when not finite.",
+            ]
+        if self.kind == "ALGEBRAIC":
+            return [
+                "The unknowns ud solved from the linear equations M ud = f with",
+                "the constants p.  Code 0, 1 when M is singular, 2 when not finite.",
+            ]
+        return [
+            "The derivatives dy of the states y at time T with the constants p,",
+            "and the accelerations ud solved from M ud = f.  Code 0, 1 when M",
+            "is singular, 2 when a derivative is not finite.",
+        ]
+
+    @property
+    def inputs(self) -> list[Entry]:
+        """The constants the ``.in`` file lists (all but a range's)."""
+        return self.constants[:-1] if self.ranges else self.constants
 
     @property
     def groups(self) -> list[list[Entry]]:
         """The ``.in`` file's groups (empty ones left out)."""
-        return [g for g in (self.constants, self.initials, self.integration) if g]
+        every = (self.inputs, self.initials, self.ranges, self.integration)
+        return [g for g in every if g]
+
+    @property
+    def entries(self) -> list[Entry]:
+        return [e for g in self.groups for e in g]
 
     @property
     def ny(self) -> int:
@@ -314,71 +384,92 @@ def identifier(name: str, taken: set[str]) -> str:
     return out
 
 
-def describe(
-    job: Job, source: str | None = None, nosubs: bool | None = None
-) -> Program:
-    """The program of a Dynamics/ODE ``job`` with its Input values."""
-    if job.kind not in ("DYNAMICS", "ODE"):
-        raise NumericsError(
-            f"{job.where}: code for CODE {job.kind.title()} is not written yet"
-            " (only Dynamics and ODE); run it with python or run()"
-        )
-    vals, keep = input_values(job, {})
-    c = dynamics_equations(job, frozenset(keep))
-    us = job.unit_system
-    y0 = initial_state(job, c, vals)
-    spec = c.spec
-    taken: set[str] = set()
+class Entries:
+    """Makes :class:`Entry` lines in the Inputs' units, with unique names."""
 
-    def unit_of(name: str) -> str | None:
-        return vals.units.get(normalize_name(name))
+    def __init__(self, job: Job, vals: Any) -> None:
+        self.job, self.vals, self.us = job, vals, job.unit_system
+        self.taken: set[str] = {"t"}
 
-    def entry(group: str, name: str, internal: float) -> Entry:
-        unit = unit_of(name)
-        f = us.to_internal(unit)
+    def unit_of(self, name: str) -> str | None:
+        return self.vals.units.get(normalize_name(name))
+
+    def entry(self, group: str, name: str, internal: float) -> Entry:
+        unit = self.unit_of(name)
+        f = self.us.to_internal(unit)
         value = internal / f
-        given = job.inputs.get(normalize_name(name))
+        given = self.job.inputs.get(normalize_name(name))
         if given is not None and isinstance(given.value, int | float):
             if math.isclose(float(given.value) * f, internal, rel_tol=1e-12):
                 value = float(given.value)  # 60 deg, not 59.99999999999999
-        return Entry(group, name, identifier(name, taken), unit, value, f)
+        return Entry(group, name, identifier(name, self.taken), unit, value, f)
 
+    def integration(self, keys: Iterable[str]) -> list[Entry]:
+        """The integration parameters ``keys`` (run()'s defaults if absent)."""
+        vals, us = self.vals, self.us
+        ip = integration_parameters(vals)
+        out = []
+        for group, key in INTEGRATION_LINES:
+            if key not in keys:
+                continue
+            unit = self.unit_of(key) if key in vals.values else None
+            if key in ("TINITIAL", "TFINAL", "INTEGSTP") and unit is None:
+                unit = us.time_unit
+            f = us.to_internal(self.unit_of(key)) if key in vals.values else 1.0
+            out.append(Entry(group, key, key, unit, ip[key] / f, f))
+        return out
+
+
+def describe(
+    job: Job, source: str | None = None, nosubs: bool | None = None
+) -> Program:
+    """The program of a Dynamics/ODE ``job`` with its Input values
+    (:func:`.static.describe_static` describes Algebraic/Nonlinear ones)."""
+    vals, keep = input_values(job, {})
+    c = dynamics_equations(job, frozenset(keep))
+    y0 = initial_state(job, c, vals)
+    spec = c.spec
+    made = Entries(job, vals)
+    taken = made.taken
     rename: dict[Any, Any] = {spec.time: sp.Symbol("T", real=True)}
-    taken.add("t")
+    # The .in order of Autolev's programs: names sorted without case, within
+    # each group (docs/semantics.md); a Specified quantity with neither an
+    # equation nor an Input is 0 in the program, not read.
     constants = []
-    for obj, d in zip(c.params, spec.params, strict=True):
-        e = entry("Constant", label_of(obj, job.names), vals.param(obj))
+    unspecified: list[sp.Symbol] = []
+    for obj, d in sorted(
+        zip(c.params, spec.params, strict=True),
+        key=lambda od: in_order(label_of(od[0], job.names)),
+    ):
+        name = label_of(obj, job.names)
+        if job.entries.get(name, ("", None))[0] == "specified" and (
+            job.inputs.get(normalize_name(name)) is None
+        ):
+            s = sp.Symbol(identifier(name, taken), real=True)
+            unspecified.append(s)
+            rename[d] = s
+            continue
+        e = made.entry("Constant", name, vals.param(obj))
         constants.append(e)
         rename[d] = sp.Symbol(e.ident, real=True)
     initials = []
-    for name, value, d in zip(c.state_names, y0, spec.states, strict=True):
-        e = entry("Initial Value", name, value)
+    states = sorted(range(len(spec.states)), key=lambda i: in_order(c.state_names[i]))
+    for i in states:
+        e = made.entry("Initial Value", c.state_names[i], y0[i])
         initials.append(e)
-        rename[d] = sp.Symbol(e.ident, real=True)
-    ip = integration_parameters(vals)
-    integration = []
-    for group, key in INTEGRATION_LINES:
-        unit = unit_of(key) if key in vals.values else None
-        if key in ("TINITIAL", "TFINAL", "INTEGSTP") and unit is None:
-            unit = us.time_unit
-        f = us.to_internal(unit_of(key)) if key in vals.values else 1.0
-        integration.append(Entry(group, key, key, unit, ip[key] / f, f))
+        rename[spec.states[i]] = sp.Symbol(e.ident, real=True)
+    integration = made.integration([key for _group, key in INTEGRATION_LINES])
     accel_names = [identifier(label_of(o, job.names), taken) for o in c.ud_objs]
     for d, name in zip(spec.accels, accel_names, strict=True):
         rename[d] = sp.Symbol(name, real=True)
-    z_names = iter_names("z", taken)
-    inter = []
-    for d, body in spec.intermediates:
-        s = sp.Symbol(next(z_names), real=True)
-        rename[d] = s
-        inter.append((s, sp.sympify(body).xreplace(rename)))
+    inter = named_intermediates(spec.intermediates, rename, taken)
 
     def sub(e: Any) -> Any:
         return sp.sympify(e).xreplace(rename)
 
     n = len(spec.accels)
     accel_syms = {rename[d] for d in spec.accels}
-    derivs = [sub(e) for e in spec.derivs]
+    derivs = [sub(spec.derivs[i]) for i in states]
     late_ids = {
         i
         for i, e in enumerate(derivs)
@@ -392,62 +483,115 @@ def describe(
     free = [i for i in range(len(derivs)) if i not in late_ids]
     first += [derivs[i] for i in free]
     first_targets += [("dy", i) for i in free]
-    eqns, defined = _block(first, first_targets, inter, x_names, set())
+    eqns, defined = assignments(first, first_targets, inter, x_names, set())
+    eqns = _zeros(unspecified, eqns) + eqns
     solve_at = len(eqns)
-    late = [derivs[i] for i in sorted(late_ids)]
     unpack = [Assign(("ud", k, name), 0) for k, name in enumerate(accel_names)]
+    late = [derivs[i] for i in sorted(late_ids)]
     if late:
-        eqns += [
-            a for a in unpack if sp.Symbol(a.target[2], real=True) in _free(late, inter)
-        ]
-        more, _ = _block(
+        eqns += unpacked(unpack, late, inter)
+        more, _ = assignments(
             late, [("dy", i) for i in sorted(late_ids)], inter, x_names, defined
         )
         eqns += more
     flat = [sub(e) for row in spec.outputs for e in row]
-    outputs = [
-        a for a in unpack if sp.Symbol(a.target[2], real=True) in _free(flat, inter)
-    ]
-    more, _ = _block(
-        flat, [("out", k) for k in range(len(flat))], inter, x_names, set()
+    outputs = output_block(flat, unpack, inter, x_names)
+    outputs = _zeros(unspecified, outputs) + outputs
+    return new_program(
+        job,
+        source,
+        nosubs,
+        (constants, initials, integration),
+        (n, eqns, solve_at, outputs),
+        output_tables(job, vals),
     )
-    outputs += more
-    factors = [x for row in output_factors(job, vals) for x in row]
-    tables = []
-    pos = 0
-    for number, ospec in enumerate(job.outputs, start=1):
-        cols = [Column(i.label, i.unit) for i in ospec.items]
-        empty = Table(number, cols, _no_rows(len(cols)), ospec.line)
-        header = format_table(empty, job.digits, f"{job.stem}.{number}", us.time_unit)
-        tables.append(
-            OutputTable(
-                number,
-                header,
-                len(cols),
-                _width(cols, job.digits, us.time_unit),
-                factors[pos : pos + len(cols)],
-                not ospec.encoded,
-            )
-        )
-        pos += len(cols)
+
+
+def new_program(
+    job: Job,
+    source: str | None,
+    nosubs: bool | None,
+    entries: tuple[list[Entry], list[Entry], list[Entry]],
+    equations: tuple[int, list[Assign], int, list[Assign]],
+    tables: list[OutputTable],
+    **more: Any,
+) -> Program:
+    """A :class:`Program` of ``job`` (NOSUBS as its CODE statement says
+    unless ``nosubs`` is given): ``entries`` are (constants, initials,
+    integration), ``equations`` (nu, eqns, solve_at, outputs)."""
     if nosubs is None:
         nosubs = "NOSUBS" in getattr(job, "options", ())
-    return Program(
-        job,
-        job.stem,
-        source or job.source,
-        __version__,
-        nosubs,
-        constants,
-        initials,
-        integration,
-        n,
-        eqns,
-        solve_at,
-        outputs,
-        tables,
-        job.digits,
+    source = source or job.source
+    head = (job, job.stem, source, __version__, nosubs)
+    return Program(*head, *entries, *equations, tables, job.digits, **more)
+
+
+def named_intermediates(
+    intermediates: Iterable[tuple[Any, Any]], rename: dict[Any, Any], taken: set[str]
+) -> list[tuple[Any, Any]]:
+    """The AutoZ intermediates as ``z1, z2, ...`` (``rename`` learns them)."""
+    z_names = iter_names("z", taken)
+    inter = []
+    for d, body in intermediates:
+        s = sp.Symbol(next(z_names), real=True)
+        rename[d] = s
+        inter.append((s, sp.sympify(body).xreplace(rename)))
+    return inter
+
+
+def unpacked(
+    unpack: list[Assign], exprs: list[Any], inter: list[tuple[Any, Any]]
+) -> list[Assign]:
+    """The ``("ud", k, name)`` unpackings ``exprs`` use."""
+    free = _free(exprs, inter)
+    return [a for a in unpack if sp.Symbol(a.target[2], real=True) in free]
+
+
+def output_block(
+    flat: list[Any], unpack: list[Assign], inter: list[tuple[Any, Any]], names: Any
+) -> list[Assign]:
+    """The outputs routine's body: unpackings, intermediates, ``out[k]``."""
+    more, _ = assignments(
+        flat, [("out", k) for k in range(len(flat))], inter, names, set()
     )
+    return unpacked(unpack, flat, inter) + more
+
+
+def output_tables(
+    job: Job, vals: Any, columns: list[list[Column]] | None = None
+) -> list[OutputTable]:
+    """The tables of the job's Outputs (or ``columns``: one written table
+    of those columns, each converted by its unit)."""
+    us = job.unit_system
+    if columns is None:
+        columns = [[Column(i.label, i.unit) for i in o.items] for o in job.outputs]
+        factors = output_factors(job, vals)
+        written = [not o.encoded for o in job.outputs]
+    else:
+        factors = [[1.0 / us.to_internal(c.unit) for c in cols] for cols in columns]
+        written = [True] * len(columns)
+    tables = []
+    for number, (cols, fac, w) in enumerate(
+        zip(columns, factors, written, strict=True), start=1
+    ):
+        empty = Table(number, cols, _no_rows(len(cols)), job.line)
+        header = format_table(empty, job.digits, f"{job.stem}.{number}", us.time_unit)
+        width = _width(cols, job.digits, us.time_unit)
+        tables.append(OutputTable(number, header, len(cols), width, fac, w))
+    return tables
+
+
+def in_order(name: str) -> tuple[int, str]:
+    """Autolev's order of a ``.in`` group: without case (``c, g, IBxx, lam``;
+    ``G1, G10, G2``), derivatives after the names (``q1 .. q9, q1' .. q9'``)."""
+    return name.count("'"), name.lower()
+
+
+def _zeros(names: list[sp.Symbol], block: list[Assign]) -> list[Assign]:
+    """``NAME = 0`` for the Specified quantities without a value that
+    ``block`` uses (Autolev's "Quantities to be specified")."""
+    used = _free([sp.sympify(a.expr) for a in block], [])
+    return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
 
 
 def iter_names(prefix: str, taken: set[str]) -> Any:
@@ -469,7 +613,7 @@ def _free(exprs: list[Any], inter: list[tuple[Any, Any]]) -> set[Any]:
     return out
 
 
-def _block(
+def assignments(
     exprs: list[Any],
     targets: list[tuple],
     inter: list[tuple[Any, Any]],

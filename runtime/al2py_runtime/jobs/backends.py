@@ -565,19 +565,15 @@ class CPrinter(C99CodePrinter):
         #: symbols alone, printed, and the element ``z[base + k]`` it is kept in
         self.hoisted: dict[str, str] = {}
 
-    def _print(self, expr: Any, **kwargs: Any) -> str:
-        text = super()._print(expr, **kwargs)
-        if (
-            self._hoist is not None
-            and isinstance(expr, sp.Function)
-            and expr.free_symbols <= self._hoist[0]
-        ):
-            found = self.hoisted.get(text)
-            if found is None:
-                found = f"z[{self._hoist[1] + len(self.hoisted)}]"
-                self.hoisted[text] = found
-            return found
-        return text
+    def hoisted_call(self, expr: Any, text: str) -> str:
+        """``text``, the call ``expr`` printed, or where it is kept."""
+        if self._hoist is None or not expr.free_symbols <= self._hoist[0]:
+            return text
+        found = self.hoisted.get(text)
+        if found is None:
+            found = f"z[{self._hoist[1] + len(self.hoisted)}]"
+            self.hoisted[text] = found
+        return found
 
     def _print_Symbol(self, expr: Any) -> str:
         name = self._names.get(expr, expr.name)
@@ -618,6 +614,25 @@ class CPrinter(C99CodePrinter):
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"(double)(((({x}) > 0) - (({x}) < 0)))"
+
+
+def _hoisting(method: Callable[..., str]) -> Callable[..., str]:
+    def printed(self: CPrinter, expr: Any, **kwargs: Any) -> str:
+        return self.hoisted_call(expr, method(self, expr, **kwargs))
+
+    return printed
+
+
+# Every printing method of a sympy function (sin, cos, ..., and the general
+# one) goes through CPrinter.hoisted_call.
+for _attr in dir(CPrinter):
+    _cls = getattr(sp, _attr[len("_print_") :], None)
+    if (
+        _attr.startswith("_print_")
+        and isinstance(_cls, type)
+        and issubclass(_cls, sp.Function)
+    ):
+        setattr(CPrinter, _attr, _hoisting(getattr(CPrinter, _attr)))
 
 
 _PRECEDENCE: dict[type, int] = {}

@@ -38,7 +38,6 @@ KUTTA_C = r"""/* Kutta-Merson (L. Fox, 1962), with the step control of Autolev's
    estimate exceeds both ABSERR and RELERR*|y| and doubled (up to H) while
    it is 64 times smaller.  Returns 0, the eqns code, or 3 (step too small).
    *hc, the sub-step size, carries over from call to call. */
-
 static int al_f(double t, const double *y, const double *p, double *dy)
 {
     double ud[AL_NU > 0 ? AL_NU : 1];

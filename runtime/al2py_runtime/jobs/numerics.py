@@ -1,8 +1,11 @@
 """Numerical CODE jobs: Input/Output with units, Dynamics/ODE/Nonlinear/Algebraic.
 
 :class:`Numerics` records ``UnitSystem``, ``Input``, ``Output`` and ``CODE``
-for a :class:`Workspace` (its ``numerics`` part; the workspace offers these
-commands, ``Input(X)``, ``Units(a, b)``, ``run()`` and ``main()``).
+for a :class:`Workspace` (its ``numerics`` part).  A generated module calls
+it directly: each statement (``al.numerics.input(...)``), ``Input(X)`` and
+``Units(a, b)`` in expressions, and the module's ``run()``, ``ode_function()``
+and ``evaluate()``; so an Input value or a ``backend`` goes from the module to
+:func:`~.run.run_job` through :meth:`Numerics.run` alone.
 
 Recording (``unit_system``, ``input``, ``output``, ``code``) only stores what
 the statements say, so importing a generated module does no numerical work.
@@ -15,10 +18,10 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 >>> x, y = al.variables("X'", "Y'")
 >>> _ = al.assign("X'", -a * x - b * y)
 >>> _ = al.assign("Y'", -y - t * x**2)
->>> al.input({"A": 1, "B": 2, "X": 2, "Y": 3, "TFINAL": 5, "INTEGSTP": 0.1})
->>> al.output([("T", t, None), ("X", x, None), ("Y", y, None)])
->>> job = al.code("ODE", file="odexy.c")
->>> result = al.run()
+>>> al.numerics.input({"A": 1, "B": 2, "X": 2, "Y": 3, "TFINAL": 5, "INTEGSTP": 0.1})
+>>> al.numerics.output([("T", t, None), ("X", x, None), ("Y", y, None)])
+>>> job = al.numerics.code("ODE", file="odexy.c")
+>>> result = al.numerics.run()
 >>> round(float(result["X"][-1]), 6), len(result.tables[0])
 (0.497489, 51)
 """

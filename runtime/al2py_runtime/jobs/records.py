@@ -130,7 +130,9 @@ def job_stem(file: str | None, script: str) -> str:
     >>> job_stem(None, "dir/tutor6.al")
     'tutor6'
     """
-    return (PurePath(file).stem if file else PurePath(script).stem) or "autolev"
+    # a Windows path too (BioMAC's ``CODE Algebraic() sub\x_raw.c``)
+    path = file.replace("\\", "/") if file else script
+    return PurePath(path).stem or "autolev"
 
 
 def job_where(kind: str, filename: str | None, line: int | None) -> str:

@@ -127,7 +127,7 @@ def _number(value: Any) -> float | None:
         return None
 
 
-def document_run(ws: Any, run: Any) -> Any:
+def document_run(numerics: Any, run: Any) -> Any:
     """Set ``run.__signature__`` to ``run(values=None, /, *, QA=20, ...)`` and
     list the Inputs with their units in ``run.__doc__``."""
     import inspect
@@ -136,7 +136,7 @@ def document_run(ws: Any, run: Any) -> Any:
         inspect.Parameter("values", inspect.Parameter.POSITIONAL_ONLY, default=None)
     ]
     lines = []
-    for name, item in ws.inputs.items():
+    for name, item in numerics.inputs.items():
         unit = f" {item.unit}" if getattr(item, "unit", None) else ""
         value = _number(item.value)
         shown = format(value, "g") if value is not None else str(item.value)
@@ -149,7 +149,7 @@ def document_run(ws: Any, run: Any) -> Any:
                     default=value if value is not None else shown,
                 )
             )
-    jobs = [j.stem for j in getattr(ws, "jobs", [])]
+    jobs = [j.stem for j in numerics.jobs]
     if len(jobs) > 1 and not any(p.name.upper() == "JOB" for p in params):
         params.append(
             inspect.Parameter("job", inspect.Parameter.KEYWORD_ONLY, default=None)

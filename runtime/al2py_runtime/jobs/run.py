@@ -915,16 +915,21 @@ def _run_dynamics(
     for j, name in enumerate(c.state_names):
         unit = vals.units.get(name)
         states[name] = ys[j] / job.unit_system.to_internal(unit)
+    return _result(job, tables, vals, states=states, nfev=nfev)
+
+
+def _result(job: Job, tables: list[Table], vals: _Values, **more: Any) -> Result:
+    """The ``Result`` of ``job``: its tables, Encode values and the notes
+    the Input values raised (each once), plus what the kind of job adds."""
     return Result(
         job.kind,
         job.stem,
         tables,
         job.digits,
         encoded=dict(job.encoded),
-        states=states,
         notes=_unique(vals.notes),
         time_unit=job.unit_system.time_unit,
-        nfev=nfev,
+        **more,
     )
 
 
@@ -999,7 +1004,7 @@ class _Static:
     params: list[Any]
 
 
-def _eq_labels(job: Job) -> list[str]:
+def eq_labels(job: Job) -> list[str]:
     n = len(job.eqs) if job.eqs is not None else 0
     if job.eqs_name:
         return [f"{job.eqs_name}[{i + 1}]" for i in range(n)]
@@ -1018,7 +1023,26 @@ def _inline_dependent(
     return [e.xreplace(full) for e in exprs] if full else exprs
 
 
-def _compile_static(job: Job, keep: frozenset) -> _Static:
+@dataclass
+class StaticSpec:
+    """A Nonlinear/Algebraic job's equations as sympy expressions of dummies:
+    ``eqs`` (residuals) and ``jac`` (their Jacobian in ``xs``, the unknowns)
+    with the intermediates that depend on the unknowns written out."""
+
+    unknowns: list[Any]  # objects, in the CODE statement's order
+    time: Any
+    xs: list[Any]
+    params: list[Any]  # objects, in argument order
+    param_dummies: list[Any]
+    intermediates: list[tuple[Any, Any]]
+    eqs: list[Any]
+    jac: Any
+    outputs: list[list[Any]]
+
+
+def static_equations(job: Job, keep: frozenset) -> StaticSpec:
+    """The unknowns, parameters and equations of a Nonlinear/Algebraic job
+    (for Algebraic, checked to be linear in the unknowns)."""
     unknowns = list(job.unknowns)
     table = _without(job.rhs, set(keep) | set(unknowns))
     slots = _Slots(job)
@@ -1032,12 +1056,9 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
             f"{job.where}: {len(eqs)} equations for {len(unknowns)} unknowns"
         )
     outputs = _output_exprs(job, table, slots)
-    args = [slots.time, *xs]
     z = slots.intermediates
     eqs = _inline_dependent(z, eqs, xs)  # the Jacobian must see through them
     jac = sp.Matrix(eqs).jacobian(xs) if eqs else sp.Matrix()
-    residual = lambdify_job([*args, *slots.param_dummies], eqs, z)
-    rhs = None
     if job.kind == "ALGEBRAIC":
         bad = [u for u, x in zip(unknowns, xs, strict=True) if jac.has(x)]
         if bad:
@@ -1046,21 +1067,41 @@ def _compile_static(job: Job, keep: frozenset) -> _Static:
                 + ", ".join(label_of(u, job.names) for u in bad)
                 + "; use CODE Nonlinear"
             )
-        at0 = dict.fromkeys(xs, 0)
+    return StaticSpec(
+        unknowns,
+        slots.time,
+        xs,
+        list(slots.params),
+        list(slots.param_dummies),
+        z,
+        eqs,
+        jac,
+        outputs,
+    )
+
+
+def _compile_static(job: Job, keep: frozenset) -> _Static:
+    s = static_equations(job, keep)
+    args = [s.time, *s.xs]
+    z = s.intermediates
+    residual = lambdify_job([*args, *s.param_dummies], s.eqs, z)
+    rhs = None
+    if job.kind == "ALGEBRAIC":
+        at0 = dict.fromkeys(s.xs, 0)
         rhs = lambdify_job(
-            [slots.time, *slots.param_dummies], [-e.xreplace(at0) for e in eqs], z
+            [s.time, *s.param_dummies], [-e.xreplace(at0) for e in s.eqs], z
         )
-        jacobian = lambdify_job([slots.time, *slots.param_dummies], list(jac), z)
+        jacobian = lambdify_job([s.time, *s.param_dummies], list(s.jac), z)
     else:
-        jacobian = lambdify_job([*args, *slots.param_dummies], list(jac), z)
-    out_funcs = [lambdify_job([*args, *slots.param_dummies], row, z) for row in outputs]
+        jacobian = lambdify_job([*args, *s.param_dummies], list(s.jac), z)
+    out_funcs = [lambdify_job([*args, *s.param_dummies], row, z) for row in s.outputs]
     return _Static(
-        [label_of(u, job.names) for u in unknowns],
+        [label_of(u, job.names) for u in s.unknowns],
         residual,
         jacobian,
         rhs,
         out_funcs,
-        list(slots.params),
+        s.params,
     )
 
 
@@ -1104,17 +1145,7 @@ def _static_result(
         cols = [Column(n, units[n]) for n in c.unknown_names]
         data = np.column_stack([solution[n] for n in c.unknown_names])
         tables.append(Table(1, cols, data, job.line))
-    return Result(
-        job.kind,
-        job.stem,
-        tables,
-        job.digits,
-        encoded=dict(job.encoded),
-        solution=solution,
-        solution_units=units,
-        notes=_unique(vals.notes),
-        time_unit=us.time_unit,
-    )
+    return _result(job, tables, vals, solution=solution, solution_units=units)
 
 
 def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
@@ -1127,7 +1158,7 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
     p = [vals.param(obj) for obj in c.params]
     x0 = [vals.get(name) for name in c.unknown_names]
     n = len(x0)
-    labels = _eq_labels(job)
+    labels = eq_labels(job)
 
     def fun(x: np.ndarray) -> list[float]:
         return c.residual(t0, *x.tolist(), *p)

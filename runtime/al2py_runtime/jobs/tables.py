@@ -56,7 +56,7 @@ class Table(TableViews):
 
 @dataclass(repr=False)
 class Result(ResultViews):
-    """The outcome of :meth:`Workspace.run`.
+    """The outcome of :meth:`Numerics.run <al2py_runtime.jobs.numerics.Numerics.run>`.
 
     ``result["QA"]`` is a numpy array in the Output (or Input) unit of ``QA``;
     ``result.tables`` holds one :class:`Table` per ``Output`` statement.

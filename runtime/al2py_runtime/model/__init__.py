@@ -18,6 +18,25 @@ One concept per module; :class:`al2py_runtime.model.model.Model` assembles them:
   ``Constrain`` (no model state)
 * :mod:`.fastkane` -- :class:`~.fastkane.FastKane`, Kane's equations with
   named intermediates (for large models)
+
+The model of a falling particle, exported to ``KanesMethod``:
+
+>>> from sympy import Eq
+>>> from al2py_runtime import Workspace, t
+>>> from al2py_runtime.model import kane_inputs, kanes_method
+>>> al = Workspace("drop.al")
+>>> N, P = al.newtonian("N"), al.particles("P")
+>>> Q, G, U = al.variables("Q'"), al.constants("G"), al.motion_variables("U'")
+>>> al.set_mass(P, 3)
+>>> _ = al.kd(Eq(Q.diff(t), U)), al.set_vel(P, N, U * N.y)
+>>> al.gravity(-G * N.y)
+>>> inputs = kane_inputs(al.model)
+>>> inputs.q, inputs.u, inputs.kd_eqs
+([Q(t)], [U(t)], [-U(t) + Derivative(Q(t), t)])
+>>> [type(b).__name__ for b in inputs.bodies], inputs.loads[0][1].dot(N.y)
+(['Particle'], -3*G)
+>>> kanes_method(inputs).forcing.T
+Matrix([[-3*G]])
 """
 
 from .kane import KaneInputs, kane_inputs, kanes_method

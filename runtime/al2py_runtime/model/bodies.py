@@ -27,7 +27,9 @@ class MassAndLoads:
     # ------------------------------------------------- mass distribution
 
     def body_mass(self, obj: Any, *, strict: bool = True) -> Any:
-        st = self._mech
+        """The mass of a body (its frame) or particle (its point); one not
+        declared is an error, or zero when ``strict`` is false."""
+        st = self.registry
         if isinstance(obj, ReferenceFrame) and obj in st.bodies:
             m = st.bodies[obj].mass
         elif isinstance(obj, Point) and obj in st.particles:
@@ -40,19 +42,22 @@ class MassAndLoads:
             return sp.Integer(0)
         return m
 
-    def _objects(self, objs: tuple) -> list:
-        return list(objs) if objs else list(self._mech.massive)
+    def massive_objects(self, objs: tuple) -> list:
+        """``objs``, or when none are given every body and particle in
+        declaration order (``Mass()``, ``KE()``...)."""
+        return list(objs) if objs else list(self.registry.massive)
 
     def mass_center(self, obj: Any) -> Point:
+        """The mass center of a body (given its frame); a particle is its own."""
         if isinstance(obj, ReferenceFrame):
-            return self._body(obj).point
+            return self.body_record(obj).point
         return obj
 
     @command
     def mass_of(self, *objs: Any) -> Any:
         """``Mass(A, B)``; ``Mass()`` is the total mass."""
         return sum(
-            (self.body_mass(o, strict=bool(objs)) for o in self._objects(objs)),
+            (self.body_mass(o, strict=bool(objs)) for o in self.massive_objects(objs)),
             sp.Integer(0),
         )
 
@@ -61,7 +66,7 @@ class MassAndLoads:
         """``CM(P, A, B)``: position vector from P to the mass center."""
         total = sp.Integer(0)
         r = Vector(0)
-        for o in self._objects(objs):
+        for o in self.massive_objects(objs):
             m = self.body_mass(o, strict=bool(objs))
             if m == 0:
                 continue
@@ -78,7 +83,7 @@ class MassAndLoads:
     @command
     def central_inertia(self, body: ReferenceFrame) -> Dyadic:
         """``I_B_Bo>>``: the central inertia dyadic of a body."""
-        b = self._body(body)
+        b = self.body_record(body)
         if b.inertia is None:
             return Dyadic(0)
         if b.inertia_point is None or b.inertia_point is b.point:
@@ -92,7 +97,7 @@ class MassAndLoads:
         """``I_B_P>>``: inertia dyadic of body (or particle) B about point P."""
         if isinstance(body, Point):
             return self.inertia(p, body)
-        b = self._body(body)
+        b = self.body_record(body)
         if b.inertia is not None and p is b.inertia_point:
             return b.inertia
         central = self.central_inertia(body)
@@ -107,8 +112,8 @@ class MassAndLoads:
         """``Inertia(P, A, B)``: inertia dyadic of the objects about P
         (no objects: the whole system)."""
         out = Dyadic(0)
-        st = self._mech
-        for o in self._objects(objs):
+        st = self.registry
+        for o in self.massive_objects(objs):
             if isinstance(o, ReferenceFrame):
                 out += self.inertia_dyadic(o, p)
             else:
@@ -126,22 +131,22 @@ class MassAndLoads:
     @command
     def force_on(self, p: Point) -> Vector:
         """``Force_P>`` (the zero vector if none was applied)."""
-        return self._mech.forces.get(p, Vector(0))
+        return self.registry.forces.get(p, Vector(0))
 
     @command
     def torque_on(self, b: ReferenceFrame) -> Vector:
         """``Torque_B>`` (the zero vector if none was applied)."""
-        return self._mech.torques.get(b, Vector(0))
+        return self.registry.torques.get(b, Vector(0))
 
     @command
     def add_force(self, p: Point, v: Any) -> Vector:
-        st = self._mech
+        st = self.registry
         st.forces[p] = self.force_on(p) + kin.as_vector(v)
         return st.forces[p]
 
     @command
     def add_torque(self, b: ReferenceFrame, v: Any) -> Vector:
-        st = self._mech
+        st = self.registry
         st.torques[b] = self.torque_on(b) + kin.as_vector(v)
         return st.torques[b]
 
@@ -165,7 +170,7 @@ class MassAndLoads:
         (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
         listed bodies and particles only."""
         vec = kin.as_vector(vec)
-        for o in self._objects(objs):
+        for o in self.massive_objects(objs):
             m = self.body_mass(o, strict=False)
             if m != 0:
                 self.add_force(self.mass_center(o), m * vec)

@@ -32,16 +32,19 @@ class Energy:
         ``KE(A, P)`` of the bodies and particles named."""
         n = self.newtonian_frame()
         total = sp.Integer(0)
-        for o in self._objects(objs):
+        for o in self.massive_objects(objs):
             m = self.body_mass(o, strict=False)
             p = self.mass_center(o)
             if m != 0:
                 v = self.actual_value(self.vel(p, n))
                 total += m * v.dot(v) / 2
-            if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
+            if (
+                isinstance(o, ReferenceFrame)
+                and self.body_record(o).inertia is not None
+            ):
                 w = self.actual_value(self.ang_vel(o, n))
                 total += w.dot(self.central_inertia(o) & w) / 2
-        return kin.tidy(total, self._gens())
+        return kin.tidy(total, self.rates_and_speeds())
 
     @command
     def momentum(self, kind: str, *objs: Any) -> Any:
@@ -55,10 +58,10 @@ class Energy:
         p: Point | None = None
         if kind == "ANGULAR" and objs and isinstance(objs[0], Point):
             p, objs = objs[0], objs[1:]
-        massive = self._objects(tuple(objs))
+        massive = self.massive_objects(tuple(objs))
         if kind == "GENERALIZED":
             ke = self.ke(*objs)
-            return sp.Matrix([kin.tidy(sp.diff(ke, u)) for u in self._fr_speeds()])
+            return sp.Matrix([kin.tidy(sp.diff(ke, u)) for u in self.fr_speeds()])
         if kind not in ("LINEAR", "ANGULAR"):
             raise ValueError("Momentum takes LINEAR, ANGULAR or GENERALIZED")
         out = Vector(0)
@@ -73,7 +76,10 @@ class Energy:
                 r = self.pos(p, c) if p is not None else self._from_cm(c)
                 if r != Vector(0):
                     out += r ^ (m * self.actual_value(self.vel(c, n)))
-            if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
+            if (
+                isinstance(o, ReferenceFrame)
+                and self.body_record(o).inertia is not None
+            ):
                 w = self.actual_value(self.ang_vel(o, n))
                 out += self.central_inertia(o) & w
         return kin.tidy_vector(out)
@@ -100,27 +106,29 @@ class Energy:
         if option == "ANGMOM":
             return kin.tidy_vector(j * wba)
         if option == "KE":
-            return kin.tidy(j * wa.dot(wba) + j * wba.dot(wba) / 2, self._gens())
+            return kin.tidy(
+                j * wa.dot(wba) + j * wba.dot(wba) / 2, self.rates_and_speeds()
+            )
         if option != "FRSTAR":
             raise ValueError("Gyrostat option must be FRSTAR, ANGMOM or KE")
-        speeds = self._fr_speeds()
-        self._mech.fr_speeds = speeds
-        self._mech.gyrostat = True
-        carrier = -j * (self._dt(wba, a) + (wa ^ wba))
-        alf_b = self._dt(wa + wba, n)
-        pa = self._partials(self.ang_vel(a, n), speeds)
-        pba = self._partials(self.ang_vel(b, a), speeds)
+        speeds = self.fr_speeds()
+        self.registry.fr_speeds = speeds
+        self.registry.gyrostat = True
+        carrier = -j * (self.resolved_dt(wba, a) + (wa ^ wba))
+        alf_b = self.resolved_dt(wa + wba, n)
+        pa = self.partial_velocities(self.ang_vel(a, n), speeds)
+        pba = self.partial_velocities(self.ang_vel(b, a), speeds)
         rows = []
         for r_a, r_ba in zip(pa, pba, strict=True):
             rows.append(carrier.dot(r_a) - j * alf_b.dot(r_ba))
-        gens = self._gens()
+        gens = self.rates_and_speeds()
         return sp.Matrix([kin.tidy(r, gens) for r in rows])
 
     @command
     def power(self) -> Any:
         """Power of all forces and torques in N (actual motion)."""
         n = self.newtonian_frame()
-        st = self._mech
+        st = self.registry
         total = sp.Integer(0)
         for p, f in st.forces.items():
             if f != Vector(0):
@@ -128,7 +136,7 @@ class Energy:
         for b, tq in st.torques.items():
             if tq != Vector(0):
                 total += tq.dot(self.actual_value(self.ang_vel(b, n)))
-        return kin.tidy(total, self._gens())
+        return kin.tidy(total, self.rates_and_speeds())
 
     @command
     def nicheck(self) -> Any:
@@ -141,7 +149,7 @@ class Energy:
             k += 1
             name = f"NICHECK_WORK{k}"
         work = dynamicsymbols(name, real=True)
-        self._mech.checks.append(work)
+        self.registry.checks.append(work)
         self.ws.table.declare(name, "variable", work, order=1)
         self.ws.table.rhs[sp.Derivative(work, t)] = self.power()
         return self.ke() - work

@@ -60,8 +60,8 @@ class KaneEquations:
         """``Fr()``: generalized active forces (one row per independent or
         auxiliary speed; dependent speeds are eliminated)."""
         n = self.newtonian_frame()
-        st = self._mech
-        speeds = self._rows_speeds("Fr()")
+        st = self.registry
+        speeds = self.fix_fr_speeds("Fr()")
         rows = [sp.Integer(0)] * len(speeds)
         book = self.ws.intermediates
         loads = [(f, self.vel(p, n), n) for p, f in st.forces.items()]
@@ -70,7 +70,7 @@ class KaneEquations:
             if f == Vector(0):
                 continue
             if book is None:
-                dots = self._dot_rows(f, self._partials(v, speeds))
+                dots = self._dot_rows(f, self.partial_velocities(v, speeds))
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
                 keep = self.ws.specified_inputs([])
@@ -100,8 +100,8 @@ class KaneEquations:
         velocities, so each row is built already arranged in the speeds'
         derivatives (large models never differentiate whole rows)."""
         n = self.newtonian_frame()
-        st = self._mech
-        speeds = self._rows_speeds("FrStar()")
+        st = self.registry
+        speeds = self.fix_fr_speeds("FrStar()")
         accels = [sp.Derivative(u, t) for u in self.generalized_speeds()]
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
@@ -113,7 +113,7 @@ class KaneEquations:
                 return add_named(vec, v, frame)
             rest, coefs = kin.split_linear_vector(vec, accels)
             for k, (r, part) in enumerate(
-                zip(rows, self._partials(v, speeds), strict=True)
+                zip(rows, self.partial_velocities(v, speeds), strict=True)
             ):
                 if part == Vector(0):
                     continue
@@ -144,7 +144,10 @@ class KaneEquations:
                 a = self.actual_value(self.acc(p, n))
                 if a != Vector(0):
                     add(-m * a, self.vel(p, n), n)
-            if isinstance(o, ReferenceFrame) and self._body(o).inertia is not None:
+            if (
+                isinstance(o, ReferenceFrame)
+                and self.body_record(o).inertia is not None
+            ):
                 tq = self._inertia_torque(o, n)
                 add(tq, self.ang_vel(o, n), o)
         if st.massive and not all(moved):
@@ -156,8 +159,8 @@ class KaneEquations:
         on.  An auxiliary speed has no kinematical equation to forget: it is
         missing from the velocities that should carry it."""
         still = [u for u, m in zip(speeds, moved, strict=True) if not m]
-        aux = [self.ws.name_of(u) for u in still if u in self._mech.auxiliary]
-        other = [self.ws.name_of(u) for u in still if u not in self._mech.auxiliary]
+        aux = [self.ws.name_of(u) for u in still if u in self.registry.auxiliary]
+        other = [self.ws.name_of(u) for u in still if u not in self.registry.auxiliary]
         head = "FrStar(): no velocity or angular velocity of a massive object"
         parts = []
         if other:
@@ -190,7 +193,7 @@ class KaneEquations:
         which = which.upper()
         if which not in ("DEPENDENT", "AUXILIARY"):
             raise ValueError("Constrain takes DEPENDENT[...] or AUXILIARY[...]")
-        st = self._mech
+        st = self.registry
         mat = self.ws.table.stored.get(which)
         if not isinstance(mat, sp.MatrixBase):
             raise ValueError(f"Constrain: {which} has not been assigned")
@@ -198,12 +201,12 @@ class KaneEquations:
         eqs = [self.ws.resolve(e, keep=self.generalized_speeds()) for e in mat]
         book = self.ws.solver_book(len(speeds))
         sols = solve_speeds(eqs, speeds, book, self.configuration_variables())
-        gens = self._gens()
+        gens = self.rates_and_speeds()
         out = []
         for u, s in zip(speeds, sols, strict=True):
             out.append(self.ws.assign(self.ws.name_of(u), s, line=line))
         for u, s in zip(speeds, sols, strict=True):
-            ds = self._dt(s, self._mech.newtonian)
+            ds = self.resolved_dt(s, self.registry.newtonian)
             ds = kin.tidy(ds, gens)
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
@@ -221,7 +224,7 @@ class KaneEquations:
         """The coordinates (variables with a kinematical differential
         equation): 0 in the usual reference configuration, which is where
         pivots of symbolic eliminations must not vanish."""
-        return [dq.expr for dq in self._kinematical_equations()]
+        return [dq.expr for dq in self.kinematical_equations()]
 
     # ----------------------------------------------------------- Kane
 
@@ -229,7 +232,7 @@ class KaneEquations:
         """Substitute kinematical equations, constrained speeds and their
         derivatives (named quantities are kept)."""
         speeds = set(self.generalized_speeds())
-        table = dict(self._mech.speed_dt)
+        table = dict(self.registry.speed_dt)
         for k, v in self.ws.table.rhs.items():
             if k in speeds:
                 table[k] = v
@@ -258,11 +261,11 @@ class KaneEquations:
         into the independent rows with the coefficients of the constraint
         solution (so the constraint forces cancel), and, when force measure
         numbers are named, solved for them (assigned as their RHS)."""
-        st = self._mech
+        st = self.registry
         zero = self.ws.table.stored.get("ZERO")
         if not isinstance(zero, sp.MatrixBase):
             raise ValueError("Kane: ZERO has not been assigned")
-        speeds = st.fr_speeds if st.fr_speeds is not None else self._fr_speeds()
+        speeds = st.fr_speeds if st.fr_speeds is not None else self.fr_speeds()
         rows = list(zero)
         if len(rows) != len(speeds):
             raise ValueError(
@@ -290,7 +293,7 @@ class KaneEquations:
                     row = sp.expand(row).xreplace({f: 0})
             cleaned.append(row)
         accels = [sp.Derivative(u, t) for u in ind]
-        gens = self._gens()
+        gens = self.rates_and_speeds()
         arranged = sp.Matrix(arrange(cleaned, accels, gens))
         self.ws.update("ZERO", arranged, line=line)
         sols = ()
@@ -320,9 +323,9 @@ class KaneEquations:
     def coordinates_of(self, keep: list) -> list:
         """Variables with a kinematical differential equation in the speeds
         (NiCheck's work variables and perturbation variables are not)."""
-        checks = set(self._mech.checks)
+        checks = set(self.registry.checks)
         out = []
-        for dq in self._kinematical_equations():
+        for dq in self.kinematical_equations():
             q = dq.expr
             if q in checks or q in keep or dq in keep:
                 continue

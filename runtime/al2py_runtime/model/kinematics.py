@@ -24,6 +24,7 @@ __all__ = [
     "vmap",
     "is_vector",
     "is_dyadic",
+    "as_dyadic",
     "as_vector",
     "tidy",
     "tidy_vector",
@@ -69,12 +70,29 @@ def is_dyadic(x: Any) -> bool:
 
 
 def as_vector(x: Any) -> Vector:
-    """``0`` (Autolev's ``0>`` after normalization) or a Vector -> Vector."""
-    if isinstance(x, Vector):
+    """``0`` (Autolev's ``0>`` after normalization) or a Vector -> Vector.
+
+    >>> as_vector(0)
+    0
+    """
+    return _zero_or(Vector, x, "vector")
+
+
+def as_dyadic(x: Any) -> Dyadic:
+    """``0`` (Autolev's ``0>>`` after normalization) or a Dyadic -> Dyadic.
+
+    >>> as_dyadic(0) == Dyadic(0)
+    True
+    """
+    return _zero_or(Dyadic, x, "dyadic")
+
+
+def _zero_or(kind: type, x: Any, what: str) -> Any:
+    if isinstance(x, kind):
         return x
     if x == 0:
-        return Vector(0)
-    raise TypeError(f"expected a vector, not {x!r}")
+        return kind(0)
+    raise TypeError(f"expected a {what}, not {x!r}")
 
 
 def vmap(x: Any, f: Callable[[Any], Any]) -> Any:

@@ -55,13 +55,9 @@ class Model(
 
     def __init__(self, ws: Any) -> None:
         self.ws = ws
-        self._mech = ModelState()
-
-    @property
-    def registry(self) -> ModelState:
-        """The model's state: frames, points, bodies, loads, speeds (read by
-        :mod:`.kane` to build ``KanesMethod``'s inputs)."""
-        return self._mech
+        #: The model's state: frames, points, bodies, loads, speeds (shared by
+        #: the parts; read by :mod:`.kane` to build ``KanesMethod``'s inputs).
+        self.registry = ModelState()
 
 
 #: The commands a :class:`Model` answers for its workspace (``al.simprot``,

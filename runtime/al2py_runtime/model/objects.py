@@ -18,7 +18,7 @@ from sympy.physics.vector import (
 
 from ..vocabulary import Decl, Form, match
 from . import kinematics as kin
-from .state import BodyRecord, as_dyadic, command
+from .state import BodyRecord, command
 
 __all__ = ["Objects"]
 
@@ -27,7 +27,7 @@ class Objects:
     """Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned."""
 
     def _new_point(self, name: str, kind: Decl = Decl.POINT) -> Point:
-        st = self._mech
+        st = self.registry
         p = Point(name.upper())
         st.points[name.upper()] = p
         st.edges.setdefault(p, {})
@@ -35,7 +35,7 @@ class Objects:
         return p
 
     def _new_frame(self, name: str, kind: Decl) -> ReferenceFrame:
-        st = self._mech
+        st = self.registry
         f = ReferenceFrame(name.upper())
         st.frames[name.upper()] = f
         self.ws.table.declare(name, kind, f)
@@ -49,7 +49,7 @@ class Objects:
     def newtonian(self, name: str) -> ReferenceFrame:
         """``Newtonian N``: frame N and point NO fixed in N."""
         f = self._new_frame(name, Decl.NEWTONIAN)
-        self._mech.newtonian = f
+        self.registry.newtonian = f
         return f
 
     @command
@@ -61,7 +61,7 @@ class Objects:
     def bodies(self, *names: str) -> Any:
         """``Bodies A, B``: frames and mass centers AO, BO."""
         out = []
-        st = self._mech
+        st = self.registry
         for n in names:
             f = self._new_frame(n, Decl.BODY)
             st.bodies[f] = BodyRecord(f, self.point(n.upper() + "O"))
@@ -80,7 +80,7 @@ class Objects:
     def particles(self, *names: str) -> Any:
         """``Particles P, Q``: massive points."""
         out = []
-        st = self._mech
+        st = self.registry
         for n in names:
             p = self._new_point(n, Decl.PARTICLE)
             st.particles[p] = None
@@ -94,21 +94,21 @@ class Objects:
         """The sympy ``RigidBody`` of a declared body: its frame, mass center,
         and the mass and central inertia as declared (kept up to date by
         ``Mass`` and ``Inertia``)."""
-        self._body(frame)
-        return self._mech.sympy_bodies[frame]
+        self.body_record(frame)
+        return self.registry.sympy_bodies[frame]
 
     @command
     def particle(self, point: Point) -> Particle:
         """The sympy ``Particle`` of a declared particle (its point and its
         mass as declared)."""
-        if point not in self._mech.particles:
+        if point not in self.registry.particles:
             raise ValueError(f"{point} is not a particle")
-        return self._mech.sympy_bodies[point]
+        return self.registry.sympy_bodies[point]
 
     def _sync_sympy_body(self, obj: Any) -> None:
         """Give the module's ``RigidBody``/``Particle`` the declared mass and
         central inertia."""
-        st = self._mech
+        st = self.registry
         body = st.sympy_bodies[obj]
         body.mass = self.body_mass(obj, strict=False)
         if isinstance(obj, ReferenceFrame):
@@ -129,7 +129,7 @@ class Objects:
     def point(self, name: str) -> Point:
         """The declared point, particle or mass center named ``name``."""
         try:
-            return self._mech.points[name.upper()]
+            return self.registry.points[name.upper()]
         except KeyError:
             raise KeyError(f"{name} is not a point, particle or mass center") from None
 
@@ -137,24 +137,22 @@ class Objects:
     def frame(self, name: str) -> ReferenceFrame:
         """The declared frame, body or Newtonian frame named ``name``."""
         try:
-            return self._mech.frames[name.upper()]
+            return self.registry.frames[name.upper()]
         except KeyError:
             raise KeyError(f"{name} is not a frame or body") from None
 
     def newtonian_frame(self) -> ReferenceFrame:
-        n = self._mech.newtonian
+        """The frame declared with ``Newtonian`` (an error before it is)."""
+        n = self.registry.newtonian
         if n is None:
             raise ValueError("no Newtonian frame has been declared")
         return n
 
-    def _scalar(self, value: Any) -> Any:
-        return self.ws.normalize(value)
-
     @command
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
-        st = self._mech
-        value = self._scalar(value)
+        st = self.registry
+        value = self.ws.normalize(value)
         if isinstance(obj, ReferenceFrame) and obj in st.bodies:
             st.bodies[obj].mass = value
         elif isinstance(obj, Point) and obj in st.particles:
@@ -181,18 +179,20 @@ class Objects:
         body ``A`` about its mass center, or about point ``about`` (the central
         dyadic then follows from the transfer theorem when needed).
         ``Inertia A(B), ...`` gives the scalars in frame ``basis``'s basis."""
-        b = self._body(body)
+        b = self.body_record(body)
         m = sp.Matrix([[i11, i12, i31], [i12, i22, i23], [i31, i23, i33]]).applyfunc(
-            self._scalar
+            self.ws.normalize
         )
         b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
         self._sync_sympy_body(body)
         return b.inertia
 
-    def _body(self, body: Any) -> BodyRecord:
+    def body_record(self, body: Any) -> BodyRecord:
+        """What the model holds of a body (given its frame): mass center,
+        mass and inertia; an error for anything that is not a body."""
         try:
-            return self._mech.bodies[body]
+            return self.registry.bodies[body]
         except (KeyError, TypeError):
             raise ValueError(f"{body} is not a body") from None
 
@@ -201,7 +201,7 @@ class Objects:
     def _parse_form(self, name: str) -> tuple | None:
         """``(form, *objects)`` for a syntactical form of declared objects
         (:func:`al2py_runtime.vocabulary.match`), else None."""
-        st = self._mech
+        st = self.registry
         pts, frs = st.points, st.frames
 
         def is_body(n: str) -> bool:
@@ -236,7 +236,7 @@ class Objects:
     ) -> Any:
         """Give a frame, point or body one of its kinematic or mass
         properties (``value`` already normalized) and respond with ``label``."""
-        st = self._mech
+        st = self.registry
         if isinstance(value, Vector | Dyadic):
             value = kin.vmap(value, self.ws.normalize)
         if kind is Form.DCM:
@@ -249,14 +249,14 @@ class Objects:
             return m
         if kind is Form.INERTIA:
             body, p = objs
-            value = as_dyadic(value)
-            b = self._body(body)
+            value = kin.as_dyadic(value)
+            b = self.body_record(body)
             b.inertia, b.inertia_point = value, p
             self.ws.respond(label, value, line=line)
             return value
         value = kin.as_vector(value)
         if kind is Form.POS:
-            self._set_pos(objs[0], objs[1], value)
+            self.add_position(objs[0], objs[1], value)
         elif kind is Form.VEL:
             st.vel[(objs[0], objs[1])] = value
             objs[0].set_vel(objs[1], value)

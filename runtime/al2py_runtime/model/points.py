@@ -29,15 +29,17 @@ class Kinematics:
 
     # --------------------------------------------------------- positions
 
-    def _set_pos(self, p: Point, q: Point, v: Vector) -> None:
-        st = self._mech
+    def add_position(self, p: Point, q: Point, v: Vector) -> None:
+        """Record ``P_P_Q> = v`` both ways (``P_Q_P>`` is ``-v``), as an edge
+        of the position chains :meth:`pos` follows."""
+        st = self.registry
         st.edges.setdefault(p, {})[q] = v
         st.edges.setdefault(q, {})[p] = -v
         q.set_pos(p, v)
 
     def _path(self, p: Point, q: Point) -> list[Point] | None:
         """Shortest chain of given positions from p to q."""
-        edges = self._mech.edges
+        edges = self.registry.edges
         prev = {p: None}
         todo = deque([p])
         while todo:
@@ -61,7 +63,7 @@ class Kinematics:
         path = self._path(p, q)
         if path is None:
             raise ValueError(f"P_{p.name}_{q.name}> is not defined")
-        edges = self._mech.edges
+        edges = self.registry.edges
         out = Vector(0)
         for a, b in zip(path, path[1:], strict=False):
             out += edges[a][b]
@@ -86,10 +88,13 @@ class Kinematics:
         """The auxiliary speeds and their derivatives: what formed quantities
         keep as symbols although Constrain gave them values (they are needed
         for the partial velocities; docs/semantics.md, "AUXILIARY")."""
-        aux = self._mech.auxiliary
+        aux = self.registry.auxiliary
         return [*aux, *(sp.Derivative(u, t) for u in aux)]
 
-    def _dt(self, v: Any, frame: ReferenceFrame) -> Any:
+    def resolved_dt(self, v: Any, frame: ReferenceFrame) -> Any:
+        """The time derivative of a scalar, vector or dyadic in ``frame``,
+        taken after substituting every right-hand side (but the auxiliary
+        speeds); under AutoZ its coefficients of the speeds are named."""
         # Everything is substituted except the auxiliary speeds: a velocity
         # formed after Constrain(AUXILIARY[U1]) must still depend on U1, as
         # one formed before it does (U1 is set to zero in the equations).
@@ -112,7 +117,7 @@ class Kinematics:
     # --------------------------------------------------------- velocities
 
     def _known_vel(self, p: Point, frame: ReferenceFrame) -> Vector | None:
-        st = self._mech
+        st = self.registry
         if (p, frame) in st.vel:
             return st.vel[(p, frame)]
         if (p, frame) in st.deferred_vel:
@@ -128,7 +133,7 @@ class Kinematics:
         known = self._known_vel(p, frame)
         if known is not None:
             return known
-        edges = self._mech.edges
+        edges = self.registry.edges
         seen = {p}
         todo = deque([p])
         while todo:
@@ -139,14 +144,14 @@ class Kinematics:
                 seen.add(s)
                 v = self._known_vel(s, frame)
                 if v is not None:
-                    return self._tidyv(v + self._dt(self.pos(s, p), frame))
+                    return self._tidyv(v + self.resolved_dt(self.pos(s, p), frame))
                 todo.append(s)
         raise ValueError(f"V_{p.name}_{frame.name}> is not defined")
 
     @command
     def acc(self, p: Point, frame: ReferenceFrame) -> Vector:
         """``A_P_N>``: given, formed, or the derivative of ``V_P_N>``."""
-        st = self._mech
+        st = self.registry
         if (p, frame) in st.acc:
             return st.acc[(p, frame)]
         if st.fixed_in.get(p) is frame:
@@ -157,7 +162,7 @@ class Kinematics:
             v = self.vel(p, frame)
         except ValueError:
             raise ValueError(f"A_{p.name}_{frame.name}> is not defined") from None
-        return self._tidyv(self._dt(v, frame))
+        return self._tidyv(self.resolved_dt(v, frame))
 
     @command
     def ang_vel(self, b: ReferenceFrame, a: ReferenceFrame) -> Vector:
@@ -180,7 +185,7 @@ class Kinematics:
     def _ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, seen: frozenset) -> Vector:
         if a is b:
             return Vector(0)
-        st = self._mech
+        st = self.registry
         if (b, a) in st.angacc:
             return st.angacc[(b, a)]
         for c, given in reversed(st.angacc_given.get(b, [])):
@@ -192,7 +197,7 @@ class Kinematics:
                 continue
             inner = self._ang_acc(c, a, seen | {b})
             return self._tidyv(inner + given + (w_ca ^ w_bc))
-        return self._tidyv(self._dt(self.ang_vel(b, a), a))
+        return self._tidyv(self.resolved_dt(self.ang_vel(b, a), a))
 
     @command
     def dcm(self, a: ReferenceFrame, b: ReferenceFrame) -> sp.Matrix:
@@ -313,10 +318,10 @@ class Kinematics:
         """``Angvel(A, B, BODY123, Q1, Q2, Q3)``: forms ``W_B_A>`` (in B).
         ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
         if kind is None:
-            w = self._kinematic(self.ang_vel(b, a))
+            w = self.with_kindiffs(self.ang_vel(b, a))
             self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
             return w
-        w = self._kinematic(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
+        w = self.with_kindiffs(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
         b.set_ang_vel(a, w)
         self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
@@ -370,7 +375,7 @@ class Kinematics:
     def _deferred(self, which: str, p: Point, n: ReferenceFrame) -> Vector:
         """A velocity/acceleration stated by ``V2pts``/``A2pts`` before the
         other point's was known: formed now (an error if it still is not)."""
-        st = self._mech
+        st = self.registry
         table = st.deferred_vel if which == "V" else st.deferred_acc
         a, o = table.pop((p, n))  # no cycles: each rule is used once
         try:
@@ -393,7 +398,7 @@ class Kinematics:
             # Not all of it is known yet (the other point's motion, the
             # position, W_A_N>): keep the relation and form the value when it
             # is used (an error then if it still cannot be formed).
-            st = self._mech
+            st = self.registry
             table = st.deferred_vel if which == "V" else st.deferred_acc
             table[(p, n)] = (a, o)
             (st.vel if which == "V" else st.acc).pop((p, n), None)
@@ -417,23 +422,23 @@ class Kinematics:
     def v1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         r = self.pos(o, p)
-        vpa = self._mech.vel.get((p, a))
+        vpa = self.registry.vel.get((p, a))
         if vpa is None:
-            vpa = self._dt(r, a)
+            vpa = self.resolved_dt(r, a)
         v = self.vel(o, n) + vpa + (self.ang_vel(a, n) ^ r)
         return self._set_formed("V", p, n, self._tidyv(v), line)
 
     @command
     def a1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
-        st = self._mech
+        st = self.registry
         r = self.pos(o, p)
         vpa = st.vel.get((p, a))
         if vpa is None:
-            vpa = self._dt(r, a)
+            vpa = self.resolved_dt(r, a)
         apa = st.acc.get((p, a))
         if apa is None:
-            apa = self._dt(vpa, a)
+            apa = self.resolved_dt(vpa, a)
         w = self.ang_vel(a, n)
         v = (
             self.acc(o, n)
@@ -445,8 +450,8 @@ class Kinematics:
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
     def _set_formed(self, which, p, n, v, line) -> Vector:
-        v = self._kinematic(v)
-        table = self._mech.vel if which == "V" else self._mech.acc
+        v = self.with_kindiffs(v)
+        table = self.registry.vel if which == "V" else self.registry.acc
         table[(p, n)] = v
         if which == "V":
             p.set_vel(n, v)

@@ -27,10 +27,10 @@ class Speeds:
     @command
     def motion_variables(self, *names: str, line: int | None = None) -> Any:
         """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
-        that also describe the motion (see :meth:`_speeds`)."""
+        that also describe the motion (see :meth:`generalized_speeds`)."""
         out = self.ws.variables(*names, line=line)
         objs = out if isinstance(out, tuple) else (out,)
-        st = self._mech
+        st = self.registry
         st.motion.extend(o for o in objs if o not in st.motion)
         return out
 
@@ -46,8 +46,8 @@ class Speeds:
         (``SPEED``) is a speed; any other (``THETA''``) is a coordinate whose
         first derivative ``THETA'`` serves as the generalized speed.  Speeds
         solved by Constrain keep their place."""
-        if self._mech.speeds is not None:
-            return list(self._mech.speeds)
+        if self.registry.speeds is not None:
+            return list(self.registry.speeds)
         found = []
         for name, entry in self.ws.table.entries.items():
             m = SPEED_NAME.match(name)
@@ -55,10 +55,10 @@ class Speeds:
                 found.append((int(m.group(1)), entry.obj))
         if found:
             return [obj for _, obj in sorted(found, key=lambda x: x[0])]
-        st = self._mech
+        st = self.registry
         solved = set(st.dependent) | set(st.auxiliary)
         rhs = self.ws.table.rhs
-        kin_eqs = [rhs[dq] for dq in self._kinematical_equations()]
+        kin_eqs = [rhs[dq] for dq in self.kinematical_equations()]
         out = []
         for q in st.motion:
             dq = sp.Derivative(q, t)
@@ -83,7 +83,7 @@ class Speeds:
         Fr and Fr*); ``primes`` 1 gives their time derivatives.  The speeds
         are symbols, never their solutions, so ``Exclude(Zero,
         [U_INDEPENDENT'; G])`` removes the terms in the speeds' derivatives."""
-        st = self._mech
+        st = self.registry
         speeds = self.generalized_speeds()
         which = which.upper().removeprefix("U_")
         dependent, auxiliary = set(st.dependent), set(st.auxiliary)
@@ -102,27 +102,27 @@ class Speeds:
             )
         return sp.Matrix([sp.diff(u, t, primes) if primes else u for u in chosen])
 
-    def _kinematic(self, x: Any) -> Any:
+    def with_kindiffs(self, x: Any) -> Any:
         """``x`` with the kinematical differential equations applied (each
         ``Q'`` replaced by its right-hand side), as Autolev forms velocities in
         terms of the generalized speeds."""
         speeds = set(self.generalized_speeds())
         table = {
             dq: self.ws.table.rhs[dq]
-            for dq in self._kinematical_equations()
+            for dq in self.kinematical_equations()
             if dq.expr not in speeds and dq not in speeds
         }
         if not table or not mentions(x, list(table)):
             return x
         return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
 
-    def _kinematical_equations(self) -> list:
+    def kinematical_equations(self) -> list:
         """The derivatives ``Q'`` of declared variables (motion variables or
         not) that have a right-hand side while ``Q`` itself has none: the
         kinematical differential equations ``Q' = ...``, in declaration
         order."""
         rhs = self.ws.table.rhs
-        solved = set(self._mech.dependent) | set(self._mech.auxiliary)
+        solved = set(self.registry.dependent) | set(self.registry.auxiliary)
         out = []
         for entry in self.ws.table.entries.values():
             q = entry.obj
@@ -133,40 +133,45 @@ class Speeds:
                 out.append(dq)
         return out
 
-    def _fr_speeds(self) -> list:
+    def fr_speeds(self) -> list:
         """Speeds with a row in Fr/Fr*: independent and auxiliary speeds."""
-        dep = set(self._mech.dependent)
+        dep = set(self.registry.dependent)
         return [u for u in self.generalized_speeds() if u not in dep]
 
-    def _rows_speeds(self, what: str) -> list:
-        """:meth:`_fr_speeds` for ``Fr()``/``FrStar()``: an error when there
-        are none (never an empty, silently zero ``ZERO``)."""
-        speeds = self._fr_speeds()
-        if speeds and self._mech.speeds is None:
+    def fix_fr_speeds(self, what: str) -> list:
+        """:meth:`fr_speeds` for ``Fr()``/``FrStar()``, fixed from then on:
+        an error when there are none (never an empty, silently zero
+        ``ZERO``)."""
+        speeds = self.fr_speeds()
+        if speeds and self.registry.speeds is None:
             # Fixed from now on: a later Solve(Zero, OMEGA') gives OMEGA' a
             # right-hand side, which must not make OMEGA a coordinate.
-            self._mech.speeds = self.generalized_speeds()
+            self.registry.speeds = self.generalized_speeds()
         if not speeds:
             raise ValueError(
                 f"{what}: there are no generalized speeds; declare them with"
                 " Variables U{n}' or MotionVariables' (with kinematical"
                 " differential equations such as Q' = U)"
             )
-        self._mech.fr_speeds = speeds
+        self.registry.fr_speeds = speeds
         return speeds
 
     def displayed(self, value: Any) -> Any:
         """A response value simplified for printing (cosmetic, size-gated)."""
         if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
             return value
-        gens = self._gens()
+        gens = self.rates_and_speeds()
         return kin.vmap(value, lambda e: kin.tidy(e, gens))
 
-    def _gens(self) -> list:
+    def rates_and_speeds(self) -> list:
+        """The generalized speeds' derivatives, then the speeds: what
+        simplification and named intermediates collect terms in."""
         us = self.generalized_speeds()
         return [sp.Derivative(u, t) for u in us] + us
 
-    def _partials(self, v: Vector, speeds: list) -> list:
+    def partial_velocities(self, v: Vector, speeds: list) -> list:
+        """The partial (angular) velocities of ``v`` with respect to each of
+        ``speeds``, with every other right-hand side substituted."""
         keep = speeds + [sp.Derivative(u, t) for u in speeds]
         v = self.actual_value(v, keep)
         return [kin.vmap(v, lambda e, u=u: sp.diff(e, u)) for u in speeds]
@@ -176,14 +181,16 @@ class Speeds:
         """``Partials(V_P_N>, U1, U2)``: partial velocities (no speeds: with
         respect to each independent/auxiliary speed).  One speed gives one
         vector; several give a tuple of vectors, in order."""
-        speeds = list(speeds) or self._fr_speeds()
-        out = [kin.tidy_vector(x) for x in self._partials(self.ws.val(v), speeds)]
+        speeds = list(speeds) or self.fr_speeds()
+        out = [
+            kin.tidy_vector(x) for x in self.partial_velocities(self.ws.val(v), speeds)
+        ]
         return out[0] if len(out) == 1 else tuple(out)
 
     @command
     def remainder(self, v: Any) -> Vector:
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
-        speeds = self._fr_speeds()
+        speeds = self.fr_speeds()
         v = self.actual_value(self.ws.val(v), speeds)
         return kin.tidy_vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))

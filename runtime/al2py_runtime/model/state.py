@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
-from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector, dynamicsymbols
+from sympy.physics.vector import Point, ReferenceFrame, Vector, dynamicsymbols
 
 t = dynamicsymbols._t
 
@@ -74,11 +74,3 @@ def mentions(x: Any, objs: list) -> bool:
     if isinstance(x, Vector):
         return any(m.has(*objs) for m, _frame in x.args)
     return isinstance(x, sp.Basic) and x.has(*objs)
-
-
-def as_dyadic(value: Any) -> Dyadic:
-    if isinstance(value, Dyadic):
-        return value
-    if value == 0:
-        return Dyadic(0)
-    raise TypeError(f"expected a dyadic, not {value!r}")

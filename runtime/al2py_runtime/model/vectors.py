@@ -126,7 +126,7 @@ class VectorCommands:
     def unit_dyadic(self) -> Dyadic:
         """``1>>``, expressed in the Newtonian frame (without one, in the first
         declared frame; ``Express(1>>, A)`` gives it in any frame)."""
-        st = self._mech
+        st = self.registry
         n = st.newtonian or next(iter(st.frames.values()), None)
         if n is None:
             raise ValueError("1>> needs a frame: declare one first")
@@ -155,7 +155,7 @@ class VectorCommands:
     def vector_d(self, y: Any, x: Any, frame: Any) -> Any:
         """``D(v>, x, A)``: partial derivative of a vector in frame A."""
         if frame is None:
-            frame = self._mech.newtonian
+            frame = self.registry.newtonian
         if isinstance(y, Dyadic):
             if frame is None:
                 return kin.vmap(y, lambda e: sp.diff(e, x))
@@ -171,5 +171,5 @@ class VectorCommands:
         if frame is None:
             frame = self.newtonian_frame()
         if not isinstance(y, Vector | Dyadic):
-            return self._dt(y, frame)
-        return kin.vmap(self._dt(y, frame), kin.tidy)
+            return self.resolved_dt(y, frame)
+        return kin.vmap(self.resolved_dt(y, frame), kin.tidy)
