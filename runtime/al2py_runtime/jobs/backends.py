@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import ctypes
 import hashlib
+import itertools
 import math
 import os
 import platform
@@ -45,7 +46,7 @@ import subprocess
 import sys
 import tempfile
 import threading
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -845,6 +846,11 @@ OUT_FLAGS = ("-O1",)
 
 
 def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
+    """See :func:`c_model_stream`, as a list."""
+    return list(c_model_stream(spec))
+
+
+def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     """``spec`` as C translation units with their optimisation flags: the
     right-hand side (``-O2``), and when the outputs need more than
     :data:`SPLIT` intermediates, ``al_out`` and its intermediates in parts
@@ -854,17 +860,21 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
     all_out = [e for row in spec.outputs for e in row]
     zs = needed(spec.intermediates, all_out)
     if len(zs) <= SPLIT:
-        return [(c_model_source(spec), ("-O2",))]
-    rhs = "\n".join(_rhs_lines(spec, printer, "", ""))
+        yield (c_model_source(spec), ("-O2",))
+        return
+    yield ("\n".join(_rhs_lines(spec, printer, "", "")), ("-O2",))
     size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
     # sin(q1) and the like, used all over the parts: computed once, first
     hoist = {spec.time, *spec.states, *spec.params}
     arrays = CPrinter(z_array=True, names=names, hoist=(hoist, size))
     args = "double t, const double *y, const double *p, const double *ud, double *z"
-    bodies = []
-    for k in range(0, len(zs), _CHUNK):
+    count = -(-len(zs) // _CHUNK)  # functions
+    parts = max(1, min(os.cpu_count() or 1, 4, len(zs) // 1000))
+    per = -(-count // parts)  # functions per part
+    bodies: list[str] = []
+    for j, k in enumerate(range(0, len(zs), _CHUNK)):
         lines = [
-            f"void al_z{len(bodies)}({args})",
+            f"void al_z{j}({args})",
             "{",
             "    (void)t; (void)y; (void)p; (void)ud;",
         ]
@@ -873,28 +883,23 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
                 f"    {c_expression(sym, arrays)} = {c_expression(expr, arrays)};"
             )
         bodies.append("\n".join([*lines, "}", ""]))
-    parts = max(1, min(os.cpu_count() or 1, 4, len(zs) // 1000))
-    per = -(-len(bodies) // parts)
-    units = [(rhs, ("-O2",))]
-    for k in range(0, len(bodies), per):
-        units.append(
-            ("#include <math.h>\n\n" + "\n".join(bodies[k : k + per]), OUT_FLAGS)
-        )
+        if len(bodies) % per == 0 or j == count - 1:
+            first = (len(bodies) - 1) // per * per
+            yield ("#include <math.h>\n\n" + "\n".join(bodies[first:]), OUT_FLAGS)
     tail = _out_tail(spec, arrays)
     size += len(arrays.hoisted)
     main = _header(spec)
     main += ["#include <stdlib.h>", "", f"{_MF};"]
-    main += [f"void al_z{j}({args});" for j in range(len(bodies))]
+    main += [f"void al_z{j}({args});" for j in range(count)]
     main += _out_head(spec, "")
     main += [
         f"    double *z = malloc({size} * sizeof(double));",
         "    if (!z) return 2;",
         *(f"    {at} = {text};" for text, at in arrays.hoisted.items()),
-        *(f"    al_z{j}(t, y, p, ud, z);" for j in range(len(bodies))),
+        *(f"    al_z{j}(t, y, p, ud, z);" for j in range(count)),
     ]
     main += [*tail[:-3], "    free(z);", *tail[-3:]]
-    units.append(("\n".join(main), OUT_FLAGS))
-    return units
+    yield ("\n".join(main), OUT_FLAGS)
 
 
 def _intermediates(
@@ -977,19 +982,12 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
     for source, flags in units:
         text += [source, *flags]
     key = hashlib.sha256("\0".join(text).encode()).hexdigest()[:24]
-    suffix = ".dll" if sys.platform == "win32" else ".so"
-    folder = cache_dir()
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError:
-        user = getattr(os, "getuid", lambda: "user")()
-        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
-        folder.mkdir(parents=True, exist_ok=True)
-    lib = folder / f"al2py_{key}{suffix}"
+    folder = _cache_folder()
+    lib = folder / f"al2py_{key}{_SUFFIX}"
     if lib.exists():
         return lib, True
     with tempfile.TemporaryDirectory(dir=folder) as tmp:
-        out = Path(tmp) / f"model{suffix}"
+        out = Path(tmp) / f"model{_SUFFIX}"
         if len(units) == 1:
             src = Path(tmp) / "model.c"
             src.write_text(units[0][0], encoding="utf-8")
@@ -1008,6 +1006,89 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
             _run_compiler([[*cc.split(), "-shared", "-o", str(out), *objs, "-lm"]])
         os.replace(out, lib)  # atomic: concurrent builds of one model are safe
     return lib, False
+
+
+_SUFFIX = ".dll" if sys.platform == "win32" else ".so"
+
+
+def _cache_folder() -> Path:
+    folder = cache_dir()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        user = getattr(os, "getuid", lambda: "user")()
+        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
+        folder.mkdir(parents=True, exist_ok=True)
+    return folder
+
+
+def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool]:
+    """:func:`build_units` (the same library, the same name) for units that
+    are still being printed: each unit is compiled as soon as it comes, while
+    the next one is printed, into an object kept in the cache under the hash
+    of its own source (so that a process that finds the library cached has
+    nothing to compile either)."""
+    units = iter(units)
+    first = next(units)
+    try:
+        second = next(units)
+    except StopIteration:
+        return build_units([first])  # one unit: no objects to keep
+    units = itertools.chain([first, second], units)
+    cc = find_compiler()
+    if cc is None:
+        raise BackendError(_unavailable("c"))
+    folder = _cache_folder()
+    text = [cc, *C_FLAGS, sys.platform, platform.machine()]
+    objs: list[Path] = []
+    started: list[tuple[subprocess.Popen, Path, Path]] = []
+    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+        try:
+            for k, (source, flags) in enumerate(units):
+                text += [source, *flags]
+                cmd = [*cc.split(), *flags, *_UNIT_FLAGS, "-c"]
+                own = [*cmd, sys.platform, platform.machine(), source]
+                key = hashlib.sha256("\0".join(own).encode()).hexdigest()[:24]
+                objs.append(folder / f"al2py_{key}.o")
+                if objs[-1].exists():
+                    continue
+                src, obj = Path(tmp) / f"unit{k}.c", Path(tmp) / f"unit{k}.o"
+                src.write_text(source, encoding="utf-8")
+                with open(Path(tmp) / f"unit{k}.err", "w") as err:
+                    proc = subprocess.Popen(
+                        [*cmd, "-o", str(obj), str(src)],
+                        stdout=subprocess.DEVNULL,
+                        stderr=err,
+                    )
+                started.append((proc, obj, objs[-1]))
+            key = hashlib.sha256("\0".join(text).encode()).hexdigest()[:24]
+            lib = folder / f"al2py_{key}{_SUFFIX}"
+            if lib.exists():
+                return lib, True
+            for k, (proc, obj, kept) in enumerate(started):
+                if proc.wait(timeout=600):
+                    error = (obj.with_suffix(".err")).read_text(errors="replace")
+                    raise BackendError(_compiler_error(error))
+                os.replace(obj, kept)  # atomic, as the library
+                started[k] = (proc, obj, obj)
+            out = Path(tmp) / f"model{_SUFFIX}"
+            link = [*cc.split(), "-shared", "-o", str(out), *map(str, objs), "-lm"]
+            _run_compiler([link])
+            os.replace(out, lib)
+            return lib, False
+        except (OSError, subprocess.TimeoutExpired) as exc:
+            raise BackendError(f"the C compiler failed: {exc}") from None
+        finally:
+            for proc, _obj, _kept in started:
+                if proc.poll() is None:
+                    proc.kill()
+                    proc.wait()
+
+
+def _compiler_error(err: str) -> str:
+    lines = err.strip().splitlines() or ["(no message)"]
+    first = next((ln for ln in lines if "error" in ln), lines[0])
+    return f"the C compiler failed: {first}"
 
 
 def _run_compiler(cmds: list[list[str]]) -> None:
@@ -1031,9 +1112,7 @@ def _run_compiler(cmds: list[list[str]]) -> None:
         raise BackendError(f"the C compiler failed: {exc}") from None
     for proc, err in zip(procs, errors, strict=True):
         if proc.returncode != 0:
-            lines = err.strip().splitlines() or ["(no message)"]
-            first = next((ln for ln in lines if "error" in ln), lines[0])
-            raise BackendError(f"the C compiler failed: {first}")
+            raise BackendError(_compiler_error(err))
 
 
 class _CBound(Bound):
@@ -1158,7 +1237,7 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
     import time
 
     start = time.perf_counter()
-    path, hit = build_units(c_model_units(spec))
+    path, hit = build_stream(c_model_stream(spec))
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:
