@@ -71,6 +71,7 @@ Code Dynamics() whipple_ours.c
 
 CHILD = r"""
 import importlib.util, json, sys, time, contextlib
+from al2py_runtime.jobs.run import run_job
 path, program, overrides = sys.argv[1], sys.argv[2], json.loads(sys.argv[3])
 spec = importlib.util.spec_from_file_location("whipple_model", path)
 module = importlib.util.module_from_spec(spec)
@@ -82,7 +83,7 @@ job = next(j for j in module.al.numerics.jobs
 times = []
 for _ in range(4):
     start = time.perf_counter()
-    result = module.al.run_job(job, overrides)
+    result = run_job(job, overrides)
     times.append(time.perf_counter() - start)
 tables = [t.data.tolist() if hasattr(t.data, "tolist") else list(map(list, t.data))
           for t in result.tables if not getattr(t, "encoded", False)]

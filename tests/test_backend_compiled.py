@@ -328,6 +328,36 @@ def _chain_spec(n: int):
 
 
 @pytest.mark.skipif(not backends.available("c"), reason="no C compiler")
+def test_large_outputs_compile_while_printed(monkeypatch, tmp_path):
+    """build_stream compiles each unit as it is printed, keeps the objects,
+    and names the library as build_units does; with the library cached it
+    starts no compiler."""
+    monkeypatch.setenv("AL2PY_CACHE_DIR", str(tmp_path))
+    monkeypatch.setattr(backends, "SPLIT", 10)
+    monkeypatch.setattr(backends, "_CHUNK", 7)
+    spec = _chain_spec(40)
+    path, hit = backends.build_stream(backends.c_model_stream(spec))
+    assert not hit and path.exists()
+    units = backends.c_model_units(spec)
+    assert len(list(tmp_path.glob("*.o"))) == len(units) >= 3
+    assert backends.build_units(units) == (path, True)
+
+    commands = []
+    real = subprocess.Popen
+
+    def recorded(cmd, **kwargs):
+        commands.append(cmd)
+        return real(cmd, **kwargs)
+
+    monkeypatch.setattr(backends.subprocess, "Popen", recorded)
+    assert backends.build_stream(backends.c_model_stream(spec)) == (path, True)
+    assert commands == []
+    path.unlink()  # the objects are kept: only the link runs
+    assert backends.build_stream(backends.c_model_stream(spec)) == (path, False)
+    assert len(commands) == 1 and "-shared" in commands[0]
+
+
+@pytest.mark.skipif(not backends.available("c"), reason="no C compiler")
 def test_large_outputs_compile_in_parallel_parts(monkeypatch):
     """Above SPLIT intermediates, al_out and its intermediates are compiled
     in several translation units (functions of _CHUNK statements, the
@@ -338,6 +368,11 @@ def test_large_outputs_compile_in_parallel_parts(monkeypatch):
     units = backends.c_model_units(spec)
     assert len(units) >= 3  # the right-hand side, the parts, al_out
     assert units[0][1] == ("-O2",) and units[-1][1] == backends.OUT_FLAGS
+    # a function of the states alone is computed once, in al_out, before the
+    # parts (which read it from z); functions of intermediates stay in place
+    assert units[-1][0].count("sin(y[0])") == 1
+    assert not any("sin(" in text for text, _flags in units[1:-1])
+    assert all("cos(z[" in text for text, _flags in units[1:-1])
     compiled = backends.compile_dynamics(spec, "c")
     reference = backends.compile_dynamics(spec, "lambdify")
     rng = random.Random(5)

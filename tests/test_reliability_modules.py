@@ -243,9 +243,25 @@ Output T, X
 CODE ODE() stiff.c
 """
 
+#: stiff enough that Kutta-Merson needs about 400 sub-steps per integStp
+STIFFISH = STIFF.replace("-1e8", "-1e4")
+
+
+def test_too_stiff_integration_stops_at_once(tmp_path):
+    """As Autolev's programs: the step may be halved 20 times (net)."""
+    mod = module(tmp_path, "stiff", STIFF)
+    run = run_module(mod, timeout=60)
+    assert run.returncode == 2
+    assert "Traceback" not in run.stderr
+    (line,) = run.stderr.splitlines()
+    assert line == (
+        "stiff.al:5: error: CODE Ode stiff.c (line 5): integration failed at"
+        " t = 0: the step was halved too often (ABSERR, RELERR)"
+    )
+
 
 def test_stiff_integration_stops_at_its_budget(tmp_path):
-    mod = module(tmp_path, "stiff", STIFF)
+    mod = module(tmp_path, "stiff", STIFFISH)
     run = run_module(mod, env={"AL2PY_MAX_EVALS": "20000"}, timeout=60)
     assert run.returncode == 2
     assert "Traceback" not in run.stderr
@@ -254,7 +270,12 @@ def test_stiff_integration_stops_at_its_budget(tmp_path):
         "stiff.al:5: error: CODE Ode stiff.c (line 5): stopped at t = "
     )
     assert "after 20000 right-hand-side evaluations" in line
-    timed = run_module(mod, "--max-seconds", "1", timeout=60)
+    assert run_module(mod, timeout=60).returncode == 0  # 128,000 evaluations
+    long = STIFFISH.replace("tFinal = 10", "tFinal = 100000, integStp = 0.1")
+    mod = module(tmp_path, "long", long)
+    timed = run_module(
+        mod, "--max-seconds", "1", env={"AL2PY_MAX_EVALS": "1e12"}, timeout=60
+    )
     assert timed.returncode == 2
     assert "after 1 s (the time budget" in timed.stderr
 

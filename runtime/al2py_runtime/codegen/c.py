@@ -8,6 +8,7 @@ import textwrap
 from typing import Any
 
 from ..jobs import backends
+from ..jobs.kutta import KUTTA_C
 from .program import Assign, Program
 
 __all__ = ["c_source"]
@@ -416,77 +417,7 @@ static void al_close(FILE **files, int code)
 }
 """
 
-_KUTTA_C = r"""
-/* Kutta-Merson (L. Fox, 1962), with the step control of Autolev's programs:
-   one call advances *t by H, in sub-steps that are halved while an error
-   estimate exceeds both ABSERR and RELERR*|y| and doubled (up to H) while
-   it is 64 times smaller.  Returns 0, the eqns code, or 3 (step too small).
-   *hc, the sub-step size, carries over from call to call. */
-static int al_f(double t, const double *y, const double *p, double *dy)
-{
-    double ud[AL_NU > 0 ? AL_NU : 1];
-    int code = eqns(t, y, p, dy, ud);
-    if (code) al_t_error = t;
-    return code;
-}
-
-static int kutta(double *t, double H, double *y, const double *p, double *hc,
-                 int *cuts, double abserr, double relerr)
-{
-    double f0[AL_NY], f1[AL_NY], f2[AL_NY], y1[AL_NY], y2[AL_NY];
-    double tend = *t + H, h, tt;
-    int code;
-    if (*hc * H < 0.0) *hc = -*hc;
-    if (*hc == 0.0) *hc = H;
-    h = *hc;
-    tt = *t + h;
-    while (tt + h != tt) {
-        if ((code = al_f(tt - h, y, p, f0))) return code;
-        for (int i = 0; i < AL_NY; i++) y1[i] = y[i] + h / 3.0 * f0[i];
-        if ((code = al_f(tt - 2.0 * h / 3.0, y1, p, f1))) return code;
-        for (int i = 0; i < AL_NY; i++) y1[i] = y[i] + h / 6.0 * (f0[i] + f1[i]);
-        if ((code = al_f(tt - 2.0 * h / 3.0, y1, p, f1))) return code;
-        for (int i = 0; i < AL_NY; i++) y1[i] = y[i] + h / 8.0 * (f0[i] + 3.0 * f1[i]);
-        if ((code = al_f(tt - h / 2.0, y1, p, f2))) return code;
-        for (int i = 0; i < AL_NY; i++)
-            y1[i] = y[i] + h / 2.0 * (f0[i] - 3.0 * f1[i] + 4.0 * f2[i]);
-        if ((code = al_f(tt, y1, p, f1))) return code;
-        for (int i = 0; i < AL_NY; i++)
-            y2[i] = y[i] + h / 6.0 * (f0[i] + 4.0 * f2[i] + f1[i]);
-        int fail = 0, grow = 1;
-        for (int i = 0; i < AL_NY && !fail; i++) {
-            double err = 0.2 * fabs(y1[i] - y2[i]), rel = relerr * fabs(y1[i]);
-            if (err >= rel && err >= abserr) fail = 1;
-            else if (64.0 * err > rel && 64.0 * err > abserr) grow = 0;
-        }
-        if (fail) {  /* again from tt - h with half the step */
-            tt -= h / 2.0;
-            h = *hc = h / 2.0;
-            if ((*cuts)-- > 0) continue;
-            *t = tt - h;
-            return 3;
-        }
-        memcpy(y, y2, sizeof y2);
-        if (grow && fabs(2.0 * h) <= fabs(H) && (H > 0 ? tt + 2.0 * h <= tend
-                                                       : tt + 2.0 * h >= tend)) {
-            h = *hc = 2.0 * h;
-            (*cuts)++;
-        }
-        if (tt == tend) {
-            *t = tend;
-            return 0;
-        }
-        tt += h;
-        if ((h > 0 && tt > tend - 0.1 * h) || (h < 0 && tt < tend - 0.1 * h)) {
-            h = tend - (tt - h);  /* land on tend */
-            tt = tend;
-        }
-    }
-    *t = tt;
-    return 3;
-}
-
-"""
+_KUTTA_C = "\n" + KUTTA_C  # the C text that run() compiles too
 
 _MAIN_DYNAMICS_C = r"""
 int main(int argc, char **argv)

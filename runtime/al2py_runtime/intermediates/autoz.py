@@ -126,6 +126,19 @@ def trivial(expr: Any) -> bool:
     return False
 
 
+def _instances(expr: Any, cls: type) -> set[Any]:
+    """``expr.atoms(cls)``, walking the tree directly (sympy's generic
+    traversal is most of the cost of ordering a large model's intermediates)."""
+    found: set[Any] = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, cls):
+            found.add(e)
+        stack.extend(e.args)
+    return found
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -575,11 +588,11 @@ class Intermediates:
         if tuple(z.args[1:]) != self._vars[k]:
             found = self._children.get(z)
             if found is None:
-                found = self._children[z] = self.definition(z).atoms(self.Z)
+                found = self._children[z] = _instances(self.definition(z), self.Z)
             return found
         found = self._children.get(k)
         if found is None:
-            found = self._children[k] = self._defs[k].atoms(self.Z)
+            found = self._children[k] = _instances(self._defs[k], self.Z)
         return found
 
     def expand(self, expr: Any) -> Any:

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import ctypes
 import hashlib
+import itertools
 import math
 import os
 import platform
@@ -44,7 +45,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
-from collections.abc import Callable, Iterable, Sequence
+import threading
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -52,8 +54,10 @@ from typing import Any
 import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
+from sympy.printing.precedence import PRECEDENCE_FUNCTIONS, precedence
 
 from ..vocabulary import numeric_namespace
+from .kutta import ADVANCE_C, StepError
 
 __all__ = [
     "BACKENDS",
@@ -114,6 +118,22 @@ class Bound:
 
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         raise NotImplementedError  # pragma: no cover
+
+    def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
+        """Every output (all tables side by side) at each time, the states
+        ``ys[:, i]``; ``clock[0]`` is the time being evaluated."""
+        rows = []
+        for i, tt in enumerate(times):
+            clock[0] = float(tt)
+            rows.append([x for row in self.outputs(clock[0], ys[:, i]) for x in row])
+        return np.array(rows, dtype=float).reshape(len(rows), -1)
+
+    def stepper(
+        self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float
+    ) -> CStepper | None:
+        """Kutta-Merson compiled with the equations, or None (``run()``
+        then steps in Python: :class:`.kutta.KuttaMerson`)."""
+        return None
 
 
 @dataclass
@@ -194,19 +214,31 @@ def compile_dynamics(spec: DynamicsSpec, backend: str | None = None) -> Compiled
     ``lambdify``; ``None`` reads ``$AL2PY_BACKEND``).  An explicit backend
     that cannot be used raises :class:`BackendError`; ``auto`` falls back."""
     name = choose(backend)
-    spec = _canonical(spec)
-    builders = {"c": _build_c, "llvm": _build_llvm, "lambdify": _build_lambdify}
+    canonical: list[DynamicsSpec] = []
+
+    def form(candidate: str) -> DynamicsSpec:
+        if candidate == "c":
+            return spec  # printed with names (_c_form): no substitution
+        if not canonical:
+            canonical.append(_canonical(spec))
+        return canonical[0]
+
+    builders = {
+        "c": lambda: _build_c(form("c")),
+        "llvm": lambda: _build_llvm(form("llvm")),
+        "lambdify": lambda: _build_lambdify(form("lambdify")),
+    }
     if name != "auto":
         if not available(name):
             raise BackendError(_unavailable(name))
-        return builders[name](spec)
+        return builders[name]()
     reasons = []
     for candidate in BACKENDS:
         if not available(candidate):
             reasons.append(_unavailable(candidate))
             continue
         try:
-            compiled = builders[candidate](spec)
+            compiled = builders[candidate]()
         except BackendError as exc:
             reasons.append(str(exc))
             continue
@@ -510,7 +542,12 @@ class CPrinter(C99CodePrinter):
     """C99 with small integer powers as products and Autolev's functions;
     with ``z_array`` the intermediates ``zK`` are the elements ``z[K]``."""
 
-    def __init__(self, z_array: bool = False) -> None:
+    def __init__(
+        self,
+        z_array: bool = False,
+        names: dict[Any, str] | None = None,
+        hoist: tuple[set[Any], int] | None = None,
+    ) -> None:
         super().__init__(
             {
                 "strict": True,
@@ -523,12 +560,39 @@ class CPrinter(C99CodePrinter):
             }
         )
         self._z_array = z_array
+        self._names = names or {}
+        self._hoist = hoist
+        #: with ``hoist = (symbols, base)``: each call of a function of those
+        #: symbols alone, printed, and the element ``z[base + k]`` it is kept in
+        self.hoisted: dict[str, str] = {}
+
+    def hoisted_call(self, expr: Any, text: str) -> str:
+        """``text``, the call ``expr`` printed, or where it is kept."""
+        if self._hoist is None or not expr.free_symbols <= self._hoist[0]:
+            return text
+        found = self.hoisted.get(text)
+        if found is None:
+            found = f"z[{self._hoist[1] + len(self.hoisted)}]"
+            self.hoisted[text] = found
+        return found
 
     def _print_Symbol(self, expr: Any) -> str:
-        name = expr.name
+        name = self._names.get(expr, expr.name)
         if self._z_array and name[:1] == "z" and name[1:].isdigit():
             return f"z[{name[1:]}]"  # an intermediate kept in the array z
+        if expr in self._names:
+            return name
         return super()._print_Symbol(expr)
+
+    _print_Dummy = _print_Symbol
+
+    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
+        # sympy's (StrPrinter) computes the precedence twice, and finds a
+        # symbol's by walking its class's bases: a fifth of printing time
+        prec = _precedence(item)
+        if prec < level or (not strict and prec <= level):
+            return f"({self._print(item)})"
+        return self._print(item)
 
     def _print_Pi(self, expr: Any) -> str:
         return repr(math.pi)
@@ -551,6 +615,42 @@ class CPrinter(C99CodePrinter):
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"(double)(((({x}) > 0) - (({x}) < 0)))"
+
+
+def _hoisting(method: Callable[..., str]) -> Callable[..., str]:
+    def printed(self: CPrinter, expr: Any, **kwargs: Any) -> str:
+        return self.hoisted_call(expr, method(self, expr, **kwargs))
+
+    return printed
+
+
+# Every printing method of a sympy function (sin, cos, ..., and the general
+# one) goes through CPrinter.hoisted_call.
+for _attr in dir(CPrinter):
+    _cls = getattr(sp, _attr[len("_print_") :], None)
+    if (
+        _attr.startswith("_print_")
+        and isinstance(_cls, type)
+        and issubclass(_cls, sp.Function)
+    ):
+        setattr(CPrinter, _attr, _hoisting(getattr(CPrinter, _attr)))
+
+
+_PRECEDENCE: dict[type, int] = {}
+
+
+def _precedence(item: Any) -> int:
+    """sympy's ``precedence``, kept per class where it depends on the class
+    alone (not for numbers, products and the like, whose sign matters)."""
+    cls = type(item)
+    found = _PRECEDENCE.get(cls)
+    if found is None:
+        found = precedence(item)
+        if not hasattr(cls, "precedence") and not any(
+            c.__name__ in PRECEDENCE_FUNCTIONS for c in cls.__mro__
+        ):
+            _PRECEDENCE[cls] = found
+    return found
 
 
 def c_expression(expr: Any, printer: CPrinter) -> str:
@@ -630,8 +730,8 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     that is not finite.  ``int al_out(double t, const double *y,
     const double *p, double *out)`` writes every output, table after table.
     ``api`` prefixes both (``static`` for a standalone program)."""
-    spec = _canonical(spec) if not _is_canonical(spec) else spec
-    printer = CPrinter()
+    spec, names = _c_form(spec)
+    printer = CPrinter(names=names)
     lines = _rhs_lines(spec, printer, api, "static ")
     lines += _out_head(spec, api)
     all_out = [e for row in spec.outputs for e in row]
@@ -699,7 +799,7 @@ def _rhs_lines(
         "        if (!isfinite(dy[i])) return 2;",
         "    return 0;",
         "}",
-        "",
+        ADVANCE_C,
     ]
     return lines
 
@@ -738,7 +838,7 @@ def _out_tail(spec: DynamicsSpec, printer: CPrinter) -> list[str]:
 SPLIT = 400
 #: statements per C function in the parts (compile time grows faster than
 #: the size of a function)
-_CHUNK = 200
+_CHUNK = 50
 #: the outputs are evaluated once per printed row, not per step: compiling
 #: thousands of their statements with -O2 took most of a large model's
 #: first run (the Whipple bicycle's Encode'd Jacobians: 10 s of 12)
@@ -746,23 +846,35 @@ OUT_FLAGS = ("-O1",)
 
 
 def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
+    """See :func:`c_model_stream`, as a list."""
+    return list(c_model_stream(spec))
+
+
+def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     """``spec`` as C translation units with their optimisation flags: the
     right-hand side (``-O2``), and when the outputs need more than
     :data:`SPLIT` intermediates, ``al_out`` and its intermediates in parts
     (kept in one array ``z``, functions of :data:`_CHUNK` statements)."""
-    spec = _canonical(spec) if not _is_canonical(spec) else spec
-    printer = CPrinter()
+    spec, names = _c_form(spec)
+    printer = CPrinter(names=names)
     all_out = [e for row in spec.outputs for e in row]
     zs = needed(spec.intermediates, all_out)
     if len(zs) <= SPLIT:
-        return [(c_model_source(spec), ("-O2",))]
-    rhs = "\n".join(_rhs_lines(spec, printer, "", ""))
-    arrays = CPrinter(z_array=True)
+        yield (c_model_source(spec), ("-O2",))
+        return
+    yield ("\n".join(_rhs_lines(spec, printer, "", "")), ("-O2",))
+    size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
+    # sin(q1) and the like, used all over the parts: computed once, first
+    hoist = {spec.time, *spec.states, *spec.params}
+    arrays = CPrinter(z_array=True, names=names, hoist=(hoist, size))
     args = "double t, const double *y, const double *p, const double *ud, double *z"
-    bodies = []
-    for k in range(0, len(zs), _CHUNK):
+    count = -(-len(zs) // _CHUNK)  # functions
+    parts = max(1, min(os.cpu_count() or 1, 4, len(zs) // 1000))
+    per = -(-count // parts)  # functions per part
+    bodies: list[str] = []
+    for j, k in enumerate(range(0, len(zs), _CHUNK)):
         lines = [
-            f"void al_z{len(bodies)}({args})",
+            f"void al_z{j}({args})",
             "{",
             "    (void)t; (void)y; (void)p; (void)ud;",
         ]
@@ -771,27 +883,23 @@ def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
                 f"    {c_expression(sym, arrays)} = {c_expression(expr, arrays)};"
             )
         bodies.append("\n".join([*lines, "}", ""]))
-    parts = max(1, min(os.cpu_count() or 1, 4, len(zs) // 1000))
-    per = -(-len(bodies) // parts)
-    units = [(rhs, ("-O2",))]
-    for k in range(0, len(bodies), per):
-        units.append(
-            ("#include <math.h>\n\n" + "\n".join(bodies[k : k + per]), OUT_FLAGS)
-        )
-    size = max(int(str(s)[1:]) for s, _e in zs) + 1
+        if len(bodies) % per == 0 or j == count - 1:
+            first = (len(bodies) - 1) // per * per
+            yield ("#include <math.h>\n\n" + "\n".join(bodies[first:]), OUT_FLAGS)
+    tail = _out_tail(spec, arrays)
+    size += len(arrays.hoisted)
     main = _header(spec)
     main += ["#include <stdlib.h>", "", f"{_MF};"]
-    main += [f"void al_z{j}({args});" for j in range(len(bodies))]
+    main += [f"void al_z{j}({args});" for j in range(count)]
     main += _out_head(spec, "")
     main += [
         f"    double *z = malloc({size} * sizeof(double));",
         "    if (!z) return 2;",
-        *(f"    al_z{j}(t, y, p, ud, z);" for j in range(len(bodies))),
+        *(f"    {at} = {text};" for text, at in arrays.hoisted.items()),
+        *(f"    al_z{j}(t, y, p, ud, z);" for j in range(count)),
     ]
-    tail = _out_tail(spec, arrays)
     main += [*tail[:-3], "    free(z);", *tail[-3:]]
-    units.append(("\n".join(main), OUT_FLAGS))
-    return units
+    yield ("\n".join(main), OUT_FLAGS)
 
 
 def _intermediates(
@@ -799,9 +907,30 @@ def _intermediates(
 ) -> list[str]:
     """Declarations of the intermediates that ``exprs`` need, in order."""
     return [
-        f"{indent}const double {s} = {c_expression(e, printer)};"
+        f"{indent}const double {c_expression(s, printer)} = {c_expression(e, printer)};"
         for s, e in needed(spec.intermediates, exprs)
     ]
+
+
+def _c_form(spec: DynamicsSpec) -> tuple[DynamicsSpec, dict[Any, str]]:
+    """``spec`` and the C names of its symbols (``t``, ``y[k]``, ``ud[k]``,
+    ``p[k]``, ``zK``) when they all are symbols (a job's are), so that the
+    printer names them and no expression is rebuilt; else the canonical form
+    (:func:`_canonical`) and no names."""
+    if _is_canonical(spec):
+        return spec, {}
+    groups = (("y", spec.states), ("ud", spec.accels), ("p", spec.params))
+    objs = [spec.time, *(o for _p, g in groups for o in g)]
+    objs += [z for z, _e in spec.intermediates]
+    if not all(isinstance(o, sp.Symbol) for o in objs):
+        return _canonical(spec), {}
+    names: dict[Any, str] = {spec.time: "t"}
+    for prefix, group in groups:
+        names.update((o, f"{prefix}[{k}]") for k, o in enumerate(group))
+    names.update((z, f"z{k}") for k, (z, _e) in enumerate(spec.intermediates))
+    if len(names) != len(objs):  # one symbol in two roles
+        return _canonical(spec), {}
+    return spec, names
 
 
 def _is_canonical(spec: DynamicsSpec) -> bool:
@@ -832,8 +961,8 @@ def cache_dir() -> Path:
     return base / "al2py"
 
 
-C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-shared")
-_UNIT_FLAGS = ("-std=c99", "-fPIC")
+C_FLAGS = ("-O2", "-std=c99", "-fPIC", "-fno-math-errno", "-shared")
+_UNIT_FLAGS = ("-std=c99", "-fPIC", "-fno-math-errno")
 
 
 def build_shared(source: str) -> tuple[Path, bool]:
@@ -853,19 +982,12 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
     for source, flags in units:
         text += [source, *flags]
     key = hashlib.sha256("\0".join(text).encode()).hexdigest()[:24]
-    suffix = ".dll" if sys.platform == "win32" else ".so"
-    folder = cache_dir()
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError:
-        user = getattr(os, "getuid", lambda: "user")()
-        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
-        folder.mkdir(parents=True, exist_ok=True)
-    lib = folder / f"al2py_{key}{suffix}"
+    folder = _cache_folder()
+    lib = folder / f"al2py_{key}{_SUFFIX}"
     if lib.exists():
         return lib, True
     with tempfile.TemporaryDirectory(dir=folder) as tmp:
-        out = Path(tmp) / f"model{suffix}"
+        out = Path(tmp) / f"model{_SUFFIX}"
         if len(units) == 1:
             src = Path(tmp) / "model.c"
             src.write_text(units[0][0], encoding="utf-8")
@@ -884,6 +1006,89 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
             _run_compiler([[*cc.split(), "-shared", "-o", str(out), *objs, "-lm"]])
         os.replace(out, lib)  # atomic: concurrent builds of one model are safe
     return lib, False
+
+
+_SUFFIX = ".dll" if sys.platform == "win32" else ".so"
+
+
+def _cache_folder() -> Path:
+    folder = cache_dir()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        user = getattr(os, "getuid", lambda: "user")()
+        folder = Path(tempfile.gettempdir()) / f"al2py-{user}"
+        folder.mkdir(parents=True, exist_ok=True)
+    return folder
+
+
+def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool]:
+    """:func:`build_units` (the same library, the same name) for units that
+    are still being printed: each unit is compiled as soon as it comes, while
+    the next one is printed, into an object kept in the cache under the hash
+    of its own source (so that a process that finds the library cached has
+    nothing to compile either)."""
+    units = iter(units)
+    first = next(units)
+    try:
+        second = next(units)
+    except StopIteration:
+        return build_units([first])  # one unit: no objects to keep
+    units = itertools.chain([first, second], units)
+    cc = find_compiler()
+    if cc is None:
+        raise BackendError(_unavailable("c"))
+    folder = _cache_folder()
+    text = [cc, *C_FLAGS, sys.platform, platform.machine()]
+    objs: list[Path] = []
+    started: list[tuple[subprocess.Popen, Path, Path]] = []
+    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+        try:
+            for k, (source, flags) in enumerate(units):
+                text += [source, *flags]
+                cmd = [*cc.split(), *flags, *_UNIT_FLAGS, "-c"]
+                own = [*cmd, sys.platform, platform.machine(), source]
+                key = hashlib.sha256("\0".join(own).encode()).hexdigest()[:24]
+                objs.append(folder / f"al2py_{key}.o")
+                if objs[-1].exists():
+                    continue
+                src, obj = Path(tmp) / f"unit{k}.c", Path(tmp) / f"unit{k}.o"
+                src.write_text(source, encoding="utf-8")
+                with open(Path(tmp) / f"unit{k}.err", "w") as err:
+                    proc = subprocess.Popen(
+                        [*cmd, "-o", str(obj), str(src)],
+                        stdout=subprocess.DEVNULL,
+                        stderr=err,
+                    )
+                started.append((proc, obj, objs[-1]))
+            key = hashlib.sha256("\0".join(text).encode()).hexdigest()[:24]
+            lib = folder / f"al2py_{key}{_SUFFIX}"
+            if lib.exists():
+                return lib, True
+            for k, (proc, obj, kept) in enumerate(started):
+                if proc.wait(timeout=600):
+                    error = (obj.with_suffix(".err")).read_text(errors="replace")
+                    raise BackendError(_compiler_error(error))
+                os.replace(obj, kept)  # atomic, as the library
+                started[k] = (proc, obj, obj)
+            out = Path(tmp) / f"model{_SUFFIX}"
+            link = [*cc.split(), "-shared", "-o", str(out), *map(str, objs), "-lm"]
+            _run_compiler([link])
+            os.replace(out, lib)
+            return lib, False
+        except (OSError, subprocess.TimeoutExpired) as exc:
+            raise BackendError(f"the C compiler failed: {exc}") from None
+        finally:
+            for proc, _obj, _kept in started:
+                if proc.poll() is None:
+                    proc.kill()
+                    proc.wait()
+
+
+def _compiler_error(err: str) -> str:
+    lines = err.strip().splitlines() or ["(no message)"]
+    first = next((ln for ln in lines if "error" in ln), lines[0])
+    return f"the C compiler failed: {first}"
 
 
 def _run_compiler(cmds: list[list[str]]) -> None:
@@ -907,9 +1112,7 @@ def _run_compiler(cmds: list[list[str]]) -> None:
         raise BackendError(f"the C compiler failed: {exc}") from None
     for proc, err in zip(procs, errors, strict=True):
         if proc.returncode != 0:
-            lines = err.strip().splitlines() or ["(no message)"]
-            first = next((ln for ln in lines if "error" in ln), lines[0])
-            raise BackendError(f"the C compiler failed: {first}")
+            raise BackendError(_compiler_error(err))
 
 
 class _CBound(Bound):
@@ -949,22 +1152,92 @@ class _CBound(Bound):
 
         self.rhs = rhs
         self._outs = outs
+        self._nout = nout
 
     def outputs(self, t: float, y: Sequence[float]) -> list[list[float]]:
         return self._outs(t, y)
+
+    def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
+        out = np.empty((len(times), max(self._nout, 1)))
+        yt = np.ascontiguousarray(ys.T, dtype=float)
+        c_out, pp = self._lib.al_out, self._pp
+        size, rows = out.itemsize * out.shape[1], yt.itemsize * yt.shape[1]
+        o, y = out.ctypes.data, yt.ctypes.data
+        for i, tt in enumerate(times):
+            clock[0] = t = float(tt)
+            code = c_out(t, y + i * rows, pp, o + i * size)
+            if code:
+                _raise(code, t)
+        return out[:, : self._nout]
+
+    def stepper(
+        self, t0: float, y0: Sequence[float], step: float, abserr: float, relerr: float
+    ) -> CStepper:
+        """Kutta-Merson from ``(t0, y0)`` inside the library."""
+        return CStepper(self._lib, self._p, t0, y0, step, abserr, relerr)
+
+
+#: ``al_advance`` keeps its budget in static variables: one call at a time
+_ADVANCE_LOCK = threading.Lock()
+
+
+class CStepper:
+    """The library's ``al_advance`` (:data:`.kutta.ADVANCE_C`): ``advance``
+    integrates ``y`` from ``t`` to a target time in one compiled call.
+    ``max_evals`` and ``seconds`` (processor time, 0: none) bound the call;
+    ``evals`` counts the evaluations so far."""
+
+    def __init__(self, lib, p, t0, y0, step, abserr, relerr) -> None:
+        self._lib, self._p = lib, p
+        self.y = np.array(y0, dtype=float)
+        self._s = np.array([t0, 0.0, t0, 0.0])  # t, sub-step, failure, seconds
+        self._n = np.array([20, 0, 0], dtype=np.int64)  # cuts, evals, budget
+        self._args = (float(step), float(abserr), float(relerr))
+        self.max_evals = 5_000_000
+        self.seconds = 0.0
+
+    @property
+    def t(self) -> float:
+        return float(self._s[0])
+
+    @property
+    def evals(self) -> int:
+        return int(self._n[1])
+
+    def advance(self, target: float) -> None:
+        self._s[3] = self.seconds
+        self._n[2] = self.max_evals
+        pp = self._p.ctypes.data if self._p.size else None
+        with _ADVANCE_LOCK:
+            code = self._lib.al_advance(
+                float(target),
+                *self._args,
+                pp,
+                self.y.ctypes.data,
+                self._s.ctypes.data,
+                self._n.ctypes.data,
+            )
+        if code == 1:
+            _raise(code, float(self._s[2]))
+        if code:
+            raise StepError(code, float(self._s[2]))
+
+
+#: a compiled evaluation whose value is not finite
+NOT_FINITE = "a value is not finite (division by zero or a math domain error)"
 
 
 def _raise(code: int, t: float) -> None:
     if code == 1:
         raise SingularMatrixError(t)
-    raise ValueError("a value is not finite (division by zero or a math domain error)")
+    raise ValueError(NOT_FINITE)
 
 
 def _build_c(spec: DynamicsSpec) -> Compiled:
     import time
 
     start = time.perf_counter()
-    path, hit = build_units(c_model_units(spec))
+    path, hit = build_stream(c_model_stream(spec))
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:
@@ -978,6 +1251,8 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
             ctypes.c_void_p,
         ]
         fn.restype = ctypes.c_int
+    lib.al_advance.argtypes = [ctypes.c_double] * 4 + [ctypes.c_void_p] * 4
+    lib.al_advance.restype = ctypes.c_int
     ny = len(spec.states)
     nout = sum(map(len, spec.outputs))
     rows = [len(r) for r in spec.outputs]

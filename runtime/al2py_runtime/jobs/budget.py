@@ -27,7 +27,16 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-__all__ = ["LIMITS", "PROGRESS", "limits", "check_span", "guard", "clear_progress"]
+__all__ = [
+    "LIMITS",
+    "PROGRESS",
+    "Meter",
+    "limits",
+    "check_span",
+    "exhausted",
+    "guard",
+    "clear_progress",
+]
 
 #: defaults; the environment variables below override them
 LIMITS: dict[str, float] = {"seconds": 120.0, "evaluations": 5_000_000}
@@ -83,27 +92,67 @@ def guard(
         state["n"] += 1
         n = state["n"]
         if n > max_evals:
-            raise _error(
-                f"{where}: stopped at t = {tt:.6g} of {t1:g} after {max_evals} "
-                "right-hand-side evaluations (the budget; raise it with "
-                "--max-evals or AL2PY_MAX_EVALS).  The equations may be stiff, "
-                "or integStp/absErr/relErr too small"
-            )
+            raise exhausted(where, tt, t1, evaluations=max_evals)
         if n % 256 == 0:
             now = time.monotonic()
             if now - start > max_seconds:
-                raise _error(
-                    f"{where}: stopped at t = {tt:.6g} of {t1:g} after "
-                    f"{max_seconds:g} s (the time budget; raise it with "
-                    "--max-seconds or AL2PY_MAX_SECONDS).  The equations may be "
-                    "stiff, or integStp/absErr/relErr too small"
-                )
+                raise exhausted(where, tt, t1, seconds=max_seconds)
             if PROGRESS and now >= state["shown"]:
                 state["shown"] = now + 0.5
                 _show(tt, t0, t1)
         return fun(tt, y)
 
     return guarded
+
+
+def exhausted(
+    where: str,
+    tt: float,
+    t1: float,
+    evaluations: int | None = None,
+    seconds: float | None = None,
+) -> Exception:
+    """The error for an integration stopped at ``tt`` by its budget."""
+    if evaluations is not None:
+        spent = (
+            f"after {evaluations} right-hand-side evaluations (the budget; raise"
+            " it with --max-evals or AL2PY_MAX_EVALS)"
+        )
+    else:
+        spent = (
+            f"after {seconds:g} s (the time budget; raise it with --max-seconds"
+            " or AL2PY_MAX_SECONDS)"
+        )
+    return _error(
+        f"{where}: stopped at t = {tt:.6g} of {t1:g} {spent}.  The equations may"
+        " be stiff, or integStp/absErr/relErr too small"
+    )
+
+
+class Meter:
+    """The budget of an integration that counts its own evaluations (the
+    compiled integrator): what is left, and the progress line."""
+
+    def __init__(self, where: str, t0: float, t1: float) -> None:
+        budget = limits()
+        self.where, self.t0, self.t1 = where, t0, t1
+        self.max_evals = int(budget["evaluations"])
+        self.max_seconds = budget["seconds"]
+        self.start = time.monotonic()
+        self.shown = self.start + 2.0
+
+    def seconds_left(self) -> float:
+        """Seconds of the time budget left (at least a millisecond)."""
+        return max(self.max_seconds - (time.monotonic() - self.start), 1e-3)
+
+    def tick(self, tt: float) -> None:
+        """After an integration reached ``tt``: the progress line."""
+        now = time.monotonic()
+        if now - self.start > self.max_seconds:
+            raise exhausted(self.where, tt, self.t1, seconds=self.max_seconds)
+        if PROGRESS and now >= self.shown:
+            self.shown = now + 0.5
+            _show(tt, self.t0, self.t1)
 
 
 _shown = [False]

@@ -28,6 +28,7 @@ from sympy.core.function import AppliedUndef
 from ..intermediates import autoz
 from ..model.arrange import linear_terms
 from . import backends, budget
+from .kutta import KuttaMerson, StepError
 from .records import (
     INTEGRATION_DEFAULTS,
     InputValue,
@@ -222,7 +223,7 @@ class _Slots:
             rule[sym] = self.known[sym]
         for obj in (*zs, *derivs, *funcs):
             rule[obj] = self.known[obj]
-        return body.xreplace(rule)
+        return renamed(body, rule)
 
     def _derivative_param(self, obj: Any, what: str) -> None:
         """A derivative with no right-hand side: a parameter when it is the
@@ -246,6 +247,24 @@ class _Slots:
 
     def label(self, obj: Any) -> str:
         return label_of(obj, self.job.names)
+
+
+def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
+    """``expr.xreplace(rule)`` for a rule that only renames (objects to
+    distinct symbols): sums, products and powers are rebuilt as they are,
+    without sympy's evaluation, which is most of the cost of substituting
+    into thousands of intermediates and cannot change anything here."""
+    found = rule.get(expr)
+    if found is not None:
+        return found
+    if not expr.args:
+        return expr
+    args = [renamed(a, rule) for a in expr.args]
+    if all(a is b for a, b in zip(args, expr.args, strict=True)):
+        return expr
+    if isinstance(expr, sp.Add | sp.Mul | sp.Pow):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
 
 
 def label_of(obj: Any, names: Mapping[Any, str]) -> str:
@@ -781,6 +800,7 @@ class OdeSystem:
     compiled: _Dynamics
     params: list[float]
     clock: list[float]
+    bound: backends.Bound
 
 
 def _compiled(
@@ -836,7 +856,7 @@ def ode_system(
         except backends.SingularMatrixError as exc:
             raise _singular(job, c, exc.t) from None
 
-    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock)
+    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock, bound)
 
 
 def _singular(job: Job, c: _Dynamics, at: float) -> NumericsError:
@@ -868,52 +888,28 @@ def ode_function(
 def _run_dynamics(
     job: Job, vals: _Values, keep: set, backend: str | None = None
 ) -> Result:
-    from scipy.integrate import solve_ivp
-
     ip = integration_parameters(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
-    c, y0, fun, clock = system.compiled, system.y0, system.fun, system.clock
+    c, clock = system.compiled, system.clock
     times = output_times(ip["TINITIAL"], ip["TFINAL"], ip["INTEGSTP"] * ip["PRINTINT"])
-    fun = budget.guard(fun, job.where, ip["TINITIAL"], ip["TFINAL"])
     try:
-        nfev = 0
-        if len(times) == 1:
-            ys = np.array(y0, dtype=float).reshape(-1, 1)
-        else:
-            sol = solve_ivp(
-                fun,
-                (times[0], times[-1]),
-                y0,
-                method="DOP853",
-                t_eval=times,
-                rtol=ip["RELERR"],
-                atol=ip["ABSERR"],
-                max_step=ip["INTEGSTP"],
-            )
-            if sol.status != 0:
-                raise NumericsError(
-                    f"{job.where}: integration failed at t = {clock[0]:g}:"
-                    f" {sol.message}"
-                )
-            ys, nfev = sol.y, sol.nfev
-        tables = []
+        ys, nfev = _integrate(job, system, times, ip)
         factors = output_factors(job, vals)
-        rows_all = [[] for _ in job.outputs]
-        for i, tt in enumerate(times):
-            clock[0] = float(tt)
-            for rows, row in zip(
-                rows_all, system.outputs(clock[0], ys[:, i]), strict=True
-            ):
-                rows.append(row)
+        try:
+            values = system.bound.table(times, ys, clock)
+        except backends.SingularMatrixError as exc:
+            raise _singular(job, c, exc.t) from None
     except NumericsError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
         hint = "; check the Input values" if vals.notes else ""
         raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None
-    for number, (cols, rows, fac, spec) in enumerate(
-        zip(_columns(job), rows_all, factors, job.outputs, strict=True), start=1
+    tables, k = [], 0
+    for number, (cols, fac, spec) in enumerate(
+        zip(_columns(job), factors, job.outputs, strict=True), start=1
     ):
-        data = np.array(rows, dtype=float).reshape(len(rows), len(cols)) * fac
+        data = values[:, k : k + len(cols)] * fac
+        k += len(cols)
         tables.append(Table(number, cols, data, spec.line, spec.encoded))
     states = {"T": np.asarray(times, dtype=float)}
     for j, name in enumerate(c.state_names):
@@ -935,6 +931,60 @@ def _result(job: Job, tables: list[Table], vals: _Values, **more: Any) -> Result
         time_unit=job.unit_system.time_unit,
         **more,
     )
+
+
+def _integrate(
+    job: Job, system: OdeSystem, times: np.ndarray, ip: dict[str, float]
+) -> tuple[np.ndarray, int]:
+    """The states at ``times`` (one column each) and the number of
+    right-hand-side evaluations: Kutta-Merson with Autolev's step control
+    (:mod:`.kutta`), compiled with the equations when the backend is ``c``."""
+    t0, t1, clock = float(times[0]), float(times[-1]), system.clock
+    args = (t0, system.y0, ip["INTEGSTP"], ip["ABSERR"], ip["RELERR"])
+    ys = np.empty((len(system.y0), len(times)))
+    ys[:, 0] = system.y0
+    compiled = system.bound.stepper(*args)
+    meter = budget.Meter(job.where, t0, t1)
+    if compiled is not None:
+        compiled.max_evals = meter.max_evals
+        stepper: Any = compiled
+    else:
+        fun = budget.guard(system.fun, job.where, t0, t1)
+        stepper = KuttaMerson(fun, *args)
+        counted = [0]
+
+        def counting(tt: float, y: np.ndarray) -> np.ndarray:
+            counted[0] += 1
+            return fun(tt, y)
+
+        stepper.f = counting
+    try:
+        for i in range(1, len(times)):
+            if compiled is not None:
+                compiled.seconds = meter.seconds_left()
+            stepper.advance(float(times[i]))
+            ys[:, i] = stepper.y
+            clock[0] = float(times[i])
+            meter.tick(clock[0])
+    except backends.SingularMatrixError as exc:
+        raise _singular(job, system.compiled, exc.t) from None
+    except StepError as exc:
+        clock[0] = exc.t
+        if exc.code == 4:
+            raise budget.exhausted(
+                job.where, exc.t, t1, evaluations=meter.max_evals
+            ) from None
+        if exc.code == 5:
+            raise budget.exhausted(
+                job.where, exc.t, t1, seconds=meter.max_seconds
+            ) from None
+        if exc.code == 2:
+            raise ValueError(backends.NOT_FINITE) from None
+        raise NumericsError(
+            f"{job.where}: integration failed at t = {exc.t:g}: the step was"
+            " halved too often (ABSERR, RELERR)"
+        ) from None
+    return ys, compiled.evals if compiled is not None else counted[0]
 
 
 def _unique(items: list[str]) -> list[str]:
