@@ -50,6 +50,9 @@ __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
 _T = dynamicsymbols._t
 _VARIABLE = (AppliedUndef, sp.Derivative)
+#: sympy's zero is one object (``Integer(0) is S.Zero``): comparing by identity
+#: is the same test as ``== 0`` for sympy results, without sympy's ``__eq__``.
+_ZERO = sp.S.Zero
 
 
 class Intermediate(sp.Function):
@@ -150,6 +153,7 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._real: dict[int, bool | None] = {}
+        self._positions: dict[Any, dict[Any, int]] = {}
         self._full: dict[Any, Any] = {}
         self._probes: dict[tuple[int, frozenset], dict] = {}
         self._count = 0
@@ -394,6 +398,18 @@ class Intermediates:
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
         return found
 
+    def position(self, z: Intermediate, x: Any) -> int | None:
+        """The first ``j`` with ``z.args[j + 1] == x`` (``None``: none), by a
+        table per instance rather than by comparing ``x`` with each
+        argument."""
+        table = self._positions.get(z)
+        if table is None:
+            table = {}
+            for j, a in enumerate(z.args[1:]):
+                table.setdefault(a, j)
+            self._positions[z] = table
+        return table.get(x)
+
     @staticmethod
     def is_variable(x: Any) -> bool:
         """True for what :meth:`derivative` differentiates by: a symbol, a
@@ -413,7 +429,9 @@ class Intermediates:
         builds ``Derivative`` objects.  With ``given``, the derivatives of
         the intermediates are looked up there (absent: 0) instead of
         named."""
-        if e == x:
+        # ``e == x`` (x is a variable, so equal only with the same type),
+        # without sympy's ``__eq__`` on every node walked.
+        if e is x or (type(e) is type(x) and e == x):
             return sp.S.One
         if e.is_Atom or isinstance(e, _VARIABLE):
             return sp.S.Zero
@@ -427,13 +445,14 @@ class Intermediates:
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
             elif all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
-                out = e.book.partial(e, args.index(x)) if x in args else sp.S.Zero
+                j = e.book.position(e, x)
+                out = sp.S.Zero if j is None else e.book.partial(e, j)
             else:
                 out = sp.Add(
                     *[
                         e.book.partial(e, j) * d
                         for j, a in enumerate(args)
-                        if (d := self._pd(a, x, memo, given)) != 0
+                        if (d := self._pd(a, x, memo, given)) is not _ZERO
                     ]
                 )
         elif e.is_Add:
@@ -443,18 +462,18 @@ class Intermediates:
             terms = []
             for i, a in enumerate(args):
                 d = self._pd(a, x, memo, given)
-                if d != 0:
+                if d is not _ZERO:
                     terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given)
-            out = sp.S.Zero if d == 0 else e.exp * e.base ** (e.exp - 1) * d
+            out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
             out = sp.Add(
                 *[
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
-                    if (d := self._pd(a, x, memo, given)) != 0
+                    if (d := self._pd(a, x, memo, given)) is not _ZERO
                 ]
             )
         else:  # anything else: sympy, by a plain symbol
