@@ -39,6 +39,7 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 import sympy as sp
+from sympy.core.assumptions import StdFactKB, _assume_defined
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
@@ -113,6 +114,38 @@ class Intermediate(sp.Function):
         return self.book.is_real(self)
 
 
+def _fact_property(fact: str) -> property:
+    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
+    facts when the instance has one (see :meth:`Intermediates.facts`)."""
+    sympys = getattr(Intermediate, "is_" + fact).fget
+
+    def getit(self: Intermediate) -> bool | None:
+        try:
+            return self._assumptions[fact]
+        except KeyError:
+            pass
+        table = self.book.facts(self)
+        if table is None:
+            return sympys(self)
+        self._assumptions = table
+        return table[fact]
+
+    return property(getit)
+
+
+def _is_commutative(self: Intermediate) -> bool | None:
+    # sympy's handler (Function._eval_is_commutative), without the search.
+    if all(a.is_commutative for a in self.args):
+        return True
+    return _sympy_commutative(self)
+
+
+_sympy_commutative = Intermediate.is_commutative.fget
+for _fact in _assume_defined:
+    setattr(Intermediate, "is_" + _fact, _fact_property(_fact))
+Intermediate.is_commutative = property(_is_commutative)
+
+
 def trivial(expr: Any) -> bool:
     """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
     intermediate."""
@@ -153,7 +186,9 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._real: dict[int, bool | None] = {}
+        self._busy: set[int] = set()
         self._positions: dict[Any, dict[Any, int]] = {}
+        self._facts: dict[int, Any] = {}
         self._full: dict[Any, Any] = {}
         self._probes: dict[tuple[int, frozenset], dict] = {}
         self._count = 0
@@ -379,8 +414,44 @@ class Intermediates:
         k = int(z.args[0])
         if k not in self._real:
             self._real[k] = None  # guards recursion
-            self._real[k] = self._defs[k].is_real
+            self._busy.add(k)
+            try:
+                self._real[k] = self._defs[k].is_real
+            finally:
+                self._busy.discard(k)
         return self._real[k]
+
+    def facts(self, z: Intermediate) -> Any:
+        """Every assumption of ``z`` (``None`` where unknown), or ``None`` to
+        ask sympy.
+
+        sympy derives an intermediate's assumptions from its handlers:
+        ``real`` (:meth:`is_real`, by number), ``commutative`` (its
+        arguments) and the sign by ``evalf`` when it is a number.  For an
+        instance whose arguments are commutative and not all numbers, the
+        answers are therefore those deduced from ``commutative`` and
+        ``real``, the same for every instance of the number: found once
+        here, rather than by sympy's search through the related facts on
+        each new instance (it never stores what stays unknown)."""
+        args = z.args[1:]
+        if not all(a.is_commutative for a in args) or all(a.is_number for a in args):
+            return None
+        k = int(z.args[0])
+        table = self._facts.get(k)
+        if table is None:
+            real = self.is_real(z)
+            if k in self._busy:
+                return None
+            known = [("commutative", True)]
+            if real is not None:
+                known.append(("real", real))
+            table = StdFactKB()
+            table.deduce_all_facts(known)
+            for fact in _assume_defined:
+                if fact not in table:
+                    dict.__setitem__(table, fact, None)
+            self._facts[k] = table
+        return table
 
     # -------------------------------------------------------- derivatives
 
