@@ -533,9 +533,10 @@ class Intermediates:
         builds ``Derivative`` objects.  With ``given``, the derivatives of
         the intermediates are looked up there (absent: 0) instead of
         named."""
-        # ``e == x`` (x is a variable, so equal only with the same type),
-        # without sympy's ``__eq__`` on every node walked.
-        if e is x or (type(e) is type(x) and e == x):
+        # ``e == x`` (x is a variable, so equal only with an equal type:
+        # functions of time made twice are equal classes, not one), without
+        # sympy's ``__eq__`` on every node walked.
+        if e is x or (type(e) == type(x) and e == x):  # noqa: E721
             return sp.S.One
         if e.is_Atom or isinstance(e, _VARIABLE):
             return sp.S.Zero
