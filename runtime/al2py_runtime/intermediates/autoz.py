@@ -39,6 +39,7 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 import sympy as sp
+from sympy.core.assumptions import StdFactKB, _assume_defined
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
@@ -50,6 +51,9 @@ __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
 
 _T = dynamicsymbols._t
 _VARIABLE = (AppliedUndef, sp.Derivative)
+#: sympy's zero is one object (``Integer(0) is S.Zero``): comparing by identity
+#: is the same test as ``== 0`` for sympy results, without sympy's ``__eq__``.
+_ZERO = sp.S.Zero
 
 
 class Intermediate(sp.Function):
@@ -110,6 +114,38 @@ class Intermediate(sp.Function):
         return self.book.is_real(self)
 
 
+def _fact_property(fact: str) -> property:
+    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
+    facts when the instance has one (see :meth:`Intermediates.facts`)."""
+    sympys = getattr(Intermediate, "is_" + fact).fget
+
+    def getit(self: Intermediate) -> bool | None:
+        try:
+            return self._assumptions[fact]
+        except KeyError:
+            pass
+        table = self.book.facts(self)
+        if table is None:
+            return sympys(self)
+        self._assumptions = table
+        return table[fact]
+
+    return property(getit)
+
+
+def _is_commutative(self: Intermediate) -> bool | None:
+    # sympy's handler (Function._eval_is_commutative), without the search.
+    if all(a.is_commutative for a in self.args):
+        return True
+    return _sympy_commutative(self)
+
+
+_sympy_commutative = Intermediate.is_commutative.fget
+for _fact in _assume_defined:
+    setattr(Intermediate, "is_" + _fact, _fact_property(_fact))
+Intermediate.is_commutative = property(_is_commutative)
+
+
 def trivial(expr: Any) -> bool:
     """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
     intermediate."""
@@ -139,6 +175,39 @@ def _instances(expr: Any, cls: type) -> set[Any]:
     return found
 
 
+def minus_first(expr: Any) -> bool:
+    """``expr.could_extract_minus_sign()``, found faster for a sum.
+
+    sympy counts the terms with a minus sign; on a tie it compares the sort
+    keys of ``expr`` and ``-expr`` in full, term by term in the order of
+    ``as_ordered_terms``.  When no two terms share a monomial (and no term
+    is a number, which ``as_ordered_terms`` places by a rule of its own),
+    ``-expr``'s terms come in the same order, each the negation of
+    ``expr``'s, so the comparison is decided at the first term whose key
+    differs from its negation's: only those keys are computed here."""
+    if not expr.is_Add:
+        return expr.could_extract_minus_sign()
+    args = expr.args
+    negative = sum(1 for a in args if a.could_extract_minus_sign())
+    if 2 * negative != len(args):
+        return 2 * negative > len(args)
+    if any(a.is_Number or a.is_NumberSymbol for a in args):
+        return expr.could_extract_minus_sign()
+    terms, _ = expr.as_terms()
+    seen = set()
+    for term, (_, monom, ncpart) in terms:
+        key = (monom, tuple(ncpart))
+        if term.is_Order or key in seen:
+            return expr.could_extract_minus_sign()
+        seen.add(key)
+    key, reverse = expr._parse_order(None)
+    for term, _ in sorted(terms, key=key, reverse=reverse):
+        mine, theirs = sp.default_sort_key(term), sp.default_sort_key(-term)
+        if mine != theirs:
+            return bool(mine < theirs)
+    return False
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -163,6 +232,9 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._real: dict[int, bool | None] = {}
+        self._busy: set[int] = set()
+        self._positions: dict[Any, dict[Any, int]] = {}
+        self._facts: dict[int, Any] = {}
         self._full: dict[Any, Any] = {}
         self._probes: dict[tuple[int, frozenset], dict] = {}
         self._count = 0
@@ -215,7 +287,7 @@ class Intermediates:
             original, expr = expr, small
         else:
             original = None
-        if expr.could_extract_minus_sign():
+        if minus_first(expr):
             return -self.name(-expr)
         variables = tuple(sorted(variables, key=self._sort_key))
         k = len(self._defs)
@@ -388,8 +460,44 @@ class Intermediates:
         k = int(z.args[0])
         if k not in self._real:
             self._real[k] = None  # guards recursion
-            self._real[k] = self._defs[k].is_real
+            self._busy.add(k)
+            try:
+                self._real[k] = self._defs[k].is_real
+            finally:
+                self._busy.discard(k)
         return self._real[k]
+
+    def facts(self, z: Intermediate) -> Any:
+        """Every assumption of ``z`` (``None`` where unknown), or ``None`` to
+        ask sympy.
+
+        sympy derives an intermediate's assumptions from its handlers:
+        ``real`` (:meth:`is_real`, by number), ``commutative`` (its
+        arguments) and the sign by ``evalf`` when it is a number.  For an
+        instance whose arguments are commutative and not all numbers, the
+        answers are therefore those deduced from ``commutative`` and
+        ``real``, the same for every instance of the number: found once
+        here, rather than by sympy's search through the related facts on
+        each new instance (it never stores what stays unknown)."""
+        args = z.args[1:]
+        if not all(a.is_commutative for a in args) or all(a.is_number for a in args):
+            return None
+        k = int(z.args[0])
+        table = self._facts.get(k)
+        if table is None:
+            real = self.is_real(z)
+            if k in self._busy:
+                return None
+            known = [("commutative", True)]
+            if real is not None:
+                known.append(("real", real))
+            table = StdFactKB()
+            table.deduce_all_facts(known)
+            for fact in _assume_defined:
+                if fact not in table:
+                    dict.__setitem__(table, fact, None)
+            self._facts[k] = table
+        return table
 
     # -------------------------------------------------------- derivatives
 
@@ -406,6 +514,18 @@ class Intermediates:
         if args != self._vars[k]:
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
         return found
+
+    def position(self, z: Intermediate, x: Any) -> int | None:
+        """The first ``j`` with ``z.args[j + 1] == x`` (``None``: none), by a
+        table per instance rather than by comparing ``x`` with each
+        argument."""
+        table = self._positions.get(z)
+        if table is None:
+            table = {}
+            for j, a in enumerate(z.args[1:]):
+                table.setdefault(a, j)
+            self._positions[z] = table
+        return table.get(x)
 
     @staticmethod
     def is_variable(x: Any) -> bool:
@@ -426,7 +546,10 @@ class Intermediates:
         builds ``Derivative`` objects.  With ``given``, the derivatives of
         the intermediates are looked up there (absent: 0) instead of
         named."""
-        if e == x:
+        # ``e == x`` (x is a variable, so equal only with an equal type:
+        # functions of time made twice are equal classes, not one), without
+        # sympy's ``__eq__`` on every node walked.
+        if e is x or (type(e) == type(x) and e == x):  # noqa: E721
             return sp.S.One
         if e.is_Atom or isinstance(e, _VARIABLE):
             return sp.S.Zero
@@ -440,13 +563,14 @@ class Intermediates:
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
             elif all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
-                out = e.book.partial(e, args.index(x)) if x in args else sp.S.Zero
+                j = e.book.position(e, x)
+                out = sp.S.Zero if j is None else e.book.partial(e, j)
             else:
                 out = sp.Add(
                     *[
                         e.book.partial(e, j) * d
                         for j, a in enumerate(args)
-                        if (d := self._pd(a, x, memo, given)) != 0
+                        if (d := self._pd(a, x, memo, given)) is not _ZERO
                     ]
                 )
         elif e.is_Add:
@@ -456,18 +580,18 @@ class Intermediates:
             terms = []
             for i, a in enumerate(args):
                 d = self._pd(a, x, memo, given)
-                if d != 0:
+                if d is not _ZERO:
                     terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given)
-            out = sp.S.Zero if d == 0 else e.exp * e.base ** (e.exp - 1) * d
+            out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
             out = sp.Add(
                 *[
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
-                    if (d := self._pd(a, x, memo, given)) != 0
+                    if (d := self._pd(a, x, memo, given)) is not _ZERO
                 ]
             )
         else:  # anything else: sympy, by a plain symbol
