@@ -55,6 +55,10 @@ FOREIGN = {
     "_getframe": "sys._getframe: the generated module's line",
     "_current_frames": "sys._current_frames: the statement a long import derives",
     "_exit": "os._exit",
+    "_assume_defined": "sympy.core.assumptions: the names of sympy's facts"
+    " (intermediates answer them from one table, autoz.py)",
+    "_parse_order": "sympy Expr: the term order of as_ordered_terms"
+    " (autoz.minus_first decides a sum's sign as could_extract_minus_sign)",
 }
 
 
