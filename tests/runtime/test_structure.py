@@ -208,8 +208,14 @@ def private_access(tree: ast.AST) -> list[tuple[int, str]]:
                 (node.lineno, f"from {node.module} import {a.name}")
                 for a in node.names
                 if _private(a.name)
+                and not (a.name in FOREIGN and _foreign_module(node))
             ]
     return found
+
+
+def _foreign_module(node: ast.ImportFrom) -> bool:
+    """An absolute import from another library (not the runtime)."""
+    return not node.level and not (node.module or "").startswith(PACKAGE)
 
 
 def test_the_checker_finds_private_access():
