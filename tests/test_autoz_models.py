@@ -11,6 +11,7 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -56,6 +57,19 @@ def disc(tmp_path_factory):
     return _module(tmp, False, "disc_off"), _module(tmp, True, "disc_on"), tmp
 
 
+def _transcript(folder: Path, name: str, outdir: Path) -> Any:
+    """``python NAME.py --outdir OUTDIR`` in ``folder``: it must succeed."""
+    done = subprocess.run(
+        [sys.executable, f"{name}.py", "--outdir", str(outdir)],
+        cwd=folder,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr
+    return done
+
+
 def test_both_settings_derive_with_intermediates(disc, tmp_path):
     """Issue 21: ``AutoZ`` changes what is shown, not how equations are
     formed.  Both derive over intermediates; with it OFF, ``AUTOLEV[...]``
@@ -64,14 +78,7 @@ def test_both_settings_derive_with_intermediates(disc, tmp_path):
     assert has_intermediates(on.al.value("ZERO"))
     assert has_intermediates(off.al.value("ZERO"))
     assert not has_intermediates(off.AUTOLEV["ZERO"])
-    done = subprocess.run(
-        [sys.executable, "disc_off.py", "--outdir", str(tmp_path)],
-        cwd=tmp,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert done.returncode == 0, done.stderr
+    done = _transcript(tmp, "disc_off", tmp_path)
     shown = [line for line in done.stdout.splitlines() if line.startswith("->")]
     assert shown and not any(re.search(r"\bZ\d+\b", line) for line in shown)
 
@@ -99,14 +106,7 @@ def test_transcript_names_intermediates(disc, tmp_path):
     response that uses it; the program runs end to end from the command
     line."""
     _off, _on, tmp = disc
-    done = subprocess.run(
-        [sys.executable, "disc_on.py", "--outdir", str(tmp_path)],
-        cwd=tmp,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert done.returncode == 0, done.stderr
+    done = _transcript(tmp, "disc_on", tmp_path)
     lines = done.stdout.splitlines()
     z1 = re.compile(r"\bZ1\b")
     defined = [i for i, line in enumerate(lines) if re.search(r"\) Z1 = ", line)]
