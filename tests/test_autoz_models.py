@@ -366,6 +366,10 @@ GRAV = Coef(Zero, G)
 INER = Coef(Zero, M)
 REST = Exclude(Zero, G)
 CHECK = Evaluate(Zero, Q1=0, Q2=0, U1=0, U2=0, U1'=0, U2'=0)
+VB = Dot(V_Bo_N>, N1>)
+WB = 2*VB
+EXW = Explicit(WB)
+EVW = Evaluate(WB, L=1)
 """
 
 
@@ -384,7 +388,9 @@ def test_form_reading_commands_see_written_out_values(tmp_path):
     grav, iner = mod.AUTOLEV["GRAV"], mod.AUTOLEV["INER"]
     rest = mod.AUTOLEV["REST"]
     # the commands' results themselves hold no intermediate
-    for name in ("GRAV", "INER", "REST", "CHECK"):
+    # (EXW and EVW reach VB's intermediates through the name VB)
+    assert has_intermediates(mod.al.value("VB"))
+    for name in ("GRAV", "INER", "REST", "CHECK", "EXW", "EVW"):
         assert not has_intermediates(mod.al.value(name)), name
     assert grav != sp.zeros(2, 1)
     # ZERO is linear in G and in M: the coefficients rebuild it

@@ -252,7 +252,7 @@ class Workspace(Mapping):
         (``Explicit(y, x)`` gives the same result: substituting everything makes
         ``y`` an explicit function of ``x``.)
         """
-        return self.resolve(self.form(y))
+        return self.form(self.resolve(self.val(y)))
 
     def resolve(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
         """Substitute right-hand sides until none is left.
@@ -510,11 +510,6 @@ class Workspace(Mapping):
         return self.book
 
     @property
-    def derive_book(self) -> Any:
-        """The book the mechanics derive with, whatever ``AutoZ`` says."""
-        return self.book
-
-    @property
     def book(self) -> Any:
         """The book of ``Z`` intermediates, made on first use whatever
         ``AutoZ`` says: with ``AutoZ OFF`` the large linear solves
@@ -721,12 +716,15 @@ class Workspace(Mapping):
     def evaluate(self, y: Any, subs: Mapping[Any, Any] | None = None) -> Any:
         """``Evaluate(y, a=x, b=2)``: substitute, seeing through other names."""
         subs = {sp.sympify(k): sp.sympify(v) for k, v in (subs or {}).items()}
-        y = self.resolve(self.form(y), keep=subs)
+        # form() after resolve: other names' values may hold intermediates
+        y = self.form(self.resolve(self.val(y), keep=subs))
         y = doit_derivatives(_xreplace(y, subs))
-        if self.settings.degrees:
+        book = self.book_if_made()
+        if self.settings.degrees and self.settings.autoz and book is not None:
             # numbers reach trig arguments inside intermediates' definitions
-            book = self.book_if_made()
-            y = y if book is None else book.expand(y)
+            # (with AutoZ OFF form() has written them out already)
+            y = book.expand(y)
+        if self.settings.degrees:
             y = (
                 y.applyfunc(degrees_pass)
                 if isinstance(y, sp.MatrixBase)
@@ -740,7 +738,7 @@ class Workspace(Mapping):
 
         pts = [(p[0], p[1], p[2] if len(p) > 2 else None) for p in points]
         orders = tuple(order) if isinstance(order, tuple | list) else (0, int(order))
-        y = self.resolve(self.form(y), keep=[p[0] for p in pts])
+        y = self.form(self.resolve(self.val(y), keep=[p[0] for p in pts]))
         return algebra.taylor(y, orders, pts)
 
     def solve(

@@ -675,7 +675,7 @@ class Intermediates:
         stack: list[tuple[Any, bool]] = []
         found: set[Any] = set()
         for e in exprs:
-            found |= sp.sympify(e).atoms(self.Z)
+            found |= _instances(sp.sympify(e), self.Z)
         # Sets iterate in hash order, which varies between processes: visit
         # in the order of the names, so every run writes the same sequence.
         for z in self._by_name(found, reverse=True):

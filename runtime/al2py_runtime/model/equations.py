@@ -106,22 +106,10 @@ class KaneEquations:
         rows: list[list[Any]] = [[] for _ in speeds]
         moved = [False] * len(speeds)  # some velocity depends on the speed
 
-        book = self.ws.derive_book
+        # Both AutoZ settings derive over intermediates (issue 21).
+        book = self.ws.book
 
         def add(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
-            if book is not None:
-                return add_named(vec, v, frame)
-            rest, coefs = kin.split_linear_vector(vec, accels)
-            for k, (r, part) in enumerate(
-                zip(rows, self.partial_velocities(v, speeds), strict=True)
-            ):
-                if part == Vector(0):
-                    continue
-                moved[k] = True
-                r.append(rest.dot(part))
-                r.extend(c.dot(part) * a for a, c in coefs.items())
-
-        def add_named(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
             measures = [book.name_linear(e, accels) for e in vec.to_matrix(frame)]
             split = [linear_terms(e, accels) for e in measures]
             if any(s is None for s in split):  # pragma: no cover - linear in u'

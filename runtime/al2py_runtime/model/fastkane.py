@@ -46,6 +46,7 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
+from ..intermediates.autoz import minus_first
 from ..intermediates.elimination import eliminate
 
 __all__ = ["FastKane"]
@@ -239,7 +240,7 @@ class FastKane:
         expr = sp.sympify(expr)
         if _trivial(expr):
             return expr
-        if expr.could_extract_minus_sign():
+        if minus_first(expr):
             return -self._name(-expr)
         found = self._named.get(expr)
         if found is not None:
@@ -721,7 +722,7 @@ class FastKane:
     def _dt_named(self, e: Any) -> Any:
         if e in self._defs:
             return self._dz_of(e)
-        if e.could_extract_minus_sign() and -e in self._defs:
+        if minus_first(e) and -e in self._defs:
             return -self._dz_of(-e)
         return self._name(self._dt(e))
 

@@ -174,25 +174,6 @@ def _trig(expr: sp.Expr) -> sp.Expr:
         return expr
 
 
-def split_linear_vector(v: Vector, xs: Iterable[Any]) -> tuple[Vector, dict]:
-    """``v = rest + sum(coef_x * x)`` for a vector linear in ``xs`` (which may be
-    derivatives): returns ``(rest, {x: coef_x})`` for the ``xs`` present."""
-    xs = [x for x in xs if any(m.has(x) for m, _f in v.args)]
-    if not xs:
-        return v, {}
-    plain = [sp.Dummy() for _ in xs]
-    swap = dict(zip(xs, plain, strict=True))
-    back = dict(zip(plain, xs, strict=True))
-    zero = dict.fromkeys(plain, 0)
-    w = vmap(v, lambda e: sp.sympify(e).xreplace(swap))
-    rest = vmap(w, lambda e: e.xreplace(zero).xreplace(back))
-    coefs = {
-        x: vmap(w, lambda e, d=d: e.diff(d).xreplace(back))
-        for x, d in zip(xs, plain, strict=True)
-    }
-    return rest, coefs
-
-
 def tidy_vector(v: Any) -> Any:
     return vmap(v, tidy)
 

@@ -105,14 +105,12 @@ class Kinematics:
         else:
             out = sp.diff(v, t)
         out = self.actual_value(out, keep)
-        book = self.ws.derive_book
-        if book is not None:
-            # AutoZ: name the coefficients of the speeds and their derivatives
-            # (and the rest), so later derivatives stay short.
-            speeds = self.generalized_speeds()
-            xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
-            out = kin.vmap(out, lambda e: book.name_linear(e, xs))
-        return out
+        # Name the coefficients of the speeds and their derivatives (and the
+        # rest), so later derivatives stay short (either AutoZ setting).
+        book = self.ws.book
+        speeds = self.generalized_speeds()
+        xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
+        return kin.vmap(out, lambda e: book.name_linear(e, xs))
 
     # --------------------------------------------------------- velocities
 
@@ -215,12 +213,12 @@ class Kinematics:
         self._name_dcms(b)
 
     def _name_dcms(self, b: ReferenceFrame) -> None:
-        """AutoZ: give ``b`` direction cosines to every frame connected to it,
+        """Give ``b`` direction cosines to every frame connected to it,
         each entry named (the product along the tree of short matrices), in
         sympy's own cache, so that dot products, ``express`` and time
         derivatives work with short expressions."""
-        book = self.ws.derive_book
-        if book is None or len(b._dcm_dict) != 1:
+        book = self.ws.book
+        if len(b._dcm_dict) != 1:
             return
         (a,) = b._dcm_dict
         step = a._dcm_dict[b]  # a.dcm(b)
