@@ -13,9 +13,7 @@ import random
 
 import pytest
 import sympy as sp
-from al2py_runtime import vocabulary, workspace
-from al2py_runtime.intermediates import autoz
-from al2py_runtime.vocabulary import builtins, forms, kinds
+from al2py_runtime import vocabulary
 from conftest import load_module
 
 from al2py import convert, naming
@@ -123,13 +121,8 @@ def test_forms_spell_what_they_match():
         assert found.parts == tuple(names)
 
 
-@pytest.mark.parametrize(
-    "module",
-    [vocabulary, builtins, forms, kinds, autoz, workspace, naming],
-    ids=lambda m: m.__name__,
-)
-def test_doctests(module):
-    """The runnable examples of the vocabulary and of the modules reading it
-    (functions and printing run theirs in tests/runtime)."""
-    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
+def test_naming_doctests():
+    """The transpiler's naming examples (the runtime modules' examples,
+    vocabulary included, run in tests/runtime/test_doctests.py)."""
+    result = doctest.testmod(naming, optionflags=doctest.ELLIPSIS)
     assert result.failed == 0 and result.attempted > 0

@@ -29,6 +29,7 @@ PUBLIC = [
     "al2py_runtime.functions",
     "al2py_runtime.algebra",
     "al2py_runtime.matrices",
+    "al2py_runtime.intermediates.autoz",
 ]
 
 

@@ -130,9 +130,9 @@ def equations(program: Program) -> list[str]:
     printer = _Printer()
     n, ny, np_, nout = program.nu, max(program.ny, 1), program.np, program.nout
     e = program.eqns
-    lines = _comment("The derivatives dy of the states y at time T with the")
-    lines += _comment("constants p and the accelerations ud (M ud = f).")
-    lines += _comment("ierr: 0, 1 when M is singular, 2 when not finite.")
+    doc = textwrap.wrap(" ".join(program.eqns_doc), _W - 8)
+    lines = [c for text in doc for c in _comment(text)]
+    lines += _comment("ierr is the code.")
     lines += [
         "      subroutine eqns(T, y, p, dy, ud, ierr)",
         "      implicit none",

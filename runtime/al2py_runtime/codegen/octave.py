@@ -63,9 +63,8 @@ def equations(program: Program, name: str) -> list[str]:
     n, ny, nout = program.nu, program.ny, program.nout
     lines = [
         f"function [dy, ud, ierr] = {name}(T, y, p)",
-        "  % The derivatives dy of the states y at time T with the constants p,",
-        "  % and the accelerations ud solved from M ud = f.",
-        "  % ierr: 0, 1 when M is singular, 2 when a derivative is not finite.",
+        *("  % " + text for text in program.eqns_doc),
+        "  % ierr is the code.",
         "  ierr = 0;",
         f"  dy = zeros({ny}, 1);",
         f"  ud = zeros({max(n, 1)}, 1);",

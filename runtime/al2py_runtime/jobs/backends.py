@@ -1188,7 +1188,8 @@ class CStepper:
     ``evals`` counts the evaluations so far."""
 
     def __init__(self, lib, p, t0, y0, step, abserr, relerr) -> None:
-        self._lib, self._p = lib, p
+        self._lib, self._p = lib, p  # the array stays alive for its address
+        self._pp = p.ctypes.data if p.size else None
         self.y = np.array(y0, dtype=float)
         self._s = np.array([t0, 0.0, t0, 0.0])  # t, sub-step, failure, seconds
         self._n = np.array([20, 0, 0], dtype=np.int64)  # cuts, evals, budget
@@ -1207,12 +1208,11 @@ class CStepper:
     def advance(self, target: float) -> None:
         self._s[3] = self.seconds
         self._n[2] = self.max_evals
-        pp = self._p.ctypes.data if self._p.size else None
         with _ADVANCE_LOCK:
             code = self._lib.al_advance(
                 float(target),
                 *self._args,
-                pp,
+                self._pp,
                 self.y.ctypes.data,
                 self._s.ctypes.data,
                 self._n.ctypes.data,
