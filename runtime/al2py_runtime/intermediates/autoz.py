@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import random
 import sys
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 import sympy as sp
@@ -602,6 +602,69 @@ class Intermediates:
                 out = e.xreplace(funcs).diff(x).xreplace(back)
             else:
                 out = e.xreplace({x: s}).diff(s).xreplace({s: x})
+        memo[e] = out
+        return out
+
+    def time_derivative(self, e: Any, rate: Callable[[Any], Any], memo: dict) -> Any:
+        """``de/dt`` by the chain rule, where ``rate(x)`` is the derivative of
+        the variable ``x`` (a function of time or a derivative).
+
+        One walk of each definition: an intermediate's derivative is named
+        once per ``memo`` (which belongs to one ``rate``), rather than formed
+        from its partial derivative by each of its variables.
+
+        >>> import sympy as sp
+        >>> from sympy.physics.mechanics import dynamicsymbols
+        >>> q, u = dynamicsymbols("q u")
+        >>> book = Intermediates()
+        >>> z = book.name(sp.sin(q) * sp.cos(q) + q**3)
+        >>> d = book.time_derivative(z, lambda x: u if x == q else sp.Derivative(x, _T), {})
+        >>> sp.simplify(book.expand(d) - sp.diff(sp.sin(q) * sp.cos(q) + q**3, q) * u)
+        0
+        """
+        if e.is_Atom:
+            return sp.S.One if e == _T else sp.S.Zero
+        if isinstance(e, _VARIABLE):
+            return rate(e)
+        found = memo.get(e)
+        if found is not None:
+            return found
+        if isinstance(e, Intermediate):
+            d = self.time_derivative(e.book.definition(e), rate, memo)
+            out = self.name(d)
+        elif e.is_Add:
+            out = sp.Add(*[self.time_derivative(a, rate, memo) for a in e.args])
+        elif e.is_Mul:
+            args = e.args
+            terms = []
+            for i, a in enumerate(args):
+                d = self.time_derivative(a, rate, memo)
+                if d is not _ZERO:
+                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
+            out = sp.Add(*terms)
+        elif e.is_Pow and not e.exp.has(_T):
+            d = self.time_derivative(e.base, rate, memo)
+            out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
+        elif isinstance(e, sp.sin):
+            out = sp.cos(e.args[0]) * self.time_derivative(e.args[0], rate, memo)
+        elif isinstance(e, sp.cos):
+            out = -sp.sin(e.args[0]) * self.time_derivative(e.args[0], rate, memo)
+        elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
+            out = sp.Add(
+                *[
+                    e.fdiff(i + 1) * d
+                    for i, a in enumerate(e.args)
+                    if (d := self.time_derivative(a, rate, memo)) is not _ZERO
+                ]
+            )
+        else:  # anything else: sympy's derivative, then the rates
+            d = e.diff(_T)
+            rates = {
+                x: rate(x.expr)
+                for x in d.atoms(sp.Derivative)
+                if x.derivative_count == 1 and isinstance(x.expr, AppliedUndef)
+            }
+            out = d.xreplace(rates)
         memo[e] = out
         return out
 

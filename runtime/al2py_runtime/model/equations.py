@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
 import sympy as sp
 from sympy.physics.vector import (
     ReferenceFrame,
@@ -16,6 +17,7 @@ from sympy.physics.vector import (
 from ..intermediates.elimination import SMALL
 from . import kinematics as kin
 from .arrange import arrange, linear_terms, solve_speeds
+from .fastkane import Motion, active_rows, inertia_rows
 from .state import command, t
 
 __all__ = ["KaneEquations"]
@@ -51,10 +53,6 @@ class KaneEquations:
             for j, u in enumerate(speeds)
         ]
 
-    @staticmethod
-    def _zdot(a: list, b: list, book: Any) -> Any:
-        return book.name(sp.Add(*[x * y for x, y in zip(a, b, strict=True)]))
-
     @command
     def fr(self) -> sp.Matrix:
         """``Fr()``: generalized active forces (one row per independent or
@@ -76,7 +74,7 @@ class KaneEquations:
                 keep = self.ws.specified_inputs([])
                 mf = [book.name(e) for e in self.actual_value(f, keep).to_matrix(frame)]
                 parts = self._zpartials(v, speeds, frame, book)
-                dots = [self._zdot(mf, part, book) for part in parts]
+                dots = active_rows([(parts, mf)], len(speeds), book.name)
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
         return sp.Matrix(rows)
 
@@ -85,6 +83,141 @@ class KaneEquations:
         w = self.actual_value(self.ang_vel(b, n))
         alf = self.actual_value(self.ang_acc(b, n))
         return -((inertia & alf) + (w ^ (inertia & w)))
+
+    # Accelerations from the velocities' linear forms (issue 21/22): with
+    # v = sum c_j u_j + r (c_j, r named, measure numbers in one frame),
+    # a = sum c_j u_j' + sum c_j' u_j + r', where each derivative is of a
+    # short named quantity.  The result has short measure numbers, so Fr*
+    # never splits a large acceleration.
+
+    def _linear_form(self, vec: Vector, frame: ReferenceFrame, book: Any) -> Any:
+        """``vec`` (a velocity or angular velocity, the auxiliary speeds
+        kept) as ``(coefficients, rest)``: for each generalized speed its
+        three named measure numbers in ``frame``, and the rest; None when it
+        is not linear in the speeds."""
+        speeds = self.generalized_speeds()
+        v = self.actual_value(vec, self.auxiliary_kept())
+        columns: list[list[Any]] = [[sp.S.Zero] * 3 for _ in speeds]
+        rest: list[Any] = [sp.S.Zero] * 3
+        if v == Vector(0):
+            return columns, rest
+        for i, e in enumerate(v.to_matrix(frame)):
+            split = linear_terms(book.name_linear(e, speeds), speeds)
+            if split is None:
+                return None
+            for col, c in zip(columns, split[0], strict=True):
+                col[i] = c
+            rest[i] = split[1]
+        return columns, rest
+
+    def _rate(
+        self, form: Any, frame: ReferenceFrame, book: Any, rates: tuple
+    ) -> Vector:
+        """The derivative in ``frame`` of a vector given by its linear form
+        (:meth:`_linear_form`)."""
+        rate, memo = rates
+        columns, rest = form
+        speeds = self.generalized_speeds()
+        out = []
+        for i in range(3):
+            terms = [book.time_derivative(rest[i], rate, memo)]
+            for col, u in zip(columns, speeds, strict=True):
+                c = col[i]
+                if c != 0:
+                    terms.append(c * sp.Derivative(u, t))
+                    terms.append(book.time_derivative(c, rate, memo) * u)
+            out.append(sp.Add(*terms))
+        return kin.frame_vector(frame, out)
+
+    def _acceleration(
+        self, p: Any, n: ReferenceFrame, form: Any, book: Any, rates: tuple
+    ) -> Vector:
+        """``A_P_N>`` for Fr*: from ``V_P_N>``'s linear form when that is
+        the script's acceleration (checked at two random points), else the
+        script's."""
+        st = self.registry
+        if form is None:
+            return self.acc(p, n)
+        fast = self._rate(form, n, book, rates)
+        given = (p, n) in st.acc or (p, n) in st.deferred_acc
+        if given and not self._same_vector(self.acc(p, n), fast, n, book):
+            return self.acc(p, n)
+        return fast
+
+    def _angular_acceleration(
+        self, b: ReferenceFrame, n: ReferenceFrame, form: Any, book: Any, rates: tuple
+    ) -> Vector:
+        """``ALF_B_N>`` for Fr*, as :meth:`_acceleration`."""
+        st = self.registry
+        if form is None:
+            return self.ang_acc(b, n)
+        fast = self._rate(form, b, book, rates)
+        given = (b, n) in st.angacc or bool(st.angacc_given.get(b))
+        if given and not self._same_vector(self.ang_acc(b, n), fast, b, book):
+            return self.ang_acc(b, n)
+        return fast
+
+    def _time_rates(self, book: Any) -> tuple[Any, dict]:
+        """The derivative of each variable (``Q'`` by its kinematical
+        equation, the auxiliary speeds' kept), and the memo of
+        ``book.time_derivative`` for these rates: made once per ``FrStar()``."""
+        keep = self.auxiliary_kept()
+        speeds = self.generalized_speeds()
+        xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
+        cache: dict = {}
+
+        def rate(x: Any) -> Any:
+            found = cache.get(x)
+            if found is None:
+                d = sp.Derivative(x, t)
+                if isinstance(x, sp.Derivative):
+                    d = sp.Derivative(x.expr, (t, x.derivative_count + 1))
+                found = book.name_linear(self.actual_value(d, keep), xs)
+                cache[x] = found
+            return found
+
+        return rate, {}
+
+    def _same_vector(
+        self, a: Vector, b: Vector, frame: ReferenceFrame, book: Any
+    ) -> bool:
+        """Whether two vectors are equal at two random points (the speeds'
+        derivatives random too), evaluated numerically term by term rather
+        than by expressing either in ``frame``."""
+        speeds = self.generalized_speeds()
+        rates = {
+            sp.Derivative(u, t): sp.Symbol(f"_rate{k}") for k, u in enumerate(speeds)
+        }
+        dcms: dict = {}
+
+        def values(x: Any) -> Any:
+            # every derivative left (a Specified quantity's) gets a random
+            # value of its own: the probe gives 0 for what it cannot evaluate
+            x = sp.sympify(x).xreplace(rates)
+            rest = {d: sp.Symbol(f"_rate_{d}") for d in x.atoms(sp.Derivative)}
+            return x.xreplace(rest) if rest else x
+
+        def measures(v: Vector, point: int) -> Any:
+            out = np.zeros(3, dtype=complex)
+            for comps, f in self.actual_value(v).args:
+                if (f, point) not in dcms:
+                    m = frame.dcm(f)
+                    dcms[(f, point)] = np.array(
+                        [
+                            [book.probe(m[i, j], point) for j in range(3)]
+                            for i in range(3)
+                        ]
+                    )
+                c = np.array([book.probe(values(x), point) for x in comps])
+                out += dcms[(f, point)] @ c
+            return out
+
+        for point in (1, 2):
+            x, y = measures(a, point), measures(b, point)
+            scale = max(1.0, float(np.max(np.abs(x))), float(np.max(np.abs(y))))
+            if not np.all(np.isfinite(x)) or np.max(np.abs(x - y)) > 1e-9 * scale:
+                return False
+        return True
 
     @command
     def tstar(self, b: ReferenceFrame, n: ReferenceFrame | None = None) -> Vector:
@@ -103,44 +236,75 @@ class KaneEquations:
         st = self.registry
         speeds = self.fix_fr_speeds("FrStar()")
         accels = [sp.Derivative(u, t) for u in self.generalized_speeds()]
-        rows: list[list[Any]] = [[] for _ in speeds]
-        moved = [False] * len(speeds)  # some velocity depends on the speed
 
         # Both AutoZ settings derive over intermediates (issue 21).
         book = self.ws.book
+        rates = self._time_rates(book)
 
-        def add(vec: Vector, v: Vector, frame: ReferenceFrame) -> None:
-            measures = [book.name_linear(e, accels) for e in vec.to_matrix(frame)]
+        index = {u: k for k, u in enumerate(self.generalized_speeds())}
+
+        def motion(v: Vector, form: Any, acc: Vector, frame: ReferenceFrame) -> Motion:
+            measures = [book.name_linear(e, accels) for e in acc.to_matrix(frame)]
             split = [linear_terms(e, accels) for e in measures]
             if any(s is None for s in split):  # pragma: no cover - linear in u'
                 raise ValueError("FrStar(): an acceleration is not linear in U'")
-            parts = self._zpartials(v, speeds, frame, book)
-            for k, (r, part) in enumerate(zip(rows, parts, strict=True)):
-                if all(x == 0 for x in part):
-                    continue
-                moved[k] = True
-                r.append(self._zdot([s[1] for s in split], part, book))
-                for j, a in enumerate(accels):
-                    c = self._zdot([s[0][j] for s in split], part, book)
-                    if c != 0:
-                        r.append(c * a)
+            columns = [[s[0][j] for s in split] for j in range(len(accels))]
+            if form is None:
+                parts = self._zpartials(v, speeds, frame, book)
+            else:
+                parts = [form[0][index[u]] for u in speeds]
+            return Motion(
+                partials=[p if any(x != 0 for x in p) else None for p in parts],
+                rates=[c if any(x != 0 for x in c) else None for c in columns],
+                rest=[s[1] for s in split],
+            )
 
+        translations, rotations = [], []
         for o in st.massive:
             m = self.body_mass(o, strict=False)
             p = self.mass_center(o)
             if m != 0:
-                a = self.actual_value(self.acc(p, n))
+                try:
+                    v = self.vel(p, n)
+                except ValueError:  # at rest, with A_P_N> = 0 (tutor9's Ao)
+                    v, form = None, None
+                else:
+                    form = self._linear_form(v, n, book)
+                a = self.actual_value(self._acceleration(p, n, form, book, rates))
                 if a != Vector(0):
-                    add(-m * a, self.vel(p, n), n)
+                    v = self.vel(p, n) if v is None else v
+                    translations.append((m, motion(v, form, a, n)))
             if (
                 isinstance(o, ReferenceFrame)
                 and self.body_record(o).inertia is not None
             ):
-                tq = self._inertia_torque(o, n)
-                add(tq, self.ang_vel(o, n), o)
+                w = self.ang_vel(o, n)
+                form = self._linear_form(w, o, book)
+                alf = self._angular_acceleration(o, n, form, book, rates)
+                alf = self.actual_value(alf)
+                inertia = self.central_inertia(o).to_matrix(o)
+                imat = [[book.name(inertia[i, j]) for j in range(3)] for i in range(3)]
+                omega = [book.name(e) for e in self.actual_value(w).to_matrix(o)]
+                rotations.append((imat, omega, motion(w, form, alf, o)))
+        moved = [
+            any(mo.partials[k] is not None for _, mo in translations)
+            or any(mo.partials[k] is not None for _, _, mo in rotations)
+            for k in range(len(speeds))
+        ]
         if st.massive and not all(moved):
             raise ValueError(self._unmoved(speeds, moved))
-        return sp.Matrix([sp.Add(*r) for r in rows])
+        mm, non = inertia_rows(
+            translations, rotations, len(speeds), len(accels), book.name
+        )
+        return sp.Matrix(
+            [
+                sp.Add(
+                    -book.name(rest),
+                    *[-book.name(c) * a for c, a in zip(row, accels, strict=True)],
+                )
+                for row, rest in zip(mm, non, strict=True)
+            ]
+        )
 
     def _unmoved(self, speeds: list, moved: list) -> str:
         """The error for speeds that no velocity of a massive object depends

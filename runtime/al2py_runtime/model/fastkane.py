@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import random
 from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -49,7 +50,7 @@ from sympy.printing.numpy import NumPyPrinter
 from ..intermediates.autoz import minus_first
 from ..intermediates.elimination import eliminate
 
-__all__ = ["FastKane"]
+__all__ = ["FastKane", "Motion", "active_rows", "inertia_rows"]
 
 _T = dynamicsymbols._t
 
@@ -74,6 +75,116 @@ def _matmul(a: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
             *[a[i, k] * b[k, j] for k in range(a.cols) if a[i, k] != 0 and b[k, j] != 0]
         ),
     )
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A velocity (or an angular velocity) and its time derivative, as
+    measure numbers in one frame: the shape in which Kane's equations are
+    formed (:func:`inertia_rows`, :func:`active_rows`).
+
+    ``partials[r]``: the partial velocity for row ``r`` (three entries, or
+    ``None`` for zero); ``rates[s]``: the coefficient of speed ``s``'s
+    derivative in the time derivative (``None``: zero); ``rest``: the rest
+    of the time derivative.
+
+    >>> m = Motion(partials=[[1, 0, 0]], rates=[[1, 0, 0]], rest=[0, 0, 0])
+    >>> m.partials[0]
+    [1, 0, 0]
+    """
+
+    partials: Sequence[Sequence[Any] | None]
+    rates: Sequence[Sequence[Any] | None] = ()
+    rest: Sequence[Any] = (0, 0, 0)
+
+
+def dot3(a: Sequence[Any], b: Sequence[Any]) -> Any:
+    """The dot product of two measure-number triples (zeros skipped)."""
+    return sp.Add(*[x * y for x, y in zip(a, b, strict=True) if x != 0 and y != 0])
+
+
+def cross3(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
+    """The cross product of two measure-number triples."""
+    return [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+
+
+def inertia_rows(
+    translations: Iterable[tuple[Any, Motion]],
+    rotations: Iterable[tuple[Sequence[Sequence[Any]], Sequence[Any], Motion]],
+    rows: int,
+    columns: int,
+    name: Any,
+) -> tuple[list[list[Any]], list[Any]]:
+    """Kane's generalized inertia forces, the one place they are formed (a
+    script's ``FrStar()`` and :class:`FastKane` both call it):
+    ``Fr*[r] = -(sum_s M[r][s] u_s' + N[r])``; returns ``(M, N)``.
+
+    ``translations``: ``(mass, motion of the mass center)``, measure numbers
+    in the inertial frame; ``rotations``: ``(central inertia matrix, angular
+    velocity, motion)`` with measure numbers in the body's frame (there the
+    rate of the angular velocity is the angular acceleration).  Each dot
+    product is named by ``name``.
+
+    >>> M, N = inertia_rows([(2, Motion([[1, 0, 0]], [[1, 0, 0]], [0, 3, 0]))],
+    ...                     [], 1, 1, lambda e: e)
+    >>> M, N
+    ([[2]], [0])
+    """
+    mm: list[list[Any]] = [[sp.S.Zero] * columns for _ in range(rows)]
+    non: list[Any] = [sp.S.Zero] * rows
+    for mass, mo in translations:
+        for r, vr in enumerate(mo.partials):
+            if vr is None:
+                continue
+            for s, a in enumerate(mo.rates):
+                if a is not None:
+                    mm[r][s] += mass * name(dot3(vr, a))
+            non[r] += mass * name(dot3(vr, mo.rest))
+    for imat, omega, mo in rotations:
+        i_omega = [name(dot3(imat[i], omega)) for i in range(3)]
+        torque = [
+            name(dot3(imat[i], mo.rest) + c)
+            for i, c in enumerate(cross3(omega, i_omega))
+        ]
+        iw = [
+            None if a is None else [name(dot3(imat[i], a)) for i in range(3)]
+            for a in mo.rates
+        ]
+        for r, wr in enumerate(mo.partials):
+            if wr is None:
+                continue
+            for s, a in enumerate(iw):
+                if a is not None:
+                    mm[r][s] += name(dot3(wr, a))
+            non[r] += name(dot3(wr, torque))
+    return mm, non
+
+
+def active_rows(
+    loads: Iterable[tuple[Sequence[Sequence[Any] | None], Sequence[Any]]],
+    rows: int,
+    name: Any,
+) -> list[Any]:
+    """Kane's generalized active forces, ``Fr[r] = sum V_r . F``: each load
+    is ``(partials, force)``, the partial velocities (or partial angular
+    velocities) of where it acts, per row, and the force (or torque), all as
+    measure numbers in one frame.
+
+    >>> import sympy as sp
+    >>> m, g = sp.symbols("m g")
+    >>> active_rows([([[0, 1, 0], None], [0, -m * g, 0])], 2, lambda e: e)
+    [-g*m, 0]
+    """
+    fr: list[Any] = [sp.S.Zero] * rows
+    for partials, force in loads:
+        for r, vr in enumerate(partials):
+            if vr is not None:
+                fr[r] += name(dot3(vr, force))
+    return fr
 
 
 class FastKane:
@@ -583,14 +694,10 @@ class FastKane:
         keys = self._us
         aux = self._uas
 
-        def dot(a: list[Any], b: list[Any]) -> Any:
-            return sum(
-                (x * y for x, y in zip(a, b, strict=True) if x != 0 and y != 0),
-                sp.S.Zero,
-            )
+        rows = keys + aux
 
         # Fr, including auxiliary rows.
-        fr = [sp.S.Zero] * (o + len(aux))
+        loads_in = []
         for load in self._loads:
             where, what = load[0], load[1]
             if isinstance(where, Point):
@@ -603,13 +710,11 @@ class FastKane:
                 raise TypeError(
                     f"a load acts on a Point or a ReferenceFrame, not {where!r}"
                 )
-            for r, u in enumerate(keys + aux):
-                if u in form:
-                    fr[r] += dot(form[u], force)
+            loads_in.append(([form.get(u) for u in rows], force))
+        fr = active_rows(loads_in, len(rows), self._name)
 
         # Fr*: mass matrix (all speeds' derivatives) and the rest.
-        mm = [[sp.S.Zero] * o for _ in range(o + len(aux))]
-        non = [sp.S.Zero] * (o + len(aux))
+        translations, rotations = [], []
         for body in self._bodies:
             if isinstance(body, RigidBody):
                 point, frame = body.masscenter, body.frame
@@ -621,16 +726,12 @@ class FastKane:
             if mass.has(_T):
                 raise NotImplementedError("masses that vary in time")
             v = self._lin_vec(point.vel(n_frame), n_frame)
-            acc = self._remainder(v, n_frame)
-            for r, ur in enumerate(keys + aux):
-                vr = v.get(ur)
-                if vr is None:
-                    continue
-                for s, us in enumerate(keys):
-                    vs = v.get(us)
-                    if vs is not None:
-                        mm[r][s] += mass * dot(vr, vs)
-                non[r] += mass * dot(vr, acc)
+            motion = Motion(
+                partials=[v.get(u) for u in rows],
+                rates=[v.get(u) for u in keys],
+                rest=self._remainder(v, n_frame),
+            )
+            translations.append((mass, motion))
             if frame is None:
                 continue
             inertia = body.central_inertia
@@ -638,7 +739,6 @@ class FastKane:
                 raise NotImplementedError("inertia dyadics that vary in time")
             imat = self._inertia_matrix(inertia, frame)
             w = self._lin_vec(frame.ang_vel_in(n_frame), frame)
-            alpha = self._remainder(w, frame)
             omega = [
                 self._name(e)
                 for e in self._vec_sum(
@@ -646,23 +746,13 @@ class FastKane:
                     + ([(w[None], 1)] if None in w else [])
                 )
             ]
-            i_omega = [self._name(dot(imat[i], omega)) for i in range(3)]
-            torque = [
-                self._name(dot(imat[i], alpha) + c)
-                for i, c in enumerate(self._cross(omega, i_omega))
-            ]
-            iw = {
-                u: [self._name(dot(imat[i], row)) for i in range(3)]
-                for u, row in w.items()
-            }
-            for r, ur in enumerate(keys + aux):
-                wr = w.get(ur)
-                if wr is None:
-                    continue
-                for s, us in enumerate(keys):
-                    if us in iw:
-                        mm[r][s] += dot(wr, iw[us])
-                non[r] += dot(wr, torque)
+            motion = Motion(
+                partials=[w.get(u) for u in rows],
+                rates=[w.get(u) for u in keys],
+                rest=self._remainder(w, frame),
+            )
+            rotations.append((imat, omega, motion))
+        mm, non = inertia_rows(translations, rotations, len(rows), o, self._name)
 
         mm_mat = sp.Matrix(mm[:o]) if o else sp.zeros(0, 0)
         non_mat = sp.Matrix(non[:o]) if o else sp.zeros(0, 1)
@@ -691,14 +781,6 @@ class FastKane:
 
     def _vec_sum(self, terms: list[tuple[list[Any], Any]]) -> list[Any]:
         return [sum((row[i] * c for row, c in terms), sp.S.Zero) for i in range(3)]
-
-    @staticmethod
-    def _cross(a: list[Any], b: list[Any]) -> list[Any]:
-        return [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
 
     def _remainder(
         self, form: dict[Any, list[Any]], frame: ReferenceFrame
