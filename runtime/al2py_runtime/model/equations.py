@@ -183,37 +183,26 @@ class KaneEquations:
     ) -> bool:
         """Whether two vectors are equal at two random points (the speeds'
         derivatives random too), evaluated numerically term by term rather
-        than by expressing either in ``frame``."""
-        speeds = self.generalized_speeds()
-        rates = {
-            sp.Derivative(u, t): sp.Symbol(f"_rate{k}") for k, u in enumerate(speeds)
-        }
-        dcms: dict = {}
-
-        def values(x: Any) -> Any:
-            # every derivative left (a Specified quantity's) gets a random
-            # value of its own: the probe gives 0 for what it cannot evaluate
-            x = sp.sympify(x).xreplace(rates)
-            rest = {d: sp.Symbol(f"_rate_{d}") for d in x.atoms(sp.Derivative)}
-            return x.xreplace(rest) if rest else x
-
-        def measures(v: Vector, point: int) -> Any:
-            out = np.zeros(3, dtype=complex)
-            for comps, f in self.actual_value(v).args:
-                if (f, point) not in dcms:
-                    m = frame.dcm(f)
-                    dcms[(f, point)] = np.array(
-                        [
-                            [book.probe(m[i, j], point) for j in range(3)]
-                            for i in range(3)
-                        ]
-                    )
-                c = np.array([book.probe(values(x), point) for x in comps])
-                out += dcms[(f, point)] @ c
-            return out
-
+        than by expressing either in ``frame``; False where a value cannot be
+        formed."""
+        parts = [self.actual_value(a).args, self.actual_value(b).args]
+        scalars: list[Any] = []
+        for args in parts:
+            for comps, f in args:
+                scalars += [*frame.dcm(f), *comps]
         for point in (1, 2):
-            x, y = measures(a, point), measures(b, point)
+            try:
+                values = iter(book.values_at(scalars, point))
+            except (ValueError, TypeError, ZeroDivisionError, OverflowError):
+                return False
+            sums = []
+            for args in parts:
+                out = np.zeros(3, dtype=complex)
+                for _ in args:
+                    dcm = np.array([next(values) for _ in range(9)]).reshape(3, 3)
+                    out += dcm @ np.array([next(values) for _ in range(3)])
+                sums.append(out)
+            x, y = sums
             scale = max(1.0, float(np.max(np.abs(x))), float(np.max(np.abs(y))))
             if not np.all(np.isfinite(x)) or np.max(np.abs(x - y)) > 1e-9 * scale:
                 return False
