@@ -34,6 +34,54 @@ class KaneEquations:
     # AutoZ: vectors as three named measure numbers in one frame, so that
     # partial velocities are read off and every dot product is short.
 
+    @staticmethod
+    def _measure_split(
+        vec: Vector, frame: ReferenceFrame, xs: list, book: Any
+    ) -> list[tuple[list[Any], Any]] | None:
+        """``vec``'s measure numbers in ``frame`` as ``sum c_j x_j + rest``,
+        each ``c_j`` and ``rest`` named: ``(coefficients, rest)`` per measure
+        number, or None when one is not linear in ``xs``.
+
+        Each component is split in its own frame, then rotated with the
+        direction cosines, so no large expression (a vector expressed in
+        another frame) is formed and split."""
+        out = [([sp.S.Zero] * len(xs), sp.S.Zero) for _ in range(3)]
+        terms: list[tuple[list[list[Any]], list[Any]]] = [
+            ([[] for _ in xs], []) for _ in range(3)
+        ]
+        for comps, f in vec.args:
+            m = frame.dcm(f)
+            for k in range(3):
+                if comps[k] == 0:
+                    continue
+                split = linear_terms(book.name_linear(comps[k], xs), xs)
+                if split is None:
+                    return None
+                for i in range(3):
+                    c = m[i, k]
+                    if c == 0:
+                        continue
+                    c = book.name(c)
+                    coefs, rest = terms[i]
+                    for j, x in enumerate(split[0]):
+                        if x != 0:
+                            coefs[j].append(c * x)
+                    if split[1] != 0:
+                        rest.append(c * split[1])
+        for i, (coefs, rest) in enumerate(terms):
+            out[i] = (
+                [book.name(sp.Add(*c)) for c in coefs],
+                book.name(sp.Add(*rest)),
+            )
+        return out
+
+    def _named_measures(self, vec: Vector, frame: ReferenceFrame, book: Any) -> list:
+        """``vec``'s three measure numbers in ``frame``, named (formed
+        component by component, as :meth:`_measure_split`)."""
+        split = self._measure_split(vec, frame, [], book)
+        assert split is not None  # nothing to be linear in
+        return [rest for _, rest in split]
+
     def _zpartials(
         self, v: Vector, speeds: list, frame: ReferenceFrame, book: Any
     ) -> list[list[Any]]:
@@ -43,15 +91,11 @@ class KaneEquations:
         v = self.actual_value(v, keep)
         if v == Vector(0):
             return [[sp.S.Zero] * 3 for _ in speeds]
+        split = self._measure_split(v, frame, speeds, book)
+        if split is not None:
+            return [[s[0][j] for s in split] for j in range(len(speeds))]
         measures = [book.name_linear(e, speeds) for e in v.to_matrix(frame)]
-        split = [linear_terms(e, speeds) for e in measures]
-        return [
-            [
-                s[0][j] if s is not None else book.name(sp.diff(e, u))
-                for s, e in zip(split, measures, strict=True)
-            ]
-            for j, u in enumerate(speeds)
-        ]
+        return [[book.name(sp.diff(e, u)) for e in measures] for u in speeds]
 
     @command
     def fr(self) -> sp.Matrix:
@@ -72,7 +116,7 @@ class KaneEquations:
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
                 keep = self.ws.specified_inputs([])
-                mf = [book.name(e) for e in self.actual_value(f, keep).to_matrix(frame)]
+                mf = self._named_measures(self.actual_value(f, keep), frame, book)
                 parts = self._zpartials(v, speeds, frame, book)
                 dots = active_rows([(parts, mf)], len(speeds), book.name)
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
@@ -101,13 +145,13 @@ class KaneEquations:
         rest: list[Any] = [sp.S.Zero] * 3
         if v == Vector(0):
             return columns, rest
-        for i, e in enumerate(v.to_matrix(frame)):
-            split = linear_terms(book.name_linear(e, speeds), speeds)
-            if split is None:
-                return None
-            for col, c in zip(columns, split[0], strict=True):
+        split = self._measure_split(v, frame, speeds, book)
+        if split is None:
+            return None
+        for i, (coefs, r) in enumerate(split):
+            for col, c in zip(columns, coefs, strict=True):
                 col[i] = c
-            rest[i] = split[1]
+            rest[i] = r
         return columns, rest
 
     def _rate(
@@ -233,9 +277,8 @@ class KaneEquations:
         index = {u: k for k, u in enumerate(self.generalized_speeds())}
 
         def motion(v: Vector, form: Any, acc: Vector, frame: ReferenceFrame) -> Motion:
-            measures = [book.name_linear(e, accels) for e in acc.to_matrix(frame)]
-            split = [linear_terms(e, accels) for e in measures]
-            if any(s is None for s in split):  # pragma: no cover - linear in u'
+            split = self._measure_split(acc, frame, accels, book)
+            if split is None:  # pragma: no cover - linear in u'
                 raise ValueError("FrStar(): an acceleration is not linear in U'")
             columns = [[s[0][j] for s in split] for j in range(len(accels))]
             if form is None:
@@ -273,7 +316,7 @@ class KaneEquations:
                 alf = self.actual_value(alf)
                 inertia = self.central_inertia(o).to_matrix(o)
                 imat = [[book.name(inertia[i, j]) for j in range(3)] for i in range(3)]
-                omega = [book.name(e) for e in self.actual_value(w).to_matrix(o)]
+                omega = self._named_measures(self.actual_value(w), o, book)
                 rotations.append((imat, omega, motion(w, form, alf, o)))
         moved = [
             any(mo.partials[k] is not None for _, mo in translations)
