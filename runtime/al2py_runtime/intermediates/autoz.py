@@ -463,10 +463,44 @@ class Intermediates:
             self._real[k] = None  # guards recursion
             self._busy.add(k)
             try:
-                self._real[k] = self._defs[k].is_real
+                body = self._defs[k]
+                self._real[k] = True if self._visibly_real(body) else body.is_real
             finally:
                 self._busy.discard(k)
         return self._real[k]
+
+    def _visibly_real(self, e: Any) -> bool:
+        """True when ``e`` is real by its shape: real numbers, symbols and
+        functions of time, real intermediates, and sums, products, rational
+        powers, sines, cosines and tangents of such.  (A quotient, a square
+        root or a tangent is real where it is defined in the reals, which is
+        where Autolev evaluated it: its quantities are real, and its
+        programs take ``sqrt`` of a negative number as an error.)  False
+        means "ask sympy", whose search through the related facts is most of
+        the cost of an intermediate's assumptions."""
+        stack, seen = [e], set()
+        while stack:
+            x = stack.pop()
+            if x in seen:
+                continue
+            seen.add(x)
+            if isinstance(x, Intermediate):
+                if x.book.is_real(x) is not True:
+                    return False
+            elif x.is_Add or x.is_Mul:
+                stack.extend(x.args)
+            elif x.is_Pow:
+                if not x.exp.is_Rational:
+                    return False
+                stack.append(x.base)
+            elif isinstance(x, sp.sin | sp.cos | sp.tan):
+                stack.append(x.args[0])
+            elif x.is_Number or x.is_Symbol or isinstance(x, AppliedUndef):
+                if x.is_real is not True:
+                    return False
+            else:
+                return False
+        return True
 
     def facts(self, z: Intermediate) -> Any:
         """Every assumption of ``z`` (``None`` where unknown), or ``None`` to
