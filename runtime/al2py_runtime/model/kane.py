@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
-from sympy.physics.mechanics import KanesMethod
+from sympy.physics.mechanics import KanesMethod, RigidBody
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
 from . import kinematics as kin
@@ -96,6 +96,7 @@ class _DerivedKanesMethod(KanesMethod):
         if loads is None:
             loads = self.loads
         loads = list(loads or [])
+        _constant_masses(bodies)
         fk = _engine(self._derive_from)
         aux = bool(self._derive_from.u_auxiliary)
         if aux:
@@ -103,7 +104,7 @@ class _DerivedKanesMethod(KanesMethod):
             # (velocities and intermediates are shared with the next call).
             fk.kanes_equations([], loads)
             fr_aux = fk.auxiliary_eqs
-        fr, frstar = _derive(fk, bodies, loads)
+        fr, frstar = fk.kanes_equations(bodies, loads)
         p = fr.rows
         mass, forcing, fr, frstar = _written_out(
             fk, [fk.mass_matrix, fk.forcing, fr, frstar]
@@ -143,15 +144,21 @@ def _written_out(fk: FastKane, parts: list[Any]) -> list[Any]:
     return out
 
 
-def _derive(fk: FastKane, bodies: list, loads: list) -> tuple[Any, Any]:
-    """FastKane's ``(Fr, Fr*)``, or an error naming what it cannot take."""
-    try:
-        return fk.kanes_equations(bodies, loads)
-    except NotImplementedError as exc:
-        raise ValueError(
-            f"kanes_method(): {exc} are not supported (the exported model"
-            " would not be the script's)"
-        ) from None
+def _constant_masses(bodies: list) -> None:
+    """FastKane takes constant masses and inertias: name a body whose mass
+    or inertia varies in time (the runtime's FrStar, as Autolev's, is
+    ``-m a``; sympy's derivation would add ``-m' v``, another model)."""
+    for body in bodies:
+        what = [("mass", body.mass)]
+        if isinstance(body, RigidBody):
+            what.append(("inertia", body.central_inertia.to_matrix(body.frame)))
+        for kind, value in what:
+            if sp.sympify(value).has(t):
+                raise ValueError(
+                    f"kanes_method(): the {kind} of {body.name} varies in time"
+                    f" ({value}); the exported model takes constant masses and"
+                    " inertias"
+                )
 
 
 def kanes_method(inputs: KaneInputs) -> KanesMethod:
