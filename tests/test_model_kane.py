@@ -248,3 +248,42 @@ def test_module_holds_sympy_bodies_and_kd_eqs(tutorial, name):
     assert set(mod.al.kd_eqs) <= kd
     km = mod.kanes_method()
     assert {id(b) for b in km.bodies} == {id(b) for b, _m in bodies.values()}
+
+
+VARYING = """\
+Newtonian N
+{declare}
+Variables Q', U1'
+Variables MV
+Constants G
+{mass}
+Q' = U1
+Simprot(N, B, 3, Q)
+P_No_BO> = Q*N1>
+V_BO_N> = U1*N1>
+W_B_N> = U1*N3>
+Force_BO> = -G*N1>
+Zero = Fr() + FrStar()
+Kane()
+"""
+
+
+@pytest.mark.parametrize(
+    "declare, mass, kind",
+    [
+        ("Bodies B", "Mass B = MV\nInertia B, 1, 1, 1", "mass"),
+        ("Bodies B", "Mass B = 2\nInertia B, MV, MV, MV", "inertia"),
+    ],
+)
+def test_mass_that_varies_in_time_is_refused(
+    tmp_path, convert_and_import, declare, mass, kind
+):
+    """The runtime's FrStar (Autolev's) is -m a; sympy's KanesMethod would
+    add -m' v: kanes_method() names the body instead of exporting another
+    model."""
+    script = tmp_path / "varying.al"
+    script.write_text(VARYING.format(declare=declare, mass=mass))
+    mod, _ = convert_and_import(script)
+    assert not sp.Matrix(mod.AUTOLEV["ZERO"]).has(sp.Derivative(mod.al.symbol("MV"), t))
+    with pytest.raises(ValueError, match=f"the {kind} of B varies in time"):
+        mod.kanes_method()

@@ -129,3 +129,18 @@ def test_whipple_script_fastkane_eigenvalues(whipple_module):
     ):
         wanted = whipple.reference_eigenvalues(speed)
         assert np.allclose(np.sort_complex(got), np.sort_complex(wanted), atol=1e-8)
+
+
+@pytest.mark.slow
+def test_whipple_kanes_method_equals_sympys_derivation(whipple_module):
+    """The exported model (``kanes_method()``, derived by FastKane, written
+    out) equals sympy's own ``KanesMethod`` derivation on the same inputs
+    at a random point (about 3 minutes: sympy's derivation alone takes
+    about 65 s here, the export about 8 s)."""
+    from al2py_runtime.model import kane_inputs, kanes_method
+    from kane_reference import assert_same_kane, sympy_kanes_method
+
+    inputs = kane_inputs(whipple_module.al.model)
+    ours = kanes_method(inputs)
+    assert len(inputs.u_dependent) == 5 and ours.mass_matrix_full.shape == (16, 16)
+    assert_same_kane(ours, sympy_kanes_method(inputs), "whipple", points=1)

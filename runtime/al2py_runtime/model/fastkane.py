@@ -881,14 +881,31 @@ class FastKane:
         return [(z, self._back(e)) for z, e in self._defs.items()]
 
     def substitute(self, expr: Any) -> Any:
-        """``expr`` with every intermediate replaced by its full expression."""
-        full: dict[Any, Any] = {}
+        """``expr`` with every intermediate replaced by its full expression.
+
+        One walk visits each shared subexpression once (``xreplace`` walks
+        the written-out tree, which for a large model is far bigger than the
+        graph of shared subexpressions it is made of)."""
+        rule: dict[Any, Any] = dict(self._from_plain)
+        done: dict[Any, Any] = {}
+
+        def walk(e: Any) -> Any:
+            found = rule.get(e)
+            if found is not None or not e.args:
+                return e if found is None else found
+            found = done.get(e)
+            if found is None:
+                args = [walk(a) for a in e.args]
+                same = all(a is b for a, b in zip(args, e.args, strict=True))
+                found = done[e] = e if same else e.func(*args)
+            return found
+
         for z, e in self._defs.items():
-            full[z] = e.xreplace(full)
+            rule[z] = walk(e)
         expr = sp.sympify(expr)
         if isinstance(expr, sp.MatrixBase):
-            return expr.applyfunc(lambda e: self._back(e.xreplace(full)))
-        return self._back(expr.xreplace(full))
+            return expr.applyfunc(walk)
+        return walk(expr)
 
     def numeric(self, args: Sequence[Any], exprs: Any):
         """A numpy function of ``args`` computing ``exprs`` (a matrix, an

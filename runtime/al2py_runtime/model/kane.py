@@ -1,11 +1,13 @@
-"""Kane's method through ``sympy.physics.mechanics.KanesMethod``.
+"""The script's model as sympy's ``KanesMethod``.
 
 :class:`KaneInputs` is what ``KanesMethod`` takes -- the Newtonian frame,
 coordinates, speeds, kinematical differential equations, bodies, loads and
 motion constraints -- built from an Autolev script by
-``Workspace.kane_inputs()``.  :func:`kanes_method` forms the equations.  Other
-formulations (a faster Kane with intermediate variables, compiled backends)
-start from the same inputs.
+``Workspace.kane_inputs()``.  :func:`kanes_method` returns a ``KanesMethod``
+whose equations the runtime's engine,
+:class:`~al2py_runtime.model.fastkane.FastKane`, derives from these inputs,
+written out as plain expressions (sympy's own ``kanes_equations`` derivation
+is not used).
 """
 
 from __future__ import annotations
@@ -14,10 +16,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
-from sympy.physics.mechanics import KanesMethod
+from sympy.physics.mechanics import KanesMethod, RigidBody
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
 from . import kinematics as kin
+from .fastkane import FastKane
 
 t = dynamicsymbols._t
 
@@ -54,22 +57,116 @@ class KaneInputs:
         return [*self.u_ind, *self.u_dependent]
 
 
+class _DerivedKanesMethod(KanesMethod):
+    """sympy's ``KanesMethod`` whose Kane's equations are derived by the
+    runtime's engine, :class:`~al2py_runtime.model.fastkane.FastKane`.
+
+    The constructor is ``KanesMethod``'s own (the kinematical differential
+    equations and the velocity constraints solved for ``q'`` and the
+    dependent speeds).  :meth:`kanes_equations` derives with FastKane and
+    stores the results, intermediates written out, where ``KanesMethod``'s
+    properties and ``to_linearizer()`` read them: ``mass_matrix``,
+    ``forcing``, ``mass_matrix_full``, ``forcing_full``, ``auxiliary_eqs``,
+    ``rhs()`` and ``linearize()`` are then those of ``KanesMethod``."""
+
+    def __init__(self, inputs: KaneInputs) -> None:
+        kw: dict[str, Any] = {}
+        if inputs.u_dependent:
+            kw["u_dependent"] = inputs.u_dependent
+            kw["velocity_constraints"] = inputs.velocity_constraints
+            # Stand-ins: kanes_equations stores FastKane's acceleration
+            # constraints (sympy would differentiate the velocity
+            # constraints here, the larger part of its whole derivation).
+            kw["acceleration_constraints"] = [u.diff(t) for u in inputs.u_dependent]
+        if inputs.u_auxiliary:
+            kw["u_auxiliary"] = inputs.u_auxiliary
+        super().__init__(
+            inputs.frame,
+            q_ind=inputs.q_ind,
+            u_ind=inputs.u_ind,
+            kd_eqs=inputs.kd_eqs,
+            **kw,
+        )
+        self._derive_from = inputs
+
+    def kanes_equations(self, bodies: Any = None, loads: Any = None) -> Any:
+        """``(Fr, Fr*)`` as ``KanesMethod.kanes_equations`` returns them (with
+        auxiliary speeds, their rows follow), derived by FastKane."""
+        bodies = list(self.bodies if bodies is None else bodies)
+        if loads is None:
+            loads = self.loads
+        loads = list(loads or [])
+        _constant_masses(bodies)
+        fk = _engine(self._derive_from)
+        aux = bool(self._derive_from.u_auxiliary)
+        if aux:
+            # Fr's auxiliary rows alone: the same engine without bodies
+            # (velocities and intermediates are shared with the next call).
+            fk.kanes_equations([], loads)
+            fr_aux = fk.auxiliary_eqs
+        fr, frstar = fk.kanes_equations(bodies, loads)
+        p = fr.rows
+        mass, forcing, fr, frstar = _written_out(
+            fk, [fk.mass_matrix, fk.forcing, fr, frstar]
+        )
+        self._bodylist, self._forcelist = bodies, loads or None
+        self._k_d, self._f_d = mass[:p, :], -forcing[:p, :]
+        self._k_dnh, self._f_dnh = mass[p:, :], -forcing[p:, :]
+        if aux:
+            fr_aux, eqs = _written_out(fk, [fr_aux, fk.auxiliary_eqs])
+            self._aux_eq = eqs
+            fr, frstar = fr.col_join(fr_aux), frstar.col_join(eqs - fr_aux)
+        self._fr, self._frstar = fr, frstar
+        return fr, frstar
+
+
+def _engine(inputs: KaneInputs) -> FastKane:
+    """FastKane with the inputs' kinematics and constraints (no bodies)."""
+    return FastKane(
+        inputs.frame,
+        inputs.q_ind,
+        inputs.u_ind,
+        kd_eqs=inputs.kd_eqs,
+        u_dependent=inputs.u_dependent or None,
+        velocity_constraints=inputs.velocity_constraints or None,
+        u_auxiliary=inputs.u_auxiliary or None,
+    )
+
+
+def _written_out(fk: FastKane, parts: list[Any]) -> list[Any]:
+    """The matrices ``parts`` with FastKane's intermediates written out (one
+    substitution for all)."""
+    flat = fk.substitute(sp.Matrix([x for m in parts for x in m]))
+    out, start = [], 0
+    for m in parts:
+        out.append(sp.Matrix(m.rows, m.cols, list(flat[start : start + len(m)])))
+        start += len(m)
+    return out
+
+
+def _constant_masses(bodies: list) -> None:
+    """FastKane takes constant masses and inertias: name a body whose mass
+    or inertia varies in time (the runtime's FrStar, as Autolev's, is
+    ``-m a``; sympy's derivation would add ``-m' v``, another model)."""
+    for body in bodies:
+        what = [("mass", body.mass)]
+        if isinstance(body, RigidBody):
+            what.append(("inertia", body.central_inertia.to_matrix(body.frame)))
+        for kind, value in what:
+            if sp.sympify(value).has(t):
+                raise ValueError(
+                    f"kanes_method(): the {kind} of {body.name} varies in time"
+                    f" ({value}); the exported model takes constant masses and"
+                    " inertias"
+                )
+
+
 def kanes_method(inputs: KaneInputs) -> KanesMethod:
     """A ``KanesMethod`` with its equations formed (``mass_matrix_full``,
-    ``forcing_full``, ``fr``, ``frstar``)."""
-    kw: dict[str, Any] = {}
-    if inputs.u_dependent:
-        kw["u_dependent"] = inputs.u_dependent
-        kw["velocity_constraints"] = inputs.velocity_constraints
-    if inputs.u_auxiliary:
-        kw["u_auxiliary"] = inputs.u_auxiliary
-    km = KanesMethod(
-        inputs.frame,
-        q_ind=inputs.q_ind,
-        u_ind=inputs.u_ind,
-        kd_eqs=inputs.kd_eqs,
-        **kw,
-    )
+    ``forcing_full``, ``fr``, ``frstar``) by the runtime's engine, FastKane,
+    and written out (plain expressions of the coordinates, speeds and
+    constants, as sympy's own derivation gives)."""
+    km = _DerivedKanesMethod(inputs)
     km.kanes_equations(inputs.bodies, inputs.loads)
     return km
 
