@@ -231,3 +231,53 @@ def test_velocities_not_linear_in_speeds_are_refused():
             bodies=[me.Particle("p", p, 1)],
             loads=[],
         )
+
+
+def belt_driven_cart():
+    """Two carts joined by a belt whose speed is a given function of time:
+    the velocity constraint ``u2 - u1 - f' = 0`` has a part without speeds
+    (KanesMethod's ``f_nh``), which reaches the acceleration constraint."""
+    q1, q2, u1, u2, f = me.dynamicsymbols("q1 q2 u1 u2 f")
+    m1, m2, k = sp.symbols("m1 m2 k")
+    n = me.ReferenceFrame("N")
+    o = me.Point("O")
+    o.set_vel(n, 0)
+    p1 = o.locatenew("P1", q1 * n.x)
+    p2 = o.locatenew("P2", q2 * n.x)
+    p1.set_vel(n, u1 * n.x)
+    p2.set_vel(n, u2 * n.x)
+    bodies = [me.Particle("c1", p1, m1), me.Particle("c2", p2, m2)]
+    loads = [(p1, -k * q1 * n.x), (p2, -k * q2 * n.x)]
+    kane = dict(
+        frame=n,
+        q_ind=[q1, q2],
+        u_ind=[u1],
+        kd_eqs=[q1.diff() - u1, q2.diff() - u2],
+        u_dependent=[u2],
+        velocity_constraints=[u2 - u1 - f.diff()],
+    )
+    t = me.dynamicsymbols._t
+    args = [q1, q2, u1, u2, m1, m2, k, f.diff(), f.diff(t, 2)]
+    return dict(kane=kane, bodies=bodies, loads=loads, args=args)
+
+
+def test_constraint_with_a_given_rate_equals_kanesmethod():
+    fk = _compare(belt_driven_cart(), seed=13)
+    t = me.dynamicsymbols._t
+    # the acceleration constraint carries f'' (u2' - u1' - f'' = 0)
+    assert fk.substitute(fk.forcing)[1].has(me.dynamicsymbols("f").diff(t, 2))
+
+
+def test_fastkane_derives_with_the_runtimes_book():
+    """FastKane is the runtime's engine: its intermediates are an AutoZ
+    book's, and the plain symbols it shows stand for them one to one."""
+    from al2py_runtime.intermediates.autoz import Intermediates
+
+    model = double_pendulum()
+    fk = FastKane(**model["kane"], bodies=model["bodies"], loads=model["loads"])
+    assert isinstance(fk.book, Intermediates)
+    assert len(fk.intermediates) == len(fk.book) > 0
+    for z, _ in fk.intermediates[:5]:
+        k = int(z.name[1:])
+        _, body = fk.book.canonical(k)
+        assert sp.simplify(fk.substitute(z) - fk.book.expand(body)) == 0

@@ -97,3 +97,24 @@ def test_frstar_and_fastkane_form_inertia_forces_in_one_place(tmp_path, monkeypa
     assert len(used) == 1  # the script's FrStar()
     fastkane.FastKane(**chain_inputs(2))
     assert len(used) == 2  # FastKane
+
+
+def test_frstar_and_fastkane_share_the_kinematics(tmp_path, monkeypatch):
+    """Partial velocities (linear forms) and accelerations (their rates) are
+    formed by the same functions for a script and for FastKane."""
+    used: dict[str, int] = {}
+    for name in ("linear_form", "form_rate"):
+        original = getattr(fastkane, name)
+
+        def counted(*args, _name=name, _f=original, **kw):
+            used[_name] = used.get(_name, 0) + 1
+            return _f(*args, **kw)
+
+        monkeypatch.setattr(equations, name, counted)
+        monkeypatch.setattr(fastkane, name, counted)
+    _module(chain_source(2), tmp_path, "chain2k")
+    script = dict(used)
+    assert script.get("linear_form", 0) >= 4 and script.get("form_rate", 0) >= 4
+    fastkane.FastKane(**chain_inputs(2))
+    assert used["linear_form"] >= script["linear_form"] + 4
+    assert used["form_rate"] >= script["form_rate"] + 4

@@ -16,8 +16,16 @@ from sympy.physics.vector import (
 
 from ..intermediates.elimination import SMALL
 from . import kinematics as kin
-from .arrange import arrange, linear_terms, solve_speeds
-from .fastkane import Motion, active_rows, inertia_rows
+from .arrange import arrange, solve_speeds
+from .fastkane import (
+    Motion,
+    active_rows,
+    form_rate,
+    inertia_rows,
+    linear_form,
+    measure_split,
+    named_measures,
+)
 from .state import command, t
 
 __all__ = ["KaneEquations"]
@@ -31,57 +39,6 @@ class KaneEquations:
     def _dot_rows(self, vec: Vector, partials: list) -> list:
         return [vec.dot(p) if p != Vector(0) else 0 for p in partials]
 
-    # AutoZ: vectors as three named measure numbers in one frame, so that
-    # partial velocities are read off and every dot product is short.
-
-    @staticmethod
-    def _measure_split(
-        vec: Vector, frame: ReferenceFrame, xs: list, book: Any
-    ) -> list[tuple[list[Any], Any]] | None:
-        """``vec``'s measure numbers in ``frame`` as ``sum c_j x_j + rest``,
-        each ``c_j`` and ``rest`` named: ``(coefficients, rest)`` per measure
-        number, or None when one is not linear in ``xs``.
-
-        Each component is split in its own frame, then rotated with the
-        direction cosines, so no large expression (a vector expressed in
-        another frame) is formed and split."""
-        out = [([sp.S.Zero] * len(xs), sp.S.Zero) for _ in range(3)]
-        terms: list[tuple[list[list[Any]], list[Any]]] = [
-            ([[] for _ in xs], []) for _ in range(3)
-        ]
-        for comps, f in vec.args:
-            m = frame.dcm(f)
-            for k in range(3):
-                if comps[k] == 0:
-                    continue
-                split = linear_terms(book.name_linear(comps[k], xs), xs)
-                if split is None:
-                    return None
-                for i in range(3):
-                    c = m[i, k]
-                    if c == 0:
-                        continue
-                    c = book.name(c)
-                    coefs, rest = terms[i]
-                    for j, x in enumerate(split[0]):
-                        if x != 0:
-                            coefs[j].append(c * x)
-                    if split[1] != 0:
-                        rest.append(c * split[1])
-        for i, (coefs, rest) in enumerate(terms):
-            out[i] = (
-                [book.name(sp.Add(*c)) for c in coefs],
-                book.name(sp.Add(*rest)),
-            )
-        return out
-
-    def _named_measures(self, vec: Vector, frame: ReferenceFrame, book: Any) -> list:
-        """``vec``'s three measure numbers in ``frame``, named (formed
-        component by component, as :meth:`_measure_split`)."""
-        split = self._measure_split(vec, frame, [], book)
-        assert split is not None  # nothing to be linear in
-        return [rest for _, rest in split]
-
     def _zpartials(
         self, v: Vector, speeds: list, frame: ReferenceFrame, book: Any
     ) -> list[list[Any]]:
@@ -91,7 +48,7 @@ class KaneEquations:
         v = self.actual_value(v, keep)
         if v == Vector(0):
             return [[sp.S.Zero] * 3 for _ in speeds]
-        split = self._measure_split(v, frame, speeds, book)
+        split = measure_split(v, frame, speeds, book)
         if split is not None:
             return [[s[0][j] for s in split] for j in range(len(speeds))]
         measures = [book.name_linear(e, speeds) for e in v.to_matrix(frame)]
@@ -116,7 +73,7 @@ class KaneEquations:
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
                 keep = self.ws.specified_inputs([])
-                mf = self._named_measures(self.actual_value(f, keep), frame, book)
+                mf = named_measures(self.actual_value(f, keep), frame, book)
                 parts = self._zpartials(v, speeds, frame, book)
                 dots = active_rows([(parts, mf)], len(speeds), book.name)
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
@@ -136,41 +93,31 @@ class KaneEquations:
 
     def _linear_form(self, vec: Vector, frame: ReferenceFrame, book: Any) -> Any:
         """``vec`` (a velocity or angular velocity, the auxiliary speeds
-        kept) as ``(coefficients, rest)``: for each generalized speed its
-        three named measure numbers in ``frame``, and the rest; None when it
-        is not linear in the speeds."""
-        speeds = self.generalized_speeds()
+        kept) as the engine's :func:`~.fastkane.linear_form` in the
+        generalized speeds."""
         v = self.actual_value(vec, self.auxiliary_kept())
-        columns: list[list[Any]] = [[sp.S.Zero] * 3 for _ in speeds]
-        rest: list[Any] = [sp.S.Zero] * 3
-        if v == Vector(0):
-            return columns, rest
-        split = self._measure_split(v, frame, speeds, book)
-        if split is None:
-            return None
-        for i, (coefs, r) in enumerate(split):
-            for col, c in zip(columns, coefs, strict=True):
-                col[i] = c
-            rest[i] = r
-        return columns, rest
+        return linear_form(v, frame, self.generalized_speeds(), book)
 
     def _rate(
         self, form: Any, frame: ReferenceFrame, book: Any, rates: tuple
     ) -> Vector:
         """The derivative in ``frame`` of a vector given by its linear form
-        (:meth:`_linear_form`)."""
+        (:meth:`_linear_form`), by the engine's :func:`~.fastkane.form_rate`."""
         rate, memo = rates
-        columns, rest = form
+        columns, _ = form
         speeds = self.generalized_speeds()
-        out = []
-        for i in range(3):
-            terms = [book.time_derivative(rest[i], rate, memo)]
-            for col, u in zip(columns, speeds, strict=True):
-                c = col[i]
-                if c != 0:
-                    terms.append(c * sp.Derivative(u, t))
-                    terms.append(book.time_derivative(c, rate, memo) * u)
-            out.append(sp.Add(*terms))
+        rest = form_rate(form, speeds, book, rate, memo)
+        out = [
+            sp.Add(
+                r,
+                *[
+                    col[i] * sp.Derivative(u, t)
+                    for col, u in zip(columns, speeds, strict=True)
+                    if col[i] != 0
+                ],
+            )
+            for i, r in enumerate(rest)
+        ]
         return kin.frame_vector(frame, out)
 
     def _acceleration(
@@ -277,7 +224,7 @@ class KaneEquations:
         index = {u: k for k, u in enumerate(self.generalized_speeds())}
 
         def motion(v: Vector, form: Any, acc: Vector, frame: ReferenceFrame) -> Motion:
-            split = self._measure_split(acc, frame, accels, book)
+            split = measure_split(acc, frame, accels, book)
             if split is None:  # pragma: no cover - linear in u'
                 raise ValueError("FrStar(): an acceleration is not linear in U'")
             columns = [[s[0][j] for s in split] for j in range(len(accels))]
@@ -316,7 +263,7 @@ class KaneEquations:
                 alf = self.actual_value(alf)
                 inertia = self.central_inertia(o).to_matrix(o)
                 imat = [[book.name(inertia[i, j]) for j in range(3)] for i in range(3)]
-                omega = self._named_measures(self.actual_value(w), o, book)
+                omega = named_measures(self.actual_value(w), o, book)
                 rotations.append((imat, omega, motion(w, form, alf, o)))
         moved = [
             any(mo.partials[k] is not None for _, mo in translations)

@@ -1,37 +1,40 @@
-"""Kane's equations with intermediate variables (Autolev's ``AutoZ``).
+"""Kane's method with intermediate variables: the runtime's one engine.
 
-:class:`FastKane` takes the same inputs as sympy's
-:class:`~sympy.physics.mechanics.KanesMethod` (inertial frame, independent and
-dependent coordinates and speeds, kinematic differential equations, velocity
-constraints, auxiliary speeds, bodies and loads) and returns the same mass
-matrix and forcing vector, but written with *intermediate variables*: plain
-symbols ``z1, z2, ...`` each defined by a short expression of the
-coordinates, the speeds, the constants and earlier intermediates.
+Kane's equations are formed here, in one way, for every user of the
+runtime: a script's ``Fr()`` and ``FrStar()`` (:mod:`.equations`), the
+``KanesMethod`` a module exports (:mod:`.kane`) and :class:`FastKane`, the
+same derivation for models written directly in ``sympy.physics.mechanics``.
+Each names its short subexpressions in an
+:class:`~al2py_runtime.intermediates.autoz.Intermediates` book (Autolev's
+``AutoZ``).
 
 How it stays small (see ``docs/intermediates.md``):
 
 * Every direction-cosine matrix between two frames is a product of the
   frames' own (short) matrices along the orientation tree; each entry of each
-  product is named.
+  product is named (:func:`named_dcm`).
 * Every velocity and angular velocity is kept as an explicit *linear form* in
   the generalized speeds, ``v = sum_r V_r u_r + V_t``, with each measure
-  number of each ``V_r`` (a partial velocity) named.  Partial velocities are
-  read off, never found by differentiating large expressions.
+  number of each ``V_r`` (a partial velocity) named (:func:`linear_form`).
+  Each component is split in its own frame, then rotated, so nothing large
+  is formed and split (:func:`measure_split`).
 * The time derivative of an intermediate is another intermediate, defined by
   the chain rule through its (short) definition.  Accelerations are then
   ``a = sum_r V_r u_r' + sum_r V_r' u_r + V_t'`` with no differentiation of
-  anything large.
+  anything large (:func:`form_rate`).
+* The rows are dot products of these measure numbers, each named
+  (:func:`inertia_rows`, :func:`active_rows`).
 * Nothing is ever expanded or simplified.
 
 The formulas are those of ``KanesMethod`` (same rows, same signs, the same
-reduction by the dependent speeds), so ``mass_matrix`` and ``forcing`` equal
-``KanesMethod``'s once the intermediates are substituted.
+reduction by the dependent speeds), so :class:`FastKane`'s ``mass_matrix``
+and ``forcing`` equal ``KanesMethod``'s once the intermediates are
+substituted.
 """
 
 from __future__ import annotations
 
-import random
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -47,23 +50,30 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
-from ..intermediates.autoz import minus_first
-from ..intermediates.elimination import eliminate
+from ..intermediates.autoz import Intermediates
+from .arrange import linear_terms, split_linear_named
 
-__all__ = ["FastKane", "Motion", "active_rows", "inertia_rows"]
+__all__ = [
+    "FastKane",
+    "Motion",
+    "active_rows",
+    "form_rate",
+    "inertia_rows",
+    "linear_form",
+    "measure_split",
+    "named_dcm",
+    "named_measures",
+]
 
 _T = dynamicsymbols._t
 
+#: ``dcm(A, B)``: the direction cosines of ``A`` and ``B`` (``A``'s measure
+#: numbers are ``dcm(A, B)`` times ``B``'s), entries named.
+Dcm = Callable[[ReferenceFrame, ReferenceFrame], Any]
 
-def _trivial(expr: Any) -> bool:
-    """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``."""
-    if expr.is_Atom:
-        return True
-    if expr.is_Mul and len(expr.args) == 2 and expr.args[0].is_Number:
-        return expr.args[1].is_Atom
-    if isinstance(expr, sp.sin | sp.cos) and expr.args[0].is_Atom:
-        return True
-    return False
+
+def _sympy_dcm(a: ReferenceFrame, b: ReferenceFrame) -> Any:
+    return a.dcm(b)
 
 
 def _matmul(a: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
@@ -110,6 +120,176 @@ def cross3(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
         a[2] * b[0] - a[0] * b[2],
         a[0] * b[1] - a[1] * b[0],
     ]
+
+
+# ---------------------------------------------------------------- kinematics
+
+
+def named_dcm(
+    x: ReferenceFrame, f: ReferenceFrame, book: Intermediates, cache: dict
+) -> sp.Matrix:
+    """``X_F`` (``x``'s measure numbers are ``X_F`` times ``f``'s): the
+    product of the frames' own matrices along the orientation tree, each
+    entry of each product named in ``book``; ``cache`` keeps every pair
+    formed (and its transpose).
+
+    >>> from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
+    >>> q1, q2 = dynamicsymbols("q1 q2")
+    >>> n = ReferenceFrame("N")
+    >>> a = n.orientnew("A", "Axis", [q1, n.z])
+    >>> b = a.orientnew("B", "Axis", [q2, a.z])
+    >>> book = Intermediates("z")
+    >>> m = named_dcm(b, n, book, {})
+    >>> sp.simplify(book.expand(m) - b.dcm(n))
+    Matrix([
+    [0, 0, 0],
+    [0, 0, 0],
+    [0, 0, 0]])
+    """
+    if x is f:
+        return sp.eye(3)
+    found = cache.get((x, f))
+    if found is not None:
+        return found
+    if f in x._dcm_dict:
+        out = x.dcm(f).applyfunc(book.name)
+    else:
+        path = x._dict_list(f, 0)
+        left = named_dcm(x, path[-2], book, cache)
+        right = named_dcm(path[-2], f, book, cache)
+        out = sp.Matrix(
+            3,
+            3,
+            lambda i, j: book.name(
+                sp.Add(*[left[i, k] * right[k, j] for k in range(3)])
+            ),
+        )
+    cache[(x, f)] = out
+    cache[(f, x)] = out.T
+    return out
+
+
+def measure_split(
+    vec: Vector,
+    frame: ReferenceFrame,
+    xs: Sequence[Any],
+    book: Intermediates,
+    dcm: Dcm = _sympy_dcm,
+) -> list[tuple[list[Any], Any]] | None:
+    """``vec``'s measure numbers in ``frame`` as ``sum c_j x_j + rest``,
+    each ``c_j`` and ``rest`` named: ``(coefficients, rest)`` per measure
+    number, or None when one is not linear in ``xs``.
+
+    Each component is split in its own frame, then rotated with the
+    direction cosines ``dcm(frame, f)``, so no large expression (a vector
+    expressed in another frame) is formed and split.
+
+    >>> from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> n = ReferenceFrame("N")
+    >>> a = n.orientnew("A", "Axis", [q, n.z])
+    >>> measure_split(u * a.x + n.y, n, [u], Intermediates())
+    [([cos(q(t))], 0), ([sin(q(t))], 1), ([0], 0)]
+    """
+    terms: list[tuple[list[list[Any]], list[Any]]] = [
+        ([[] for _ in xs], []) for _ in range(3)
+    ]
+    for comps, f in vec.args:
+        m = dcm(frame, f)
+        for k in range(3):
+            if comps[k] == 0:
+                continue
+            split = linear_terms(book.name_linear(comps[k], xs), xs)
+            if split is None:
+                return None
+            for i in range(3):
+                c = m[i, k]
+                if c == 0:
+                    continue
+                c = book.name(c)
+                coefs, rest = terms[i]
+                for j, x in enumerate(split[0]):
+                    if x != 0:
+                        coefs[j].append(c * x)
+                if split[1] != 0:
+                    rest.append(c * split[1])
+    return [
+        ([book.name(sp.Add(*c)) for c in coefs], book.name(sp.Add(*rest)))
+        for coefs, rest in terms
+    ]
+
+
+def named_measures(
+    vec: Vector, frame: ReferenceFrame, book: Intermediates, dcm: Dcm = _sympy_dcm
+) -> list[Any]:
+    """``vec``'s three measure numbers in ``frame``, named (formed
+    component by component, as :func:`measure_split`)."""
+    split = measure_split(vec, frame, [], book, dcm)
+    assert split is not None  # nothing to be linear in
+    return [rest for _, rest in split]
+
+
+def linear_form(
+    vec: Vector,
+    frame: ReferenceFrame,
+    speeds: Sequence[Any],
+    book: Intermediates,
+    dcm: Dcm = _sympy_dcm,
+) -> tuple[list[list[Any]], list[Any]] | None:
+    """``vec`` (a velocity or an angular velocity) as ``(columns, rest)``:
+    for each speed its three named measure numbers in ``frame`` (the
+    partial velocity), and the rest; None when it is not linear in the
+    speeds."""
+    columns: list[list[Any]] = [[sp.S.Zero] * 3 for _ in speeds]
+    rest: list[Any] = [sp.S.Zero] * 3
+    if vec == Vector(0):
+        return columns, rest
+    split = measure_split(vec, frame, speeds, book, dcm)
+    if split is None:
+        return None
+    for i, (coefs, r) in enumerate(split):
+        for col, c in zip(columns, coefs, strict=True):
+            col[i] = c
+        rest[i] = r
+    return columns, rest
+
+
+def form_rate(
+    form: tuple[Sequence[Sequence[Any]], Sequence[Any]],
+    speeds: Sequence[Any],
+    book: Intermediates,
+    rate: Callable[[Any], Any],
+    memo: dict,
+) -> list[Any]:
+    """The derivative, in the form's frame, of the vector given by its
+    linear form ``(columns, rest)`` in ``speeds`` is
+    ``sum c_j u_j' + sum c_j' u_j + rest'``: the coefficients of the
+    speeds' derivatives are the columns themselves, and this returns the
+    other terms, ``sum c_j' u_j + rest'``, for each measure number.
+    ``rate(x)`` is the derivative of the variable ``x``
+    (:meth:`Intermediates.time_derivative`, whose ``memo`` belongs to
+    ``rate``).
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> rate = lambda x: u if x == q else sp.Derivative(x, _T)
+    >>> zero = sp.S.Zero
+    >>> form_rate(([[sp.cos(q), zero, zero]], [zero] * 3), [u], Intermediates(), rate, {})
+    [-u(t)**2*sin(q(t)), 0, 0]
+    """
+    columns, rest = form
+    out = []
+    for i in range(3):
+        terms = [book.time_derivative(rest[i], rate, memo)]
+        for col, u in zip(columns, speeds, strict=True):
+            c = col[i]
+            if c != 0:
+                terms.append(book.time_derivative(c, rate, memo) * u)
+        out.append(sp.Add(*terms))
+    return out
+
+
+# ---------------------------------------------------------------- the rows
 
 
 def inertia_rows(
@@ -187,6 +367,13 @@ def active_rows(
     return fr
 
 
+def _nonzero(columns: Iterable[Sequence[Any]]) -> list[Sequence[Any] | None]:
+    return [c if any(x != 0 for x in c) else None for c in columns]
+
+
+# ---------------------------------------------------------------- FastKane
+
+
 class FastKane:
     """Kane's equations of motion with intermediate variables.
 
@@ -202,16 +389,33 @@ class FastKane:
     * ``mass_matrix``, ``forcing`` (``KanesMethod``'s: the reduced dynamic rows
       followed by the acceleration constraints), ``mass_matrix_kin``,
       ``forcing_kin``, ``mass_matrix_full``, ``forcing_full`` and
-      ``auxiliary_eqs``, written with intermediates;
+      ``auxiliary_eqs``, written with intermediates: plain symbols ``z1``,
+      ``z2``, ...;
     * ``intermediates``: the ordered list of ``(symbol, expression)``; each
       expression uses only coordinates, speeds, constants and earlier
       symbols, so numeric code evaluates them in order;
     * :meth:`substitute` gives fully substituted expressions;
     * :meth:`numeric` builds a numeric function that evaluates in order.
 
+    The derivation is the runtime's own (the functions of this module, the
+    intermediates in an :class:`~al2py_runtime.intermediates.autoz.Intermediates`
+    book, :attr:`book`), the one that forms a converted script's ``Fr()``
+    and ``FrStar()``.
+
     Limitations: masses and inertia dyadics must be constant (no
     ``dynamicsymbols``), as in almost every model; ``KanesMethod``'s implicit
     kinematics option is not offered.
+
+    >>> from sympy.physics.mechanics import Point, Particle, ReferenceFrame
+    >>> q, u = dynamicsymbols("q u")
+    >>> m, g = sp.symbols("m g")
+    >>> n = ReferenceFrame("N")
+    >>> p = Point("P")
+    >>> p.set_vel(n, u * n.x)
+    >>> fk = FastKane(n, [q], [u], kd_eqs=[q.diff() - u],
+    ...               bodies=[Particle("Pa", p, m)], loads=[(p, -m * g * n.x)])
+    >>> fk.substitute(fk.mass_matrix), fk.substitute(fk.forcing)
+    (Matrix([[m]]), Matrix([[-g*m]]))
     """
 
     def __init__(
@@ -264,44 +468,18 @@ class FastKane:
         self._bodies = bodies
         self._loads = loads
 
-        # Plain symbols stand for the coordinates, speeds and their
-        # derivatives while deriving; results are mapped back at the end.
-        self._qs = [sp.Dummy(f"q{k}") for k in range(len(self._q))]
-        self._us = [sp.Dummy(f"u{k}") for k in range(len(self._u))]
-        self._uas = [sp.Dummy(f"ua{k}") for k in range(len(self._u_aux))]
-        self._qds = [sp.Dummy(f"qd{k}") for k in range(len(self._q))]
-        self._uds = [sp.Dummy(f"ud{k}") for k in range(len(self._u))]
-        self._uads = [sp.Dummy(f"uad{k}") for k in range(len(self._u_aux))]
-        self._all_u = self._us + self._uas  # keys of linear forms
-        self._to_plain: dict[Any, Any] = {}
-        for f, s in zip(self._q, self._qs, strict=True):
-            self._to_plain[f.diff(_T)] = None  # filled below (qdot map)
-            self._to_plain[f] = s
-        for f, s, d in zip(self._u, self._us, self._uds, strict=True):
-            self._to_plain[f] = s
-            self._to_plain[f.diff(_T)] = d
-        for f, s, d in zip(self._u_aux, self._uas, self._uads, strict=True):
-            self._to_plain[f] = s
-            self._to_plain[f.diff(_T)] = d
-        self._from_plain = {
-            s: f for f, s in self._to_plain.items() if s is not None and s.is_Symbol
+        taken = {
+            s.name for e in [*kd_eqs, *vel, *acc] for s in sp.sympify(e).free_symbols
         }
-        for f, s in zip(self._q, self._qds, strict=True):
-            self._from_plain[s] = f.diff(_T)
-
-        # Intermediates.
-        self._prefix = prefix
-        self._taken = self._names_in(kd_eqs, vel, acc)
-        self._defs: dict[sp.Symbol, Any] = {}  # in creation order
-        self._named: dict[Any, sp.Symbol] = {}
-        self._dz: dict[Any, Any] = {}
-        self._count = 0
-        self._probes: dict[int, dict[Any, complex]] = {}
-        self._dcms: dict[tuple[ReferenceFrame, ReferenceFrame], list] = {}
-        self._lin_cache: dict[tuple[Any, ReferenceFrame], dict] = {}
+        #: the intermediates (an ``Intermediates`` book, labels ``z1``, ...)
+        self.book = Intermediates(prefix, taken)
+        self._dcms: dict = {}
+        self._forms: dict = {}
+        self._memo: dict = {}  # time derivatives, for :meth:`_derivative_of`
+        self._public: dict[Any, sp.Symbol] = {}  # intermediate -> plain symbol
+        self._plain: dict[sp.Symbol, Any] = {}  # plain symbol -> definition
 
         # Kinematic differential equations: q' = K u + k.
-        self._qdot_map: dict[Any, Any] = {}  # q symbol -> linear form
         self._solve_kinematics(kd_eqs)
         # Velocity and acceleration constraints.
         self._solve_constraints(vel, acc)
@@ -337,193 +515,65 @@ class FastKane:
         )
 
     # ------------------------------------------------------------------
-    # intermediates
-    def _names_in(self, *groups: Iterable[Any]) -> set[str]:
-        return {
-            s.name
-            for group in groups
-            for e in group
-            for s in sp.sympify(e).free_symbols
-        }
+    # kinematics
 
-    def _name(self, expr: Any) -> Any:
-        """A symbol standing for ``expr`` (reused for the same expression)."""
-        expr = sp.sympify(expr)
-        if _trivial(expr):
-            return expr
-        if minus_first(expr):
-            return -self._name(-expr)
-        found = self._named.get(expr)
+    def _derivative_of(self, x: Any) -> Any:
+        """The time derivative of the variable ``x``: a coordinate's by its
+        kinematical differential equation, any other's as sympy writes it."""
+        found = self._qdot.get(x)
         if found is not None:
             return found
-        while True:
-            self._count += 1
-            name = f"{self._prefix}{self._count}"
-            if name not in self._taken:
-                break
-        z = sp.Symbol(name)
-        self._defs[z] = expr
-        self._named[expr] = z
-        return z
+        if isinstance(x, sp.Derivative):
+            return sp.Derivative(x.expr, (_T, x.derivative_count + 1))
+        return sp.Derivative(x, _T)
 
-    def _plain(self, expr: Any) -> Any:
-        """``expr`` with coordinates, speeds and q' as plain symbols."""
+    def _actual(self, expr: Any) -> Any:
+        """``expr`` with each coordinate's derivative replaced by its form
+        in the speeds."""
         expr = sp.sympify(expr)
-        if not expr.has(_T):
-            return expr
-        return expr.xreplace(self._to_plain_full)
+        return expr.xreplace(self._qdot_rule) if expr.has(sp.Derivative) else expr
 
-    def _dt(self, expr: Any) -> Any:
-        """Time derivative of a plain expression, by the chain rule.
+    def _actual_vector(self, vec: Vector) -> Vector:
+        return Vector([(m.applyfunc(self._actual), f) for m, f in vec.args])
 
-        Walks the (short) expression itself for sums, products, powers, sine
-        and cosine, which is several times faster than sympy's ``diff``; any
-        other function falls back to ``diff`` by each symbol it contains."""
-        expr = sp.sympify(expr)
-        if expr.is_Symbol:
-            return self._dt_symbol(expr)
-        if expr.is_Number:
-            return sp.S.Zero
-        if expr.is_Add:
-            return sp.Add(*[self._dt(a) for a in expr.args])
-        if expr.is_Mul:
-            args = expr.args
-            terms = []
-            for i, a in enumerate(args):
-                d = self._dt(a)
-                if d != 0:
-                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
-            return sp.Add(*terms)
-        if expr.is_Pow and expr.exp.is_Number:
-            d = self._dt(expr.base)
-            if d == 0:
-                return sp.S.Zero
-            return expr.exp * expr.base ** (expr.exp - 1) * d
-        if isinstance(expr, sp.sin):
-            return sp.cos(expr.args[0]) * self._dt(expr.args[0])
-        if isinstance(expr, sp.cos):
-            return -sp.sin(expr.args[0]) * self._dt(expr.args[0])
-        out = sp.S.Zero
-        for s in expr.free_symbols:
-            if s == _T:
-                out += expr.diff(_T)
-            else:
-                d = self._dt_symbol(s)
-                if d != 0:
-                    out += expr.diff(s) * d
-        return out
+    def _dcm(self, x: ReferenceFrame, f: ReferenceFrame) -> sp.Matrix:
+        return named_dcm(x, f, self.book, self._dcms)
 
-    def _dt_symbol(self, s: Any) -> Any:
-        if s in self._qdot_expr:
-            return self._qdot_expr[s]
-        if s in self._defs:
-            return self._dz_of(s)
-        if s in self._u_dot:
-            return self._u_dot[s]
-        if s == _T:
-            return sp.S.One
-        return sp.S.Zero
-
-    def _dz_of(self, z: Any) -> Any:
-        found = self._dz.get(z)
-        if found is None:
-            found = self._name(self._dt(self._defs[z]))
-            self._dz[z] = found
-        return found
-
-    # ------------------------------------------------------------------
-    # kinematics
-    def _linear(self, expr: Any, keys: Sequence[Any]) -> tuple[list, Any]:
-        """``expr = sum c_k key_k + rest``: coefficients and rest (unnamed)."""
-        present = expr.free_symbols
-        coefs = [expr.diff(k) if k in present else sp.S.Zero for k in keys]
-        zero = {k: 0 for k in keys if k in present}
-        rest = expr.xreplace(zero) if zero else expr
-        return coefs, rest
-
-    def _solve(self, a: list[list[Any]], b: list[list[Any]]) -> list[list[Any]]:
-        """Solve ``a x = b`` by Gaussian elimination, naming each entry;
-        pivots non-zero at the coordinates' zero (the usual reference
-        configuration, e.g. an upright bicycle) if possible, constants
-        random."""
-        return eliminate(a, b, self._name, self._probe)
-
-    def _probe(self, expr: Any, point: int) -> complex:
-        """``expr``'s value at probe ``point`` (0: coordinates zero)."""
-        cache = self._probes.setdefault(point, {})
-        expr = sp.sympify(expr)
-        if expr in cache:
-            return cache[expr]
-        values = {}
-        for s in expr.free_symbols:
-            if s in self._defs:
-                values[s] = self._probe(self._defs[s], point)
-            elif point == 0 and s in self._qs:
-                values[s] = 0.0
-            else:
-                rng = random.Random(f"{point}:{s.name}")
-                values[s] = rng.uniform(0.5, 1.5)
-        try:
-            out = complex(
-                expr.xreplace(
-                    {
-                        k: sp.Float(v) if isinstance(v, float) else sp.sympify(v)
-                        for k, v in values.items()
-                    }
-                )
-            )
-        except (TypeError, ValueError, ZeroDivisionError):
-            out = complex("nan")
-        if out != out:  # nan
-            out = 0j
-        cache[expr] = out
-        return out
+    def _solve(self, a: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
+        """``a x = b`` by elimination, each entry named; pivots non-zero at
+        the coordinates' zero (the usual reference configuration, e.g. an
+        upright bicycle) if possible."""
+        return self.book.solve(a, b, self._q)
 
     def _solve_kinematics(self, kd_eqs: list[Any]) -> None:
         qdots = [q.diff(_T) for q in self._q]
-        rule = {f: s for f, s in self._to_plain.items() if s is not None}
-        rule.update(dict(zip(qdots, self._qds, strict=True)))
-        eqs = [sp.sympify(e).xreplace(rule) for e in kd_eqs]
-        self._taken |= self._names_in(eqs)
-        n = len(eqs)
-        a, b = [], []
-        for e in eqs:
-            ca, rest = self._linear(e, self._qds)
-            cu, rest = self._linear(rest, self._all_u)
-            if any(c.has(*self._qds, *self._all_u) for c in ca + cu):
-                raise ValueError(
-                    "the kinematic differential equations must be linear in "
-                    "the speeds and the coordinates' derivatives"
-                )
-            a.append([self._name(c) for c in ca])
-            b.append([self._name(-c) for c in cu] + [self._name(-rest)])
-        x = self._solve(a, b) if n else []
-        # q' as a linear form in the speeds, keyed by speed (None: the rest).
-        self._qdot_form = []
-        for i, s in enumerate(self._qs):
-            form = {u: x[i][j] for j, u in enumerate(self._all_u) if x[i][j] != 0}
-            if x[i][-1] != 0:
-                form[None] = x[i][-1]
-            self._qdot_map[s] = form
-            self._qdot_form.append(form)
-        self._qdot_expr = {
-            s: self._form_expr(form, aux=True) for s, form in self._qdot_map.items()
+        speeds = self._u + self._u_aux
+        n = len(kd_eqs)
+        try:
+            a, rest = split_linear_named(kd_eqs, qdots)
+            b, k = split_linear_named(list(rest), speeds)
+        except ValueError:
+            a = None
+        if a is None or any(c.has(*qdots, *speeds) for c in [*a, *b, *k]):
+            raise ValueError(
+                "the kinematic differential equations must be linear in "
+                "the speeds and the coordinates' derivatives"
+            )
+        x = self._solve(a, -b.row_join(k)) if n else sp.zeros(0, len(speeds) + 1)
+        # q' = sum x[i, j] u_j + x[i, -1]
+        self._qdot: dict[Any, Any] = {}
+        self._qdot_ind: list[Any] = []  # without the auxiliary speeds
+        for i, q in enumerate(self._q):
+            terms = [x[i, j] * u for j, u in enumerate(speeds)]
+            self._qdot[q] = sp.Add(*terms, x[i, -1])
+            self._qdot_ind.append(sp.Add(*terms[: len(self._u)], x[i, -1]))
+        self._qdot_rule = {
+            qd: self._qdot[q] for qd, q in zip(qdots, self._q, strict=True)
         }
-        self._u_dot = dict(
-            zip(self._us + self._uas, self._uds + self._uads, strict=True)
-        )
-        # q' in user input is replaced by its form in the speeds.
-        self._to_plain_full = {f: s for f, s in self._to_plain.items() if s is not None}
-        self._to_plain_full.update(
-            {qd: self._qdot_expr[s] for qd, s in zip(qdots, self._qs, strict=True)}
-        )
-
-    def _form_expr(self, form: dict, aux: bool = False) -> Any:
-        keys = self._all_u if aux else self._us
-        out = sum((form[u] * u for u in keys if u in form), sp.S.Zero)
-        return out + form.get(None, sp.S.Zero)
 
     def _solve_constraints(self, vel: list[Any], acc: list[Any]) -> None:
+        """``KanesMethod``'s constraint matrices: ``k_nh u + f_nh = 0``,
+        ``k_dnh u' + f_dnh = 0`` and ``u_dep = Ars u_ind``."""
         m, o = len(self._u_dep), len(self._u)
         p = o - m
         self._k_nh = sp.zeros(m, o)
@@ -533,153 +583,64 @@ class FastKane:
         self._ars = sp.zeros(m, p)
         if not m:
             return
-        for i, e in enumerate(vel):
-            e = self._plain(e)
-            coefs, rest = self._linear(e, self._us)
-            self._k_nh[i, :] = sp.Matrix([[self._name(c) for c in coefs]])
-            self._f_nh[i] = self._name(-rest)
+        name = self.book.name
+        a, b = split_linear_named([self._actual(e) for e in vel], self._u)
+        self._k_nh, self._f_nh = a.applyfunc(name), b.applyfunc(name)
         if acc:
-            for i, e in enumerate(acc):
-                e = self._plain(e)
-                coefs, rest = self._linear(e, self._uds)
-                self._k_dnh[i, :] = sp.Matrix([[self._name(c) for c in coefs]])
-                self._f_dnh[i] = self._name(-rest)
+            udots = [u.diff(_T) for u in self._u]
+            a, b = split_linear_named([self._actual(e) for e in acc], udots)
+            self._k_dnh, self._f_dnh = a.applyfunc(name), b.applyfunc(name)
         else:
             self._k_dnh = self._k_nh
             for i in range(m):
-                d = sum(
-                    (self._dt(self._k_nh[i, j]) * self._us[j] for j in range(o)),
-                    sp.S.Zero,
-                )
-                self._f_dnh[i] = self._name(d + self._dt(self._f_nh[i]))
-        b_ind = [[self._k_nh[i, j] for j in range(p)] for i in range(m)]
-        b_dep = [[self._k_nh[i, j] for j in range(p, o)] for i in range(m)]
-        x = self._solve(b_dep, b_ind)
-        self._ars = sp.Matrix(m, p, lambda i, j: self._name(-x[i][j]))
-
-    def _dcm(self, x: ReferenceFrame, f: ReferenceFrame) -> list[list[Any]]:
-        """``X_C_F``: X measure numbers = ``X_C_F`` times F measure numbers."""
-        if x is f:
-            return [
-                [sp.S.One if i == j else sp.S.Zero for j in range(3)] for i in range(3)
-            ]
-        key = (x, f)
-        if key in self._dcms:
-            return self._dcms[key]
-        if (f, x) in self._dcms:
-            t = self._dcms[(f, x)]
-            out = [[t[j][i] for j in range(3)] for i in range(3)]
-            self._dcms[key] = out
-            return out
-        if f in x._dcm_dict:
-            local = x.dcm(f)
-            out = [
-                [self._name(self._plain(local[i, j])) for j in range(3)]
-                for i in range(3)
-            ]
-        else:
-            path = x._dict_list(f, 0)
-            left = self._dcm(x, path[-2])
-            right = self._dcm(path[-2], f)
-            out = [
-                [
-                    self._name(
-                        sum(
-                            (left[i][k] * right[k][j] for k in range(3)),
-                            sp.S.Zero,
-                        )
+                terms = [
+                    self.book.time_derivative(
+                        self._k_nh[i, j], self._derivative_of, self._memo
                     )
-                    for j in range(3)
+                    * u
+                    for j, u in enumerate(self._u)
                 ]
-                for i in range(3)
-            ]
-        self._dcms[key] = out
-        return out
+                d = self.book.time_derivative(
+                    self._f_nh[i], self._derivative_of, self._memo
+                )
+                self._f_dnh[i] = name(sp.Add(*terms, d))
+        x = self._solve(self._k_nh[:, p:], self._k_nh[:, :p])
+        self._ars = (-x).applyfunc(name)
 
-    def _express(self, vec: Vector, x: ReferenceFrame) -> list[Any]:
-        """Measure numbers of a vector in ``x`` (plain expressions, named)."""
-        out = [sp.S.Zero] * 3
-        for comps, f in vec.args:
-            c = self._dcm(x, f)
-            m = [self._plain(comps[k]) for k in range(3)]
-            for i in range(3):
-                out[i] += sum((c[i][k] * m[k] for k in range(3)), sp.S.Zero)
-        return [self._name(e) for e in out]
-
-    def _forms(self, exprs: Sequence[Any]) -> list[dict[Any, Any]]:
-        """Expressions linear in the speeds (and q') as linear forms.
-
-        Each form is ``{speed: coefficient}`` with ``None`` for the rest; the
-        coefficients are named.  The expressions (which sympy may have built
-        large, e.g. through direction cosines of long chains) are first split
-        by common-subexpression elimination; the forms are then propagated
-        through the pieces in order, so nothing large is ever differentiated.
-        """
-        rule = {f: s for f, s in self._to_plain.items() if s is not None}
-        rule.update({q.diff(_T): s for q, s in zip(self._q, self._qds, strict=True)})
-        plain = [sp.sympify(e).xreplace(rule) for e in exprs]
-        reps, reduced = sp.cse(
-            plain, symbols=sp.numbered_symbols("c", cls=sp.Dummy), order="none"
-        )
-        forms: dict[Any, dict[Any, Any]] = {u: {u: sp.S.One} for u in self._all_u}
-        for s, qd in zip(self._qs, self._qds, strict=True):
-            forms[qd] = self._qdot_map[s]
-        named: dict[Any, Any] = {}
-
-        def form_of(e: Any) -> dict[Any, Any]:
-            e = e.xreplace(named) if named else e
-            speeds = [v for v in e.free_symbols if v in forms]
-            if not speeds:
-                return {None: self._name(e)} if e != 0 else {}
-            out: dict[Any, Any] = {}
-            rest = e.xreplace({v: 0 for v in speeds})
-            if rest != 0:
-                out[None] = rest
-            for v in speeds:
-                coef = e.diff(v)
-                if any(w in forms for w in coef.free_symbols):
-                    raise ValueError("a velocity is not linear in the speeds")
-                coef = self._name(coef)
-                for key, val in forms[v].items():
-                    out[key] = out.get(key, sp.S.Zero) + coef * val
-            return {k: self._name(v) for k, v in out.items() if v != 0}
-
-        for s, e in reps:
-            form = form_of(e)
-            if set(form) <= {None}:
-                named[s] = form.get(None, sp.S.Zero)
-            else:
-                forms[s] = form
-        return [form_of(e) for e in reduced]
-
-    def _lin_vec(self, vec: Vector, x: ReferenceFrame) -> dict[Any, list[Any]]:
-        """A velocity as ``{speed: measure numbers in x}``; ``None``: the rest.
-
-        Coordinate derivatives are replaced by their forms in the speeds;
-        each measure number of each partial velocity is named."""
+    def _form(
+        self, vec: Vector, frame: ReferenceFrame
+    ) -> tuple[list[list[Any]], list[Any]]:
+        """A velocity's :func:`linear_form` in every speed (auxiliary ones
+        last), its coordinates' derivatives replaced by their forms."""
+        key = (vec, frame)
         try:
-            key = (vec, x)
-            if key in self._lin_cache:
-                return self._lin_cache[key]
+            found = self._forms.get(key)
         except TypeError:  # unhashable
-            key = None
-        acc: dict[Any, list[Any]] = {}
-        frames = [f for _, f in vec.args]
-        exprs = [comps[k] for comps, _ in vec.args for k in range(3)]
-        forms = self._forms(exprs)
-        for j, f in enumerate(frames):
-            c = self._dcm(x, f)
-            for k in range(3):
-                for u, coef in forms[3 * j + k].items():
-                    row = acc.setdefault(u, [sp.S.Zero] * 3)
-                    for i in range(3):
-                        if c[i][k] != 0:
-                            row[i] += c[i][k] * coef
-        out = {u: [self._name(e) for e in row] for u, row in acc.items()}
-        out = {u: row for u, row in out.items() if any(e != 0 for e in row)}
-        if key is not None:
-            self._lin_cache[key] = out
-        return out
+            key, found = None, None
+        if found is None:
+            speeds = self._u + self._u_aux
+            found = linear_form(
+                self._actual_vector(vec), frame, speeds, self.book, self._dcm
+            )
+            if found is None:
+                raise ValueError("a velocity is not linear in the speeds")
+            if key is not None:
+                self._forms[key] = found
+        return found
+
+    def _motion(self, form: tuple[list[list[Any]], list[Any]]) -> Motion:
+        """A velocity and its time derivative (the auxiliary speeds zero
+        there) as :class:`Motion`."""
+        columns, rest = form
+        o = len(self._u)
+        rate = form_rate(
+            (columns[:o], rest), self._u, self.book, self._derivative_of, self._memo
+        )
+        return Motion(
+            partials=_nonzero(columns),
+            rates=_nonzero(columns[:o]),
+            rest=[self.book.name(r) for r in rate],
+        )
 
     # ------------------------------------------------------------------
     # Kane's equations
@@ -688,30 +649,29 @@ class FastKane:
     ) -> tuple[sp.Matrix, sp.Matrix]:
         """Form ``Fr`` and ``Fr*`` (returned like ``KanesMethod``'s)."""
         self._bodies, self._loads = list(bodies), list(loads or [])
+        book = self.book
         n_frame = self._inertial
         o, m = len(self._u), len(self._u_dep)
         p = o - m
-        keys = self._us
-        aux = self._uas
-
-        rows = keys + aux
+        rows = o + len(self._u_aux)
 
         # Fr, including auxiliary rows.
         loads_in = []
         for load in self._loads:
             where, what = load[0], load[1]
             if isinstance(where, Point):
-                form = self._lin_vec(where.vel(n_frame), n_frame)
-                force = self._express(what, n_frame)
+                form = self._form(where.vel(n_frame), n_frame)
+                frame = n_frame
             elif isinstance(where, ReferenceFrame):
-                form = self._lin_vec(where.ang_vel_in(n_frame), where)
-                force = self._express(what, where)
+                form = self._form(where.ang_vel_in(n_frame), where)
+                frame = where
             else:
                 raise TypeError(
                     f"a load acts on a Point or a ReferenceFrame, not {where!r}"
                 )
-            loads_in.append(([form.get(u) for u in rows], force))
-        fr = active_rows(loads_in, len(rows), self._name)
+            force = named_measures(self._actual_vector(what), frame, book, self._dcm)
+            loads_in.append((_nonzero(form[0]), force))
+        fr = active_rows(loads_in, rows, book.name)
 
         # Fr*: mass matrix (all speeds' derivatives) and the rest.
         translations, rotations = [], []
@@ -725,34 +685,27 @@ class FastKane:
             mass = sp.sympify(body.mass)
             if mass.has(_T):
                 raise NotImplementedError("masses that vary in time")
-            v = self._lin_vec(point.vel(n_frame), n_frame)
-            motion = Motion(
-                partials=[v.get(u) for u in rows],
-                rates=[v.get(u) for u in keys],
-                rest=self._remainder(v, n_frame),
-            )
-            translations.append((mass, motion))
+            form = self._form(point.vel(n_frame), n_frame)
+            translations.append((mass, self._motion(form)))
             if frame is None:
                 continue
             inertia = body.central_inertia
             if any(sp.sympify(c).has(_T) for c, _, _ in inertia.args):
                 raise NotImplementedError("inertia dyadics that vary in time")
             imat = self._inertia_matrix(inertia, frame)
-            w = self._lin_vec(frame.ang_vel_in(n_frame), frame)
+            form = self._form(frame.ang_vel_in(n_frame), frame)
+            columns, rest = form
             omega = [
-                self._name(e)
-                for e in self._vec_sum(
-                    [(w[u], u) for u in keys if u in w]
-                    + ([(w[None], 1)] if None in w else [])
+                book.name(
+                    sp.Add(
+                        rest[i],
+                        *[c[i] * u for c, u in zip(columns[:o], self._u, strict=True)],
+                    )
                 )
+                for i in range(3)
             ]
-            motion = Motion(
-                partials=[w.get(u) for u in rows],
-                rates=[w.get(u) for u in keys],
-                rest=self._remainder(w, frame),
-            )
-            rotations.append((imat, omega, motion))
-        mm, non = inertia_rows(translations, rotations, len(rows), o, self._name)
+            rotations.append((imat, omega, self._motion(form)))
+        mm, non = inertia_rows(translations, rotations, rows, o, book.name)
 
         mm_mat = sp.Matrix(mm[:o]) if o else sp.zeros(0, 0)
         non_mat = sp.Matrix(non[:o]) if o else sp.zeros(0, 1)
@@ -762,72 +715,67 @@ class FastKane:
             mm_mat = mm_mat[:p, :] + _matmul(ars_t, mm_mat[p:, :])
             non_mat = non_mat[:p, :] + _matmul(ars_t, non_mat[p:, :])
             fr_mat = fr_mat[:p, :] + _matmul(ars_t, fr_mat[p:, :])
-        udot = sp.Matrix(self._uds)
+        udot = sp.Matrix([u.diff(_T) for u in self._u])
         self._k_d = mm_mat
         self._f_d = -(fr_mat - non_mat)
-        self._fr_plain = fr_mat
-        self._frstar_plain = -(_matmul(mm_mat, udot) + non_mat)
-        if aux:
-            na = len(aux)
+        self._fr = fr_mat
+        self._frstar = -(_matmul(mm_mat, udot) + non_mat)
+        if self._u_aux:
+            na = len(self._u_aux)
             mma = sp.Matrix(mm[o:]) if o else sp.zeros(na, 0)
-            self._aux_plain = sp.Matrix(fr[o:]) - (
-                _matmul(mma, udot) + sp.Matrix(non[o:])
-            )
+            self._aux = sp.Matrix(fr[o:]) - (_matmul(mma, udot) + sp.Matrix(non[o:]))
         else:
-            self._aux_plain = None
-        self._fr = self._back(self._fr_plain)
-        self._frstar = self._back(self._frstar_plain)
-        return self._fr, self._frstar
-
-    def _vec_sum(self, terms: list[tuple[list[Any], Any]]) -> list[Any]:
-        return [sum((row[i] * c for row, c in terms), sp.S.Zero) for i in range(3)]
-
-    def _remainder(
-        self, form: dict[Any, list[Any]], frame: ReferenceFrame
-    ) -> list[Any]:
-        """The acceleration in ``frame`` without the speeds' derivatives.
-
-        ``d/dt (sum V_r u_r + V_t) = sum V_r u_r' + sum V_r' u_r + V_t'`` with
-        measure numbers in ``frame`` (for a frame's own angular velocity this
-        is its angular acceleration; for a velocity in the inertial frame, the
-        acceleration).  Auxiliary speeds are zero here."""
-        out = [sp.S.Zero] * 3
-        for u, row in form.items():
-            if u is not None and u not in self._us:
-                continue
-            factor = sp.S.One if u is None else u
-            for i in range(3):
-                if row[i] != 0:
-                    out[i] += self._dt_named(row[i]) * factor
-        return [self._name(e) for e in out]
-
-    def _dt_named(self, e: Any) -> Any:
-        if e in self._defs:
-            return self._dz_of(e)
-        if minus_first(e) and -e in self._defs:
-            return -self._dz_of(-e)
-        return self._name(self._dt(e))
+            self._aux = None
+        return self.fr, self.frstar
 
     def _inertia_matrix(self, dyadic: Any, frame: ReferenceFrame) -> list[list[Any]]:
         out = [[sp.S.Zero] * 3 for _ in range(3)]
         for coef, v1, v2 in dyadic.args:
-            c1 = self._express(v1, frame)
-            c2 = self._express(v2, frame)
-            coef = self._plain(coef)
+            c1 = named_measures(v1, frame, self.book, self._dcm)
+            c2 = named_measures(v2, frame, self.book, self._dcm)
             for i in range(3):
                 for j in range(3):
                     if c1[i] != 0 and c2[j] != 0:
                         out[i][j] += coef * c1[i] * c2[j]
-        return [[self._name(e) for e in row] for row in out]
+        return [[self.book.name(e) for e in row] for row in out]
 
     # ------------------------------------------------------------------
-    # results
+    # results: the book's intermediates as plain symbols z1, z2, ...
+
+    def _symbols(self) -> dict[Any, sp.Symbol]:
+        """Each intermediate made so far and its plain symbol."""
+        book = self.book
+        for k in range(len(self._public) + 1, len(book) + 1):
+            variables, _ = book.canonical(k)
+            z = book.Z(sp.Integer(k), *variables)
+            self._public[z] = sp.Symbol(book.label(z))
+        return self._public
+
+    def _out(self, expr: Any) -> Any:
+        return sp.sympify(expr).xreplace(self._symbols())
+
+    def _plain_definitions(self) -> dict[sp.Symbol, Any]:
+        """Each plain symbol's definition, over the plain symbols."""
+        symbols = list(self._symbols().values())
+        Z = self.book.Z
+
+        def walk(e: Any) -> Any:
+            if isinstance(e, Z):
+                return symbols[int(e.args[0]) - 1]
+            if not e.args:
+                return e
+            args = [walk(a) for a in e.args]
+            if all(a is b for a, b in zip(args, e.args, strict=True)):
+                return e
+            return e.func(*args)
+
+        for k in range(len(self._plain) + 1, len(symbols) + 1):
+            self._plain[symbols[k - 1]] = walk(self.book.canonical(k)[1])
+        return self._plain
+
     def _need(self) -> None:
         if self._fr is None:
             raise ValueError("call kanes_equations(bodies, loads) first")
-
-    def _back(self, expr: Any) -> Any:
-        return sp.sympify(expr).xreplace(self._from_plain)
 
     @property
     def q(self) -> sp.Matrix:
@@ -838,15 +786,27 @@ class FastKane:
         return sp.Matrix(self._u)
 
     @property
+    def fr(self) -> sp.Matrix:
+        """``Fr`` (the reduced rows), written with intermediates."""
+        self._need()
+        return self._out(self._fr)
+
+    @property
+    def frstar(self) -> sp.Matrix:
+        """``Fr*`` (the reduced rows), written with intermediates."""
+        self._need()
+        return self._out(self._frstar)
+
+    @property
     def mass_matrix(self) -> sp.Matrix:
         """``KanesMethod.mass_matrix``: reduced dynamic rows, then constraints."""
         self._need()
-        return self._back(self._k_d.col_join(self._k_dnh))
+        return self._out(self._k_d.col_join(self._k_dnh))
 
     @property
     def forcing(self) -> sp.Matrix:
         self._need()
-        return self._back((-self._f_d).col_join(-self._f_dnh))
+        return self._out((-self._f_d).col_join(-self._f_dnh))
 
     @property
     def mass_matrix_kin(self) -> sp.Matrix:
@@ -854,8 +814,7 @@ class FastKane:
 
     @property
     def forcing_kin(self) -> sp.Matrix:
-        forms = [self._form_expr(f) for f in self._qdot_form]
-        return self._back(sp.Matrix(forms))
+        return self._out(sp.Matrix(self._qdot_ind))
 
     @property
     def mass_matrix_full(self) -> sp.Matrix:
@@ -871,41 +830,24 @@ class FastKane:
     @property
     def auxiliary_eqs(self) -> sp.Matrix:
         self._need()
-        if self._aux_plain is None:
+        if self._aux is None:
             raise ValueError("no auxiliary speeds have been declared")
-        return self._back(self._aux_plain)
+        return self._out(self._aux)
 
     @property
     def intermediates(self) -> list[tuple[sp.Symbol, Any]]:
         """``(symbol, expression)`` pairs in evaluation order."""
-        return [(z, self._back(e)) for z, e in self._defs.items()]
+        return list(self._plain_definitions().items())
 
     def substitute(self, expr: Any) -> Any:
-        """``expr`` with every intermediate replaced by its full expression.
-
-        One walk visits each shared subexpression once (``xreplace`` walks
-        the written-out tree, which for a large model is far bigger than the
-        graph of shared subexpressions it is made of)."""
-        rule: dict[Any, Any] = dict(self._from_plain)
-        done: dict[Any, Any] = {}
-
-        def walk(e: Any) -> Any:
-            found = rule.get(e)
-            if found is not None or not e.args:
-                return e if found is None else found
-            found = done.get(e)
-            if found is None:
-                args = [walk(a) for a in e.args]
-                same = all(a is b for a, b in zip(args, e.args, strict=True))
-                found = done[e] = e if same else e.func(*args)
-            return found
-
-        for z, e in self._defs.items():
-            rule[z] = walk(e)
-        expr = sp.sympify(expr)
-        if isinstance(expr, sp.MatrixBase):
-            return expr.applyfunc(walk)
-        return walk(expr)
+        """``expr`` with every intermediate replaced by its full expression
+        (:meth:`Intermediates.expand`: each intermediate written out once)."""
+        back = {s: z for z, s in self._symbols().items()}
+        expr = sp.sympify(expr).xreplace(back)
+        if isinstance(expr, sp.MatrixBase):  # one pass for every entry
+            flat = self.book.expand(sp.Tuple(*expr))
+            return sp.Matrix(expr.rows, expr.cols, list(flat))
+        return self.book.expand(expr)
 
     def numeric(self, args: Sequence[Any], exprs: Any):
         """A numpy function of ``args`` computing ``exprs`` (a matrix, an
@@ -913,25 +855,25 @@ class FastKane:
         in order.  ``args``: coordinates, speeds, constants, ...; every other
         symbol in ``exprs`` must be among them.  Complex arguments work (for
         complex-step derivatives)."""
-        to_plain = {f: s for f, s in self._to_plain.items() if s is not None}
-        plain_args = [sp.sympify(a).xreplace(to_plain) for a in args]
-        rename = {a: sp.Symbol(f"_x{k}") for k, a in enumerate(plain_args)}
-        rename.update({z: sp.Symbol(f"_{z.name}") for z in self._defs})
+        defs = dict(self.intermediates)
+        rename = {sp.sympify(a): sp.Symbol(f"_x{k}") for k, a in enumerate(args)}
+        rename.update({z: sp.Symbol(f"_{z.name}") for z in defs})
 
         def convert(e: Any) -> Any:
             if isinstance(e, list | tuple):
                 return [convert(x) for x in e]
             e = sp.sympify(e)
             if isinstance(e, sp.MatrixBase):
-                return e.applyfunc(lambda x: x.xreplace(to_plain).xreplace(rename))
-            return e.xreplace(to_plain).xreplace(rename)
+                return e.applyfunc(lambda x: x.xreplace(rename))
+            return e.xreplace(rename)
 
         plain = convert(exprs)
-        used = self._used(plain)  # renamed symbols: look them up by name
+        used = _used(plain, defs)
         printer = NumPyPrinter({"order": "none", "fully_qualified_modules": True})
-        lines = [f"def _numeric({', '.join(str(rename[a]) for a in plain_args)}):"]
-        for z, e in self._defs.items():
-            if rename[z] in used:
+        names = ", ".join(str(rename[sp.sympify(a)]) for a in args)
+        lines = [f"def _numeric({names}):"]
+        for z, e in defs.items():
+            if z in used:
                 lines.append(f"    {rename[z]} = {printer.doprint(e.xreplace(rename))}")
 
         def emit(e: Any) -> str:
@@ -950,23 +892,22 @@ class FastKane:
         exec("\n".join(lines), namespace)  # noqa: S102  (generated from sympy)
         return namespace["_numeric"]
 
-    def _used(self, expr: Any) -> set[Any]:
-        """The intermediates ``expr`` needs, directly or through others."""
-        if isinstance(expr, list | tuple):
-            found: set[Any] = set()
-            for e in expr:
-                found |= sp.sympify(e).free_symbols
-        else:
-            found = sp.sympify(expr).free_symbols
-        defs = {z: e for z, e in self._defs.items()}
-        byname = {sp.Symbol(f"_{z.name}"): z for z in defs}
-        todo = [byname.get(s, s) for s in found]
-        todo = [s for s in todo if s in defs]
-        seen: set[Any] = set()
-        while todo:
-            z = todo.pop()
-            if z in seen:
-                continue
-            seen.add(z)
-            todo.extend(s for s in self._defs[z].free_symbols if s in self._defs)
-        return {sp.Symbol(f"_{z.name}") for z in seen}
+
+def _used(expr: Any, defs: dict[sp.Symbol, Any]) -> set[sp.Symbol]:
+    """The intermediates (plain symbols, keys of ``defs``) that ``expr`` --
+    written with them renamed ``_z1``, ... -- needs, directly or through
+    others."""
+    parts = expr if isinstance(expr, list | tuple) else [expr]
+    found: set[Any] = set()
+    for e in parts:
+        found |= sp.sympify(e).free_symbols
+    byname = {sp.Symbol(f"_{z.name}"): z for z in defs}
+    todo = [byname[s] for s in found if s in byname]
+    seen: set[Any] = set()
+    while todo:
+        z = todo.pop()
+        if z in seen:
+            continue
+        seen.add(z)
+        todo.extend(s for s in defs[z].free_symbols if s in defs)
+    return seen
