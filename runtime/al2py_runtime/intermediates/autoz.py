@@ -443,6 +443,10 @@ class Intermediates:
             return self._labels[k]
         return self._labels[k] + "(" + ", ".join(str(a) for a in z.args[1:]) + ")"
 
+    def label_of(self, k: int) -> str:
+        """Intermediate number ``k``'s name (``Z12``), at its own variables."""
+        return self._labels[k]
+
     def canonical(self, k: int) -> tuple[tuple[Any, ...], Any]:
         """Intermediate number ``k``'s own variables and its definition over
         them."""

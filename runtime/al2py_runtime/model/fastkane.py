@@ -40,6 +40,7 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import (
     Particle,
     Point,
@@ -476,9 +477,10 @@ class FastKane:
         self._dcms: dict = {}
         self._forms: dict = {}
         self._memo: dict = {}  # time derivatives, for :meth:`_derivative_of`
-        self._public: dict[Any, sp.Symbol] = {}  # intermediate -> plain symbol
+        self._public: list[sp.Symbol] = []  # plain symbol of z_k at [k - 1]
         self._plain: dict[sp.Symbol, Any] = {}  # plain symbol -> definition
 
+        self._speed_set = set(self._u + self._u_aux)
         # Kinematic differential equations: q' = K u + k.
         self._solve_kinematics(kd_eqs)
         # Velocity and acceleration constraints.
@@ -534,7 +536,51 @@ class FastKane:
         return expr.xreplace(self._qdot_rule) if expr.has(sp.Derivative) else expr
 
     def _actual_vector(self, vec: Vector) -> Vector:
-        return Vector([(m.applyfunc(self._actual), f) for m, f in vec.args])
+        """``vec`` with :meth:`_actual` measure numbers, each part free of
+        speeds and larger than the book's limit named (:meth:`_shrink`)."""
+        memo: dict = {}
+        return Vector(
+            [
+                (m.applyfunc(lambda e: self._shrink(self._actual(e), memo)), f)
+                for m, f in vec.args
+            ]
+        )
+
+    def _shrink(self, expr: Any, memo: dict) -> Any:
+        """``expr`` with each part that holds no speed and is larger than
+        :attr:`Intermediates.LIMIT` nodes named, bottom-up: sympy's own
+        vectors (``v2pt_theory`` through a chain of frames) hold long
+        products of direction cosines, which splitting by the speeds would
+        walk once per speed.  ``memo`` keeps parts shared between measure
+        numbers."""
+        speeds = self._speed_set
+        limit = self.book.LIMIT
+        name = self.book.name
+
+        def walk(e: Any) -> tuple[Any, int, bool]:
+            found = memo.get(e)
+            if found is not None:
+                return found
+            if e.is_Atom:
+                out = (e, 1, False)
+            elif isinstance(e, AppliedUndef | sp.Derivative):
+                out = (e, 1, e in speeds or isinstance(e, sp.Derivative))
+            else:
+                args, size, moving = [], 1, False
+                for a in e.args:
+                    b, n, m = walk(a)
+                    args.append(b)
+                    size += n
+                    moving = moving or m
+                changed = any(a is not b for a, b in zip(args, e.args, strict=True))
+                new = e.func(*args) if changed else e
+                if not moving and size > limit and isinstance(new, sp.Expr):
+                    new, size = name(new), 1
+                out = (new, size, moving)
+            memo[e] = out
+            return out
+
+        return walk(sp.sympify(expr))[0]
 
     def _dcm(self, x: ReferenceFrame, f: ReferenceFrame) -> sp.Matrix:
         return named_dcm(x, f, self.book, self._dcms)
@@ -742,35 +788,45 @@ class FastKane:
     # ------------------------------------------------------------------
     # results: the book's intermediates as plain symbols z1, z2, ...
 
-    def _symbols(self) -> dict[Any, sp.Symbol]:
-        """Each intermediate made so far and its plain symbol."""
+    def _symbols(self) -> list[sp.Symbol]:
+        """The plain symbol of each intermediate made so far (``[k - 1]``
+        for number ``k``)."""
         book = self.book
         for k in range(len(self._public) + 1, len(book) + 1):
-            variables, _ = book.canonical(k)
-            z = book.Z(sp.Integer(k), *variables)
-            self._public[z] = sp.Symbol(book.label(z))
+            self._public.append(sp.Symbol(book.label_of(k)))
         return self._public
 
-    def _out(self, expr: Any) -> Any:
-        return sp.sympify(expr).xreplace(self._symbols())
-
-    def _plain_definitions(self) -> dict[sp.Symbol, Any]:
-        """Each plain symbol's definition, over the plain symbols."""
-        symbols = list(self._symbols().values())
+    def _to_plain(self, expr: Any) -> Any:
+        """``expr`` with each intermediate as its plain symbol (one walk,
+        no intermediate made again)."""
+        symbols = self._symbols()
         Z = self.book.Z
+        memo: dict = {}
 
         def walk(e: Any) -> Any:
             if isinstance(e, Z):
                 return symbols[int(e.args[0]) - 1]
             if not e.args:
                 return e
-            args = [walk(a) for a in e.args]
-            if all(a is b for a, b in zip(args, e.args, strict=True)):
-                return e
-            return e.func(*args)
+            found = memo.get(e)
+            if found is None:
+                args = [walk(a) for a in e.args]
+                same = all(a is b for a, b in zip(args, e.args, strict=True))
+                found = memo[e] = e if same else e.func(*args)
+            return found
 
+        if isinstance(expr, sp.MatrixBase):
+            return sp.ImmutableMatrix(expr.rows, expr.cols, [walk(x) for x in expr])
+        return walk(sp.sympify(expr))
+
+    def _out(self, expr: Any) -> Any:
+        return self._to_plain(expr)
+
+    def _plain_definitions(self) -> dict[sp.Symbol, Any]:
+        """Each plain symbol's definition, over the plain symbols."""
+        symbols = self._symbols()
         for k in range(len(self._plain) + 1, len(symbols) + 1):
-            self._plain[symbols[k - 1]] = walk(self.book.canonical(k)[1])
+            self._plain[symbols[k - 1]] = self._to_plain(self.book.canonical(k)[1])
         return self._plain
 
     def _need(self) -> None:
@@ -842,8 +898,14 @@ class FastKane:
     def substitute(self, expr: Any) -> Any:
         """``expr`` with every intermediate replaced by its full expression
         (:meth:`Intermediates.expand`: each intermediate written out once)."""
-        back = {s: z for z, s in self._symbols().items()}
-        expr = sp.sympify(expr).xreplace(back)
+        number = {s: k for k, s in enumerate(self._symbols(), 1)}
+        expr = sp.sympify(expr)
+        back = {}
+        for s in expr.free_symbols:
+            k = number.get(s)
+            if k is not None:
+                back[s] = self.book.Z(sp.Integer(k), *self.book.canonical(k)[0])
+        expr = expr.xreplace(back)
         if isinstance(expr, sp.MatrixBase):  # one pass for every entry
             flat = self.book.expand(sp.Tuple(*expr))
             return sp.Matrix(expr.rows, expr.cols, list(flat))
