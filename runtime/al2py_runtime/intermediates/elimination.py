@@ -1,8 +1,10 @@
 """Symbolic Gauss-Jordan elimination with named entries and numeric pivots.
 
-Shared by :class:`al2py_runtime.model.fastkane.FastKane` and the AutoZ book
-(:class:`al2py_runtime.intermediates.autoz.Intermediates`): each keeps its own names and
-its own probe values, and both solve the same way.
+The AutoZ book (:class:`al2py_runtime.intermediates.autoz.Intermediates`)
+solves with it (``Intermediates.solve``: a script's ``Solve``, ``Constrain``
+and ``Kane()``, and :class:`~al2py_runtime.model.fastkane.FastKane`'s
+kinematical equations and constraints); the names and the probe values are
+the caller's.
 
 >>> import sympy as sp
 >>> x, one, two = sp.Symbol("x"), sp.S.One, sp.S(2)

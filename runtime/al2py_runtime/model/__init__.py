@@ -16,8 +16,9 @@ One concept per module; :class:`al2py_runtime.model.model.Model` assembles them:
   inputs (:class:`KaneInputs`, :func:`kane_inputs`, :func:`kanes_method`).
 * :mod:`.arrange` -- the pure algebra of ``ZERO`` after ``Kane()`` and of
   ``Constrain`` (no model state)
-* :mod:`.fastkane` -- :class:`~.fastkane.FastKane`, Kane's equations with
-  named intermediates (for large models)
+* :mod:`.fastkane` -- the one Kane engine: linear forms of velocities,
+  their rates and the Fr/Fr* rows, over named intermediates;
+  :class:`~.fastkane.FastKane` runs it on ``KanesMethod``'s inputs
 
 The model of a falling particle, exported to ``KanesMethod``:
 
