@@ -31,13 +31,14 @@ from .state import command, t
 __all__ = ["KaneEquations"]
 
 
+def _same(expr: Any) -> Any:
+    return expr
+
+
 class KaneEquations:
     """``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model."""
 
     # -------------------------------------------------- Fr and Fr*
-
-    def _dot_rows(self, vec: Vector, partials: list) -> list:
-        return [vec.dot(p) if p != Vector(0) else 0 for p in partials]
 
     def _zpartials(
         self, v: Vector, speeds: list, frame: ReferenceFrame, book: Any
@@ -69,7 +70,15 @@ class KaneEquations:
             if f == Vector(0):
                 continue
             if book is None:
-                dots = self._dot_rows(f, self.partial_velocities(v, speeds))
+                # vectors dotted as sympy does: the script's names and form
+                # kept, as Autolev printed Fr() with AutoZ OFF
+                parts = [
+                    None if p == Vector(0) else p
+                    for p in self.partial_velocities(v, speeds)
+                ]
+                dots = active_rows(
+                    [(parts, f)], len(speeds), _same, dot=lambda p, g: g.dot(p)
+                )
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
                 keep = self.ws.specified_inputs([])

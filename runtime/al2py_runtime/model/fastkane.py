@@ -346,14 +346,17 @@ def inertia_rows(
 
 
 def active_rows(
-    loads: Iterable[tuple[Sequence[Sequence[Any] | None], Sequence[Any]]],
+    loads: Iterable[tuple[Sequence[Any], Any]],
     rows: int,
     name: Any,
+    dot: Callable[[Any, Any], Any] = dot3,
 ) -> list[Any]:
     """Kane's generalized active forces, ``Fr[r] = sum V_r . F``: each load
     is ``(partials, force)``, the partial velocities (or partial angular
-    velocities) of where it acts, per row, and the force (or torque), all as
-    measure numbers in one frame.
+    velocities) of where it acts, per row (``None``: zero), and the force
+    (or torque), all as measure numbers in one frame -- or, with another
+    ``dot``, as sympy vectors (a script's ``Fr()`` with ``AutoZ OFF``, whose
+    rows keep the script's form).
 
     >>> import sympy as sp
     >>> m, g = sp.symbols("m g")
@@ -364,7 +367,7 @@ def active_rows(
     for partials, force in loads:
         for r, vr in enumerate(partials):
             if vr is not None:
-                fr[r] += name(dot3(vr, force))
+                fr[r] += name(dot(vr, force))
     return fr
 
 
