@@ -5,8 +5,8 @@ spherical joint and oriented by body-fixed 1-2-3 angles, so the model has 3n
 generalized speeds (n = 8 gives 24, the size of a detailed bicycle model).
 
 For each size it prints the derivation time with intermediate variables
-(``al2py_runtime.model.fastkane.FastKane``, meant for al2py's own derivation, issue 10),
-sympy's ``KanesMethod`` without intermediates on the same sympy model, their
+(``al2py_runtime.model.fastkane.FastKane``: the runtime's one Kane engine,
+the one that derives a converted script, run on sympy's inputs), sympy's ``KanesMethod`` without intermediates on the same sympy model, their
 ratio, and the conversion and import time of the converted Autolev script
 through the runtime; then the growth exponent of each column.  ``FastKane``,
 ``KanesMethod`` and the import each run in a child process stopped after
