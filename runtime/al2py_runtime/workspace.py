@@ -470,7 +470,7 @@ class Workspace(Mapping):
         return value
 
     def _numbers(self, value: sp.Expr) -> sp.Expr:
-        floats = value.atoms(sp.Float)
+        floats = _floats(value)
         if not floats:
             return value
         eps = self.settings.autoepsilon
@@ -922,6 +922,26 @@ def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
         raise KeyError(
             f"{name!r}: index out of range for a {val.rows}x{val.cols} matrix"
         ) from None
+
+
+def _floats(expr: sp.Basic) -> set:
+    """``expr.atoms(sp.Float)``, each shared part walked once (sympy's walk
+    visits a part as often as it occurs: a large unexpanded model repeats
+    its parts many times)."""
+    found: set = set()
+    seen: set = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, sp.Float):
+            found.add(e)
+            continue
+        for a in e.args:
+            if a.args or isinstance(a, sp.Float):
+                if a not in seen:
+                    seen.add(a)
+                    stack.append(a)
+    return found
 
 
 def _xreplace(expr: Any, table: dict) -> Any:

@@ -49,6 +49,10 @@ FOREIGN = {
     "_dcm_dict": "sympy ReferenceFrame: the frames' direction cosine graph",
     "_dcm_cache": "sympy ReferenceFrame: cached direction cosines",
     "_dict_list": "sympy ReferenceFrame: the frames' angular velocity graphs",
+    "_dcm": "sympy ReferenceFrame: sets direction cosines (orient_explicit"
+    " without differentiating them for an angular velocity set at once)",
+    "_var_dict": "sympy ReferenceFrame: cached variable maps (reset on a new"
+    " orientation, as sympy's orient_* do)",
     "_print": "sympy printers' dispatch (the printer extension protocol)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",

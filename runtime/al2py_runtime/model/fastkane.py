@@ -585,7 +585,7 @@ class FastKane:
 
         return walk(sp.sympify(expr))[0]
 
-    def _dcm(self, x: ReferenceFrame, f: ReferenceFrame) -> sp.Matrix:
+    def _frame_dcm(self, x: ReferenceFrame, f: ReferenceFrame) -> sp.Matrix:
         return named_dcm(x, f, self.book, self._dcms)
 
     def _solve(self, a: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
@@ -669,7 +669,7 @@ class FastKane:
         if found is None:
             speeds = self._u + self._u_aux
             found = linear_form(
-                self._actual_vector(vec), frame, speeds, self.book, self._dcm
+                self._actual_vector(vec), frame, speeds, self.book, self._frame_dcm
             )
             if found is None:
                 raise ValueError("a velocity is not linear in the speeds")
@@ -718,7 +718,9 @@ class FastKane:
                 raise TypeError(
                     f"a load acts on a Point or a ReferenceFrame, not {where!r}"
                 )
-            force = named_measures(self._actual_vector(what), frame, book, self._dcm)
+            force = named_measures(
+                self._actual_vector(what), frame, book, self._frame_dcm
+            )
             loads_in.append((_nonzero(form[0]), force))
         fr = active_rows(loads_in, rows, book.name)
 
@@ -780,8 +782,8 @@ class FastKane:
     def _inertia_matrix(self, dyadic: Any, frame: ReferenceFrame) -> list[list[Any]]:
         out = [[sp.S.Zero] * 3 for _ in range(3)]
         for coef, v1, v2 in dyadic.args:
-            c1 = named_measures(v1, frame, self.book, self._dcm)
-            c2 = named_measures(v2, frame, self.book, self._dcm)
+            c1 = named_measures(v1, frame, self.book, self._frame_dcm)
+            c2 = named_measures(v2, frame, self.book, self._frame_dcm)
             for i in range(3):
                 for j in range(3):
                     if c1[i] != 0 and c2[j] != 0:

@@ -249,8 +249,11 @@ class Kinematics:
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
             m = kin.axis_dcm(axis.to_matrix(a), angle)
-            b.orient_explicit(a, m)
-            self._name_dcms(b)
+            # orient_explicit(a, m) without its angular velocity (sympy
+            # differentiates the matrix, expands and trigsimps: minutes for
+            # a musculoskeletal model's axes), which is set here instead
+            b._dcm(a, m)
+            b._var_dict.clear()
             rate = sp.diff(sp.sympify(angle), t)
             b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
         else:
