@@ -131,8 +131,9 @@ unitOp
     | DIV
     ;
 
+// `KG.M^2`: a dot multiplies unit words (read as one FILENAME token).
 unitFactor
-    : ident (CARET MINUS? NUMBER)?
+    : (ident | FILENAME) (CARET MINUS? NUMBER)?
     ;
 
 // -- commands ---------------------------------------------------------------

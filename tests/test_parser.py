@@ -266,6 +266,16 @@ def test_tutor6_input_units():
     assert inputs[-1].comment == "Error tolerances"
 
 
+def test_a_dot_multiplies_unit_words():
+    script = parse("Constants I, P\nInput I = 2 KG.M^2/S, P = 1 M/KG.S\n")
+    (stmt,) = [s for s in script.statements if isinstance(s, ir.InputStmt)]
+    first, second = stmt.items
+    assert first.unit.factors == (("KG", 1), ("M", 2), ("S", -1))
+    assert first.unit.text == "KG.M^2/S"
+    # the dot multiplies left to right, as * does: M/KG*S
+    assert second.unit.factors == (("M", 1), ("KG", -1), ("S", 1))
+
+
 # ----------------------------------------------------------- single statements
 
 

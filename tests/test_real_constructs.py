@@ -333,3 +333,20 @@ def test_autoz_name_from_a_session_gets_a_hint(tmp_path):
     with pytest.raises(AutolevError) as info:
         run("Variables u\nx = Z12*u\n", tmp_path)
     assert "AutoZ" in info.value.message and info.value.span.col == 5
+
+
+def test_a_dot_multiplies_unit_words(tmp_path):
+    """``Units P=KG.M/S`` and ``Input I=2 KG.M^2``: research scripts write a
+    product of units with a dot (the lexer reads ``KG.M`` as one word)."""
+    src = (
+        "Constants I\nVariables x'\nx' = I\nP = I*x\nUnits T=S, P=KG.M/S, X=G.CM\n"
+        "Input I=2 KG.M^2, x=0, tFinal=1, integStp=0.5\nOutput T, x, P\n"
+        "CODE ODE() f.c\n"
+    )
+    mod, _ = run(src, tmp_path)
+    result = mod.run()
+    table = result.tables[0]
+    assert [c.unit for c in table.columns[1:]] == ["G.CM", "KG.M/S"]
+    # x' = 2 (internal units, kg*m): x(1) = 2 kg*m = 2e5 g*cm; P = I*x = 4
+    assert result["X"][-1] == pytest.approx(2e5)
+    assert result["P"][-1] == pytest.approx(4.0)

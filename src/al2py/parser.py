@@ -20,6 +20,7 @@ adds three things on top of it:
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
@@ -190,6 +191,11 @@ def _statement_ranges(tokens: list[Token]) -> Iterator[tuple[int, int]]:
             first, depth = k + 1, 0
             if tok.type == Token.EOF:
                 return
+
+
+#: a unit written with dots (``KG.M``, ``M/KG.S``), which the lexer reads as
+#: one file-name token
+_DOTTED_UNIT = re.compile(r"[A-Za-z_]\w*([./][A-Za-z_]\w*)+")
 
 
 @dataclass
@@ -737,19 +743,39 @@ class _IRBuilder(AutolevVisitor):
             if isinstance(child, AutolevParser.UnitOpContext):
                 divide = child.DIV() is not None
             else:
-                word, power = self.visit(child)
+                parts = self.visit(child)
+                # ``A/B.C`` is ``A/B*C``: the dot multiplies, left to right
+                word, power = parts[0]
                 factors.append((word, -power if divide else power))
+                factors.extend(parts[1:])
         return ir.UnitExpr(self._ctx_span(ctx), tuple(factors), self._text(ctx))
 
-    def visitUnitFactor(self, ctx: AutolevParser.UnitFactorContext):
-        word = ctx.ident().getText()
+    def visitUnitFactor(
+        self, ctx: AutolevParser.UnitFactorContext
+    ) -> list[tuple[str, int]]:
+        """``M^2`` -> [("M", 2)]; ``KG.M^2`` (a dot multiplies) ->
+        [("KG", 1), ("M", 2)], ``M/KG.S`` -> [("M", 1), ("KG", -1), ("S", 1)]
+        (the lexer reads a dotted word as one token): the power is the last
+        word's."""
+        if ctx.ident() is not None:
+            parts = [(ctx.ident().getText(), 1)]
+        else:
+            token = ctx.FILENAME().symbol
+            if not _DOTTED_UNIT.fullmatch(token.text):
+                raise self._error(f"cannot read unit '{token.text}'", token)
+            parts = [
+                (word, -1 if op == "/" else 1)
+                for op, word in re.findall(r"([./]?)([A-Za-z_]\w*)", token.text)
+            ]
         number = ctx.NUMBER()
-        if number is None:
-            return word, 1
-        if not number.getText().isdigit():
-            raise self._error("unit exponents must be integers", number.symbol)
-        power = int(number.getText())
-        return word, -power if ctx.MINUS() is not None else power
+        if number is not None:
+            if not number.getText().isdigit():
+                raise self._error("unit exponents must be integers", number.symbol)
+            power = int(number.getText())
+            power = -power if ctx.MINUS() is not None else power
+            word, sign = parts[-1]
+            parts[-1] = (word, sign * power)
+        return parts
 
     def visitCodeStmt(self, ctx: AutolevParser.CodeStmtContext) -> ir.CodeStmt:
         args = self.visit(ctx.argList()) if ctx.argList() is not None else ()
@@ -808,7 +834,11 @@ class _IRBuilder(AutolevVisitor):
         value: ir.Expr
         if unit is None:
             value = ir.Number(value_span, word.getText())
-        elif len(unit.unitFactor()) == 1 and unit.unitFactor(0).NUMBER() is None:
+        elif (
+            len(unit.unitFactor()) == 1
+            and unit.unitFactor(0).NUMBER() is None
+            and unit.unitFactor(0).ident() is not None
+        ):
             value = ir.Name(value_span, word.getText())
         else:  # ``Units VX=M/S``
             value = self.visit(unit)

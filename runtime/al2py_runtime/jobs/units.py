@@ -134,7 +134,8 @@ class Unit:
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>\d+(?:\.\d*)?(?:[eE][-+]?\d+)?|\.\d+)"
-    r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[*/^()+-]))"
+    r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[*/^()+-])"
+    r"|(?P<dot>\.(?=[A-Za-z_])))"
 )
 
 
@@ -146,7 +147,8 @@ def _tokens(text: str) -> list[str]:
         m = _TOKEN.match(text, pos)
         if m is None or m.end() == pos:
             raise UnitError(f"cannot read unit {text!r} at {text[pos:]!r}")
-        out.append(m.group(m.lastgroup).lower())
+        # ``kg.m^2``: a dot between unit words multiplies
+        out.append("*" if m.lastgroup == "dot" else m.group(m.lastgroup).lower())
         pos = m.end()
     return out
 
