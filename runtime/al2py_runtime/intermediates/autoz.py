@@ -41,6 +41,7 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
+from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
@@ -176,7 +177,21 @@ def _instances(expr: Any, cls: type) -> set[Any]:
     return found
 
 
-def minus_first(expr: Any) -> bool:
+def _minus_term(term: Any) -> bool:
+    """``term.could_extract_minus_sign()`` for a term of a sum.  For a
+    product with a rational coefficient sympy's answer is the coefficient's
+    sign (``term == -term`` only for an infinite or undefined coefficient),
+    found here without forming ``-term``."""
+    if term.is_Mul:
+        c = term.args[0]
+        if not c.is_Number:
+            return False  # sympy: False whether or not term == -term
+        if c.is_Rational:
+            return c.p < 0
+    return term.could_extract_minus_sign()
+
+
+def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
     """``expr.could_extract_minus_sign()``, found faster for a sum.
 
     sympy counts the terms with a minus sign; on a tie it compares the sort
@@ -184,29 +199,74 @@ def minus_first(expr: Any) -> bool:
     ``as_ordered_terms``.  When no two terms share a monomial (and no term
     is a number, which ``as_ordered_terms`` places by a rule of its own),
     ``-expr``'s terms come in the same order, each the negation of
-    ``expr``'s, so the comparison is decided at the first term whose key
-    differs from its negation's: only those keys are computed here."""
+    ``expr``'s, so the comparison is decided at the first term.  A term's
+    sort key and its negation's differ only in the coefficient (the last
+    part of ``Expr.sort_key``: ``c*rest`` and ``-c*rest`` share ``rest``), so
+    for a rational coefficient the first term's sign decides; otherwise the
+    two keys are compared.  ``key`` (default ``default_sort_key``) orders
+    the generators of the terms' monomials, as ``as_terms`` does; a cached
+    one saves most of the cost."""
     if not expr.is_Add:
         return expr.could_extract_minus_sign()
     args = expr.args
-    negative = sum(1 for a in args if a.could_extract_minus_sign())
+    negative = sum(1 for a in args if _minus_term(a))
     if 2 * negative != len(args):
         return 2 * negative > len(args)
     if any(a.is_Number or a.is_NumberSymbol for a in args):
         return expr.could_extract_minus_sign()
-    terms, _ = expr.as_terms()
+    terms, _ = _as_terms(expr, key or sp.default_sort_key)
     seen = set()
     for term, (_, monom, ncpart) in terms:
-        key = (monom, tuple(ncpart))
-        if term.is_Order or key in seen:
+        found = (monom, tuple(ncpart))
+        if term.is_Order or found in seen:
             return expr.could_extract_minus_sign()
-        seen.add(key)
-    key, reverse = expr._parse_order(None)
-    for term, _ in sorted(terms, key=key, reverse=reverse):
+        seen.add(found)
+    order, reverse = expr._parse_order(None)
+    first = sorted(terms, key=order, reverse=reverse)[0][0]
+    c = first.as_coeff_Mul()[0]
+    if c.is_Rational:
+        return c.p < 0
+    for term, _ in sorted(terms, key=order, reverse=reverse):
         mine, theirs = sp.default_sort_key(term), sp.default_sort_key(-term)
         if mine != theirs:
             return bool(mine < theirs)
     return False
+
+
+def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
+    """sympy's ``Expr.as_terms`` (the same terms, monomials and generators),
+    with the generators sorted by ``key``, which must order as
+    ``default_sort_key`` does."""
+    gens, terms = set(), []
+    for term in sp.Add.make_args(expr):
+        coeff, rest = term.as_coeff_Mul()
+        coeff = complex(coeff)
+        cpart, ncpart = {}, []
+        if rest is not sp.S.One:
+            for factor in sp.Mul.make_args(rest):
+                if factor.is_number:
+                    try:
+                        coeff *= complex(factor)
+                    except (TypeError, ValueError):
+                        pass
+                    else:
+                        continue
+                if factor.is_commutative:
+                    base, exp = decompose_power(factor)
+                    cpart[base] = exp
+                    gens.add(base)
+                else:
+                    ncpart.append(factor)
+        terms.append((term, ((coeff.real, coeff.imag), cpart, tuple(ncpart))))
+    ordered = sorted(gens, key=key)
+    indices = {g: i for i, g in enumerate(ordered)}
+    result = []
+    for term, (coeff, cpart, ncpart) in terms:
+        monom = [0] * len(ordered)
+        for base, exp in cpart.items():
+            monom[indices[base]] = exp
+        result.append((term, (coeff, tuple(monom), ncpart)))
+    return result, ordered
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -228,6 +288,8 @@ class Intermediates:
         self.Z = type(prefix, (Intermediate,), {"book": self})
         self._taken = set(taken)
         self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
+        self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
+        self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
@@ -288,9 +350,9 @@ class Intermediates:
             original, expr = expr, small
         else:
             original = None
-        if minus_first(expr):
+        if minus_first(expr, self._sort_key):
             return -self.name(-expr)
-        variables = tuple(sorted(variables, key=self._sort_key))
+        variables = self._ordered_variables(variables)
         k = len(self._defs)
         while True:
             self._count += 1
@@ -299,8 +361,9 @@ class Intermediates:
                 break
         self._defs.append(expr)
         self._vars.append(variables)
+        self._dvars.append(tuple(a for a in variables if isinstance(a, sp.Derivative)))
         self._labels.append(label)
-        z = self.Z(sp.Integer(k), *variables)
+        z = self._new_z(k, variables)
         self._named[expr] = z
         if original is not None:
             self._named[original] = z
@@ -365,9 +428,11 @@ class Intermediates:
             e = stack.pop()
             if isinstance(e, Z):
                 args = e.args[1:]
-                if args == self._vars[int(e.args[0])]:
+                k = int(e.args[0])
+                if args == self._vars[k]:
                     variables.update(args)
-                    derivatives.update(a for a in args if isinstance(a, sp.Derivative))
+                    if self._dvars[k]:
+                        derivatives.update(self._dvars[k])
                     continue
                 bad.append(e)
                 todo = args
@@ -387,6 +452,25 @@ class Intermediates:
                     seen.add(a)
                     stack.append(a)
         return variables, derivatives, bad
+
+    def _ordered_variables(self, variables: set) -> tuple[Any, ...]:
+        """``variables`` sorted by ``default_sort_key`` (many intermediates
+        share one set of variables: sorted once)."""
+        found_key = frozenset(variables)
+        found = self._orders.get(found_key)
+        if found is None:
+            found = self._orders[found_key] = tuple(sorted(variables, key=self._sort_key))
+        return found
+
+    def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
+        """``self.Z(k, *variables)``, made as sympy's ``Application.__new__``
+        makes it (``Intermediate.eval`` declines, no argument is a float, so
+        nothing is evaluated), without the cache lookup: sympy's cache key
+        hashes the class of every function of time among the arguments,
+        which costs more than making the object."""
+        z = sp.Basic.__new__(self.Z, sp.Integer(k), *variables)
+        z.nargs = sp.S.Naturals0
+        return z
 
     def _sort_key(self, x: Any) -> Any:
         found = self._keys.get(x)
@@ -597,7 +681,9 @@ class Intermediates:
                 out = given[e]
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
-            elif all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
+            elif args == e.book._vars[int(e.args[0])] or all(
+                a.is_Atom or isinstance(a, _VARIABLE) for a in args
+            ):
                 j = e.book.position(e, x)
                 out = sp.S.Zero if j is None else e.book.partial(e, j)
             else:
