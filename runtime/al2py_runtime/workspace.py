@@ -32,7 +32,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
-from . import algebra, matrices
+from . import algebra, matrices, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import MODEL_COMMANDS, Model
@@ -927,6 +927,8 @@ def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
 def _xreplace(expr: Any, table: dict) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _xreplace(e, table))
+    if isinstance(expr, sp.Basic):
+        return walks.xreplace(expr, table)  # sympy's result, shared parts once
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr

@@ -47,6 +47,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
+from ..walks import appearing, xreplace
 from .elimination import eliminate
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
@@ -267,6 +268,74 @@ def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
             monom[indices[base]] = exp
         result.append((term, (coeff, tuple(monom), ncpart)))
     return result, ordered
+
+
+def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
+    """``w = sum(c_k * x_k) + rest`` when ``w`` is built of sums and
+    products in which at most one factor holds an ``x`` (each of ``xs`` a
+    symbol): one walk for all ``xs``, each distinct part once.  None when
+    another part (a power, a function, a product of two such factors)
+    holds an ``x``.
+
+    The results are those of differentiating by each ``x`` with
+    :meth:`Intermediates._pd` and setting the ``xs`` to zero with
+    ``xreplace``: a product ``a*f*b`` whose factor ``f`` holds the ``xs``
+    gives ``Mul(a, c, b)`` for each coefficient ``c`` of ``f`` and
+    ``Mul(a, r, b)`` for its rest ``r``, as both make them, and a sum the
+    sums of its terms' (sympy's constructors do not depend on the order of
+    the arguments)."""
+    wanted = set(xs)
+    memo: dict[Any, Any] = {}
+    nonlinear = False
+
+    def walk(e: Any) -> Any:
+        # None: no x inside; else ({x: coefficient}, rest)
+        nonlocal nonlinear
+        if e in wanted:
+            return {e: sp.S.One}, sp.S.Zero
+        if e.is_Atom or nonlinear:
+            return None
+        if e in memo:
+            return memo[e]
+        args = e.args
+        parts = [walk(a) for a in args]
+        if nonlinear:
+            return None
+        held = [i for i, p in enumerate(parts) if p is not None]
+        if not held:
+            out = None
+        elif e.is_Add:
+            coefs: dict[Any, list] = {}
+            rest = []
+            for a, p in zip(args, parts, strict=True):
+                if p is None:
+                    rest.append(a)
+                    continue
+                for x, c in p[0].items():
+                    coefs.setdefault(x, []).append(c)
+                rest.append(p[1])
+            out = {x: sp.Add(*c) for x, c in coefs.items()}, sp.Add(*rest)
+        elif e.is_Mul and len(held) == 1:
+            i = held[0]
+            before, after = args[:i], args[i + 1 :]
+            inner, r = parts[i]
+            out = (
+                {x: sp.Mul(*before, c, *after) for x, c in inner.items()},
+                sp.Mul(*before, r, *after),
+            )
+        else:
+            nonlinear = True
+            return None
+        memo[e] = out
+        return out
+
+    top = walk(w)
+    if nonlinear:
+        return None
+    if top is None:
+        return [sp.S.Zero] * len(xs), w
+    coefs, rest = top
+    return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -502,19 +571,28 @@ class Intermediates:
         named, so that the terms in ``xs`` (speeds, their derivatives) stay
         visible; an expression not linear in ``xs`` is named whole."""
         expr = sp.sympify(expr)
-        present = [x for x in xs if expr.has(x)]
+        found = appearing(expr, xs)
+        present = [x for x in xs if x in found]
         if not present:
             return self.name(expr)
         if any(x in self.exclude for x in present):
-            present += [x for x in self.exclude if x not in present and expr.has(x)]
+            more = appearing(expr, [x for x in self.exclude if x not in present])
+            present += [x for x in self.exclude if x in more]
         plain = [sp.Dummy() for _ in present]
-        w = expr.xreplace(dict(zip(present, plain, strict=True)))
+        w = xreplace(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
+        if split is None:
+            split = _linear_parts(w, plain)
+            if split is not None:  # no x in the coefficients or the rest
+                coefs, rest = split
+                return self.name(rest) + sp.Add(
+                    *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
+                )
         if split is not None:
             coefs, rest = split
         else:
             coefs = [self._pd(w, p, {}) for p in plain]  # one memo per variable
-            rest = w.xreplace(dict.fromkeys(plain, sp.S.Zero))
+            rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
         if any(c.has(*plain) for c in coefs) or rest.has(*plain):
             return expr  # not linear: keep it as it is
         return self.name(rest) + sp.Add(
