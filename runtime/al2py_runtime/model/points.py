@@ -249,7 +249,14 @@ class Kinematics:
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
             m = kin.axis_dcm(axis.to_matrix(a), angle)
-            b.orient_explicit(a, m)
+            if hasattr(b, "_dcm"):
+                # orient_explicit(a, m) without its angular velocity, which
+                # sympy finds by differentiating and trigsimp-ing the
+                # matrix: the axis gives it (set below, in both frames).
+                b._dcm(a, m)
+                b._var_dict = {}
+            else:  # pragma: no cover - sympy without ReferenceFrame._dcm
+                b.orient_explicit(a, m)
             self._name_dcms(b)
             rate = sp.diff(sp.sympify(angle), t)
             b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
