@@ -18,7 +18,7 @@ from typing import Any
 
 import sympy as sp
 
-__all__ = ["appearing", "replace", "xreplace"]
+__all__ = ["appearing", "atoms", "replace", "xreplace"]
 
 
 def _deep() -> None:
@@ -125,6 +125,25 @@ def appearing(expr: Any, targets: Any) -> set:
             found.add(e)
             if len(found) == len(wanted):
                 break
+        for a in e.args:
+            if a not in seen:
+                seen.add(a)
+                stack.append(a)
+    return found
+
+
+def atoms(expr: Any, *types: type) -> set:
+    """``expr.atoms(*types)`` for types given (the parts of ``expr`` of
+    those types), each distinct part walked once."""
+    if not isinstance(expr, sp.Basic):
+        return set()
+    found: set = set()
+    seen: set = {expr}
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, types):
+            found.add(e)
         for a in e.args:
             if a not in seen:
                 seen.add(a)

@@ -470,7 +470,7 @@ class Workspace(Mapping):
         return value
 
     def _numbers(self, value: sp.Expr) -> sp.Expr:
-        floats = value.atoms(sp.Float)
+        floats = walks.atoms(value, sp.Float)
         if not floats:
             return value
         eps = self.settings.autoepsilon
@@ -484,7 +484,7 @@ class Workspace(Mapping):
                 digits = text.lstrip("-").replace(".", "").lstrip("0").split("e")[0]
                 if len(digits.rstrip("0")) <= 12:
                     table[f] = sp.Rational(text)
-        return value.xreplace(table) if table else value
+        return walks.xreplace(value, table) if table else value
 
     # ------------------------------------------------------------ responses
 

@@ -116,6 +116,16 @@ class Intermediate(sp.Function):
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
 
+    @classmethod
+    def class_key(cls) -> Any:
+        # sympy's Function.class_key, found once per class (sympy builds a
+        # table of function names on each call, for every sort of a product)
+        found = cls.__dict__.get("_class_key")
+        if found is None:
+            found = super().class_key()
+            cls._class_key = found
+        return found
+
 
 def _fact_property(fact: str) -> property:
     """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
@@ -137,10 +147,20 @@ def _fact_property(fact: str) -> property:
 
 
 def _is_commutative(self: Intermediate) -> bool | None:
-    # sympy's handler (Function._eval_is_commutative), without the search.
-    if all(a.is_commutative for a in self.args):
-        return True
-    return _sympy_commutative(self)
+    # sympy's handler (Function._eval_is_commutative), without the search,
+    # found once per instance (sympy asks it of every factor of a product).
+    found = self.__dict__.get("_commutative", _UNKNOWN)
+    if found is _UNKNOWN:
+        if all(a.is_commutative for a in self.args):
+            found = True
+        else:
+            found = _sympy_commutative(self)
+        self.__dict__["_commutative"] = found
+    return found
+
+
+_UNKNOWN = object()
+_ONE_KEY = sp.S.One.sort_key()
 
 
 _sympy_commutative = Intermediate.is_commutative.fget
@@ -542,9 +562,22 @@ class Intermediates:
         return z
 
     def _sort_key(self, x: Any) -> Any:
+        """``default_sort_key(x)``, kept; an intermediate's is made from its
+        arguments' kept keys, as ``Expr.sort_key`` makes it (class key, the
+        arguments' keys, exponent 1's key, coefficient 1)."""
         found = self._keys.get(x)
         if found is None:
-            found = self._keys[x] = sp.default_sort_key(x)
+            if isinstance(x, self.Z):
+                args = x.args
+                found = (
+                    x.class_key(),
+                    (len(args), tuple([self._sort_key(a) for a in args])),
+                    _ONE_KEY,
+                    sp.S.One,
+                )
+            else:
+                found = sp.default_sort_key(x)
+            self._keys[x] = found
         return found
 
     def rebase(self, expr: Any) -> Any:
