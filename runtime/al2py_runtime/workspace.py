@@ -32,7 +32,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 
-from . import algebra, matrices
+from . import algebra, matrices, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import MODEL_COMMANDS, Model
@@ -470,7 +470,7 @@ class Workspace(Mapping):
         return value
 
     def _numbers(self, value: sp.Expr) -> sp.Expr:
-        floats = _floats(value)
+        floats = walks.atoms(value, sp.Float)
         if not floats:
             return value
         eps = self.settings.autoepsilon
@@ -484,7 +484,7 @@ class Workspace(Mapping):
                 digits = text.lstrip("-").replace(".", "").lstrip("0").split("e")[0]
                 if len(digits.rstrip("0")) <= 12:
                     table[f] = sp.Rational(text)
-        return value.xreplace(table) if table else value
+        return walks.xreplace(value, table) if table else value
 
     # ------------------------------------------------------------ responses
 
@@ -924,29 +924,11 @@ def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
         ) from None
 
 
-def _floats(expr: sp.Basic) -> set:
-    """``expr.atoms(sp.Float)``, each shared part walked once (sympy's walk
-    visits a part as often as it occurs: a large unexpanded model repeats
-    its parts many times)."""
-    found: set = set()
-    seen: set = set()
-    stack = [expr]
-    while stack:
-        e = stack.pop()
-        if isinstance(e, sp.Float):
-            found.add(e)
-            continue
-        for a in e.args:
-            if a.args or isinstance(a, sp.Float):
-                if a not in seen:
-                    seen.add(a)
-                    stack.append(a)
-    return found
-
-
 def _xreplace(expr: Any, table: dict) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _xreplace(e, table))
+    if isinstance(expr, sp.Basic):
+        return walks.xreplace(expr, table)  # sympy's result, shared parts once
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr

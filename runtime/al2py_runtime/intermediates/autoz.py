@@ -41,11 +41,13 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
+from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
 from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
+from ..walks import appearing, xreplace
 from .elimination import eliminate
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
@@ -114,6 +116,16 @@ class Intermediate(sp.Function):
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
 
+    @classmethod
+    def class_key(cls) -> Any:
+        # sympy's Function.class_key, found once per class (sympy builds a
+        # table of function names on each call, for every sort of a product)
+        found = cls.__dict__.get("_class_key")
+        if found is None:
+            found = super().class_key()
+            cls._class_key = found
+        return found
+
 
 def _fact_property(fact: str) -> property:
     """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
@@ -135,10 +147,20 @@ def _fact_property(fact: str) -> property:
 
 
 def _is_commutative(self: Intermediate) -> bool | None:
-    # sympy's handler (Function._eval_is_commutative), without the search.
-    if all(a.is_commutative for a in self.args):
-        return True
-    return _sympy_commutative(self)
+    # sympy's handler (Function._eval_is_commutative), without the search,
+    # found once per instance (sympy asks it of every factor of a product).
+    found = self.__dict__.get("_commutative", _UNKNOWN)
+    if found is _UNKNOWN:
+        if all(a.is_commutative for a in self.args):
+            found = True
+        else:
+            found = _sympy_commutative(self)
+        self.__dict__["_commutative"] = found
+    return found
+
+
+_UNKNOWN = object()
+_ONE_KEY = sp.S.One.sort_key()
 
 
 _sympy_commutative = Intermediate.is_commutative.fget
@@ -176,7 +198,21 @@ def _instances(expr: Any, cls: type) -> set[Any]:
     return found
 
 
-def minus_first(expr: Any) -> bool:
+def _minus_term(term: Any) -> bool:
+    """``term.could_extract_minus_sign()`` for a term of a sum.  For a
+    product with a rational coefficient sympy's answer is the coefficient's
+    sign (``term == -term`` only for an infinite or undefined coefficient),
+    found here without forming ``-term``."""
+    if term.is_Mul:
+        c = term.args[0]
+        if not c.is_Number:
+            return False  # sympy: False whether or not term == -term
+        if c.is_Rational:
+            return c.p < 0
+    return term.could_extract_minus_sign()
+
+
+def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
     """``expr.could_extract_minus_sign()``, found faster for a sum.
 
     sympy counts the terms with a minus sign; on a tie it compares the sort
@@ -184,29 +220,142 @@ def minus_first(expr: Any) -> bool:
     ``as_ordered_terms``.  When no two terms share a monomial (and no term
     is a number, which ``as_ordered_terms`` places by a rule of its own),
     ``-expr``'s terms come in the same order, each the negation of
-    ``expr``'s, so the comparison is decided at the first term whose key
-    differs from its negation's: only those keys are computed here."""
+    ``expr``'s, so the comparison is decided at the first term.  A term's
+    sort key and its negation's differ only in the coefficient (the last
+    part of ``Expr.sort_key``: ``c*rest`` and ``-c*rest`` share ``rest``), so
+    for a rational coefficient the first term's sign decides; otherwise the
+    two keys are compared.  ``key`` (default ``default_sort_key``) orders
+    the generators of the terms' monomials, as ``as_terms`` does; a cached
+    one saves most of the cost."""
     if not expr.is_Add:
         return expr.could_extract_minus_sign()
     args = expr.args
-    negative = sum(1 for a in args if a.could_extract_minus_sign())
+    negative = sum(1 for a in args if _minus_term(a))
     if 2 * negative != len(args):
         return 2 * negative > len(args)
     if any(a.is_Number or a.is_NumberSymbol for a in args):
         return expr.could_extract_minus_sign()
-    terms, _ = expr.as_terms()
+    terms, _ = _as_terms(expr, key or sp.default_sort_key)
     seen = set()
     for term, (_, monom, ncpart) in terms:
-        key = (monom, tuple(ncpart))
-        if term.is_Order or key in seen:
+        found = (monom, tuple(ncpart))
+        if term.is_Order or found in seen:
             return expr.could_extract_minus_sign()
-        seen.add(key)
-    key, reverse = expr._parse_order(None)
-    for term, _ in sorted(terms, key=key, reverse=reverse):
+        seen.add(found)
+    order, reverse = expr._parse_order(None)
+    first = sorted(terms, key=order, reverse=reverse)[0][0]
+    c = first.as_coeff_Mul()[0]
+    if c.is_Rational:
+        return c.p < 0
+    for term, _ in sorted(terms, key=order, reverse=reverse):
         mine, theirs = sp.default_sort_key(term), sp.default_sort_key(-term)
         if mine != theirs:
             return bool(mine < theirs)
     return False
+
+
+def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
+    """sympy's ``Expr.as_terms`` (the same terms, monomials and generators),
+    with the generators sorted by ``key``, which must order as
+    ``default_sort_key`` does."""
+    gens, terms = set(), []
+    for term in sp.Add.make_args(expr):
+        coeff, rest = term.as_coeff_Mul()
+        coeff = complex(coeff)
+        cpart, ncpart = {}, []
+        if rest is not sp.S.One:
+            for factor in sp.Mul.make_args(rest):
+                if factor.is_number:
+                    try:
+                        coeff *= complex(factor)
+                    except (TypeError, ValueError):
+                        pass
+                    else:
+                        continue
+                if factor.is_commutative:
+                    base, exp = decompose_power(factor)
+                    cpart[base] = exp
+                    gens.add(base)
+                else:
+                    ncpart.append(factor)
+        terms.append((term, ((coeff.real, coeff.imag), cpart, tuple(ncpart))))
+    ordered = sorted(gens, key=key)
+    indices = {g: i for i, g in enumerate(ordered)}
+    result = []
+    for term, (coeff, cpart, ncpart) in terms:
+        monom = [0] * len(ordered)
+        for base, exp in cpart.items():
+            monom[indices[base]] = exp
+        result.append((term, (coeff, tuple(monom), ncpart)))
+    return result, ordered
+
+
+def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
+    """``w = sum(c_k * x_k) + rest`` when ``w`` is built of sums and
+    products in which at most one factor holds an ``x`` (each of ``xs`` a
+    symbol): one walk for all ``xs``, each distinct part once.  None when
+    another part (a power, a function, a product of two such factors)
+    holds an ``x``.
+
+    The results are those of differentiating by each ``x`` with
+    :meth:`Intermediates._pd` and setting the ``xs`` to zero with
+    ``xreplace``: a product ``a*f*b`` whose factor ``f`` holds the ``xs``
+    gives ``Mul(a, c, b)`` for each coefficient ``c`` of ``f`` and
+    ``Mul(a, r, b)`` for its rest ``r``, as both make them, and a sum the
+    sums of its terms' (sympy's constructors do not depend on the order of
+    the arguments)."""
+    wanted = set(xs)
+    memo: dict[Any, Any] = {}
+    nonlinear = False
+
+    def walk(e: Any) -> Any:
+        # None: no x inside; else ({x: coefficient}, rest)
+        nonlocal nonlinear
+        if e in wanted:
+            return {e: sp.S.One}, sp.S.Zero
+        if e.is_Atom or nonlinear:
+            return None
+        if e in memo:
+            return memo[e]
+        args = e.args
+        parts = [walk(a) for a in args]
+        if nonlinear:
+            return None
+        held = [i for i, p in enumerate(parts) if p is not None]
+        if not held:
+            out = None
+        elif e.is_Add:
+            coefs: dict[Any, list] = {}
+            rest = []
+            for a, p in zip(args, parts, strict=True):
+                if p is None:
+                    rest.append(a)
+                    continue
+                for x, c in p[0].items():
+                    coefs.setdefault(x, []).append(c)
+                rest.append(p[1])
+            out = {x: sp.Add(*c) for x, c in coefs.items()}, sp.Add(*rest)
+        elif e.is_Mul and len(held) == 1:
+            i = held[0]
+            before, after = args[:i], args[i + 1 :]
+            inner, r = parts[i]
+            out = (
+                {x: sp.Mul(*before, c, *after) for x, c in inner.items()},
+                sp.Mul(*before, r, *after),
+            )
+        else:
+            nonlinear = True
+            return None
+        memo[e] = out
+        return out
+
+    top = walk(w)
+    if nonlinear:
+        return None
+    if top is None:
+        return [sp.S.Zero] * len(xs), w
+    coefs, rest = top
+    return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -228,6 +377,8 @@ class Intermediates:
         self.Z = type(prefix, (Intermediate,), {"book": self})
         self._taken = set(taken)
         self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
+        self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
+        self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
@@ -288,9 +439,9 @@ class Intermediates:
             original, expr = expr, small
         else:
             original = None
-        if minus_first(expr):
+        if minus_first(expr, self._sort_key):
             return -self.name(-expr)
-        variables = tuple(sorted(variables, key=self._sort_key))
+        variables = self._ordered_variables(variables)
         k = len(self._defs)
         while True:
             self._count += 1
@@ -299,8 +450,9 @@ class Intermediates:
                 break
         self._defs.append(expr)
         self._vars.append(variables)
+        self._dvars.append(tuple(a for a in variables if isinstance(a, sp.Derivative)))
         self._labels.append(label)
-        z = self.Z(sp.Integer(k), *variables)
+        z = self._new_z(k, variables)
         self._named[expr] = z
         if original is not None:
             self._named[original] = z
@@ -365,9 +517,11 @@ class Intermediates:
             e = stack.pop()
             if isinstance(e, Z):
                 args = e.args[1:]
-                if args == self._vars[int(e.args[0])]:
+                k = int(e.args[0])
+                if args == self._vars[k]:
                     variables.update(args)
-                    derivatives.update(a for a in args if isinstance(a, sp.Derivative))
+                    if self._dvars[k]:
+                        derivatives.update(self._dvars[k])
                     continue
                 bad.append(e)
                 todo = args
@@ -388,10 +542,44 @@ class Intermediates:
                     stack.append(a)
         return variables, derivatives, bad
 
+    def _ordered_variables(self, variables: set) -> tuple[Any, ...]:
+        """``variables`` sorted by ``default_sort_key`` (many intermediates
+        share one set of variables: sorted once)."""
+        found_key = frozenset(variables)
+        found = self._orders.get(found_key)
+        if found is None:
+            found = self._orders[found_key] = tuple(
+                sorted(variables, key=self._sort_key)
+            )
+        return found
+
+    def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
+        """``self.Z(k, *variables)``, made as sympy's ``Application.__new__``
+        makes it (``Intermediate.eval`` declines, no argument is a float, so
+        nothing is evaluated), without the cache lookup: sympy's cache key
+        hashes the class of every function of time among the arguments,
+        which costs more than making the object."""
+        z = sp.Basic.__new__(self.Z, sp.Integer(k), *variables)
+        z.nargs = sp.S.Naturals0
+        return z
+
     def _sort_key(self, x: Any) -> Any:
+        """``default_sort_key(x)``, kept; an intermediate's is made from its
+        arguments' kept keys, as ``Expr.sort_key`` makes it (class key, the
+        arguments' keys, exponent 1's key, coefficient 1)."""
         found = self._keys.get(x)
         if found is None:
-            found = self._keys[x] = sp.default_sort_key(x)
+            if isinstance(x, self.Z):
+                args = x.args
+                found = (
+                    x.class_key(),
+                    (len(args), tuple([self._sort_key(a) for a in args])),
+                    _ONE_KEY,
+                    sp.S.One,
+                )
+            else:
+                found = sp.default_sort_key(x)
+            self._keys[x] = found
         return found
 
     def rebase(self, expr: Any) -> Any:
@@ -418,19 +606,28 @@ class Intermediates:
         named, so that the terms in ``xs`` (speeds, their derivatives) stay
         visible; an expression not linear in ``xs`` is named whole."""
         expr = sp.sympify(expr)
-        present = [x for x in xs if expr.has(x)]
+        found = appearing(expr, xs)
+        present = [x for x in xs if x in found]
         if not present:
             return self.name(expr)
         if any(x in self.exclude for x in present):
-            present += [x for x in self.exclude if x not in present and expr.has(x)]
+            more = appearing(expr, [x for x in self.exclude if x not in present])
+            present += [x for x in self.exclude if x in more]
         plain = [sp.Dummy() for _ in present]
-        w = expr.xreplace(dict(zip(present, plain, strict=True)))
+        w = xreplace(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
+        if split is None:
+            split = _linear_parts(w, plain)
+            if split is not None:  # no x in the coefficients or the rest
+                coefs, rest = split
+                return self.name(rest) + sp.Add(
+                    *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
+                )
         if split is not None:
             coefs, rest = split
         else:
             coefs = [self._pd(w, p, {}) for p in plain]  # one memo per variable
-            rest = w.xreplace(dict.fromkeys(plain, sp.S.Zero))
+            rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
         if any(c.has(*plain) for c in coefs) or rest.has(*plain):
             return expr  # not linear: keep it as it is
         return self.name(rest) + sp.Add(
@@ -601,7 +798,9 @@ class Intermediates:
                 out = given[e]
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
-            elif all(a.is_Atom or isinstance(a, _VARIABLE) for a in args):
+            elif args == e.book.canonical(int(e.args[0]))[0] or all(
+                a.is_Atom or isinstance(a, _VARIABLE) for a in args
+            ):
                 j = e.book.position(e, x)
                 out = sp.S.Zero if j is None else e.book.partial(e, j)
             else:

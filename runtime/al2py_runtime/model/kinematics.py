@@ -20,6 +20,8 @@ from typing import Any
 import sympy as sp
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
+from .. import walks
+
 __all__ = [
     "vmap",
     "is_vector",
@@ -51,8 +53,10 @@ def doit_derivatives(expr: Any) -> Any:
     functions of time (``U1'``); matrices elementwise."""
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(doit_derivatives)
-    if isinstance(expr, sp.Basic) and expr.has(sp.Derivative):
-        return expr.replace(
+    if isinstance(expr, sp.Basic):
+        # sympy's expr.replace(query, value), each shared part walked once
+        return walks.replace(
+            expr,
             lambda e: isinstance(e, sp.Derivative)
             and not isinstance(e.expr, sp.core.function.AppliedUndef),
             lambda e: e.doit(),

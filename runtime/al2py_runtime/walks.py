@@ -1,0 +1,149 @@
+"""sympy's tree walks, each distinct subexpression visited once.
+
+sympy's ``xreplace`` and ``replace`` walk an expression as a tree: a part
+that occurs many times (an intermediate ``Z12(q1, q4, ...)`` used by many
+products, its arguments, a shared product) is walked each time it occurs.
+Expressions over named intermediates share most of their parts, so these
+walks keep one answer per distinct part.  Each gives sympy's result: the
+answer for a part depends only on the part (sympy's ``==``, which the
+memo's lookup uses, is structural), and parts are rebuilt exactly when
+sympy rebuilds them.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from typing import Any
+
+import sympy as sp
+
+__all__ = ["appearing", "atoms", "replace", "xreplace"]
+
+
+def _deep() -> None:
+    if sys.getrecursionlimit() < 20000:
+        sys.setrecursionlimit(20000)
+
+
+def xreplace(expr: Any, rule: dict) -> Any:
+    """``expr.xreplace(rule)`` for a sympy object (anything else is
+    returned as it is)."""
+    if not isinstance(expr, sp.Basic):
+        return expr
+    if not rule:
+        return expr
+    _deep()
+    memo: dict[Any, tuple[Any, bool]] = {}
+
+    def walk(e: Any) -> tuple[Any, bool]:
+        # Basic._xreplace: a part in the rule is replaced; otherwise it is
+        # rebuilt from its arguments when a replacement happened below.
+        if e in rule:
+            return rule[e], True
+        found = memo.get(e)
+        if found is not None:
+            return found
+        args = []
+        changed = False
+        for a in e.args:
+            if isinstance(a, sp.Basic):
+                b, c = walk(a)
+                args.append(b)
+                changed |= c
+            elif hasattr(a, "xreplace"):  # pragma: no cover - not Basic
+                b = a.xreplace(rule)
+                args.append(b)
+                changed |= b is not a
+            else:
+                args.append(a)
+        out = (e.func(*args), True) if changed else (e, False)
+        memo[e] = out
+        return out
+
+    return walk(expr)[0]
+
+
+def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any]) -> Any:
+    """``expr.replace(query, value)`` with callables (``simultaneous``, no
+    map), as sympy's ``Basic.replace`` does it: bottom-up, a part rebuilt
+    from its replaced arguments, then replaced itself."""
+    if not isinstance(expr, sp.Basic):
+        return expr
+    _deep()
+    memo: dict[Any, Any] = {}
+
+    def walk(rv: Any) -> Any:
+        found = memo.get(rv)
+        if found is not None:
+            return found
+        key = rv
+        args = getattr(rv, "args", None)
+        if args is not None:
+            done = False
+            if args:
+                newargs = tuple([walk(a) for a in args])
+                if args != newargs:
+                    rv = rv.func(*newargs)
+                    # sympy: a part that became one of its (changed)
+                    # arguments is not replaced again
+                    for i, e in enumerate(args):
+                        if rv == e and e != newargs[i]:
+                            done = True
+                            break
+            if not done:
+                result = query(rv)
+                if result or result == {}:
+                    v = value(rv)
+                    if v is not None and v != rv:
+                        rv = v
+        memo[key] = rv
+        return rv
+
+    return walk(expr)
+
+
+def appearing(expr: Any, targets: Any) -> set:
+    """The ``targets`` that occur in ``expr`` (``{x for x in targets if
+    expr.has(x)}``): one walk for all of them, rather than sympy's two per
+    target that does not occur.  Targets are symbols, functions of time,
+    derivatives (anything but a sum or product, whose ``has`` also finds
+    parts of a sum or product)."""
+    wanted = set(targets)
+    if not wanted or not isinstance(expr, sp.Basic):
+        return set()
+    if any(isinstance(x, sp.Add | sp.Mul) for x in wanted):
+        return {x for x in wanted if expr.has(x)}
+    found: set = set()
+    seen: set = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e in wanted:
+            found.add(e)
+            if len(found) == len(wanted):
+                break
+        for a in e.args:
+            if a not in seen:
+                seen.add(a)
+                stack.append(a)
+    return found
+
+
+def atoms(expr: Any, *types: type) -> set:
+    """``expr.atoms(*types)`` for types given (the parts of ``expr`` of
+    those types), each distinct part walked once."""
+    if not isinstance(expr, sp.Basic):
+        return set()
+    found: set = set()
+    seen: set = {expr}
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, types):
+            found.add(e)
+        for a in e.args:
+            if a not in seen:
+                seen.add(a)
+                stack.append(a)
+    return found
