@@ -350,3 +350,17 @@ def test_a_dot_multiplies_unit_words(tmp_path):
     # x' = 2 (internal units, kg*m): x(1) = 2 kg*m = 2e5 g*cm; P = I*x = 4
     assert result["X"][-1] == pytest.approx(2e5)
     assert result["P"][-1] == pytest.approx(4.0)
+
+
+def test_input_function_of_a_computed_input(tmp_path):
+    """``Input(X)`` where X's Input is an expression of other Inputs: the
+    value the job computes (it was a library error)."""
+    src = (
+        "Constants a, b, c\nVariables q'\nq' = -a*q\n"
+        "Input a = 2, b = cos(a/2)*3, c = 90 deg\nInput q = 1\n"
+        "x = Input(b) + Input(a)\ny = Input(c) + Input(c, UnitSystem)\n"
+        "Output T, q\nCODE ODE() f.c\n"
+    )
+    mod, _ = run(src, tmp_path)
+    assert float(mod.AUTOLEV["X"]) == pytest.approx(3 * np.cos(1) + 2)
+    assert float(mod.AUTOLEV["Y"]) == pytest.approx(90 + np.pi / 2)

@@ -731,6 +731,13 @@ class Generator:
         name = node.args[0]
         if not isinstance(name, ir.Name):
             raise SemanticError("Input(X) takes a name", name.span)
+        if len(node.args) == 2:
+            word = node.args[1]
+            if not isinstance(word, ir.Name) or word.key != "UNITSYSTEM":
+                raise SemanticError(
+                    "Input(X, UnitSystem): the second argument is the word UnitSystem",
+                    word.span,
+                )
         extra = ", unit_system=True" if len(node.args) == 2 else ""
         return f"al.numerics.input_value({name.autolev!r}{extra})"
 

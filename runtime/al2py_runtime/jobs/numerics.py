@@ -46,7 +46,7 @@ from .records import (
     job_stem,
     normalize_name,
 )
-from .run import ode_function, run_job
+from .run import input_values, ode_function, run_job
 from .tables import Result
 from .units import UnitSystem, units_factor
 
@@ -290,14 +290,21 @@ class Numerics:
     def input_value(self, name: str, unit_system: bool = False) -> Any:
         """Autolev ``Input(X)``; ``Input(X, UnitSystem)`` with ``unit_system``
         converts it to the units of the ``UnitSystem``."""
-        item = self._numerics.inputs.get(normalize_name(name))
+        key = normalize_name(name)
+        item = self._numerics.inputs.get(key)
         if item is None:
             raise KeyError(f"{name} has no Input value")
-        if unit_system:
-            factor = self._numerics.unit_system.to_internal(item.unit)
-            return sp.Float(item.value * factor)
+        factor = self._numerics.unit_system.to_internal(item.unit)
         value = item.value
-        return sp.Integer(int(value)) if float(value).is_integer() else sp.Float(value)
+        if isinstance(value, sp.Basic) and not value.is_number:
+            # ``Input E1 = COS(Q1/2)``: computed from the other Inputs (and
+            # the script's values) as a job computes it, in internal units
+            values, _ = input_values(self._make_job("ALGEBRAIC"), {})
+            value = values.values[key] / factor
+        if unit_system:
+            return sp.Float(float(value) * factor)
+        value = float(value)
+        return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
 
     def units(self, a: str, b: str) -> Any:
         """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to

@@ -377,7 +377,7 @@ _TABLE: list[Builtin] = [
     _command("TORQUE", "add_torque", 2, 2, objects=(0,), responds=False),
     _command("CONSTRAIN", "constrain", 1, None),
     _command("KANE", "kane", 0, None),
-    Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2),
+    Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2, words=(1,)),
     Builtin("UNITS", Style.SPECIAL, "units", 2, 2),
     Builtin("AUTOTAYLOR", Style.SPECIAL, "autotaylor", 2, None, statement=True),
     *(_pending(n, _NUMERICS) for n in ("SPLINE",)),
