@@ -364,3 +364,24 @@ def test_input_function_of_a_computed_input(tmp_path):
     mod, _ = run(src, tmp_path)
     assert float(mod.AUTOLEV["X"]) == pytest.approx(3 * np.cos(1) + 2)
     assert float(mod.AUTOLEV["Y"]) == pytest.approx(90 + np.pi / 2)
+
+
+def test_assigned_u_variables_are_not_the_speeds(tmp_path):
+    """``Variables U{2}`` assigned expressions (``U1 = Dot(W_A_N>, A3>)``)
+    name quantities; the generalized speed is the motion variable W."""
+    src = (
+        "Newtonian N\nBodies A\nVariables Q', U{2}\nMotionVariables' W'\n"
+        "Constants m, g, l, k\nMass A = m\nInertia A, 0, 0, k\n"
+        "Simprot(N, A, 3, Q)\nW_A_N> = W*N3>\nU1 = Dot(W_A_N>, A3>)\n"
+        "U2 = 2*U1\nQ' = W\nP_NO_AO> = l*A1>\nV_AO_N> = Dt(P_NO_AO>, N)\n"
+        "A_AO_N> = Dt(V_AO_N>, N)\nGravity(-g*N2>)\nZero = Fr() + FrStar()\n"
+    )
+    mod, _ = run(src, tmp_path)
+    zero = mod.AUTOLEV["ZERO"]
+    assert zero.shape == (1, 1)
+    t = sp.Symbol("t")
+    q, w, m, g, length, k = (mod.al.symbol(n) for n in ("Q", "W", "M", "G", "L", "K"))
+    expected = -(m * length**2 + k) * sp.Derivative(w, t) - m * g * length * sp.cos(q)
+    diff = (zero[0] - expected).subs(sp.Derivative(w, t), 0.7)
+    values = {q: 0.3, w: 1.1, m: 2.0, g: 9.8, length: 0.5, k: 0.2}
+    assert abs(float(diff.subs(values))) < 1e-12

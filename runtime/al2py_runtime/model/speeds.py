@@ -37,7 +37,9 @@ class Speeds:
     def generalized_speeds(self) -> list:
         """Generalized speeds.
 
-        The declared variables U1, U2... in order, if there are any.  Otherwise
+        The declared variables U1, U2... in order, if there are any (one with
+        a right-hand side of its own, not from Constrain, names an expression
+        and is left out).  Otherwise
         the motion variables (``MotionVariables'``) say, in declaration order:
         one with a right-hand side of its own (``OMEGA = THETA'``) is a name
         for an expression, not a speed; one whose derivative has a right-hand
@@ -48,16 +50,20 @@ class Speeds:
         solved by Constrain keep their place."""
         if self.registry.speeds is not None:
             return list(self.registry.speeds)
+        st = self.registry
+        solved = set(st.dependent) | set(st.auxiliary)
+        rhs = self.ws.table.rhs
         found = []
         for name, entry in self.ws.table.entries.items():
             m = SPEED_NAME.match(name)
             if m and entry.kind == "variable":
+                # ``U1 = Dot(W_A_N>, A1>)`` names an expression: not a speed
+                # (unless Constrain solved it), as for motion variables
+                if entry.obj in rhs and entry.obj not in solved:
+                    continue
                 found.append((int(m.group(1)), entry.obj))
         if found:
             return [obj for _, obj in sorted(found, key=lambda x: x[0])]
-        st = self.registry
-        solved = set(st.dependent) | set(st.auxiliary)
-        rhs = self.ws.table.rhs
         kin_eqs = [rhs[dq] for dq in self.kinematical_equations()]
         out = []
         for q in st.motion:
