@@ -385,3 +385,25 @@ def test_assigned_u_variables_are_not_the_speeds(tmp_path):
     diff = (zero[0] - expected).subs(sp.Derivative(w, t), 0.7)
     values = {q: 0.3, w: 1.1, m: 2.0, g: 9.8, length: 0.5, k: 0.2}
     assert abs(float(diff.subs(values))) < 1e-12
+
+
+def test_small_solve_of_large_equations_uses_elimination():
+    """With AutoZ OFF a 2-unknown Solve over large equations eliminates with
+    intermediates instead of Cramer's rule and factor_terms (which ran for
+    minutes on a rolling disc's written-out equations); small ones keep the
+    closed form Autolev printed."""
+    from al2py_runtime import Workspace, algebra
+
+    al = Workspace("big.al")
+    q = sp.symbols("q1:400")
+    big = sp.Add(
+        *[
+            sp.sin(a) * sp.cos(b) * c
+            for a, b, c in zip(q[:-2], q[1:-1], q[2:], strict=True)
+        ]
+    )
+    assert al.solver_book(2, sp.Matrix([big, 2 * big])) is al.book
+    assert al.solver_book(2, sp.Matrix([q[0] + q[1], q[1]])) is None
+    small = 2 * q[0] + 2 * q[1]
+    assert algebra._factor_small(small) == sp.factor_terms(small) != small
+    assert algebra._factor_small(2 * big) == 2 * big

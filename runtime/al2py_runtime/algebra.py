@@ -535,9 +535,9 @@ def solve_linear(
         det = a.det(method="berkowitz")
         if sp.expand(det) == 0:
             raise ValueError(singular)
-        den = sp.factor_terms(det)
+        den = _factor_small(det)
         sols = [
-            sp.factor_terms(_replace_col(a, k, b).det(method="berkowitz")) / den
+            _factor_small(_replace_col(a, k, b).det(method="berkowitz")) / den
             for k in range(len(xs))
         ]
     else:
@@ -548,6 +548,22 @@ def solve_linear(
         if any(s.has(sp.nan, sp.zoo, sp.oo) for s in sols):
             raise ValueError(singular)
     return tuple(_thaw(s, table) for s in sols)
+
+
+#: ``factor_terms`` (which reads a closed-form solution as Autolev printed
+#: it) on larger expressions can take minutes: they are left as they are
+_FACTOR_LIMIT = 300
+
+
+def _factor_small(expr: sp.Expr) -> sp.Expr:
+    """``factor_terms(expr)`` for an expression of at most
+    :data:`_FACTOR_LIMIT` tree nodes; a larger one as it is."""
+    count = 0
+    for _ in sp.preorder_traversal(expr):
+        count += 1
+        if count > _FACTOR_LIMIT:
+            return expr
+    return sp.factor_terms(expr)
 
 
 def _linear_system(

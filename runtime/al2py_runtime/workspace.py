@@ -528,18 +528,27 @@ class Workspace(Mapping):
             book.exclude = frozenset(sp.sympify(x) for x in zee_not)
         return book
 
-    def solver_book(self, unknowns: int) -> Any:
+    #: with ``AutoZ OFF``, equations larger than this (tree nodes, written
+    #: out) are solved by elimination, whatever the number of unknowns
+    CLOSED_FORM_LIMIT = 5000
+
+    def solver_book(self, unknowns: int, eqs: Any = None) -> Any:
         """The book for a linear solve of ``unknowns`` unknowns: the
         intermediates while ``AutoZ`` is ON; with it OFF, the same book for a
         system larger than :data:`al2py_runtime.intermediates.elimination.SMALL` (a closed
         form swells with the size: a 9x9 Cramer's rule did not finish in 15
-        minutes), else None (closed forms, readable, as Autolev prints
-        them)."""
+        minutes) or for equations ``eqs`` larger than
+        :attr:`CLOSED_FORM_LIMIT` written out (a 2x2 Cramer's rule over a
+        rolling disc's written-out equations did not finish in 5 minutes),
+        else None (closed forms, readable, as Autolev prints them)."""
         from .intermediates.elimination import SMALL
 
         book = self.intermediates
         if book is None and unknowns > SMALL:
             book = self.book
+        if book is None and eqs is not None:
+            if _larger_than(list(sp.Matrix(eqs)), self.CLOSED_FORM_LIMIT):
+                book = self.book
         return book
 
     def book_if_made(self) -> Any:
@@ -758,7 +767,7 @@ class Workspace(Mapping):
         else:
             eqs = sp.Matrix([self.val(eqs)])
         eqs = self.resolve(eqs, keep=[*unknowns, *self.specified_inputs(unknowns)])
-        book = self.solver_book(len(unknowns))
+        book = self.solver_book(len(unknowns), eqs)
         if book is None:  # a closed form reads the equations' form
             eqs = self.form(eqs)
         zero = self.model.configuration_variables() if book is not None else ()
@@ -922,6 +931,26 @@ def _element(val: Any, index: tuple[int, ...], name: str) -> Any:
         raise KeyError(
             f"{name!r}: index out of range for a {val.rows}x{val.cols} matrix"
         ) from None
+
+
+def _larger_than(exprs: list, limit: int) -> bool:
+    """Whether ``exprs`` written out (intermediates by their definitions)
+    have more than ``limit`` tree nodes; at most ``limit`` nodes are
+    visited."""
+    from .intermediates.autoz import Intermediate
+
+    count = 0
+    stack = [e for e in exprs if isinstance(e, sp.Basic)]
+    while stack:
+        e = stack.pop()
+        count += 1
+        if count > limit:
+            return True
+        if isinstance(e, Intermediate):
+            stack.append(e.book.definition(e))
+        else:
+            stack.extend(e.args)
+    return False
 
 
 def _xreplace(expr: Any, table: dict) -> Any:
