@@ -33,6 +33,7 @@ Z1
 
 from __future__ import annotations
 
+import bisect
 import math
 import random
 import sys
@@ -43,6 +44,7 @@ import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
 from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
+from sympy.core.mul import _args_sortkey
 from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
@@ -115,6 +117,21 @@ class Intermediate(sp.Function):
 
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
+
+    def walk_parts(self) -> frozenset:
+        """Every part of the arguments (the number too), and the arguments:
+        found once per instance, for :mod:`al2py_runtime.walks`."""
+        found = self.__dict__.get("_parts")
+        if found is None:
+            parts: set = set()
+            stack = list(self.args)
+            while stack:
+                e = stack.pop()
+                if e not in parts:
+                    parts.add(e)
+                    stack.extend(e.args)
+            found = self.__dict__["_parts"] = frozenset(parts)
+        return found
 
     @classmethod
     def class_key(cls) -> Any:
@@ -257,11 +274,15 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
 def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
     """sympy's ``Expr.as_terms`` (the same terms, monomials and generators),
     with the generators sorted by ``key``, which must order as
-    ``default_sort_key`` does."""
+    ``default_sort_key`` does, for :func:`minus_first` (rational
+    coefficients are left 0)."""
     gens, terms = set(), []
     for term in sp.Add.make_args(expr):
         coeff, rest = term.as_coeff_Mul()
-        coeff = complex(coeff)
+        # The coefficient orders terms only after their monomials, which
+        # minus_first has made distinct: a rational one is not evaluated
+        # (sympy's complex() of it runs evalf).
+        coeff = complex(0) if coeff.is_Rational else complex(coeff)
         cpart, ncpart = {}, []
         if rest is not sp.S.One:
             for factor in sp.Mul.make_args(rest):
@@ -358,6 +379,63 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
+def _plain_factor(a: Any) -> bool:
+    """A factor that ``Mul.flatten`` only sorts (given that no other factor
+    has its base): not a number, not a power of a number, not ``exp``."""
+    b = a.base if a.is_Pow else a
+    return not (
+        b.is_Number
+        or b.is_NumberSymbol
+        or b is sp.S.ImaginaryUnit
+        or isinstance(a, sp.exp)
+        or not a.is_commutative
+    )
+
+
+def product_with(args: tuple, i: int, d: Any) -> Any:
+    """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
+    product's (canonical) arguments and ``d`` an intermediate, or a
+    rational times one (a derivative by the chain rule).
+
+    sympy's ``Mul.flatten`` then only multiplies the rational coefficients
+    and sorts the intermediate in among the other factors (by
+    ``Basic.compare``), when no other factor is a number or a power of
+    one, and none has the intermediate as its base: that is done here
+    directly.  Otherwise (or for any other ``d``) sympy forms the
+    product."""
+    if isinstance(d, Intermediate):
+        n, z = sp.S.One, d
+    elif (
+        d.is_Mul
+        and len(d.args) == 2
+        and d.args[0].is_Rational
+        and isinstance(d.args[1], Intermediate)
+    ):
+        n, z = d.args
+    else:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    others = args[:i] + args[i + 1 :]
+    if others and others[0].is_Number:
+        c, factors = others[0], others[1:]
+        if not c.is_Rational:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])
+    else:
+        c, factors = sp.S.One, others
+    if not z.is_commutative:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    for a in factors:
+        if not _plain_factor(a) or a.as_base_exp()[0] == z:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])
+    coeff = c * n
+    k = bisect.bisect_left(factors, _args_sortkey(z), key=_args_sortkey)
+    new = [*factors[:k], z, *factors[k:]]
+    if coeff is not sp.S.One:
+        new.insert(0, coeff)
+    if len(new) == 1:
+        return new[0]
+    return sp.Mul._exec_constructor_postprocessors(sp.Mul._from_args(new, True))
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -378,6 +456,7 @@ class Intermediates:
         self._taken = set(taken)
         self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
         self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
+        self._varsets: list[frozenset] = [frozenset()]  # k -> its variables, a set
         self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
@@ -451,6 +530,7 @@ class Intermediates:
         self._defs.append(expr)
         self._vars.append(variables)
         self._dvars.append(tuple(a for a in variables if isinstance(a, sp.Derivative)))
+        self._varsets.append(frozenset(variables))
         self._labels.append(label)
         z = self._new_z(k, variables)
         self._named[expr] = z
@@ -519,7 +599,7 @@ class Intermediates:
                 args = e.args[1:]
                 k = int(e.args[0])
                 if args == self._vars[k]:
-                    variables.update(args)
+                    variables |= self._varsets[k]  # hashes kept: no sympy call
                     if self._dvars[k]:
                         derivatives.update(self._dvars[k])
                     continue
@@ -813,7 +893,7 @@ class Intermediates:
             for i, a in enumerate(args):
                 d = self._pd(a, x, memo, given)
                 if d is not _ZERO:
-                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
+                    terms.append(product_with(args, i, d))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given)
