@@ -249,14 +249,16 @@ class Kinematics:
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
             m = kin.axis_dcm(axis.to_matrix(a), angle)
-            if hasattr(b, "_dcm"):
-                # orient_explicit(a, m) without its angular velocity, which
-                # sympy finds by differentiating and trigsimp-ing the
-                # matrix: the axis gives it (set below, in both frames).
-                b._dcm(a, m)
-                b._var_dict = {}
-            else:  # pragma: no cover - sympy without ReferenceFrame._dcm
-                b.orient_explicit(a, m)
+            # b.orient_explicit(a, m), without the angular velocity that
+            # sympy finds by differentiating and trigsimp-ing m (the axis
+            # gives it, set below in both frames): oriented by the identity,
+            # then given m where orient_explicit stores it.
+            b.orient_explicit(a, sp.eye(3))
+            parent = m.T.T  # sympy's copy of m
+            b._dcm_dict[a] = parent.T
+            a._dcm_dict[b] = parent
+            b._dcm_cache[a] = parent.T
+            a._dcm_cache[b] = parent
             self._name_dcms(b)
             rate = sp.diff(sp.sympify(angle), t)
             b.set_ang_vel(a, kin.vmap(axis.normalize(), lambda e: e * rate))
