@@ -60,11 +60,7 @@ def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
                 b, c = walk(a)
                 args.append(b)
                 changed |= c
-            elif hasattr(a, "_xreplace"):  # pragma: no cover - not Basic
-                b, c = a._xreplace(rule)
-                args.append(b)
-                changed |= c
-            else:
+            else:  # pragma: no cover - sympy's arguments are Basic
                 args.append(a)
         out = (e.func(*args), True) if changed else (e, False)
         memo[e] = out
@@ -73,9 +69,7 @@ def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
     return walk(expr)[0]
 
 
-def replace(
-    expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any]
-) -> Any:
+def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any]) -> Any:
     """``expr.replace(query, value)`` with callables (``simultaneous``, no
     map), as sympy's ``Basic.replace`` does it: bottom-up, a part rebuilt
     from its replaced arguments, then replaced itself."""

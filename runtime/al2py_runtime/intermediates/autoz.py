@@ -34,6 +34,7 @@ Z1
 from __future__ import annotations
 
 import bisect
+import functools
 import math
 import random
 import sys
@@ -44,7 +45,6 @@ import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
 from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
-from sympy.core.mul import _args_sortkey
 from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
@@ -90,8 +90,10 @@ class Intermediate(sp.Function):
             for j, a in enumerate(args):
                 if a == _T:
                     terms.append(self.book.partial(self, j))
-                elif isinstance(a, _VARIABLE) and a.has(_T):
-                    terms.append(self.book.partial(self, j) * a.diff(_T))
+                elif isinstance(a, _VARIABLE):
+                    rate = self.book.time_rate(a)
+                    if rate is not None:
+                        terms.append(self.book.partial(self, j) * rate)
             return sp.Add(*terms)
         for j, a in enumerate(args):
             if a == s:
@@ -379,6 +381,10 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
+#: the order of a product's factors (``Mul.flatten`` sorts by it)
+_BY_COMPARE = functools.cmp_to_key(sp.Basic.compare)
+
+
 def _plain_factor(a: Any) -> bool:
     """A factor that ``Mul.flatten`` only sorts (given that no other factor
     has its base): not a number, not a power of a number, not ``exp``."""
@@ -427,13 +433,13 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         if not _plain_factor(a) or a.as_base_exp()[0] == z:
             return sp.Mul(*args[:i], d, *args[i + 1 :])
     coeff = c * n
-    k = bisect.bisect_left(factors, _args_sortkey(z), key=_args_sortkey)
+    k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
     new = [*factors[:k], z, *factors[k:]]
     if coeff is not sp.S.One:
         new.insert(0, coeff)
     if len(new) == 1:
         return new[0]
-    return sp.Mul._exec_constructor_postprocessors(sp.Mul._from_args(new, True))
+    return sp.Mul(*new, evaluate=False, _sympify=False)  # these arguments as they are
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -458,6 +464,7 @@ class Intermediates:
         self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
         self._varsets: list[frozenset] = [frozenset()]  # k -> its variables, a set
         self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
+        self._time_rates: dict[Any, Any] = {}  # variable -> its diff(t), or None
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
@@ -488,12 +495,21 @@ class Intermediates:
         """``expr`` itself if trivial (or holding derivatives), else the
         intermediate that stands for it (the same one for the same
         expression)."""
-        expr = sp.sympify(expr)
+        return self._name(sp.sympify(expr), None)
+
+    def _name(self, expr: Any, negated: set | None) -> Any:
+        """:meth:`name`; ``negated``: the variables of ``-expr``, which was
+        being named when its sign was taken out (``expr`` then needs no
+        scan, and its sign is not taken out again: sympy's
+        ``could_extract_minus_sign`` is not true of both an expression and
+        its negation)."""
         if not isinstance(expr, sp.Expr) or trivial(expr):
             return expr
         found = self._named.get(expr)
         if found is not None:
             return found
+        if negated is not None:
+            return self._new_name(expr, negated, None, split=True)
         variables, derivatives, bad = self._scan(expr)
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
@@ -519,7 +535,23 @@ class Intermediates:
         else:
             original = None
         if minus_first(expr, self._sort_key):
-            return -self.name(-expr)
+            return -self._name(-expr, variables)
+        return self._new_name(expr, variables, original, split=False)
+
+    def _new_name(
+        self, expr: Any, variables: set, original: Any, *, split: bool
+    ) -> Any:
+        """A new intermediate for ``expr`` (over ``variables``), named in
+        parts first if ``split``; ``original``: what ``expr`` was split
+        from, named by the same intermediate."""
+        if split:
+            small = self._split(expr)
+            if small is not expr:
+                found = self._named.get(small)
+                if found is not None:
+                    self._named[expr] = found
+                    return found
+                original, expr = expr, small
         variables = self._ordered_variables(variables)
         k = len(self._defs)
         while True:
@@ -545,8 +577,10 @@ class Intermediates:
     def _split(self, expr: Any) -> Any:
         """``expr`` with each part larger than :attr:`LIMIT` nodes named
         (bottom-up), so that no definition is long."""
-        memo: dict[Any, tuple[Any, int]] = {}
         Z = self.Z
+        if all(self._within(a, self.LIMIT) for a in expr.args):
+            return expr  # no part is larger: the walk below changes nothing
+        memo: dict[Any, tuple[Any, int]] = {}
 
         def walk(e: Any, top: bool) -> tuple[Any, int]:
             if e.is_Atom or isinstance(e, Z | AppliedUndef | sp.Derivative):
@@ -577,6 +611,30 @@ class Intermediates:
             return out
 
         return walk(expr, True)[0]
+
+    def _within(self, e: Any, limit: int) -> bool:
+        """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
+        counts them (an intermediate, a function of time or a derivative is
+        one node), counting no further than ``limit + 1``."""
+        Z = self.Z
+        stack = [e]
+        n = 0
+        while stack:
+            x = stack.pop()
+            n += 1
+            if n > limit:
+                return False
+            if not (x.is_Atom or isinstance(x, Z | AppliedUndef | sp.Derivative)):
+                stack.extend(x.args)
+        return True
+
+    def time_rate(self, x: Any) -> Any:
+        """``x.diff(t)`` of a variable (None if ``x`` does not depend on
+        ``t``), made once per variable."""
+        found = self._time_rates.get(x, _UNKNOWN)
+        if found is _UNKNOWN:
+            found = self._time_rates[x] = x.diff(_T) if x.has(_T) else None
+        return found
 
     def _canonical(self, z: Intermediate) -> bool:
         return tuple(z.args[1:]) == self._vars[int(z.args[0])]
@@ -628,7 +686,9 @@ class Intermediates:
         found_key = frozenset(variables)
         found = self._orders.get(found_key)
         if found is None:
-            found = self._orders[found_key] = tuple(sorted(variables, key=self._sort_key))
+            found = self._orders[found_key] = tuple(
+                sorted(variables, key=self._sort_key)
+            )
         return found
 
     def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
@@ -872,7 +932,7 @@ class Intermediates:
                 out = given[e]
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
-            elif args == e.book._vars[int(e.args[0])] or all(
+            elif (e.book is self and self._canonical(e)) or all(
                 a.is_Atom or isinstance(a, _VARIABLE) for a in args
             ):
                 j = e.book.position(e, x)
