@@ -4,7 +4,9 @@ sympy's ``xreplace`` and ``replace`` walk an expression as a tree: a part
 that occurs many times (an intermediate ``Z12(q1, q4, ...)`` used by many
 products, its arguments, a shared product) is walked each time it occurs.
 Expressions over named intermediates share most of their parts, so these
-walks keep one answer per distinct part.  Each gives sympy's result: the
+walks keep one answer per distinct part, and an object with a
+``walk_parts()`` method (an intermediate: the set of all parts of its
+arguments, kept) is answered from that set rather than walked.  Each gives sympy's result: the
 answer for a part depends only on the part (sympy's ``==``, which the
 memo's lookup uses, is structural), and parts are rebuilt exactly when
 sympy rebuilds them.
@@ -26,15 +28,17 @@ def _deep() -> None:
         sys.setrecursionlimit(20000)
 
 
-def xreplace(expr: Any, rule: dict) -> Any:
+def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
     """``expr.xreplace(rule)`` for a sympy object (anything else is
-    returned as it is)."""
+    returned as it is).  ``memo`` may be shared by calls with the same
+    ``rule`` (a part's answer depends on the part and the rule only)."""
     if not isinstance(expr, sp.Basic):
         return expr
     if not rule:
         return expr
     _deep()
-    memo: dict[Any, tuple[Any, bool]] = {}
+    if memo is None:
+        memo = {}
 
     def walk(e: Any) -> tuple[Any, bool]:
         # Basic._xreplace: a part in the rule is replaced; otherwise it is
@@ -44,6 +48,11 @@ def xreplace(expr: Any, rule: dict) -> Any:
         found = memo.get(e)
         if found is not None:
             return found
+        if e.is_Function and hasattr(e, "walk_parts"):
+            # an intermediate: none of its parts is replaced
+            if rule.keys().isdisjoint(e.walk_parts()):
+                memo[e] = out = (e, False)
+                return out
         args = []
         changed = False
         for a in e.args:
@@ -51,11 +60,7 @@ def xreplace(expr: Any, rule: dict) -> Any:
                 b, c = walk(a)
                 args.append(b)
                 changed |= c
-            elif hasattr(a, "xreplace"):  # pragma: no cover - not Basic
-                b = a.xreplace(rule)
-                args.append(b)
-                changed |= b is not a
-            else:
+            else:  # pragma: no cover - sympy's arguments are Basic
                 args.append(a)
         out = (e.func(*args), True) if changed else (e, False)
         memo[e] = out
@@ -123,6 +128,9 @@ def appearing(expr: Any, targets: Any) -> set:
             found.add(e)
             if len(found) == len(wanted):
                 break
+        if e.is_Function and hasattr(e, "walk_parts"):
+            found.update(wanted.intersection(e.walk_parts()))
+            continue
         for a in e.args:
             if a not in seen:
                 seen.add(a)

@@ -267,10 +267,11 @@ class Workspace(Mapping):
         to many expressions (the measure numbers of a vector)."""
         keep = {sp.sympify(k) for k in keep}
         table = {k: v for k, v in self.table.rhs.items() if k not in keep}
+        memo: dict = {}  # xreplace's, for this table
 
         def apply(expr: Any) -> Any:
             for _ in range(100 if table else 0):
-                new = _xreplace(expr, table)
+                new = _xreplace(expr, table, memo)
                 if _same(new, expr):
                     break
                 expr = new
@@ -953,11 +954,12 @@ def _larger_than(exprs: list, limit: int) -> bool:
     return False
 
 
-def _xreplace(expr: Any, table: dict) -> Any:
+def _xreplace(expr: Any, table: dict, memo: dict | None = None) -> Any:
     if isinstance(expr, sp.MatrixBase):
-        return expr.applyfunc(lambda e: _xreplace(e, table))
+        return expr.applyfunc(lambda e: _xreplace(e, table, memo))
     if isinstance(expr, sp.Basic):
-        return walks.xreplace(expr, table)  # sympy's result, shared parts once
+        # sympy's result, shared parts once
+        return walks.xreplace(expr, table, memo)
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr

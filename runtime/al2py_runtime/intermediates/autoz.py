@@ -33,6 +33,8 @@ Z1
 
 from __future__ import annotations
 
+import bisect
+import functools
 import math
 import random
 import sys
@@ -88,8 +90,10 @@ class Intermediate(sp.Function):
             for j, a in enumerate(args):
                 if a == _T:
                     terms.append(self.book.partial(self, j))
-                elif isinstance(a, _VARIABLE) and a.has(_T):
-                    terms.append(self.book.partial(self, j) * a.diff(_T))
+                elif isinstance(a, _VARIABLE):
+                    rate = self.book.time_rate(a)
+                    if rate is not None:
+                        terms.append(self.book.partial(self, j) * rate)
             return sp.Add(*terms)
         for j, a in enumerate(args):
             if a == s:
@@ -115,6 +119,21 @@ class Intermediate(sp.Function):
 
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
+
+    def walk_parts(self) -> frozenset:
+        """Every part of the arguments (the number too), and the arguments:
+        found once per instance, for :mod:`al2py_runtime.walks`."""
+        found = self.__dict__.get("_parts")
+        if found is None:
+            parts: set = set()
+            stack = list(self.args)
+            while stack:
+                e = stack.pop()
+                if e not in parts:
+                    parts.add(e)
+                    stack.extend(e.args)
+            found = self.__dict__["_parts"] = frozenset(parts)
+        return found
 
     @classmethod
     def class_key(cls) -> Any:
@@ -257,11 +276,15 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
 def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
     """sympy's ``Expr.as_terms`` (the same terms, monomials and generators),
     with the generators sorted by ``key``, which must order as
-    ``default_sort_key`` does."""
+    ``default_sort_key`` does, for :func:`minus_first` (rational
+    coefficients are left 0)."""
     gens, terms = set(), []
     for term in sp.Add.make_args(expr):
         coeff, rest = term.as_coeff_Mul()
-        coeff = complex(coeff)
+        # The coefficient orders terms only after their monomials, which
+        # minus_first has made distinct: a rational one is not evaluated
+        # (sympy's complex() of it runs evalf).
+        coeff = complex(0) if coeff.is_Rational else complex(coeff)
         cpart, ncpart = {}, []
         if rest is not sp.S.One:
             for factor in sp.Mul.make_args(rest):
@@ -358,6 +381,67 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
+#: the order of a product's factors (``Mul.flatten`` sorts by it)
+_BY_COMPARE = functools.cmp_to_key(sp.Basic.compare)
+
+
+def _plain_factor(a: Any) -> bool:
+    """A factor that ``Mul.flatten`` only sorts (given that no other factor
+    has its base): not a number, not a power of a number, not ``exp``."""
+    b = a.base if a.is_Pow else a
+    return not (
+        b.is_Number
+        or b.is_NumberSymbol
+        or b is sp.S.ImaginaryUnit
+        or isinstance(a, sp.exp)
+        or not a.is_commutative
+    )
+
+
+def product_with(args: tuple, i: int, d: Any) -> Any:
+    """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
+    product's (canonical) arguments and ``d`` an intermediate, or a
+    rational times one (a derivative by the chain rule).
+
+    sympy's ``Mul.flatten`` then only multiplies the rational coefficients
+    and sorts the intermediate in among the other factors (by
+    ``Basic.compare``), when no other factor is a number or a power of
+    one, and none has the intermediate as its base: that is done here
+    directly.  Otherwise (or for any other ``d``) sympy forms the
+    product."""
+    if isinstance(d, Intermediate):
+        n, z = sp.S.One, d
+    elif (
+        d.is_Mul
+        and len(d.args) == 2
+        and d.args[0].is_Rational
+        and isinstance(d.args[1], Intermediate)
+    ):
+        n, z = d.args
+    else:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    others = args[:i] + args[i + 1 :]
+    if others and others[0].is_Number:
+        c, factors = others[0], others[1:]
+        if not c.is_Rational:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])
+    else:
+        c, factors = sp.S.One, others
+    if not z.is_commutative:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    for a in factors:
+        if not _plain_factor(a) or a.as_base_exp()[0] == z:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])
+    coeff = c * n
+    k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
+    new = [*factors[:k], z, *factors[k:]]
+    if coeff is not sp.S.One:
+        new.insert(0, coeff)
+    if len(new) == 1:
+        return new[0]
+    return sp.Mul(*new, evaluate=False, _sympify=False)  # these arguments as they are
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -378,7 +462,9 @@ class Intermediates:
         self._taken = set(taken)
         self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
         self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
+        self._varsets: list[frozenset] = [frozenset()]  # k -> its variables, a set
         self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
+        self._time_rates: dict[Any, Any] = {}  # variable -> its diff(t), or None
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
@@ -409,12 +495,21 @@ class Intermediates:
         """``expr`` itself if trivial (or holding derivatives), else the
         intermediate that stands for it (the same one for the same
         expression)."""
-        expr = sp.sympify(expr)
+        return self._name(sp.sympify(expr), None)
+
+    def _name(self, expr: Any, negated: set | None) -> Any:
+        """:meth:`name`; ``negated``: the variables of ``-expr``, which was
+        being named when its sign was taken out (``expr`` then needs no
+        scan, and its sign is not taken out again: sympy's
+        ``could_extract_minus_sign`` is not true of both an expression and
+        its negation)."""
         if not isinstance(expr, sp.Expr) or trivial(expr):
             return expr
         found = self._named.get(expr)
         if found is not None:
             return found
+        if negated is not None:
+            return self._new_name(expr, negated, None, split=True)
         variables, derivatives, bad = self._scan(expr)
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
@@ -440,7 +535,23 @@ class Intermediates:
         else:
             original = None
         if minus_first(expr, self._sort_key):
-            return -self.name(-expr)
+            return -self._name(-expr, variables)
+        return self._new_name(expr, variables, original, split=False)
+
+    def _new_name(
+        self, expr: Any, variables: set, original: Any, *, split: bool
+    ) -> Any:
+        """A new intermediate for ``expr`` (over ``variables``), named in
+        parts first if ``split``; ``original``: what ``expr`` was split
+        from, named by the same intermediate."""
+        if split:
+            small = self._split(expr)
+            if small is not expr:
+                found = self._named.get(small)
+                if found is not None:
+                    self._named[expr] = found
+                    return found
+                original, expr = expr, small
         variables = self._ordered_variables(variables)
         k = len(self._defs)
         while True:
@@ -451,6 +562,7 @@ class Intermediates:
         self._defs.append(expr)
         self._vars.append(variables)
         self._dvars.append(tuple(a for a in variables if isinstance(a, sp.Derivative)))
+        self._varsets.append(frozenset(variables))
         self._labels.append(label)
         z = self._new_z(k, variables)
         self._named[expr] = z
@@ -465,8 +577,10 @@ class Intermediates:
     def _split(self, expr: Any) -> Any:
         """``expr`` with each part larger than :attr:`LIMIT` nodes named
         (bottom-up), so that no definition is long."""
-        memo: dict[Any, tuple[Any, int]] = {}
         Z = self.Z
+        if all(self._within(a, self.LIMIT) for a in expr.args):
+            return expr  # no part is larger: the walk below changes nothing
+        memo: dict[Any, tuple[Any, int]] = {}
 
         def walk(e: Any, top: bool) -> tuple[Any, int]:
             if e.is_Atom or isinstance(e, Z | AppliedUndef | sp.Derivative):
@@ -498,6 +612,30 @@ class Intermediates:
 
         return walk(expr, True)[0]
 
+    def _within(self, e: Any, limit: int) -> bool:
+        """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
+        counts them (an intermediate, a function of time or a derivative is
+        one node), counting no further than ``limit + 1``."""
+        Z = self.Z
+        stack = [e]
+        n = 0
+        while stack:
+            x = stack.pop()
+            n += 1
+            if n > limit:
+                return False
+            if not (x.is_Atom or isinstance(x, Z | AppliedUndef | sp.Derivative)):
+                stack.extend(x.args)
+        return True
+
+    def time_rate(self, x: Any) -> Any:
+        """``x.diff(t)`` of a variable (None if ``x`` does not depend on
+        ``t``), made once per variable."""
+        found = self._time_rates.get(x, _UNKNOWN)
+        if found is _UNKNOWN:
+            found = self._time_rates[x] = x.diff(_T) if x.has(_T) else None
+        return found
+
     def _canonical(self, z: Intermediate) -> bool:
         return tuple(z.args[1:]) == self._vars[int(z.args[0])]
 
@@ -519,7 +657,7 @@ class Intermediates:
                 args = e.args[1:]
                 k = int(e.args[0])
                 if args == self._vars[k]:
-                    variables.update(args)
+                    variables |= self._varsets[k]  # hashes kept: no sympy call
                     if self._dvars[k]:
                         derivatives.update(self._dvars[k])
                     continue
@@ -798,7 +936,7 @@ class Intermediates:
                 out = given[e]
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
-            elif args == e.book.canonical(int(e.args[0]))[0] or all(
+            elif (e.book is self and self._canonical(e)) or all(
                 a.is_Atom or isinstance(a, _VARIABLE) for a in args
             ):
                 j = e.book.position(e, x)
@@ -819,7 +957,7 @@ class Intermediates:
             for i, a in enumerate(args):
                 d = self._pd(a, x, memo, given)
                 if d is not _ZERO:
-                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
+                    terms.append(product_with(args, i, d))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given)

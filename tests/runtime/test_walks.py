@@ -1,0 +1,107 @@
+"""The fast paths of issue 21 give sympy's own results, object for object:
+the walks over shared parts (``al2py_runtime.walks``), the sign of a sum
+(``minus_first``), an intermediate's sort key and the chain rule's
+products (``product_with``)."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+from al2py_runtime import walks
+from al2py_runtime.intermediates.autoz import Intermediates, minus_first, product_with
+from sympy.physics.vector import dynamicsymbols
+
+T = dynamicsymbols._t
+Q = dynamicsymbols("q1:5")
+U = dynamicsymbols("u1:4")
+C = sp.symbols("c1:6")
+
+
+def _book_and_exprs(seed: int = 3) -> tuple[Intermediates, list]:
+    rng = random.Random(seed)
+    book = Intermediates()
+    atoms = [*Q, *U, *C, *(u.diff(T) for u in U)]
+    zs = []
+    exprs = []
+    for _ in range(60):
+        parts = [rng.choice(atoms + zs) if zs else rng.choice(atoms) for _ in range(4)]
+        e = (
+            rng.choice([1, -1, 2, sp.Rational(-3, 2)]) * parts[0] * sp.cos(parts[1])
+            + rng.choice([1, -1, 3]) * parts[2] * parts[3]
+            - rng.choice(C) * sp.sin(rng.choice(Q)) ** 2
+        )
+        exprs.append(e)
+        z = book.name(e.xreplace({u.diff(T): 0 for u in U}))
+        if isinstance(z, book.Z):
+            zs.append(z)
+    exprs += [a * b - c for a, b, c in zip(zs, zs[1:], zs[2:], strict=False)]
+    exprs += [sp.Add(*zs[i : i + 5]) * C[i % 5] for i in range(0, len(zs), 5)]
+    return book, exprs
+
+
+def test_walks_equal_sympys():
+    _, exprs = _book_and_exprs()
+    rules = [
+        {Q[0]: Q[1] + 1},
+        {U[0]: 0, U[1].diff(T): C[0]},
+        {C[0]: sp.Float(0.5), Q[2]: sp.S.Zero},
+        {sp.Integer(2): sp.Integer(3)},
+    ]
+    for e in exprs:
+        for rule in rules:
+            assert walks.xreplace(e, rule) == e.xreplace(rule)
+        wanted = [*U, Q[3], C[4], U[2].diff(T)]
+        assert walks.appearing(e, wanted) == {x for x in wanted if e.has(x)}
+        assert walks.atoms(e, sp.Symbol, sp.Derivative) == e.atoms(
+            sp.Symbol, sp.Derivative
+        )
+
+        def query(x):
+            return isinstance(x, sp.cos)
+
+        def value(x):
+            return sp.sin(x.args[0] + 1)
+
+        assert walks.replace(e, query, value) == e.replace(query, value)
+
+
+def test_the_sign_of_a_sum_is_sympys():
+    book, exprs = _book_and_exprs()
+    sums = [e for e in exprs if e.is_Add]
+    sums += [-e for e in sums]
+    sums += [book.Z(*z.args) - w for z, w in zip(book._named.values(), C, strict=False)]
+    for e in sums:
+        assert minus_first(e, book._sort_key) == e.could_extract_minus_sign()
+        assert minus_first(e) == e.could_extract_minus_sign()
+
+
+def test_an_intermediates_sort_key_is_sympys():
+    book, _ = _book_and_exprs()
+    for z in book._named.values():
+        if isinstance(z, book.Z):
+            assert book._sort_key(z) == sp.default_sort_key(z)
+
+
+def test_the_chain_rules_products_are_sympys():
+    book, _ = _book_and_exprs()
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    products = [
+        sp.Mul(zs[0], zs[1]),
+        sp.Mul(2, zs[2], C[0], zs[3]),
+        sp.Mul(sp.Rational(-1, 3), zs[4] ** 2, Q[0], sp.cos(Q[1])),
+        sp.Mul(sp.sqrt(2), zs[5], C[1]),
+        sp.Mul(C[2], zs[6] + zs[7], zs[8]),
+        sp.Mul(sp.Float(1.5), zs[0], zs[1]),
+    ]
+    ds = [zs[0], zs[3], -zs[9], 3 * zs[4], zs[10], sp.Integer(2), C[3] * zs[2]]
+    for p in products:
+        if not p.is_Mul:
+            continue
+        args = p.args
+        for i in range(len(args)):
+            for d in ds:
+                mine = product_with(args, i, d)
+                sympys = sp.Mul(*args[:i], d, *args[i + 1 :])
+                assert type(mine) is type(sympys)
+                assert mine.args == sympys.args
