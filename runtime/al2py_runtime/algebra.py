@@ -23,7 +23,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
 from .matrices import as_matrix
-from .model.kinematics import vmap
+from .model.kinematics import is_small, vmap
 
 __all__ = [
     "expand",
@@ -558,12 +558,7 @@ _FACTOR_LIMIT = 300
 def _factor_small(expr: sp.Expr) -> sp.Expr:
     """``factor_terms(expr)`` for an expression of at most
     :data:`_FACTOR_LIMIT` tree nodes; a larger one as it is."""
-    count = 0
-    for _ in sp.preorder_traversal(expr):
-        count += 1
-        if count > _FACTOR_LIMIT:
-            return expr
-    return sp.factor_terms(expr)
+    return sp.factor_terms(expr) if is_small(expr, _FACTOR_LIMIT) else expr
 
 
 def _linear_system(

@@ -523,20 +523,26 @@ class Intermediates:
             if found is not None:
                 return found
             variables = self._scan(expr)[0]
-        small = self._split(expr)
-        if small is not expr:
-            # Named in parts: a derivative or substitution then walks short
-            # definitions (a tree walk sees a repeated part each time).
-            found = self._named.get(small)
-            if found is not None:
-                self._named[expr] = found
-                return found
-            original, expr = expr, small
-        else:
-            original = None
+        found, expr, original = self._in_parts(expr)
+        if found is not None:
+            return found
         if minus_first(expr, self._sort_key):
             return -self._name(-expr, variables)
         return self._new_name(expr, variables, original, split=False)
+
+    def _in_parts(self, expr: Any) -> tuple[Any, Any, Any]:
+        """``expr`` named in parts (:meth:`_split`), so that a derivative or
+        substitution then walks short definitions (a tree walk sees a
+        repeated part each time): ``(found, split, original)``, the
+        intermediate that already stands for the split form (or None), the
+        split form, and ``expr`` if it was split (else None)."""
+        small = self._split(expr)
+        if small is expr:
+            return None, expr, None
+        found = self._named.get(small)
+        if found is not None:
+            self._named[expr] = found
+        return found, small, expr
 
     def _new_name(
         self, expr: Any, variables: set, original: Any, *, split: bool
@@ -545,13 +551,10 @@ class Intermediates:
         parts first if ``split``; ``original``: what ``expr`` was split
         from, named by the same intermediate."""
         if split:
-            small = self._split(expr)
-            if small is not expr:
-                found = self._named.get(small)
-                if found is not None:
-                    self._named[expr] = found
-                    return found
-                original, expr = expr, small
+            found, expr, split_from = self._in_parts(expr)
+            if found is not None:
+                return found
+            original = split_from if split_from is not None else original
         variables = self._ordered_variables(variables)
         k = len(self._defs)
         while True:
