@@ -824,9 +824,6 @@ class FastKane:
             return sp.ImmutableMatrix(expr.rows, expr.cols, [walk(x) for x in expr])
         return walk(sp.sympify(expr))
 
-    def _out(self, expr: Any) -> Any:
-        return self._to_plain(expr)
-
     def _plain_definitions(self) -> dict[sp.Symbol, Any]:
         """Each plain symbol's definition, over the plain symbols."""
         symbols = self._symbols()
@@ -850,24 +847,24 @@ class FastKane:
     def fr(self) -> sp.Matrix:
         """``Fr`` (the reduced rows), written with intermediates."""
         self._need()
-        return self._out(self._fr)
+        return self._to_plain(self._fr)
 
     @property
     def frstar(self) -> sp.Matrix:
         """``Fr*`` (the reduced rows), written with intermediates."""
         self._need()
-        return self._out(self._frstar)
+        return self._to_plain(self._frstar)
 
     @property
     def mass_matrix(self) -> sp.Matrix:
         """``KanesMethod.mass_matrix``: reduced dynamic rows, then constraints."""
         self._need()
-        return self._out(self._k_d.col_join(self._k_dnh))
+        return self._to_plain(self._k_d.col_join(self._k_dnh))
 
     @property
     def forcing(self) -> sp.Matrix:
         self._need()
-        return self._out((-self._f_d).col_join(-self._f_dnh))
+        return self._to_plain((-self._f_d).col_join(-self._f_dnh))
 
     @property
     def mass_matrix_kin(self) -> sp.Matrix:
@@ -875,7 +872,7 @@ class FastKane:
 
     @property
     def forcing_kin(self) -> sp.Matrix:
-        return self._out(sp.Matrix(self._qdot_ind))
+        return self._to_plain(sp.Matrix(self._qdot_ind))
 
     @property
     def mass_matrix_full(self) -> sp.Matrix:
@@ -893,7 +890,7 @@ class FastKane:
         self._need()
         if self._aux is None:
             raise ValueError("no auxiliary speeds have been declared")
-        return self._out(self._aux)
+        return self._to_plain(self._aux)
 
     @property
     def intermediates(self) -> list[tuple[sp.Symbol, Any]]:
