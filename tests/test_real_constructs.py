@@ -366,6 +366,21 @@ def test_input_function_of_a_computed_input(tmp_path):
     assert float(mod.AUTOLEV["Y"]) == pytest.approx(90 + np.pi / 2)
 
 
+def test_input_function_of_a_constant_given_a_value(tmp_path):
+    """``Input(A)`` of a constant assigned a value (``A = PI/2``) rather than
+    given an Input is that value, from the Inputs it uses; a constant with
+    neither stays an error naming it."""
+    src = (
+        "Constants L, A, B, C\nA = pi/2\nInput L = 2\nB = 3*L + A\n"
+        "X = Input(A) + 1\nY = Input(B)\n"
+    )
+    mod, _ = run(src, tmp_path)
+    assert float(mod.AUTOLEV["X"]) == pytest.approx(np.pi / 2 + 1)
+    assert float(mod.AUTOLEV["Y"]) == pytest.approx(6 + np.pi / 2)
+    with pytest.raises(Exception, match="C has no Input value"):
+        run(src + "Z = Input(C)\n", tmp_path, "snip_c")
+
+
 def test_assigned_u_variables_are_not_the_speeds(tmp_path):
     """``Variables U{2}`` assigned expressions (``U1 = Dot(W_A_N>, A3>)``)
     name quantities; the generalized speed is the motion variable W."""

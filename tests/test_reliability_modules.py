@@ -206,6 +206,43 @@ def test_run_time_errors_name_the_al_line(tmp_path, text, line, message):
         pytest.fail("importing the module did not raise")
 
 
+@pytest.mark.parametrize("debug", [False, True])
+def test_library_failures_are_worded_by_al2py(tmp_path, monkeypatch, debug):
+    """A failure inside sympy that al2py did not foresee names the .al line
+    and the library, never the library's own text (AL2PY_DEBUG=1 adds it)."""
+    import sympy as sp
+
+    def broken(*args, **kw):
+        x = sp.Symbol("x")
+        return sp.Poly(sp.sin(x), x)  # sympy's PolynomialError
+
+    if debug:
+        monkeypatch.setenv("AL2PY_DEBUG", "1")
+    else:
+        monkeypatch.delenv("AL2PY_DEBUG", raising=False)
+    mod = module(tmp_path, "lib", "Variables X\nY = D(X^2, X)\n")
+    monkeypatch.setattr(sp, "diff", broken)
+    with pytest.raises(al2py_runtime.AutolevRuntimeError) as caught:
+        load_module(mod.read_text(), tmp_path, "lib_debug" if debug else "lib")
+    exc = caught.value
+    assert (exc.filename, exc.line) == ("lib.al", 2)
+    assert exc.message.startswith("an unexpected failure in sympy (an al2py bug")
+    assert ("PolynomialError" in exc.message) is debug
+    assert ("generators" in exc.message) is debug  # sympy's own words
+
+
+def test_matrix_errors_of_sympy_are_worded():
+    import sympy as sp
+    from al2py_runtime.safety import describe
+
+    with pytest.raises(Exception) as caught:
+        sp.Matrix([[1, 2]]) + sp.Matrix([[1], [2]])
+    assert describe(caught.value) == "the sizes of the matrices do not agree"
+    with pytest.raises(Exception) as caught:
+        sp.Matrix([[1, 2], [2, 4]]).inv()
+    assert describe(caught.value) == "the matrix is singular (not invertible)"
+
+
 def test_errors_outside_generated_modules_keep_their_tracebacks(tmp_path):
     """The hook leaves other programs' exceptions alone."""
     mod = module(tmp_path, "fine", "Constants A\nB = A + 1\n")

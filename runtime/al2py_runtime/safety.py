@@ -183,17 +183,101 @@ def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
 
 
 def describe(exc: BaseException) -> str:
-    """The message of an exception, without Python's decoration."""
+    """The message of an exception, without Python's decoration.
+
+    Only messages that al2py wrote reach the user: those of its own error
+    classes, and those of a ``raise`` statement of its own code.  Anything
+    else (a library's or Python's own text, from sympy, numpy or the
+    interpreter) is a failure al2py did not foresee, and is worded as one
+    (:func:`unexpected`).
+
+    >>> describe(ValueError("the speeds are not independent"))
+    'the speeds are not independent'
+    """
+    if not is_worded(exc):
+        return unexpected(exc)
     if isinstance(exc, KeyError) and exc.args:
         text = str(exc.args[0])
     else:
         text = str(exc)
-    plain = (ValueError, KeyError, ZeroDivisionError, ArithmeticError)
-    if isinstance(exc, plain) and type(exc).__module__.startswith(
-        ("builtins", "al2py_runtime")
-    ):
-        return text or type(exc).__name__
-    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
+    return text or type(exc).__name__
+
+
+#: packages whose ``raise`` statements word their messages for users
+_OURS = ("al2py_runtime", "al2py")
+
+
+def is_worded(exc: BaseException) -> bool:
+    """True if ``exc``'s message was written for users: its class is one of
+    al2py's, or a ``raise`` statement of al2py's code made it (not an
+    operation that failed inside it, nor a library).  An exception without
+    a traceback (made, not raised) counts as worded."""
+    if type(exc).__module__.split(".")[0] in _OURS:
+        return True
+    tb = exc.__traceback__
+    if tb is None:
+        return True
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    frame = tb.tb_frame
+    if str(frame.f_globals.get("__name__", "")).split(".")[0] not in _OURS:
+        return False
+    text = linecache.getline(frame.f_code.co_filename, tb.tb_lineno, frame.f_globals)
+    return text.lstrip().startswith("raise ")
+
+
+#: what an unforeseen failure of each kind means, in the user's terms
+_KINDS = (
+    (RecursionError, "the expression is nested too deeply to evaluate"),
+    (MemoryError, "out of memory"),
+    (ZeroDivisionError, "division by zero"),
+    (OverflowError, "a number is too large"),
+)
+
+
+#: sympy's matrix errors (by name: this module imports no library), which
+#: a script's own arithmetic can cause
+_SYMPY_KINDS = {
+    "ShapeError": "the sizes of the matrices do not agree",
+    "NonSquareMatrixError": "the matrix is not square",
+    "NonInvertibleMatrixError": "the matrix is singular (not invertible)",
+}
+
+
+def unexpected(exc: BaseException) -> str:
+    """The user's message for an exception al2py did not word: what it
+    means where that is known (division by zero, too deep, out of
+    memory), else which library failed; the library's own text only with
+    ``AL2PY_DEBUG=1``."""
+    for kind, meaning in _KINDS:
+        if isinstance(exc, kind):
+            out = meaning
+            break
+    else:
+        out = _SYMPY_KINDS.get(type(exc).__name__, "")
+    if not out:
+        out = (
+            f"an unexpected failure in {_library(exc)} (an al2py bug: please"
+            " report it with the script; AL2PY_DEBUG=1 shows the details)"
+        )
+    if os.environ.get("AL2PY_DEBUG"):
+        out += f" [{type(exc).__module__}.{type(exc).__name__}: {exc}]"
+    return out
+
+
+def _library(exc: BaseException) -> str:
+    """The package whose code raised ``exc`` (``Python`` for the
+    interpreter's own operations and the standard library)."""
+    tb = exc.__traceback__
+    while tb is not None and tb.tb_next is not None:
+        tb = tb.tb_next
+    name = "" if tb is None else str(tb.tb_frame.f_globals.get("__name__", ""))
+    root = name.split(".")[0]
+    if root in ("sympy", "numpy", "scipy", "mpmath", "symengine", "matplotlib"):
+        return root
+    if root in _OURS:
+        return "al2py"
+    return "Python"
 
 
 def located(

@@ -238,10 +238,7 @@ def _check_in_this_process(
         result.message = too_deep(display, text).format()
         return result
     except Exception as exc:  # noqa: BLE001 - a verdict, never a traceback
-        result.message = (
-            f"al2py: internal error: {type(exc).__name__}: {exc} "
-            "(please report this bug)"
-        )
+        result.message = f"al2py: internal error: {_unexpected(exc)}"
         return result
 
     module_path = workdir / f"{conversion.module}.py"
@@ -276,9 +273,7 @@ def _check_in_this_process(
         every = check_responses(entries, module.al)
     except Exception as exc:  # noqa: BLE001
         result.message = "\n".join(
-            m
-            for m in (job_failure, f"checking failed: {type(exc).__name__}: {exc}")
-            if m
+            m for m in (job_failure, f"checking failed: {_describe(exc)}") if m
         )
         return result
     checks = [c for c in every if c.compared]
@@ -323,9 +318,24 @@ def _run_jobs(module, display: str, outdir: Path) -> str:
             text = str(exc)
             if text.startswith(where + ": "):
                 text = text[len(where) + 2 :]
-            name = "" if _is_user_error(exc) else f"{type(exc).__name__}: "
-            return f"{located}: error: {where} failed: {name}{text}"
+            if not _is_user_error(exc):
+                text = _describe(exc)
+            return f"{located}: error: {where} failed: {text}"
     return ""
+
+
+def _describe(exc: BaseException) -> str:
+    """The runtime's wording of a failure (:func:`al2py_runtime.safety.describe`),
+    imported when a failure happens: the runtime's package loads sympy."""
+    from al2py_runtime.safety import describe
+
+    return describe(exc)
+
+
+def _unexpected(exc: BaseException) -> str:
+    from al2py_runtime.safety import unexpected
+
+    return unexpected(exc)
 
 
 def _is_user_error(exc: BaseException) -> bool:
@@ -351,10 +361,7 @@ def _import_failure(exc: BaseException, module_path: Path, display: str) -> str:
         if Path(frame.filename) == module_path:
             where = f"\n    generated line {frame.lineno}: {(frame.line or '').strip()}"
             break
-    name = type(exc).__name__
-    return (
-        f"{display}: error: importing the converted module raised {name}: {exc}{where}"
-    )
+    return f"{display}: error: importing the converted module failed: {_describe(exc)}{where}"
 
 
 def _worker_main(argv: Sequence[str]) -> int:
@@ -825,10 +832,7 @@ def convert_file(script: Script, outdir: Path) -> ConvertResult:
         message = f"al2py: error: {exc.filename or script.display}: {exc.strerror}"
         return ConvertResult(script.display, shown, False, message)
     except Exception as exc:  # noqa: BLE001 - a verdict, never a traceback
-        message = (
-            f"al2py: internal error: {type(exc).__name__}: {exc} "
-            "(please report this bug)"
-        )
+        message = f"al2py: internal error: {_unexpected(exc)}"
         return ConvertResult(script.display, shown, False, message)
     return ConvertResult(script.display, shown, True)
 

@@ -23,6 +23,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
+from al2py_runtime.safety import describe
 from al2py_runtime.vocabulary import BUILTINS, Style, unit_vector
 from sympy.physics.vector import Dyadic, Vector
 
@@ -467,7 +468,5 @@ def _check_one(
         if compare(resolve(a), resolve(b), digits, unit_norms=norms) is None:
             return ResponseCheck(entry, True, "resolved", shown)
     except Exception as exc:  # noqa: BLE001 - a verdict, never a crash
-        return ResponseCheck(
-            entry, False, f"cannot compare: {type(exc).__name__}: {exc}", shown
-        )
+        return ResponseCheck(entry, False, f"cannot compare: {describe(exc)}", shown)
     return ResponseCheck(entry, False, reason, shown)

@@ -233,7 +233,6 @@ def _guarded_inner(run) -> int:
         print("al2py: error: the input is nested too deeply", file=sys.stderr)
         return EXIT_INPUT
     except Exception as exc:  # noqa: BLE001 - last line of defence: no traceback
-        name = type(exc).__name__
         if isinstance(exc, ModuleNotFoundError) and (exc.name or "").startswith(
             "al2py_runtime"
         ):
@@ -243,10 +242,9 @@ def _guarded_inner(run) -> int:
                 file=sys.stderr,
             )
             return EXIT_BUG
-        print(
-            f"al2py: internal error: {name}: {exc} (please report this bug)",
-            file=sys.stderr,
-        )
+        from al2py_runtime.safety import unexpected
+
+        print(f"al2py: internal error: {unexpected(exc)}", file=sys.stderr)
         return EXIT_BUG
 
 

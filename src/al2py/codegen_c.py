@@ -75,9 +75,11 @@ def main(argv: list[str]) -> int:
     try:
         exec(compile(code, module.__file__, "exec"), module.__dict__)  # noqa: S102
     except Exception as exc:  # noqa: BLE001 - the model itself fails
+        from al2py_runtime.safety import describe
+
         print(
             f"al2py: error: {args.input}: the model cannot be formed:"
-            f" {type(exc).__name__}: {exc}",
+            f" {describe(exc)}",
             file=sys.stderr,
         )
         return 2

@@ -293,7 +293,10 @@ class Numerics:
         key = normalize_name(name)
         item = self._numerics.inputs.get(key)
         if item is None:
-            raise KeyError(f"{name} has no Input value")
+            value = self._assigned_value(key)
+            if value is None:
+                raise KeyError(f"{name} has no Input value")
+            return value
         factor = self._numerics.unit_system.to_internal(item.unit)
         value = item.value
         if isinstance(value, sp.Basic) and not value.is_number:
@@ -303,6 +306,30 @@ class Numerics:
             value = values.values[key] / factor
         if unit_system:
             return sp.Float(float(value) * factor)
+        value = float(value)
+        return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
+
+    def _assigned_value(self, key: str) -> Any:
+        """``Input(A)`` of a constant with no Input but a value of its own
+        (``A = PI/2``): that value, computed from the Inputs as a job
+        computes it (None if ``A`` is not such a constant, or its value is
+        not a number then).  Autolev's programs fold such a constant into
+        the code rather than reading it (docs/semantics.md, "Input")."""
+        entry = self._ws.table.entries.get(key)
+        if entry is None or entry.kind != "constant":
+            return None
+        rhs = self._ws.table.rhs.get(entry.obj)
+        if not isinstance(rhs, sp.Basic):
+            return None
+        values, _ = input_values(self._make_job("ALGEBRAIC"), {}, zero_missing=False)
+        known = {
+            e.obj: values.values[name]
+            for name, e in self._ws.table.entries.items()
+            if name in values.values
+        }
+        value = self._ws.resolve(rhs).xreplace(known)
+        if not value.is_number:
+            return None
         value = float(value)
         return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
 
