@@ -381,6 +381,32 @@ def test_input_function_of_a_constant_given_a_value(tmp_path):
         run(src + "Z = Input(C)\n", tmp_path, "snip_c")
 
 
+def test_kane_with_forces_after_constrain_of_declared_auxiliary_speeds(tmp_path):
+    """``MotionVariables' U', UA'`` with ``Constrain(AUXILIARY[UA])``: UA
+    keeps its Fr row although Constrain gave UA' a value too; ``Kane(TEN)``
+    solves that row for the rod's tension and rewrites ZERO, and the
+    script's ``Zero`` follows (``Solve(Zero, U')`` sees one row)."""
+    src = (
+        "Newtonian N\nBodies A\nParticles P\nVariables Q', TEN\n"
+        "MotionVariables' U', UA'\nConstants m, g, l\nMass A = 0, P = m\n"
+        "Inertia A, 0, 0, 0\nSimprot(N, A, 3, Q)\nQ' = U\nW_A_N> = U*A3>\n"
+        "P_AO_P> = l*A1>\nV_P_N> = U*l*A2> + UA*A1>\nA_P_N> = Dt(V_P_N>, N)\n"
+        "Gravity(-g*N2>)\nForce_P> += -TEN*A1>\nAUXILIARY[1] = UA\n"
+        "Constrain(AUXILIARY[UA])\nZero = Fr() + FrStar()\nKane(TEN)\n"
+        "Solve(Zero, U')\n"
+    )
+    mod, code = run(src, tmp_path)
+    assert "Zero = al.kane(" in code
+    q, u, m, g, length = (mod.al.symbol(n) for n in ("Q", "U", "M", "G", "L"))
+    point = {q: 0.7, u: 1.3, m: 2.0, g: 9.81, length: 0.8}
+    tension = mod.AUTOLEV["TEN"].xreplace(point)
+    want = 2.0 * 0.8 * 1.3**2 - 2.0 * 9.81 * np.sin(0.7)
+    assert float(tension) == pytest.approx(want)
+    assert mod.AUTOLEV["ZERO"].shape == (1, 1)
+    acc = mod.AUTOLEV["U'"].xreplace(point)
+    assert float(acc) == pytest.approx(-9.81 * np.cos(0.7) / 0.8)
+
+
 def test_assigned_u_variables_are_not_the_speeds(tmp_path):
     """``Variables U{2}`` assigned expressions (``U1 = Dot(W_A_N>, A3>)``)
     name quantities; the generalized speed is the motion variable W."""

@@ -407,6 +407,12 @@ class Generator:
             code = self._args(tuple(args), b)
         if b.responds:  # it prints a response: say which line
             code += f"{', ' if code else ''}line={self._line}"
+        if b.name == "KANE":
+            # Kane rewrites ZERO (the independent speeds' rows, the forces
+            # solved for): the script's name for it follows.
+            zero = self.facts.table.quantity("ZERO")
+            if zero is not None and zero.kind not in vocab.QUANTITY_DECLS:
+                return f"{zero.ident} = al.{method}({code})"
         return f"al.{method}({code})"
 
     def _eig_outputs(self, call: ir.Call) -> list[str]:

@@ -310,13 +310,14 @@ class Numerics:
         return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
 
     def _assigned_value(self, key: str) -> Any:
-        """``Input(A)`` of a constant with no Input but a value of its own
-        (``A = PI/2``): that value, computed from the Inputs as a job
-        computes it (None if ``A`` is not such a constant, or its value is
-        not a number then).  Autolev's programs fold such a constant into
-        the code rather than reading it (docs/semantics.md, "Input")."""
+        """``Input(A)`` of a name with no Input but a value of its own
+        (``A = PI/2``, ``U1 = Dot(W_A_N>, A1>)``): that value, computed from
+        the Inputs (the initial values, for variables) as a job computes
+        it; None if ``A`` has no such value, or it is not a number then.
+        Autolev's programs fold such a constant into the code rather than
+        reading it (docs/semantics.md, "Input")."""
         entry = self._ws.table.entries.get(key)
-        if entry is None or entry.kind != "constant":
+        if entry is None or entry.kind not in ("constant", "variable", "specified"):
             return None
         rhs = self._ws.table.rhs.get(entry.obj)
         if not isinstance(rhs, sp.Basic):

@@ -52,6 +52,8 @@ class Speeds:
             return list(self.registry.speeds)
         st = self.registry
         solved = set(st.dependent) | set(st.auxiliary)
+        # Constrain gives their derivatives right-hand sides too
+        solved |= {sp.Derivative(u, t) for u in solved}
         rhs = self.ws.table.rhs
         found = []
         for name, entry in self.ws.table.entries.items():
