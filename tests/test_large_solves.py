@@ -157,3 +157,61 @@ def test_autolev_of_a_large_value_comes_back_over_intermediates(twin, monkeypatc
     b = complex(full.xreplace(numbers).evalf())
     assert a == pytest.approx(b, rel=1e-10, abs=1e-12)
     assert abs(a) > 1e-6  # a real value, not a vanishing one
+
+
+def _nested_script(depth: int) -> str:
+    """``E_k = E_(k-1)^2 + B*E_(k-1)`` holding an acceleration: a few dozen
+    distinct parts, a tree of about 2**depth times as many nodes."""
+    lines = ["AutoZ ON", "Variables Q', U', X, Y", "Constants A, B"]
+    lines.append("E1 = (Q + U')*(Q - A)")
+    lines += [f"E{k} = E{k - 1}*E{k - 1} + B*E{k - 1}" for k in range(2, depth + 1)]
+    lines += [f"Z2 = [E{depth}*X + Y - 1; X - A*Y]", "Solve(Z2, X, Y)"]
+    return "\n".join(lines) + "\n"
+
+
+def test_solve_and_transcript_walk_shared_parts_once(tmp_path):
+    """A Solve of equations whose parts are shared (a tree of millions of
+    nodes, a few hundred distinct parts) takes each part once (it did not
+    finish in minutes), and the transcript prints it with names."""
+    depth = 22
+    mod, seconds = _module(tmp_path, _nested_script(depth), "nested")
+    assert seconds < 30
+    t = sp.Symbol("t")
+    q, u, a, b = (mod.al.symbol(n) for n in ("Q", "U", "A", "B"))
+    point = {sp.Derivative(u, t): 0.2, q: 0.3, a: 0.1, b: 0.5}
+    e = (0.3 + 0.2) * (0.3 - 0.1)
+    for _ in range(depth - 1):
+        e = e * e + 0.5 * e
+    y = float(mod.AUTOLEV["Y"].xreplace(point).evalf())
+    x = float(mod.AUTOLEV["X"].xreplace(point).evalf())
+    assert y == pytest.approx(1 / (1 + 0.1 * e))
+    assert x == pytest.approx(0.1 * y)
+    lines = mod.al.transcript(_nested_script(depth).splitlines())
+    assert max(len(line) for line in lines) < 2000
+
+
+def test_responses_too_large_to_print_as_trees_are_named():
+    """A response of a few dozen distinct parts but millions of tree nodes
+    is shown with its parts named (its acceleration kept visible), and the
+    named form has the same value."""
+    from al2py_runtime.intermediates.autoz import Intermediates
+    from al2py_runtime.model.kinematics import is_small
+    from al2py_runtime.workspace import _named_for_display
+    from sympy.physics.mechanics import dynamicsymbols
+
+    q, u = dynamicsymbols("q u")
+    a, b = sp.symbols("a b")
+    ud = sp.Derivative(u, sp.Symbol("t"))
+    e = (q + 2) * (q - a)
+    for _ in range(15):
+        e = e * e + b * e
+    value = e + q * ud
+    book = Intermediates()
+    shown = _named_for_display(book, sp.Matrix([value]))[0]
+    assert is_small(shown, 50) and shown.has(ud)
+    point = {q: 0.3, a: 2.1, b: 0.5, ud: 0.7}
+    want = (0.3 + 2) * (0.3 - 2.1)
+    for _ in range(15):
+        want = want * want + 0.5 * want
+    got = float(shown.xreplace(point).evalf())
+    assert got == pytest.approx(want + 0.3 * 0.7)

@@ -22,6 +22,7 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
+from . import walks
 from .matrices import as_matrix
 from .model.kinematics import is_small, vmap
 
@@ -101,7 +102,10 @@ def _freeze_table(exprs: Iterable[Any], targets: Iterable[Any] = ()) -> dict:
         items = e if isinstance(e, sp.MatrixBase) else [e]
         for item in items:
             if isinstance(item, sp.Basic):
-                for d in item.atoms(sp.Derivative):
+                # each distinct part once: large equations share most parts
+                for d in sorted(
+                    walks.atoms(item, sp.Derivative), key=sp.default_sort_key
+                ):
                     table.setdefault(d, sp.Dummy("d"))
     for x in targets:
         x = sp.sympify(x)
@@ -111,13 +115,16 @@ def _freeze_table(exprs: Iterable[Any], targets: Iterable[Any] = ()) -> dict:
 
 
 def _freeze(expr: Any, table: dict) -> Any:
-    return expr.xreplace(table) if table and isinstance(expr, sp.Basic) else expr
+    return walks.xreplace(expr, table) if table and isinstance(expr, sp.Basic) else expr
 
 
 def _thaw(expr: Any, table: dict) -> Any:
     if not table or not isinstance(expr, sp.Basic | sp.MatrixBase):
         return expr
-    return expr.xreplace({v: k for k, v in table.items()})
+    back = {v: k for k, v in table.items()}
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: walks.xreplace(e, back))
+    return walks.xreplace(expr, back)
 
 
 def _variables(expr: sp.Expr) -> set:
@@ -524,7 +531,7 @@ def solve_linear(
     table = _freeze_table(equations, xs)
     syms = [table.get(x, x) for x in xs]
     frozen = [_freeze(sp.sympify(e), table) for e in equations]
-    a, b = _linear_system(frozen, syms, xs)
+    a, b = _linear_system(frozen, syms, xs, book)
     singular = "Solve: the equations are singular (determinant is zero)"
     if book is not None:
         try:
@@ -562,18 +569,28 @@ def _factor_small(expr: sp.Expr) -> sp.Expr:
 
 
 def _linear_system(
-    eqs: list[sp.Expr], syms: list, xs: list
+    eqs: list[sp.Expr], syms: list, xs: list, book: Any = None
 ) -> tuple[sp.Matrix, sp.Matrix]:
+    """The coefficients and right-hand sides of linear ``eqs`` in ``syms``.
+    With a book, the derivatives are its walk (one memo per unknown, shared
+    by the equations) and every other walk visits each distinct part once:
+    large equations share most of their parts, which sympy's ``diff``,
+    ``has`` and ``xreplace`` walk each time they occur."""
     rows, rhs = [], []
+    memos: dict = {s: {} for s in syms}
+    zero = {s: 0 for s in syms}
     for e in eqs:
-        row = [e.diff(s) for s in syms]
+        if book is not None:
+            row = [book.derivative(e, s, memos[s]) for s in syms]
+        else:
+            row = [e.diff(s) for s in syms]
         for s, c in zip(syms, row, strict=True):
-            if c.has(*syms):
+            if walks.appearing(c, syms):
                 raise ValueError(
                     f"Solve: the equations are not linear in {_name(s, syms, xs)}"
                 )
         rows.append(row)
-        rhs.append(-e.xreplace({s: 0 for s in syms}))
+        rhs.append(-walks.xreplace(e, zero))
     return sp.Matrix(rows), sp.Matrix(rhs)
 
 

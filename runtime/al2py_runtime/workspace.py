@@ -31,10 +31,11 @@ from typing import Any
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
+from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, matrices, walks
 from .jobs.numerics import Numerics
-from .model.kinematics import doit_derivatives, is_small, one_or_tuple
+from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
 from .model.model import MODEL_COMMANDS, Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
@@ -613,13 +614,14 @@ class Workspace(Mapping):
         book = self.book_if_made()
         if book is None:
             return list(responses)
-        from sympy.physics.vector import Vector
 
         from .intermediates.autoz import has_intermediates
 
         out: list[Response] = []
         defined: set[Any] = set()
         for r in responses:
+            if r.autoz and not r.verbatim:
+                r = replace(r, value=_named_for_display(book, r.value))
             value = r.value
             parts = [value]
             if isinstance(value, sp.MatrixBase):
@@ -1006,6 +1008,29 @@ def _is_vectorial(value: Any) -> bool:
     from sympy.physics.vector import Dyadic, Vector
 
     return isinstance(value, Vector | Dyadic)
+
+
+#: a response (given while AutoZ was ON) with more tree nodes than this is
+#: printed with its parts named: its text would grow with every repetition
+#: of a shared part (a tree of millions of nodes holds a few hundred
+#: distinct ones)
+SHOWN_NODES = 20000
+
+
+def _named_for_display(book: Any, value: Any) -> Any:
+    """``value`` with each scalar too large to print as a tree named as
+    AutoZ names: linear in the derivatives it holds (accelerations stay
+    visible), each coefficient and the rest an intermediate."""
+
+    def one(e: Any) -> Any:
+        if not isinstance(e, sp.Expr) or is_small(e, SHOWN_NODES):
+            return e
+        found = walks.atoms(e, sp.Derivative)
+        return book.name_linear(e, sorted(found, key=sp.default_sort_key))
+
+    if not isinstance(value, sp.Basic | sp.MatrixBase | Vector | Dyadic):
+        return value
+    return vmap(value, one)
 
 
 class _Partial:
