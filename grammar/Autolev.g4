@@ -156,13 +156,15 @@ fileName
     ;
 
 // `Digits 7`, `Overwrite All`, and word commands with a list:
-// `Encode A, B'`, `Units T=S, TINITIAL=S`.
+// `Encode A, B'`, `Units T=S, TINITIAL=S`, `Units [A, B]=M, [C]=KG` (a group
+// of names given one unit).
 setting
     : ID settingArg (COMMA settingArg)*
     ;
 
 settingArg
     : ident (LBRACK exprList RBRACK)? PRIME* (EQ settingWord)?   # settingName
+    | LBRACK ident (COMMA ident)* RBRACK EQ settingWord          # settingGroup
     | sign? NUMBER                                             # settingNumber
     ;
 

@@ -407,6 +407,38 @@ def test_kane_with_forces_after_constrain_of_declared_auxiliary_speeds(tmp_path)
     assert float(acc) == pytest.approx(-9.81 * np.cos(0.7) / 0.8)
 
 
+@pytest.mark.parametrize(
+    "units",
+    [
+        "UNITS [a, b]= METRES, [c]=KG, x=CM",
+        "UNITS [a, b] = M",
+        "Units [a] = M, [b] = M",
+        "Units [a, b] = M/S^2*S^2",
+    ],
+)
+def test_units_for_a_bracketed_group_of_names(tmp_path, units):
+    """``Units [A, B] = M`` gives each name of the group the unit (one group
+    alone reads like an assignment to ``UNITS[A, B]``)."""
+    src = (
+        "Constants a, b, c\nVariables x'\nx' = a + b\n"
+        f"{units}\nInput a=2, b=1, c=1, x=0, tFinal=1, integStp=0.5\n"
+        "Output T, x\nCODE ODE() f.c\n"
+    )
+    mod, code = run(src, tmp_path)
+    assert '"A": "' in code and '"B": "' in code
+    result = mod.run()
+    # x' = a + b = 3 m/s: x(1) = 3 m (300 in CM, when x has that unit)
+    want = 300.0 if "CM" in units else 3.0
+    assert result["X"][-1] == pytest.approx(want)
+
+
+def test_a_bracketed_group_belongs_to_units():
+    from al2py.errors import AutolevError
+
+    with pytest.raises(AutolevError, match="belongs to Units"):
+        convert("Constants a, b\nEncode [a] = M, [b] = M\n", "g.al")
+
+
 def test_assigned_u_variables_are_not_the_speeds(tmp_path):
     """``Variables U{2}`` assigned expressions (``U1 = Dot(W_A_N>, A3>)``)
     name quantities; the generalized speed is the motion variable W."""

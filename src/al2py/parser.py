@@ -624,10 +624,48 @@ class _IRBuilder(AutolevVisitor):
     def visitStmt(self, ctx: AutolevParser.StmtContext) -> ir.Stmt:
         return self.visit(ctx.getChild(0))
 
-    def visitAssignment(self, ctx: AutolevParser.AssignmentContext) -> ir.Assign:
+    def visitAssignment(self, ctx: AutolevParser.AssignmentContext) -> ir.Stmt:
         target = self.visit(ctx.lvalue())
         value = self.visit(ctx.expr())
+        group = self._units_group(ctx, target, value)
+        if group is not None:
+            return group
         return ir.Assign(self._ctx_span(ctx), target, ctx.op.text, value)
+
+    def _units_group(
+        self, ctx: AutolevParser.AssignmentContext, target: ir.Expr, value: ir.Expr
+    ) -> ir.Stmt | None:
+        """``Units [A, B] = M`` reads like an assignment to an element of a
+        matrix ``UNITS``; it is the Units command with a group of names (the
+        grammar's ``settingGroup``, which a line of more than one group
+        reaches directly).  None for any other assignment."""
+        if not (
+            isinstance(target, ir.Element)
+            and target.base.name.upper() == "UNITS"
+            and ctx.op.text == "="
+        ):
+            return None
+        names = target.indices
+        if not all(isinstance(n, ir.Name) and not n.primes for n in names):
+            return None
+        factors = _unit_factors(value)
+        if factors is None:
+            raise self._error("Units [A, B] = ... takes a unit here", ctx.expr().start)
+        text = self._text(ctx.expr())
+        span = self._ctx_span(ctx.expr())
+        items = tuple(
+            ir.Equation(
+                n.span,
+                ir.Name(n.span, n.name, 0),
+                (
+                    ir.Name(span, text)
+                    if isinstance(value, ir.Name)
+                    else ir.UnitExpr(span, factors, text)
+                ),
+            )
+            for n in names
+        )
+        return ir.ListCommand(self._ctx_span(ctx), "UNITS", items)
 
     def visitElementTarget(self, ctx: AutolevParser.ElementTargetContext):
         base = self._name(ctx.ident())
@@ -815,8 +853,30 @@ class _IRBuilder(AutolevVisitor):
         )
         if plain and name not in LIST_COMMANDS:
             return ir.Setting(self._ctx_span(ctx), name, args[0].getText())
-        items = tuple(self.visit(a) for a in args)
-        return ir.ListCommand(self._ctx_span(ctx), name, items)
+        items: list[ir.Expr] = []
+        for a in args:
+            if isinstance(a, AutolevParser.SettingGroupContext):
+                if name != "UNITS":
+                    raise self._error(
+                        "a bracketed group of names ([A, B] = M) belongs to Units",
+                        a.start,
+                    )
+                items.extend(self._setting_group(a))
+            else:
+                items.append(self.visit(a))
+        return ir.ListCommand(self._ctx_span(ctx), name, tuple(items))
+
+    def _setting_group(self, ctx: AutolevParser.SettingGroupContext) -> list[ir.Expr]:
+        """``[A, B] = M`` of ``Units``: ``A = M, B = M``, each name with its
+        own span and its own node of the unit (nodes are never shared)."""
+        return [
+            ir.Equation(
+                self._ctx_span(ident),
+                ir.Name(self._ctx_span(ident), ident.getText(), 0),
+                self._setting_value(ctx.settingWord()),
+            )
+            for ident in ctx.ident()
+        ]
 
     def visitSettingName(self, ctx: AutolevParser.SettingNameContext) -> ir.Expr:
         span = self._ctx_span(ctx)
@@ -829,6 +889,11 @@ class _IRBuilder(AutolevVisitor):
         word = ctx.settingWord()
         if word is None:
             return name
+        return ir.Equation(span, name, self._setting_value(word))
+
+    def _setting_value(self, word: AutolevParser.SettingWordContext) -> ir.Expr:
+        """The value after ``=`` in a setting: a number, a unit word, or a
+        product or quotient of units."""
         value_span = self._ctx_span(word)
         unit = word.unit()
         value: ir.Expr
@@ -842,7 +907,7 @@ class _IRBuilder(AutolevVisitor):
             value = ir.Name(value_span, word.getText())
         else:  # ``Units VX=M/S``
             value = self.visit(unit)
-        return ir.Equation(span, name, value)
+        return value
 
     def visitSettingNumber(self, ctx: AutolevParser.SettingNumberContext) -> ir.Expr:
         return ir.Number(self._ctx_span(ctx), ctx.getText())
@@ -980,3 +1045,27 @@ class _IRBuilder(AutolevVisitor):
 
     def visitTerminal(self, node: TerminalNode):  # pragma: no cover - safety net
         raise InternalError(f"unexpected terminal {node.getText()!r}")
+
+
+def _unit_factors(e: ir.Expr) -> tuple[tuple[str, int], ...] | None:
+    """The (word, power) factors of a unit read as an expression (``M``,
+    ``M/S^2``, ``KG*M``), None if ``e`` is not one."""
+    if isinstance(e, ir.Name) and not e.primes:
+        return ((e.name, 1),)
+    if isinstance(e, ir.BinOp) and e.op == "^":
+        base = _unit_factors(e.left)
+        if (
+            base is not None
+            and len(base) == 1
+            and isinstance(e.right, ir.Number)
+            and e.right.text.isdigit()
+        ):
+            return ((base[0][0], base[0][1] * int(e.right.text)),)
+        return None
+    if isinstance(e, ir.BinOp) and e.op in ("*", "/"):
+        left, right = _unit_factors(e.left), _unit_factors(e.right)
+        if left is None or right is None:
+            return None
+        sign = -1 if e.op == "/" else 1
+        return left + tuple((w, sign * p) for w, p in right)
+    return None

@@ -10,7 +10,7 @@ else:
 
 def serializedATN():
     return [
-        4,1,51,477,2,0,7,0,2,1,7,1,2,2,7,2,2,3,7,3,2,4,7,4,2,5,7,5,2,6,7,
+        4,1,51,490,2,0,7,0,2,1,7,1,2,2,7,2,2,3,7,3,2,4,7,4,2,5,7,5,2,6,7,
         6,2,7,7,7,2,8,7,8,2,9,7,9,2,10,7,10,2,11,7,11,2,12,7,12,2,13,7,13,
         2,14,7,14,2,15,7,15,2,16,7,16,2,17,7,17,2,18,7,18,2,19,7,19,2,20,
         7,20,2,21,7,21,2,22,7,22,2,23,7,23,2,24,7,24,2,25,7,25,2,26,7,26,
@@ -37,69 +37,70 @@ def serializedATN():
         22,1,22,1,22,1,22,1,22,1,23,1,23,1,23,1,24,1,24,3,24,303,8,24,1,
         25,1,25,1,25,1,25,5,25,309,8,25,10,25,12,25,312,9,25,1,26,1,26,1,
         26,1,26,1,26,3,26,319,8,26,1,26,5,26,322,8,26,10,26,12,26,325,9,
-        26,1,26,1,26,3,26,329,8,26,1,26,3,26,332,8,26,1,26,3,26,335,8,26,
-        1,27,1,27,3,27,339,8,27,1,28,1,28,1,29,1,29,1,29,1,29,5,29,347,8,
-        29,10,29,12,29,350,9,29,1,30,1,30,1,31,1,31,1,31,1,31,5,31,358,8,
-        31,10,31,12,31,361,9,31,1,32,1,32,1,33,1,33,1,33,1,33,3,33,369,8,
-        33,1,34,1,34,1,34,3,34,374,8,34,1,35,1,35,1,35,1,35,1,35,1,35,3,
-        35,382,8,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,3,
-        35,394,8,35,1,35,5,35,397,8,35,10,35,12,35,400,9,35,1,35,1,35,5,
-        35,404,8,35,10,35,12,35,407,9,35,1,35,1,35,1,35,1,35,5,35,413,8,
-        35,10,35,12,35,416,9,35,1,35,1,35,1,35,1,35,1,35,1,35,3,35,424,8,
-        35,1,36,1,36,1,36,5,36,429,8,36,10,36,12,36,432,9,36,1,37,1,37,1,
-        37,5,37,437,8,37,10,37,12,37,440,9,37,1,38,1,38,1,38,5,38,445,8,
-        38,10,38,12,38,448,9,38,1,39,1,39,1,39,3,39,453,8,39,1,39,1,39,3,
-        39,457,8,39,1,40,1,40,1,40,1,40,5,40,463,8,40,10,40,12,40,466,9,
-        40,1,40,1,40,1,41,1,41,1,41,3,41,473,8,41,1,42,1,42,1,42,0,0,43,
-        0,2,4,6,8,10,12,14,16,18,20,22,24,26,28,30,32,34,36,38,40,42,44,
-        46,48,50,52,54,56,58,60,62,64,66,68,70,72,74,76,78,80,82,84,0,8,
-        2,1,45,45,49,49,1,0,25,31,1,0,1,11,1,0,32,33,1,0,34,35,1,0,16,17,
-        1,0,18,19,2,0,1,17,21,21,505,0,87,1,0,0,0,2,100,1,0,0,0,4,102,1,
-        0,0,0,6,118,1,0,0,0,8,120,1,0,0,0,10,122,1,0,0,0,12,134,1,0,0,0,
-        14,136,1,0,0,0,16,163,1,0,0,0,18,165,1,0,0,0,20,169,1,0,0,0,22,181,
-        1,0,0,0,24,183,1,0,0,0,26,192,1,0,0,0,28,218,1,0,0,0,30,220,1,0,
-        0,0,32,229,1,0,0,0,34,233,1,0,0,0,36,242,1,0,0,0,38,251,1,0,0,0,
-        40,255,1,0,0,0,42,264,1,0,0,0,44,284,1,0,0,0,46,297,1,0,0,0,48,302,
-        1,0,0,0,50,304,1,0,0,0,52,334,1,0,0,0,54,338,1,0,0,0,56,340,1,0,
-        0,0,58,342,1,0,0,0,60,351,1,0,0,0,62,353,1,0,0,0,64,362,1,0,0,0,
-        66,368,1,0,0,0,68,370,1,0,0,0,70,423,1,0,0,0,72,425,1,0,0,0,74,433,
-        1,0,0,0,76,441,1,0,0,0,78,449,1,0,0,0,80,458,1,0,0,0,82,469,1,0,
-        0,0,84,474,1,0,0,0,86,88,3,2,1,0,87,86,1,0,0,0,87,88,1,0,0,0,88,
-        89,1,0,0,0,89,90,7,0,0,0,90,1,1,0,0,0,91,101,3,4,2,0,92,101,3,8,
-        4,0,93,101,3,10,5,0,94,101,3,24,12,0,95,101,3,30,15,0,96,101,3,34,
-        17,0,97,101,3,42,21,0,98,101,3,46,23,0,99,101,3,50,25,0,100,91,1,
-        0,0,0,100,92,1,0,0,0,100,93,1,0,0,0,100,94,1,0,0,0,100,95,1,0,0,
-        0,100,96,1,0,0,0,100,97,1,0,0,0,100,98,1,0,0,0,100,99,1,0,0,0,101,
-        3,1,0,0,0,102,103,3,6,3,0,103,104,7,1,0,0,104,105,3,56,28,0,105,
-        5,1,0,0,0,106,107,3,84,42,0,107,108,5,40,0,0,108,109,3,74,37,0,109,
-        110,5,41,0,0,110,119,1,0,0,0,111,115,3,84,42,0,112,114,5,37,0,0,
-        113,112,1,0,0,0,114,117,1,0,0,0,115,113,1,0,0,0,115,116,1,0,0,0,
-        116,119,1,0,0,0,117,115,1,0,0,0,118,106,1,0,0,0,118,111,1,0,0,0,
-        119,7,1,0,0,0,120,121,3,56,28,0,121,9,1,0,0,0,122,124,3,12,6,0,123,
-        125,5,37,0,0,124,123,1,0,0,0,124,125,1,0,0,0,125,126,1,0,0,0,126,
-        131,3,14,7,0,127,128,5,44,0,0,128,130,3,18,9,0,129,127,1,0,0,0,130,
-        133,1,0,0,0,131,129,1,0,0,0,131,132,1,0,0,0,132,11,1,0,0,0,133,131,
-        1,0,0,0,134,135,7,2,0,0,135,13,1,0,0,0,136,137,3,16,8,0,137,138,
-        3,20,10,0,138,15,1,0,0,0,139,140,3,84,42,0,140,142,3,80,40,0,141,
-        143,3,84,42,0,142,141,1,0,0,0,142,143,1,0,0,0,143,147,1,0,0,0,144,
-        146,5,37,0,0,145,144,1,0,0,0,146,149,1,0,0,0,147,145,1,0,0,0,147,
-        148,1,0,0,0,148,164,1,0,0,0,149,147,1,0,0,0,150,151,3,84,42,0,151,
-        152,5,38,0,0,152,153,3,84,42,0,153,154,5,39,0,0,154,164,1,0,0,0,
-        155,159,3,84,42,0,156,158,5,37,0,0,157,156,1,0,0,0,158,161,1,0,0,
-        0,159,157,1,0,0,0,159,160,1,0,0,0,160,164,1,0,0,0,161,159,1,0,0,
-        0,162,164,5,20,0,0,163,139,1,0,0,0,163,150,1,0,0,0,163,155,1,0,0,
-        0,163,162,1,0,0,0,164,17,1,0,0,0,165,166,3,56,28,0,166,167,3,20,
-        10,0,167,19,1,0,0,0,168,170,3,22,11,0,169,168,1,0,0,0,169,170,1,
-        0,0,0,170,178,1,0,0,0,171,172,5,31,0,0,172,174,3,56,28,0,173,175,
-        3,22,11,0,174,173,1,0,0,0,174,175,1,0,0,0,175,177,1,0,0,0,176,171,
-        1,0,0,0,177,180,1,0,0,0,178,176,1,0,0,0,178,179,1,0,0,0,179,21,1,
-        0,0,0,180,178,1,0,0,0,181,182,7,3,0,0,182,23,1,0,0,0,183,184,5,12,
-        0,0,184,189,3,26,13,0,185,186,5,44,0,0,186,188,3,26,13,0,187,185,
-        1,0,0,0,188,191,1,0,0,0,189,187,1,0,0,0,189,190,1,0,0,0,190,25,1,
-        0,0,0,191,189,1,0,0,0,192,193,3,28,14,0,193,194,5,31,0,0,194,196,
-        3,56,28,0,195,197,3,36,18,0,196,195,1,0,0,0,196,197,1,0,0,0,197,
-        27,1,0,0,0,198,199,3,84,42,0,199,200,5,40,0,0,200,201,3,74,37,0,
-        201,202,5,41,0,0,202,219,1,0,0,0,203,204,3,84,42,0,204,208,3,80,
+        26,1,26,1,26,3,26,329,8,26,1,26,1,26,1,26,1,26,5,26,335,8,26,10,
+        26,12,26,338,9,26,1,26,1,26,1,26,1,26,1,26,3,26,345,8,26,1,26,3,
+        26,348,8,26,1,27,1,27,3,27,352,8,27,1,28,1,28,1,29,1,29,1,29,1,29,
+        5,29,360,8,29,10,29,12,29,363,9,29,1,30,1,30,1,31,1,31,1,31,1,31,
+        5,31,371,8,31,10,31,12,31,374,9,31,1,32,1,32,1,33,1,33,1,33,1,33,
+        3,33,382,8,33,1,34,1,34,1,34,3,34,387,8,34,1,35,1,35,1,35,1,35,1,
+        35,1,35,3,35,395,8,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,1,35,1,
+        35,1,35,3,35,407,8,35,1,35,5,35,410,8,35,10,35,12,35,413,9,35,1,
+        35,1,35,5,35,417,8,35,10,35,12,35,420,9,35,1,35,1,35,1,35,1,35,5,
+        35,426,8,35,10,35,12,35,429,9,35,1,35,1,35,1,35,1,35,1,35,1,35,3,
+        35,437,8,35,1,36,1,36,1,36,5,36,442,8,36,10,36,12,36,445,9,36,1,
+        37,1,37,1,37,5,37,450,8,37,10,37,12,37,453,9,37,1,38,1,38,1,38,5,
+        38,458,8,38,10,38,12,38,461,9,38,1,39,1,39,1,39,3,39,466,8,39,1,
+        39,1,39,3,39,470,8,39,1,40,1,40,1,40,1,40,5,40,476,8,40,10,40,12,
+        40,479,9,40,1,40,1,40,1,41,1,41,1,41,3,41,486,8,41,1,42,1,42,1,42,
+        0,0,43,0,2,4,6,8,10,12,14,16,18,20,22,24,26,28,30,32,34,36,38,40,
+        42,44,46,48,50,52,54,56,58,60,62,64,66,68,70,72,74,76,78,80,82,84,
+        0,8,2,1,45,45,49,49,1,0,25,31,1,0,1,11,1,0,32,33,1,0,34,35,1,0,16,
+        17,1,0,18,19,2,0,1,17,21,21,520,0,87,1,0,0,0,2,100,1,0,0,0,4,102,
+        1,0,0,0,6,118,1,0,0,0,8,120,1,0,0,0,10,122,1,0,0,0,12,134,1,0,0,
+        0,14,136,1,0,0,0,16,163,1,0,0,0,18,165,1,0,0,0,20,169,1,0,0,0,22,
+        181,1,0,0,0,24,183,1,0,0,0,26,192,1,0,0,0,28,218,1,0,0,0,30,220,
+        1,0,0,0,32,229,1,0,0,0,34,233,1,0,0,0,36,242,1,0,0,0,38,251,1,0,
+        0,0,40,255,1,0,0,0,42,264,1,0,0,0,44,284,1,0,0,0,46,297,1,0,0,0,
+        48,302,1,0,0,0,50,304,1,0,0,0,52,347,1,0,0,0,54,351,1,0,0,0,56,353,
+        1,0,0,0,58,355,1,0,0,0,60,364,1,0,0,0,62,366,1,0,0,0,64,375,1,0,
+        0,0,66,381,1,0,0,0,68,383,1,0,0,0,70,436,1,0,0,0,72,438,1,0,0,0,
+        74,446,1,0,0,0,76,454,1,0,0,0,78,462,1,0,0,0,80,471,1,0,0,0,82,482,
+        1,0,0,0,84,487,1,0,0,0,86,88,3,2,1,0,87,86,1,0,0,0,87,88,1,0,0,0,
+        88,89,1,0,0,0,89,90,7,0,0,0,90,1,1,0,0,0,91,101,3,4,2,0,92,101,3,
+        8,4,0,93,101,3,10,5,0,94,101,3,24,12,0,95,101,3,30,15,0,96,101,3,
+        34,17,0,97,101,3,42,21,0,98,101,3,46,23,0,99,101,3,50,25,0,100,91,
+        1,0,0,0,100,92,1,0,0,0,100,93,1,0,0,0,100,94,1,0,0,0,100,95,1,0,
+        0,0,100,96,1,0,0,0,100,97,1,0,0,0,100,98,1,0,0,0,100,99,1,0,0,0,
+        101,3,1,0,0,0,102,103,3,6,3,0,103,104,7,1,0,0,104,105,3,56,28,0,
+        105,5,1,0,0,0,106,107,3,84,42,0,107,108,5,40,0,0,108,109,3,74,37,
+        0,109,110,5,41,0,0,110,119,1,0,0,0,111,115,3,84,42,0,112,114,5,37,
+        0,0,113,112,1,0,0,0,114,117,1,0,0,0,115,113,1,0,0,0,115,116,1,0,
+        0,0,116,119,1,0,0,0,117,115,1,0,0,0,118,106,1,0,0,0,118,111,1,0,
+        0,0,119,7,1,0,0,0,120,121,3,56,28,0,121,9,1,0,0,0,122,124,3,12,6,
+        0,123,125,5,37,0,0,124,123,1,0,0,0,124,125,1,0,0,0,125,126,1,0,0,
+        0,126,131,3,14,7,0,127,128,5,44,0,0,128,130,3,18,9,0,129,127,1,0,
+        0,0,130,133,1,0,0,0,131,129,1,0,0,0,131,132,1,0,0,0,132,11,1,0,0,
+        0,133,131,1,0,0,0,134,135,7,2,0,0,135,13,1,0,0,0,136,137,3,16,8,
+        0,137,138,3,20,10,0,138,15,1,0,0,0,139,140,3,84,42,0,140,142,3,80,
+        40,0,141,143,3,84,42,0,142,141,1,0,0,0,142,143,1,0,0,0,143,147,1,
+        0,0,0,144,146,5,37,0,0,145,144,1,0,0,0,146,149,1,0,0,0,147,145,1,
+        0,0,0,147,148,1,0,0,0,148,164,1,0,0,0,149,147,1,0,0,0,150,151,3,
+        84,42,0,151,152,5,38,0,0,152,153,3,84,42,0,153,154,5,39,0,0,154,
+        164,1,0,0,0,155,159,3,84,42,0,156,158,5,37,0,0,157,156,1,0,0,0,158,
+        161,1,0,0,0,159,157,1,0,0,0,159,160,1,0,0,0,160,164,1,0,0,0,161,
+        159,1,0,0,0,162,164,5,20,0,0,163,139,1,0,0,0,163,150,1,0,0,0,163,
+        155,1,0,0,0,163,162,1,0,0,0,164,17,1,0,0,0,165,166,3,56,28,0,166,
+        167,3,20,10,0,167,19,1,0,0,0,168,170,3,22,11,0,169,168,1,0,0,0,169,
+        170,1,0,0,0,170,178,1,0,0,0,171,172,5,31,0,0,172,174,3,56,28,0,173,
+        175,3,22,11,0,174,173,1,0,0,0,174,175,1,0,0,0,175,177,1,0,0,0,176,
+        171,1,0,0,0,177,180,1,0,0,0,178,176,1,0,0,0,178,179,1,0,0,0,179,
+        21,1,0,0,0,180,178,1,0,0,0,181,182,7,3,0,0,182,23,1,0,0,0,183,184,
+        5,12,0,0,184,189,3,26,13,0,185,186,5,44,0,0,186,188,3,26,13,0,187,
+        185,1,0,0,0,188,191,1,0,0,0,189,187,1,0,0,0,189,190,1,0,0,0,190,
+        25,1,0,0,0,191,189,1,0,0,0,192,193,3,28,14,0,193,194,5,31,0,0,194,
+        196,3,56,28,0,195,197,3,36,18,0,196,195,1,0,0,0,196,197,1,0,0,0,
+        197,27,1,0,0,0,198,199,3,84,42,0,199,200,5,40,0,0,200,201,3,74,37,
+        0,201,202,5,41,0,0,202,219,1,0,0,0,203,204,3,84,42,0,204,208,3,80,
         40,0,205,207,5,37,0,0,206,205,1,0,0,0,207,210,1,0,0,0,208,206,1,
         0,0,0,208,209,1,0,0,0,209,219,1,0,0,0,210,208,1,0,0,0,211,215,3,
         84,42,0,212,214,5,37,0,0,213,212,1,0,0,0,214,217,1,0,0,0,215,213,
@@ -136,55 +137,59 @@ def serializedATN():
         5,41,0,0,317,319,1,0,0,0,318,314,1,0,0,0,318,319,1,0,0,0,319,323,
         1,0,0,0,320,322,5,37,0,0,321,320,1,0,0,0,322,325,1,0,0,0,323,321,
         1,0,0,0,323,324,1,0,0,0,324,328,1,0,0,0,325,323,1,0,0,0,326,327,
-        5,31,0,0,327,329,3,54,27,0,328,326,1,0,0,0,328,329,1,0,0,0,329,335,
-        1,0,0,0,330,332,3,22,11,0,331,330,1,0,0,0,331,332,1,0,0,0,332,333,
-        1,0,0,0,333,335,5,20,0,0,334,313,1,0,0,0,334,331,1,0,0,0,335,53,
-        1,0,0,0,336,339,3,36,18,0,337,339,5,20,0,0,338,336,1,0,0,0,338,337,
-        1,0,0,0,339,55,1,0,0,0,340,341,3,58,29,0,341,57,1,0,0,0,342,348,
-        3,62,31,0,343,344,3,60,30,0,344,345,3,62,31,0,345,347,1,0,0,0,346,
-        343,1,0,0,0,347,350,1,0,0,0,348,346,1,0,0,0,348,349,1,0,0,0,349,
-        59,1,0,0,0,350,348,1,0,0,0,351,352,7,3,0,0,352,61,1,0,0,0,353,359,
-        3,66,33,0,354,355,3,64,32,0,355,356,3,66,33,0,356,358,1,0,0,0,357,
-        354,1,0,0,0,358,361,1,0,0,0,359,357,1,0,0,0,359,360,1,0,0,0,360,
-        63,1,0,0,0,361,359,1,0,0,0,362,363,7,4,0,0,363,65,1,0,0,0,364,365,
-        3,60,30,0,365,366,3,66,33,0,366,369,1,0,0,0,367,369,3,68,34,0,368,
-        364,1,0,0,0,368,367,1,0,0,0,369,67,1,0,0,0,370,373,3,70,35,0,371,
-        372,5,36,0,0,372,374,3,66,33,0,373,371,1,0,0,0,373,374,1,0,0,0,374,
-        69,1,0,0,0,375,424,5,20,0,0,376,424,5,23,0,0,377,424,7,6,0,0,378,
-        379,3,84,42,0,379,381,5,38,0,0,380,382,3,76,38,0,381,380,1,0,0,0,
-        381,382,1,0,0,0,382,383,1,0,0,0,383,384,5,39,0,0,384,424,1,0,0,0,
-        385,386,3,84,42,0,386,387,5,40,0,0,387,388,3,74,37,0,388,389,5,41,
-        0,0,389,424,1,0,0,0,390,391,3,84,42,0,391,393,3,80,40,0,392,394,
-        3,84,42,0,393,392,1,0,0,0,393,394,1,0,0,0,394,398,1,0,0,0,395,397,
-        5,37,0,0,396,395,1,0,0,0,397,400,1,0,0,0,398,396,1,0,0,0,398,399,
-        1,0,0,0,399,424,1,0,0,0,400,398,1,0,0,0,401,405,3,84,42,0,402,404,
-        5,37,0,0,403,402,1,0,0,0,404,407,1,0,0,0,405,403,1,0,0,0,405,406,
-        1,0,0,0,406,424,1,0,0,0,407,405,1,0,0,0,408,409,5,40,0,0,409,414,
-        3,72,36,0,410,411,5,45,0,0,411,413,3,72,36,0,412,410,1,0,0,0,413,
-        416,1,0,0,0,414,412,1,0,0,0,414,415,1,0,0,0,415,417,1,0,0,0,416,
-        414,1,0,0,0,417,418,5,41,0,0,418,424,1,0,0,0,419,420,5,38,0,0,420,
-        421,3,56,28,0,421,422,5,39,0,0,422,424,1,0,0,0,423,375,1,0,0,0,423,
-        376,1,0,0,0,423,377,1,0,0,0,423,378,1,0,0,0,423,385,1,0,0,0,423,
-        390,1,0,0,0,423,401,1,0,0,0,423,408,1,0,0,0,423,419,1,0,0,0,424,
-        71,1,0,0,0,425,430,3,56,28,0,426,427,5,44,0,0,427,429,3,56,28,0,
-        428,426,1,0,0,0,429,432,1,0,0,0,430,428,1,0,0,0,430,431,1,0,0,0,
-        431,73,1,0,0,0,432,430,1,0,0,0,433,438,3,56,28,0,434,435,5,44,0,
-        0,435,437,3,56,28,0,436,434,1,0,0,0,437,440,1,0,0,0,438,436,1,0,
-        0,0,438,439,1,0,0,0,439,75,1,0,0,0,440,438,1,0,0,0,441,446,3,78,
-        39,0,442,443,5,44,0,0,443,445,3,78,39,0,444,442,1,0,0,0,445,448,
-        1,0,0,0,446,444,1,0,0,0,446,447,1,0,0,0,447,77,1,0,0,0,448,446,1,
-        0,0,0,449,452,3,56,28,0,450,451,5,31,0,0,451,453,3,56,28,0,452,450,
-        1,0,0,0,452,453,1,0,0,0,453,456,1,0,0,0,454,455,5,46,0,0,455,457,
-        3,56,28,0,456,454,1,0,0,0,456,457,1,0,0,0,457,79,1,0,0,0,458,459,
-        5,42,0,0,459,464,3,82,41,0,460,461,5,44,0,0,461,463,3,82,41,0,462,
-        460,1,0,0,0,463,466,1,0,0,0,464,462,1,0,0,0,464,465,1,0,0,0,465,
-        467,1,0,0,0,466,464,1,0,0,0,467,468,5,43,0,0,468,81,1,0,0,0,469,
-        472,5,20,0,0,470,471,5,46,0,0,471,473,5,20,0,0,472,470,1,0,0,0,472,
-        473,1,0,0,0,473,83,1,0,0,0,474,475,7,7,0,0,475,85,1,0,0,0,55,87,
-        100,115,118,124,131,142,147,159,163,169,174,178,189,196,208,215,
-        218,226,231,239,248,255,259,262,268,272,279,282,287,302,310,318,
-        323,328,331,334,338,348,359,368,373,381,393,398,405,414,423,430,
-        438,446,452,456,464,472
+        5,31,0,0,327,329,3,54,27,0,328,326,1,0,0,0,328,329,1,0,0,0,329,348,
+        1,0,0,0,330,331,5,40,0,0,331,336,3,84,42,0,332,333,5,44,0,0,333,
+        335,3,84,42,0,334,332,1,0,0,0,335,338,1,0,0,0,336,334,1,0,0,0,336,
+        337,1,0,0,0,337,339,1,0,0,0,338,336,1,0,0,0,339,340,5,41,0,0,340,
+        341,5,31,0,0,341,342,3,54,27,0,342,348,1,0,0,0,343,345,3,22,11,0,
+        344,343,1,0,0,0,344,345,1,0,0,0,345,346,1,0,0,0,346,348,5,20,0,0,
+        347,313,1,0,0,0,347,330,1,0,0,0,347,344,1,0,0,0,348,53,1,0,0,0,349,
+        352,3,36,18,0,350,352,5,20,0,0,351,349,1,0,0,0,351,350,1,0,0,0,352,
+        55,1,0,0,0,353,354,3,58,29,0,354,57,1,0,0,0,355,361,3,62,31,0,356,
+        357,3,60,30,0,357,358,3,62,31,0,358,360,1,0,0,0,359,356,1,0,0,0,
+        360,363,1,0,0,0,361,359,1,0,0,0,361,362,1,0,0,0,362,59,1,0,0,0,363,
+        361,1,0,0,0,364,365,7,3,0,0,365,61,1,0,0,0,366,372,3,66,33,0,367,
+        368,3,64,32,0,368,369,3,66,33,0,369,371,1,0,0,0,370,367,1,0,0,0,
+        371,374,1,0,0,0,372,370,1,0,0,0,372,373,1,0,0,0,373,63,1,0,0,0,374,
+        372,1,0,0,0,375,376,7,4,0,0,376,65,1,0,0,0,377,378,3,60,30,0,378,
+        379,3,66,33,0,379,382,1,0,0,0,380,382,3,68,34,0,381,377,1,0,0,0,
+        381,380,1,0,0,0,382,67,1,0,0,0,383,386,3,70,35,0,384,385,5,36,0,
+        0,385,387,3,66,33,0,386,384,1,0,0,0,386,387,1,0,0,0,387,69,1,0,0,
+        0,388,437,5,20,0,0,389,437,5,23,0,0,390,437,7,6,0,0,391,392,3,84,
+        42,0,392,394,5,38,0,0,393,395,3,76,38,0,394,393,1,0,0,0,394,395,
+        1,0,0,0,395,396,1,0,0,0,396,397,5,39,0,0,397,437,1,0,0,0,398,399,
+        3,84,42,0,399,400,5,40,0,0,400,401,3,74,37,0,401,402,5,41,0,0,402,
+        437,1,0,0,0,403,404,3,84,42,0,404,406,3,80,40,0,405,407,3,84,42,
+        0,406,405,1,0,0,0,406,407,1,0,0,0,407,411,1,0,0,0,408,410,5,37,0,
+        0,409,408,1,0,0,0,410,413,1,0,0,0,411,409,1,0,0,0,411,412,1,0,0,
+        0,412,437,1,0,0,0,413,411,1,0,0,0,414,418,3,84,42,0,415,417,5,37,
+        0,0,416,415,1,0,0,0,417,420,1,0,0,0,418,416,1,0,0,0,418,419,1,0,
+        0,0,419,437,1,0,0,0,420,418,1,0,0,0,421,422,5,40,0,0,422,427,3,72,
+        36,0,423,424,5,45,0,0,424,426,3,72,36,0,425,423,1,0,0,0,426,429,
+        1,0,0,0,427,425,1,0,0,0,427,428,1,0,0,0,428,430,1,0,0,0,429,427,
+        1,0,0,0,430,431,5,41,0,0,431,437,1,0,0,0,432,433,5,38,0,0,433,434,
+        3,56,28,0,434,435,5,39,0,0,435,437,1,0,0,0,436,388,1,0,0,0,436,389,
+        1,0,0,0,436,390,1,0,0,0,436,391,1,0,0,0,436,398,1,0,0,0,436,403,
+        1,0,0,0,436,414,1,0,0,0,436,421,1,0,0,0,436,432,1,0,0,0,437,71,1,
+        0,0,0,438,443,3,56,28,0,439,440,5,44,0,0,440,442,3,56,28,0,441,439,
+        1,0,0,0,442,445,1,0,0,0,443,441,1,0,0,0,443,444,1,0,0,0,444,73,1,
+        0,0,0,445,443,1,0,0,0,446,451,3,56,28,0,447,448,5,44,0,0,448,450,
+        3,56,28,0,449,447,1,0,0,0,450,453,1,0,0,0,451,449,1,0,0,0,451,452,
+        1,0,0,0,452,75,1,0,0,0,453,451,1,0,0,0,454,459,3,78,39,0,455,456,
+        5,44,0,0,456,458,3,78,39,0,457,455,1,0,0,0,458,461,1,0,0,0,459,457,
+        1,0,0,0,459,460,1,0,0,0,460,77,1,0,0,0,461,459,1,0,0,0,462,465,3,
+        56,28,0,463,464,5,31,0,0,464,466,3,56,28,0,465,463,1,0,0,0,465,466,
+        1,0,0,0,466,469,1,0,0,0,467,468,5,46,0,0,468,470,3,56,28,0,469,467,
+        1,0,0,0,469,470,1,0,0,0,470,79,1,0,0,0,471,472,5,42,0,0,472,477,
+        3,82,41,0,473,474,5,44,0,0,474,476,3,82,41,0,475,473,1,0,0,0,476,
+        479,1,0,0,0,477,475,1,0,0,0,477,478,1,0,0,0,478,480,1,0,0,0,479,
+        477,1,0,0,0,480,481,5,43,0,0,481,81,1,0,0,0,482,485,5,20,0,0,483,
+        484,5,46,0,0,484,486,5,20,0,0,485,483,1,0,0,0,485,486,1,0,0,0,486,
+        83,1,0,0,0,487,488,7,7,0,0,488,85,1,0,0,0,56,87,100,115,118,124,
+        131,142,147,159,163,169,174,178,189,196,208,215,218,226,231,239,
+        248,255,259,262,268,272,279,282,287,302,310,318,323,328,336,344,
+        347,351,361,372,381,386,394,406,411,418,427,436,443,451,459,465,
+        469,477,485
     ]
 
 class AutolevParser ( Parser ):
@@ -2328,6 +2333,40 @@ class AutolevParser ( Parser ):
 
 
 
+    class SettingGroupContext(SettingArgContext):
+
+        def __init__(self, parser, ctx:ParserRuleContext): # actually a AutolevParser.SettingArgContext
+            super().__init__(parser)
+            self.copyFrom(ctx)
+
+        def LBRACK(self):
+            return self.getToken(AutolevParser.LBRACK, 0)
+        def ident(self, i:int=None):
+            if i is None:
+                return self.getTypedRuleContexts(AutolevParser.IdentContext)
+            else:
+                return self.getTypedRuleContext(AutolevParser.IdentContext,i)
+
+        def RBRACK(self):
+            return self.getToken(AutolevParser.RBRACK, 0)
+        def EQ(self):
+            return self.getToken(AutolevParser.EQ, 0)
+        def settingWord(self):
+            return self.getTypedRuleContext(AutolevParser.SettingWordContext,0)
+
+        def COMMA(self, i:int=None):
+            if i is None:
+                return self.getTokens(AutolevParser.COMMA)
+            else:
+                return self.getToken(AutolevParser.COMMA, i)
+
+        def accept(self, visitor:ParseTreeVisitor):
+            if hasattr( visitor, "visitSettingGroup" ):
+                return visitor.visitSettingGroup(self)
+            else:
+                return visitor.visitChildren(self)
+
+
     class SettingNumberContext(SettingArgContext):
 
         def __init__(self, parser, ctx:ParserRuleContext): # actually a AutolevParser.SettingArgContext
@@ -2388,7 +2427,7 @@ class AutolevParser ( Parser ):
         self.enterRule(localctx, 52, self.RULE_settingArg)
         self._la = 0 # Token type
         try:
-            self.state = 334
+            self.state = 347
             self._errHandler.sync(self)
             token = self._input.LA(1)
             if token in [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 21]:
@@ -2429,18 +2468,44 @@ class AutolevParser ( Parser ):
 
 
                 pass
+            elif token in [40]:
+                localctx = AutolevParser.SettingGroupContext(self, localctx)
+                self.enterOuterAlt(localctx, 2)
+                self.state = 330
+                self.match(AutolevParser.LBRACK)
+                self.state = 331
+                self.ident()
+                self.state = 336
+                self._errHandler.sync(self)
+                _la = self._input.LA(1)
+                while _la==44:
+                    self.state = 332
+                    self.match(AutolevParser.COMMA)
+                    self.state = 333
+                    self.ident()
+                    self.state = 338
+                    self._errHandler.sync(self)
+                    _la = self._input.LA(1)
+
+                self.state = 339
+                self.match(AutolevParser.RBRACK)
+                self.state = 340
+                self.match(AutolevParser.EQ)
+                self.state = 341
+                self.settingWord()
+                pass
             elif token in [20, 32, 33]:
                 localctx = AutolevParser.SettingNumberContext(self, localctx)
-                self.enterOuterAlt(localctx, 2)
-                self.state = 331
+                self.enterOuterAlt(localctx, 3)
+                self.state = 344
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
                 if _la==32 or _la==33:
-                    self.state = 330
+                    self.state = 343
                     self.sign()
 
 
-                self.state = 333
+                self.state = 346
                 self.match(AutolevParser.NUMBER)
                 pass
             else:
@@ -2486,17 +2551,17 @@ class AutolevParser ( Parser ):
         localctx = AutolevParser.SettingWordContext(self, self._ctx, self.state)
         self.enterRule(localctx, 54, self.RULE_settingWord)
         try:
-            self.state = 338
+            self.state = 351
             self._errHandler.sync(self)
             token = self._input.LA(1)
             if token in [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 21, 22]:
                 self.enterOuterAlt(localctx, 1)
-                self.state = 336
+                self.state = 349
                 self.unit()
                 pass
             elif token in [20]:
                 self.enterOuterAlt(localctx, 2)
-                self.state = 337
+                self.state = 350
                 self.match(AutolevParser.NUMBER)
                 pass
             else:
@@ -2540,7 +2605,7 @@ class AutolevParser ( Parser ):
         self.enterRule(localctx, 56, self.RULE_expr)
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 340
+            self.state = 353
             self.additive()
         except RecognitionException as re:
             localctx.exception = re
@@ -2590,20 +2655,20 @@ class AutolevParser ( Parser ):
         self.enterRule(localctx, 58, self.RULE_additive)
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 342
+            self.state = 355
             self.multiplicative()
-            self.state = 348
+            self.state = 361
             self._errHandler.sync(self)
-            _alt = self._interp.adaptivePredict(self._input,38,self._ctx)
+            _alt = self._interp.adaptivePredict(self._input,39,self._ctx)
             while _alt!=2 and _alt!=ATN.INVALID_ALT_NUMBER:
                 if _alt==1:
-                    self.state = 343
+                    self.state = 356
                     self.addOp()
-                    self.state = 344
+                    self.state = 357
                     self.multiplicative() 
-                self.state = 350
+                self.state = 363
                 self._errHandler.sync(self)
-                _alt = self._interp.adaptivePredict(self._input,38,self._ctx)
+                _alt = self._interp.adaptivePredict(self._input,39,self._ctx)
 
         except RecognitionException as re:
             localctx.exception = re
@@ -2646,7 +2711,7 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 351
+            self.state = 364
             _la = self._input.LA(1)
             if not(_la==32 or _la==33):
                 self._errHandler.recoverInline(self)
@@ -2702,17 +2767,17 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 353
+            self.state = 366
             self.unary()
-            self.state = 359
+            self.state = 372
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             while _la==34 or _la==35:
-                self.state = 354
+                self.state = 367
                 self.mulOp()
-                self.state = 355
+                self.state = 368
                 self.unary()
-                self.state = 361
+                self.state = 374
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
 
@@ -2757,7 +2822,7 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 362
+            self.state = 375
             _la = self._input.LA(1)
             if not(_la==34 or _la==35):
                 self._errHandler.recoverInline(self)
@@ -2833,21 +2898,21 @@ class AutolevParser ( Parser ):
         localctx = AutolevParser.UnaryContext(self, self._ctx, self.state)
         self.enterRule(localctx, 66, self.RULE_unary)
         try:
-            self.state = 368
+            self.state = 381
             self._errHandler.sync(self)
             token = self._input.LA(1)
             if token in [32, 33]:
                 localctx = AutolevParser.SignedContext(self, localctx)
                 self.enterOuterAlt(localctx, 1)
-                self.state = 364
+                self.state = 377
                 self.addOp()
-                self.state = 365
+                self.state = 378
                 self.unary()
                 pass
             elif token in [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 23, 38, 40]:
                 localctx = AutolevParser.UnsignedContext(self, localctx)
                 self.enterOuterAlt(localctx, 2)
-                self.state = 367
+                self.state = 380
                 self.power()
                 pass
             else:
@@ -2899,15 +2964,15 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 370
+            self.state = 383
             self.atom()
-            self.state = 373
+            self.state = 386
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             if _la==36:
-                self.state = 371
+                self.state = 384
                 self.match(AutolevParser.CARET)
-                self.state = 372
+                self.state = 385
                 self.unary()
 
 
@@ -3143,27 +3208,27 @@ class AutolevParser ( Parser ):
         self.enterRule(localctx, 70, self.RULE_atom)
         self._la = 0 # Token type
         try:
-            self.state = 423
+            self.state = 436
             self._errHandler.sync(self)
-            la_ = self._interp.adaptivePredict(self._input,47,self._ctx)
+            la_ = self._interp.adaptivePredict(self._input,48,self._ctx)
             if la_ == 1:
                 localctx = AutolevParser.NumberContext(self, localctx)
                 self.enterOuterAlt(localctx, 1)
-                self.state = 375
+                self.state = 388
                 self.match(AutolevParser.NUMBER)
                 pass
 
             elif la_ == 2:
                 localctx = AutolevParser.StringContext(self, localctx)
                 self.enterOuterAlt(localctx, 2)
-                self.state = 376
+                self.state = 389
                 self.match(AutolevParser.STRING)
                 pass
 
             elif la_ == 3:
                 localctx = AutolevParser.SpecialContext(self, localctx)
                 self.enterOuterAlt(localctx, 3)
-                self.state = 377
+                self.state = 390
                 _la = self._input.LA(1)
                 if not(_la==18 or _la==19):
                     self._errHandler.recoverInline(self)
@@ -3175,57 +3240,57 @@ class AutolevParser ( Parser ):
             elif la_ == 4:
                 localctx = AutolevParser.CallContext(self, localctx)
                 self.enterOuterAlt(localctx, 4)
-                self.state = 378
+                self.state = 391
                 self.ident()
-                self.state = 379
+                self.state = 392
                 self.match(AutolevParser.LPAREN)
-                self.state = 381
+                self.state = 394
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
                 if (((_la) & ~0x3f) == 0 and ((1 << _la) & 1387287019518) != 0):
-                    self.state = 380
+                    self.state = 393
                     self.argList()
 
 
-                self.state = 383
+                self.state = 396
                 self.match(AutolevParser.RPAREN)
                 pass
 
             elif la_ == 5:
                 localctx = AutolevParser.ElementContext(self, localctx)
                 self.enterOuterAlt(localctx, 5)
-                self.state = 385
+                self.state = 398
                 self.ident()
-                self.state = 386
+                self.state = 399
                 self.match(AutolevParser.LBRACK)
-                self.state = 387
+                self.state = 400
                 self.exprList()
-                self.state = 388
+                self.state = 401
                 self.match(AutolevParser.RBRACK)
                 pass
 
             elif la_ == 6:
                 localctx = AutolevParser.IndexedNamesContext(self, localctx)
                 self.enterOuterAlt(localctx, 6)
-                self.state = 390
+                self.state = 403
                 self.ident()
-                self.state = 391
+                self.state = 404
                 self.indexBraces()
-                self.state = 393
+                self.state = 406
                 self._errHandler.sync(self)
-                la_ = self._interp.adaptivePredict(self._input,43,self._ctx)
+                la_ = self._interp.adaptivePredict(self._input,44,self._ctx)
                 if la_ == 1:
-                    self.state = 392
+                    self.state = 405
                     localctx.suffix = self.ident()
 
 
-                self.state = 398
+                self.state = 411
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
                 while _la==37:
-                    self.state = 395
+                    self.state = 408
                     self.match(AutolevParser.PRIME)
-                    self.state = 400
+                    self.state = 413
                     self._errHandler.sync(self)
                     _la = self._input.LA(1)
 
@@ -3234,15 +3299,15 @@ class AutolevParser ( Parser ):
             elif la_ == 7:
                 localctx = AutolevParser.NameContext(self, localctx)
                 self.enterOuterAlt(localctx, 7)
-                self.state = 401
+                self.state = 414
                 self.ident()
-                self.state = 405
+                self.state = 418
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
                 while _la==37:
-                    self.state = 402
+                    self.state = 415
                     self.match(AutolevParser.PRIME)
-                    self.state = 407
+                    self.state = 420
                     self._errHandler.sync(self)
                     _la = self._input.LA(1)
 
@@ -3251,34 +3316,34 @@ class AutolevParser ( Parser ):
             elif la_ == 8:
                 localctx = AutolevParser.MatrixContext(self, localctx)
                 self.enterOuterAlt(localctx, 8)
-                self.state = 408
+                self.state = 421
                 self.match(AutolevParser.LBRACK)
-                self.state = 409
+                self.state = 422
                 self.matrixRow()
-                self.state = 414
+                self.state = 427
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
                 while _la==45:
-                    self.state = 410
+                    self.state = 423
                     self.match(AutolevParser.SEMI)
-                    self.state = 411
+                    self.state = 424
                     self.matrixRow()
-                    self.state = 416
+                    self.state = 429
                     self._errHandler.sync(self)
                     _la = self._input.LA(1)
 
-                self.state = 417
+                self.state = 430
                 self.match(AutolevParser.RBRACK)
                 pass
 
             elif la_ == 9:
                 localctx = AutolevParser.ParensContext(self, localctx)
                 self.enterOuterAlt(localctx, 9)
-                self.state = 419
+                self.state = 432
                 self.match(AutolevParser.LPAREN)
-                self.state = 420
+                self.state = 433
                 self.expr()
-                self.state = 421
+                self.state = 434
                 self.match(AutolevParser.RPAREN)
                 pass
 
@@ -3331,17 +3396,17 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 425
+            self.state = 438
             self.expr()
-            self.state = 430
+            self.state = 443
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             while _la==44:
-                self.state = 426
+                self.state = 439
                 self.match(AutolevParser.COMMA)
-                self.state = 427
+                self.state = 440
                 self.expr()
-                self.state = 432
+                self.state = 445
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
 
@@ -3393,17 +3458,17 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 433
+            self.state = 446
             self.expr()
-            self.state = 438
+            self.state = 451
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             while _la==44:
-                self.state = 434
+                self.state = 447
                 self.match(AutolevParser.COMMA)
-                self.state = 435
+                self.state = 448
                 self.expr()
-                self.state = 440
+                self.state = 453
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
 
@@ -3455,17 +3520,17 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 441
+            self.state = 454
             self.arg()
-            self.state = 446
+            self.state = 459
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             while _la==44:
-                self.state = 442
+                self.state = 455
                 self.match(AutolevParser.COMMA)
-                self.state = 443
+                self.state = 456
                 self.arg()
-                self.state = 448
+                self.state = 461
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
 
@@ -3517,25 +3582,25 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 449
+            self.state = 462
             self.expr()
-            self.state = 452
+            self.state = 465
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             if _la==31:
-                self.state = 450
+                self.state = 463
                 self.match(AutolevParser.EQ)
-                self.state = 451
+                self.state = 464
                 self.expr()
 
 
-            self.state = 456
+            self.state = 469
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             if _la==46:
-                self.state = 454
+                self.state = 467
                 self.match(AutolevParser.COLON)
-                self.state = 455
+                self.state = 468
                 self.expr()
 
 
@@ -3593,23 +3658,23 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 458
+            self.state = 471
             self.match(AutolevParser.LBRACE)
-            self.state = 459
+            self.state = 472
             self.indexRange()
-            self.state = 464
+            self.state = 477
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             while _la==44:
-                self.state = 460
+                self.state = 473
                 self.match(AutolevParser.COMMA)
-                self.state = 461
+                self.state = 474
                 self.indexRange()
-                self.state = 466
+                self.state = 479
                 self._errHandler.sync(self)
                 _la = self._input.LA(1)
 
-            self.state = 467
+            self.state = 480
             self.match(AutolevParser.RBRACE)
         except RecognitionException as re:
             localctx.exception = re
@@ -3655,15 +3720,15 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 469
+            self.state = 482
             self.match(AutolevParser.NUMBER)
-            self.state = 472
+            self.state = 485
             self._errHandler.sync(self)
             _la = self._input.LA(1)
             if _la==46:
-                self.state = 470
+                self.state = 483
                 self.match(AutolevParser.COLON)
-                self.state = 471
+                self.state = 484
                 self.match(AutolevParser.NUMBER)
 
 
@@ -3756,7 +3821,7 @@ class AutolevParser ( Parser ):
         self._la = 0 # Token type
         try:
             self.enterOuterAlt(localctx, 1)
-            self.state = 474
+            self.state = 487
             _la = self._input.LA(1)
             if not((((_la) & ~0x3f) == 0 and ((1 << _la) & 2359294) != 0)):
                 self._errHandler.recoverInline(self)

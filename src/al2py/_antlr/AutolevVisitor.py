@@ -159,6 +159,11 @@ class AutolevVisitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by AutolevParser#settingGroup.
+    def visitSettingGroup(self, ctx:AutolevParser.SettingGroupContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by AutolevParser#settingNumber.
     def visitSettingNumber(self, ctx:AutolevParser.SettingNumberContext):
         return self.visitChildren(ctx)
