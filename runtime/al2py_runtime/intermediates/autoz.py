@@ -469,6 +469,7 @@ class Intermediates:
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
+        self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
         self._real: dict[int, bool | None] = {}
         self._busy: set[int] = set()
         self._positions: dict[Any, dict[Any, int]] = {}
@@ -916,20 +917,53 @@ class Intermediates:
         expressions differentiated by the same ``x``."""
         return self._pd(sp.sympify(e), x, {} if memo is None else memo)
 
-    def _pd(self, e: Any, x: Any, memo: dict, given: dict | None = None) -> Any:
+    def total_dt(self, e: Any) -> Any:
+        """``de/dt``, as sympy's ``diff(e, t)`` gives it (each variable's
+        derivative a ``Derivative``, each intermediate's by its partial
+        derivatives, named, times its variables' derivatives), by the same
+        walk as :meth:`derivative`: no ``Derivative`` object is built for a
+        sum, product or intermediate, and each distinct part is walked once
+        (the book's memo: the answer depends only on the part).
+
+        >>> from sympy.physics.mechanics import dynamicsymbols
+        >>> q, u = dynamicsymbols("q u")
+        >>> book = Intermediates()
+        >>> z = book.name(sp.sin(q) * u + q**3 * u)
+        >>> e = z * sp.cos(q)
+        >>> sp.simplify(book.expand(book.total_dt(e)) - book.expand(e).diff(_T))
+        0
+        """
+        return self._pd(sp.sympify(e), _T, self._dt_memo, None, self._rate_or_zero)
+
+    def _rate_or_zero(self, x: Any) -> Any:
+        found = self.time_rate(x)
+        return sp.S.Zero if found is None else found
+
+    def _pd(
+        self,
+        e: Any,
+        x: Any,
+        memo: dict,
+        given: dict | None = None,
+        rate: Callable[[Any], Any] | None = None,
+    ) -> Any:
         """Partial derivative of ``e`` by the variable ``x`` (a function of
         time, a symbol, or ``t`` meaning explicit time only): a walk over
         the expression that skips what does not depend on ``x`` and never
         builds ``Derivative`` objects.  With ``given``, the derivatives of
         the intermediates are looked up there (absent: 0) instead of
-        named."""
+        named.  With ``rate`` (``x`` is then ``t``), the total derivative:
+        a variable's is ``rate(variable)``, and an intermediate's goes
+        through all of its arguments."""
         # ``e == x`` (x is a variable, so equal only with an equal type:
         # functions of time made twice are equal classes, not one), without
         # sympy's ``__eq__`` on every node walked.
         if e is x or (type(e) == type(x) and e == x):  # noqa: E721
             return sp.S.One
-        if e.is_Atom or isinstance(e, _VARIABLE):
+        if e.is_Atom:
             return sp.S.Zero
+        if isinstance(e, _VARIABLE):
+            return sp.S.Zero if rate is None else rate(e)
         found = memo.get(e)
         if found is not None:
             return found
@@ -939,8 +973,9 @@ class Intermediates:
                 out = given[e]
             elif given is not None and e.book is self and self._canonical(e):
                 out = sp.S.Zero  # does not depend on x
-            elif (e.book is self and self._canonical(e)) or all(
-                a.is_Atom or isinstance(a, _VARIABLE) for a in args
+            elif rate is None and (
+                (e.book is self and self._canonical(e))
+                or all(a.is_Atom or isinstance(a, _VARIABLE) for a in args)
             ):
                 j = e.book.position(e, x)
                 out = sp.S.Zero if j is None else e.book.partial(e, j)
@@ -949,30 +984,32 @@ class Intermediates:
                     *[
                         e.book.partial(e, j) * d
                         for j, a in enumerate(args)
-                        if (d := self._pd(a, x, memo, given)) is not _ZERO
+                        if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
                     ]
                 )
         elif e.is_Add:
-            out = sp.Add(*[self._pd(a, x, memo, given) for a in e.args])
+            out = sp.Add(*[self._pd(a, x, memo, given, rate) for a in e.args])
         elif e.is_Mul:
             args = e.args
             terms = []
             for i, a in enumerate(args):
-                d = self._pd(a, x, memo, given)
+                d = self._pd(a, x, memo, given, rate)
                 if d is not _ZERO:
                     terms.append(product_with(args, i, d))
             out = sp.Add(*terms)
         elif e.is_Pow and not e.exp.has(x):
-            d = self._pd(e.base, x, memo, given)
+            d = self._pd(e.base, x, memo, given, rate)
             out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
             out = sp.Add(
                 *[
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
-                    if (d := self._pd(a, x, memo, given)) is not _ZERO
+                    if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
                 ]
             )
+        elif rate is not None:  # anything else: sympy's total derivative
+            out = e.diff(_T)
         else:  # anything else: sympy, by a plain symbol
             s = sp.Dummy("x")
             if x == _T:

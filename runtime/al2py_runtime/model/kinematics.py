@@ -113,6 +113,21 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
+def vector_dt(
+    v: Vector, frame: ReferenceFrame, scalar_dt: Callable[[Any], Any]
+) -> Vector:
+    """The time derivative of ``v`` in ``frame``, ``scalar_dt`` taking
+    each measure number's: a component fixed in another frame ``B`` adds
+    ``B``'s angular velocity in ``frame`` crossed with it (sympy's
+    ``time_derivative``, whose scalar derivative is sympy's ``diff``)."""
+    out = Vector(0)
+    for m, f in v.args:
+        out += Vector([(m.applyfunc(scalar_dt), f)])
+        if f != frame:
+            out += f.ang_vel_in(frame) ^ Vector([(m, f)])
+    return out
+
+
 #: Expressions with more nodes, or more speeds, than these are not simplified
 #: for display: the simplification is cosmetic and large models must stay fast.
 SMALL_NODES = 160

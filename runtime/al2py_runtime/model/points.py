@@ -100,14 +100,16 @@ class Kinematics:
         # one formed before it does (U1 is set to zero in the equations).
         keep = self.auxiliary_kept()
         v = self.actual_value(v, keep)
-        if isinstance(v, Vector | Dyadic):
+        book = self.ws.book
+        if isinstance(v, Dyadic):
             out = time_derivative(v, frame)
+        elif isinstance(v, Vector):
+            out = kin.vector_dt(v, frame, book.total_dt)
         else:
-            out = sp.diff(v, t)
+            out = book.total_dt(v)
         out = self.actual_value(out, keep)
         # Name the coefficients of the speeds and their derivatives (and the
         # rest), so later derivatives stay short (either AutoZ setting).
-        book = self.ws.book
         speeds = self.generalized_speeds()
         xs = [*speeds, *(sp.Derivative(u, t) for u in speeds)]
         return kin.vmap(out, lambda e: book.name_linear(e, xs))
