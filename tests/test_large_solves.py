@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
+from al2py_runtime import walks
 from al2py_runtime.intermediates.autoz import has_intermediates
 from conftest import load_module
 
@@ -215,3 +216,69 @@ def test_responses_too_large_to_print_as_trees_are_named():
         want = want * want + 0.5 * want
     got = float(shown.xreplace(point).evalf())
     assert got == pytest.approx(want + 0.3 * 0.7)
+
+
+def _shared(depth: int):
+    """A polynomial in x with a few dozen distinct parts and a tree of about
+    2**depth times as many nodes, and its value at x, a, b."""
+    x, a, b = sp.symbols("x a b")
+    e = a * x + b + 1
+    for _ in range(depth):
+        e = e * e + a * e
+    return e, (x, a, b)
+
+
+def _value(e0, depth: int, x: float, a: float, b: float) -> float:
+    e = a * x + b + 1
+    for _ in range(depth):
+        e = e * e + a * e
+    return e
+
+
+def test_exclude_include_coef_of_large_shared_expressions():
+    """Exclude, Include and Coef of an expression of millions of tree nodes
+    (a polynomial in the name) take each distinct part once: Exclude is the
+    expression at 0, Include the rest (they were an expansion that did not
+    finish)."""
+    from al2py_runtime import algebra
+
+    depth = 18
+    e, (x, a, b) = _shared(depth)
+    point = {a: 0.1, b: -0.95}
+    rest = algebra.exclude(e + 7 * x, x)
+    assert float(walks.xreplace(rest, point)) == pytest.approx(
+        _value(e, depth, 0, 0.1, -0.95)
+    )
+    full = algebra.include(e + 7 * x, x) + rest
+    at = {**point, x: 0.3}
+    assert float(walks.xreplace(full, at)) == pytest.approx(
+        _value(e, depth, 0.3, 0.1, -0.95) + 2.1
+    )
+    # Coef of a large expression linear in y
+    y = sp.Symbol("y")
+    c = algebra.coef(e * y + e, y)
+    assert float(walks.xreplace(c, at)) == pytest.approx(
+        _value(e, depth, 0.3, 0.1, -0.95)
+    )
+    with pytest.raises(ValueError, match="not linear"):
+        algebra.coef(e * y**2, y)
+
+
+def test_det_and_inv_of_large_entries_do_not_expand():
+    """Det and Inv of a 3x3 matrix of large shared entries: no expansion
+    (sympy's simplification as it goes took hours), the same values."""
+    from al2py_runtime import matrices
+
+    depth = 18
+    e, (x, a, b) = _shared(depth)
+    m = sp.Matrix([[e, 1, 0], [x, e, 2], [0, a, 1]])
+    at = {x: 0.3, a: 0.1, b: -0.95}
+    v = _value(e, depth, 0.3, 0.1, -0.95)
+    want = np.array([[v, 1, 0], [0.3, v, 2], [0, 0.1, 1]])
+    d = matrices.det(m)
+    assert float(walks.xreplace(d, at)) == pytest.approx(np.linalg.det(want))
+    inverse = matrices.inv(m).applyfunc(lambda z: walks.xreplace(z, at))
+    got = np.array(inverse.evalf(), dtype=float)
+    assert np.allclose(got, np.linalg.inv(want))
+    with pytest.raises(ValueError, match="singular"):
+        matrices.inv(sp.Matrix([[e, e, 0], [x, x, 2], [0, 0, 1]]))

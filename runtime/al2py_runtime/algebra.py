@@ -90,7 +90,7 @@ def _book_of(y: Any) -> Any:
     items = y if isinstance(y, sp.MatrixBase) else [y]
     for item in items:
         if isinstance(item, sp.Basic):
-            for z in item.atoms(Intermediate):
+            for z in walks.atoms(item, Intermediate):
                 return z.book
     return None
 
@@ -629,15 +629,39 @@ def coef(y: Any, x: Any) -> Any:
     return _elementwise(lambda e: _coef_one(e, sp.sympify(x)), y)
 
 
+#: expressions with more tree nodes than this are taken apart by walks that
+#: visit each distinct part once (large ones share most of their parts),
+#: rather than by sympy's ``diff`` and ``expand``
+_LARGE = 1000
+
+
 def _coef_one(y: sp.Expr, x: sp.Expr) -> sp.Expr:
     table = _freeze_table([y], [x])
     s = table.get(x, x)
     if not s.is_Symbol:
         raise ValueError(f"Coef: cannot take the coefficient of {x}")
-    c = _freeze(y, table).diff(s)
-    if c.has(s):
-        raise ValueError(f"Coef: {y} is not linear in {x}")
+    frozen = _freeze(y, table)
+    if is_small(frozen, _LARGE):
+        c = frozen.diff(s)
+    else:
+        c = _walker(frozen).derivative(frozen, s)
+    if walks.appearing(c, [s]):
+        raise ValueError(f"Coef: {_short(y)} is not linear in {x}")
     return _thaw(c, table)
+
+
+def _walker(e: Any) -> Any:
+    """A book whose derivative walk takes ``e`` (its intermediates' own
+    book, or a new one: the walk names nothing then)."""
+    from .intermediates.autoz import Intermediates
+
+    book = _book_of(e)
+    return book if book is not None else Intermediates()
+
+
+def _short(e: Any) -> str:
+    """``e`` for a message: its text if short, else a mention of its size."""
+    return str(e) if is_small(e, 60) else "the expression"
 
 
 def _split_terms(y: sp.Expr, x: Any) -> tuple[sp.Expr, sp.Expr]:
@@ -646,10 +670,63 @@ def _split_terms(y: sp.Expr, x: Any) -> tuple[sp.Expr, sp.Expr]:
     xs = list(x) if isinstance(x, sp.MatrixBase) else [sp.sympify(x)]
     table = _freeze_table([y], xs)
     ss = [table.get(e, e) for e in xs]
-    terms = sp.Add.make_args(_expand_terms(_freeze(y, table)))
+    frozen = _freeze(y, table)
+    if not is_small(frozen, _LARGE):
+        split = _split_polynomial(frozen, ss)
+        if split is not None:
+            return _thaw(split[0], table), _thaw(split[1], table)
+    terms = sp.Add.make_args(_expand_terms(frozen))
     has = [a for a in terms if any(a.has(s) for s in ss)]
     rest = [a for a in terms if not any(a.has(s) for s in ss)]
     return _thaw(sp.Add(*has), table), _thaw(sp.Add(*rest), table)
+
+
+def _split_polynomial(y: sp.Expr, ss: list) -> tuple[sp.Expr, sp.Expr] | None:
+    """:func:`_split_terms` of a large ``y`` without expanding it, when
+    ``y`` is a polynomial in the symbols ``ss`` (functions, as there, count
+    as whole: their arguments are not looked into): the terms of expanded
+    ``y`` without any of ``ss`` are then ``y`` with ``ss`` set to 0, and
+    the others the difference.  None if ``y`` is not such a polynomial."""
+    funcs = {
+        f: sp.Dummy("f")
+        for f in sorted(walks.atoms(y, sp.Function), key=sp.default_sort_key)
+        if not _is_time_function(f)
+    }
+    opaque = walks.xreplace(y, funcs)
+    if not _polynomial_in(opaque, set(ss)):
+        return None
+    rest = walks.xreplace(opaque, dict.fromkeys(ss, sp.S.Zero))
+    back = {d: f for f, d in funcs.items()}
+    rest = walks.xreplace(rest, back)
+    return walks.xreplace(opaque, back) - rest, rest
+
+
+def _polynomial_in(e: sp.Expr, ss: set) -> bool:
+    """Whether ``e`` is a polynomial in the symbols ``ss``: they appear only
+    in sums, products and powers with non-negative integer exponents (each
+    distinct part looked at once)."""
+    memo: dict = {}  # part -> whether it holds one of ss
+
+    def holds(a: Any) -> bool:
+        found = memo.get(a)
+        if found is None:
+            found = memo[a] = a in ss or any(holds(b) for b in a.args)
+        return found
+
+    seen: set = set()
+    stack = [e]
+    while stack:
+        a = stack.pop()
+        if a in seen or a in ss or not holds(a):
+            continue
+        seen.add(a)
+        if a.is_Pow:
+            if not (a.exp.is_Integer and a.exp >= 0) or holds(a.exp):
+                return False
+        elif not (a.is_Add or a.is_Mul):
+            return False
+        stack.extend(a.args)
+    return True
 
 
 def _names_arg(x: Any) -> Any:

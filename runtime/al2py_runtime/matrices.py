@@ -1,6 +1,7 @@
 """Pure functions behind Autolev's matrix commands (1-based indices).
 
 >>> import sympy as sp
+from sympy.matrices.utilities import dotprodsimp
 >>> A, B, C, D = sp.symbols("A B C D")
 >>> M0 = sp.Matrix([[A, B], [C, D]])
 >>> rows(M0, 2, (1, 2))
@@ -16,6 +17,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import sympy as sp
+from sympy.matrices.utilities import dotprodsimp
 
 __all__ = [
     "block",
@@ -178,7 +180,48 @@ def det(a: Any) -> sp.Expr:
     >>> det(sp.Matrix([[A, B], [C, D]]))
     A*D - B*C
     """
-    return _square(a, "Det(A)").det(method="berkowitz")
+    m = _square(a, "Det(A)")
+    if all(_small(e) for e in m):
+        return m.det(method="berkowitz")
+    # sympy simplifies the products of large entries as it goes (its
+    # ``dotprodsimp``: an expansion of them, which can take hours)
+    with dotprodsimp(False):
+        return m.det(method="berkowitz")
+
+
+def _vanishes(m: sp.Matrix, d: Any) -> bool:
+    """Whether the determinant ``d`` of ``m`` vanishes at two random points
+    (relative to Hadamard's bound there: the product of the rows' norms);
+    each distinct part of the entries is evaluated once."""
+    from .intermediates.autoz import Intermediate, Intermediates
+    from .walks import atoms
+
+    if d == 0:
+        return True
+    books = [z.book for e in [d, *m] for z in atoms(sp.sympify(e), Intermediate)]
+    book = books[0] if books else Intermediates()
+    for point in (1, 2):
+        try:
+            values = book.values_at([*m, d], point)
+        except (ValueError, ZeroDivisionError, OverflowError):
+            return False
+        n = m.cols
+        bound = 1.0
+        for i in range(m.rows):
+            bound *= sum(abs(v) ** 2 for v in values[i * n : (i + 1) * n]) ** 0.5
+        if abs(values[-1]) > 1e-9 * max(bound, 1e-300):
+            return False
+    return True
+
+
+def _small(e: Any) -> bool:
+    """At most 300 tree nodes (counting stops there)."""
+    if not isinstance(e, sp.Basic):
+        return True
+    for count, _ in enumerate(sp.preorder_traversal(e), start=1):
+        if count > 300:
+            return False
+    return True
 
 
 def inv(a: Any) -> sp.Matrix:
@@ -191,6 +234,14 @@ def inv(a: Any) -> sp.Matrix:
     """
     m = _square(a, "Inv(A)")
     singular = "Inv(A): the matrix is singular (determinant is zero)"
+    if m.rows <= 3 and not all(_small(e) for e in m):
+        # large entries: no simplification as sympy goes (see det), and a
+        # vanishing determinant is found at random points, not by expanding
+        with dotprodsimp(False):
+            d = m.det(method="berkowitz")
+            if _vanishes(m, d):
+                raise ValueError(singular)
+            return m.adjugate().applyfunc(lambda e: e / d)
     if m.rows <= 3:  # adjugate/determinant keeps small inverses readable
         d = m.det(method="berkowitz")
         if sp.expand(d) == 0:
