@@ -1,7 +1,6 @@
 """Pure functions behind Autolev's matrix commands (1-based indices).
 
 >>> import sympy as sp
-from sympy.matrices.utilities import dotprodsimp
 >>> A, B, C, D = sp.symbols("A B C D")
 >>> M0 = sp.Matrix([[A, B], [C, D]])
 >>> rows(M0, 2, (1, 2))
