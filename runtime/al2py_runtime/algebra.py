@@ -83,18 +83,6 @@ def _is_time_derivative(e: sp.Basic) -> bool:
     return isinstance(e, sp.Derivative) and isinstance(e.expr, AppliedUndef)
 
 
-def _book_of(y: Any) -> Any:
-    """The AutoZ book of the intermediates in ``y``, if it holds any."""
-    from .intermediates.autoz import Intermediate
-
-    items = y if isinstance(y, sp.MatrixBase) else [y]
-    for item in items:
-        if isinstance(item, sp.Basic):
-            for z in walks.atoms(item, Intermediate):
-                return z.book
-    return None
-
-
 def _freeze_table(exprs: Iterable[Any], targets: Iterable[Any] = ()) -> dict:
     """Placeholders for all derivatives in ``exprs`` and for each target."""
     table: dict = {}
@@ -290,7 +278,9 @@ def taylor(y: Any, orders: int | Range, points: Sequence[tuple[Any, Any, Any]]) 
     for x in xs:
         if not (x.is_Symbol or _is_time_function(x) or _is_time_derivative(x)):
             raise ValueError(f"Taylor: cannot expand about {x}; it is not a name")
-    book = _book_of(y)
+    from .intermediates.autoz import book_of
+
+    book = book_of(y)
     if book is not None and hi <= 1:
         # AutoZ: values and derivatives at the point, intermediate by
         # intermediate (the written-out expression may be huge).
@@ -644,19 +634,12 @@ def _coef_one(y: sp.Expr, x: sp.Expr) -> sp.Expr:
     if is_small(frozen, _LARGE):
         c = frozen.diff(s)
     else:
-        c = _walker(frozen).derivative(frozen, s)
+        from .intermediates.autoz import Intermediates, book_of
+
+        c = (book_of(frozen) or Intermediates()).derivative(frozen, s)
     if walks.appearing(c, [s]):
         raise ValueError(f"Coef: {_short(y)} is not linear in {x}")
     return _thaw(c, table)
-
-
-def _walker(e: Any) -> Any:
-    """A book whose derivative walk takes ``e`` (its intermediates' own
-    book, or a new one: the walk names nothing then)."""
-    from .intermediates.autoz import Intermediates
-
-    book = _book_of(e)
-    return book if book is not None else Intermediates()
 
 
 def _short(e: Any) -> str:

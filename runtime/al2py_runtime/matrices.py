@@ -18,6 +18,8 @@ from typing import Any
 import sympy as sp
 from sympy.matrices.utilities import dotprodsimp
 
+from .model.kinematics import is_small
+
 __all__ = [
     "block",
     "rows",
@@ -180,25 +182,26 @@ def det(a: Any) -> sp.Expr:
     A*D - B*C
     """
     m = _square(a, "Det(A)")
-    if all(_small(e) for e in m):
+    with dotprodsimp(False if _large(m) else None):
         return m.det(method="berkowitz")
-    # sympy simplifies the products of large entries as it goes (its
-    # ``dotprodsimp``: an expansion of them, which can take hours)
-    with dotprodsimp(False):
-        return m.det(method="berkowitz")
+
+
+def _large(m: sp.MatrixBase) -> bool:
+    """An entry of more than 300 tree nodes: sympy's simplification of
+    products as it goes (``dotprodsimp``, an expansion) is turned off for
+    such a matrix, as it can take hours."""
+    return not all(is_small(e, 300) for e in m if isinstance(e, sp.Basic))
 
 
 def _vanishes(m: sp.Matrix, d: Any) -> bool:
     """Whether the determinant ``d`` of ``m`` vanishes at two random points
     (relative to Hadamard's bound there: the product of the rows' norms);
     each distinct part of the entries is evaluated once."""
-    from .intermediates.autoz import Intermediate, Intermediates
-    from .walks import atoms
+    from .intermediates.autoz import Intermediates, book_of
 
     if d == 0:
         return True
-    books = [z.book for e in [d, *m] for z in atoms(sp.sympify(e), Intermediate)]
-    book = books[0] if books else Intermediates()
+    book = book_of(m) or Intermediates()
     for point in (1, 2):
         try:
             values = book.values_at([*m, d], point)
@@ -213,16 +216,6 @@ def _vanishes(m: sp.Matrix, d: Any) -> bool:
     return True
 
 
-def _small(e: Any) -> bool:
-    """At most 300 tree nodes (counting stops there)."""
-    if not isinstance(e, sp.Basic):
-        return True
-    for count, _ in enumerate(sp.preorder_traversal(e), start=1):
-        if count > 300:
-            return False
-    return True
-
-
 def inv(a: Any) -> sp.Matrix:
     """Autolev ``Inv(A)``; raises ValueError for a singular matrix.
 
@@ -233,19 +226,15 @@ def inv(a: Any) -> sp.Matrix:
     """
     m = _square(a, "Inv(A)")
     singular = "Inv(A): the matrix is singular (determinant is zero)"
-    if m.rows <= 3 and not all(_small(e) for e in m):
-        # large entries: no simplification as sympy goes (see det), and a
-        # vanishing determinant is found at random points, not by expanding
-        with dotprodsimp(False):
+    if m.rows <= 3:  # adjugate/determinant keeps small inverses readable
+        large = _large(m)
+        with dotprodsimp(False if large else None):
             d = m.det(method="berkowitz")
-            if _vanishes(m, d):
+            # large entries: a vanishing determinant is found at random
+            # points rather than by expanding it
+            if _vanishes(m, d) if large else sp.expand(d) == 0:
                 raise ValueError(singular)
             return m.adjugate().applyfunc(lambda e: e / d)
-    if m.rows <= 3:  # adjugate/determinant keeps small inverses readable
-        d = m.det(method="berkowitz")
-        if sp.expand(d) == 0:
-            raise ValueError(singular)
-        return m.adjugate().applyfunc(lambda e: e / d)
     try:
         return m.inv()
     except ValueError:

@@ -214,16 +214,29 @@ def is_worded(exc: BaseException) -> bool:
     a traceback (made, not raised) counts as worded."""
     if type(exc).__module__.split(".")[0] in _OURS:
         return True
-    tb = exc.__traceback__
+    tb = _innermost(exc)
     if tb is None:
         return True
-    while tb.tb_next is not None:
-        tb = tb.tb_next
     frame = tb.tb_frame
-    if str(frame.f_globals.get("__name__", "")).split(".")[0] not in _OURS:
+    if _package(tb) not in _OURS:
         return False
     text = linecache.getline(frame.f_code.co_filename, tb.tb_lineno, frame.f_globals)
     return text.lstrip().startswith("raise ")
+
+
+def _innermost(exc: BaseException) -> TracebackType | None:
+    """The traceback entry of the frame that raised ``exc``."""
+    tb = exc.__traceback__
+    while tb is not None and tb.tb_next is not None:
+        tb = tb.tb_next
+    return tb
+
+
+def _package(tb: TracebackType | None) -> str:
+    """The top-level package of a traceback entry's code ("" if none)."""
+    if tb is None:
+        return ""
+    return str(tb.tb_frame.f_globals.get("__name__", "")).split(".")[0]
 
 
 #: what an unforeseen failure of each kind means, in the user's terms
@@ -268,11 +281,7 @@ def unexpected(exc: BaseException) -> str:
 def _library(exc: BaseException) -> str:
     """The package whose code raised ``exc`` (``Python`` for the
     interpreter's own operations and the standard library)."""
-    tb = exc.__traceback__
-    while tb is not None and tb.tb_next is not None:
-        tb = tb.tb_next
-    name = "" if tb is None else str(tb.tb_frame.f_globals.get("__name__", ""))
-    root = name.split(".")[0]
+    root = _package(_innermost(exc))
     if root in ("sympy", "numpy", "scipy", "mpmath", "symengine", "matplotlib"):
         return root
     if root in _OURS:

@@ -49,7 +49,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import appearing, xreplace
+from ..walks import appearing, atoms, xreplace
 from .elimination import eliminate
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
@@ -448,6 +448,18 @@ def has_intermediates(expr: Any) -> bool:
         return bool(sp.sympify(expr).atoms(Intermediate))
     except (sp.SympifyError, AttributeError, TypeError):
         return False
+
+
+def book_of(*exprs: Any) -> Intermediates | None:
+    """The book of the first intermediate in ``exprs`` (sympy objects or
+    matrices of them), None if they hold none; each distinct part is
+    walked once."""
+    for e in exprs:
+        for item in e if isinstance(e, sp.MatrixBase) else [e]:
+            if isinstance(item, sp.Basic):
+                for z in atoms(item, Intermediate):
+                    return z.book
+    return None
 
 
 class Intermediates:

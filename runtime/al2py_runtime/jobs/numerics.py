@@ -306,8 +306,7 @@ class Numerics:
             value = values.values[key] / factor
         if unit_system:
             return sp.Float(float(value) * factor)
-        value = float(value)
-        return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
+        return _as_number(value)
 
     def _assigned_value(self, key: str) -> Any:
         """``Input(A)`` of a name with no Input but a value of its own
@@ -329,10 +328,7 @@ class Numerics:
             if name in values.values
         }
         value = self._ws.resolve(rhs).xreplace(known)
-        if not value.is_number:
-            return None
-        value = float(value)
-        return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)
+        return _as_number(value) if value.is_number else None
 
     def units(self, a: str, b: str) -> Any:
         """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to
@@ -436,3 +432,9 @@ class Numerics:
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
         return evaluate_with_inputs(job, self._ws.value(name), name, merged)
+
+
+def _as_number(value: Any) -> Any:
+    """A value of ``Input(X)``: an integer when it is one, else a float."""
+    value = float(value)
+    return sp.Integer(int(value)) if value.is_integer() else sp.Float(value)

@@ -113,7 +113,7 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
-def vector_dt(
+def frame_dt(
     v: Vector, frame: ReferenceFrame, scalar_dt: Callable[[Any], Any]
 ) -> Vector:
     """The time derivative of ``v`` in ``frame``, ``scalar_dt`` taking

@@ -104,7 +104,7 @@ class Kinematics:
         if isinstance(v, Dyadic):
             out = time_derivative(v, frame)
         elif isinstance(v, Vector):
-            out = kin.vector_dt(v, frame, book.total_dt)
+            out = kin.frame_dt(v, frame, book.total_dt)
         else:
             out = book.total_dt(v)
         out = self.actual_value(out, keep)
