@@ -315,11 +315,9 @@ def _run_jobs(module, display: str, outdir: Path) -> str:
             where = getattr(job, "where", "CODE")
             line = getattr(job, "line", None)
             located = f"{display}:{line}" if line else display
-            text = str(exc)
+            text = _describe(exc)  # al2py's own words, never a library's
             if text.startswith(where + ": "):
                 text = text[len(where) + 2 :]
-            if not _is_user_error(exc):
-                text = _describe(exc)
             return f"{located}: error: {where} failed: {text}"
     return ""
 
@@ -336,11 +334,6 @@ def _unexpected(exc: BaseException) -> str:
     from al2py_runtime.safety import unexpected
 
     return unexpected(exc)
-
-
-def _is_user_error(exc: BaseException) -> bool:
-    """Errors the runtime words for users (NumericsError, located errors)."""
-    return type(exc).__name__ in ("NumericsError", "AutolevRuntimeError", "BudgetError")
 
 
 def _import_failure(exc: BaseException, module_path: Path, display: str) -> str:
