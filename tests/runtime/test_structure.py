@@ -61,6 +61,9 @@ FOREIGN = {
     "_exit": "os._exit",
     "_assume_defined": "sympy.core.assumptions: the names of sympy's facts"
     " (intermediates answer them from one table, autoz.py)",
+    "_from_args": "sympy AssocOp: a sum or product from arguments already in"
+    " sympy's canonical form (autoz.product_with and autoz.minus, tested equal"
+    " to sympy's constructors)",
     "_parse_order": "sympy Expr: the term order of as_ordered_terms"
     " (autoz.minus_first decides a sum's sign as could_extract_minus_sign)",
 }

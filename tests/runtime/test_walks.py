@@ -9,7 +9,12 @@ import random
 
 import sympy as sp
 from al2py_runtime import walks
-from al2py_runtime.intermediates.autoz import Intermediates, minus_first, product_with
+from al2py_runtime.intermediates.autoz import (
+    Intermediates,
+    minus,
+    minus_first,
+    product_with,
+)
 from sympy.physics.vector import dynamicsymbols
 
 T = dynamicsymbols._t
@@ -74,6 +79,30 @@ def test_the_sign_of_a_sum_is_sympys():
     for e in sums:
         assert minus_first(e, book._sort_key) == e.could_extract_minus_sign()
         assert minus_first(e) == e.could_extract_minus_sign()
+
+
+def test_the_negation_of_a_sum_is_sympys():
+    book, exprs = _book_and_exprs()
+    rng = random.Random(5)
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    coefficients = [1, -1, 2, sp.Rational(-3, 2), sp.Float(0.25), sp.Float(-1.5)]
+    coefficients += [sp.sqrt(2), -sp.sqrt(3), sp.pi, sp.I, -2 * sp.I, sp.E]
+    factors = [*Q[:2], *C[:3], *zs[:6], sp.cos(Q[0]), Q[1] ** 2, 1 / C[0]]
+    sums = [e for e in exprs if e.is_Add]
+    for _ in range(300):
+        terms = [
+            rng.choice(coefficients) * sp.Mul(*rng.sample(factors, rng.randint(1, 3)))
+            for _ in range(rng.randint(2, 5))
+        ]
+        terms += [rng.choice([0, 1, -2, sp.Rational(1, 3), sp.pi])]
+        sums.append(sp.Add(*terms))
+    checked = 0
+    for e in sums + [-e for e in sums]:
+        if e.is_Add:
+            mine, sympys = minus(e), -e
+            assert type(mine) is type(sympys) and mine.args == sympys.args, e
+            checked += 1
+    assert checked > 400
 
 
 def test_an_intermediates_sort_key_is_sympys():

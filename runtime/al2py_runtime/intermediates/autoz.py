@@ -439,7 +439,37 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         new.insert(0, coeff)
     if len(new) == 1:
         return new[0]
-    return sp.Mul(*new, evaluate=False, _sympify=False)  # these arguments as they are
+    return sp.Mul._from_args(new)  # these arguments as they are
+
+
+def minus(expr: Any) -> Any:
+    """``-expr``, as sympy makes it, for a sum: each term negated by its
+    coefficient alone (sympy multiplies ``-1`` into each term with
+    ``Mul.flatten`` and collects them again with ``Add.flatten``), then the
+    terms sorted as ``Add.flatten`` sorts them (a number first, the rest
+    by ``Basic.compare``).  Terms that are themselves sums, or
+    non-commutative, go to sympy."""
+    if not expr.is_Add:
+        return -expr
+    number, terms = None, []
+    for term in expr.args:
+        if term.is_Number:
+            number = -term
+            continue
+        if term.is_Mul and term.args[0].is_Number:
+            c, rest = -term.args[0], term.args[1:]
+        else:
+            c, rest = sp.S.NegativeOne, term.args if term.is_Mul else (term,)
+        if not term.is_commutative or any(r.is_Add or r.is_Number for r in rest):
+            return -expr
+        if c is sp.S.One:
+            terms.append(rest[0] if len(rest) == 1 else sp.Mul._from_args(rest))
+        else:
+            terms.append(sp.Mul._from_args((c, *rest)))
+    terms.sort(key=_BY_COMPARE)
+    if number is not None:
+        terms.insert(0, number)
+    return sp.Add._from_args(terms)
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -540,7 +570,7 @@ class Intermediates:
         if found is not None:
             return found
         if minus_first(expr, self._sort_key):
-            return -self._name(-expr, variables)
+            return -self._name(minus(expr), variables)
         return self._new_name(expr, variables, original, split=False)
 
     def _in_parts(self, expr: Any) -> tuple[Any, Any, Any]:
