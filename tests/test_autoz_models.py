@@ -398,3 +398,32 @@ def test_form_reading_commands_see_written_out_values(tmp_path):
     assert sp.expand(zero - iner * m) == sp.zeros(2, 1)
     # gravity along N1> is zero torque when hanging straight: exact zeros
     assert mod.al["CHECK"] == sp.zeros(2, 1)
+
+
+def test_solve_for_some_accelerations_names_over_the_others(tmp_path):
+    """``Solve(Zero[1], U3')`` with ``AutoZ ON`` while U4' and U5' stay:
+    the intermediates are made over U4' and U5' themselves (each shown as
+    ``Z12 = ...``, never taken at placeholders, ``Z12(Derivative(...))``),
+    U4' and U5' stay visible in the solution, and its value is AutoZ
+    OFF's."""
+    values = []
+    for on in (False, True):
+        source = ("AutoZ ON\n" if on else "") + SCRIPT.read_text()
+        source += "\nSolve(Zero[1], U3')\n"
+        name = f"some_{'on' if on else 'off'}"
+        result = convert(source, str(tmp_path / f"{name}.al"))
+        (tmp_path / f"{name}.py").write_text(result.code)
+        module = load_module(result.code, tmp_path, name)
+        values.append(float(module.evaluate("U3'", **STATE)))
+        if on:
+            solution = module.al.value("U3'")
+            shown = {str(d.expr.func) for d in solution.atoms(sp.Derivative)}
+            assert shown == {"U4", "U5"}
+            out = tmp_path / "out"
+            out.mkdir()
+            lines = _transcript(tmp_path, name, out).stdout.splitlines()
+            solved = lines.index(next(x for x in lines if "Solve(Zero[1]" in x))
+            shown = [x for x in lines[solved:] if x.startswith("->")]
+            assert shown and not any(re.search(r"\bZ\d+\(", x) for x in shown)
+            assert re.search(r"U3' = .*U4'", shown[-1]), shown[-1]
+    assert values[1] == pytest.approx(values[0], rel=1e-10, abs=1e-12)

@@ -518,14 +518,20 @@ def solve_linear(
         raise ValueError("Solve: an unknown is listed twice")
     if len(equations) != len(xs):
         raise ValueError(f"Solve: {len(equations)} equations for {len(xs)} unknowns")
-    table = _freeze_table(equations, xs)
+    # With a book, only the unknowns are frozen: the other derivatives stay
+    # in the equations, so that the intermediates are made over them (not
+    # over placeholders, which thawed would leave each ``Z`` taken elsewhere
+    # than at its own variables) and the solutions show them.
+    linear = book is not None and _linear_in_others(equations, xs, book)
+    table = _freeze_table([] if linear else equations, xs)
     syms = [table.get(x, x) for x in xs]
     frozen = [_freeze(sp.sympify(e), table) for e in equations]
     a, b = _linear_system(frozen, syms, xs, book)
     singular = "Solve: the equations are singular (determinant is zero)"
     if book is not None:
         try:
-            sols = list(book.solve(a, b, [table.get(z, z) for z in zero]))
+            zero = [table.get(z, z) for z in zero]
+            sols = list(book.solve(a, b, zero, keep=linear))
         except ValueError:
             raise ValueError(singular) from None
     elif len(xs) <= 3:  # Cramer's rule keeps small solutions readable
@@ -545,6 +551,23 @@ def solve_linear(
         if any(s.has(sp.nan, sp.zoo, sp.oo) for s in sols):
             raise ValueError(singular)
     return tuple(_thaw(s, table) for s in sols)
+
+
+def _linear_in_others(equations: list[Any], xs: list[Any], book: Any) -> bool:
+    """Whether ``equations`` are linear in their derivatives other than the
+    unknowns ``xs`` (no coefficient of one holds one): walks that take each
+    shared part once."""
+    for e in equations:
+        e = sp.sympify(e)
+        others = [
+            d
+            for d in sorted(walks.atoms(e, sp.Derivative), key=sp.default_sort_key)
+            if d not in xs
+        ]
+        for d in others:
+            if walks.appearing(book.derivative(e, d), others):
+                return False
+    return True
 
 
 #: ``factor_terms`` (which reads a closed-form solution as Autolev printed

@@ -785,6 +785,16 @@ class Intermediates:
             rule[z] = found
         return expr.xreplace(rule)
 
+    def _name_rates(self, expr: Any) -> Any:
+        """:meth:`name`, and for an expression with derivatives that are not
+        :attr:`rates` (accelerations a ``Solve`` does not solve for), its
+        coefficients of them and the rest named (:meth:`name_linear`)."""
+        expr = sp.sympify(expr)
+        derivatives = self._scan(expr)[1] - self.rates if not trivial(expr) else ()
+        if not derivatives:
+            return self.name(expr)
+        return self.name_linear(expr, sorted(derivatives, key=sp.default_sort_key))
+
     def name_linear(self, expr: Any, xs: Sequence[Any]) -> Any:
         """``expr = rest + sum(c_k * x_k)`` with ``rest`` and each ``c_k``
         named, so that the terms in ``xs`` (speeds, their derivatives) stay
@@ -1400,16 +1410,27 @@ class Intermediates:
 
     # ------------------------------------------------------ linear solves
 
-    def solve(self, a: sp.Matrix, b: sp.Matrix, zero: Iterable[Any] = ()) -> sp.Matrix:
+    def solve(
+        self,
+        a: sp.Matrix,
+        b: sp.Matrix,
+        zero: Iterable[Any] = (),
+        *,
+        keep: bool = False,
+    ) -> sp.Matrix:
         """Solve ``a x = b`` by Gaussian elimination, naming every entry.
 
         Pivots are chosen numerically: an entry non-zero with the variables in
         ``zero`` set to 0 (the usual reference configuration) if possible, the
-        largest at a random point otherwise."""
+        largest at a random point otherwise.  With ``keep``, the entries may
+        hold derivatives that are not :attr:`rates` (accelerations a
+        ``Solve`` does not solve for), linearly: they stay visible, their
+        coefficients named."""
         zero = list(zero)
-        rows = [[self.name(a[i, j]) for j in range(a.cols)] for i in range(a.rows)]
-        rhs = [[self.name(b[i, j]) for j in range(b.cols)] for i in range(b.rows)]
-        x = eliminate(rows, rhs, self.name, lambda e, point: self.probe(e, point, zero))
+        name = self._name_rates if keep else self.name
+        rows = [[name(a[i, j]) for j in range(a.cols)] for i in range(a.rows)]
+        rhs = [[name(b[i, j]) for j in range(b.cols)] for i in range(b.rows)]
+        x = eliminate(rows, rhs, name, lambda e, point: self.probe(e, point, zero))
         return sp.Matrix(a.rows, b.cols, lambda i, j: x[i][j])
 
 
