@@ -112,6 +112,41 @@ def test_an_intermediates_sort_key_is_sympys():
             assert book._sort_key(z) == sp.default_sort_key(z)
 
 
+def test_a_sums_and_a_products_sort_key_is_sympys():
+    """The kept keys of sums and products (made from their parts' kept
+    keys) are ``default_sort_key``'s, numbers, powers, floats and sums as
+    factors included."""
+    book, exprs = _book_and_exprs()
+    rng = random.Random(1)
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    pool = [*Q, *U, *C, *zs[:8], sp.cos(Q[0]), U[0].diff(T)]
+    coefficients = [1, -1, 2, sp.Rational(-3, 4), sp.Float(0.5), sp.sqrt(2)]
+
+    def product():
+        factors = rng.sample(pool, rng.randint(1, 3))
+        if rng.random() < 0.2:
+            factors.append(rng.choice(pool) ** rng.choice([2, -1, sp.Rational(1, 2)]))
+        if rng.random() < 0.15:
+            factors.append(sp.Add(*rng.sample(pool, 2)))
+        return rng.choice(coefficients) * sp.Mul(*factors)
+
+    for _ in range(200):
+        e = sp.Add(*[product() for _ in range(rng.randint(1, 4))])
+        if rng.random() < 0.2:
+            e = e * sp.Add(*rng.sample(pool, 2))
+        if rng.random() < 0.1:
+            e = e + rng.choice([1, sp.pi, -2])
+        exprs += [e, -e]
+    checked = 0
+    for e in exprs:
+        for part in sp.preorder_traversal(e):
+            if isinstance(part, sp.Basic) and (part.is_Add or part.is_Mul):
+                book._keys.pop(part, None)
+                assert book._sort_key(part) == sp.default_sort_key(part), part
+                checked += 1
+    assert checked > 1500
+
+
 def test_the_chain_rules_products_are_sympys():
     book, _ = _book_and_exprs()
     zs = [z for z in book._named.values() if isinstance(z, book.Z)]

@@ -761,10 +761,47 @@ class Intermediates:
                     _ONE_KEY,
                     sp.S.One,
                 )
+            elif x.is_Add or x.is_Mul:
+                found = self._compound_key(x)
             else:
                 found = sp.default_sort_key(x)
             self._keys[x] = found
         return found
+
+    def _compound_key(self, x: Any) -> Any:
+        """``default_sort_key`` of a sum or product, as ``Expr.sort_key``
+        makes it, from its parts' kept keys (sympy's walks the whole tree
+        each time: most of the cost of a sum's sign, :func:`minus_first`,
+        when its factors are sums).  A sum's terms come in the order of
+        ``as_ordered_terms``, by their monomials (:func:`_as_terms`); sympy's
+        own key is taken where that order needs more (a number among the
+        terms, two terms with one monomial, a non-commutative part), and for
+        a product whose rest is a power, an atom or non-commutative."""
+        coeff, expr = x.as_coeff_Mul()
+        if expr.is_Add:
+            args = expr.args
+            if not expr.is_commutative or any(
+                a.is_Number or a.is_NumberSymbol or a.is_Order for a in args
+            ):
+                return sp.default_sort_key(x)
+            terms, _ = _as_terms(expr, self._sort_key)
+            monomials = {monom for _, (_, monom, _) in terms}
+            if len(monomials) != len(terms):
+                return sp.default_sort_key(x)
+            ordered = [
+                term
+                for term, (_, monom, _) in sorted(
+                    terms, key=lambda t: t[1][1], reverse=True
+                )
+            ]
+        elif expr.is_Mul and expr.is_commutative:
+            ordered = sorted(expr.args, key=self._sort_key)
+        elif expr.is_Pow or expr.is_Atom or not expr.is_commutative:
+            return sp.default_sort_key(x)
+        else:
+            ordered = expr.args
+        keys = tuple([self._sort_key(a) for a in ordered])
+        return expr.class_key(), (len(keys), keys), _ONE_KEY, coeff
 
     def rebase(self, expr: Any) -> Any:
         """``expr`` with each intermediate that is taken elsewhere than at its
