@@ -24,6 +24,8 @@ CASES = [
     # syntax errors
     ("end_of_input", "Constants A\nE = A + 1 +\n", 2, 12, "unexpected end of input"),
     ("bad_character", "Constants A\nE = 3 $ 4\n", 2, 7, "unexpected character '$'"),
+    # the stray character, not the operator the parser then trips on
+    ("bad_character_after_operator", "Variables X\nY = X + $ + X\n", 2, 9, "'$'"),
     ("two_names", "Constants A B\n", 1, 13, "unexpected 'B'"),
     ("unclosed_paren", "E = ((((1\n", 1, 10, "missing ')'"),
     ("unterminated_string", 'Save x"y.all\n', 1, 7, "unterminated string"),
@@ -356,3 +358,18 @@ def test_save_file_name_is_used_verbatim(tmp_path):
     created = {p.name for p in tmp_path.iterdir()} - before
     assert created == {name}
     assert "E = A" in (tmp_path / name).read_text()
+
+
+def test_a_long_line_is_shown_around_the_column(tmp_path, capsys):
+    """A source line longer than 120 characters is shown cut around the
+    column (``...`` where cut), with the caret under the culprit."""
+    source = "Variables X\nY = " + "X + " * 100 + "$" + " + X" * 100 + "\n"
+    path = tmp_path / "long.al"
+    path.write_text(source)
+    status, _out, err = _run_main([str(path), "-o", str(tmp_path / "long.py")], capsys)
+    assert status == 2
+    first, shown, caret = err.splitlines()[:3]
+    assert first.endswith("long.al:2:405: error: unexpected character '$'")
+    assert shown.startswith("    ...") and shown.endswith("...")
+    assert len(shown) <= 4 + 120 + 6
+    assert shown[caret.index("^")] == "$"

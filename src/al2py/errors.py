@@ -31,6 +31,27 @@ __all__ = [
 MAX_ERRORS = 50
 
 
+#: the widest source line shown under a message; a longer one is shown
+#: around the column, its cut ends marked ``...``
+LINE_WIDTH = 120
+
+
+def _window(text: str, col: int) -> tuple[str, int]:
+    """``text`` cut to :data:`LINE_WIDTH` characters around column ``col``
+    (0-based), and the column in the cut text."""
+    col = max(col, 0)
+    if len(text) <= LINE_WIDTH:
+        return text, col
+    start = max(0, min(col - LINE_WIDTH // 2, len(text) - LINE_WIDTH))
+    end = start + LINE_WIDTH
+    shown = text[start:end]
+    if start > 0:
+        shown, col = "..." + shown, col - start + 3
+    if end < len(text):
+        shown += "..."
+    return shown, col
+
+
 class AutolevError(Exception):
     """An error in the user's ``.al`` input, located by a :class:`Span`."""
 
@@ -51,9 +72,8 @@ class AutolevError(Exception):
             text = lines[self.span.line - 1]
         out = f"{self.span}: error: {self.message}"
         if text:
-            text = text.rstrip("\n").expandtabs(1)
-            caret = " " * max(self.span.col - 1, 0) + "^"
-            out += f"\n    {text}\n    {caret}"
+            text, col = _window(text.rstrip("\n").expandtabs(1), self.span.col - 1)
+            out += f"\n    {text}\n    {' ' * col}^"
         return out
 
     def __str__(self) -> str:

@@ -372,8 +372,29 @@ class _ErrorListener(ErrorListener):
             end = self._statement_of(index)
             if end not in seen:
                 seen.add(end)
-                out.append(err)
+                out.append(self._stray_character(index, end) or err)
         return out
+
+    def _stray_character(self, index: int, end: int) -> ParseError | None:
+        """An error at the first character that is no token of the
+        language in the statement ending at ``end`` (``Y = X + $ + X``): the
+        parser's complaint about that statement is a consequence of it."""
+        tokens = self.stream.tokens
+        k = min(max(index, 0), len(tokens) - 1)
+        while k > 0 and tokens[k - 1].type not in _SEPARATORS:
+            k -= 1
+        for tok in tokens[k:end]:
+            if tok.type == _P.ERRCHAR:
+                text = (
+                    self.lines[tok.line - 1] if 0 < tok.line <= len(self.lines) else ""
+                )
+                span = ir.Span(
+                    self.filename, tok.line, tok.column + 1, tok.line, tok.column + 2
+                )
+                return ParseError(
+                    f"unexpected character {tok.text!r}", span, line_text=text
+                )
+        return None
 
     def _end_of_input(self, eof: Token) -> tuple[int, int]:
         if not self.lines:
