@@ -169,3 +169,26 @@ def test_the_chain_rules_products_are_sympys():
                 sympys = sp.Mul(*args[:i], d, *args[i + 1 :])
                 assert type(mine) is type(sympys)
                 assert mine.args == sympys.args
+
+
+def test_linear_splits_by_the_books_walk_are_sympys():
+    """``split_linear_named`` with the book (its derivative walk) gives the
+    coefficients sympy's ``diff`` gives, intermediates and all."""
+    from al2py_runtime.model.arrange import split_linear_named
+
+    book, exprs = _book_and_exprs()
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    w = dynamicsymbols("w1:3")
+    speeds = [w[0], w[1], w[1].diff(T)]
+    eqs = [
+        e * zs[k % len(zs)]
+        + sum(
+            (zs[(k + j) % len(zs)] * sp.cos(Q[j]) * s for j, s in enumerate(speeds)),
+            sp.S.Zero,
+        )
+        for k, e in enumerate(exprs[:12])
+    ]
+    fast = split_linear_named(eqs, speeds, book)
+    slow = split_linear_named(eqs, speeds)
+    assert fast[0] == slow[0] and fast[1] == slow[1]
+    assert any(x != 0 for x in fast[0])

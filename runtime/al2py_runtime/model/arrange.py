@@ -16,6 +16,7 @@ from typing import Any
 
 import sympy as sp
 
+from ..walks import appearing
 from .kinematics import tidy
 
 __all__ = ["solve_speeds", "arrange", "split_linear", "linear_terms"]
@@ -40,10 +41,12 @@ def split_linear(
 
 
 def split_linear_named(
-    exprs: Sequence[Any], unknowns: Sequence[Any]
+    exprs: Sequence[Any], unknowns: Sequence[Any], book: Any = None
 ) -> tuple[sp.Matrix, sp.Matrix]:
     """:func:`split_linear` without expanding (coefficients by derivatives),
-    for expressions written with intermediates."""
+    for expressions written with intermediates.  With their ``book``, the
+    derivatives are its walk (:meth:`Intermediates.derivative`: each shared
+    part once, no ``Derivative`` objects), which gives sympy's ``diff``."""
     a = sp.zeros(len(exprs), len(unknowns))
     b = sp.zeros(len(exprs), 1)
     plain = [sp.Dummy(f"x{k}") for k in range(len(unknowns))]
@@ -51,9 +54,15 @@ def split_linear_named(
     zero = dict.fromkeys(plain, 0)
     for i, e in enumerate(exprs):
         e = sp.sympify(e).xreplace(swap)
+        present = appearing(e, plain)
         for j, x in enumerate(plain):
-            c = e.diff(x) if e.has(x) else sp.S.Zero
-            if c.has(*plain):
+            if x not in present:
+                c = sp.S.Zero
+            elif book is not None:
+                c = book.derivative(e, x)
+            else:
+                c = e.diff(x)
+            if appearing(c, plain):
                 raise ValueError(f"equation {i + 1} is not linear in {unknowns[j]}")
             a[i, j] = c
         b[i, 0] = e.xreplace(zero)
@@ -74,7 +83,7 @@ def solve_speeds(
     if len(eqs) != len(unknowns):
         raise ValueError(f"{len(eqs)} equations for {len(unknowns)} unknowns")
     if book is not None:
-        a, b = split_linear_named(eqs, unknowns)
+        a, b = split_linear_named(eqs, unknowns, book)
         return list(book.solve(a, -b, zero))
     a, b = split_linear(eqs, unknowns)
     a = a.applyfunc(tidy)

@@ -599,8 +599,8 @@ class FastKane:
         speeds = self._u + self._u_aux
         n = len(kd_eqs)
         try:
-            a, rest = split_linear_named(kd_eqs, qdots)
-            b, k = split_linear_named(list(rest), speeds)
+            a, rest = split_linear_named(kd_eqs, qdots, self.book)
+            b, k = split_linear_named(list(rest), speeds, self.book)
         except ValueError:
             a = None
         if a is None or any(c.has(*qdots, *speeds) for c in [*a, *b, *k]):
@@ -633,11 +633,11 @@ class FastKane:
         if not m:
             return
         name = self.book.name
-        a, b = split_linear_named([self._actual(e) for e in vel], self._u)
+        a, b = split_linear_named([self._actual(e) for e in vel], self._u, self.book)
         self._k_nh, self._f_nh = a.applyfunc(name), b.applyfunc(name)
         if acc:
             udots = [u.diff(_T) for u in self._u]
-            a, b = split_linear_named([self._actual(e) for e in acc], udots)
+            a, b = split_linear_named([self._actual(e) for e in acc], udots, self.book)
             self._k_dnh, self._f_dnh = a.applyfunc(name), b.applyfunc(name)
         else:
             self._k_dnh = self._k_nh
