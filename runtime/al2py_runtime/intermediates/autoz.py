@@ -857,9 +857,14 @@ class Intermediates:
         if split is not None:
             coefs, rest = split
         else:
-            coefs = [self._pd(w, p, {}) for p in plain]  # one memo per variable
+            coefs = []
+            for p in plain:
+                c = self._pd(w, p, {})  # one memo per variable
+                if appearing(c, plain):
+                    return expr  # not linear: keep it as it is (found early)
+                coefs.append(c)
             rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
-        if any(c.has(*plain) for c in coefs) or rest.has(*plain):
+        if any(appearing(c, plain) for c in coefs) or appearing(rest, plain):
             return expr  # not linear: keep it as it is
         return self.name(rest) + sp.Add(
             *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
