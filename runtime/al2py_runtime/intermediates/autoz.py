@@ -507,6 +507,7 @@ class Intermediates:
         self._varsets: list[frozenset] = [frozenset()]  # k -> its variables, a set
         self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
         self._time_rates: dict[Any, Any] = {}  # variable -> its diff(t), or None
+        self._values: dict[int, dict] = {}  # point -> part -> value (values_at)
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
@@ -1402,8 +1403,10 @@ class Intermediates:
         random value fixed by its name and ``point``.  Nothing is rewritten
         first, and each distinct part (an intermediate, a shared
         subexpression) is evaluated once, so a large expression costs one
-        walk.  Raises ``ValueError`` (or ``ZeroDivisionError``,
-        ``OverflowError``) where a value cannot be formed.
+        walk; the values are kept per point for the next call (they depend
+        only on the part and the point).  Raises ``ValueError`` (or
+        ``ZeroDivisionError``, ``OverflowError``) where a value cannot be
+        formed.
 
         >>> q = dynamicsymbols("q")
         >>> book = Intermediates()
@@ -1414,7 +1417,7 @@ class Intermediates:
         """
         if sys.getrecursionlimit() < 20000:
             sys.setrecursionlimit(20000)
-        env: dict[Any, complex] = {}
+        env: dict[Any, complex] = self._values.setdefault(point, {})
         functions = complex_functions()
 
         def value(e: Any) -> complex:

@@ -92,7 +92,7 @@ class KaneEquations:
         inertia = self.central_inertia(b)
         w = self.actual_value(self.ang_vel(b, n))
         alf = self.actual_value(self.ang_acc(b, n))
-        return -((inertia & alf) + (w ^ (inertia & w)))
+        return -((inertia & alf) + kin.cross(w, inertia & w))
 
     # Accelerations from the velocities' linear forms (issue 21/22): with
     # v = sum c_j u_j + r (c_j, r named, measure numbers in one frame),
@@ -270,7 +270,7 @@ class KaneEquations:
                 form = self._linear_form(w, o, book)
                 alf = self._angular_acceleration(o, n, form, book, rates)
                 alf = self.actual_value(alf)
-                inertia = self.central_inertia(o).to_matrix(o)
+                inertia = kin.dyadic_matrix(self.central_inertia(o), o)
                 imat = [[book.name(inertia[i, j]) for j in range(3)] for i in range(3)]
                 omega = named_measures(self.actual_value(w), o, book)
                 rotations.append((imat, omega, motion(w, form, alf, o)))

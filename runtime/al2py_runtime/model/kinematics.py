@@ -113,6 +113,78 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
+def cross(a: Vector, b: Vector) -> Vector:
+    """``a ^ b`` of two vectors, as sympy forms it (each component of ``b``
+    in its frame ``F``: ``a``'s measure numbers along ``F`` by the direction
+    cosines, then the three-term products), without sympy's unit-vector dot
+    products and 3x3 symbolic determinant.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x + u * N.z
+    >>> cross(a, b) == a ^ b
+    True
+    """
+    if not isinstance(b, Vector) or not isinstance(a, Vector):
+        return a ^ b
+    if not b.args:
+        return Vector(0)
+    out = []
+    for m, f in b.args:
+        w = []
+        for k in range(3):
+            total = sp.S.Zero
+            for m1, f1 in a.args:
+                d = f.dcm(f1)
+                total += sp.Add(*[d[k, j] * m1[j] for j in range(3)])
+            w.append(total)
+        out.append(
+            (
+                sp.Matrix(
+                    [
+                        w[1] * m[2] - w[2] * m[1],
+                        w[2] * m[0] - w[0] * m[2],
+                        w[0] * m[1] - w[1] * m[0],
+                    ]
+                ),
+                f,
+            )
+        )
+    return Vector(out)
+
+
+def dyadic_matrix(d: Dyadic, frame: ReferenceFrame) -> sp.Matrix:
+    """``d.to_matrix(frame)``: read off the components when every unit
+    vector of ``d`` is ``frame``'s (an inertia dyadic in its body's frame),
+    else sympy's (unit-vector dot products).
+
+    >>> from sympy.physics.vector import ReferenceFrame, outer
+    >>> from sympy import symbols
+    >>> a, b = symbols("a b")
+    >>> N = ReferenceFrame("N")
+    >>> d = a * outer(N.x, N.x) + b * outer(N.x, N.y) + a * outer(N.z, N.z)
+    >>> dyadic_matrix(d, N) == d.to_matrix(N)
+    True
+    """
+    if not all(
+        len(v.args) == 1 and v.args[0][1] == frame
+        for _, v1, v2 in d.args
+        for v in (v1, v2)
+    ):
+        return d.to_matrix(frame)
+    entries = [[sp.S.Zero] * 3 for _ in range(3)]
+    for c, v1, v2 in d.args:
+        m1, m2 = v1.args[0][0], v2.args[0][0]
+        for i in range(3):
+            if m1[i] != 0:
+                for j in range(3):
+                    if m2[j] != 0:
+                        entries[i][j] += c * m1[i] * m2[j]
+    return sp.Matrix(entries)
+
+
 def frame_dt(
     v: Vector, frame: ReferenceFrame, scalar_dt: Callable[[Any], Any]
 ) -> Vector:
@@ -124,7 +196,7 @@ def frame_dt(
     for m, f in v.args:
         out += Vector([(m.applyfunc(scalar_dt), f)])
         if f != frame:
-            out += f.ang_vel_in(frame) ^ Vector([(m, f)])
+            out += cross(f.ang_vel_in(frame), Vector([(m, f)]))
     return out
 
 

@@ -196,7 +196,7 @@ class Kinematics:
             except ValueError:
                 continue
             inner = self._ang_acc(c, a, seen | {b})
-            return self._tidyv(inner + given + (w_ca ^ w_bc))
+            return self._tidyv(inner + given + kin.cross(w_ca, w_bc))
         return self._tidyv(self.resolved_dt(self.ang_vel(b, a), a))
 
     @command
@@ -366,13 +366,17 @@ class Kinematics:
     # ------------------------------------------------- velocity formulas
 
     def _v2pts(self, n, a, o, p) -> Vector:
-        v = self.vel(o, n) + (self.ang_vel(a, n) ^ self.pos(o, p))
+        v = self.vel(o, n) + kin.cross(self.ang_vel(a, n), self.pos(o, p))
         return self._tidyv(v)
 
     def _a2pts(self, n, a, o, p) -> Vector:
         w = self.ang_vel(a, n)
         r = self.pos(o, p)
-        v = self.acc(o, n) + (self.ang_acc(a, n) ^ r) + (w ^ (w ^ r))
+        v = (
+            self.acc(o, n)
+            + kin.cross(self.ang_acc(a, n), r)
+            + kin.cross(w, kin.cross(w, r))
+        )
         return self._tidyv(v)
 
     def _deferred(self, which: str, p: Point, n: ReferenceFrame) -> Vector:
@@ -428,7 +432,7 @@ class Kinematics:
         vpa = self.registry.vel.get((p, a))
         if vpa is None:
             vpa = self.resolved_dt(r, a)
-        v = self.vel(o, n) + vpa + (self.ang_vel(a, n) ^ r)
+        v = self.vel(o, n) + vpa + kin.cross(self.ang_vel(a, n), r)
         return self._set_formed("V", p, n, self._tidyv(v), line)
 
     @command
@@ -446,9 +450,9 @@ class Kinematics:
         v = (
             self.acc(o, n)
             + apa
-            + 2 * (w ^ vpa)
-            + (self.ang_acc(a, n) ^ r)
-            + (w ^ (w ^ r))
+            + 2 * kin.cross(w, vpa)
+            + kin.cross(self.ang_acc(a, n), r)
+            + kin.cross(w, kin.cross(w, r))
         )
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
