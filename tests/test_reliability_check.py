@@ -177,8 +177,10 @@ def test_deep_nesting_error_points_at_the_deepest_bracket(tmp_path):
     col = len("B = ") + depth
     assert first.startswith(f"deep.al:2:{col}: error: ")
     assert "nested too deeply" in first
-    assert source == "    " + text.splitlines()[1]
-    assert caret == " " * (4 + col - 1) + "^"
+    # the 6000-character line is shown cut around the column
+    assert source.startswith("    ...") and len(source) < 140
+    at = caret.index("^")
+    assert source[at : at + 2] == "(A"
 
 
 def _depth(node) -> int:
