@@ -16,7 +16,6 @@ import math
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
-import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
@@ -393,6 +392,8 @@ def roots(y: Any, x: Any = None, n: int | None = None) -> sp.Matrix:
     if len(coeffs) < 2:
         raise ValueError("Roots: the polynomial has no roots (degree is less than 1)")
     if all(sp.sympify(c).is_number for c in coeffs):
+        import numpy as np
+
         values = np.roots(np.array([complex(c) for c in coeffs]))
         found = sorted((_clean(v) for v in values), key=_sort_key)
         return sp.Matrix(found)
@@ -471,6 +472,8 @@ def eig_vectors(m: Any, vectors: bool = True) -> tuple[sp.Matrix, sp.Matrix | No
 
 def _numeric_eig(a: sp.Matrix, vectors: bool) -> tuple[sp.Matrix, sp.Matrix | None]:
     real = all(sp.sympify(e).is_real for e in a)
+    import numpy as np
+
     arr = np.array(a.evalf(), dtype=float if real else complex)
     if real and a.is_symmetric():
         values_np, vecs_np = np.linalg.eigh(arr)

@@ -442,7 +442,7 @@ def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
       dynamics (``ode_system`` -> ``backends.choose``/``compile_dynamics``).
 
     No workspace method sits between: the module's ``al`` holds the parts."""
-    from al2py_runtime.jobs import numerics
+    from al2py_runtime.jobs import run as runner
 
     from al2py import convert
 
@@ -455,13 +455,13 @@ def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
     exec(compile(code, str(path), "exec"), namespace)
 
     seen = []
-    real = numerics.run_job
+    real = runner.run_job
 
     def spy(job, overrides, **kw):
         seen.append((job.inputs["A"].value, dict(overrides), kw))
         return real(job, overrides, **kw)
 
-    monkeypatch.setattr(numerics, "run_job", spy)
+    monkeypatch.setattr(runner, "run_job", spy)
     result = namespace["run"](A=3, backend="lambdify", job="decay")
     ((given, overrides, kw),) = seen
     assert given == 2 and overrides == {"A": 3}

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 from sympy.physics.vector import Vector
@@ -46,11 +46,14 @@ from .records import (
     job_stem,
     normalize_name,
 )
-from .run import input_values, ode_function, run_job
-from .tables import Result
 from .units import UnitSystem, units_factor
 
-__all__ = ["Numerics", "NumericsError", "Result"]
+if TYPE_CHECKING:
+    from .tables import Result
+
+# The job runner (numpy, the compiled backends) loads when a job first
+# needs it (``from .run import ...`` in the methods), not with the model.
+__all__ = ["Numerics", "NumericsError"]
 
 
 @dataclass
@@ -302,6 +305,8 @@ class Numerics:
         if isinstance(value, sp.Basic) and not value.is_number:
             # ``Input E1 = COS(Q1/2)``: computed from the other Inputs (and
             # the script's values) as a job computes it, in internal units
+            from .run import input_values
+
             values, _ = input_values(self._make_job("ALGEBRAIC"), {})
             value = values.values[key] / factor
         if unit_system:
@@ -321,6 +326,8 @@ class Numerics:
         rhs = self._ws.table.rhs.get(entry.obj)
         if not isinstance(rhs, sp.Basic):
             return None
+        from .run import input_values
+
         values, _ = input_values(self._make_job("ALGEBRAIC"), {}, zero_missing=False)
         known = {
             e.obj: values.values[name]
@@ -368,6 +375,8 @@ class Numerics:
         Input gives stops it with the names; ``zero_missing=True`` uses 0."""
         merged = dict(values or {})
         merged.update(overrides)
+        from .run import run_job
+
         return run_job(
             self.job(job), merged, backend=backend, zero_missing=zero_missing
         )
@@ -413,6 +422,8 @@ class Numerics:
         the same function; ``backend`` and ``job`` as for :meth:`run`."""
         merged = dict(values or {})
         merged.update(overrides)
+        from .run import ode_function
+
         return ode_function(
             self.job(job), merged, backend=backend, zero_missing=zero_missing
         )

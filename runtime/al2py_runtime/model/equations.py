@@ -5,9 +5,9 @@
 
 from __future__ import annotations
 
+import cmath
 from typing import Any
 
-import numpy as np
 import sympy as sp
 from sympy.physics.vector import (
     ReferenceFrame,
@@ -197,14 +197,19 @@ class KaneEquations:
                 return False
             sums = []
             for args in parts:
-                out = np.zeros(3, dtype=complex)
+                out = [0j, 0j, 0j]
                 for _ in args:
-                    dcm = np.array([next(values) for _ in range(9)]).reshape(3, 3)
-                    out += dcm @ np.array([next(values) for _ in range(3)])
+                    dcm = [next(values) for _ in range(9)]
+                    vec = [next(values) for _ in range(3)]
+                    for i in range(3):
+                        out[i] += sum(dcm[3 * i + j] * vec[j] for j in range(3))
                 sums.append(out)
             x, y = sums
-            scale = max(1.0, float(np.max(np.abs(x))), float(np.max(np.abs(y))))
-            if not np.all(np.isfinite(x)) or np.max(np.abs(x - y)) > 1e-9 * scale:
+            scale = max(1.0, *(abs(v) for v in x), *(abs(v) for v in y))
+            if (
+                not all(cmath.isfinite(v) for v in x)
+                or max(abs(a - b) for a, b in zip(x, y, strict=True)) > 1e-9 * scale
+            ):
                 return False
         return True
 

@@ -38,7 +38,6 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import (
@@ -952,6 +951,8 @@ class FastKane:
             return printer.doprint(e)
 
         lines.append(f"    return {emit(plain)}")
+        import numpy as np
+
         namespace: dict[str, Any] = {"numpy": np}
         exec("\n".join(lines), namespace)  # noqa: S102  (generated from sympy)
         return namespace["_numeric"]
