@@ -108,6 +108,22 @@ class Intermediate(sp.Function):
     def _sympystr(self, printer: Any) -> str:
         return self.book.label(self)
 
+    def compare(self, other: Any) -> int:
+        """``Basic.compare``, decided by the numbers for two intermediates
+        of one book with as many arguments (sympy compares the arguments in
+        turn, the number first), which is most of the cost of sorting the
+        factors and terms of large models' sums and products."""
+        if self is other:
+            return 0
+        if type(other) is type(self):
+            a, b = self._args, other._args
+            if len(a) != len(b):
+                return 1 if len(a) > len(b) else -1
+            pa, pb = a[0].p, b[0].p
+            if pa != pb:
+                return 1 if pa > pb else -1
+        return sp.Basic.compare(self, other)
+
     def _latex(self, printer: Any) -> str:
         label = self.book.label(self)
         return label[0] + "_{" + label[1:] + "}"
@@ -382,7 +398,15 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
 
 
 #: the order of a product's factors (``Mul.flatten`` sorts by it)
-_BY_COMPARE = functools.cmp_to_key(sp.Basic.compare)
+
+
+def _compare(a: Any, b: Any) -> int:
+    """``Basic.compare(a, b)`` (sympy's canonical order), by
+    :meth:`Intermediate.compare` when ``a`` is an intermediate."""
+    return a.compare(b) if isinstance(a, Intermediate) else sp.Basic.compare(a, b)
+
+
+_BY_COMPARE = functools.cmp_to_key(_compare)
 
 
 def _plain_factor(a: Any) -> bool:
