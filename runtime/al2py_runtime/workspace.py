@@ -391,7 +391,13 @@ class Workspace(Mapping):
             current = sp.zeros(*_shape_for(key.index))
         elif not isinstance(current, sp.MatrixBase):
             raise ValueError(f"{key.name} is not a matrix")
-        current = sp.Matrix(current)
+        # A new matrix each time (a value handed out earlier never changes);
+        # a mutable one copies its entries as they are (no conversion).
+        current = (
+            current.copy()
+            if isinstance(current, sp.MutableDenseMatrix)
+            else sp.Matrix(current)
+        )
         if len(key.index) == 1:
             (i,) = key.index
             if current.cols == 1 or current.rows == 0:
