@@ -116,7 +116,7 @@ class Intermediate(sp.Function):
         if self is other:
             return 0
         if type(other) is type(self):
-            a, b = self._args, other._args
+            a, b = self.args, other.args
             if len(a) != len(b):
                 return 1 if len(a) > len(b) else -1
             pa, pb = a[0].p, b[0].p
