@@ -192,3 +192,42 @@ def test_linear_splits_by_the_books_walk_are_sympys():
     slow = split_linear_named(eqs, speeds)
     assert fast[0] == slow[0] and fast[1] == slow[1]
     assert any(x != 0 for x in fast[0])
+
+
+def test_cross_products_and_inertia_matrices_are_sympys():
+    """``kinematics.cross`` and ``kinematics.dyadic_matrix`` give sympy's
+    own expressions (``a ^ b``, ``d.to_matrix(F)``), entry for entry."""
+    from al2py_runtime.model.kinematics import cross, dyadic_matrix
+    from sympy.physics.vector import ReferenceFrame, Vector, outer
+
+    n = ReferenceFrame("N")
+    a = n.orientnew("A", "Axis", [Q[0], n.z])
+    b = a.orientnew("B", "Axis", [Q[1], a.x])
+    rng = random.Random(7)
+    frames = [n, a, b]
+    pool = [*Q, *U, *C, sp.cos(Q[2]), U[0] * Q[1]]
+
+    def vector():
+        out = Vector(0)
+        for _ in range(rng.randint(0, 3)):
+            f = rng.choice(frames)
+            out += rng.choice(pool) * rng.choice([f.x, f.y, f.z])
+        return out
+
+    for _ in range(60):
+        v, w = vector(), vector()
+        mine, sympys = cross(v, w), v ^ w
+        assert len(mine.args) == len(sympys.args)
+        for (m1, f1), (m2, f2) in zip(mine.args, sympys.args, strict=True):
+            assert f1 == f2 and list(m1) == list(m2)
+    for _ in range(30):
+        f = rng.choice(frames)
+        d = sum(
+            (
+                rng.choice(pool)
+                * outer(rng.choice([f.x, f.y, f.z]), rng.choice([f.x, f.y, f.z]))
+                for _ in range(rng.randint(1, 5))
+            ),
+            outer(f.x, f.x) * 0,
+        )
+        assert list(dyadic_matrix(d, f)) == list(d.to_matrix(f))

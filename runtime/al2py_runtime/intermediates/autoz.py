@@ -397,15 +397,14 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
-#: the order of a product's factors (``Mul.flatten`` sorts by it)
-
-
 def _compare(a: Any, b: Any) -> int:
     """``Basic.compare(a, b)`` (sympy's canonical order), by
     :meth:`Intermediate.compare` when ``a`` is an intermediate."""
     return a.compare(b) if isinstance(a, Intermediate) else sp.Basic.compare(a, b)
 
 
+#: the order of a product's factors and of a sum's terms (``Mul.flatten``
+#: and ``Add.flatten`` sort by it)
 _BY_COMPARE = functools.cmp_to_key(_compare)
 
 
@@ -813,11 +812,9 @@ class Intermediates:
             monomials = {monom for _, (_, monom, _) in terms}
             if len(monomials) != len(terms):
                 return sp.default_sort_key(x)
+            # as_ordered_terms: the largest monomial (lexicographic) first
             ordered = [
-                term
-                for term, (_, monom, _) in sorted(
-                    terms, key=lambda t: t[1][1], reverse=True
-                )
+                term for term, _ in sorted(terms, key=lambda t: t[1][1], reverse=True)
             ]
         elif expr.is_Mul and expr.is_commutative:
             ordered = sorted(expr.args, key=self._sort_key)
