@@ -231,3 +231,30 @@ def test_cross_products_and_inertia_matrices_are_sympys():
             outer(f.x, f.x) * 0,
         )
         assert list(dyadic_matrix(d, f)) == list(d.to_matrix(f))
+
+
+def test_the_chain_rules_sums_are_sympys():
+    """``autoz.total`` (the sums of ``Intermediates._pd``) is ``sp.Add``:
+    like terms collected, cancelled terms dropped, the number first, the
+    rest in sympy's order; what it does not take goes to sympy."""
+    from al2py_runtime.intermediates.autoz import total
+
+    book, _ = _book_and_exprs()
+    rng = random.Random(3)
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    pool = [*Q, *U, *C, *zs[:10], sp.cos(Q[0]), U[0].diff(T), Q[1] ** 2, 1 / C[0]]
+    coefficients = [1, -1, 2, sp.Rational(1, 3), sp.Float(0.5), sp.sqrt(2), sp.pi]
+    for _ in range(1500):
+        terms = []
+        for _ in range(rng.randint(0, 6)):
+            if rng.random() < 0.15:
+                terms.append(sp.sympify(rng.choice(coefficients)))
+            else:
+                factors = rng.sample(pool, rng.randint(1, 3))
+                terms.append(rng.choice(coefficients) * sp.Mul(*factors))
+        if terms and rng.random() < 0.3:
+            terms.append(-terms[0])
+        if rng.random() < 0.05:
+            terms.append(sp.oo)
+        mine, sympys = total(terms), sp.Add(*terms)
+        assert type(mine) is type(sympys) and mine.args == sympys.args, terms

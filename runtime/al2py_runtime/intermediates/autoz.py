@@ -495,6 +495,61 @@ def minus(expr: Any) -> Any:
     return sp.Add._from_args(terms)
 
 
+def total(terms: Sequence[Any]) -> Any:
+    """``sp.Add(*terms)``, as ``Add.flatten`` makes it, for the sums of the
+    chain rule: finite numbers, and products or other terms that are not
+    sums (a number's power, an ``Order``, a non-commutative term or one that
+    is not an ``Expr`` go to sympy).  Like terms are collected by their
+    coefficients, zeros dropped, the rest sorted by ``Basic.compare`` with
+    the number first, as sympy does, without sympy's general case."""
+    if not _evaluating():
+        return sp.Add(*terms)
+    number = sp.S.Zero
+    collected: dict[Any, Any] = {}
+    for o in terms:
+        if o.is_Number:
+            if not o.is_finite:
+                return sp.Add(*terms)
+            number += o
+            continue
+        if o.is_Add or o.is_Order or not isinstance(o, sp.Expr) or not o.is_commutative:
+            return sp.Add(*terms)
+        if o.is_Mul and o.args[0].is_Number:
+            c = o.args[0]
+            if not c.is_finite:
+                return sp.Add(*terms)
+            rest = o.args[1:]
+            key = rest[0] if len(rest) == 1 else sp.Mul._from_args(rest)
+        elif o.is_Pow and o.base.is_Number:
+            return sp.Add(*terms)
+        else:
+            c, key = sp.S.One, o
+        found = collected.get(key)
+        collected[key] = c if found is None else found + c
+    out = []
+    for key, c in collected.items():
+        if c.is_zero:
+            continue
+        if c is sp.S.One:
+            out.append(key)
+        elif key.is_Mul:
+            out.append(sp.Mul._from_args((c, *key.args)))
+        else:
+            out.append(sp.Mul(c, key))
+    out.sort(key=_BY_COMPARE)
+    if number is not sp.S.Zero:
+        out.insert(0, number)
+    if not out:
+        return sp.S.Zero
+    return out[0] if len(out) == 1 else sp.Add._from_args(out)
+
+
+def _evaluating() -> bool:
+    from sympy.core.parameters import global_parameters
+
+    return bool(global_parameters.evaluate)
+
+
 def has_intermediates(expr: Any) -> bool:
     """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
     try:
@@ -1096,15 +1151,15 @@ class Intermediates:
                 j = e.book.position(e, x)
                 out = sp.S.Zero if j is None else e.book.partial(e, j)
             else:
-                out = sp.Add(
-                    *[
+                out = total(
+                    [
                         e.book.partial(e, j) * d
                         for j, a in enumerate(args)
                         if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
                     ]
                 )
         elif e.is_Add:
-            out = sp.Add(*[self._pd(a, x, memo, given, rate) for a in e.args])
+            out = total([self._pd(a, x, memo, given, rate) for a in e.args])
         elif e.is_Mul:
             args = e.args
             terms = []
@@ -1112,13 +1167,13 @@ class Intermediates:
                 d = self._pd(a, x, memo, given, rate)
                 if d is not _ZERO:
                     terms.append(product_with(args, i, d))
-            out = sp.Add(*terms)
+            out = total(terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given, rate)
             out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
-            out = sp.Add(
-                *[
+            out = total(
+                [
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
                     if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
