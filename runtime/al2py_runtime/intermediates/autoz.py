@@ -1220,15 +1220,15 @@ class Intermediates:
             d = self.time_derivative(e.book.definition(e), rate, memo)
             out = self.name(d)
         elif e.is_Add:
-            out = sp.Add(*[self.time_derivative(a, rate, memo) for a in e.args])
+            out = total([self.time_derivative(a, rate, memo) for a in e.args])
         elif e.is_Mul:
             args = e.args
             terms = []
             for i, a in enumerate(args):
                 d = self.time_derivative(a, rate, memo)
                 if d is not _ZERO:
-                    terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
-            out = sp.Add(*terms)
+                    terms.append(product_with(args, i, d))
+            out = total(terms)
         elif e.is_Pow and not e.exp.has(_T):
             d = self.time_derivative(e.base, rate, memo)
             out = sp.S.Zero if d is _ZERO else e.exp * e.base ** (e.exp - 1) * d
@@ -1237,8 +1237,8 @@ class Intermediates:
         elif isinstance(e, sp.cos):
             out = -sp.sin(e.args[0]) * self.time_derivative(e.args[0], rate, memo)
         elif isinstance(e, sp.Function) and not isinstance(e, sp.Derivative):
-            out = sp.Add(
-                *[
+            out = total(
+                [
                     e.fdiff(i + 1) * d
                     for i, a in enumerate(e.args)
                     if (d := self.time_derivative(a, rate, memo)) is not _ZERO
