@@ -408,6 +408,12 @@ def _compare(a: Any, b: Any) -> int:
 _BY_COMPARE = functools.cmp_to_key(_compare)
 
 
+def _product(args: Sequence[Any]) -> Any:
+    """A product of commutative arguments already in sympy's canonical form
+    and order (``Mul._from_args``, told they commute)."""
+    return sp.Mul._from_args(args, is_commutative=True)
+
+
 def _plain_factor(a: Any) -> bool:
     """A factor that ``Mul.flatten`` only sorts (given that no other factor
     has its base): not a number, not a power of a number, not ``exp``."""
@@ -462,7 +468,7 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         new.insert(0, coeff)
     if len(new) == 1:
         return new[0]
-    return sp.Mul._from_args(new)  # these arguments as they are
+    return sp.Mul._from_args(new, is_commutative=True)  # these arguments as they are
 
 
 def minus(expr: Any) -> Any:
@@ -486,13 +492,13 @@ def minus(expr: Any) -> Any:
         if not term.is_commutative or any(r.is_Add or r.is_Number for r in rest):
             return -expr
         if c is sp.S.One:
-            terms.append(rest[0] if len(rest) == 1 else sp.Mul._from_args(rest))
+            terms.append(rest[0] if len(rest) == 1 else _product(rest))
         else:
-            terms.append(sp.Mul._from_args((c, *rest)))
+            terms.append(_product((c, *rest)))
     terms.sort(key=_BY_COMPARE)
     if number is not None:
         terms.insert(0, number)
-    return sp.Add._from_args(terms)
+    return sp.Add._from_args(terms, is_commutative=True)
 
 
 def total(terms: Sequence[Any]) -> Any:
@@ -519,7 +525,7 @@ def total(terms: Sequence[Any]) -> Any:
             if not c.is_finite:
                 return sp.Add(*terms)
             rest = o.args[1:]
-            key = rest[0] if len(rest) == 1 else sp.Mul._from_args(rest)
+            key = rest[0] if len(rest) == 1 else _product(rest)
         elif o.is_Pow and o.base.is_Number:
             return sp.Add(*terms)
         else:
@@ -533,7 +539,7 @@ def total(terms: Sequence[Any]) -> Any:
         if c is sp.S.One:
             out.append(key)
         elif key.is_Mul:
-            out.append(sp.Mul._from_args((c, *key.args)))
+            out.append(_product((c, *key.args)))
         else:
             out.append(sp.Mul(c, key))
     out.sort(key=_BY_COMPARE)
@@ -541,7 +547,7 @@ def total(terms: Sequence[Any]) -> Any:
         out.insert(0, number)
     if not out:
         return sp.S.Zero
-    return out[0] if len(out) == 1 else sp.Add._from_args(out)
+    return out[0] if len(out) == 1 else sp.Add._from_args(out, is_commutative=True)
 
 
 def _evaluating() -> bool:
