@@ -158,7 +158,21 @@ def test_the_chain_rules_products_are_sympys():
         sp.Mul(C[2], zs[6] + zs[7], zs[8]),
         sp.Mul(sp.Float(1.5), zs[0], zs[1]),
     ]
+    products += [
+        sp.Mul(zs[0], Q[0] ** 2, sp.cos(Q[1])),
+        sp.Mul(-2, zs[1] + zs[2], C[0]),
+        sp.Mul(zs[3] + C[1], zs[4] + C[2]),
+        sp.Mul(sp.Rational(1, 2), Q[2], 1 / C[3]),
+    ]
     ds = [zs[0], zs[3], -zs[9], 3 * zs[4], zs[10], sp.Integer(2), C[3] * zs[2]]
+    ds += [sp.S.One, sp.Integer(-1), sp.Rational(1, 3), sp.sin(Q[0]), -sp.cos(Q[1])]
+    ds += [
+        2 * sp.sin(Q[2]) * zs[5],
+        Q[0],
+        2 * Q[0] * C[4],
+        C[0] + zs[1],
+        sp.Float(0.5) * Q[1],
+    ]
     for p in products:
         if not p.is_Mul:
             continue
@@ -254,6 +268,9 @@ def test_the_chain_rules_sums_are_sympys():
                 terms.append(rng.choice(coefficients) * sp.Mul(*factors))
         if terms and rng.random() < 0.3:
             terms.append(-terms[0])
+        if rng.random() < 0.3:  # a sum among the terms (the chain rule's)
+            parts = rng.sample(pool, 2)
+            terms.insert(0, parts[0] * sp.Float(0.1) + parts[1] + sp.Float(0.2))
         if rng.random() < 0.05:
             terms.append(sp.oo)
         mine, sympys = total(terms), sp.Add(*terms)

@@ -429,24 +429,29 @@ def _plain_factor(a: Any) -> bool:
 
 def product_with(args: tuple, i: int, d: Any) -> Any:
     """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
-    product's (canonical) arguments and ``d`` an intermediate, or a
-    rational times one (a derivative by the chain rule).
+    product's (canonical) arguments and ``d`` the derivative of factor
+    ``i`` by the chain rule: a rational number, an intermediate, another
+    plain factor (``sin(q)``), or a rational times plain factors.
 
     sympy's ``Mul.flatten`` then only multiplies the rational coefficients
-    and sorts the intermediate in among the other factors (by
-    ``Basic.compare``), when no other factor is a number or a power of
-    one, and none has the intermediate as its base: that is done here
-    directly.  Otherwise (or for any other ``d``) sympy forms the
-    product."""
+    and sorts the factors (by ``Basic.compare``), when no factor is a
+    number or a power of one and no two share a base (they would combine
+    into a power), and the result is not a number times one sum (sympy
+    distributes it): that is done here directly.  Otherwise (or for any
+    other ``d``) sympy forms the product."""
     if isinstance(d, Intermediate):
-        n, z = sp.S.One, d
-    elif (
-        d.is_Mul
-        and len(d.args) == 2
-        and d.args[0].is_Rational
-        and isinstance(d.args[1], Intermediate)
-    ):
-        n, z = d.args
+        n, new_factors = sp.S.One, (d,)
+    elif d.is_Rational:
+        n, new_factors = d, ()
+    elif d.is_Mul and d.is_commutative:
+        if d.args[0].is_Rational:
+            n, new_factors = d.args[0], d.args[1:]
+        elif d.args[0].is_Number:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])
+        else:
+            n, new_factors = sp.S.One, d.args
+    elif d.is_commutative and not d.is_Add and not d.is_Number:
+        n, new_factors = sp.S.One, (d,)
     else:
         return sp.Mul(*args[:i], d, *args[i + 1 :])
     others = args[:i] + args[i + 1 :]
@@ -456,19 +461,31 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
             return sp.Mul(*args[:i], d, *args[i + 1 :])
     else:
         c, factors = sp.S.One, others
-    if not z.is_commutative:
-        return sp.Mul(*args[:i], d, *args[i + 1 :])
-    for a in factors:
-        if not _plain_factor(a) or a.as_base_exp()[0] == z:
+    bases = set()
+    for a in (*factors, *new_factors):
+        base = a.as_base_exp()[0]
+        if not _plain_factor(a) or base in bases:
             return sp.Mul(*args[:i], d, *args[i + 1 :])
+        bases.add(base)
     coeff = c * n
-    k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
-    new = [*factors[:k], z, *factors[k:]]
+    if coeff is sp.S.Zero:
+        return sp.S.Zero
+    if len(factors) + len(new_factors) == 1 and (*factors, *new_factors)[0].is_Add:
+        if coeff is not sp.S.One:
+            return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
+    if len(new_factors) == 1:
+        z = new_factors[0]
+        k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
+        new = [*factors[:k], z, *factors[k:]]
+    else:
+        new = sorted((*factors, *new_factors), key=_BY_COMPARE)
     if coeff is not sp.S.One:
         new.insert(0, coeff)
+    if not new:
+        return sp.S.One
     if len(new) == 1:
         return new[0]
-    return sp.Mul._from_args(new, is_commutative=True)  # these arguments as they are
+    return _product(new)  # these arguments as they are
 
 
 def minus(expr: Any) -> Any:
@@ -512,13 +529,17 @@ def total(terms: Sequence[Any]) -> Any:
         return sp.Add(*terms)
     number = sp.S.Zero
     collected: dict[Any, Any] = {}
-    for o in terms:
+    seq = list(terms)
+    for o in seq:  # a sum's terms join the end, as in Add.flatten
+        if o.is_Add and o.is_commutative:
+            seq.extend(o.args)
+            continue
         if o.is_Number:
             if not o.is_finite:
                 return sp.Add(*terms)
             number += o
             continue
-        if o.is_Add or o.is_Order or not isinstance(o, sp.Expr) or not o.is_commutative:
+        if o.is_Order or not isinstance(o, sp.Expr) or not o.is_commutative:
             return sp.Add(*terms)
         if o.is_Mul and o.args[0].is_Number:
             c = o.args[0]
