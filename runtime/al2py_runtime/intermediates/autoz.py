@@ -676,7 +676,7 @@ class Intermediates:
         if found is not None:
             return found
         if minus_first(expr, self._sort_key):
-            return -self._name(minus(expr), variables)
+            return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
 
     def _in_parts(self, expr: Any) -> tuple[Any, Any, Any]:
@@ -789,7 +789,13 @@ class Intermediates:
         return found
 
     def _canonical(self, z: Intermediate) -> bool:
-        return tuple(z.args[1:]) == self._vars[int(z.args[0])]
+        """Whether ``z`` is taken at its own variables (kept per instance:
+        neither changes)."""
+        found = z.__dict__.get("_canonical")
+        if found is None:
+            found = tuple(z.args[1:]) == self._vars[int(z.args[0])]
+            z.__dict__["_canonical"] = found
+        return found
 
     def _scan(self, expr: Any) -> tuple[set, set, list]:
         """One walk over ``expr``: the variables it depends on (derivatives,
@@ -1086,8 +1092,8 @@ class Intermediates:
             x = self._vars[k][j]
             found = self.name(self._pd(self._defs[k], x, {}))
             self._partials[key] = found
-        args = tuple(z.args[1:])
-        if args != self._vars[k]:
+        if not self._canonical(z):
+            args = tuple(z.args[1:])
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
         return found
 
