@@ -23,7 +23,9 @@ A + 7*B
 from __future__ import annotations
 
 import functools
+import gc
 import sys
+import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import replace
 from typing import Any
@@ -65,6 +67,11 @@ class Workspace(Mapping):
         #: a progress line while a long import derives (stopped by names())
         self._watch = ImportWatch(filename, frame if generated else None)
         self._watch.start()
+        #: while a generated module derives, the cyclic garbage collector runs
+        #: less often (sympy's expressions are trees: its passes over
+        #: millions of new objects find nothing, and took a tenth of a
+        #: bicycle's import); names() or the workspace's end restores it
+        self._collector = _DerivingCollector() if generated else None
         self.settings = Settings()
         self.responses: list[Response] = []
         #: the script's names (:class:`~.names.table.NameTable`)
@@ -573,6 +580,8 @@ class Workspace(Mapping):
         """A read-only, case-insensitive view: Autolev name -> current value
         (a generated module asks for it last: its derivation is done)."""
         self._watch.stop()
+        if self._collector is not None:
+            self._collector.restore()
         return AutolevNames(self)
 
     def name_of(self, obj: Any) -> str:
@@ -1008,6 +1017,26 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
         return e
 
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
+
+
+class _DerivingCollector:
+    """The garbage collector's thresholds raised while a module derives
+    (``gc.set_threshold``), and put back by :meth:`restore`, or when the
+    workspace goes (an import that failed)."""
+
+    #: collect the youngest generation after this many new objects (700 by
+    #: default), the oldest hardly ever while deriving
+    THRESHOLDS = (100_000, 50, 1000)
+
+    def __init__(self) -> None:
+        self._saved = gc.get_threshold()
+        gc.set_threshold(
+            *(max(a, b) for a, b in zip(self._saved, self.THRESHOLDS, strict=True))
+        )
+        self._finalizer = weakref.finalize(self, gc.set_threshold, *self._saved)
+
+    def restore(self) -> None:
+        self._finalizer()  # runs once
 
 
 def _is_vectorial(value: Any) -> bool:
