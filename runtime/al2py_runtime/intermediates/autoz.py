@@ -45,6 +45,7 @@ import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
 from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
+from sympy.core.parameters import global_parameters
 from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
@@ -525,7 +526,7 @@ def total(terms: Sequence[Any]) -> Any:
     is not an ``Expr`` go to sympy).  Like terms are collected by their
     coefficients, zeros dropped, the rest sorted by ``Basic.compare`` with
     the number first, as sympy does, without sympy's general case."""
-    if not _evaluating():
+    if not global_parameters.evaluate:
         return sp.Add(*terms)
     number = sp.S.Zero
     collected: dict[Any, Any] = {}
@@ -569,12 +570,6 @@ def total(terms: Sequence[Any]) -> Any:
     if not out:
         return sp.S.Zero
     return out[0] if len(out) == 1 else sp.Add._from_args(out, is_commutative=True)
-
-
-def _evaluating() -> bool:
-    from sympy.core.parameters import global_parameters
-
-    return bool(global_parameters.evaluate)
 
 
 def has_intermediates(expr: Any) -> bool:

@@ -133,11 +133,11 @@ def cross(a: Vector, b: Vector) -> Vector:
         return Vector(0)
     out = []
     for m, f in b.args:
+        parts = [(f.dcm(f1), m1) for m1, f1 in a.args]  # each frame's once
         w = []
         for k in range(3):
             total = sp.S.Zero
-            for m1, f1 in a.args:
-                d = f.dcm(f1)
+            for d, m1 in parts:
                 total += sp.Add(*[d[k, j] * m1[j] for j in range(3)])
             w.append(total)
         out.append(
