@@ -573,11 +573,13 @@ def total(terms: Sequence[Any]) -> Any:
 
 
 def has_intermediates(expr: Any) -> bool:
-    """True if ``expr`` (a sympy object, matrix or vector) holds intermediates."""
+    """True if ``expr`` (a sympy object, matrix or vector) holds intermediates
+    (:func:`book_of`'s walk: each distinct part once)."""
     try:
-        return bool(sp.sympify(expr).atoms(Intermediate))
+        expr = sp.sympify(expr)
     except (sp.SympifyError, AttributeError, TypeError):
         return False
+    return book_of(expr) is not None
 
 
 def book_of(*exprs: Any) -> Intermediates | None:
