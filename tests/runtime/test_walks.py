@@ -275,3 +275,43 @@ def test_the_chain_rules_sums_are_sympys():
             terms.append(sp.oo)
         mine, sympys = total(terms), sp.Add(*terms)
         assert type(mine) is type(sympys) and mine.args == sympys.args, terms
+
+
+def test_the_canonical_order_is_sympys():
+    """``autoz._compare`` (the order in which the chain rule's sums and
+    products are sorted) answers as ``Basic.compare`` for every pair of
+    parts: numbers, symbols with assumptions, functions of time, their
+    derivatives, intermediates (canonical or not), powers, sums, products,
+    classes named in ``ordering_of_classes`` and classes that are not."""
+    from al2py_runtime.intermediates.autoz import _compare
+
+    book, exprs = _book_and_exprs()
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    other = Intermediates()
+    extra = [
+        zs[0].xreplace({Q[0]: Q[1]}),
+        other.name(Q[0] * sp.cos(Q[1]) + U[0] * U[1]),
+        sp.Symbol("c1", positive=True),
+        sp.Dummy("c1"),
+        sp.Float(0.5),
+        sp.Float(0.5, 30),
+        sp.Rational(-3, 4),
+        sp.pi,
+        sp.sqrt(2),
+        sp.exp(Q[0]),
+        sp.Abs(C[0]),
+        sp.FiniteSet(1, 2),
+        sp.Tuple(1, C[0]),
+        Q[0].diff(T, 2),
+        sp.Derivative(U[0], T),
+    ]
+    parts = set(extra)
+    for e in exprs:
+        parts.update(p for p in sp.preorder_traversal(e) if isinstance(p, sp.Basic))
+    parts = sorted(parts, key=sp.default_sort_key)
+    rng = random.Random(5)
+    pairs = [(a, b) for a in parts for b in parts]
+    rng.shuffle(pairs)
+    for a, b in pairs[:40000]:
+        assert _compare(a, b) == sp.Basic.compare(a, b), (a, b)
+    assert len(pairs) > 40000

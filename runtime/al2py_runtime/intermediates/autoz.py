@@ -43,6 +43,7 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.assumptions import StdFactKB, _assume_defined
+from sympy.core.basic import ordering_of_classes
 from sympy.core.exprtools import decompose_power
 from sympy.core.function import AppliedUndef
 from sympy.core.parameters import global_parameters
@@ -110,20 +111,11 @@ class Intermediate(sp.Function):
         return self.book.label(self)
 
     def compare(self, other: Any) -> int:
-        """``Basic.compare``, decided by the numbers for two intermediates
-        of one book with as many arguments (sympy compares the arguments in
-        turn, the number first), which is most of the cost of sorting the
-        factors and terms of large models' sums and products."""
-        if self is other:
-            return 0
-        if type(other) is type(self):
-            a, b = self.args, other.args
-            if len(a) != len(b):
-                return 1 if len(a) > len(b) else -1
-            pa, pb = a[0].p, b[0].p
-            if pa != pb:
-                return 1 if pa > pb else -1
-        return sp.Basic.compare(self, other)
+        """``Basic.compare`` (:func:`_compare`: two intermediates of one book
+        with as many arguments are decided by their numbers, which is most
+        of the cost of sorting the factors and terms of large models' sums
+        and products)."""
+        return _compare(self, other)
 
     def _latex(self, printer: Any) -> str:
         label = self.book.label(self)
@@ -399,9 +391,66 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
 
 
 def _compare(a: Any, b: Any) -> int:
-    """``Basic.compare(a, b)`` (sympy's canonical order), by
-    :meth:`Intermediate.compare` when ``a`` is an intermediate."""
-    return a.compare(b) if isinstance(a, Intermediate) else sp.Basic.compare(a, b)
+    """``Basic.compare(a, b)`` (sympy's canonical order), the same steps
+    without sympy's overheads: a class's place in ``ordering_of_classes``
+    is looked up once per class name (sympy searches the list on every
+    comparison of two classes), two intermediates of one book are decided
+    by their numbers (:meth:`Intermediate.compare`), and parts are compared
+    by this function unless their class defines a ``compare`` of its own
+    (sympy then calls that, as ``Basic.compare`` does)."""
+    if a is b:
+        return 0
+    ta, tb = type(a), type(b)
+    if ta is not tb:
+        na, nb = ta.__name__, tb.__name__
+        if na != nb:
+            if not isinstance(b, sp.Basic):
+                return -1
+            return 1 if _class_place(na) > _class_place(nb) else -1
+    elif ta.compare is _Z_COMPARE:
+        x, y = a._args, b._args
+        if len(x) != len(y):
+            return 1 if len(x) > len(y) else -1
+        if x[0].p != y[0].p:
+            return 1 if x[0].p > y[0].p else -1
+    st, ot = a._hashable_content(), b._hashable_content()
+    if len(st) != len(ot):
+        return 1 if len(st) > len(ot) else -1
+    for left, right in zip(st, ot, strict=True):
+        if left is right:
+            continue
+        if isinstance(left, sp.Basic):
+            own = type(left).compare
+            if own is _BASIC_COMPARE or own is _Z_COMPARE:
+                c = _compare(left, right)
+            else:
+                c = left.compare(right)
+        elif isinstance(left, frozenset):
+            other = sp.Basic(*right) if isinstance(right, frozenset) else right
+            c = sp.Basic(*left).compare(other)
+        else:
+            c = (left > right) - (left < right)
+        if c:
+            return c
+    return 0
+
+
+_BASIC_COMPARE = sp.Basic.compare
+_Z_COMPARE = Intermediate.compare
+#: class name -> its place in sympy's ``ordering_of_classes`` (``_cmp_name``):
+#: (index, "") for a listed name, (after the list, name) for another
+_PLACES: dict[str, tuple[int, str]] = {}
+
+
+def _class_place(name: str) -> tuple[int, str]:
+    found = _PLACES.get(name)
+    if found is None:
+        try:
+            found = (ordering_of_classes.index(name), "")
+        except ValueError:
+            found = (len(ordering_of_classes) + 1, name)
+        _PLACES[name] = found
+    return found
 
 
 #: the order of a product's factors and of a sum's terms (``Mul.flatten``
