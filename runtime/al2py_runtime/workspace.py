@@ -42,6 +42,7 @@ from .model.model import MODEL_COMMANDS, Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
 from .names.table import Entry, NameTable
+from .names.variables import time_function
 from .progress import ImportWatch
 from .safety import guard_methods
 from .safety import register as register_module
@@ -173,7 +174,7 @@ class Workspace(Mapping):
         for spec in names:
             base = spec.rstrip("'")
             order = len(spec) - len(base)
-            func = dynamicsymbols(base.upper(), **self._assumptions(None))
+            func = time_function(base.upper(), **self._assumptions(None))
             out.append(self.table.declare(base, kind, func, order=order, line=line))
         return one_or_tuple(out)
 

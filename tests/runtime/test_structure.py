@@ -66,6 +66,10 @@ FOREIGN = {
     " to sympy's constructors)",
     "_parse_order": "sympy Expr: the term order of as_ordered_terms"
     " (autoz.minus_first decides a sum's sign as could_extract_minus_sign)",
+    "_hashable_content": "sympy Basic: what Basic.compare orders by"
+    " (autoz._compare, tested equal to Basic.compare)",
+    "_kwargs": "sympy UndefinedFunction: the assumptions its __eq__ compares"
+    " (names.variables.TimeFunction, equal to dynamicsymbols' functions)",
 }
 
 

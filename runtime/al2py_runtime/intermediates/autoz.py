@@ -408,7 +408,7 @@ def _compare(a: Any, b: Any) -> int:
                 return -1
             return 1 if _class_place(na) > _class_place(nb) else -1
     elif ta.compare is _Z_COMPARE:
-        x, y = a._args, b._args
+        x, y = a.args, b.args
         if len(x) != len(y):
             return 1 if len(x) > len(y) else -1
         if x[0].p != y[0].p:

@@ -8,13 +8,9 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
-from sympy.physics.vector import (
-    Point,
-    ReferenceFrame,
-    Vector,
-    dynamicsymbols,
-)
+from sympy.physics.vector import Point, ReferenceFrame, Vector
 
+from ..names.variables import time_function
 from . import kinematics as kin
 from .state import command, t
 
@@ -148,7 +144,7 @@ class Energy:
         while name in self.ws.table.entries:
             k += 1
             name = f"NICHECK_WORK{k}"
-        work = dynamicsymbols(name, real=True)
+        work = time_function(name, real=True)
         self.registry.checks.append(work)
         self.ws.table.declare(name, "variable", work, order=1)
         self.ws.table.rhs[sp.Derivative(work, t)] = self.power()

@@ -4,4 +4,5 @@
 * :mod:`.settings` -- ``AutoRHS``, ``Digits``... and the :class:`Response` record
 * :mod:`.printing` -- values printed in Autolev's syntax
 * :mod:`.transcript` -- the numbered transcript of a script's responses
+* :mod:`.variables` -- functions of time for ``Variables`` and ``Specified``
 """

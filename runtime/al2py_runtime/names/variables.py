@@ -1,0 +1,70 @@
+"""Functions of time for a script's ``Variables`` and ``Specified``: what
+sympy's ``dynamicsymbols`` makes, with the function's hash kept.
+
+sympy's cache keys every cached call by its arguments and their classes,
+and the class of a function of time (``Q1`` in ``Q1(t)``) computes its hash
+from its class key on every call.  A large model makes tens of thousands of
+such calls while it derives, so the class here keeps its hash.  It is equal
+to, and hashes as, the function ``dynamicsymbols`` makes with the same name
+and assumptions, either way round:
+
+>>> from sympy.physics.mechanics import dynamicsymbols
+>>> q = time_function("Q1", real=True)
+>>> q == dynamicsymbols("Q1", real=True), hash(q) == hash(dynamicsymbols("Q1", real=True))
+(True, True)
+>>> dynamicsymbols("Q1", real=True) == q, q.diff(dynamicsymbols._t)
+(True, Derivative(Q1(t), t))
+>>> q == dynamicsymbols("Q1")  # other assumptions: another function
+False
+"""
+
+from __future__ import annotations
+
+import copyreg
+from typing import Any
+
+from sympy.core.function import UndefinedFunction
+from sympy.physics.vector import dynamicsymbols
+
+__all__ = ["TimeFunction", "time_function"]
+
+
+class TimeFunction(UndefinedFunction):
+    """sympy's ``UndefinedFunction`` whose hash is found once, at creation
+    (it depends only on the name, the number of arguments and the
+    assumptions, which do not change)."""
+
+    def __new__(mcl, name: str, **assumptions: Any) -> Any:
+        cls = super().__new__(mcl, name, **assumptions)
+        cls._al2py_hash = UndefinedFunction.__hash__(cls)
+        return cls
+
+    def __hash__(cls) -> int:
+        return cls._al2py_hash
+
+    def __eq__(cls, other: object) -> bool:
+        # sympy's test, accepting any undefined function (sympy's own asks
+        # for an instance of the other's metaclass, which would make a
+        # function made by dynamicsymbols unequal to this one)
+        return cls is other or (
+            isinstance(other, UndefinedFunction)
+            and cls.class_key() == other.class_key()
+            and cls._kwargs == other._kwargs
+        )
+
+    def __ne__(cls, other: object) -> bool:
+        return not cls == other
+
+
+def _rebuild(name: str, assumptions: dict) -> TimeFunction:
+    return TimeFunction(name, **assumptions)
+
+
+# A class made at run time pickles by value through copyreg, as sympy's
+# undefined functions do (its table is looked up by the exact metaclass).
+copyreg.pickle(TimeFunction, lambda f: (_rebuild, (f.name, f._kwargs)))
+
+
+def time_function(name: str, **assumptions: Any) -> Any:
+    """``dynamicsymbols(name, **assumptions)``: ``name(t)``."""
+    return TimeFunction(name, **assumptions)(dynamicsymbols._t)
