@@ -656,7 +656,8 @@ class Intermediates:
         self._vars: list[tuple[Any, ...]] = [()]  # k -> canonical variables
         self._dvars: list[tuple[Any, ...]] = [()]  # k -> the derivatives among them
         self._varsets: list[frozenset] = [frozenset()]  # k -> its variables, a set
-        self._orders: dict[frozenset, tuple[Any, ...]] = {}  # variables, sorted
+        #: variables -> (sorted, as a set, the derivatives among them)
+        self._orders: dict[frozenset, tuple[tuple, frozenset, tuple]] = {}
         self._time_rates: dict[Any, Any] = {}  # variable -> its diff(t), or None
         self._values: dict[int, dict] = {}  # point -> part -> value (values_at)
         self._defs: list[Any] = [None]  # k -> definition (canonical variables)
@@ -750,7 +751,7 @@ class Intermediates:
             if found is not None:
                 return found
             original = split_from if split_from is not None else original
-        variables = self._ordered_variables(variables)
+        variables, varset, derivatives = self._shared_variables(variables)
         k = len(self._defs)
         while True:
             self._count += 1
@@ -759,8 +760,8 @@ class Intermediates:
                 break
         self._defs.append(expr)
         self._vars.append(variables)
-        self._dvars.append(tuple(a for a in variables if isinstance(a, sp.Derivative)))
-        self._varsets.append(frozenset(variables))
+        self._dvars.append(derivatives)
+        self._varsets.append(varset)
         self._labels.append(label)
         z = self._new_z(k, variables)
         self._named[expr] = z
@@ -884,15 +885,16 @@ class Intermediates:
                     stack.append(a)
         return variables, derivatives, bad
 
-    def _ordered_variables(self, variables: set) -> tuple[Any, ...]:
-        """``variables`` sorted by ``default_sort_key`` (many intermediates
-        share one set of variables: sorted once)."""
-        found_key = frozenset(variables)
-        found = self._orders.get(found_key)
+    def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
+        """``variables`` sorted by ``default_sort_key``, as a set, and the
+        derivatives among them: made once per set of variables and shared
+        by the intermediates over it (many are over one set)."""
+        key = frozenset(variables)
+        found = self._orders.get(key)
         if found is None:
-            found = self._orders[found_key] = tuple(
-                sorted(variables, key=self._sort_key)
-            )
+            ordered = tuple(sorted(variables, key=self._sort_key))
+            derivatives = tuple(a for a in ordered if isinstance(a, sp.Derivative))
+            found = self._orders[key] = (ordered, key, derivatives)
         return found
 
     def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
