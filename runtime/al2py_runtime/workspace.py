@@ -31,6 +31,7 @@ from dataclasses import replace
 from typing import Any
 
 import sympy as sp
+from sympy.core.cache import clear_cache
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
@@ -583,6 +584,10 @@ class Workspace(Mapping):
         self._watch.stop()
         if self._collector is not None:
             self._collector.restore()
+            # sympy's cache now holds the derivation's passing expressions
+            # (its least recently used calls): freed here rather than kept
+            # for the process's life, which also shortens its exit
+            clear_cache()
         return AutolevNames(self)
 
     def name_of(self, obj: Any) -> str:
