@@ -978,7 +978,7 @@ class Intermediates:
             if found is None:
                 found = self._rebased[z] = self.name(self.definition(z))
             rule[z] = found
-        return expr.xreplace(rule)
+        return xreplace(expr, rule)
 
     def _name_rates(self, expr: Any) -> Any:
         """:meth:`name`, and for an expression with derivatives that are not
@@ -1050,7 +1050,7 @@ class Intermediates:
         args = tuple(z.args[1:])
         if args == self._vars[k]:
             return body
-        return body.xreplace(dict(zip(self._vars[k], args, strict=True)))
+        return xreplace(body, dict(zip(self._vars[k], args, strict=True)))
 
     def is_real(self, z: Intermediate) -> bool | None:
         k = int(z.args[0])
