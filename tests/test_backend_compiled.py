@@ -117,12 +117,43 @@ def test_c_backend_is_cached_by_content(tmp_path):
     first = backends.compile_dynamics(spec, "c")
     again = backends.compile_dynamics(spec, "c")
     assert (first.cache_hit, again.cache_hit) == (False, True)
+    # the library, and the object of its one unit (kept, as every unit's is,
+    # so that a process that finds the library cached compiles nothing)
     files = list((tmp_path / "cache").iterdir())
-    assert len(files) == 1 and files[0].suffix in (".so", ".dll")
+    assert len(files) == 2 and {p.suffix for p in files} == {".o", backends._SUFFIX}
     # A different model is a different library.
     spec.forcing[0] += 1
     assert not backends.compile_dynamics(spec, "c").cache_hit
-    assert len(list((tmp_path / "cache").iterdir())) == 2
+    libraries = list((tmp_path / "cache").glob(f"*{backends._SUFFIX}"))
+    assert len(libraries) == 2 and len(list((tmp_path / "cache").iterdir())) == 4
+
+
+def test_a_stream_compiles_each_unit_as_it_comes(monkeypatch, tmp_path):
+    """The first unit (the right-hand side) compiles while the next is still
+    being printed; a second process with the library cached compiles
+    nothing."""
+    if backends.find_compiler() is None:
+        pytest.skip("no C compiler")
+    started = []
+    real = subprocess.Popen
+
+    def popen(cmd, *args, **kwargs):
+        started.append(cmd)
+        return real(cmd, *args, **kwargs)
+
+    monkeypatch.setattr(backends.subprocess, "Popen", popen)
+    asked = []
+
+    def units():
+        yield ("double al_f(double x) { return x; }\n", ("-O2",))
+        asked.append(len(started))
+        yield ("double al_g(double x) { return 2 * x; }\n", backends.OUT_FLAGS)
+
+    lib, hit = backends.build_stream(units())
+    assert asked == [1] and not hit and lib.exists()
+    compiles = len(started)
+    assert backends.build_stream(units()) == (lib, True)
+    assert len(started) == compiles  # nothing compiled the second time
 
 
 def test_cache_dir_is_the_user_cache(monkeypatch, tmp_path):
