@@ -164,6 +164,14 @@ def test_the_chain_rules_products_are_sympys():
         sp.Mul(zs[3] + C[1], zs[4] + C[2]),
         sp.Mul(sp.Rational(1, 2), Q[2], 1 / C[3]),
     ]
+    # factors sympy does more than sort: exp, non-commutative ones
+    noncommutative = [sp.Symbol("A", commutative=False)]
+    noncommutative.append(dynamicsymbols("p", commutative=False))
+    products += [
+        sp.Mul(zs[0], sp.exp(Q[0])),
+        sp.Mul(zs[1], noncommutative[0]),
+        sp.Mul(2, zs[2], noncommutative[1]),
+    ]
     ds = [zs[0], zs[3], -zs[9], 3 * zs[4], zs[10], sp.Integer(2), C[3] * zs[2]]
     ds += [sp.S.One, sp.Integer(-1), sp.Rational(1, 3), sp.sin(Q[0]), -sp.cos(Q[1])]
     ds += [
@@ -172,6 +180,9 @@ def test_the_chain_rules_products_are_sympys():
         2 * Q[0] * C[4],
         C[0] + zs[1],
         sp.Float(0.5) * Q[1],
+        sp.exp(Q[1]),
+        sp.pi * zs[0],
+        *noncommutative,
     ]
     for p in products:
         if not p.is_Mul:

@@ -464,17 +464,26 @@ def _product(args: Sequence[Any]) -> Any:
     return sp.Mul._from_args(args, is_commutative=True)
 
 
-def _plain_factor(a: Any) -> bool:
-    """A factor that ``Mul.flatten`` only sorts (given that no other factor
-    has its base): not a number, not a power of a number, not ``exp``."""
+def _plain_base(a: Any) -> Any:
+    """The base of ``a`` if ``a`` is a factor that ``Mul.flatten`` only
+    sorts (given that no other factor has its base): not a number, not a
+    power of a number, not ``exp``; else None.  An intermediate or a
+    function of time (most factors) is its own base."""
+    if isinstance(a, _PLAIN):
+        return a if a.is_commutative else None
     b = a.base if a.is_Pow else a
-    return not (
+    if (
         b.is_Number
         or b.is_NumberSymbol
         or b is sp.S.ImaginaryUnit
         or isinstance(a, sp.exp)
         or not a.is_commutative
-    )
+    ):
+        return None
+    return a.as_base_exp()[0]
+
+
+_PLAIN = (Intermediate, AppliedUndef)
 
 
 def product_with(args: tuple, i: int, d: Any) -> Any:
@@ -513,8 +522,8 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         c, factors = sp.S.One, others
     bases = set()
     for a in (*factors, *new_factors):
-        base = a.as_base_exp()[0]
-        if not _plain_factor(a) or base in bases:
+        base = _plain_base(a)
+        if base is None or base in bases:
             return sp.Mul(*args[:i], d, *args[i + 1 :])
         bases.add(base)
     coeff = c * n
