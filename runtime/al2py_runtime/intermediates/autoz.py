@@ -868,15 +868,14 @@ class Intermediates:
         while stack:
             e = stack.pop()
             if isinstance(e, Z):
-                args = e.args[1:]
-                k = int(e.args[0])
-                if args == self._vars[k]:
+                if self._canonical(e):  # kept per instance
+                    k = e.args[0].p
                     variables |= self._varsets[k]  # hashes kept: no sympy call
                     if self._dvars[k]:
                         derivatives.update(self._dvars[k])
                     continue
                 bad.append(e)
-                todo = args
+                todo = e.args[1:]
             elif isinstance(e, sp.Derivative):
                 variables.add(e)
                 derivatives.add(e)
