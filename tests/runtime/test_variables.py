@@ -53,3 +53,18 @@ def test_the_kept_hash_is_sympys():
         back == sp.sin(q) + 1
         and type(back.atoms(AppliedUndef).pop().func) is TimeFunction
     )
+
+
+def test_the_books_derivative_by_an_equal_function_of_time():
+    """``D(e, x)`` by a function of time made elsewhere (an equal class, not
+    the same object) is the derivative by the script's own."""
+    from al2py_runtime.intermediates.autoz import Intermediates
+
+    q, u = time_function("Q", real=True), time_function("U", real=True)
+    book = Intermediates()
+    e = book.name(sp.sin(q) * u + q**3 * u**2) * q + u
+    theirs = dynamicsymbols("Q", real=True)
+    assert theirs is not q and theirs.func is not q.func
+    by_theirs = book.expand(book.derivative(e, theirs))
+    assert sp.simplify(by_theirs - book.expand(e).diff(q)) == 0
+    assert by_theirs != 0

@@ -1216,9 +1216,14 @@ class Intermediates:
         a variable's is ``rate(variable)``, and an intermediate's goes
         through all of its arguments."""
         # ``e == x`` (x is a variable, so equal only with an equal type:
-        # functions of time made twice are equal classes, not one), without
-        # sympy's ``__eq__`` on every node walked.
-        if e is x or (type(e) == type(x) and e == x):  # noqa: E721
+        # functions of time made twice are equal classes, not one, and only
+        # a function of time's class compares equal to another), without
+        # sympy's ``__eq__`` on every node walked, nor the metaclass's.
+        if e is x or (
+            (type(e) is type(x) or isinstance(e, AppliedUndef))
+            and type(e) == type(x)  # noqa: E721
+            and e == x
+        ):
             return sp.S.One
         if e.is_Atom:
             return sp.S.Zero
