@@ -326,3 +326,20 @@ def test_the_canonical_order_is_sympys():
     for a, b in pairs[:40000]:
         assert _compare(a, b) == sp.Basic.compare(a, b), (a, b)
     assert len(pairs) > 40000
+
+
+def test_intermediates_by_name_are_in_the_keys_order():
+    """``_by_name`` (numbers first, the arguments' text only among instances
+    of one number) orders as sorting by the full key does, either way."""
+    book, _ = _book_and_exprs()
+    zs = [z for z in book._named.values() if isinstance(z, book.Z)]
+    others = [z.xreplace({Q[0]: Q[1], Q[1]: Q[0]}) for z in zs[:6]]
+    others += [z.xreplace({U[0]: C[0]}) for z in zs[:6]]
+    pool = zs + [z for z in others if z not in zs]
+    assert len({z.args[0] for z in pool}) < len(pool)  # instances share numbers
+    rng = random.Random(7)
+    for _ in range(20):
+        sample = rng.sample(pool, 25)
+        for reverse in (False, True):
+            expected = sorted(sample, key=book._name_key, reverse=reverse)
+            assert book._by_name(sample, reverse=reverse) == expected

@@ -226,6 +226,11 @@ def _instances(expr: Any, cls: type) -> set[Any]:
     return found
 
 
+def _number(z: Intermediate) -> int:
+    """An intermediate's number (its first argument)."""
+    return z.args[0].p
+
+
 def _minus_term(term: Any) -> bool:
     """``term.could_extract_minus_sign()`` for a term of a sum.  For a
     product with a rational coefficient sympy's answer is the coefficient's
@@ -1440,8 +1445,20 @@ class Intermediates:
         return order
 
     def _by_name(self, zs: Iterable[Any], reverse: bool = False) -> list[Any]:
-        """Intermediates by number (then by their arguments' text)."""
-        return sorted(zs, key=self._name_key, reverse=reverse)
+        """Intermediates by number (then by their arguments' text): sorted by
+        number, and only instances of one number (at other arguments) by
+        the text, which is most of the cost of the key.  Both sorts are
+        stable, so the order is ``sorted(zs, key=self._name_key)``'s."""
+        out = sorted(zs, key=_number, reverse=reverse)
+        k = 0
+        while k < len(out):
+            end = k + 1
+            while end < len(out) and _number(out[end]) == _number(out[k]):
+                end += 1
+            if end - k > 1:
+                out[k:end] = sorted(out[k:end], key=self._name_key, reverse=reverse)
+            k = end
+        return out
 
     def _name_key(self, z: Intermediate) -> tuple[int, str]:
         # Printing the arguments is most of the cost of ordering: once per z.
