@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import bisect
 import functools
+import itertools
 import math
 import random
 import sys
@@ -1449,15 +1450,14 @@ class Intermediates:
         number, and only instances of one number (at other arguments) by
         the text, which is most of the cost of the key.  Both sorts are
         stable, so the order is ``sorted(zs, key=self._name_key)``'s."""
-        out = sorted(zs, key=_number, reverse=reverse)
-        k = 0
-        while k < len(out):
-            end = k + 1
-            while end < len(out) and _number(out[end]) == _number(out[k]):
-                end += 1
-            if end - k > 1:
-                out[k:end] = sorted(out[k:end], key=self._name_key, reverse=reverse)
-            k = end
+        out: list[Any] = []
+        for _, group in itertools.groupby(
+            sorted(zs, key=_number, reverse=reverse), key=_number
+        ):
+            group = list(group)
+            if len(group) > 1:
+                group.sort(key=self._name_key, reverse=reverse)
+            out += group
         return out
 
     def _name_key(self, z: Intermediate) -> tuple[int, str]:
