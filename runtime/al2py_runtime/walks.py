@@ -23,7 +23,9 @@ import sympy as sp
 __all__ = ["appearing", "atoms", "replace", "xreplace"]
 
 
-def _deep() -> None:
+def allow_deep_recursion() -> None:
+    """Room for walks over deep expressions (a long chain of intermediates
+    nests as deep as it is long)."""
     if sys.getrecursionlimit() < 20000:
         sys.setrecursionlimit(20000)
 
@@ -36,7 +38,7 @@ def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
         return expr
     if not rule:
         return expr
-    _deep()
+    allow_deep_recursion()
     if memo is None:
         memo = {}
 
@@ -75,7 +77,7 @@ def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any])
     from its replaced arguments, then replaced itself."""
     if not isinstance(expr, sp.Basic):
         return expr
-    _deep()
+    allow_deep_recursion()
     memo: dict[Any, Any] = {}
 
     def walk(rv: Any) -> Any:

@@ -38,7 +38,6 @@ import functools
 import itertools
 import math
 import random
-import sys
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
@@ -52,7 +51,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import appearing, atoms, xreplace
+from ..walks import allow_deep_recursion, appearing, atoms, xreplace
 from .elimination import eliminate
 
 __all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
@@ -562,7 +561,7 @@ def minus(expr: Any) -> Any:
     non-commutative, go to sympy."""
     if not expr.is_Add:
         return -expr
-    number, terms = None, []
+    number, terms = sp.S.Zero, []
     for term in expr.args:
         if term.is_Number:
             number = -term
@@ -577,10 +576,7 @@ def minus(expr: Any) -> Any:
             terms.append(rest[0] if len(rest) == 1 else _product(rest))
         else:
             terms.append(_product((c, *rest)))
-    terms.sort(key=_BY_COMPARE)
-    if number is not None:
-        terms.insert(0, number)
-    return sp.Add._from_args(terms, is_commutative=True)
+    return _sum(number, terms)
 
 
 def total(terms: Sequence[Any]) -> Any:
@@ -628,12 +624,21 @@ def total(terms: Sequence[Any]) -> Any:
             out.append(_product((c, *key.args)))
         else:
             out.append(sp.Mul(c, key))
-    out.sort(key=_BY_COMPARE)
+    return _sum(number, out)
+
+
+def _sum(number: Any, terms: list) -> Any:
+    """The sum of a number and of commutative terms in sympy's canonical
+    form, none a number and no two alike, as ``Add.flatten`` orders them:
+    the number first, the rest by ``Basic.compare``."""
+    terms.sort(key=_BY_COMPARE)
     if number is not sp.S.Zero:
-        out.insert(0, number)
-    if not out:
+        terms.insert(0, number)
+    if not terms:
         return sp.S.Zero
-    return out[0] if len(out) == 1 else sp.Add._from_args(out, is_commutative=True)
+    return (
+        terms[0] if len(terms) == 1 else sp.Add._from_args(terms, is_commutative=True)
+    )
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -855,7 +860,7 @@ class Intermediates:
         neither changes)."""
         found = z.__dict__.get("_canonical")
         if found is None:
-            found = tuple(z.args[1:]) == self._vars[int(z.args[0])]
+            found = tuple(z.args[1:]) == self._vars[_number(z)]
             z.__dict__["_canonical"] = found
         return found
 
@@ -984,8 +989,7 @@ class Intermediates:
         return self._rebase(expr, bad) if bad else expr
 
     def _rebase(self, expr: Any, bad: Iterable[Any]) -> Any:
-        if sys.getrecursionlimit() < 20000:
-            sys.setrecursionlimit(20000)
+        allow_deep_recursion()
         rule = {}
         for z in bad:
             found = self._rebased.get(z)
@@ -1019,15 +1023,12 @@ class Intermediates:
         plain = [sp.Dummy() for _ in present]
         w = xreplace(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
-        if split is None:
-            split = _linear_parts(w, plain)
-            if split is not None:  # no x in the coefficients or the rest
-                coefs, rest = split
-                return self.name(rest) + sp.Add(
-                    *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
-                )
         if split is not None:
             coefs, rest = split
+            if any(appearing(c, plain) for c in coefs) or appearing(rest, plain):
+                return expr  # not linear: keep it as it is
+        elif (split := _linear_parts(w, plain)) is not None:
+            coefs, rest = split  # no x in the coefficients or the rest
         else:
             coefs = []
             for p in plain:
@@ -1036,15 +1037,15 @@ class Intermediates:
                     return expr  # not linear: keep it as it is (found early)
                 coefs.append(c)
             rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
-        if any(appearing(c, plain) for c in coefs) or appearing(rest, plain):
-            return expr  # not linear: keep it as it is
+            if appearing(rest, plain):
+                return expr
         return self.name(rest) + sp.Add(
             *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
         )
 
     def label(self, z: Intermediate) -> str:
-        k = int(z.args[0])
-        if tuple(z.args[1:]) == self._vars[k]:
+        k = _number(z)
+        if self._canonical(z):
             return self._labels[k]
         return self._labels[k] + "(" + ", ".join(str(a) for a in z.args[1:]) + ")"
 
@@ -1059,15 +1060,14 @@ class Intermediates:
 
     def definition(self, z: Intermediate) -> Any:
         """What ``z`` stands for, at its own arguments (one level)."""
-        k = int(z.args[0])
+        k = _number(z)
         body = self._defs[k]
-        args = tuple(z.args[1:])
-        if args == self._vars[k]:
+        if self._canonical(z):
             return body
-        return xreplace(body, dict(zip(self._vars[k], args, strict=True)))
+        return xreplace(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
 
     def is_real(self, z: Intermediate) -> bool | None:
-        k = int(z.args[0])
+        k = _number(z)
         if k not in self._real:
             self._real[k] = None  # guards recursion
             self._busy.add(k)
@@ -1126,7 +1126,7 @@ class Intermediates:
         args = z.args[1:]
         if not all(a.is_commutative for a in args) or all(a.is_number for a in args):
             return None
-        k = int(z.args[0])
+        k = _number(z)
         table = self._facts.get(k)
         if table is None:
             real = self.is_real(z)
@@ -1147,7 +1147,7 @@ class Intermediates:
 
     def partial(self, z: Intermediate, j: int) -> Any:
         """``d z / d var_j`` (named), at ``z``'s own arguments."""
-        k = int(z.args[0])
+        k = _number(z)
         key = (k, j)
         found = self._partials.get(key)
         if found is None:
@@ -1464,12 +1464,12 @@ class Intermediates:
         # Printing the arguments is most of the cost of ordering: once per z.
         found = self._name_keys.get(z)
         if found is None:
-            found = self._name_keys[z] = (int(z.args[0]), str(z.args[1:]))
+            found = self._name_keys[z] = (_number(z), str(z.args[1:]))
         return found
 
     def _uses(self, z: Intermediate) -> Any:
         """The intermediates in ``z``'s definition (kept for canonical ones)."""
-        k = int(z.args[0])
+        k = _number(z)
         if tuple(z.args[1:]) != self._vars[k]:
             found = self._children.get(z)
             if found is None:
@@ -1602,8 +1602,7 @@ class Intermediates:
         >>> abs(a - b) < 1e-12
         True
         """
-        if sys.getrecursionlimit() < 20000:
-            sys.setrecursionlimit(20000)
+        allow_deep_recursion()
         env: dict[Any, complex] = self._values.setdefault(point, {})
         functions = complex_functions()
 
@@ -1728,7 +1727,7 @@ def number(expr: Any, env: dict) -> complex:
 
 
 def _num_z(book: Intermediates, z: Any, env: dict) -> complex:
-    variables, body = book.canonical(int(z.args[0]))
+    variables, body = book.canonical(_number(z))
     args = tuple(z.args[1:])
     if args == variables:
         return _num(body, env)
