@@ -33,7 +33,7 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 [0, 2]]), Matrix([[U(t), -2*G]]))
 """
 
-from .safety import AutolevRuntimeError
+from .safety import AutolevRuntimeError, MissingValueWarning
 from .version import __version__
 from .workspace import Response, Settings, Workspace, t
 
@@ -42,6 +42,7 @@ __all__ = [
     "Settings",
     "Response",
     "AutolevRuntimeError",
+    "MissingValueWarning",
     "t",
     "__version__",
 ]

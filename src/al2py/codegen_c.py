@@ -89,9 +89,12 @@ def main(argv: list[str]) -> int:
     if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
-    written, errors = write_programs(ws, args.outdir, lang=args.lang)
+    notes: list[str] = []
+    written, errors = write_programs(ws, args.outdir, lang=args.lang, notes=notes)
     for item in written:
         print(f"Wrote {item}")
+    for note in notes:
+        print(f"al2py: note: {note}", file=sys.stderr)
     for message in errors:
         print(f"al2py: error: {message}", file=sys.stderr)
     return 2 if errors else 0
