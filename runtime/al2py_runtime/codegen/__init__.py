@@ -101,13 +101,14 @@ def write_programs(
             program.stem = PurePath(name).stem
             text = program_source(program, name)
             infile = in_text(program) if not program.nosubs else None
-            earlier = made.get(name.lower()) or made.get(f"{program.stem}.in".lower())
             clash = name.lower() in made or (
                 infile is not None
                 and f"{program.stem}.in".lower() in made
                 and made[f"{program.stem}.in".lower()][1] != infile
             )
             if clash:
+                own = name if name.lower() in made else f"{program.stem}.in"
+                earlier = made[own.lower()][0]
                 stem, suffix = PurePath(name).stem, PurePath(name).suffix
                 k = 2
                 while any(f"{stem}_{k}{x}".lower() in made for x in (suffix, ".in")):
@@ -120,11 +121,9 @@ def write_programs(
                 name = f"{program.stem}{suffix}"
                 text = program_source(program, name)
                 infile = in_text(program) if not program.nosubs else None
-                assert earlier is not None
                 notes.append(
                     f"{job.where} is written as {name} (reading {program.stem}.in,"
-                    f" writing {program.stem}.1, ...): its own name is"
-                    f" {earlier[0].where}'s"
+                    f" writing {program.stem}.1, ...): {own} is {earlier.where}'s"
                 )
         except (NumericsError, backends.BackendError) as exc:
             message = str(exc)

@@ -222,9 +222,10 @@ def fortran_source(program: Program, target: str) -> str:
         return "\n".join(lines + [""] + equations(program)) + "\n"
     stem = program.stem
     lines += _comment(f"Build: gfortran -O2 -o {stem} {target}")
-    lines += _comment(f"Run:   ./{stem}   (reads {stem}.in when present, the")
-    lines += _comment("values from column 60, a blank line after each group;")
-    lines += _comment("else the script's Input values).")
+    lines += _comment(f"Run:   ./{stem} [NAME=VALUE ...]   (reads {stem}.in when")
+    lines += _comment("present, the values from column 60, a blank line after")
+    lines += _comment("each group, else the script's Input values; NAME=VALUE")
+    lines += _comment("changes one, in its Input's unit).")
     for text in textwrap.wrap(program.task, 64):
         lines += _comment(text)
     if program.kind == "NONLINEAR":
