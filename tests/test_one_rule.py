@@ -157,6 +157,9 @@ def test_evaluate_and_run_take_a_specified_quantity_nobody_gave_as_0(tmp_path):
     with pytest.warns(MissingValueWarning, match="TQ is Specified with no equation"):
         zero = module.evaluate("ZERO", {"U'": 0}, K=3)
     assert zero[0, 0] == pytest.approx(-0.3)  # TQ - K*Q with TQ = 0
+    # a derivative nobody gave is an input too (Autolev's .in files list them)
+    with pytest.warns(MissingValueWarning, match="U' has no Input value; using 0"):
+        assert module.evaluate("ZERO", K=3)[0, 0] == pytest.approx(-0.3)
     with pytest.warns(MissingValueWarning, match="TQ is Specified"):
         result = module.run(K=3)
     assert any("TQ is Specified" in note for note in result.notes)

@@ -292,10 +292,11 @@ def missing_value_rule(
     ``(False, what)`` when it stops (``what`` names it and its line).
 
     - a Specified quantity (or its derivative) is 0: an input of the job;
-    - a variable's value is its initial value, 0 (tutor7 inputs no U1);
+    - a variable is 0: its initial value (tutor7 inputs no U1), and a
+      derivative with no equation is an input, as a Specified quantity is
+      (the ``.in`` files of Autolev's Algebraic programs list them);
     - a constant stops, unless ``zero_missing`` (then 0, noted);
-    - anything else (a variable's derivative, a name the job cannot know)
-      stops.
+    - a name the job cannot know stops.
 
     >>> from al2py_runtime import Workspace
     >>> al = Workspace("m.al")
@@ -315,7 +316,7 @@ def missing_value_rule(
             f"{name} is Specified with no equation and no Input; using 0"
             " (as Autolev's programs do)"
         )
-    if kind == "variable" and not primes:
+    if kind == "variable":
         return True, f"{name} has no Input value; using 0"
     if kind == "constant" and zero_missing:
         return True, f"{what} has no Input value; using 0 (zero_missing)"
@@ -536,9 +537,9 @@ def evaluate_with_inputs(
     """``value`` with Inputs, ``overrides`` and right-hand sides substituted.
 
     A name still without a value follows :func:`missing_value_rule`, as in
-    ``run()``: a Specified quantity (and a variable) is 0, warned
-    (:class:`MissingValueWarning`); a constant, or a variable's derivative,
-    stops with its name."""
+    ``run()``: a Specified quantity, a variable and a derivative with no
+    equation are 0, warned (:class:`MissingValueWarning`); a constant stops
+    with its name and line (``zero_missing``: 0, warned)."""
     given = {normalize_name(k): v for k, v in overrides.items()}
     settable = {
         k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
@@ -601,28 +602,26 @@ def evaluate_with_inputs(
             )
 
         out = derivatives()
+        # derivatives nobody gave, before their functions are substituted
+        # (U(t) -> 0.5 would leave the derivative of a number)
+        if out.has(sp.Derivative):
+            missing(set(out.atoms(sp.Derivative)))
+            out = derivatives()
         if has_z:
             # Intermediates are evaluated at the values, once each, in order
             # (substituting numbers into them would rebuild each one).
-            left = set(out.atoms(sp.Derivative))
-            left |= {a for a in out.atoms(AppliedUndef) if a not in subs}
+            left = {a for a in out.atoms(AppliedUndef) if a not in subs}
             left |= {s for s in out.free_symbols if s != t and s not in subs}
             if left:
                 missing(left)
-                out = derivatives()
         else:
-            for _ in range(3):  # a second round after names taken as 0
-                out = sp.sympify(
-                    out.xreplace({k: v for k, v in subs.items() if k != t})
-                )
-                left = set(out.atoms(sp.Derivative)) | out.atoms(AppliedUndef)
-                left |= {s for s in out.free_symbols if s != t}
-                if not left:
-                    break
+            plain = {k: v for k, v in subs.items() if k != t}
+            out = sp.sympify(out.xreplace(plain))
+            left = out.atoms(AppliedUndef) | {s for s in out.free_symbols if s != t}
+            if left:
                 missing(left)
-                out = derivatives()
-            else:  # pragma: no cover - missing() stops or gives each a value
-                raise NumericsError(f"{name} cannot be evaluated")
+                plain = {k: v for k, v in subs.items() if k != t}
+                out = sp.sympify(derivatives().xreplace(plain))
         if has_z:
             if not cache:
                 cache.update({k: complex(v) for k, v in subs.items()})
