@@ -178,7 +178,7 @@ def test_a_constant_nobody_gave_stops_with_its_name_and_line(tmp_path):
         AutolevRuntimeError, match=r"no value for K \(declared on line 5\)"
     ):
         module.run()
-    with pytest.warns(MissingValueWarning, match="K .* using 0 .zero_missing"):
+    with pytest.warns(MissingValueWarning, match="K has no Input value; using 0"):
         zero = module.evaluate("ZERO", {"U'": 0}, zero_missing=True)
     assert zero[0, 0] == 0
 

@@ -319,7 +319,7 @@ def missing_value_rule(
     if kind == "variable":
         return True, f"{name} has no Input value; using 0"
     if kind == "constant" and zero_missing:
-        return True, f"{what} has no Input value; using 0 (zero_missing)"
+        return True, f"{name} has no Input value; using 0"
     return False, what
 
 
