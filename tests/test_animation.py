@@ -340,3 +340,24 @@ def test_a_table_written_by_autolevs_own_program(tmp_path):
 
     ours = run_job(job, judge._overrides(prog, job, values))
     assert np.allclose(theirs["THETA"], ours["THETA"], rtol=1e-5, atol=1e-8)
+
+
+@pytest.mark.slow  # the bicycle's import and first run (20-40 s on 2 cores)
+def test_the_bicycle_animates(tmp_path):
+    """Our Whipple script (benchmarks/animation.py times it): the rear
+    contact at (Q1, Q2, 0), the rear wheel's center RR above it along L3>,
+    each body's triad at its mass center."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import animation as bench
+
+    module = bench.load(tmp_path, 101)
+    result = module.run()
+    movie = result.animate()
+    assert movie.scene.frame_names == ["R", "B", "H", "F"]
+    names = movie.scene.names
+    assert [names[k] for k in movie.scene.layout.anchors] == ["RO", "BO", "HO", "FO"]
+    p, ro = movie.positions["P"], movie.positions["RO"]
+    q1, q2, q4 = (result.states[n] for n in ("Q1", "Q2", "Q4"))
+    assert p == pytest.approx(np.stack([q1, q2, 0 * q1], axis=1), abs=1e-12)
+    assert (ro - p)[:, 2] == pytest.approx(-0.3 * np.cos(q4), abs=1e-12)
+    assert len(movie.times) == 101 and movie.data()["follow"]  # it rides off

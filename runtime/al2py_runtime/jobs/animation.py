@@ -72,11 +72,12 @@ _PLAYER = r"""
   function pt(i) { var P = D.P[row]; return [P[3 * i], P[3 * i + 1], P[3 * i + 2]]; }
   function draw() {
     var b = basis(), r = b[0], u = b[1], w = cv.width, h = cv.height, c = D.center;
-    if (D.follow) {
+    if (D.follow) {  // the mean of the points but the origin
+      var m = D.names.length, first = m > 1 ? 1 : 0;
       c = [0, 0, 0];
-      for (var i = 0; i < D.names.length; i++) {
+      for (var i = first; i < m; i++) {
         var p = pt(i);
-        for (var k = 0; k < 3; k++) c[k] += p[k] / D.names.length;
+        for (var k = 0; k < 3; k++) c[k] += p[k] / (m - first);
       }
     }
     var s = Math.min(w, h) / (2.2 * D.radius), cr = dot(c, r), cu = dot(c, u);
@@ -180,8 +181,8 @@ class Animation:
     file (``.html``, ``.gif``, ``.mp4``), :meth:`html` for the page.
 
     ``speed`` is simulated seconds per second of playing; ``follow`` keeps
-    the points' mean at the center (by default when the motion wanders
-    more than four times the model's size: a bicycle that rides off)."""
+    the mean of the points (but the origin) at the center (by default when the motion wanders
+    more than twice the model's size: a bicycle that rides off)."""
 
     def __init__(
         self,
@@ -259,11 +260,12 @@ class Animation:
         lo, hi = flat.min(axis=0), flat.max(axis=0)
         center = (lo + hi) / 2
         whole = float(np.linalg.norm(flat - center, axis=1).max())
-        means = pos.mean(axis=1, keepdims=True)
-        local = float(np.linalg.norm(pos - means, axis=2).max())
+        moving = pos[:, 1:] if pos.shape[1] > 1 else pos  # all but the origin
+        means = moving.mean(axis=1, keepdims=True)
+        local = float(np.linalg.norm(moving - means, axis=2).max())
         follow = self.follow
         if follow is None:
-            follow = local > 0 and whole > 4 * local
+            follow = local > 0 and whole > 2 * local
         radius = local if follow else whole
         radius = radius if radius > 0 else 1.0
         axis = 0.2 * radius
@@ -407,7 +409,7 @@ class Animation:
 
         def update(r: int) -> list:
             xy = screen[r]
-            mid = xy.mean(axis=0) if follow else fixed
+            mid = (xy[1:] if len(xy) > 1 else xy).mean(axis=0) if follow else fixed
             ax.set_xlim(mid[0] - radius, mid[0] + radius)
             ax.set_ylim(mid[1] - radius, mid[1] + radius)
             for art, (i, j) in zip(lines, sc.layout.lines, strict=True):

@@ -16,7 +16,8 @@ drawn, from an ``Animate`` statement or from the options of
   frame (its measure numbers in that frame are constants): a body's mass
   center and the points fixed on it, the links of a pendulum;
 * the points: ``O``, the ends of those lines, the anchors of the triads,
-  every particle located from ``O``, and the points asked for.
+  every point and particle the script declared that positions locate from
+  ``O`` (a wheel's contact point), and the points asked for.
 
 :func:`scene` then computes each point's position from ``O`` (measure
 numbers in ``N``) and each triad's direction cosines at all output rows at
@@ -71,7 +72,8 @@ class Geometry:
     #: the positions the script gave: ``(P, Q, P_P_Q>)``, in order
     positions: tuple[tuple[Point, Point, Vector], ...]
     masscenters: dict[ReferenceFrame, Point]  # bodies
-    particles: tuple[Point, ...]
+    #: the script's ``Points`` and ``Particles`` (not origins, mass centers)
+    declared: tuple[Point, ...]
     #: points fixed in the Newtonian frame (its origin) or given ``V_P_N> = 0>``
     at_rest: tuple[Point, ...]
     gravity: tuple[Vector, ...] = ()
@@ -81,6 +83,7 @@ class Geometry:
         """The geometry of ``model`` (a workspace's ``al.model``) now."""
         st = model.registry
         n = st.newtonian
+        centers = {f: rec.point for f, rec in st.bodies.items()}
         seen: set[frozenset] = set()
         given = []
         for p, targets in st.edges.items():
@@ -100,8 +103,12 @@ class Geometry:
             dict(st.frames),
             dict(st.points),
             tuple(given),
-            {f: rec.point for f, rec in st.bodies.items()},
-            tuple(st.particles),
+            centers,
+            tuple(
+                p
+                for p in st.points.values()
+                if p not in st.fixed_in and p not in centers.values()
+            ),
             tuple(dict.fromkeys(rest)),
             tuple(st.gravity),
         )
@@ -252,7 +259,7 @@ def layout(
     for p, q in lines:
         shown.update({p: None, q: None})
     shown.update(dict.fromkeys(anchors))
-    shown.update({p: None for p in geometry.particles if p in where})
+    shown.update({p: None for p in geometry.declared if p in where})
     for name in points:
         p = geometry.point(name)
         if p not in where:
