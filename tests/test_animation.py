@@ -99,7 +99,8 @@ def test_a_module_without_animate_animates_on_request(folder):
     assert movie.scene.frame_names == ["A", "B"]
     assert movie.scene.layout.origin.name == "O"
     only = r.animate(frames=["B"], points=["Q"], origin="P")
-    assert only.scene.names == ["P", "Q"] and only.positions["P"] == pytest.approx(
+    # P first (the origin), then B's line to Q, then the declared O
+    assert only.scene.names == ["P", "Q", "O"] and only.positions["P"] == pytest.approx(
         np.zeros((len(r["T"]), 3))
     )
     with pytest.raises(NumericsError, match="not a frame or body"):
