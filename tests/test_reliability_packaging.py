@@ -38,8 +38,9 @@ def _setup_requirements() -> tuple[str, list[str], dict[str, list[str]]]:
 def test_the_version_is_written_once():
     """runtime/al2py_runtime/version.py is the one place: both projects'
     metadata, the pin on al2py-runtime and ``al2py.__version__`` follow it."""
-    import al2py
     import al2py_runtime
+
+    import al2py
 
     version, deps, extras = _setup_requirements()
     assert version == al2py_runtime.__version__ == al2py.__version__

@@ -17,7 +17,6 @@ import venv
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT
 
 pytestmark = pytest.mark.wheel
