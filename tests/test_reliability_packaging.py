@@ -10,6 +10,8 @@ import sys
 import tomllib
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -126,3 +128,17 @@ def test_missing_runtime_gives_a_clear_message(tmp_path):
         "(al2py depends on it): pip install al2py-runtime (from a checkout: "
         "pip install ./runtime)"
     )
+
+
+def test_the_tutorial_copies_are_the_tutorials():
+    """The tests read the tutorial's examples from the project's own copies
+    (``conftest.SHARED``); where the workplace's ``shared/tutorial`` is beside
+    the checkout, the copies are its files, byte for byte, and all of them."""
+    from conftest import SHARED, SHARED_TUTORIAL
+
+    if not SHARED_TUTORIAL.is_dir():
+        pytest.skip(f"{SHARED_TUTORIAL} is absent: nothing to compare the copies with")
+    theirs = {p.name: p.read_bytes() for p in SHARED_TUTORIAL.iterdir() if p.is_file()}
+    ours = {p.name: p.read_bytes() for p in SHARED.iterdir()}
+    assert sorted(ours) == sorted(theirs)
+    assert [n for n in ours if ours[n] != theirs[n]] == []
