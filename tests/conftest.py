@@ -28,7 +28,7 @@ def _tutorial_files() -> dict[str, Path]:
     its scripts, macro files and transcripts, as ``shared/tutorial`` holds
     them (``test_the_tutorial_copies_are_the_tutorials`` checks the copies
     against it when it is there)."""
-    files = {p.name: p for p in TUTORIAL_EXAMPLES.iterdir() if p.is_file()}
+    files = {p.name: p for p in TUTORIAL_EXAMPLES.glob("*.al")}
     for p in GOLDEN.iterdir():
         # a golden case's transcript and macros are the tutorial's; its .al
         # was rebuilt from the transcript, except tutor1's
