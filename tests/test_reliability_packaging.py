@@ -97,6 +97,10 @@ def test_license_typed_markers_and_changelog_exist():
     assert (ROOT / "runtime" / "al2py_runtime" / "py.typed").is_file()
     changelog = (ROOT / "CHANGELOG.md").read_text()
     assert changelog.startswith("# Changelog") and "## 0.1.0" in changelog
+    # kept by release: the current version has its section
+    import al2py_runtime
+
+    assert f"\n## {al2py_runtime.__version__} (" in changelog
 
 
 def test_templates_are_declared_package_data():
