@@ -362,3 +362,25 @@ def test_the_bicycle_animates(tmp_path):
     assert p == pytest.approx(np.stack([q1, q2, 0 * q1], axis=1), abs=1e-12)
     assert (ro - p)[:, 2] == pytest.approx(-0.3 * np.cos(q4), abs=1e-12)
     assert len(movie.times) == 101 and movie.data()["follow"]  # it rides off
+
+
+def test_command_line_animate_without_a_model(tmp_path):
+    """An ODE job of plain variables has nothing to place: a note, the
+    tables are written, and the exit status is 0."""
+    text = (
+        "Variables X'\nX' = -X\nInput X = 1, TFINAL = 1\nOutput T, X\n"
+        "CODE ODE() decay.c\n"
+    )
+    module = tmp_path / "decay.py"
+    module.write_text(convert(text, "decay.al").code, encoding="utf-8")
+    run = subprocess.run(
+        [sys.executable, str(module), "--animate", "--outdir", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert run.returncode == 0, run.stderr
+    assert "note: no animation: animate: the model has no Newtonian frame" in (
+        run.stderr
+    )
+    assert (tmp_path / "decay.1").exists() and not (tmp_path / "decay.html").exists()

@@ -311,7 +311,11 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
                         file=sys.stderr,
                     )
                     continue
-                path = result.animate(outdir / f"{result.stem}.html").path
+                try:
+                    path = result.animate(outdir / f"{result.stem}.html").path
+                except NumericsError as exc:  # nothing to place: say so
+                    print(f"note: no animation: {exc}", file=sys.stderr)
+                    continue
                 print(f"Wrote {path}")
         except BrokenPipeError:
             raise
