@@ -96,7 +96,7 @@ class Geometry:
         rest += [
             p
             for (p, f), v in st.vel.items()
-            if f is n and isinstance(v, Vector) and v == Vector(0)
+            if f is n and isinstance(v, Vector) and not v.args  # ``0>``
         ]
         return cls(
             n,
