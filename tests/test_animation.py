@@ -384,3 +384,10 @@ def test_command_line_animate_without_a_model(tmp_path):
         run.stderr
     )
     assert (tmp_path / "decay.1").exists() and not (tmp_path / "decay.html").exists()
+
+
+@pytest.mark.skipif(shutil.which("ffmpeg") is not None, reason="ffmpeg is present")
+def test_mp4_without_ffmpeg_says_so(result, folder):
+    pytest.importorskip("matplotlib")
+    with pytest.raises(NumericsError, match="needs ffmpeg"):
+        result.animate(folder / "tutor6.mp4")
