@@ -12,7 +12,7 @@ $(VENV)/.installed: pyproject.toml runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
 	$(PIP) install --quiet -e "./runtime[plot]"
-	$(PIP) install --quiet -e ".[dev,plot]"
+	$(PIP) install --quiet -e ".[dev,plot,notebook]"
 	touch $@
 
 install: $(VENV)/.installed

@@ -113,7 +113,7 @@ def test_templates_are_declared_package_data():
 def test_makefile_installs_the_runtime_first():
     text = (ROOT / "Makefile").read_text()
     runtime = text.index('install --quiet -e "./runtime')
-    root = text.index('install --quiet -e ".[dev,plot]"')
+    root = text.index('install --quiet -e ".[dev,plot,notebook]"')
     assert runtime < root
 
 
