@@ -340,5 +340,4 @@ def _symbolic(
     zx = sp.Matrix(len(z_x), len(zero), lambda i, j: at(z_x[i][j], with_ud)).T
     dud = -mass.LUsolve(zx) if uds else sp.zeros(0, len(g_x))
     full = gx + gu * dud
-    full = full.applyfunc(sp.cancel)
     return full[:, :n], full[:, n:]

@@ -54,6 +54,7 @@ __all__ = [
     "compile_quantity",
     "evaluate_compiled",
     "kernel_for",
+    "kernels_built",
     "split_given",
 ]
 
@@ -96,6 +97,7 @@ class Kernel:
                     self._call = _load_c(self.source, self.n_out)
                 else:
                     self._call = _load_python(self.source)
+                _BUILT[0] += 1
         return self._call
 
     def attach(self, func: Any) -> None:
@@ -127,6 +129,14 @@ class Kernel:
 #: kernels built in this process, by the hash of their source
 _KERNELS: dict[str, Kernel] = {}
 _KERNELS_LOCK = threading.Lock()
+#: how many kernels this process has built from their source
+_BUILT = [0]
+
+
+def kernels_built() -> int:
+    """How many kernels this process has built (or loaded) from their
+    source: once per model and worker, whatever the number of chunks."""
+    return _BUILT[0]
 
 
 def _key(backend: str, source: Any) -> str:
