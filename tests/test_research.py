@@ -432,3 +432,14 @@ def test_tutor8_linearize_equals_its_own_d(tutorial):
         module, lin, {"L": 1, "MA": 10, "MB": 1, "G": 9.81}
     )
     assert np.allclose(lin.A[np.ix_(order, order)], theirs, rtol=1e-10, atol=1e-10)
+
+
+def test_job_sweep_results_from_workers_animate_as_local_ones(tutor6):
+    """A worker's result travels without its sympy model; the parent joins
+    its numbers to its own model, so it can be shown as a local one."""
+    with ProcessPoolExecutor(1) as pool:
+        s = tutor6.sweep(job="tutor6", QA=[20.0, 30.0], tfinal=1, executor=pool)
+    local = tutor6.run(QA=30.0, tfinal=1)
+    got = s.results[1]
+    assert got.motion is not None and got.motion.job is local.motion.job
+    assert np.array_equal(got.motion.ys, local.motion.ys)

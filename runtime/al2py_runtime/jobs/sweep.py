@@ -301,7 +301,36 @@ def job_points(
 
     module = module_at(origin)
     job = module.al.numerics.jobs[index]
-    return [run_job(job, p, backend=backend, zero_missing=zero_missing) for p in points]
+    out = []
+    for p in points:
+        result = run_job(job, p, backend=backend, zero_missing=zero_missing)
+        # The motion holds the worker's sympy model: only its numbers
+        # travel, and the parent joins them to its own model (_rejoin).
+        motion, result.motion = result.motion, None
+        out.append((result, None if motion is None else (motion.times, motion.ys)))
+    return out
+
+
+def _rejoin(
+    job: Job,
+    point: Mapping[str, Any],
+    result: Any,
+    numbers: tuple[np.ndarray, np.ndarray] | None,
+    zero_missing: bool | None,
+    layouts: dict,
+) -> Any:
+    """A worker's result with the motion its numbers make in this
+    process's model (for ``result.animate()``)."""
+    from .run import Motion, dynamics_layout, input_values
+
+    if numbers is None:
+        return result
+    vals, keep = input_values(job, point, zero_missing)
+    keep = frozenset(keep)
+    if keep not in layouts:
+        layouts[keep] = dynamics_layout(job, keep).state_objs
+    result.motion = Motion(job, vals, keep, list(layouts[keep]), *numbers)
+    return result
 
 
 def sweep_job(
@@ -349,10 +378,13 @@ def sweep_job(
                 (r, (origin, index, points[r.start : r.stop], backend, zero_missing))
                 for r in ranges
             ]
+            parts = _run_chunks(job_points, chunks, pool, steps)
+            layouts: dict = {}
             results = [
-                res
-                for part in _run_chunks(job_points, chunks, pool, steps)
-                for res in part
+                _rejoin(job, p, res, numbers, zero_missing, layouts)
+                for p, (res, numbers) in zip(
+                    points, (x for part in parts for x in part), strict=True
+                )
             ]
     grid_results = np.empty(size, dtype=object)
     for i, res in enumerate(results):
