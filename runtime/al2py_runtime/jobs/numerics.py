@@ -597,7 +597,7 @@ class Numerics:
         value = self._ws.value(name)
         settable, free = split_given(job, given)
         _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
-        key = quantity_key(name, value, free, frozenset(keep), backend)
+        key = quantity_key(name, free, frozenset(keep), backend)
         cache = self._compiled
         found = cache.get(key)
         if found is None or found[0] is not value:

@@ -461,7 +461,8 @@ def finish(
 
 
 def quantity_key(
-    name: str, value: Any, free: Mapping[str, Any], keep: frozenset, backend: Any
+    name: str, free: Mapping[str, Any], keep: frozenset, backend: Any
 ) -> tuple:
-    """What a compiled quantity depends on besides the job's values."""
-    return (normalize_name(name), id(value), frozenset(free), keep, backend)
+    """What a compiled quantity depends on besides the job's values and the
+    quantity's value itself (which the cache keeps and compares)."""
+    return (normalize_name(name), frozenset(free), keep, backend)
