@@ -447,7 +447,14 @@ class Numerics:
         )
 
     def evaluate_name(
-        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+        self,
+        name: str,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        zero_missing: bool | None = None,
+        backend: str | None = None,
+        **more: Any,
     ) -> Any:
         """The named quantity as a float (or numpy array for a matrix).
 
@@ -468,8 +475,6 @@ class Numerics:
 
         merged = dict(values or {})
         merged.update(more)
-        zero_missing = merged.pop("zero_missing", None)
-        backend = merged.pop("backend", None)
         job = self._make_job("ALGEBRAIC", line=None)
         value = self._ws.value(name)
         if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
