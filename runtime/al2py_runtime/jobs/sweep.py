@@ -182,7 +182,12 @@ def _run_chunks(
 def kernel_rows(kernel: Kernel, times: np.ndarray, params: np.ndarray) -> np.ndarray:
     """A chunk of a quantity sweep (run by a worker): the kernel's values
     at each row; the kernel is built once per process."""
-    return kernel.table(times, params)
+    from .backends import BackendError
+
+    try:
+        return kernel.table(times, params)
+    except BackendError as exc:  # a worker without a C compiler, ...
+        raise NumericsError(f"a worker cannot build the model: {exc}") from None
 
 
 # ------------------------------------------------------------------ sweeps
