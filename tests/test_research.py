@@ -443,3 +443,18 @@ def test_job_sweep_results_from_workers_animate_as_local_ones(tutor6):
     got = s.results[1]
     assert got.motion is not None and got.motion.job is local.motion.job
     assert np.array_equal(got.motion.ys, local.motion.ys)
+
+
+def test_evaluate_arrays_of_an_input_others_are_computed_from(tmp_path):
+    """``Input E4 = COS(QQ1/2)*2``: an array of QQ1 (degrees) changes E4 at
+    each point, as a run would."""
+    src = (
+        "Constants qq1, e4, k\nVariables x'\nx' = -k*x\nY = e4*x\n"
+        "Input qq1 = 60 deg, e4 = cos(qq1/2)*2, k = e4\n"
+        "Input x=1, tFinal=1, integStp=0.5\nOutput T, x\nCODE ODE() f.c\n"
+    )
+    module = _module(Path("computed.al"), tmp_path, src)
+    angles = np.array([0.0, 60.0, 120.0])
+    got = module.evaluate("Y", QQ1=angles, X=3.0)
+    assert np.allclose(got, 3 * 2 * np.cos(np.radians(angles) / 2), rtol=1e-13)
+    assert module.evaluate("Y", QQ1=120.0, X=3.0) == pytest.approx(got[2], rel=1e-13)
