@@ -160,6 +160,11 @@ def kernel_for(backend: str, source: Any, n_params: int, n_out: int) -> Kernel:
 
 def _load_c(units: Sequence[tuple[str, Sequence[str]]], n_out: int) -> Any:
     path, _hit = backends.build_stream(iter(units))
+    return _open_c(path, n_out)
+
+
+def _open_c(path: Any, n_out: int) -> Any:
+    """The compiled library at ``path`` as ``call(ts, params) -> rows``."""
     lib = backends.load_library(path)
     c_out = lib.al_out
     width = max(n_out, 1)
@@ -213,10 +218,19 @@ def build_kernel(
         spec = backends.DynamicsSpec(
             time, [], [], list(params), [], [], [], [list(exprs)], list(intermediates)
         )
+        units: list[tuple[str, tuple[str, ...]]] = []
+
+        def printed() -> Any:
+            # each unit compiles while the next one is printed; the text is
+            # kept, what a worker receives
+            for unit in backends.c_model_stream(spec):
+                units.append(unit)
+                yield unit
+
         try:
-            units = backends.c_model_units(spec)
+            path, _hit = backends.build_stream(printed())
             kernel = kernel_for("c", units, len(params), len(exprs))
-            kernel.load()
+            kernel.attach(_open_c(path, len(exprs)))
             return kernel
         except backends.BackendError as exc:
             if backends.choose(backend) != "auto":
