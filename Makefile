@@ -6,7 +6,7 @@ PIP    := $(PY) -m pip
 EXAMPLE ?= examples/tutor6.al
 ANTLR  := $(VENV)/bin/antlr4
 
-.PHONY: install bytecode run test grammar bench lint clean
+.PHONY: install bytecode run test golden grammar bench lint clean
 
 $(VENV)/.installed: pyproject.toml runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -30,6 +30,10 @@ run: bytecode
 
 test: bytecode
 	$(PY) -m pytest -q
+
+# Write the kept generated modules (tests/golden/modules/*.py) again.
+golden: install
+	$(PY) tests/test_golden_modules.py
 
 lint: install
 	$(VENV)/bin/ruff check src runtime tests

@@ -1,0 +1,116 @@
+"""Autolev script autorhs_on.al, converted to Python.
+
+Converted from autorhs_on.al by al2py 0.1.0; edit the .al file and
+convert again rather than editing this module.
+
+``import autorhs_on`` runs the symbolic part silently; ``AUTOLEV`` maps
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
+``python autorhs_on.py`` prints the transcript Autolev would print.
+"""
+
+import sys
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    # answered here, before sympy loads and the model is derived
+    sys.stdout.write(
+        "usage: python autorhs_on.py [-h] [--set NAME=VALUE] [--job STEM]\n"
+        "                            [--tfinal TFINAL] [--outdir OUTDIR] [--plo"
+        "t]\n"
+        "                            [--backend {auto,c,llvm,lambdify}] [--zero"
+        "-missing]\n"
+        "                            [--emit-code DIR] [--no-run] [--max-second"
+        "s S]\n"
+        "                            [--max-evals N]\n"
+        "\n"
+        "Print the Autolev transcript of autorhs_on.al and perform its numerica"
+        "l CODE job.\n"
+        "\n"
+        "options:\n"
+        "  -h, --help            show this help message and exit\n"
+        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
+        "n the\n"
+        "                        Input's unit\n"
+        "  --job STEM            perform (or with --emit-code, write) only the "
+        "CODE job\n"
+        "                        whose file is STEM (see the list below)\n"
+        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
+        "  --outdir OUTDIR       directory for every file the script writes: Sa"
+        "ve files,\n"
+        "                        output tables and plots, under their base name"
+        "s\n"
+        "                        (default: .)\n"
+        "  --plot                also write STEM.n.png plots\n"
+        "  --backend {auto,c,llvm,lambdify}\n"
+        "                        how Dynamics/ODE equations are evaluated (defa"
+        "ult:\n"
+        "                        $AL2PY_BACKEND or auto, the fastest available)"
+        "\n"
+        "  --zero-missing        use 0 for constants that no Input gives (by de"
+        "fault the\n"
+        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
+        "G=1)\n"
+        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
+        "DE names\n"
+        "                        it) and STEM.in of each CODE job into DIR (as "
+        "'al2py\n"
+        "                        code' does) instead of running\n"
+        "  --no-run              only print the transcript; perform no CODE job"
+        " and\n"
+        "                        write no file\n"
+        "  --max-seconds S       time budget of one integration (default 120; o"
+        "r\n"
+        "                        AL2PY_MAX_SECONDS)\n"
+        "  --max-evals N         right-hand-side evaluations allowed in one int"
+        "egration\n"
+        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
+        "\n"
+        "This script has no CODE statement: it only prints its transcript.\n"
+        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
+        "RELERR.\n"
+    )
+    raise SystemExit(0)
+
+from al2py_runtime import Workspace  # noqa: E402
+from al2py_runtime.functions import sin  # noqa: E402
+
+al = Workspace("autorhs_on.al")
+
+# al> AUTORHS ON
+al.settings.set("Autorhs", "ON")
+# al> Constants B
+B = al.constants("B", line=2)
+# al> A = 7
+A = al.assign("A", 7, line=3)
+# al> C = A + B
+C = al.assign("C", A + B, line=4)
+# al> D = C*SIN(C)
+D = al.assign("D", C * sin(C), line=5)
+
+AUTOLEV = al.names()
+
+# The Autolev source, echoed in the transcript.
+AL_SOURCE = (
+    "AUTORHS ON",
+    "Constants B",
+    "A = 7",
+    "C = A + B",
+    "D = C*SIN(C)",
+)
+
+
+def evaluate(name, values=None, /, **given):
+    """The named Autolev quantity as a number (a numpy array for a matrix).
+
+    Input values (in their own units), the values given here and every named
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    """
+    return al.numerics.evaluate_name(name, values, **given)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python autorhs_on.py``: print the transcript."""
+    return al.main(AL_SOURCE, argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

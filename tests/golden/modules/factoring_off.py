@@ -1,0 +1,111 @@
+"""Autolev script factoring_off.al, converted to Python.
+
+Converted from factoring_off.al by al2py 0.1.0; edit the .al file and
+convert again rather than editing this module.
+
+``import factoring_off`` runs the symbolic part silently; ``AUTOLEV`` maps
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
+``python factoring_off.py`` prints the transcript Autolev would print.
+"""
+
+import sys
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    # answered here, before sympy loads and the model is derived
+    sys.stdout.write(
+        "usage: python factoring_off.py [-h] [--set NAME=VALUE] [--job STEM]\n"
+        "                               [--tfinal TFINAL] [--outdir OUTDIR] [--"
+        "plot]\n"
+        "                               [--backend {auto,c,llvm,lambdify}]\n"
+        "                               [--zero-missing] [--emit-code DIR] [--n"
+        "o-run]\n"
+        "                               [--max-seconds S] [--max-evals N]\n"
+        "\n"
+        "Print the Autolev transcript of factoring_off.al and perform its numer"
+        "ical CODE job.\n"
+        "\n"
+        "options:\n"
+        "  -h, --help            show this help message and exit\n"
+        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
+        "n the\n"
+        "                        Input's unit\n"
+        "  --job STEM            perform (or with --emit-code, write) only the "
+        "CODE job\n"
+        "                        whose file is STEM (see the list below)\n"
+        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
+        "  --outdir OUTDIR       directory for every file the script writes: Sa"
+        "ve files,\n"
+        "                        output tables and plots, under their base name"
+        "s\n"
+        "                        (default: .)\n"
+        "  --plot                also write STEM.n.png plots\n"
+        "  --backend {auto,c,llvm,lambdify}\n"
+        "                        how Dynamics/ODE equations are evaluated (defa"
+        "ult:\n"
+        "                        $AL2PY_BACKEND or auto, the fastest available)"
+        "\n"
+        "  --zero-missing        use 0 for constants that no Input gives (by de"
+        "fault the\n"
+        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
+        "G=1)\n"
+        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
+        "DE names\n"
+        "                        it) and STEM.in of each CODE job into DIR (as "
+        "'al2py\n"
+        "                        code' does) instead of running\n"
+        "  --no-run              only print the transcript; perform no CODE job"
+        " and\n"
+        "                        write no file\n"
+        "  --max-seconds S       time budget of one integration (default 120; o"
+        "r\n"
+        "                        AL2PY_MAX_SECONDS)\n"
+        "  --max-evals N         right-hand-side evaluations allowed in one int"
+        "egration\n"
+        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
+        "\n"
+        "This script has no CODE statement: it only prints its transcript.\n"
+        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
+        "RELERR.\n"
+    )
+    raise SystemExit(0)
+
+from al2py_runtime import Workspace  # noqa: E402
+
+al = Workspace("factoring_off.al")
+
+# al> FACTORING OFF
+al.settings.set("Factoring", "OFF")
+# al> Constants A,B,C
+A, B, C = al.constants("A", "B", "C", line=2)
+# al> X = A*B + A*C + A^2
+X = al.assign("X", A * B + A * C + A**2, line=3)
+# al> Y = A/C + B/C
+Y = al.assign("Y", A / C + B / C, line=4)
+
+AUTOLEV = al.names()
+
+# The Autolev source, echoed in the transcript.
+AL_SOURCE = (
+    "FACTORING OFF",
+    "Constants A,B,C",
+    "X = A*B + A*C + A^2",
+    "Y = A/C + B/C",
+)
+
+
+def evaluate(name, values=None, /, **given):
+    """The named Autolev quantity as a number (a numpy array for a matrix).
+
+    Input values (in their own units), the values given here and every named
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    """
+    return al.numerics.evaluate_name(name, values, **given)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python factoring_off.py``: print the transcript."""
+    return al.main(AL_SOURCE, argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,389 @@
+"""Autolev script tutor5.al, converted to Python.
+
+Converted from tutor5.al by al2py 0.1.0; edit the .al file and
+convert again rather than editing this module.
+
+``import tutor5`` runs the symbolic part silently; ``AUTOLEV`` maps
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
+``python tutor5.py`` prints the transcript Autolev would print
+and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
+Python.
+"""
+
+import sys
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    # answered here, before sympy loads and the model is derived
+    sys.stdout.write(
+        "usage: python tutor5.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
+        " TFINAL]\n"
+        "                        [--outdir OUTDIR] [--plot]\n"
+        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
+        "sing]\n"
+        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
+        "\n"
+        "                        [--max-evals N]\n"
+        "\n"
+        "Print the Autolev transcript of tutor5.al and perform its numerical CO"
+        "DE job.\n"
+        "\n"
+        "options:\n"
+        "  -h, --help            show this help message and exit\n"
+        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
+        "n the\n"
+        "                        Input's unit\n"
+        "  --job STEM            perform (or with --emit-code, write) only the "
+        "CODE job\n"
+        "                        whose file is STEM (see the list below)\n"
+        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
+        "  --outdir OUTDIR       directory for every file the script writes: Sa"
+        "ve files,\n"
+        "                        output tables and plots, under their base name"
+        "s\n"
+        "                        (default: .)\n"
+        "  --plot                also write STEM.n.png plots\n"
+        "  --backend {auto,c,llvm,lambdify}\n"
+        "                        how Dynamics/ODE equations are evaluated (defa"
+        "ult:\n"
+        "                        $AL2PY_BACKEND or auto, the fastest available)"
+        "\n"
+        "  --zero-missing        use 0 for constants that no Input gives (by de"
+        "fault the\n"
+        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
+        "G=1)\n"
+        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
+        "DE names\n"
+        "                        it) and STEM.in of each CODE job into DIR (as "
+        "'al2py\n"
+        "                        code' does) instead of running\n"
+        "  --no-run              only print the transcript; perform no CODE job"
+        " and\n"
+        "                        write no file\n"
+        "  --max-seconds S       time budget of one integration (default 120; o"
+        "r\n"
+        "                        AL2PY_MAX_SECONDS)\n"
+        "  --max-evals N         right-hand-side evaluations allowed in one int"
+        "egration\n"
+        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
+        "\n"
+        "Input values (change with --set NAME=VALUE, in these units):\n"
+        "  H = 200 newton\n"
+        "  QA = 30 deg\n"
+        "  QB = 60 deg\n"
+        "  QC = 30 deg\n"
+        "  ABSERR = 1.0E-07\n"
+        "  RELERR = 1.0E-07\n"
+        "Jobs (--job STEM runs one; default: all, in script order):\n"
+        "  tutor5: CODE Nonlinear tutor5.m (line 83) -> tutor5.1, ...\n"
+        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
+        "RELERR.\n"
+    )
+    raise SystemExit(0)
+
+from al2py_runtime import Workspace, t  # noqa: E402
+from sympy import Eq  # noqa: E402
+from sympy.physics.vector import Vector  # noqa: E402
+
+al = Workspace("tutor5.al")
+
+# File:  tutor5.al      [Autolev: http://www.autolev.com]
+# Problem:  Four-Bar Linkage -- Equilibrium Configuration
+# -----
+# Newtonian, bodies, frames, particles, points
+# al> Newtonian      N
+N = al.newtonian("N")
+# al> Bodies        A, B, C
+A, B, C = al.bodies("A", "B", "C")
+Ao = al.point("AO")
+Bo = al.point("BO")
+Co = al.point("CO")
+A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
+# al> Points        O, P, Q, R
+O_, P, Q, R = al.points("O", "P", "Q", "R")
+# -----
+# Variables, constants, and specified
+# al> Variables      U{3}                % Generalized speeds
+U1, U2, U3 = al.variables("U1", "U2", "U3", line=10)
+# al> Variables      QA', QB', QC'        % Generalized coordinates; derivatives
+QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=11)
+# al> Constants      G=9.81                % Gravitational acceleration
+G = al.constants("G", line=12)
+al.assign("G", 9.81, line=12)
+# al> Constants      LA=1, LB=2, LC=2, LN=1 % Lengths
+LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=13)
+al.assign("LA", 1, line=13)
+al.assign("LB", 2, line=13)
+al.assign("LC", 2, line=13)
+al.assign("LN", 1, line=13)
+# al> Constants      H                      % Horizontal force on Q
+H = al.constants("H", line=14)
+# -----
+# Mass and inertia
+# al> Mass          A=MA=10, B=MB=20, C=MC=20
+MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=17)
+al.assign("MA", 10, line=17)
+al.set_mass(A, MA)
+al.assign("MB", 20, line=17)
+al.set_mass(B, MB)
+al.assign("MC", 20, line=17)
+al.set_mass(C, MC)
+# al> Inertia       A, 0, MA*LA^2/12, MA*LA^2/12
+al.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
+# al> Inertia       B, 0, MB*LB^2/12, MB*LB^2/12
+al.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
+# al> Inertia       C, 0, MC*LC^2/12, MC*LC^2/12
+al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
+# -----
+# Geometry relating unit vectors
+# al> Simprot(N, A, 3, QA)
+# sympy: A.orient_axis(N, N.z, QA)
+al.simprot(N, A, 3, QA, line=23)
+# al> Simprot(N, B, 3, QB)
+# sympy: B.orient_axis(N, N.z, QB)
+al.simprot(N, B, 3, QB, line=24)
+# al> Simprot(N, C, 3, QC)
+# sympy: C.orient_axis(N, N.z, QC)
+al.simprot(N, C, 3, QC, line=25)
+# -----
+# Position vectors
+# al> P_O_P> = LA*A1>
+al.set_pos(P, O_, LA * A.x, line=28)
+# al> P_P_Q> = LB*B1>
+al.set_pos(Q, P, LB * B.x, line=29)
+# al> P_R_Q> = LC*C1>
+al.set_pos(Q, R, LC * C.x, line=30)
+# al> P_O_R> = LN*N2>
+al.set_pos(R, O_, LN * N.y, line=31)
+# al> P_O_Ao> = 0.5*P_O_P>
+al.set_pos(Ao, O_, 0.5 * al.pos(O_, P), line=32)
+# al> P_P_Bo> = 0.5*P_P_Q>
+al.set_pos(Bo, P, 0.5 * al.pos(P, Q), line=33)
+# al> P_R_Co> = 0.5*P_R_Q>
+al.set_pos(Co, R, 0.5 * al.pos(R, Q), line=34)
+# -----
+# Kinematical differential equations
+# al> QA' = U1
+kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
+kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=37))
+# al> QB' = U2
+kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=38))
+# al> QC' = U3
+kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))
+# -----
+# Angular velocities
+# al> W_A_N> = QA'*A3>
+al.set_ang_vel(A, N, QA.diff(t) * A.z, line=42)
+# al> W_B_N> = QB'*B3>
+al.set_ang_vel(B, N, QB.diff(t) * B.z, line=43)
+# al> W_C_N> = QC'*C3>
+al.set_ang_vel(C, N, QC.diff(t) * C.z, line=44)
+# -----
+# Configuration Constraints
+# al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
+LOOP_vec = al.assign(
+    "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=47
+)
+# al> CONFIG[1] = Dot(LOOP>,N1>)
+CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=48)
+# al> CONFIG[2] = Dot(LOOP>,N2>)
+CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=49)
+# -----
+# Velocities
+# al> V_O_N> = 0>
+al.set_vel(O_, N, Vector(0), line=52)
+# al> V2pts(N, A, O, Ao)
+# sympy: Ao.v2pt_theory(O_, N, A)
+al.v2pts(N, A, O_, Ao, line=53)
+# al> V2pts(N, A, O, P)
+# sympy: P.v2pt_theory(O_, N, A)
+al.v2pts(N, A, O_, P, line=54)
+# al> V2pts(N, B, P, Bo)
+# sympy: Bo.v2pt_theory(P, N, B)
+al.v2pts(N, B, P, Bo, line=55)
+# al> V2pts(N, B, P, Q)
+# sympy: Q.v2pt_theory(P, N, B)
+al.v2pts(N, B, P, Q, line=56)
+# al> V2pts(N, C, Q, Co)
+# sympy: Co.v2pt_theory(Q, N, C)
+al.v2pts(N, C, Q, Co, line=57)
+# al> V2pts(N, C, Q, R)
+# sympy: R.v2pt_theory(Q, N, C)
+al.v2pts(N, C, Q, R, line=58)
+# -----
+# Motion constraints
+# al> DEPENDENT[1] = Dot(V_R_N>, N1>)
+DEPENDENT = al.assign("DEPENDENT[1]", al.dot(al.vel(R, N), N.x), line=61)
+# al> DEPENDENT[2] = Dot(V_R_N>, N2>)
+DEPENDENT = al.assign("DEPENDENT[2]", al.dot(al.vel(R, N), N.y), line=62)
+# al> Constrain( DEPENDENT[U2,U3] )
+al.constrain("DEPENDENT", [U2, U3], line=63)
+# -----
+# Forces
+# al> Gravity( G*N1> )
+al.gravity(G * N.x)
+# al> Force_Q> = H*N2>
+al.set_force(Q, H * N.y, line=67)
+# -----
+# Equations of motion
+# al> Zero = Fr()
+Zero = al.assign("ZERO", al.fr(), line=70)
+# al> Zero[2] = CONFIG[1]
+Zero = al.assign("ZERO[2]", CONFIG[0], line=71)
+# al> Zero[3] = CONFIG[2]
+Zero = al.assign("ZERO[3]", CONFIG[1], line=72)
+# -----
+# Units system for CODE input/output conversions
+# al> UnitSystem kg,meter,sec
+al.numerics.unit_system("kg", "meter", "sec")
+# -----
+# Input constants, variables, etc. for CODE
+# al> Input H=200 newton
+al.numerics.input({"H": (200, "newton")}, line=78)
+# al> Input QA=30 deg, QB=60 deg, QC=30 deg    % Guess
+al.numerics.input({"QA": (30, "deg"), "QB": (60, "deg"), "QC": (30, "deg")}, line=79)
+# al> Input absErr=1.0E-07, relErr=1.0E-07    % Error tolerances
+al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=80)
+# -----
+# MATLAB code generation for numerical solution
+# al> CODE Nonlinear( Zero, QA,QB,QC ) tutor5.m
+al.numerics.code("NONLINEAR", eqs=Zero, unknowns=[QA, QB, QC], file="tutor5.m", line=83)
+# -----
+# Record Autolev responses
+# al> Save tutor5.all
+al.save("tutor5.all")
+
+AUTOLEV = al.names()
+
+# The Autolev source, echoed in the transcript.
+AL_SOURCE = (
+    "%      File:  tutor5.al      [Autolev: http://www.autolev.com]",
+    "%      Problem:  Four-Bar Linkage -- Equilibrium Configuration",
+    "%-----",
+    "%      Newtonian, bodies, frames, particles, points",
+    "Newtonian      N",
+    "Bodies        A, B, C",
+    "Points        O, P, Q, R",
+    "%-----",
+    "%      Variables, constants, and specified",
+    "Variables      U{3}                % Generalized speeds",
+    "Variables      QA', QB', QC'        % Generalized coordinates; derivatives",
+    "Constants      G=9.81                % Gravitational acceleration",
+    "Constants      LA=1, LB=2, LC=2, LN=1 % Lengths",
+    "Constants      H                      % Horizontal force on Q",
+    "%-----",
+    "%      Mass and inertia",
+    "Mass          A=MA=10, B=MB=20, C=MC=20",
+    "Inertia       A, 0, MA*LA^2/12, MA*LA^2/12",
+    "Inertia       B, 0, MB*LB^2/12, MB*LB^2/12",
+    "Inertia       C, 0, MC*LC^2/12, MC*LC^2/12",
+    "%-----",
+    "%      Geometry relating unit vectors",
+    "Simprot(N, A, 3, QA)",
+    "Simprot(N, B, 3, QB)",
+    "Simprot(N, C, 3, QC)",
+    "%-----",
+    "%      Position vectors",
+    "P_O_P> = LA*A1>",
+    "P_P_Q> = LB*B1>",
+    "P_R_Q> = LC*C1>",
+    "P_O_R> = LN*N2>",
+    "P_O_Ao> = 0.5*P_O_P>",
+    "P_P_Bo> = 0.5*P_P_Q>",
+    "P_R_Co> = 0.5*P_R_Q>",
+    "%-----",
+    "%      Kinematical differential equations",
+    "QA' = U1",
+    "QB' = U2",
+    "QC' = U3",
+    "%-----",
+    "%      Angular velocities",
+    "W_A_N> = QA'*A3>",
+    "W_B_N> = QB'*B3>",
+    "W_C_N> = QC'*C3>",
+    "%-----",
+    "%      Configuration Constraints",
+    "LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>",
+    "CONFIG[1] = Dot(LOOP>,N1>)",
+    "CONFIG[2] = Dot(LOOP>,N2>)",
+    "%-----",
+    "%           Velocities",
+    "V_O_N> = 0>",
+    "V2pts(N, A, O, Ao)",
+    "V2pts(N, A, O, P)",
+    "V2pts(N, B, P, Bo)",
+    "V2pts(N, B, P, Q)",
+    "V2pts(N, C, Q, Co)",
+    "V2pts(N, C, Q, R)",
+    "%-----",
+    "%           Motion constraints",
+    "DEPENDENT[1] = Dot(V_R_N>, N1>)",
+    "DEPENDENT[2] = Dot(V_R_N>, N2>)",
+    "Constrain( DEPENDENT[U2,U3] )",
+    "%-----",
+    "%           Forces",
+    "Gravity( G*N1> )",
+    "Force_Q> = H*N2>",
+    "%-----",
+    "%           Equations of motion",
+    "Zero = Fr()",
+    "Zero[2] = CONFIG[1]",
+    "Zero[3] = CONFIG[2]",
+    "%-----",
+    "%           Units system for CODE input/output conversions",
+    "UnitSystem kg,meter,sec",
+    "%-----",
+    "%           Input constants, variables, etc. for CODE",
+    "Input H=200 newton",
+    "Input QA=30 deg, QB=60 deg, QC=30 deg    % Guess",
+    "Input absErr=1.0E-07, relErr=1.0E-07    % Error tolerances",
+    "%-----",
+    "%           MATLAB code generation for numerical solution",
+    "CODE Nonlinear( Zero, QA,QB,QC ) tutor5.m",
+    "%-----",
+    "%           Record Autolev responses",
+    "Save tutor5.all",
+)
+
+
+def run(values=None, /, **overrides):
+    """Perform this script's CODE job; keyword arguments override Inputs.
+
+    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
+    ``result["NAME"]`` is a numpy array with one value per output row.
+    """
+    return al.numerics.run(values, **overrides)
+
+
+al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
+
+
+def ode_function(values=None, /, **overrides):
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
+    the CODE job's equations of motion in internal units (SI, radians);
+    keyword arguments override Inputs as for ``run()``, which integrates
+    the same function."""
+    return al.numerics.ode_function(values, **overrides)
+
+
+def kanes_method():
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
+    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    return al.kanes_method()
+
+
+def evaluate(name, values=None, /, **given):
+    """The named Autolev quantity as a number (a numpy array for a matrix).
+
+    Input values (in their own units), the values given here and every named
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    """
+    return al.numerics.evaluate_name(name, values, **given)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python tutor5.py``: print the transcript, then run the CODE job."""
+    return al.main(AL_SOURCE, argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,395 @@
+"""Autolev script tutor9.al, converted to Python.
+
+Converted from tutor9.al by al2py 0.1.0; edit the .al file and
+convert again rather than editing this module.
+
+``import tutor9`` runs the symbolic part silently; ``AUTOLEV`` maps
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
+``python tutor9.py`` prints the transcript Autolev would print
+and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
+Python.
+"""
+
+import sys
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    # answered here, before sympy loads and the model is derived
+    sys.stdout.write(
+        "usage: python tutor9.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
+        " TFINAL]\n"
+        "                        [--outdir OUTDIR] [--plot]\n"
+        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
+        "sing]\n"
+        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
+        "\n"
+        "                        [--max-evals N]\n"
+        "\n"
+        "Print the Autolev transcript of tutor9.al and perform its numerical CO"
+        "DE job.\n"
+        "\n"
+        "options:\n"
+        "  -h, --help            show this help message and exit\n"
+        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
+        "n the\n"
+        "                        Input's unit\n"
+        "  --job STEM            perform (or with --emit-code, write) only the "
+        "CODE job\n"
+        "                        whose file is STEM (see the list below)\n"
+        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
+        "  --outdir OUTDIR       directory for every file the script writes: Sa"
+        "ve files,\n"
+        "                        output tables and plots, under their base name"
+        "s\n"
+        "                        (default: .)\n"
+        "  --plot                also write STEM.n.png plots\n"
+        "  --backend {auto,c,llvm,lambdify}\n"
+        "                        how Dynamics/ODE equations are evaluated (defa"
+        "ult:\n"
+        "                        $AL2PY_BACKEND or auto, the fastest available)"
+        "\n"
+        "  --zero-missing        use 0 for constants that no Input gives (by de"
+        "fault the\n"
+        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
+        "G=1)\n"
+        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
+        "DE names\n"
+        "                        it) and STEM.in of each CODE job into DIR (as "
+        "'al2py\n"
+        "                        code' does) instead of running\n"
+        "  --no-run              only print the transcript; perform no CODE job"
+        " and\n"
+        "                        write no file\n"
+        "  --max-seconds S       time budget of one integration (default 120; o"
+        "r\n"
+        "                        AL2PY_MAX_SECONDS)\n"
+        "  --max-evals N         right-hand-side evaluations allowed in one int"
+        "egration\n"
+        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
+        "\n"
+        "Input values (change with --set NAME=VALUE, in these units):\n"
+        "  TINITIAL = 0\n"
+        "  TFINAL = 20\n"
+        "  INTEGSTP = 0.1\n"
+        "  PRINTINT = 1\n"
+        "  ABSERR = 1.0E-07\n"
+        "  RELERR = 1.0E-07\n"
+        "  J = 0.07634\n"
+        "  I1 = 1.25\n"
+        "  I2 = 4.25\n"
+        "  I3 = 5\n"
+        "  OMEGA = -20.0\n"
+        "  U1 = 0\n"
+        "  U2 = 0.02\n"
+        "  U3 = 1\n"
+        "Jobs (--job STEM runs one; default: all, in script order):\n"
+        "  tutor9: CODE Dynamics tutor9.for (line 54) -> tutor9.1, ...\n"
+        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
+        "RELERR.\n"
+    )
+    raise SystemExit(0)
+
+from al2py_runtime import Workspace, t  # noqa: E402
+from al2py_runtime.functions import acos  # noqa: E402
+from sympy import Matrix  # noqa: E402
+from sympy.physics.vector import Vector  # noqa: E402
+
+al = Workspace("tutor9.al")
+
+# File:  tutor9.al      [Autolev: http://www.autolev.com]
+# Problem:  Spin stability of gyrostat
+# -----
+# Newtonian, bodies, frames, particles, points
+# al> Newtonian      N              % Newtonian reference frame
+N = al.newtonian("N")
+# al> Bodies         A              % Carrier
+A = al.bodies("A")
+Ao = al.point("AO")
+A_body = al.rigid_body(A)
+# al> Frames         B              % Rotor
+B = al.frames("B")
+# -----
+# Variables, constants, and specified
+# al> Variables      U{3}'         % Generalized speeds; derivatives
+U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=10)
+# al> Constants      OMEGA         % Angular speed of B in A
+OMEGA = al.constants("OMEGA", line=11)
+# al> Constants      J              % Moment of inertia of B about spin axis
+J = al.constants("J", line=12)
+# -----
+# Mass and inertia
+# al> Mass           A=M           % Attribute mass of G to A
+M = al.constants("M+", line=15)
+al.set_mass(A, M)
+# al> Inertia        A, I1, I2, I3 % Attribute inertia of G to A
+I1, I2, I3 = al.constants("I1+", "I2+", "I3+", line=16)
+al.set_inertia(A, I1, I2, I3)
+# -----
+# Angular velocities
+# al> W_A_N> = U1*A1> + U2*A2> + U3*A3>
+al.set_ang_vel(A, N, U1 * A.x + U2 * A.y + U3 * A.z, line=19)
+# al> W_B_A> = OMEGA*A3>
+al.set_ang_vel(B, A, OMEGA * A.z, line=20)
+# -----
+# Angular accelerations
+# al> ALF_A_N> = DT(W_A_N>, N)
+al.set_ang_acc(A, N, al.dt(al.ang_vel(A, N), N), line=23)
+# al> ALF_B_A> = DT(W_B_A>, A)
+al.set_ang_acc(B, A, al.dt(al.ang_vel(B, A), A), line=24)
+# -----
+# Acceleration of mass center of G is 0>
+# al> A_Ao_N> = 0>
+al.set_acc(Ao, N, Vector(0), line=27)
+# -----
+# Equations of motion
+# al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
+Zero = al.assign(
+    "ZERO", al.fr() + al.frstar() + al.gyrostat("FRSTAR", "CYLINDER", A, B, J), line=30
+)
+# al> Kane()
+Zero = al.kane(line=31)
+# -----
+# Angular momentum of gyrostat
+# al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
+H_vec = al.assign(
+    "H>",
+    al.momentum("ANGULAR", Ao) + al.gyrostat("ANGMOM", "CYLINDER", A, B, J),
+    line=34,
+)
+# al> H = Mag(H>)
+H = al.assign("H", al.mag(H_vec), line=35)
+# -----
+# Angle between angular momentum vector and A3>
+# al> PHI = acos( Dot( UNITVEC(H>), A3> ) )
+PHI = al.assign("PHI", acos(al.dot(al.unitvec(H_vec), A.z)), line=38)
+# -----
+# Units system for CODE input/output conversions
+# al> UnitSystem kg,meter,sec
+al.numerics.unit_system("kg", "meter", "sec")
+# -----
+# Input constants, variables, etc. for CODE
+# al> Input      tInitial=0,      tFinal=20          % Begin/end times
+al.numerics.input({"TINITIAL": 0, "TFINAL": 20}, line=44)
+# al> Input      integStp=0.1,    printInt=1          % Integration/print step
+al.numerics.input({"INTEGSTP": 0.1, "PRINTINT": 1}, line=45)
+# al> Input      absErr=1.0E-07,  relErr=1.0E-07       % Error tolerances
+al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=46)
+# al> Input      J=0.07634, I1=1.25, I2=4.25, I3=5
+al.numerics.input({"J": 0.07634, "I1": 1.25, "I2": 4.25, "I3": 5}, line=47)
+# al> Input  OMEGA=-20.0, U1=0, U2=0.02, U3=1
+al.numerics.input({"OMEGA": -20.0, "U1": 0, "U2": 0.02, "U3": 1}, line=48)
+# -----
+# Quantities to be output from CODE
+# al> Output T, PHI degs, H
+al.numerics.output([("T", t, None), ("PHI", PHI, "degs"), ("H", H, None)], line=51)
+# -----
+# Fortran code generation for numerical solution
+# al> CODE Dynamics() tutor9.for
+al.numerics.code("DYNAMICS", file="tutor9.for", line=54)
+# *****
+# STABILITY ANALYSIS
+# *****
+# Linearization: Perturbation vars + nominal solution parameters
+# al> Variables  dU{3}'          % Perturbations of U1, U2, U3
+dU1, dU2, dU3 = al.variables("DU1'", "DU2'", "DU3'", line=59)
+# al> Constants  nU3             % Nominal solution for U3
+nU3 = al.constants("NU3", line=60)
+# -----
+# Check nominal solution
+# al> CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)
+CHECK = al.assign(
+    "CHECK",
+    al.evaluate(
+        Zero, {U1: 0, U1.diff(t): 0, U2: 0, U2.diff(t): 0, U3: nU3, U3.diff(t): 0}
+    ),
+    line=63,
+)
+# -----
+# Linearize equations of motion about nominal solution
+# al> PETURB = Taylor(Zero, 1, U1=0:dU1, U1'=0:dU1', U2=0:dU2, U2'=0:dU2', &
+# al> U3=nU3:dU3, U3'=0:dU3')
+PETURB = al.assign(
+    "PETURB",
+    al.taylor(
+        Zero,
+        1,
+        [
+            (U1, 0, dU1),
+            (U1.diff(t), 0, dU1.diff(t)),
+            (U2, 0, dU2),
+            (U2.diff(t), 0, dU2.diff(t)),
+            (U3, nU3, dU3),
+            (U3.diff(t), 0, dU3.diff(t)),
+        ],
+    ),
+    line=66,
+)
+# al> Solve( PETURB,  dU{1:3}' )
+al.solve(PETURB, [dU1.diff(t), dU2.diff(t), dU3.diff(t)], line=68)
+# -----
+# Form, x, x', and the A matrix in the equation x'=A*x
+# al> Xm = [ dU1,  dU2,  dU3 ]
+Xm = al.assign("XM", Matrix([[dU1, dU2, dU3]]), line=71)
+# al> Xp = [ dU1'; dU2'; dU3' ]
+Xp = al.assign("XP", Matrix([dU1.diff(t), dU2.diff(t), dU3.diff(t)]), line=72)
+# al> Am = D( Xp, Xm )
+Am = al.assign("AM", al.d(Xp, Xm), line=73)
+# -----
+# To find eigenvalues of Am symbolically, find the roots of the
+# equation found by setting the determinant of LAMBDA*I-A = 0
+# al> Variables LAMBDA
+LAMBDA = al.variables("LAMBDA", line=77)
+# al> DET = Det( LAMBDA*DIAGMAT(3,1) - Am )
+DET = al.assign("DET", al.det(LAMBDA * al.diagmat(3, 1) - Am), line=78)
+# -----
+# Inspection of DET shows that LAMBDA=0 is a root
+# al> DET /= LAMBDA
+DET = al.assign("DET", al.val(DET) / (LAMBDA), line=81)
+# -----
+# With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,
+# determine the values of OMEGA which result in LAMBDA > 0
+# al> DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)
+DET = al.assign(
+    "DET", al.evaluate(DET, {J: 0.07634, I1: 1.25, I2: 4.25, I3: 5, nU3: 1}), line=85
+)
+# -----
+# Record Autolev responses
+# al> Save tutor9.all
+al.save("tutor9.all")
+
+AUTOLEV = al.names()
+
+# The Autolev source, echoed in the transcript.
+AL_SOURCE = (
+    "%      File:  tutor9.al      [Autolev: http://www.autolev.com]",
+    "%      Problem:  Spin stability of gyrostat",
+    "%-----",
+    "%      Newtonian, bodies, frames, particles, points",
+    "Newtonian      N              % Newtonian reference frame",
+    "Bodies         A              % Carrier",
+    "Frames         B              % Rotor",
+    "%-----",
+    "%      Variables, constants, and specified",
+    "Variables      U{3}'         % Generalized speeds; derivatives",
+    "Constants      OMEGA         % Angular speed of B in A",
+    "Constants      J              % Moment of inertia of B about spin axis",
+    "%-----",
+    "%      Mass and inertia",
+    "Mass           A=M           % Attribute mass of G to A",
+    "Inertia        A, I1, I2, I3 % Attribute inertia of G to A",
+    "%-----",
+    "%      Angular velocities",
+    "W_A_N> = U1*A1> + U2*A2> + U3*A3>",
+    "W_B_A> = OMEGA*A3>",
+    "%-----",
+    "%      Angular accelerations",
+    "ALF_A_N> = DT(W_A_N>, N)",
+    "ALF_B_A> = DT(W_B_A>, A)",
+    "%-----",
+    "%      Acceleration of mass center of G is 0>",
+    "A_Ao_N> = 0>",
+    "%-----",
+    "%      Equations of motion",
+    "Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)",
+    "Kane()",
+    "%-----",
+    "%      Angular momentum of gyrostat",
+    "H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)",
+    "H = Mag(H>)",
+    "%-----",
+    "%      Angle between angular momentum vector and A3>",
+    "PHI = acos( Dot( UNITVEC(H>), A3> ) )",
+    "%-----",
+    "%      Units system for CODE input/output conversions",
+    "UnitSystem kg,meter,sec",
+    "%-----",
+    "%      Input constants, variables, etc. for CODE",
+    "Input      tInitial=0,      tFinal=20          % Begin/end times",
+    "Input      integStp=0.1,    printInt=1          % Integration/print step",
+    "Input      absErr=1.0E-07,  relErr=1.0E-07       % Error tolerances",
+    "Input      J=0.07634, I1=1.25, I2=4.25, I3=5",
+    "Input  OMEGA=-20.0, U1=0, U2=0.02, U3=1",
+    "%-----",
+    "%      Quantities to be output from CODE",
+    "Output T, PHI degs, H",
+    "%-----",
+    "%      Fortran code generation for numerical solution",
+    "CODE Dynamics() tutor9.for",
+    "%*****",
+    "%      STABILITY ANALYSIS",
+    "%*****",
+    "%      Linearization: Perturbation vars + nominal solution parameters",
+    "Variables  dU{3}'          % Perturbations of U1, U2, U3",
+    "Constants  nU3             % Nominal solution for U3",
+    "%-----",
+    "%      Check nominal solution",
+    "CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)",
+    "%-----",
+    "%      Linearize equations of motion about nominal solution",
+    "PETURB = Taylor(Zero, 1, U1=0:dU1, U1'=0:dU1', U2=0:dU2, U2'=0:dU2', &",
+    "                U3=nU3:dU3, U3'=0:dU3')",
+    "Solve( PETURB,  dU{1:3}' )",
+    "%-----",
+    "%      Form, x, x', and the A matrix in the equation x'=A*x",
+    "Xm = [ dU1,  dU2,  dU3 ]",
+    "Xp = [ dU1'; dU2'; dU3' ]",
+    "Am = D( Xp, Xm )",
+    "%-----",
+    "%      To find eigenvalues of Am symbolically, find the roots of the",
+    "%      equation found by setting the determinant of LAMBDA*I-A = 0",
+    "Variables LAMBDA",
+    "DET = Det( LAMBDA*DIAGMAT(3,1) - Am )",
+    "%-----",
+    "%      Inspection of DET shows that LAMBDA=0 is a root",
+    "DET /= LAMBDA",
+    "%-----",
+    "%      With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,",
+    "%      determine the values of OMEGA which result in LAMBDA > 0",
+    "DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)",
+    "%-----",
+    "%      Record Autolev responses",
+    "Save tutor9.all",
+)
+
+
+def run(values=None, /, **overrides):
+    """Perform this script's CODE job; keyword arguments override Inputs.
+
+    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
+    ``result["NAME"]`` is a numpy array with one value per output row.
+    """
+    return al.numerics.run(values, **overrides)
+
+
+al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
+
+
+def ode_function(values=None, /, **overrides):
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
+    the CODE job's equations of motion in internal units (SI, radians);
+    keyword arguments override Inputs as for ``run()``, which integrates
+    the same function."""
+    return al.numerics.ode_function(values, **overrides)
+
+
+def kanes_method():
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
+    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    return al.kanes_method()
+
+
+def evaluate(name, values=None, /, **given):
+    """The named Autolev quantity as a number (a numpy array for a matrix).
+
+    Input values (in their own units), the values given here and every named
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    """
+    return al.numerics.evaluate_name(name, values, **given)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python tutor9.py``: print the transcript, then run the CODE job."""
+    return al.main(AL_SOURCE, argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,453 @@
+"""Autolev script whipple_benchmark.al, converted to Python.
+
+Converted from whipple_benchmark.al by al2py 0.1.0; edit the .al file and
+convert again rather than editing this module.
+
+``import whipple_benchmark`` runs the symbolic part silently; ``AUTOLEV`` maps
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
+``python whipple_benchmark.py`` prints the transcript Autolev would print.
+"""
+
+import sys
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    # answered here, before sympy loads and the model is derived
+    sys.stdout.write(
+        "usage: python whipple_benchmark.py [-h] [--set NAME=VALUE] [--job STEM"
+        "]\n"
+        "                                   [--tfinal TFINAL] [--outdir OUTDIR]"
+        " [--plot]\n"
+        "                                   [--backend {auto,c,llvm,lambdify}]\n"
+        "                                   [--zero-missing] [--emit-code DIR]\n"
+        "                                   [--no-run] [--max-seconds S] [--max"
+        "-evals N]\n"
+        "\n"
+        "Print the Autolev transcript of whipple_benchmark.al and perform its n"
+        "umerical CODE job.\n"
+        "\n"
+        "options:\n"
+        "  -h, --help            show this help message and exit\n"
+        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
+        "n the\n"
+        "                        Input's unit\n"
+        "  --job STEM            perform (or with --emit-code, write) only the "
+        "CODE job\n"
+        "                        whose file is STEM (see the list below)\n"
+        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
+        "  --outdir OUTDIR       directory for every file the script writes: Sa"
+        "ve files,\n"
+        "                        output tables and plots, under their base name"
+        "s\n"
+        "                        (default: .)\n"
+        "  --plot                also write STEM.n.png plots\n"
+        "  --backend {auto,c,llvm,lambdify}\n"
+        "                        how Dynamics/ODE equations are evaluated (defa"
+        "ult:\n"
+        "                        $AL2PY_BACKEND or auto, the fastest available)"
+        "\n"
+        "  --zero-missing        use 0 for constants that no Input gives (by de"
+        "fault the\n"
+        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
+        "G=1)\n"
+        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
+        "DE names\n"
+        "                        it) and STEM.in of each CODE job into DIR (as "
+        "'al2py\n"
+        "                        code' does) instead of running\n"
+        "  --no-run              only print the transcript; perform no CODE job"
+        " and\n"
+        "                        write no file\n"
+        "  --max-seconds S       time budget of one integration (default 120; o"
+        "r\n"
+        "                        AL2PY_MAX_SECONDS)\n"
+        "  --max-evals N         right-hand-side evaluations allowed in one int"
+        "egration\n"
+        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
+        "\n"
+        "Input values (change with --set NAME=VALUE, in these units):\n"
+        "  W = 1.02\n"
+        "  C = 0.08\n"
+        "  LAM = 0.314159265358979\n"
+        "  G = 9.81\n"
+        "  RR = 0.3\n"
+        "  RF = 0.35\n"
+        "  MR = 2\n"
+        "  MB = 85\n"
+        "  MH = 4\n"
+        "  MF = 3\n"
+        "  XB = 0.3\n"
+        "  ZB = -0.9\n"
+        "  XH = 0.9\n"
+        "  ZH = -0.7\n"
+        "  IRXX = 0.0603\n"
+        "  IRYY = 0.12\n"
+        "  IFXX = 0.1405\n"
+        "  IFYY = 0.28\n"
+        "  IBXX = 9.2\n"
+        "  IBYY = 11\n"
+        "  IBZZ = 2.8\n"
+        "  IBXZ = 2.4\n"
+        "  IHXX = 0.05892\n"
+        "  IHYY = 0.06\n"
+        "  IHZZ = 0.00708\n"
+        "  IHXZ = -0.00756\n"
+        "This script has no CODE statement: it only prints its transcript.\n"
+        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
+        "RELERR.\n"
+    )
+    raise SystemExit(0)
+
+from al2py_runtime import Workspace, t  # noqa: E402
+from sympy import Eq, Matrix  # noqa: E402
+
+al = Workspace("whipple_benchmark.al")
+
+# File: whipple_benchmark.al
+# Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,
+# Ruina and Schwab, Proc. R. Soc. A 463 (2007): rear wheel R, rear frame
+# with rider B, front frame and fork H, front wheel F; knife-edge wheels
+# rolling without slip on level ground.  Written for al2py's tests from the
+# paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.
+# -----
+# al> AutoZ ON                           % intermediates, as Autolev's Z's
+al.settings.set("Autoz", "ON")
+# al> Newtonian N
+N = al.newtonian("N")
+# al> Frames    Y, L, E            % heading, lean (roll), steer axis
+Y, L, E = al.frames("Y", "L", "E")
+# al> Bodies    R, B, H, F
+R, B, H, F = al.bodies("R", "B", "H", "F")
+Ro = al.point("RO")
+Bo = al.point("BO")
+Ho = al.point("HO")
+Fo = al.point("FO")
+R_body, B_body, H_body, F_body = (
+    al.rigid_body(R),
+    al.rigid_body(B),
+    al.rigid_body(H),
+    al.rigid_body(F),
+)
+# al> Points    P, S               % rear contact point, a point on the steer axis
+P, S = al.points("P", "S")
+# -----
+# Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
+# Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
+# al> Variables Q{8}'
+Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = al.variables(
+    "Q1'", "Q2'", "Q3'", "Q4'", "Q5'", "Q6'", "Q7'", "Q8'", line=16
+)
+# al> Variables U{8}'
+U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(
+    "U1'", "U2'", "U3'", "U4'", "U5'", "U6'", "U7'", "U8'", line=17
+)
+# al> Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt, gravity
+W, C, LAM, G = al.constants("W", "C", "LAM", "G", line=18)
+# al> Constants RR, RF                   % wheel radii
+RR, RF = al.constants("RR", "RF", line=19)
+# al> Constants XB, ZB, XH, ZH           % mass centres in the reference configuration
+XB, ZB, XH, ZH = al.constants("XB", "ZB", "XH", "ZH", line=20)
+# al> Constants IRXX, IRYY, IFXX, IFYY
+IRXX, IRYY, IFXX, IFYY = al.constants("IRXX", "IRYY", "IFXX", "IFYY", line=21)
+# al> Constants IBXX, IBYY, IBZZ, IBXZ
+IBXX, IBYY, IBZZ, IBXZ = al.constants("IBXX", "IBYY", "IBZZ", "IBXZ", line=22)
+# al> Constants IHXX, IHYY, IHZZ, IHXZ
+IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
+# -----
+# al> Mass    R=MR, B=MB, H=MH, F=MF
+MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
+al.set_mass(R, MR)
+al.set_mass(B, MB)
+al.set_mass(H, MH)
+al.set_mass(F, MF)
+# al> Inertia R, IRXX, IRYY, IRXX
+al.set_inertia(R, IRXX, IRYY, IRXX)
+# al> Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ
+al.set_inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
+# al> Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ
+al.set_inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
+# al> Inertia F, IFXX, IFYY, IFXX
+al.set_inertia(F, IFXX, IFYY, IFXX)
+# -----
+# al> Simprot(N, Y, 3, Q3)
+# sympy: Y.orient_axis(N, N.z, Q3)
+al.simprot(N, Y, 3, Q3, line=31)
+# al> Simprot(Y, L, 1, Q4)
+# sympy: L.orient_axis(Y, Y.x, Q4)
+al.simprot(Y, L, 1, Q4, line=32)
+# al> Simprot(L, B, 2, Q5)
+# sympy: B.orient_axis(L, L.y, Q5)
+al.simprot(L, B, 2, Q5, line=33)
+# al> Simprot(B, R, 2, Q6)
+# sympy: R.orient_axis(B, B.y, Q6)
+al.simprot(B, R, 2, Q6, line=34)
+# al> Simprot(B, E, 2, LAM)
+# sympy: E.orient_axis(B, B.y, LAM)
+al.simprot(B, E, 2, LAM, line=35)
+# H's axes are parallel to B's when the steer angle is zero.
+# al> Dircos(E, H, BODY321, Q7, -LAM, 0)
+al.dircos(E, H, "BODY321", Q7, -LAM, 0, line=37)
+# al> Simprot(H, F, 2, Q8)
+# sympy: F.orient_axis(H, H.y, Q8)
+al.simprot(H, F, 2, Q8, line=38)
+# -----
+# al> Q1' = U1
+kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
+kd_eqs.append(al.kd(Eq(Q1.diff(t), U1), line=40))
+# al> Q2' = U2
+kd_eqs.append(al.kd(Eq(Q2.diff(t), U2), line=41))
+# al> Q3' = U3
+kd_eqs.append(al.kd(Eq(Q3.diff(t), U3), line=42))
+# al> Q4' = U4
+kd_eqs.append(al.kd(Eq(Q4.diff(t), U4), line=43))
+# al> Q5' = U5
+kd_eqs.append(al.kd(Eq(Q5.diff(t), U5), line=44))
+# al> Q6' = U6
+kd_eqs.append(al.kd(Eq(Q6.diff(t), U6), line=45))
+# al> Q7' = U7
+kd_eqs.append(al.kd(Eq(Q7.diff(t), U7), line=46))
+# al> Q8' = U8
+kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))
+# -----
+# al> W_Y_N> = U3*N3>
+al.set_ang_vel(Y, N, U3 * N.z, line=49)
+# al> W_L_N> = W_Y_N> + U4*Y1>
+al.set_ang_vel(L, N, al.ang_vel(Y, N) + U4 * Y.x, line=50)
+# al> W_B_N> = W_L_N> + U5*L2>
+al.set_ang_vel(B, N, al.ang_vel(L, N) + U5 * L.y, line=51)
+# al> W_R_N> = W_B_N> + U6*B2>
+al.set_ang_vel(R, N, al.ang_vel(B, N) + U6 * B.y, line=52)
+# al> W_E_N> = W_B_N>
+al.set_ang_vel(E, N, al.ang_vel(B, N), line=53)
+# al> W_H_N> = W_B_N> + U7*E3>
+al.set_ang_vel(H, N, al.ang_vel(B, N) + U7 * E.z, line=54)
+# al> W_F_N> = W_H_N> + U8*H2>
+al.set_ang_vel(F, N, al.ang_vel(H, N) + U8 * H.y, line=55)
+# -----
+# al> P_P_Ro> = -RR*L3>
+al.set_pos(Ro, P, -RR * L.z, line=57)
+# al> P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>
+al.set_pos(Bo, Ro, XB * B.x + (ZB + RR) * B.z, line=58)
+# The steer axis meets the ground at distance W + C ahead of P.
+# al> P_Ro_S> = (W + C)*B1> + RR*B3>
+al.set_pos(S, Ro, (W + C) * B.x + RR * B.z, line=60)
+# al> P_S_Ho> = (XH - W - C)*H1> + ZH*H3>
+al.set_pos(Ho, S, (XH - W - C) * H.x + ZH * H.z, line=61)
+# al> P_S_Fo> = -C*H1> - RF*H3>
+al.set_pos(Fo, S, -C * H.x - RF * H.z, line=62)
+# al> DOWN> = Cross(H2>, Cross(N3>, H2>))
+DOWN_vec = al.assign("DOWN>", al.cross(H.y, al.cross(N.z, H.y)), line=63)
+# al> P_Fo_Q> = RF*UnitVec(DOWN>)
+P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.unitvec(DOWN_vec), line=64)
+# -----
+# al> V_P_N> = U1*N1> + U2*N2>
+al.set_vel(P, N, U1 * N.x + U2 * N.y, line=66)
+# al> V2pts(N, L, P, Ro)
+# sympy: Ro.v2pt_theory(P, N, L)
+al.v2pts(N, L, P, Ro, line=67)
+# al> V2pts(N, B, Ro, Bo)
+# sympy: Bo.v2pt_theory(Ro, N, B)
+al.v2pts(N, B, Ro, Bo, line=68)
+# al> V2pts(N, B, Ro, S)
+# sympy: S.v2pt_theory(Ro, N, B)
+al.v2pts(N, B, Ro, S, line=69)
+# al> V2pts(N, H, S, Ho)
+# sympy: Ho.v2pt_theory(S, N, H)
+al.v2pts(N, H, S, Ho, line=70)
+# al> V2pts(N, H, S, Fo)
+# sympy: Fo.v2pt_theory(S, N, H)
+al.v2pts(N, H, S, Fo, line=71)
+# -----
+# Rolling without slip: the wheels' material points at the contacts are at rest.
+# al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
+SLIPR_vec = al.assign(
+    "SLIPR>", al.vel(Ro, N) + al.cross(al.ang_vel(R, N), -al.pos(P, Ro)), line=74
+)
+# al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
+SLIPF_vec = al.assign(
+    "SLIPF>", al.vel(Fo, N) + al.cross(al.ang_vel(F, N), P_Fo_Q_vec), line=75
+)
+# al> DEPENDENT[1] = Dot(SLIPR>, N1>)
+DEPENDENT = al.assign("DEPENDENT[1]", al.dot(SLIPR_vec, N.x), line=76)
+# al> DEPENDENT[2] = Dot(SLIPR>, N2>)
+DEPENDENT = al.assign("DEPENDENT[2]", al.dot(SLIPR_vec, N.y), line=77)
+# al> DEPENDENT[3] = Dot(SLIPF>, N1>)
+DEPENDENT = al.assign("DEPENDENT[3]", al.dot(SLIPF_vec, N.x), line=78)
+# al> DEPENDENT[4] = Dot(SLIPF>, N2>)
+DEPENDENT = al.assign("DEPENDENT[4]", al.dot(SLIPF_vec, N.y), line=79)
+# al> DEPENDENT[5] = Dot(SLIPF>, N3>)
+DEPENDENT = al.assign("DEPENDENT[5]", al.dot(SLIPF_vec, N.z), line=80)
+# al> Constrain(DEPENDENT[U1, U2, U3, U5, U8])
+al.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
+# -----
+# al> Gravity(G*N3>)
+al.gravity(G * N.z)
+# al> Zero = Fr() + FrStar()
+Zero = al.assign("ZERO", al.fr() + al.frstar(), line=84)
+# al> Kane()
+Zero = al.kane(line=85)
+# Linearized equations about the upright reference configuration: the
+# accelerations of the independent speeds and their Jacobian by the lean
+# and steer angles and rates (the forward speed is U6 = -v/RR).
+# al> Solve(Zero, U4', U6', U7')
+al.solve(Zero, [U4.diff(t), U6.diff(t), U7.diff(t)], line=89)
+# al> XD = [U4'; U7']
+XD = al.assign("XD", Matrix([U4.diff(t), U7.diff(t)]), line=90)
+# al> XS = [Q4; Q7; U4; U7]
+XS = al.assign("XS", Matrix([Q4, Q7, U4, U7]), line=91)
+# al> AL = D(XD, XS)
+AL = al.assign("AL", al.d(XD, XS), line=92)
+# -----
+# Benchmark parameters, Table 1 of the paper.
+# al> Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81
+al.numerics.input({"W": 1.02, "C": 0.08, "LAM": 0.314159265358979, "G": 9.81}, line=95)
+# al> Input RR=0.3, RF=0.35, MR=2, MB=85, MH=4, MF=3
+al.numerics.input({"RR": 0.3, "RF": 0.35, "MR": 2, "MB": 85, "MH": 4, "MF": 3}, line=96)
+# al> Input XB=0.3, ZB=-0.9, XH=0.9, ZH=-0.7
+al.numerics.input({"XB": 0.3, "ZB": -0.9, "XH": 0.9, "ZH": -0.7}, line=97)
+# al> Input IRXX=0.0603, IRYY=0.12, IFXX=0.1405, IFYY=0.28
+al.numerics.input({"IRXX": 0.0603, "IRYY": 0.12, "IFXX": 0.1405, "IFYY": 0.28}, line=98)
+# al> Input IBXX=9.2, IBYY=11, IBZZ=2.8, IBXZ=2.4
+al.numerics.input({"IBXX": 9.2, "IBYY": 11, "IBZZ": 2.8, "IBXZ": 2.4}, line=99)
+# al> Input IHXX=0.05892, IHYY=0.06, IHZZ=0.00708, IHXZ=-0.00756
+al.numerics.input(
+    {"IHXX": 0.05892, "IHYY": 0.06, "IHZZ": 0.00708, "IHXZ": -0.00756}, line=100
+)
+
+AUTOLEV = al.names()
+
+# The Autolev source, echoed in the transcript.
+AL_SOURCE = (
+    "% File: whipple_benchmark.al",
+    "% Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,",
+    "%   Ruina and Schwab, Proc. R. Soc. A 463 (2007): rear wheel R, rear frame",
+    "%   with rider B, front frame and fork H, front wheel F; knife-edge wheels",
+    "%   rolling without slip on level ground.  Written for al2py's tests from the",
+    "%   paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.",
+    "%-----",
+    "AutoZ ON                           % intermediates, as Autolev's Z's",
+    "Newtonian N",
+    "Frames    Y, L, E            % heading, lean (roll), steer axis",
+    "Bodies    R, B, H, F",
+    "Points    P, S               % rear contact point, a point on the steer axis",
+    "%-----",
+    "% Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;",
+    "% Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.",
+    "Variables Q{8}'",
+    "Variables U{8}'",
+    (
+        "Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt"
+        ", gravity"
+    ),
+    "Constants RR, RF                   % wheel radii",
+    (
+        "Constants XB, ZB, XH, ZH           % mass centres in the reference con"
+        "figuration"
+    ),
+    "Constants IRXX, IRYY, IFXX, IFYY",
+    "Constants IBXX, IBYY, IBZZ, IBXZ",
+    "Constants IHXX, IHYY, IHZZ, IHXZ",
+    "%-----",
+    "Mass    R=MR, B=MB, H=MH, F=MF",
+    "Inertia R, IRXX, IRYY, IRXX",
+    "Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ",
+    "Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ",
+    "Inertia F, IFXX, IFYY, IFXX",
+    "%-----",
+    "Simprot(N, Y, 3, Q3)",
+    "Simprot(Y, L, 1, Q4)",
+    "Simprot(L, B, 2, Q5)",
+    "Simprot(B, R, 2, Q6)",
+    "Simprot(B, E, 2, LAM)",
+    "% H's axes are parallel to B's when the steer angle is zero.",
+    "Dircos(E, H, BODY321, Q7, -LAM, 0)",
+    "Simprot(H, F, 2, Q8)",
+    "%-----",
+    "Q1' = U1",
+    "Q2' = U2",
+    "Q3' = U3",
+    "Q4' = U4",
+    "Q5' = U5",
+    "Q6' = U6",
+    "Q7' = U7",
+    "Q8' = U8",
+    "%-----",
+    "W_Y_N> = U3*N3>",
+    "W_L_N> = W_Y_N> + U4*Y1>",
+    "W_B_N> = W_L_N> + U5*L2>",
+    "W_R_N> = W_B_N> + U6*B2>",
+    "W_E_N> = W_B_N>",
+    "W_H_N> = W_B_N> + U7*E3>",
+    "W_F_N> = W_H_N> + U8*H2>",
+    "%-----",
+    "P_P_Ro> = -RR*L3>",
+    "P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>",
+    "% The steer axis meets the ground at distance W + C ahead of P.",
+    "P_Ro_S> = (W + C)*B1> + RR*B3>",
+    "P_S_Ho> = (XH - W - C)*H1> + ZH*H3>",
+    "P_S_Fo> = -C*H1> - RF*H3>",
+    "DOWN> = Cross(H2>, Cross(N3>, H2>))",
+    "P_Fo_Q> = RF*UnitVec(DOWN>)",
+    "%-----",
+    "V_P_N> = U1*N1> + U2*N2>",
+    "V2pts(N, L, P, Ro)",
+    "V2pts(N, B, Ro, Bo)",
+    "V2pts(N, B, Ro, S)",
+    "V2pts(N, H, S, Ho)",
+    "V2pts(N, H, S, Fo)",
+    "%-----",
+    (
+        "% Rolling without slip: the wheels' material points at the contacts ar"
+        "e at rest."
+    ),
+    "SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)",
+    "SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)",
+    "DEPENDENT[1] = Dot(SLIPR>, N1>)",
+    "DEPENDENT[2] = Dot(SLIPR>, N2>)",
+    "DEPENDENT[3] = Dot(SLIPF>, N1>)",
+    "DEPENDENT[4] = Dot(SLIPF>, N2>)",
+    "DEPENDENT[5] = Dot(SLIPF>, N3>)",
+    "Constrain(DEPENDENT[U1, U2, U3, U5, U8])",
+    "%-----",
+    "Gravity(G*N3>)",
+    "Zero = Fr() + FrStar()",
+    "Kane()",
+    "% Linearized equations about the upright reference configuration: the",
+    "% accelerations of the independent speeds and their Jacobian by the lean",
+    "% and steer angles and rates (the forward speed is U6 = -v/RR).",
+    "Solve(Zero, U4', U6', U7')",
+    "XD = [U4'; U7']",
+    "XS = [Q4; Q7; U4; U7]",
+    "AL = D(XD, XS)",
+    "%-----",
+    "% Benchmark parameters, Table 1 of the paper.",
+    "Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81",
+    "Input RR=0.3, RF=0.35, MR=2, MB=85, MH=4, MF=3",
+    "Input XB=0.3, ZB=-0.9, XH=0.9, ZH=-0.7",
+    "Input IRXX=0.0603, IRYY=0.12, IFXX=0.1405, IFYY=0.28",
+    "Input IBXX=9.2, IBYY=11, IBZZ=2.8, IBXZ=2.4",
+    "Input IHXX=0.05892, IHYY=0.06, IHZZ=0.00708, IHXZ=-0.00756",
+)
+
+
+def kanes_method():
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
+    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    return al.kanes_method()
+
+
+def evaluate(name, values=None, /, **given):
+    """The named Autolev quantity as a number (a numpy array for a matrix).
+
+    Input values (in their own units), the values given here and every named
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    """
+    return al.numerics.evaluate_name(name, values, **given)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python whipple_benchmark.py``: print the transcript."""
+    return al.main(AL_SOURCE, argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
