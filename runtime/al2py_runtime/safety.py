@@ -113,27 +113,6 @@ _ECHO = "# al> "
 _LINE_ARG = re.compile(r"\bline=(\d+)")
 
 
-def _al_source(lines: list[str]) -> list[str] | None:
-    import ast
-
-    try:
-        tree = ast.parse("".join(lines))
-    except (SyntaxError, ValueError):
-        return None
-    for node in tree.body:
-        if (
-            isinstance(node, ast.Assign)
-            and len(node.targets) == 1
-            and isinstance(node.targets[0], ast.Name)
-            and node.targets[0].id == "AL_SOURCE"
-        ):
-            try:
-                return list(ast.literal_eval(node.value))
-            except (ValueError, TypeError, SyntaxError):
-                return None
-    return None
-
-
 def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
     """``(index, text)`` of the ``# al>`` echo at or above Python line
     ``pyline`` of a generated module's ``lines``: the Autolev statement that
@@ -152,12 +131,17 @@ def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
 
 def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
     """``(line, source text)`` of the ``.al`` statement that Python line
-    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown)."""
+    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown):
+    the ``line=`` its call passes, else the ``# al>`` line above it (the
+    ``k``-th line the module echoes is line ``k`` of the ``.al`` file)."""
+    from .names.transcript import echo_records
+
     lines = linecache.getlines(module_file, module_globals)
     start, echoed = echo_above(lines, pyline)
     if start is None:
         return None, ""
-    source = _al_source(lines) or []
+    records = echo_records(lines)
+    source = [text for _, text in records]
     end = start + 1
     while end < len(lines) and not lines[end].lstrip().startswith(_ECHO):
         end += 1
@@ -166,19 +150,9 @@ def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
         if m:
             n = int(m.group(1))
             return n, source[n - 1] if 0 < n <= len(source) else echoed
-    # the k-th statement echoing this text is on the k-th source line with it
-    k = sum(
-        1
-        for text in lines[: start + 1]
-        if text.lstrip().startswith(_ECHO)
-        and text.lstrip()[len(_ECHO) :].rstrip() == echoed
-    )
-    seen = 0
-    for number, text in enumerate(source, start=1):
-        if text.strip() and text.strip().startswith(echoed.strip()):
-            seen += 1
-            if seen == k:
-                return number, text
+    for number, (index, text) in enumerate(records, start=1):
+        if index == start:
+            return number, text
     return None, echoed
 
 
@@ -305,7 +279,9 @@ def located(
 
 
 def _source_line(module_file: str, line: int, module_globals: Any) -> str:
-    source = _al_source(linecache.getlines(module_file, module_globals)) or []
+    from .names.transcript import module_source
+
+    source = module_source(module_file, module_globals)
     return source[line - 1] if 0 < line <= len(source) else ""
 
 

@@ -26,7 +26,7 @@ import functools
 import gc
 import sys
 import weakref
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -100,11 +100,17 @@ class Workspace(Mapping):
     # Its commands (``al.simprot``, ``al.fr``...) are methods of this class
     # too: see :func:`_offer_model_commands` below the class.
 
-    def main(self, source_lines: Any, argv: Any = None) -> int:
-        """The ``python module.py`` entry point (see :mod:`.cli`)."""
+    def main(
+        self, source: str | Sequence[str], argv: Sequence[str] | None = None
+    ) -> int:
+        """The ``python module.py`` entry point (see :mod:`.cli`): ``source``
+        is the module's file, whose ``# al>`` lines are the ``.al`` source
+        the transcript echoes (or those source lines themselves)."""
         from .cli import main
+        from .names.transcript import module_source
 
-        return main(self, source_lines, argv)
+        lines = module_source(source) if isinstance(source, str) else list(source)
+        return main(self, lines, argv)
 
     # ------------------------------------------------------------ mapping API
 

@@ -15,6 +15,7 @@ import textwrap
 from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
+from al2py_runtime.names.transcript import echo_lines
 from al2py_runtime.vocabulary import BUILTINS, Builtin, Decl, Form, Kind, Match, Style
 
 from . import ir
@@ -84,6 +85,7 @@ class Generator:
         self.help_jobs: list[tuple[str, str | None, int]] = []
         self.has_kane = False  # Fr() or FrStar() was generated
         self._kd_started = False  # ``kd_eqs = []`` was emitted
+        self._echoed = 0  # lines of the .al echoed so far
 
     # ------------------------------------------------------------ driving
 
@@ -99,6 +101,7 @@ class Generator:
                 raise SemanticError(
                     "this statement is too deeply nested to convert", stmt.span
                 ) from None
+        out.extend(self.echo_through(len(self.lines)))
         return out
 
     def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
@@ -108,35 +111,25 @@ class Generator:
         if emit is None:
             raise InternalError(f"no emitter for {type(stmt).__name__}")
         code = emit(stmt)
-        if isinstance(stmt, ir.Comment) or line is not None:
+        if line is not None:
             return code
-        return [*self.echo(stmt), *code]
-
-    def echo(self, stmt: ir.Stmt) -> list[str]:
-        """The ``.al`` source of a statement, as Python comments."""
         span = stmt.span
-        first, last = span.line, max(span.end_line, span.line)
-        text = [
-            self.lines[i - 1].strip()
-            for i in range(first, last + 1)
-            if i <= len(self.lines)
-        ]
-        if first == last and 0 < first <= len(self.lines) and span.end_col:
-            # ``a = 1; b = 2``: each statement echoes its own text.
-            line = self.lines[first - 1]
-            before = line[: span.col - 1].strip()
-            after = line[span.end_col - 1 :].split("%", 1)[0].strip().lstrip(";")
-            if before or after.strip():
-                text = [line[span.col - 1 : span.end_col - 1].strip() + ";"]
-        return [c for t in text if t for c in comment_lines(t, prefix="al> ")]
+        return [*self.echo_through(max(span.end_line, span.line)), *code]
+
+    def echo_through(self, last: int) -> list[str]:
+        """The ``.al`` lines up to ``last`` not yet echoed, as ``# al>``
+        comments: each line of the file appears once in the module, and the
+        transcript reads its source from them (``names.transcript``)."""
+        out: list[str] = []
+        while self._echoed < min(last, len(self.lines)):
+            out.extend(echo_lines(self.lines[self._echoed]))
+            self._echoed += 1
+        return out
 
     # -------------------------------------------------------- statements
 
     def stmt_Comment(self, stmt: ir.Comment) -> list[str]:
-        text = stmt.text.strip()
-        if stmt.code_comment:
-            text = "%" + text
-        return comment_lines(text) if text else ["#"]
+        return []  # its line is echoed as it stands
 
     def stmt_Setting(self, stmt: ir.Setting) -> list[str]:
         value = stmt.value or ""

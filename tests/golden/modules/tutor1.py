@@ -12,62 +12,44 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor1.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor1.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "This script has no CODE statement: it only prints its transcript.\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor1.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor1.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+This script has no CODE statement: it only prints its transcript.
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace  # noqa: E402
@@ -76,24 +58,24 @@ from sympy import Matrix, pi  # noqa: E402
 
 al = Workspace("tutor1.al")
 
-# File: tutorial [Autolev: http://www.autolev.com]
-# Problem: Examples of mathematical functions
-# -----
-# Mathematical declarations: variables, constants
+# al> % File: tutorial [Autolev: http://www.autolev.com]
+# al> % Problem: Examples of mathematical functions
+# al> %-----
+# al> % Mathematical declarations: variables, constants
 # al> Variables X', Y'
 X, Y = al.variables("X'", "Y'", line=5)
 # al> Constants A,B,C,D
 A, B, C, D = al.constants("A", "B", "C", "D", line=6)
-# -----
-# Create an expression and then rearrange (simplify) it
+# al> %-----
+# al> % Create an expression and then rearrange (simplify) it
 # al> E = (X+2*Y)^2 + 3*(7+X)*(X+Y) % Create an expression
 E = al.assign("E", (X + 2 * Y) ** 2 + 3 * (7 + X) * (X + Y), line=9)
 # al> Expand( E, 1:2 ) % Clear parentheses
 E = al.update("E", al.expand(E, (1, 2)), line=10)
 # al> Factor( E, X ) % Factor on X
 E = al.update("E", al.factor(E, X), line=11)
-# -----
-# Mathematical commands
+# al> %-----
+# al> % Mathematical commands
 # al> Dy = D( E, Y ) % Partial derivative wrt. Y
 Dy = al.assign("DY", al.d(E, Y), line=14)
 # al> Dt = Dt( E ) % Total derivative wrt. t
@@ -108,8 +90,8 @@ POLY = al.assign("POLY", al.polynomial(Matrix([[A, B, C]]), X), line=18)
 ROOT1 = al.assign("ROOT1", al.roots(Matrix([1, 2, 3, 4])), line=19)
 # al> ROOT2 = Roots( POLY, X, 2 ) % Some symbolic roots
 ROOT2 = al.assign("ROOT2", al.roots(POLY, X, 2), line=20)
-# -----
-# Creating row or column matrices
+# al> %-----
+# al> % Creating row or column matrices
 # al> RowMatrix = [1, 2, 3, 4] % Create a 1x4 matrix
 RowMatrix = al.assign("ROWMATRIX", Matrix([[1, 2, 3, 4]]), line=23)
 # al> ColMatrix = [1; 2; 3; 4] % Create a 4x1 matrix
@@ -118,20 +100,20 @@ ColMatrix = al.assign("COLMATRIX", Matrix([1, 2, 3, 4]), line=24)
 Zero = al.assign("ZERO[1]", A * X + B * Y - 1, line=25)
 # al> Zero[2] = C*X + D*Y - Pi
 Zero = al.assign("ZERO[2]", C * X + D * Y - pi, line=26)
-# -----
-# Solve a set of linear equations
+# al> %-----
+# al> % Solve a set of linear equations
 # al> Solve( Zero, X, Y )
 al.solve(Zero, [X, Y], line=29)
-# -----
-# Creating rectangular matrices
+# al> %-----
+# al> % Creating rectangular matrices
 # al> M0 = [A, B; C, 0] % Create a 2x2 matrix
 M0 = al.assign("M0", Matrix([[A, B], [C, 0]]), line=32)
 # al> M0[2,2] := D % Assign element of rectangular matrix
 M0 = al.assign("M0[2,2]", D, line=33)
 # al> M1 = [M0, [1,2;3,4] ] % Elements of matrices can be matrices
 M1 = al.assign("M1", al.block([[M0, Matrix([[1, 2], [3, 4]])]]), line=34)
-# -----
-# Matrix commands
+# al> %-----
+# al> % Matrix commands
 # al> M2 = M0 + M0 % Matrix addition
 M2 = al.assign("M2", M0 + M0, line=37)
 # al> M3 = M0 * M0 % Matrix multiplication
@@ -156,64 +138,10 @@ M9 = al.assign("M9", al.evaluate(M0, {A: 1, B: 2, C: 3, D: 4}), line=46)
 LAMBDA = al.assign("LAMBDA", al.eig(M9), line=47)
 # al> Eig( M9, EigValue, EigVec) % Eigenvalues/eigenvectors
 EigValue, EigVec = al.assign_all(("EIGVALUE", "EIGVEC"), al.eig_vectors(M9), line=48)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> % Record Autolev responses
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "% File: tutorial [Autolev: http://www.autolev.com]",
-    "% Problem: Examples of mathematical functions",
-    "%-----",
-    "% Mathematical declarations: variables, constants",
-    "Variables X', Y'",
-    "Constants A,B,C,D",
-    "%-----",
-    "% Create an expression and then rearrange (simplify) it",
-    "E = (X+2*Y)^2 + 3*(7+X)*(X+Y) % Create an expression",
-    "Expand( E, 1:2 ) % Clear parentheses",
-    "Factor( E, X ) % Factor on X",
-    "%-----",
-    "% Mathematical commands",
-    "Dy = D( E, Y ) % Partial derivative wrt. Y",
-    "Dt = Dt( E ) % Total derivative wrt. t",
-    "TY = Taylor( X*COS(Y), 0:7, X=0,Y=0) % Multi-variable Taylor series",
-    "F = Evaluate(TY, X=1, Y=0.5) % Symbolic/numerical evaluation",
-    "POLY = Polynomial( [A,B,C], X ) % Creates A*X^2 +B*X +C",
-    "ROOT1 = Roots( [1; 2; 3; 4] ) % Roots of X^3+2*X^2+3*X+4 = 0",
-    "ROOT2 = Roots( POLY, X, 2 ) % Some symbolic roots",
-    "%-----",
-    "% Creating row or column matrices",
-    "RowMatrix = [1, 2, 3, 4] % Create a 1x4 matrix",
-    "ColMatrix = [1; 2; 3; 4] % Create a 4x1 matrix",
-    "Zero[1] = A*X + B*Y - 1 % Assign elements of column matrix",
-    "Zero[2] = C*X + D*Y - Pi",
-    "%-----",
-    "% Solve a set of linear equations",
-    "Solve( Zero, X, Y )",
-    "%-----",
-    "% Creating rectangular matrices",
-    "M0 = [A, B; C, 0] % Create a 2x2 matrix",
-    "M0[2,2] := D % Assign element of rectangular matrix",
-    "M1 = [M0, [1,2;3,4] ] % Elements of matrices can be matrices",
-    "%-----",
-    "% Matrix commands",
-    "M2 = M0 + M0 % Matrix addition",
-    "M3 = M0 * M0 % Matrix multiplication",
-    "M4 = Transpose(M0) % Matrix transposition",
-    "M5 = Inv(M0) % Matrix inversion",
-    "M6 = Diagmat(3,1) % Makes 3x3 matrix with 1 along diagonal",
-    "M7 = Cols( M0, 1 ) % Returns column 1 of M0",
-    "M8 = Rows( M0, 2, 1:2) % Returns rows 2 and rows 1 through 2 of M0",
-    "N1 = Rows( M0 ) % Returns the number of rows in M0",
-    "N2 = Det( M0 ) % Determinant of a matrix",
-    "M9 = Evaluate( M0, A=1, B=2, C=3, D=4 )",
-    "LAMBDA = Eig( M9 ) % Eigenvalues",
-    "Eig( M9, EigValue, EigVec) % Eigenvalues/eigenvectors",
-    "%-----",
-    "% Record Autolev responses",
-)
 
 
 def evaluate(name, values=None, /, **given):
@@ -227,7 +155,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor1.py``: print the transcript."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

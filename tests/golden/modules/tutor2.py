@@ -14,63 +14,45 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor2.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor2.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor2: CODE Algebraic tutor2.c (line 56) -> tutor2.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor2.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor2.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor2: CODE Algebraic tutor2.c (line 56) -> tutor2.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace  # noqa: E402
@@ -78,13 +60,13 @@ from al2py_runtime.functions import acos_deg  # noqa: E402
 
 al = Workspace("tutor2.al")
 
-# File: tutor2.al [Autolev: http://www.autolev.com]
-# Problem: Mass and inertia calculations
-# -----
+# al> % File: tutor2.al [Autolev: http://www.autolev.com]
+# al> % Problem: Mass and inertia calculations
+# al> %-----
 # al> Degrees ON % Online calculations of PHI in degrees
 al.settings.set("Degrees", "ON")
-# -----
-# Physical declarations: bodies, points
+# al> %-----
+# al> % Physical declarations: bodies, points
 # al> Bodies A, B, C % Right, middle, top plate
 A, B, C = al.bodies("A", "B", "C")
 Ao = al.point("AO")
@@ -95,15 +77,15 @@ A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
 O_, P = al.points("O", "P")
 # al> Points CM % Center of mass of system
 CM = al.points("CM")
-# -----
-# Mathematical declarations: variables, constants
+# al> %-----
+# al> % Mathematical declarations: variables, constants
 # al> Variables PHI % Angle between plates A and B
 PHI = al.variables("PHI", line=12)
 # al> Constants W=1 % Width of plate
 W = al.constants("W", line=13)
 al.assign("W", 1, line=13)
-# -----
-# Mass and inertia
+# al> %-----
+# al> % Mass and inertia
 # al> Mass A=M=12, B=M, C=M
 M = al.constants("M+", line=16)
 al.assign("M", 12, line=16)
@@ -116,15 +98,15 @@ al.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
 al.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
 # al> Inertia C, M*W^2/12, M*W^2/6, M*W^2/12
 al.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> % Geometry relating unit vectors
 # al> Simprot(A, B, -2, PHI)
 # sympy: B.orient_axis(A, -A.y, PHI)
 al.simprot(A, B, -2, PHI, line=22)
 # al> A_C = Diagmat(3,1) % 3x3 identity matrix
 al.set_dcm(A, C, al.diagmat(3, 1), line=23)
-# -----
-# Position vectors (Ao, Bo, Co are mass centers)
+# al> %-----
+# al> % Position vectors (Ao, Bo, Co are mass centers)
 # al> P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>
 al.set_pos(Ao, O_, -0.5 * W * A.x + 0.5 * W * A.y, line=26)
 # al> P_O_Bo> = -W*A1> + 0.5*W*A2> + 0.5*W*B1>
@@ -133,14 +115,14 @@ al.set_pos(Bo, O_, -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x, line=27)
 al.set_pos(Co, O_, W * A.y - 0.5 * W * C.x - 0.5 * W * C.z, line=28)
 # al> P_O_P> = W*A2> - W*C3>
 al.set_pos(P, O_, W * A.y - W * C.z, line=29)
-# -----
-# Center of mass of system
+# al> %-----
+# al> % Center of mass of system
 # al> P_O_CM> = CM(O)
 al.set_pos(CM, O_, al.cm(O_), line=32)
 # al> Distance = Mag( P_O_CM> )
 Distance = al.assign("DISTANCE", al.mag(al.pos(O_, CM)), line=33)
-# -----
-# Inertia dyadics of system about CM and O
+# al> %-----
+# al> % Inertia dyadics of system about CM and O
 # al> I_SYSTEM_CM>> = Inertia(CM, A, B, C) % Central inertia dyadic
 I_SYSTEM_CM_dyad = al.assign("I_SYSTEM_CM>>", al.inertia(CM, A, B, C), line=36)
 # al> I_SYSTEM_CM = Represent( I_SYSTEM_CM>>, A) % Central inertia matrix
@@ -157,8 +139,8 @@ EVEC = al.assign("EVEC", al.rows(EIGENVECS, 1), line=39)
 EVEC_vec = al.assign("EVEC>", al.represent(EVEC, A), line=40)
 # al> ANGLE = acos( DOT(EVEC>,A2>) ) % Angle between EVEC>, A2>
 ANGLE = al.assign("ANGLE", acos_deg(al.dot(EVEC_vec, A.y)), line=41)
-# -----
-# Moment of inertia of system about line joining O and P
+# al> %-----
+# al> % Moment of inertia of system about line joining O and P
 # al> I_SYSTEM_O>> = Inertia(O) % Inertia dyadic about point O
 I_SYSTEM_O_dyad = al.assign("I_SYSTEM_O>>", al.inertia(O_), line=44)
 # al> Express(I_SYSTEM_O>>, A) % Express in terms of A1>, A2>, A3>
@@ -171,8 +153,8 @@ IL = al.assign("IL", al.dot(L_vec, al.dot(I_SYSTEM_O_dyad, L_vec)), line=47)
 MTOTAL = al.assign("MTOTAL", al.mass_of(), line=48)
 # al> GYRATION = (IL / MTOTAL)^0.5 % Radius of gyration about L
 GYRATION = al.assign("GYRATION", (IL / MTOTAL) ** 0.5, line=49)
-# -----
-# Output and units for use in program created by CODE command
+# al> %-----
+# al> % Output and units for use in program created by CODE command
 # al> UnitSystem kg, meter, sec
 al.numerics.unit_system("kg", "meter", "sec")
 # al> Output PHI degrees, DISTANCE meters, GYRATION meters
@@ -184,79 +166,16 @@ al.numerics.output(
     ],
     line=53,
 )
-# -----
-# C code generation for numerical solution
+# al> %-----
+# al> % C code generation for numerical solution
 # al> CODE Algebraic() [PHI deg=0,360,1] tutor2.c
 al.numerics.code("ALGEBRAIC", sweep=(PHI, "deg", 0, 360, 1), file="tutor2.c", line=56)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> % Record Autolev responses
 # al> Save tutor2.all
 al.save("tutor2.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "% File: tutor2.al [Autolev: http://www.autolev.com]",
-    "% Problem: Mass and inertia calculations",
-    "%-----",
-    "Degrees ON % Online calculations of PHI in degrees",
-    "%-----",
-    "% Physical declarations: bodies, points",
-    "Bodies A, B, C % Right, middle, top plate",
-    "Points O, P % Points on L",
-    "Points CM % Center of mass of system",
-    "%-----",
-    "% Mathematical declarations: variables, constants",
-    "Variables PHI % Angle between plates A and B",
-    "Constants W=1 % Width of plate",
-    "%-----",
-    "% Mass and inertia",
-    "Mass A=M=12, B=M, C=M",
-    "Inertia A, M*W^2/12, M*W^2/12, M*W^2/6",
-    "Inertia B, M*W^2/12, M*W^2/12, M*W^2/6",
-    "Inertia C, M*W^2/12, M*W^2/6, M*W^2/12",
-    "%-----",
-    "% Geometry relating unit vectors",
-    "Simprot(A, B, -2, PHI)",
-    "A_C = Diagmat(3,1) % 3x3 identity matrix",
-    "%-----",
-    "% Position vectors (Ao, Bo, Co are mass centers)",
-    "P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>",
-    "P_O_Bo> = -W*A1> + 0.5*W*A2> + 0.5*W*B1>",
-    "P_O_Co> = W*A2> - 0.5*W*C1> - 0.5*W*C3>",
-    "P_O_P> = W*A2> - W*C3>",
-    "%-----",
-    "% Center of mass of system",
-    "P_O_CM> = CM(O)",
-    "Distance = Mag( P_O_CM> )",
-    "%-----",
-    "% Inertia dyadics of system about CM and O",
-    "I_SYSTEM_CM>> = Inertia(CM, A, B, C) % Central inertia dyadic",
-    "I_SYSTEM_CM = Represent( I_SYSTEM_CM>>, A) % Central inertia matrix",
-    "Eig( Evaluate(I_SYSTEM_CM, PHI=90), LAMBDA, EIGENVECS )",
-    "EVEC = Rows(EIGENVECS, 1) % Extract eigenvector",
-    "EVEC> = Represent( EVEC, A ) % Corresponding unit vector",
-    "ANGLE = acos( DOT(EVEC>,A2>) ) % Angle between EVEC>, A2>",
-    "%-----",
-    "% Moment of inertia of system about line joining O and P",
-    "I_SYSTEM_O>> = Inertia(O) % Inertia dyadic about point O",
-    "Express(I_SYSTEM_O>>, A) % Express in terms of A1>, A2>, A3>",
-    "L> = Unitvec( P_O_P> ) % Unit vector parallel to line L",
-    "IL = Dot(L>, DOT(I_SYSTEM_O>>, L>)) % Moment of inertia about L",
-    "MTOTAL = Mass() % Mass of system",
-    "GYRATION = (IL / MTOTAL)^0.5 % Radius of gyration about L",
-    "%-----",
-    "% Output and units for use in program created by CODE command",
-    "UnitSystem kg, meter, sec",
-    "Output PHI degrees, DISTANCE meters, GYRATION meters",
-    "%-----",
-    "% C code generation for numerical solution",
-    "CODE Algebraic() [PHI deg=0,360,1] tutor2.c",
-    "%-----",
-    "% Record Autolev responses",
-    "Save tutor2.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -290,7 +209,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor2.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

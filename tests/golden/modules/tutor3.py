@@ -14,95 +14,77 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor3.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor3.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  LA = 1 m\n"
-        "  LB = 2 m\n"
-        "  LC = 2 m\n"
-        "  LN = 1 m\n"
-        "  QA = 30 deg\n"
-        "  QB = 60 deg\n"
-        "  QC = 20 deg\n"
-        "  ABSERR = 1.0E-07\n"
-        "  RELERR = 1.0E-07\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor3: CODE Nonlinear tutor3.for (line 35) -> tutor3.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor3.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor3.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  LA = 1 m
+  LB = 2 m
+  LC = 2 m
+  LN = 1 m
+  QA = 30 deg
+  QB = 60 deg
+  QC = 20 deg
+  ABSERR = 1.0E-07
+  RELERR = 1.0E-07
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor3: CODE Nonlinear tutor3.for (line 35) -> tutor3.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace  # noqa: E402
 
 al = Workspace("tutor3.al")
 
-# File:  tutor3.al      [Autolev: http://www.autolev.com]
-# Problem:  Solving a set of nonlinear equations (4-bar linkage)
-# -----
-# Physical declarations:  Frames and Points
+# al> %      File:  tutor3.al      [Autolev: http://www.autolev.com]
+# al> %      Problem:  Solving a set of nonlinear equations (4-bar linkage)
+# al> %-----
+# al> %      Physical declarations:  Frames and Points
 # al> Frames      A, B, C, N
 A, B, C, N = al.frames("A", "B", "C", "N")
 # al> Points      O, P, Q, R
 O_, P, Q, R = al.points("O", "P", "Q", "R")
-# -----
-# Mathematical declarations:  variables, constants
+# al> %-----
+# al> %      Mathematical declarations:  variables, constants
 # al> Variables   QA, QB, QC      % Configuration variables
 QA, QB, QC = al.variables("QA", "QB", "QC", line=9)
 # al> Constants   LA, LB, LC, LN  % Lengths
 LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=10)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 # sympy: A.orient_axis(N, N.z, QA)
 al.simprot(N, A, 3, QA, line=13)
@@ -112,8 +94,8 @@ al.simprot(N, B, 3, QB, line=14)
 # al> Simprot(N, C, 3, QC)
 # sympy: C.orient_axis(N, N.z, QC)
 al.simprot(N, C, 3, QC, line=15)
-# -----
-# Position vectors
+# al> %-----
+# al> %      Position vectors
 # al> P_O_P> = LA*A1>
 al.set_pos(P, O_, LA * A.x, line=18)
 # al> P_P_Q> = LB*B1>
@@ -122,8 +104,8 @@ al.set_pos(Q, P, LB * B.x, line=19)
 al.set_pos(Q, R, LC * C.x, line=20)
 # al> P_O_R> = LN*N2>
 al.set_pos(R, O_, LN * N.y, line=21)
-# -----
-# Configuration constraints
+# al> %-----
+# al> %      Configuration constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
     "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=24
@@ -132,8 +114,8 @@ LOOP_vec = al.assign(
 CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=25)
 # al> CONFIG[2] = Dot(LOOP>,N2>)
 CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=26)
-# -----
-# Input constants, variables, etc. for Fortran code
+# al> %-----
+# al> %      Input constants, variables, etc. for Fortran code
 # al> UnitSystem kg, meter, sec
 al.numerics.unit_system("kg", "meter", "sec")
 # al> Input LA=1 m, LB=2 m, LC=2 m, LN=1 m, QA=30 deg
@@ -145,66 +127,20 @@ al.numerics.input(
 al.numerics.input({"QB": (60, "deg"), "QC": (20, "deg")}, line=31)
 # al> Input absErr=1.0E-07, relErr=1.0E-07 % Error tolerances
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=32)
-# -----
-# Fortran code generation for numerical solution
+# al> %-----
+# al> %      Fortran code generation for numerical solution
 # al> CODE Nonlinear(CONFIG,QB,QC) tutor3.for
 al.numerics.code("NONLINEAR", eqs=CONFIG, unknowns=[QB, QC], file="tutor3.for", line=35)
-# -----
-# Comment:  Nonlinear equations may have more than one solution.
-# The solution depends on a guess.  If a guess does not
-# provide a satisfactory answer, try another guess.
-# -----
-# Record Autolev responses
+# al> %-----
+# al> %      Comment:  Nonlinear equations may have more than one solution.
+# al> %               The solution depends on a guess.  If a guess does not
+# al> %               provide a satisfactory answer, try another guess.
+# al> %-----
+# al> %      Record Autolev responses
 # al> Save tutor3.all
 al.save("tutor3.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "%      File:  tutor3.al      [Autolev: http://www.autolev.com]",
-    "%      Problem:  Solving a set of nonlinear equations (4-bar linkage)",
-    "%-----",
-    "%      Physical declarations:  Frames and Points",
-    "Frames      A, B, C, N",
-    "Points      O, P, Q, R",
-    "%-----",
-    "%      Mathematical declarations:  variables, constants",
-    "Variables   QA, QB, QC      % Configuration variables",
-    "Constants   LA, LB, LC, LN  % Lengths",
-    "%-----",
-    "%      Geometry relating unit vectors",
-    "Simprot(N, A, 3, QA)",
-    "Simprot(N, B, 3, QB)",
-    "Simprot(N, C, 3, QC)",
-    "%-----",
-    "%      Position vectors",
-    "P_O_P> = LA*A1>",
-    "P_P_Q> = LB*B1>",
-    "P_R_Q> = LC*C1>",
-    "P_O_R> = LN*N2>",
-    "%-----",
-    "%      Configuration constraints",
-    "LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>",
-    "CONFIG[1] = Dot(LOOP>,N1>)",
-    "CONFIG[2] = Dot(LOOP>,N2>)",
-    "%-----",
-    "%      Input constants, variables, etc. for Fortran code",
-    "UnitSystem kg, meter, sec",
-    "Input LA=1 m, LB=2 m, LC=2 m, LN=1 m, QA=30 deg",
-    "Input QB=60 deg, QC=20 deg      % Guess",
-    "Input absErr=1.0E-07, relErr=1.0E-07 % Error tolerances",
-    "%-----",
-    "%      Fortran code generation for numerical solution",
-    "CODE Nonlinear(CONFIG,QB,QC) tutor3.for",
-    "%-----",
-    "%      Comment:  Nonlinear equations may have more than one solution.",
-    "%               The solution depends on a guess.  If a guess does not",
-    "%               provide a satisfactory answer, try another guess.",
-    "%-----",
-    "%      Record Autolev responses",
-    "Save tutor3.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -238,7 +174,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor3.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

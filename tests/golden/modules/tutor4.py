@@ -14,75 +14,57 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor4.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor4.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  G = 9.81 m/sec^2\n"
-        "  LA = 1 m\n"
-        "  LB = 2 m\n"
-        "  LO = 1 m\n"
-        "  K = 200 n/m\n"
-        "  MP = 10 kg\n"
-        "  MQ = 20 kg\n"
-        "  QA = -30 deg\n"
-        "  QB = 30 deg\n"
-        "  ABSERR = 1.0E-07\n"
-        "  RELERR = 1.0E-07\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor4: CODE Nonlinear tutor4.c (line 58) -> tutor4.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor4.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor4.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  G = 9.81 m/sec^2
+  LA = 1 m
+  LB = 2 m
+  LO = 1 m
+  K = 200 n/m
+  MP = 10 kg
+  MQ = 20 kg
+  QA = -30 deg
+  QB = 30 deg
+  ABSERR = 1.0E-07
+  RELERR = 1.0E-07
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor4: CODE Nonlinear tutor4.c (line 58) -> tutor4.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -91,10 +73,10 @@ from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor4.al")
 
-# File: tutor4.al [Autolev: http://www.autolev.com]
-# Problem: Spring-Restrained Double Pendulum -- Equilibrium Configuration
-# -----
-# Newtonian, bodies, frames, particles, points
+# al> % File: tutor4.al [Autolev: http://www.autolev.com]
+# al> % Problem: Spring-Restrained Double Pendulum -- Equilibrium Configuration
+# al> %-----
+# al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian N
 N = al.newtonian("N")
 # al> Frames A, B
@@ -104,8 +86,8 @@ P, Q = al.particles("P", "Q")
 P_particle, Q_particle = al.particle(P), al.particle(Q)
 # al> Points O
 O_ = al.points("O")
-# -----
-# Mathematical declarations: variables, constants, mass
+# al> %-----
+# al> % Mathematical declarations: variables, constants, mass
 # al> Variables U{2} % Generalized speeds
 U1, U2 = al.variables("U1", "U2", line=11)
 # al> Variables QA', QB' % Generalized coordinates; derivatives
@@ -118,35 +100,35 @@ K, LO = al.constants("K", "LO", line=14)
 MP, MQ = al.constants("MP+", "MQ+", line=15)
 al.set_mass(P, MP)
 al.set_mass(Q, MQ)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> % Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 # sympy: A.orient_axis(N, N.z, QA)
 al.simprot(N, A, 3, QA, line=18)
 # al> Simprot(N, B, 3, QB)
 # sympy: B.orient_axis(N, N.z, QB)
 al.simprot(N, B, 3, QB, line=19)
-# -----
-# Position vectors
+# al> %-----
+# al> % Position vectors
 # al> P_O_P> = LA*A1>
 al.set_pos(P, O_, LA * A.x, line=22)
 # al> P_P_Q> = LB*B1>
 al.set_pos(Q, P, LB * B.x, line=23)
-# -----
-# Kinematical differential equations
+# al> %-----
+# al> % Kinematical differential equations
 # al> QA' = U1/LA
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=26))
 # al> QB' = U2/LB
 kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=27))
-# -----
-# Angular velocities
+# al> %-----
+# al> % Angular velocities
 # al> W_A_N> = QA'*A3>
 al.set_ang_vel(A, N, QA.diff(t) * A.z, line=30)
 # al> W_B_N> = QB'*B3>
 al.set_ang_vel(B, N, QB.diff(t) * B.z, line=31)
-# -----
-# Velocities
+# al> %-----
+# al> % Velocities
 # al> V_O_N> = 0>
 al.set_vel(O_, N, Vector(0), line=34)
 # al> V2pts(N, A, O, P)
@@ -155,8 +137,8 @@ al.v2pts(N, A, O_, P, line=35)
 # al> V2pts(N, B, P, Q)
 # sympy: Q.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Q, line=36)
-# -----
-# Forces
+# al> %-----
+# al> % Forces
 # al> Gravity( G*N1> )
 al.gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
@@ -167,18 +149,18 @@ STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 UVEC_vec = al.assign("UVEC>", al.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
 al.force_between(O_, Q, -K * STRETCH * UVEC_vec)
-# -----
-# Equations of motion
+# al> %-----
+# al> % Equations of motion
 # al> Zero = Fr()
 Zero = al.assign("ZERO", al.fr(), line=46)
 # al> Factor(Zero, G) % Simplify slightly
 Zero = al.update("ZERO", al.factor(Zero, G), line=47)
-# -----
-# Units system for CODE input/output conversions
+# al> %-----
+# al> % Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
 al.numerics.unit_system("kg", "meter", "sec")
-# -----
-# Input constants, variables, etc. for CODE
+# al> %-----
+# al> % Input constants, variables, etc. for CODE
 # al> Input G=9.81 m/sec^2, LA=1 m, LB=2 m, LO=1 m, K=200 n/m, MP=10 kg, MQ=20 kg
 al.numerics.input(
     {
@@ -196,81 +178,16 @@ al.numerics.input(
 al.numerics.input({"QA": (-30, "deg"), "QB": (30, "deg")}, line=54)
 # al> Input absErr=1.0E-07, relErr=1.0E-07 % Error tolerances
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=55)
-# -----
-# C code generation for numerical solution
+# al> %-----
+# al> % C code generation for numerical solution
 # al> CODE Nonlinear(Zero,QA,QB) tutor4.c
 al.numerics.code("NONLINEAR", eqs=Zero, unknowns=[QA, QB], file="tutor4.c", line=58)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> % Record Autolev responses
 # al> Save tutor4.all
 al.save("tutor4.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "% File: tutor4.al [Autolev: http://www.autolev.com]",
-    "% Problem: Spring-Restrained Double Pendulum -- Equilibrium Configuration",
-    "%-----",
-    "% Newtonian, bodies, frames, particles, points",
-    "Newtonian N",
-    "Frames A, B",
-    "Particles P, Q",
-    "Points O",
-    "%-----",
-    "% Mathematical declarations: variables, constants, mass",
-    "Variables U{2} % Generalized speeds",
-    "Variables QA', QB' % Generalized coordinates; derivatives",
-    "Constants G, LA, LB % Gravitational acceleration, lengths of A, B",
-    "Constants K, LO % Spring constant, natural length of spring",
-    "Mass P=MP, Q=MQ",
-    "%-----",
-    "% Geometry relating unit vectors",
-    "Simprot(N, A, 3, QA)",
-    "Simprot(N, B, 3, QB)",
-    "%-----",
-    "% Position vectors",
-    "P_O_P> = LA*A1>",
-    "P_P_Q> = LB*B1>",
-    "%-----",
-    "% Kinematical differential equations",
-    "QA' = U1/LA",
-    "QB' = U2/LB",
-    "%-----",
-    "% Angular velocities",
-    "W_A_N> = QA'*A3>",
-    "W_B_N> = QB'*B3>",
-    "%-----",
-    "% Velocities",
-    "V_O_N> = 0>",
-    "V2pts(N, A, O, P)",
-    "V2pts(N, B, P, Q)",
-    "%-----",
-    "% Forces",
-    "Gravity( G*N1> )",
-    "LOQ = MAG(P_O_Q>) % Distance from O to Q",
-    "STRETCH = LOQ - LO % Stretch of spring",
-    "UVEC> = P_O_Q> / LOQ % Unit vector from O to Q",
-    "Force(O/Q, -K*STRETCH*UVEC> ) % Spring force",
-    "%-----",
-    "% Equations of motion",
-    "Zero = Fr()",
-    "Factor(Zero, G) % Simplify slightly",
-    "%-----",
-    "% Units system for CODE input/output conversions",
-    "UnitSystem kg,meter,sec",
-    "%-----",
-    "% Input constants, variables, etc. for CODE",
-    "Input G=9.81 m/sec^2, LA=1 m, LB=2 m, LO=1 m, K=200 n/m, MP=10 kg, MQ=20 kg",
-    "Input QA=-30 deg, QB=30 deg % Guess",
-    "Input absErr=1.0E-07, relErr=1.0E-07 % Error tolerances",
-    "%-----",
-    "% C code generation for numerical solution",
-    "CODE Nonlinear(Zero,QA,QB) tutor4.c",
-    "%-----",
-    "% Record Autolev responses",
-    "Save tutor4.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -310,7 +227,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor4.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

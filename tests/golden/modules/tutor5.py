@@ -14,70 +14,52 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor5.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor5.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  H = 200 newton\n"
-        "  QA = 30 deg\n"
-        "  QB = 60 deg\n"
-        "  QC = 30 deg\n"
-        "  ABSERR = 1.0E-07\n"
-        "  RELERR = 1.0E-07\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor5: CODE Nonlinear tutor5.m (line 83) -> tutor5.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor5.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor5.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  H = 200 newton
+  QA = 30 deg
+  QB = 60 deg
+  QC = 30 deg
+  ABSERR = 1.0E-07
+  RELERR = 1.0E-07
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor5: CODE Nonlinear tutor5.m (line 83) -> tutor5.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -86,10 +68,10 @@ from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor5.al")
 
-# File:  tutor5.al      [Autolev: http://www.autolev.com]
-# Problem:  Four-Bar Linkage -- Equilibrium Configuration
-# -----
-# Newtonian, bodies, frames, particles, points
+# al> %      File:  tutor5.al      [Autolev: http://www.autolev.com]
+# al> %      Problem:  Four-Bar Linkage -- Equilibrium Configuration
+# al> %-----
+# al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
 N = al.newtonian("N")
 # al> Bodies        A, B, C
@@ -100,8 +82,8 @@ Co = al.point("CO")
 A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
 # al> Points        O, P, Q, R
 O_, P, Q, R = al.points("O", "P", "Q", "R")
-# -----
-# Variables, constants, and specified
+# al> %-----
+# al> %      Variables, constants, and specified
 # al> Variables      U{3}                % Generalized speeds
 U1, U2, U3 = al.variables("U1", "U2", "U3", line=10)
 # al> Variables      QA', QB', QC'        % Generalized coordinates; derivatives
@@ -117,8 +99,8 @@ al.assign("LC", 2, line=13)
 al.assign("LN", 1, line=13)
 # al> Constants      H                      % Horizontal force on Q
 H = al.constants("H", line=14)
-# -----
-# Mass and inertia
+# al> %-----
+# al> %      Mass and inertia
 # al> Mass          A=MA=10, B=MB=20, C=MC=20
 MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=17)
 al.assign("MA", 10, line=17)
@@ -133,8 +115,8 @@ al.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
 al.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
 # al> Inertia       C, 0, MC*LC^2/12, MC*LC^2/12
 al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 # sympy: A.orient_axis(N, N.z, QA)
 al.simprot(N, A, 3, QA, line=23)
@@ -144,8 +126,8 @@ al.simprot(N, B, 3, QB, line=24)
 # al> Simprot(N, C, 3, QC)
 # sympy: C.orient_axis(N, N.z, QC)
 al.simprot(N, C, 3, QC, line=25)
-# -----
-# Position vectors
+# al> %-----
+# al> %      Position vectors
 # al> P_O_P> = LA*A1>
 al.set_pos(P, O_, LA * A.x, line=28)
 # al> P_P_Q> = LB*B1>
@@ -160,8 +142,8 @@ al.set_pos(Ao, O_, 0.5 * al.pos(O_, P), line=32)
 al.set_pos(Bo, P, 0.5 * al.pos(P, Q), line=33)
 # al> P_R_Co> = 0.5*P_R_Q>
 al.set_pos(Co, R, 0.5 * al.pos(R, Q), line=34)
-# -----
-# Kinematical differential equations
+# al> %-----
+# al> %      Kinematical differential equations
 # al> QA' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=37))
@@ -169,16 +151,16 @@ kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=37))
 kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=38))
 # al> QC' = U3
 kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))
-# -----
-# Angular velocities
+# al> %-----
+# al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
 al.set_ang_vel(A, N, QA.diff(t) * A.z, line=42)
 # al> W_B_N> = QB'*B3>
 al.set_ang_vel(B, N, QB.diff(t) * B.z, line=43)
 # al> W_C_N> = QC'*C3>
 al.set_ang_vel(C, N, QC.diff(t) * C.z, line=44)
-# -----
-# Configuration Constraints
+# al> %-----
+# al> %      Configuration Constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
     "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=47
@@ -187,8 +169,8 @@ LOOP_vec = al.assign(
 CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=48)
 # al> CONFIG[2] = Dot(LOOP>,N2>)
 CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=49)
-# -----
-# Velocities
+# al> %-----
+# al> %           Velocities
 # al> V_O_N> = 0>
 al.set_vel(O_, N, Vector(0), line=52)
 # al> V2pts(N, A, O, Ao)
@@ -209,140 +191,50 @@ al.v2pts(N, C, Q, Co, line=57)
 # al> V2pts(N, C, Q, R)
 # sympy: R.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, R, line=58)
-# -----
-# Motion constraints
+# al> %-----
+# al> %           Motion constraints
 # al> DEPENDENT[1] = Dot(V_R_N>, N1>)
 DEPENDENT = al.assign("DEPENDENT[1]", al.dot(al.vel(R, N), N.x), line=61)
 # al> DEPENDENT[2] = Dot(V_R_N>, N2>)
 DEPENDENT = al.assign("DEPENDENT[2]", al.dot(al.vel(R, N), N.y), line=62)
 # al> Constrain( DEPENDENT[U2,U3] )
 al.constrain("DEPENDENT", [U2, U3], line=63)
-# -----
-# Forces
+# al> %-----
+# al> %           Forces
 # al> Gravity( G*N1> )
 al.gravity(G * N.x)
 # al> Force_Q> = H*N2>
 al.set_force(Q, H * N.y, line=67)
-# -----
-# Equations of motion
+# al> %-----
+# al> %           Equations of motion
 # al> Zero = Fr()
 Zero = al.assign("ZERO", al.fr(), line=70)
 # al> Zero[2] = CONFIG[1]
 Zero = al.assign("ZERO[2]", CONFIG[0], line=71)
 # al> Zero[3] = CONFIG[2]
 Zero = al.assign("ZERO[3]", CONFIG[1], line=72)
-# -----
-# Units system for CODE input/output conversions
+# al> %-----
+# al> %           Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
 al.numerics.unit_system("kg", "meter", "sec")
-# -----
-# Input constants, variables, etc. for CODE
+# al> %-----
+# al> %           Input constants, variables, etc. for CODE
 # al> Input H=200 newton
 al.numerics.input({"H": (200, "newton")}, line=78)
 # al> Input QA=30 deg, QB=60 deg, QC=30 deg    % Guess
 al.numerics.input({"QA": (30, "deg"), "QB": (60, "deg"), "QC": (30, "deg")}, line=79)
 # al> Input absErr=1.0E-07, relErr=1.0E-07    % Error tolerances
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=80)
-# -----
-# MATLAB code generation for numerical solution
+# al> %-----
+# al> %           MATLAB code generation for numerical solution
 # al> CODE Nonlinear( Zero, QA,QB,QC ) tutor5.m
 al.numerics.code("NONLINEAR", eqs=Zero, unknowns=[QA, QB, QC], file="tutor5.m", line=83)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> %           Record Autolev responses
 # al> Save tutor5.all
 al.save("tutor5.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "%      File:  tutor5.al      [Autolev: http://www.autolev.com]",
-    "%      Problem:  Four-Bar Linkage -- Equilibrium Configuration",
-    "%-----",
-    "%      Newtonian, bodies, frames, particles, points",
-    "Newtonian      N",
-    "Bodies        A, B, C",
-    "Points        O, P, Q, R",
-    "%-----",
-    "%      Variables, constants, and specified",
-    "Variables      U{3}                % Generalized speeds",
-    "Variables      QA', QB', QC'        % Generalized coordinates; derivatives",
-    "Constants      G=9.81                % Gravitational acceleration",
-    "Constants      LA=1, LB=2, LC=2, LN=1 % Lengths",
-    "Constants      H                      % Horizontal force on Q",
-    "%-----",
-    "%      Mass and inertia",
-    "Mass          A=MA=10, B=MB=20, C=MC=20",
-    "Inertia       A, 0, MA*LA^2/12, MA*LA^2/12",
-    "Inertia       B, 0, MB*LB^2/12, MB*LB^2/12",
-    "Inertia       C, 0, MC*LC^2/12, MC*LC^2/12",
-    "%-----",
-    "%      Geometry relating unit vectors",
-    "Simprot(N, A, 3, QA)",
-    "Simprot(N, B, 3, QB)",
-    "Simprot(N, C, 3, QC)",
-    "%-----",
-    "%      Position vectors",
-    "P_O_P> = LA*A1>",
-    "P_P_Q> = LB*B1>",
-    "P_R_Q> = LC*C1>",
-    "P_O_R> = LN*N2>",
-    "P_O_Ao> = 0.5*P_O_P>",
-    "P_P_Bo> = 0.5*P_P_Q>",
-    "P_R_Co> = 0.5*P_R_Q>",
-    "%-----",
-    "%      Kinematical differential equations",
-    "QA' = U1",
-    "QB' = U2",
-    "QC' = U3",
-    "%-----",
-    "%      Angular velocities",
-    "W_A_N> = QA'*A3>",
-    "W_B_N> = QB'*B3>",
-    "W_C_N> = QC'*C3>",
-    "%-----",
-    "%      Configuration Constraints",
-    "LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>",
-    "CONFIG[1] = Dot(LOOP>,N1>)",
-    "CONFIG[2] = Dot(LOOP>,N2>)",
-    "%-----",
-    "%           Velocities",
-    "V_O_N> = 0>",
-    "V2pts(N, A, O, Ao)",
-    "V2pts(N, A, O, P)",
-    "V2pts(N, B, P, Bo)",
-    "V2pts(N, B, P, Q)",
-    "V2pts(N, C, Q, Co)",
-    "V2pts(N, C, Q, R)",
-    "%-----",
-    "%           Motion constraints",
-    "DEPENDENT[1] = Dot(V_R_N>, N1>)",
-    "DEPENDENT[2] = Dot(V_R_N>, N2>)",
-    "Constrain( DEPENDENT[U2,U3] )",
-    "%-----",
-    "%           Forces",
-    "Gravity( G*N1> )",
-    "Force_Q> = H*N2>",
-    "%-----",
-    "%           Equations of motion",
-    "Zero = Fr()",
-    "Zero[2] = CONFIG[1]",
-    "Zero[3] = CONFIG[2]",
-    "%-----",
-    "%           Units system for CODE input/output conversions",
-    "UnitSystem kg,meter,sec",
-    "%-----",
-    "%           Input constants, variables, etc. for CODE",
-    "Input H=200 newton",
-    "Input QA=30 deg, QB=60 deg, QC=30 deg    % Guess",
-    "Input absErr=1.0E-07, relErr=1.0E-07    % Error tolerances",
-    "%-----",
-    "%           MATLAB code generation for numerical solution",
-    "CODE Nonlinear( Zero, QA,QB,QC ) tutor5.m",
-    "%-----",
-    "%           Record Autolev responses",
-    "Save tutor5.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -382,7 +274,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor5.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

@@ -14,73 +14,55 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor7a.py [-h] [--set NAME=VALUE] [--job STEM] [--tfina"
-        "l TFINAL]\n"
-        "                         [--outdir OUTDIR] [--plot]\n"
-        "                         [--backend {auto,c,llvm,lambdify}] [--zero-mi"
-        "ssing]\n"
-        "                         [--emit-code DIR] [--no-run] [--max-seconds S"
-        "]\n"
-        "                         [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor7a.al and perform its numerical C"
-        "ODE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  QA = 30 deg\n"
-        "  QB = 74.47751219 deg\n"
-        "  QC = 45.52248781 deg\n"
-        "  TINITIAL = 0\n"
-        "  TFINAL = 10\n"
-        "  INTEGSTP = 0.1\n"
-        "  PRINTINT = 1\n"
-        "  ABSERR = 1.0E-07\n"
-        "  RELERR = 1.0E-07\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor7a: CODE Dynamics tutor7a.for (line 108) -> tutor7a.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor7a.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                         [--outdir OUTDIR] [--plot]
+                         [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                         [--emit-code DIR] [--no-run] [--max-seconds S]
+                         [--max-evals N]
+
+Print the Autolev transcript of tutor7a.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  QA = 30 deg
+  QB = 74.47751219 deg
+  QC = 45.52248781 deg
+  TINITIAL = 0
+  TFINAL = 10
+  INTEGSTP = 0.1
+  PRINTINT = 1
+  ABSERR = 1.0E-07
+  RELERR = 1.0E-07
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor7a: CODE Dynamics tutor7a.for (line 108) -> tutor7a.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -89,17 +71,17 @@ from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor7a.al")
 
-# File:  tutor7a.al (tutor7.al modified to find FC1, FC2, FA1)      [Autolev:
-# http://www.autolev.com]
-# Problem:  Four-Bar Linkage -- Motion and Contact Forces
-# -----
-# Default Settings
+# al> %      File:  tutor7a.al (tutor7.al modified to find FC1, FC2, FA1)      [Autolev:
+# al+ http://www.autolev.com]
+# al> %      Problem:  Four-Bar Linkage -- Motion and Contact Forces
+# al> %-----
+# al> %      Default Settings
 # al> AutoZ      ON              % Program introduces Zees automatically
 al.settings.set("Autoz", "ON")
 # al> Digits     7              % Significant digits
 al.settings.set("Digits", 7)
-# -----
-# Newtonian, bodies, frames, particles, points
+# al> %-----
+# al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian  N
 N = al.newtonian("N")
 # al> Bodies     A, B, C
@@ -110,8 +92,8 @@ Co = al.point("CO")
 A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
 # al> Points     O, P, Q, R
 O_, P, Q, R = al.points("O", "P", "Q", "R")
-# -----
-# Variables, constants, and specified
+# al> %-----
+# al> %      Variables, constants, and specified
 # al> Variables  U{4}'          % Generalized speeds; derivatives
 U1, U2, U3, U4 = al.variables("U1'", "U2'", "U3'", "U4'", line=14)
 # al> Variables  QA', QB', QC' % Generalized coordinates; derivatives
@@ -129,8 +111,8 @@ al.assign("LC", 2, line=18)
 al.assign("LN", 1, line=18)
 # al> ZEE_NOT = [FA1, FA2, FC1, FC2]
 ZEE_NOT = al.assign("ZEE_NOT", Matrix([[FA1, FA2, FC1, FC2]]), line=19)
-# -----
-# Mass and inertia
+# al> %-----
+# al> %      Mass and inertia
 # al> Mass       A=MA=10, B=MB=20, C=MC=20
 MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=22)
 al.assign("MA", 10, line=22)
@@ -145,8 +127,8 @@ al.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
 al.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
 # al> Inertia    C, 0, MC*LC^2/12, MC*LC^2/12
 al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 # sympy: A.orient_axis(N, N.z, QA)
 al.simprot(N, A, 3, QA, line=28)
@@ -156,8 +138,8 @@ al.simprot(N, B, 3, QB, line=29)
 # al> Simprot(N, C, 3, QC)
 # sympy: C.orient_axis(N, N.z, QC)
 al.simprot(N, C, 3, QC, line=30)
-# -----
-# Position vectors
+# al> %-----
+# al> %      Position vectors
 # al> P_O_P> = LA*A1>
 al.set_pos(P, O_, LA * A.x, line=33)
 # al> P_P_Q> = LB*B1>
@@ -172,8 +154,8 @@ al.set_pos(Ao, O_, 0.5 * al.pos(O_, P), line=37)
 al.set_pos(Bo, P, 0.5 * al.pos(P, Q), line=38)
 # al> P_R_Co> = 0.5*P_R_Q>
 al.set_pos(Co, R, 0.5 * al.pos(R, Q), line=39)
-# -----
-# Kinematical differential equations
+# al> %-----
+# al> %      Kinematical differential equations
 # al> QA' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=42))
@@ -181,16 +163,16 @@ kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=42))
 kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=43))
 # al> QC' = U3
 kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=44))
-# -----
-# Angular velocities
+# al> %-----
+# al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
 al.set_ang_vel(A, N, QA.diff(t) * A.z, line=47)
 # al> W_B_N> = QB'*B3>
 al.set_ang_vel(B, N, QB.diff(t) * B.z, line=48)
 # al> W_C_N> = QC'*C3>
 al.set_ang_vel(C, N, QC.diff(t) * C.z, line=49)
-# -----
-# Velocities
+# al> %-----
+# al> %      Velocities
 # al> V_O_N> = U4*N1>
 al.set_vel(O_, N, U4 * N.x, line=52)
 # al> V2pts(N, A, O, Ao)
@@ -211,8 +193,8 @@ al.v2pts(N, C, Q, Co, line=57)
 # al> V2pts(N, C, Q, R)
 # sympy: R.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, R, line=58)
-# -----
-# Motion constraints
+# al> %-----
+# al> %      Motion constraints
 # al> AUXILIARY[1] = Dot(V_R_N>, N1>)           % Dot(V_R_N>, N1>) = 0
 AUXILIARY = al.assign("AUXILIARY[1]", al.dot(al.vel(R, N), N.x), line=61)
 # al> AUXILIARY[2] = Dot(V_R_N>, N2>)           % Dot(V_R_N>, N2>) = 0
@@ -221,16 +203,16 @@ AUXILIARY = al.assign("AUXILIARY[2]", al.dot(al.vel(R, N), N.y), line=62)
 AUXILIARY = al.assign("AUXILIARY[3]", al.dot(al.vel(O_, N), N.x), line=63)
 # al> Constrain( AUXILIARY[U2,U3,U4] )       % Solve for U2,U3,U4
 al.constrain("AUXILIARY", [U2, U3, U4], line=64)
-# -----
-# Angular accelerations
+# al> %-----
+# al> %           Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
 al.set_ang_acc(A, N, al.dt(al.ang_vel(A, N), N), line=67)
 # al> ALF_B_N> = DT(W_B_N>, N)
 al.set_ang_acc(B, N, al.dt(al.ang_vel(B, N), N), line=68)
 # al> ALF_C_N> = DT(W_C_N>, N)
 al.set_ang_acc(C, N, al.dt(al.ang_vel(C, N), N), line=69)
-# -----
-# Accelerations of particles and mass centers of bodies
+# al> %-----
+# al> %           Accelerations of particles and mass centers of bodies
 # al> A_O_N> = 0>
 al.set_acc(O_, N, Vector(0), line=72)
 # al> A2pts(N, A, O, Ao)
@@ -248,26 +230,26 @@ al.a2pts(N, B, P, Q, line=76)
 # al> A2pts(N, C, Q, Co)
 # sympy: Co.a2pt_theory(Q, N, C)
 al.a2pts(N, C, Q, Co, line=77)
-# -----
-# Forces
+# al> %-----
+# al> %           Forces
 # al> Gravity( G*N1> )
 al.gravity(G * N.x)
 # al> Force_O> = FA1*N1> + FA2*N2>
 al.set_force(O_, FA1 * N.x + FA2 * N.y, line=81)
 # al> Force_R> = FC1*N1> + FC2*N2>
 al.set_force(R, FC1 * N.x + FC2 * N.y, line=82)
-# -----
-# Equations of motion
+# al> %-----
+# al> %           Equations of motion
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.fr() + al.frstar(), line=85)
 # al> Kane( FC1, FC2, FA1 )
 Zero = al.kane(FC1, FC2, FA1, line=86)
-# -----
-# Units system for CODE input/output conversions
+# al> %-----
+# al> %           Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
 al.numerics.unit_system("kg", "meter", "sec")
-# -----
-# Input constants, variables, etc. for CODE
+# al> %-----
+# al> %           Input constants, variables, etc. for CODE
 # al> Input  QA=30 deg, QB=74.47751219 deg, QC=45.52248781 deg % Initial values
 al.numerics.input(
     {"QA": (30, "deg"), "QB": (74.47751219, "deg"), "QC": (45.52248781, "deg")}, line=92
@@ -278,8 +260,8 @@ al.numerics.input({"TINITIAL": 0, "TFINAL": 10}, line=93)
 al.numerics.input({"INTEGSTP": 0.1, "PRINTINT": 1}, line=94)
 # al> Input  absErr=1.0E-07, relErr=1.0E-07 % Error tolerances
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=95)
-# -----
-# Quantities to be output from CODE
+# al> %-----
+# al> %           Quantities to be output from CODE
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
     "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=98
@@ -310,134 +292,16 @@ al.numerics.output(
 )
 # al> Output T, FA1 newtons
 al.numerics.output([("T", t, None), ("FA1", FA1, "newtons")], line=105)
-# -----
-# Fortran code generation for numerical solution
+# al> %-----
+# al> %           Fortran code generation for numerical solution
 # al> CODE Dynamics() tutor7a.for
 al.numerics.code("DYNAMICS", file="tutor7a.for", line=108)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> %           Record Autolev responses
 # al> Save tutor7a.all
 al.save("tutor7a.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    (
-        "%      File:  tutor7a.al (tutor7.al modified to find FC1, FC2, FA1)   "
-        "   [Autolev: http://www.autolev.com]"
-    ),
-    "%      Problem:  Four-Bar Linkage -- Motion and Contact Forces",
-    "%-----",
-    "%      Default Settings",
-    "AutoZ      ON              % Program introduces Zees automatically",
-    "Digits     7              % Significant digits",
-    "%-----",
-    "%      Newtonian, bodies, frames, particles, points",
-    "Newtonian  N",
-    "Bodies     A, B, C",
-    "Points     O, P, Q, R",
-    "%-----",
-    "%      Variables, constants, and specified",
-    "Variables  U{4}'          % Generalized speeds; derivatives",
-    "Variables  QA', QB', QC' % Generalized coordinates; derivatives",
-    "Variables  FA{2}, FC{2}  % Contact forces",
-    "Constants  G=9.81        % Gravitational acceleration",
-    "Constants  LA=1, LB=2, LC=2, LN=1 % Lengths",
-    "ZEE_NOT = [FA1, FA2, FC1, FC2]",
-    "%-----",
-    "%      Mass and inertia",
-    "Mass       A=MA=10, B=MB=20, C=MC=20",
-    "Inertia    A, 0, MA*LA^2/12, MA*LA^2/12",
-    "Inertia    B, 0, MB*LB^2/12, MB*LB^2/12",
-    "Inertia    C, 0, MC*LC^2/12, MC*LC^2/12",
-    "%-----",
-    "%      Geometry relating unit vectors",
-    "Simprot(N, A, 3, QA)",
-    "Simprot(N, B, 3, QB)",
-    "Simprot(N, C, 3, QC)",
-    "%-----",
-    "%      Position vectors",
-    "P_O_P> = LA*A1>",
-    "P_P_Q> = LB*B1>",
-    "P_R_Q> = LC*C1>",
-    "P_O_R> = LN*N2>",
-    "P_O_Ao> = 0.5*P_O_P>",
-    "P_P_Bo> = 0.5*P_P_Q>",
-    "P_R_Co> = 0.5*P_R_Q>",
-    "%-----",
-    "%      Kinematical differential equations",
-    "QA' = U1",
-    "QB' = U2",
-    "QC' = U3",
-    "%-----",
-    "%      Angular velocities",
-    "W_A_N> = QA'*A3>",
-    "W_B_N> = QB'*B3>",
-    "W_C_N> = QC'*C3>",
-    "%-----",
-    "%      Velocities",
-    "V_O_N> = U4*N1>",
-    "V2pts(N, A, O, Ao)",
-    "V2pts(N, A, O, P)",
-    "V2pts(N, B, P, Bo)",
-    "V2pts(N, B, P, Q)",
-    "V2pts(N, C, Q, Co)",
-    "V2pts(N, C, Q, R)",
-    "%-----",
-    "%      Motion constraints",
-    "AUXILIARY[1] = Dot(V_R_N>, N1>)           % Dot(V_R_N>, N1>) = 0",
-    "AUXILIARY[2] = Dot(V_R_N>, N2>)           % Dot(V_R_N>, N2>) = 0",
-    "AUXILIARY[3] = Dot(V_O_N>, N1>)         % Dot(V_O_N>, N1>) = 0",
-    "Constrain( AUXILIARY[U2,U3,U4] )       % Solve for U2,U3,U4",
-    "%-----",
-    "%           Angular accelerations",
-    "ALF_A_N> = DT(W_A_N>, N)",
-    "ALF_B_N> = DT(W_B_N>, N)",
-    "ALF_C_N> = DT(W_C_N>, N)",
-    "%-----",
-    "%           Accelerations of particles and mass centers of bodies",
-    "A_O_N> = 0>",
-    "A2pts(N, A, O, Ao)",
-    "A2pts(N, A, O, P)",
-    "A2pts(N, B, P, Bo)",
-    "A2pts(N, B, P, Q)",
-    "A2pts(N, C, Q, Co)",
-    "%-----",
-    "%           Forces",
-    "Gravity( G*N1> )",
-    "Force_O> = FA1*N1> + FA2*N2>",
-    "Force_R> = FC1*N1> + FC2*N2>",
-    "%-----",
-    "%           Equations of motion",
-    "Zero = Fr() + FrStar()",
-    "Kane( FC1, FC2, FA1 )",
-    "%-----",
-    "%           Units system for CODE input/output conversions",
-    "UnitSystem kg,meter,sec",
-    "%-----",
-    "%           Input constants, variables, etc. for CODE",
-    "Input  QA=30 deg, QB=74.47751219 deg, QC=45.52248781 deg % Initial values",
-    "Input  tInitial=0, tFinal=10 % Begin/end times",
-    "Input  integStp=0.1, printInt=1 % Integration/print step",
-    "Input  absErr=1.0E-07, relErr=1.0E-07 % Error tolerances",
-    "%-----",
-    "%           Quantities to be output from CODE",
-    "LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>",
-    "CONFIG[1] = Dot(LOOP>,N1>) % Should always equal 0",
-    "CONFIG[2] = Dot(LOOP>,N2>) % Should always equal 0",
-    "ECHECK = NICHECK() % Checking function",
-    "Output T, QA deg, QB deg, QC deg",
-    "Output T, CONFIG[1], CONFIG[2], ECHECK",
-    "Output T, FC1 newtons, FC2 newtons",
-    "Output T, FA1 newtons",
-    "%-----",
-    "%           Fortran code generation for numerical solution",
-    "CODE Dynamics() tutor7a.for",
-    "%-----",
-    "%           Record Autolev responses",
-    "Save tutor7a.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -477,7 +341,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor7a.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

@@ -14,82 +14,64 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor8.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor8.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  K1 = 1\n"
-        "  K2 = -244\n"
-        "  K3 = 5.4\n"
-        "  K4 = -59\n"
-        "  X = 1 m\n"
-        "  THETA = 20 deg\n"
-        "  U1 = 0 m/sec\n"
-        "  U2 = 0 rad/sec\n"
-        "  DX = 1 m\n"
-        "  DTHETA = 20 deg\n"
-        "  DU1 = 0 m/sec\n"
-        "  DU2 = 0 rad/sec\n"
-        "  TINITIAL = 0\n"
-        "  TFINAL = 20\n"
-        "  INTEGSTP = 0.1\n"
-        "  PRINTINT = 1\n"
-        "  ABSERR = 1.0E-08\n"
-        "  RELERR = 1.0E-08\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor8: CODE Dynamics tutor8.c (line 99) -> tutor8.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor8.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor8.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  K1 = 1
+  K2 = -244
+  K3 = 5.4
+  K4 = -59
+  X = 1 m
+  THETA = 20 deg
+  U1 = 0 m/sec
+  U2 = 0 rad/sec
+  DX = 1 m
+  DTHETA = 20 deg
+  DU1 = 0 m/sec
+  DU2 = 0 rad/sec
+  TINITIAL = 0
+  TFINAL = 20
+  INTEGSTP = 0.1
+  PRINTINT = 1
+  ABSERR = 1.0E-08
+  RELERR = 1.0E-08
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor8: CODE Dynamics tutor8.c (line 99) -> tutor8.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -98,14 +80,14 @@ from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor8.al")
 
-# File: tutor8.al [Autolev: http://www.autolev.com]
-# Problem: Dynamics of a Cart Carrying an Inverted Pendulum
-# -----
-# Default Settings
+# al> % File: tutor8.al [Autolev: http://www.autolev.com]
+# al> % Problem: Dynamics of a Cart Carrying an Inverted Pendulum
+# al> %-----
+# al> % Default Settings
 # al> Digits      2          % Significant digits
 al.settings.set("Digits", 2)
-# -----
-# Newtonian, bodies, frames, particles, points
+# al> %-----
+# al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian   N          % Newtonian reference frame
 N = al.newtonian("N")
 # al> Bodies      A, B       % Cart, inverted pendulum
@@ -115,8 +97,8 @@ Bo = al.point("BO")
 A_body, B_body = al.rigid_body(A), al.rigid_body(B)
 # al> Points      O          % Point fixed in N
 O_ = al.points("O")
-# -----
-# Variables, constants, and specified
+# al> %-----
+# al> % Variables, constants, and specified
 # al> Variables   U{2}'      % Generalized speeds; derivatives
 U1, U2 = al.variables("U1'", "U2'", line=13)
 # al> Variables   X', THETA' % Generalized coordinates; derivatives
@@ -130,8 +112,8 @@ K1, K2, K3, K4 = al.constants("K1", "K2", "K3", "K4", line=17)
 # al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
 F = al.specified("F", line=18)
 al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
-# -----
-# Mass and inertia
+# al> %-----
+# al> % Mass and inertia
 # al> Mass        A=MA, B=MB
 MA, MB = al.constants("MA+", "MB+", line=21)
 al.set_mass(A, MA)
@@ -140,69 +122,69 @@ al.set_mass(B, MB)
 IB = al.constants("IB+", line=22)
 al.assign("IB", MB * L**2 / 12, line=22)
 al.set_inertia(B, IB, 0, IB)
-# -----
-# Geometry relating unit vectors
+# al> %-----
+# al> % Geometry relating unit vectors
 # al> Simprot(N, B, 3, THETA)
 # sympy: B.orient_axis(N, N.z, THETA)
 al.simprot(N, B, 3, THETA, line=25)
-# -----
-# Position vectors
+# al> %-----
+# al> % Position vectors
 # al> P_O_Ao> = X*N1>
 al.set_pos(Ao, O_, X * N.x, line=28)
 # al> P_Ao_Bo> = 0.5*L*B2>
 al.set_pos(Bo, Ao, 0.5 * L * B.y, line=29)
-# -----
-# Kinematical differential equations
+# al> %-----
+# al> % Kinematical differential equations
 # al> X' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(X.diff(t), U1), line=32))
 # al> THETA' = U2
 kd_eqs.append(al.kd(Eq(THETA.diff(t), U2), line=33))
-# -----
-# Angular velocities
+# al> %-----
+# al> % Angular velocities
 # al> W_A_N> = 0>
 al.set_ang_vel(A, N, Vector(0), line=36)
 # al> W_B_N> = THETA'*B3>
 al.set_ang_vel(B, N, THETA.diff(t) * B.z, line=37)
-# -----
-# Velocities
+# al> %-----
+# al> % Velocities
 # al> V_Ao_N> = DT(P_O_Ao>, N)
 al.set_vel(Ao, N, al.dt(al.pos(O_, Ao), N), line=40)
 # al> V2pts(N, B, Ao, Bo)
 # sympy: Bo.v2pt_theory(Ao, N, B)
 al.v2pts(N, B, Ao, Bo, line=41)
-# -----
-# Forces
+# al> %-----
+# al> % Forces
 # al> Gravity( -G*N2> )
 al.gravity(-G * N.y)
 # al> Force_Ao> += F*N1>
 al.set_force(Ao, al.force_on(Ao) + (F * N.x), line=45)
-# -----
-# Equations of motion
+# al> %-----
+# al> % Equations of motion
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.fr() + al.frstar(), line=48)
 # al> Kane()
 Zero = al.kane(line=49)
 # al> Zero := Evaluate( Zero, L=1, MA=10, MB=1, G=9.81 )
 Zero = al.assign("ZERO", al.evaluate(Zero, {L: 1, MA: 10, MB: 1, G: 9.81}), line=50)
-# *****
-# CONTROL SYSTEM / STABILITY ANALYSIS
-# *****
-# Linearization: Perturbation variables
+# al> %*****
+# al> % CONTROL SYSTEM / STABILITY ANALYSIS
+# al> %*****
+# al> % Linearization: Perturbation variables
 # al> Variables   dU{2}'      % Perturbations of U1,U2,U1',U2'
 dU1, dU2 = al.variables("DU1'", "DU2'", line=55)
 # al> Variables    dX', dTHETA'    % Perturbations of X,X', THETA,THETA'
 dX, dTHETA = al.variables("DX'", "DTHETA'", line=56)
-# -----
-# Check whether X=THETA=U1=U2=U1'=U2'=0 is a solution
+# al> %-----
+# al> %          Check whether X=THETA=U1=U2=U1'=U2'=0 is a solution
 # al> CHECK = Evaluate(Zero, X=0, THETA=0, U1=0, U2=0, U1'=0, U2'=0)
 CHECK = al.assign(
     "CHECK",
     al.evaluate(Zero, {X: 0, THETA: 0, U1: 0, U2: 0, U1.diff(t): 0, U2.diff(t): 0}),
     line=59,
 )
-# -----
-# Linearize kinematical equations about nominal solution
+# al> %-----
+# al> %          Linearize kinematical equations about nominal solution
 # al> dX'        = Taylor(X',      1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2)
 kd_eqs.append(
     al.kd(
@@ -231,8 +213,8 @@ kd_eqs.append(
         line=63,
     )
 )
-# -----
-# Linearize equations of motion about nominal solution
+# al> %-----
+# al> %          Linearize equations of motion about nominal solution
 # al> PERTURB = Taylor(Zero, 1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2, &
 # al> U1'=0:dU1', U2'=0:dU2')
 PERTURB = al.assign(
@@ -253,36 +235,36 @@ PERTURB = al.assign(
 )
 # al> Solve( PERTURB, dU{1:2}' )
 al.solve(PERTURB, [dU1.diff(t), dU2.diff(t)], line=68)
-# -----
-# Form matrix of perturbations and its time-derivative
+# al> %-----
+# al> %          Form matrix of perturbations and its time-derivative
 # al> Xm = [ dX , dTHETA , dU1 , dU2 ]    % Matrix of perturbations
 Xm = al.assign("XM", Matrix([[dX, dTHETA, dU1, dU2]]), line=71)
 # al> Xp = [ dX'; dTHETA'; dU1'; dU2' ]  % Time derivative of Xm
 Xp = al.assign(
     "XP", Matrix([dX.diff(t), dTHETA.diff(t), dU1.diff(t), dU2.diff(t)]), line=72
 )
-# -----
-# Form matrix A such that Xm' = A * Xm
+# al> %-----
+# al> %          Form matrix A such that Xm' = A * Xm
 # al> A = D( Xp, Xm )
 A_val = al.assign("A", al.d(Xp, Xm), line=75)
-# -----
-# Stability when F=0
+# al> %-----
+# al> %          Stability when F=0
 # al> ROOTS1 = Eig( evaluate(A, K1=0, K2=0, K3=0, K4=0) )
 ROOTS1 = al.assign(
     "ROOTS1", al.eig(al.evaluate(A_val, {K1: 0, K2: 0, K3: 0, K4: 0})), line=78
 )
-# -----
-# Stability when F = X - 244*THETA + 5.4*U1 - 59*U2
+# al> %-----
+# al> %          Stability when F = X - 244*THETA + 5.4*U1 - 59*U2
 # al> ROOTS2 = Eig( evaluate(A, K1=1, K2=-244, K3=5.4, K4=-59) )
 ROOTS2 = al.assign(
     "ROOTS2", al.eig(al.evaluate(A_val, {K1: 1, K2: -244, K3: 5.4, K4: -59})), line=81
 )
-# -----
-# Units system for CODE input/output conversions
+# al> %-----
+# al> %          Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
 al.numerics.unit_system("kg", "meter", "sec")
-# -----
-# Input constants, variables, etc. for CODE
+# al> %-----
+# al> %          Input constants, variables, etc. for CODE
 # al> Input K1=1, K2=-244, K3=5.4, K4=-59
 al.numerics.input({"K1": 1, "K2": -244, "K3": 5.4, "K4": -59}, line=87)
 # al> Input X=1 m, THETA=20 deg, U1=0 m/sec, U2=0 rad/sec
@@ -301,8 +283,8 @@ al.numerics.input({"TINITIAL": 0, "TFINAL": 20}, line=90)
 al.numerics.input({"INTEGSTP": 0.1, "PRINTINT": 1}, line=91)
 # al> Input absErr=1.0E-08, relErr=1.0E-08 % Error tolerances
 al.numerics.input({"ABSERR": 1.0e-08, "RELERR": 1.0e-08}, line=92)
-# -----
-# Quantities to be output from CODE
+# al> %-----
+# al> %          Quantities to be output from CODE
 # al> Output T, X meters, dX meters, THETA deg, dTHETA deg, F newtons
 al.numerics.output(
     [
@@ -315,124 +297,18 @@ al.numerics.output(
     ],
     line=95,
 )
-# -----
-# C code generation for numerical solution
+# al> %-----
+# al> %          C code generation for numerical solution
 # al> Digits 5          % Significant digits in output files
 al.settings.set("Digits", 5)
 # al> CODE Dynamics() tutor8.c
 al.numerics.code("DYNAMICS", file="tutor8.c", line=99)
-# -----
-# Record Autolev responses
+# al> %-----
+# al> %          Record Autolev responses
 # al> Save tutor8.all
 al.save("tutor8.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "% File: tutor8.al [Autolev: http://www.autolev.com]",
-    "% Problem: Dynamics of a Cart Carrying an Inverted Pendulum",
-    "%-----",
-    "% Default Settings",
-    "Digits      2          % Significant digits",
-    "%-----",
-    "% Newtonian, bodies, frames, particles, points",
-    "Newtonian   N          % Newtonian reference frame",
-    "Bodies      A, B       % Cart, inverted pendulum",
-    "Points      O          % Point fixed in N",
-    "%-----",
-    "% Variables, constants, and specified",
-    "Variables   U{2}'      % Generalized speeds; derivatives",
-    "Variables   X', THETA' % Generalized coordinates; derivatives",
-    "Constants   L          % Length of rod",
-    "Constants   G          % Gravitational acceleration",
-    "Constants   K{4}       % Control gains",
-    "Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2",
-    "%-----",
-    "% Mass and inertia",
-    "Mass        A=MA, B=MB",
-    "Inertia     B, IB=MB*L^2/12, 0, IB",
-    "%-----",
-    "% Geometry relating unit vectors",
-    "Simprot(N, B, 3, THETA)",
-    "%-----",
-    "% Position vectors",
-    "P_O_Ao> = X*N1>",
-    "P_Ao_Bo> = 0.5*L*B2>",
-    "%-----",
-    "% Kinematical differential equations",
-    "X' = U1",
-    "THETA' = U2",
-    "%-----",
-    "% Angular velocities",
-    "W_A_N> = 0>",
-    "W_B_N> = THETA'*B3>",
-    "%-----",
-    "% Velocities",
-    "V_Ao_N> = DT(P_O_Ao>, N)",
-    "V2pts(N, B, Ao, Bo)",
-    "%-----",
-    "% Forces",
-    "Gravity( -G*N2> )",
-    "Force_Ao> += F*N1>",
-    "%-----",
-    "% Equations of motion",
-    "Zero = Fr() + FrStar()",
-    "Kane()",
-    "Zero := Evaluate( Zero, L=1, MA=10, MB=1, G=9.81 )",
-    "%*****",
-    "% CONTROL SYSTEM / STABILITY ANALYSIS",
-    "%*****",
-    "% Linearization: Perturbation variables",
-    "Variables   dU{2}'      % Perturbations of U1,U2,U1',U2'",
-    "Variables    dX', dTHETA'    % Perturbations of X,X', THETA,THETA'",
-    "%-----",
-    "%          Check whether X=THETA=U1=U2=U1'=U2'=0 is a solution",
-    "CHECK = Evaluate(Zero, X=0, THETA=0, U1=0, U2=0, U1'=0, U2'=0)",
-    "%-----",
-    "%          Linearize kinematical equations about nominal solution",
-    "dX'        = Taylor(X',      1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2)",
-    "dTHETA'    = Taylor(THETA', 1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2)",
-    "%-----",
-    "%          Linearize equations of motion about nominal solution",
-    "PERTURB = Taylor(Zero, 1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2, &",
-    "                U1'=0:dU1', U2'=0:dU2')",
-    "Solve( PERTURB, dU{1:2}' )",
-    "%-----",
-    "%          Form matrix of perturbations and its time-derivative",
-    "Xm = [ dX , dTHETA , dU1 , dU2 ]    % Matrix of perturbations",
-    "Xp = [ dX'; dTHETA'; dU1'; dU2' ]  % Time derivative of Xm",
-    "%-----",
-    "%          Form matrix A such that Xm' = A * Xm",
-    "A = D( Xp, Xm )",
-    "%-----",
-    "%          Stability when F=0",
-    "ROOTS1 = Eig( evaluate(A, K1=0, K2=0, K3=0, K4=0) )",
-    "%-----",
-    "%          Stability when F = X - 244*THETA + 5.4*U1 - 59*U2",
-    "ROOTS2 = Eig( evaluate(A, K1=1, K2=-244, K3=5.4, K4=-59) )",
-    "%-----",
-    "%          Units system for CODE input/output conversions",
-    "UnitSystem kg,meter,sec",
-    "%-----",
-    "%          Input constants, variables, etc. for CODE",
-    "Input K1=1, K2=-244, K3=5.4, K4=-59",
-    "Input X=1 m, THETA=20 deg, U1=0 m/sec, U2=0 rad/sec",
-    "Input dX=1 m, dTHETA=20 deg, dU1=0 m/sec, dU2=0 rad/sec",
-    "Input tInitial=0, tFinal=20          % Begin/end times",
-    "Input integStp=0.1, printInt=1      % Integration/print step",
-    "Input absErr=1.0E-08, relErr=1.0E-08 % Error tolerances",
-    "%-----",
-    "%          Quantities to be output from CODE",
-    "Output T, X meters, dX meters, THETA deg, dTHETA deg, F newtons",
-    "%-----",
-    "%          C code generation for numerical solution",
-    "Digits 5          % Significant digits in output files",
-    "CODE Dynamics() tutor8.c",
-    "%-----",
-    "%          Record Autolev responses",
-    "Save tutor8.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -472,7 +348,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor8.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

@@ -14,78 +14,60 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python tutor9.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal"
-        " TFINAL]\n"
-        "                        [--outdir OUTDIR] [--plot]\n"
-        "                        [--backend {auto,c,llvm,lambdify}] [--zero-mis"
-        "sing]\n"
-        "                        [--emit-code DIR] [--no-run] [--max-seconds S]"
-        "\n"
-        "                        [--max-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of tutor9.al and perform its numerical CO"
-        "DE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  TINITIAL = 0\n"
-        "  TFINAL = 20\n"
-        "  INTEGSTP = 0.1\n"
-        "  PRINTINT = 1\n"
-        "  ABSERR = 1.0E-07\n"
-        "  RELERR = 1.0E-07\n"
-        "  J = 0.07634\n"
-        "  I1 = 1.25\n"
-        "  I2 = 4.25\n"
-        "  I3 = 5\n"
-        "  OMEGA = -20.0\n"
-        "  U1 = 0\n"
-        "  U2 = 0.02\n"
-        "  U3 = 1\n"
-        "Jobs (--job STEM runs one; default: all, in script order):\n"
-        "  tutor9: CODE Dynamics tutor9.for (line 54) -> tutor9.1, ...\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python tutor9.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
+                        [--outdir OUTDIR] [--plot]
+                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
+                        [--emit-code DIR] [--no-run] [--max-seconds S]
+                        [--max-evals N]
+
+Print the Autolev transcript of tutor9.al and perform its numerical CODE job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  TINITIAL = 0
+  TFINAL = 20
+  INTEGSTP = 0.1
+  PRINTINT = 1
+  ABSERR = 1.0E-07
+  RELERR = 1.0E-07
+  J = 0.07634
+  I1 = 1.25
+  I2 = 4.25
+  I3 = 5
+  OMEGA = -20.0
+  U1 = 0
+  U2 = 0.02
+  U3 = 1
+Jobs (--job STEM runs one; default: all, in script order):
+  tutor9: CODE Dynamics tutor9.for (line 54) -> tutor9.1, ...
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -95,10 +77,10 @@ from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor9.al")
 
-# File:  tutor9.al      [Autolev: http://www.autolev.com]
-# Problem:  Spin stability of gyrostat
-# -----
-# Newtonian, bodies, frames, particles, points
+# al> %      File:  tutor9.al      [Autolev: http://www.autolev.com]
+# al> %      Problem:  Spin stability of gyrostat
+# al> %-----
+# al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N              % Newtonian reference frame
 N = al.newtonian("N")
 # al> Bodies         A              % Carrier
@@ -107,48 +89,48 @@ Ao = al.point("AO")
 A_body = al.rigid_body(A)
 # al> Frames         B              % Rotor
 B = al.frames("B")
-# -----
-# Variables, constants, and specified
+# al> %-----
+# al> %      Variables, constants, and specified
 # al> Variables      U{3}'         % Generalized speeds; derivatives
 U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=10)
 # al> Constants      OMEGA         % Angular speed of B in A
 OMEGA = al.constants("OMEGA", line=11)
 # al> Constants      J              % Moment of inertia of B about spin axis
 J = al.constants("J", line=12)
-# -----
-# Mass and inertia
+# al> %-----
+# al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
 M = al.constants("M+", line=15)
 al.set_mass(A, M)
 # al> Inertia        A, I1, I2, I3 % Attribute inertia of G to A
 I1, I2, I3 = al.constants("I1+", "I2+", "I3+", line=16)
 al.set_inertia(A, I1, I2, I3)
-# -----
-# Angular velocities
+# al> %-----
+# al> %      Angular velocities
 # al> W_A_N> = U1*A1> + U2*A2> + U3*A3>
 al.set_ang_vel(A, N, U1 * A.x + U2 * A.y + U3 * A.z, line=19)
 # al> W_B_A> = OMEGA*A3>
 al.set_ang_vel(B, A, OMEGA * A.z, line=20)
-# -----
-# Angular accelerations
+# al> %-----
+# al> %      Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
 al.set_ang_acc(A, N, al.dt(al.ang_vel(A, N), N), line=23)
 # al> ALF_B_A> = DT(W_B_A>, A)
 al.set_ang_acc(B, A, al.dt(al.ang_vel(B, A), A), line=24)
-# -----
-# Acceleration of mass center of G is 0>
+# al> %-----
+# al> %      Acceleration of mass center of G is 0>
 # al> A_Ao_N> = 0>
 al.set_acc(Ao, N, Vector(0), line=27)
-# -----
-# Equations of motion
+# al> %-----
+# al> %      Equations of motion
 # al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
 Zero = al.assign(
     "ZERO", al.fr() + al.frstar() + al.gyrostat("FRSTAR", "CYLINDER", A, B, J), line=30
 )
 # al> Kane()
 Zero = al.kane(line=31)
-# -----
-# Angular momentum of gyrostat
+# al> %-----
+# al> %      Angular momentum of gyrostat
 # al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
 H_vec = al.assign(
     "H>",
@@ -157,16 +139,16 @@ H_vec = al.assign(
 )
 # al> H = Mag(H>)
 H = al.assign("H", al.mag(H_vec), line=35)
-# -----
-# Angle between angular momentum vector and A3>
+# al> %-----
+# al> %      Angle between angular momentum vector and A3>
 # al> PHI = acos( Dot( UNITVEC(H>), A3> ) )
 PHI = al.assign("PHI", acos(al.dot(al.unitvec(H_vec), A.z)), line=38)
-# -----
-# Units system for CODE input/output conversions
+# al> %-----
+# al> %      Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
 al.numerics.unit_system("kg", "meter", "sec")
-# -----
-# Input constants, variables, etc. for CODE
+# al> %-----
+# al> %      Input constants, variables, etc. for CODE
 # al> Input      tInitial=0,      tFinal=20          % Begin/end times
 al.numerics.input({"TINITIAL": 0, "TFINAL": 20}, line=44)
 # al> Input      integStp=0.1,    printInt=1          % Integration/print step
@@ -177,24 +159,24 @@ al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=46)
 al.numerics.input({"J": 0.07634, "I1": 1.25, "I2": 4.25, "I3": 5}, line=47)
 # al> Input  OMEGA=-20.0, U1=0, U2=0.02, U3=1
 al.numerics.input({"OMEGA": -20.0, "U1": 0, "U2": 0.02, "U3": 1}, line=48)
-# -----
-# Quantities to be output from CODE
+# al> %-----
+# al> %      Quantities to be output from CODE
 # al> Output T, PHI degs, H
 al.numerics.output([("T", t, None), ("PHI", PHI, "degs"), ("H", H, None)], line=51)
-# -----
-# Fortran code generation for numerical solution
+# al> %-----
+# al> %      Fortran code generation for numerical solution
 # al> CODE Dynamics() tutor9.for
 al.numerics.code("DYNAMICS", file="tutor9.for", line=54)
-# *****
-# STABILITY ANALYSIS
-# *****
-# Linearization: Perturbation vars + nominal solution parameters
+# al> %*****
+# al> %      STABILITY ANALYSIS
+# al> %*****
+# al> %      Linearization: Perturbation vars + nominal solution parameters
 # al> Variables  dU{3}'          % Perturbations of U1, U2, U3
 dU1, dU2, dU3 = al.variables("DU1'", "DU2'", "DU3'", line=59)
 # al> Constants  nU3             % Nominal solution for U3
 nU3 = al.constants("NU3", line=60)
-# -----
-# Check nominal solution
+# al> %-----
+# al> %      Check nominal solution
 # al> CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)
 CHECK = al.assign(
     "CHECK",
@@ -203,8 +185,8 @@ CHECK = al.assign(
     ),
     line=63,
 )
-# -----
-# Linearize equations of motion about nominal solution
+# al> %-----
+# al> %      Linearize equations of motion about nominal solution
 # al> PETURB = Taylor(Zero, 1, U1=0:dU1, U1'=0:dU1', U2=0:dU2, U2'=0:dU2', &
 # al> U3=nU3:dU3, U3'=0:dU3')
 PETURB = al.assign(
@@ -225,130 +207,38 @@ PETURB = al.assign(
 )
 # al> Solve( PETURB,  dU{1:3}' )
 al.solve(PETURB, [dU1.diff(t), dU2.diff(t), dU3.diff(t)], line=68)
-# -----
-# Form, x, x', and the A matrix in the equation x'=A*x
+# al> %-----
+# al> %      Form, x, x', and the A matrix in the equation x'=A*x
 # al> Xm = [ dU1,  dU2,  dU3 ]
 Xm = al.assign("XM", Matrix([[dU1, dU2, dU3]]), line=71)
 # al> Xp = [ dU1'; dU2'; dU3' ]
 Xp = al.assign("XP", Matrix([dU1.diff(t), dU2.diff(t), dU3.diff(t)]), line=72)
 # al> Am = D( Xp, Xm )
 Am = al.assign("AM", al.d(Xp, Xm), line=73)
-# -----
-# To find eigenvalues of Am symbolically, find the roots of the
-# equation found by setting the determinant of LAMBDA*I-A = 0
+# al> %-----
+# al> %      To find eigenvalues of Am symbolically, find the roots of the
+# al> %      equation found by setting the determinant of LAMBDA*I-A = 0
 # al> Variables LAMBDA
 LAMBDA = al.variables("LAMBDA", line=77)
 # al> DET = Det( LAMBDA*DIAGMAT(3,1) - Am )
 DET = al.assign("DET", al.det(LAMBDA * al.diagmat(3, 1) - Am), line=78)
-# -----
-# Inspection of DET shows that LAMBDA=0 is a root
+# al> %-----
+# al> %      Inspection of DET shows that LAMBDA=0 is a root
 # al> DET /= LAMBDA
 DET = al.assign("DET", al.val(DET) / (LAMBDA), line=81)
-# -----
-# With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,
-# determine the values of OMEGA which result in LAMBDA > 0
+# al> %-----
+# al> %      With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,
+# al> %      determine the values of OMEGA which result in LAMBDA > 0
 # al> DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)
 DET = al.assign(
     "DET", al.evaluate(DET, {J: 0.07634, I1: 1.25, I2: 4.25, I3: 5, nU3: 1}), line=85
 )
-# -----
-# Record Autolev responses
+# al> %-----
+# al> %      Record Autolev responses
 # al> Save tutor9.all
 al.save("tutor9.all")
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "%      File:  tutor9.al      [Autolev: http://www.autolev.com]",
-    "%      Problem:  Spin stability of gyrostat",
-    "%-----",
-    "%      Newtonian, bodies, frames, particles, points",
-    "Newtonian      N              % Newtonian reference frame",
-    "Bodies         A              % Carrier",
-    "Frames         B              % Rotor",
-    "%-----",
-    "%      Variables, constants, and specified",
-    "Variables      U{3}'         % Generalized speeds; derivatives",
-    "Constants      OMEGA         % Angular speed of B in A",
-    "Constants      J              % Moment of inertia of B about spin axis",
-    "%-----",
-    "%      Mass and inertia",
-    "Mass           A=M           % Attribute mass of G to A",
-    "Inertia        A, I1, I2, I3 % Attribute inertia of G to A",
-    "%-----",
-    "%      Angular velocities",
-    "W_A_N> = U1*A1> + U2*A2> + U3*A3>",
-    "W_B_A> = OMEGA*A3>",
-    "%-----",
-    "%      Angular accelerations",
-    "ALF_A_N> = DT(W_A_N>, N)",
-    "ALF_B_A> = DT(W_B_A>, A)",
-    "%-----",
-    "%      Acceleration of mass center of G is 0>",
-    "A_Ao_N> = 0>",
-    "%-----",
-    "%      Equations of motion",
-    "Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)",
-    "Kane()",
-    "%-----",
-    "%      Angular momentum of gyrostat",
-    "H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)",
-    "H = Mag(H>)",
-    "%-----",
-    "%      Angle between angular momentum vector and A3>",
-    "PHI = acos( Dot( UNITVEC(H>), A3> ) )",
-    "%-----",
-    "%      Units system for CODE input/output conversions",
-    "UnitSystem kg,meter,sec",
-    "%-----",
-    "%      Input constants, variables, etc. for CODE",
-    "Input      tInitial=0,      tFinal=20          % Begin/end times",
-    "Input      integStp=0.1,    printInt=1          % Integration/print step",
-    "Input      absErr=1.0E-07,  relErr=1.0E-07       % Error tolerances",
-    "Input      J=0.07634, I1=1.25, I2=4.25, I3=5",
-    "Input  OMEGA=-20.0, U1=0, U2=0.02, U3=1",
-    "%-----",
-    "%      Quantities to be output from CODE",
-    "Output T, PHI degs, H",
-    "%-----",
-    "%      Fortran code generation for numerical solution",
-    "CODE Dynamics() tutor9.for",
-    "%*****",
-    "%      STABILITY ANALYSIS",
-    "%*****",
-    "%      Linearization: Perturbation vars + nominal solution parameters",
-    "Variables  dU{3}'          % Perturbations of U1, U2, U3",
-    "Constants  nU3             % Nominal solution for U3",
-    "%-----",
-    "%      Check nominal solution",
-    "CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)",
-    "%-----",
-    "%      Linearize equations of motion about nominal solution",
-    "PETURB = Taylor(Zero, 1, U1=0:dU1, U1'=0:dU1', U2=0:dU2, U2'=0:dU2', &",
-    "                U3=nU3:dU3, U3'=0:dU3')",
-    "Solve( PETURB,  dU{1:3}' )",
-    "%-----",
-    "%      Form, x, x', and the A matrix in the equation x'=A*x",
-    "Xm = [ dU1,  dU2,  dU3 ]",
-    "Xp = [ dU1'; dU2'; dU3' ]",
-    "Am = D( Xp, Xm )",
-    "%-----",
-    "%      To find eigenvalues of Am symbolically, find the roots of the",
-    "%      equation found by setting the determinant of LAMBDA*I-A = 0",
-    "Variables LAMBDA",
-    "DET = Det( LAMBDA*DIAGMAT(3,1) - Am )",
-    "%-----",
-    "%      Inspection of DET shows that LAMBDA=0 is a root",
-    "DET /= LAMBDA",
-    "%-----",
-    "%      With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,",
-    "%      determine the values of OMEGA which result in LAMBDA > 0",
-    "DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)",
-    "%-----",
-    "%      Record Autolev responses",
-    "Save tutor9.all",
-)
 
 
 def run(values=None, /, **overrides):
@@ -388,7 +278,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python tutor9.py``: print the transcript, then run the CODE job."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":

@@ -12,89 +12,72 @@ import sys
 
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
-    sys.stdout.write(
-        "usage: python whipple_benchmark.py [-h] [--set NAME=VALUE] [--job STEM"
-        "]\n"
-        "                                   [--tfinal TFINAL] [--outdir OUTDIR]"
-        " [--plot]\n"
-        "                                   [--backend {auto,c,llvm,lambdify}]\n"
-        "                                   [--zero-missing] [--emit-code DIR]\n"
-        "                                   [--no-run] [--max-seconds S] [--max"
-        "-evals N]\n"
-        "\n"
-        "Print the Autolev transcript of whipple_benchmark.al and perform its n"
-        "umerical CODE job.\n"
-        "\n"
-        "options:\n"
-        "  -h, --help            show this help message and exit\n"
-        "  --set NAME=VALUE      change an Input value (repeatable); VALUE is i"
-        "n the\n"
-        "                        Input's unit\n"
-        "  --job STEM            perform (or with --emit-code, write) only the "
-        "CODE job\n"
-        "                        whose file is STEM (see the list below)\n"
-        "  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)\n"
-        "  --outdir OUTDIR       directory for every file the script writes: Sa"
-        "ve files,\n"
-        "                        output tables and plots, under their base name"
-        "s\n"
-        "                        (default: .)\n"
-        "  --plot                also write STEM.n.png plots\n"
-        "  --backend {auto,c,llvm,lambdify}\n"
-        "                        how Dynamics/ODE equations are evaluated (defa"
-        "ult:\n"
-        "                        $AL2PY_BACKEND or auto, the fastest available)"
-        "\n"
-        "  --zero-missing        use 0 for constants that no Input gives (by de"
-        "fault the\n"
-        "                        job stops and names them; or AL2PY_ZERO_MISSIN"
-        "G=1)\n"
-        "  --emit-code DIR       write the program (C, MATLAB or Fortran, as CO"
-        "DE names\n"
-        "                        it) and STEM.in of each CODE job into DIR (as "
-        "'al2py\n"
-        "                        code' does) instead of running\n"
-        "  --no-run              only print the transcript; perform no CODE job"
-        " and\n"
-        "                        write no file\n"
-        "  --max-seconds S       time budget of one integration (default 120; o"
-        "r\n"
-        "                        AL2PY_MAX_SECONDS)\n"
-        "  --max-evals N         right-hand-side evaluations allowed in one int"
-        "egration\n"
-        "                        (default 5e+06; or AL2PY_MAX_EVALS)\n"
-        "\n"
-        "Input values (change with --set NAME=VALUE, in these units):\n"
-        "  W = 1.02\n"
-        "  C = 0.08\n"
-        "  LAM = 0.314159265358979\n"
-        "  G = 9.81\n"
-        "  RR = 0.3\n"
-        "  RF = 0.35\n"
-        "  MR = 2\n"
-        "  MB = 85\n"
-        "  MH = 4\n"
-        "  MF = 3\n"
-        "  XB = 0.3\n"
-        "  ZB = -0.9\n"
-        "  XH = 0.9\n"
-        "  ZH = -0.7\n"
-        "  IRXX = 0.0603\n"
-        "  IRYY = 0.12\n"
-        "  IFXX = 0.1405\n"
-        "  IFYY = 0.28\n"
-        "  IBXX = 9.2\n"
-        "  IBYY = 11\n"
-        "  IBZZ = 2.8\n"
-        "  IBXZ = 2.4\n"
-        "  IHXX = 0.05892\n"
-        "  IHYY = 0.06\n"
-        "  IHZZ = 0.00708\n"
-        "  IHXZ = -0.00756\n"
-        "This script has no CODE statement: it only prints its transcript.\n"
-        "Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, "
-        "RELERR.\n"
-    )
+    sys.stdout.write("""\
+usage: python whipple_benchmark.py [-h] [--set NAME=VALUE] [--job STEM]
+                                   [--tfinal TFINAL] [--outdir OUTDIR] [--plot]
+                                   [--backend {auto,c,llvm,lambdify}]
+                                   [--zero-missing] [--emit-code DIR]
+                                   [--no-run] [--max-seconds S] [--max-evals N]
+
+Print the Autolev transcript of whipple_benchmark.al and perform its numerical CODE\
+ job.
+
+options:
+  -h, --help            show this help message and exit
+  --set NAME=VALUE      change an Input value (repeatable); VALUE is in the
+                        Input's unit
+  --job STEM            perform (or with --emit-code, write) only the CODE job
+                        whose file is STEM (see the list below)
+  --tfinal TFINAL       final time (sets TFINAL; Dynamics/ODE jobs)
+  --outdir OUTDIR       directory for every file the script writes: Save files,
+                        output tables and plots, under their base names
+                        (default: .)
+  --plot                also write STEM.n.png plots
+  --backend {auto,c,llvm,lambdify}
+                        how Dynamics/ODE equations are evaluated (default:
+                        $AL2PY_BACKEND or auto, the fastest available)
+  --zero-missing        use 0 for constants that no Input gives (by default the
+                        job stops and names them; or AL2PY_ZERO_MISSING=1)
+  --emit-code DIR       write the program (C, MATLAB or Fortran, as CODE names
+                        it) and STEM.in of each CODE job into DIR (as 'al2py
+                        code' does) instead of running
+  --no-run              only print the transcript; perform no CODE job and
+                        write no file
+  --max-seconds S       time budget of one integration (default 120; or
+                        AL2PY_MAX_SECONDS)
+  --max-evals N         right-hand-side evaluations allowed in one integration
+                        (default 5e+06; or AL2PY_MAX_EVALS)
+
+Input values (change with --set NAME=VALUE, in these units):
+  W = 1.02
+  C = 0.08
+  LAM = 0.314159265358979
+  G = 9.81
+  RR = 0.3
+  RF = 0.35
+  MR = 2
+  MB = 85
+  MH = 4
+  MF = 3
+  XB = 0.3
+  ZB = -0.9
+  XH = 0.9
+  ZH = -0.7
+  IRXX = 0.0603
+  IRYY = 0.12
+  IFXX = 0.1405
+  IFYY = 0.28
+  IBXX = 9.2
+  IBYY = 11
+  IBZZ = 2.8
+  IBXZ = 2.4
+  IHXX = 0.05892
+  IHYY = 0.06
+  IHZZ = 0.00708
+  IHXZ = -0.00756
+This script has no CODE statement: it only prints its transcript.
+Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
+""")
     raise SystemExit(0)
 
 from al2py_runtime import Workspace, t  # noqa: E402
@@ -102,13 +85,13 @@ from sympy import Eq, Matrix  # noqa: E402
 
 al = Workspace("whipple_benchmark.al")
 
-# File: whipple_benchmark.al
-# Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,
-# Ruina and Schwab, Proc. R. Soc. A 463 (2007): rear wheel R, rear frame
-# with rider B, front frame and fork H, front wheel F; knife-edge wheels
-# rolling without slip on level ground.  Written for al2py's tests from the
-# paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.
-# -----
+# al> % File: whipple_benchmark.al
+# al> % Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,
+# al> %   Ruina and Schwab, Proc. R. Soc. A 463 (2007): rear wheel R, rear frame
+# al> %   with rider B, front frame and fork H, front wheel F; knife-edge wheels
+# al> %   rolling without slip on level ground.  Written for al2py's tests from the
+# al> %   paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.
+# al> %-----
 # al> AutoZ ON                           % intermediates, as Autolev's Z's
 al.settings.set("Autoz", "ON")
 # al> Newtonian N
@@ -129,9 +112,9 @@ R_body, B_body, H_body, F_body = (
 )
 # al> Points    P, S               % rear contact point, a point on the steer axis
 P, S = al.points("P", "S")
-# -----
-# Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
-# Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
+# al> %-----
+# al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
+# al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
 # al> Variables Q{8}'
 Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = al.variables(
     "Q1'", "Q2'", "Q3'", "Q4'", "Q5'", "Q6'", "Q7'", "Q8'", line=16
@@ -152,7 +135,7 @@ IRXX, IRYY, IFXX, IFYY = al.constants("IRXX", "IRYY", "IFXX", "IFYY", line=21)
 IBXX, IBYY, IBZZ, IBXZ = al.constants("IBXX", "IBYY", "IBZZ", "IBXZ", line=22)
 # al> Constants IHXX, IHYY, IHZZ, IHXZ
 IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
-# -----
+# al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
 MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
 al.set_mass(R, MR)
@@ -167,7 +150,7 @@ al.set_inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
 al.set_inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
 # al> Inertia F, IFXX, IFYY, IFXX
 al.set_inertia(F, IFXX, IFYY, IFXX)
-# -----
+# al> %-----
 # al> Simprot(N, Y, 3, Q3)
 # sympy: Y.orient_axis(N, N.z, Q3)
 al.simprot(N, Y, 3, Q3, line=31)
@@ -183,13 +166,13 @@ al.simprot(B, R, 2, Q6, line=34)
 # al> Simprot(B, E, 2, LAM)
 # sympy: E.orient_axis(B, B.y, LAM)
 al.simprot(B, E, 2, LAM, line=35)
-# H's axes are parallel to B's when the steer angle is zero.
+# al> % H's axes are parallel to B's when the steer angle is zero.
 # al> Dircos(E, H, BODY321, Q7, -LAM, 0)
 al.dircos(E, H, "BODY321", Q7, -LAM, 0, line=37)
 # al> Simprot(H, F, 2, Q8)
 # sympy: F.orient_axis(H, H.y, Q8)
 al.simprot(H, F, 2, Q8, line=38)
-# -----
+# al> %-----
 # al> Q1' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(Q1.diff(t), U1), line=40))
@@ -207,7 +190,7 @@ kd_eqs.append(al.kd(Eq(Q6.diff(t), U6), line=45))
 kd_eqs.append(al.kd(Eq(Q7.diff(t), U7), line=46))
 # al> Q8' = U8
 kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))
-# -----
+# al> %-----
 # al> W_Y_N> = U3*N3>
 al.set_ang_vel(Y, N, U3 * N.z, line=49)
 # al> W_L_N> = W_Y_N> + U4*Y1>
@@ -222,12 +205,12 @@ al.set_ang_vel(E, N, al.ang_vel(B, N), line=53)
 al.set_ang_vel(H, N, al.ang_vel(B, N) + U7 * E.z, line=54)
 # al> W_F_N> = W_H_N> + U8*H2>
 al.set_ang_vel(F, N, al.ang_vel(H, N) + U8 * H.y, line=55)
-# -----
+# al> %-----
 # al> P_P_Ro> = -RR*L3>
 al.set_pos(Ro, P, -RR * L.z, line=57)
 # al> P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>
 al.set_pos(Bo, Ro, XB * B.x + (ZB + RR) * B.z, line=58)
-# The steer axis meets the ground at distance W + C ahead of P.
+# al> % The steer axis meets the ground at distance W + C ahead of P.
 # al> P_Ro_S> = (W + C)*B1> + RR*B3>
 al.set_pos(S, Ro, (W + C) * B.x + RR * B.z, line=60)
 # al> P_S_Ho> = (XH - W - C)*H1> + ZH*H3>
@@ -238,7 +221,7 @@ al.set_pos(Fo, S, -C * H.x - RF * H.z, line=62)
 DOWN_vec = al.assign("DOWN>", al.cross(H.y, al.cross(N.z, H.y)), line=63)
 # al> P_Fo_Q> = RF*UnitVec(DOWN>)
 P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.unitvec(DOWN_vec), line=64)
-# -----
+# al> %-----
 # al> V_P_N> = U1*N1> + U2*N2>
 al.set_vel(P, N, U1 * N.x + U2 * N.y, line=66)
 # al> V2pts(N, L, P, Ro)
@@ -256,8 +239,8 @@ al.v2pts(N, H, S, Ho, line=70)
 # al> V2pts(N, H, S, Fo)
 # sympy: Fo.v2pt_theory(S, N, H)
 al.v2pts(N, H, S, Fo, line=71)
-# -----
-# Rolling without slip: the wheels' material points at the contacts are at rest.
+# al> %-----
+# al> % Rolling without slip: the wheels' material points at the contacts are at rest.
 # al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
 SLIPR_vec = al.assign(
     "SLIPR>", al.vel(Ro, N) + al.cross(al.ang_vel(R, N), -al.pos(P, Ro)), line=74
@@ -278,16 +261,16 @@ DEPENDENT = al.assign("DEPENDENT[4]", al.dot(SLIPF_vec, N.y), line=79)
 DEPENDENT = al.assign("DEPENDENT[5]", al.dot(SLIPF_vec, N.z), line=80)
 # al> Constrain(DEPENDENT[U1, U2, U3, U5, U8])
 al.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
-# -----
+# al> %-----
 # al> Gravity(G*N3>)
 al.gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.fr() + al.frstar(), line=84)
 # al> Kane()
 Zero = al.kane(line=85)
-# Linearized equations about the upright reference configuration: the
-# accelerations of the independent speeds and their Jacobian by the lean
-# and steer angles and rates (the forward speed is U6 = -v/RR).
+# al> % Linearized equations about the upright reference configuration: the
+# al> % accelerations of the independent speeds and their Jacobian by the lean
+# al> % and steer angles and rates (the forward speed is U6 = -v/RR).
 # al> Solve(Zero, U4', U6', U7')
 al.solve(Zero, [U4.diff(t), U6.diff(t), U7.diff(t)], line=89)
 # al> XD = [U4'; U7']
@@ -296,8 +279,8 @@ XD = al.assign("XD", Matrix([U4.diff(t), U7.diff(t)]), line=90)
 XS = al.assign("XS", Matrix([Q4, Q7, U4, U7]), line=91)
 # al> AL = D(XD, XS)
 AL = al.assign("AL", al.d(XD, XS), line=92)
-# -----
-# Benchmark parameters, Table 1 of the paper.
+# al> %-----
+# al> % Benchmark parameters, Table 1 of the paper.
 # al> Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81
 al.numerics.input({"W": 1.02, "C": 0.08, "LAM": 0.314159265358979, "G": 9.81}, line=95)
 # al> Input RR=0.3, RF=0.35, MR=2, MB=85, MH=4, MF=3
@@ -314,119 +297,6 @@ al.numerics.input(
 )
 
 AUTOLEV = al.names()
-
-# The Autolev source, echoed in the transcript.
-AL_SOURCE = (
-    "% File: whipple_benchmark.al",
-    "% Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,",
-    "%   Ruina and Schwab, Proc. R. Soc. A 463 (2007): rear wheel R, rear frame",
-    "%   with rider B, front frame and fork H, front wheel F; knife-edge wheels",
-    "%   rolling without slip on level ground.  Written for al2py's tests from the",
-    "%   paper's description.  Axes as in the paper: 1 forward, 2 right, 3 down.",
-    "%-----",
-    "AutoZ ON                           % intermediates, as Autolev's Z's",
-    "Newtonian N",
-    "Frames    Y, L, E            % heading, lean (roll), steer axis",
-    "Bodies    R, B, H, F",
-    "Points    P, S               % rear contact point, a point on the steer axis",
-    "%-----",
-    "% Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;",
-    "% Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.",
-    "Variables Q{8}'",
-    "Variables U{8}'",
-    (
-        "Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt"
-        ", gravity"
-    ),
-    "Constants RR, RF                   % wheel radii",
-    (
-        "Constants XB, ZB, XH, ZH           % mass centres in the reference con"
-        "figuration"
-    ),
-    "Constants IRXX, IRYY, IFXX, IFYY",
-    "Constants IBXX, IBYY, IBZZ, IBXZ",
-    "Constants IHXX, IHYY, IHZZ, IHXZ",
-    "%-----",
-    "Mass    R=MR, B=MB, H=MH, F=MF",
-    "Inertia R, IRXX, IRYY, IRXX",
-    "Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ",
-    "Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ",
-    "Inertia F, IFXX, IFYY, IFXX",
-    "%-----",
-    "Simprot(N, Y, 3, Q3)",
-    "Simprot(Y, L, 1, Q4)",
-    "Simprot(L, B, 2, Q5)",
-    "Simprot(B, R, 2, Q6)",
-    "Simprot(B, E, 2, LAM)",
-    "% H's axes are parallel to B's when the steer angle is zero.",
-    "Dircos(E, H, BODY321, Q7, -LAM, 0)",
-    "Simprot(H, F, 2, Q8)",
-    "%-----",
-    "Q1' = U1",
-    "Q2' = U2",
-    "Q3' = U3",
-    "Q4' = U4",
-    "Q5' = U5",
-    "Q6' = U6",
-    "Q7' = U7",
-    "Q8' = U8",
-    "%-----",
-    "W_Y_N> = U3*N3>",
-    "W_L_N> = W_Y_N> + U4*Y1>",
-    "W_B_N> = W_L_N> + U5*L2>",
-    "W_R_N> = W_B_N> + U6*B2>",
-    "W_E_N> = W_B_N>",
-    "W_H_N> = W_B_N> + U7*E3>",
-    "W_F_N> = W_H_N> + U8*H2>",
-    "%-----",
-    "P_P_Ro> = -RR*L3>",
-    "P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>",
-    "% The steer axis meets the ground at distance W + C ahead of P.",
-    "P_Ro_S> = (W + C)*B1> + RR*B3>",
-    "P_S_Ho> = (XH - W - C)*H1> + ZH*H3>",
-    "P_S_Fo> = -C*H1> - RF*H3>",
-    "DOWN> = Cross(H2>, Cross(N3>, H2>))",
-    "P_Fo_Q> = RF*UnitVec(DOWN>)",
-    "%-----",
-    "V_P_N> = U1*N1> + U2*N2>",
-    "V2pts(N, L, P, Ro)",
-    "V2pts(N, B, Ro, Bo)",
-    "V2pts(N, B, Ro, S)",
-    "V2pts(N, H, S, Ho)",
-    "V2pts(N, H, S, Fo)",
-    "%-----",
-    (
-        "% Rolling without slip: the wheels' material points at the contacts ar"
-        "e at rest."
-    ),
-    "SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)",
-    "SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)",
-    "DEPENDENT[1] = Dot(SLIPR>, N1>)",
-    "DEPENDENT[2] = Dot(SLIPR>, N2>)",
-    "DEPENDENT[3] = Dot(SLIPF>, N1>)",
-    "DEPENDENT[4] = Dot(SLIPF>, N2>)",
-    "DEPENDENT[5] = Dot(SLIPF>, N3>)",
-    "Constrain(DEPENDENT[U1, U2, U3, U5, U8])",
-    "%-----",
-    "Gravity(G*N3>)",
-    "Zero = Fr() + FrStar()",
-    "Kane()",
-    "% Linearized equations about the upright reference configuration: the",
-    "% accelerations of the independent speeds and their Jacobian by the lean",
-    "% and steer angles and rates (the forward speed is U6 = -v/RR).",
-    "Solve(Zero, U4', U6', U7')",
-    "XD = [U4'; U7']",
-    "XS = [Q4; Q7; U4; U7]",
-    "AL = D(XD, XS)",
-    "%-----",
-    "% Benchmark parameters, Table 1 of the paper.",
-    "Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81",
-    "Input RR=0.3, RF=0.35, MR=2, MB=85, MH=4, MF=3",
-    "Input XB=0.3, ZB=-0.9, XH=0.9, ZH=-0.7",
-    "Input IRXX=0.0603, IRYY=0.12, IFXX=0.1405, IFYY=0.28",
-    "Input IBXX=9.2, IBYY=11, IBZZ=2.8, IBXZ=2.4",
-    "Input IHXX=0.05892, IHYY=0.06, IHZZ=0.00708, IHXZ=-0.00756",
-)
 
 
 def kanes_method():
@@ -446,7 +316,7 @@ def evaluate(name, values=None, /, **given):
 
 def main(argv: list[str] | None = None) -> int:
     """``python whipple_benchmark.py``: print the transcript."""
-    return al.main(AL_SOURCE, argv)
+    return al.main(__file__, argv)  # the transcript echoes the # al> lines
 
 
 if __name__ == "__main__":
