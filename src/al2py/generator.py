@@ -16,7 +16,15 @@ from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
 from al2py_runtime.names.transcript import echo_lines
-from al2py_runtime.vocabulary import BUILTINS, Builtin, Decl, Form, Kind, Match, Style
+from al2py_runtime.vocabulary import (
+    BUILTINS,
+    Builtin,
+    Decl,
+    Form,
+    Kind,
+    Match,
+    Style,
+)
 
 from . import ir
 from .analysis import (
@@ -47,6 +55,15 @@ _POINT_THEORIES = {
     "A1PT": "a1pt_theory",
 }
 _COMMENT_WIDTH = 84
+#: syntactical forms whose assignment is sympy's own setter
+#: (``P_O_P> = v`` is ``P.set_pos(O, v)``), by form
+_SYMPY_SETTERS = {
+    Form.POS: "set_pos",
+    Form.VEL: "set_vel",
+    Form.ACC: "set_acc",
+    Form.ANGVEL: "set_ang_vel",
+    Form.ANGACC: "set_ang_acc",
+}
 
 
 class Imports:
@@ -258,6 +275,14 @@ class Generator:
             if setter is None or target.primes:
                 return [f"al.assign({target.key!r}, {value}, line={self._line})"]
             objs = [self._object(form.parts[i]) for i in form.row.setter_order]
+            sympy_setter = _SYMPY_SETTERS.get(form.kind)
+            if sympy_setter is not None:
+                # sympy is told; the runtime reads it back with Autolev's rules
+                obj, other = objs
+                return [
+                    f"{obj}.{sympy_setter}({other}, {value})",
+                    f"al.given_{setter[4:]}({obj}, {other}, line={self._line})",
+                ]
             return [f"al.{setter}({', '.join(objs)}, {value}, line={self._line})"]
         sym = self._facts.target
         if sym is None:
@@ -342,7 +367,7 @@ class Generator:
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
-                return [*self._sympy_hint(expr, b), self._command(expr, b)]
+                return self._sympy_call(expr, b) or [self._command(expr, b)]
             if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
@@ -355,25 +380,37 @@ class Generator:
         label = ir.autolev_text(expr)  # also from RUN files and macros
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
 
-    def _sympy_hint(self, call: ir.Call, b: Builtin) -> list[str]:
-        """A comment with the sympy.physics.mechanics call a command amounts to."""
+    def _sympy_call(self, call: ir.Call, b: Builtin) -> list[str]:
+        """A rotation command as sympy's own call (``A.orient_axis(N, N.z,
+        QA)``), then the runtime's record of it (its response, its named
+        direction cosines); ``[]`` where Autolev's command is the runtime's
+        (an axis given as a vector, Euler parameters, Rodrigues)."""
         args = call.args
-        if b.name in _POINT_THEORIES and all(isinstance(a, ir.Name) for a in args):
-            n, a, o, p = (self.expr(x) for x in args)
-            return [f"# sympy: {p}.{_POINT_THEORIES[b.name]}({o}, {n}, {a})"]
+        if b.name not in ("SIMPROT", "DIRCOS") or len(args) < 4:
+            return []
+        if not all(isinstance(a, ir.Name) for a in args[:2]):
+            return []
+        parent, child = self.expr(args[0]), self.expr(args[1])
+        record = f"al.given_orientation({child}, {parent}, line={self._line})"
         if b.name == "SIMPROT":
             axis = int_literal(args[2])
-            if axis is not None and isinstance(args[0], ir.Name):
-                parent, child, angle = (
-                    self.expr(args[0]),
-                    self.expr(args[1]),
-                    self.expr(args[3]),
-                )
-                sign = "-" if axis < 0 else ""
-                unit = f"{parent}.{'xyz'[abs(axis) - 1]}"
-                return [
-                    f"# sympy: {child}.orient_axis({parent}, {sign}{unit}, {angle})"
-                ]
+            if axis is None or not 1 <= abs(axis) <= 3:
+                return []
+            sign = "-" if axis < 0 else ""
+            unit = f"{parent}.{'xyz'[abs(axis) - 1]}"
+            angle = self.expr(args[3])
+            return [f"{child}.orient_axis({parent}, {sign}{unit}, {angle})", record]
+        if b.name == "DIRCOS" and len(args) == 6 and isinstance(args[2], ir.Name):
+            kind = args[2].key.upper()
+            m = re.fullmatch(r"(BODY|SPACE)([123]{3})", kind)
+            if m is None:
+                return []
+            how = "orient_body_fixed" if m.group(1) == "BODY" else "orient_space_fixed"
+            angles = ", ".join(self.expr(a) for a in args[3:])
+            return [
+                f"{child}.{how}({parent}, ({angles}), {m.group(2)!r})",
+                record,
+            ]
         return []
 
     def _command(self, call: ir.Call, b: Builtin) -> str:

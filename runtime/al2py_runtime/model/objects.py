@@ -330,6 +330,36 @@ class Objects:
         """``I_B_P>> = d``: the inertia dyadic of body B about P."""
         return self._set(Form.INERTIA, [body, p], value, line)
 
+    # What a module told sympy directly (``P.set_pos(O, v)``...): the
+    # runtime takes the value back from the sympy object, applies Autolev's
+    # rules to it (the same as the setters above: normalized, kept for
+    # Autolev's chains) and records Autolev's response.
+
+    @command
+    def given_pos(self, p: Point, o: Point, *, line=None) -> Vector:
+        """After ``P.set_pos(O, v)`` (``P_O_P> = v``): Autolev's response."""
+        return self._set(Form.POS, [o, p], p.pos_from(o), line)
+
+    @command
+    def given_vel(self, p: Point, frame: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.set_vel(N, v)`` (``V_P_N> = v``): Autolev's response."""
+        return self._set(Form.VEL, [p, frame], p.vel(frame), line)
+
+    @command
+    def given_acc(self, p: Point, frame: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.set_acc(N, v)`` (``A_P_N> = v``): Autolev's response."""
+        return self._set(Form.ACC, [p, frame], p.acc(frame), line)
+
+    @command
+    def given_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
+        """After ``B.set_ang_vel(A, w)`` (``W_B_A> = w``): Autolev's response."""
+        return self._set(Form.ANGVEL, [b, a], b.ang_vel_in(a), line)
+
+    @command
+    def given_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
+        """After ``B.set_ang_acc(A, v)`` (``ALF_B_A> = v``): Autolev's response."""
+        return self._set(Form.ANGACC, [b, a], b.ang_acc_in(a), line)
+
     def form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""
         if key.name == "0>":

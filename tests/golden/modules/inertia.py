@@ -69,7 +69,8 @@ al.set_mass(B, MB)
 # al> Constants I,J,L
 I_, J, L = al.constants("I", "J", "L", line=4)
 # al> P_Bo_P> = L*B1>
-al.set_pos(P, Bo, L * B.x, line=5)
+P.set_pos(Bo, L * B.x)
+al.given_pos(P, Bo, line=5)
 # al> I_B_P>> = I*B1>*B1> + I*B2>*B2> + J*B3>*B3>
 al.set_inertia_about(
     B, P, outer(I_ * B.x, B.x) + outer(I_ * B.y, B.y) + outer(J * B.z, B.z), line=6

@@ -101,24 +101,29 @@ al.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(A, B, -2, PHI)
-# sympy: B.orient_axis(A, -A.y, PHI)
-al.simprot(A, B, -2, PHI, line=22)
+B.orient_axis(A, -A.y, PHI)
+al.given_orientation(B, A, line=22)
 # al> A_C = Diagmat(3,1) % 3x3 identity matrix
 al.set_dcm(A, C, al.diagmat(3, 1), line=23)
 # al> %-----
 # al> % Position vectors (Ao, Bo, Co are mass centers)
 # al> P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>
-al.set_pos(Ao, O_, -0.5 * W * A.x + 0.5 * W * A.y, line=26)
+Ao.set_pos(O_, -0.5 * W * A.x + 0.5 * W * A.y)
+al.given_pos(Ao, O_, line=26)
 # al> P_O_Bo> = -W*A1> + 0.5*W*A2> + 0.5*W*B1>
-al.set_pos(Bo, O_, -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x, line=27)
+Bo.set_pos(O_, -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x)
+al.given_pos(Bo, O_, line=27)
 # al> P_O_Co> = W*A2> - 0.5*W*C1> - 0.5*W*C3>
-al.set_pos(Co, O_, W * A.y - 0.5 * W * C.x - 0.5 * W * C.z, line=28)
+Co.set_pos(O_, W * A.y - 0.5 * W * C.x - 0.5 * W * C.z)
+al.given_pos(Co, O_, line=28)
 # al> P_O_P> = W*A2> - W*C3>
-al.set_pos(P, O_, W * A.y - W * C.z, line=29)
+P.set_pos(O_, W * A.y - W * C.z)
+al.given_pos(P, O_, line=29)
 # al> %-----
 # al> % Center of mass of system
 # al> P_O_CM> = CM(O)
-al.set_pos(CM, O_, al.cm(O_), line=32)
+CM.set_pos(O_, al.cm(O_))
+al.given_pos(CM, O_, line=32)
 # al> Distance = Mag( P_O_CM> )
 Distance = al.assign("DISTANCE", al.mag(al.pos(O_, CM)), line=33)
 # al> %-----

@@ -86,24 +86,28 @@ LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=10)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
-# sympy: A.orient_axis(N, N.z, QA)
-al.simprot(N, A, 3, QA, line=13)
+A.orient_axis(N, N.z, QA)
+al.given_orientation(A, N, line=13)
 # al> Simprot(N, B, 3, QB)
-# sympy: B.orient_axis(N, N.z, QB)
-al.simprot(N, B, 3, QB, line=14)
+B.orient_axis(N, N.z, QB)
+al.given_orientation(B, N, line=14)
 # al> Simprot(N, C, 3, QC)
-# sympy: C.orient_axis(N, N.z, QC)
-al.simprot(N, C, 3, QC, line=15)
+C.orient_axis(N, N.z, QC)
+al.given_orientation(C, N, line=15)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
-al.set_pos(P, O_, LA * A.x, line=18)
+P.set_pos(O_, LA * A.x)
+al.given_pos(P, O_, line=18)
 # al> P_P_Q> = LB*B1>
-al.set_pos(Q, P, LB * B.x, line=19)
+Q.set_pos(P, LB * B.x)
+al.given_pos(Q, P, line=19)
 # al> P_R_Q> = LC*C1>
-al.set_pos(Q, R, LC * C.x, line=20)
+Q.set_pos(R, LC * C.x)
+al.given_pos(Q, R, line=20)
 # al> P_O_R> = LN*N2>
-al.set_pos(R, O_, LN * N.y, line=21)
+R.set_pos(O_, LN * N.y)
+al.given_pos(R, O_, line=21)
 # al> %-----
 # al> %      Configuration constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>

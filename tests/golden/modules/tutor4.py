@@ -103,17 +103,19 @@ al.set_mass(Q, MQ)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
-# sympy: A.orient_axis(N, N.z, QA)
-al.simprot(N, A, 3, QA, line=18)
+A.orient_axis(N, N.z, QA)
+al.given_orientation(A, N, line=18)
 # al> Simprot(N, B, 3, QB)
-# sympy: B.orient_axis(N, N.z, QB)
-al.simprot(N, B, 3, QB, line=19)
+B.orient_axis(N, N.z, QB)
+al.given_orientation(B, N, line=19)
 # al> %-----
 # al> % Position vectors
 # al> P_O_P> = LA*A1>
-al.set_pos(P, O_, LA * A.x, line=22)
+P.set_pos(O_, LA * A.x)
+al.given_pos(P, O_, line=22)
 # al> P_P_Q> = LB*B1>
-al.set_pos(Q, P, LB * B.x, line=23)
+Q.set_pos(P, LB * B.x)
+al.given_pos(Q, P, line=23)
 # al> %-----
 # al> % Kinematical differential equations
 # al> QA' = U1/LA
@@ -124,18 +126,19 @@ kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=27))
 # al> %-----
 # al> % Angular velocities
 # al> W_A_N> = QA'*A3>
-al.set_ang_vel(A, N, QA.diff(t) * A.z, line=30)
+A.set_ang_vel(N, QA.diff(t) * A.z)
+al.given_ang_vel(A, N, line=30)
 # al> W_B_N> = QB'*B3>
-al.set_ang_vel(B, N, QB.diff(t) * B.z, line=31)
+B.set_ang_vel(N, QB.diff(t) * B.z)
+al.given_ang_vel(B, N, line=31)
 # al> %-----
 # al> % Velocities
 # al> V_O_N> = 0>
-al.set_vel(O_, N, Vector(0), line=34)
+O_.set_vel(N, Vector(0))
+al.given_vel(O_, N, line=34)
 # al> V2pts(N, A, O, P)
-# sympy: P.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, P, line=35)
 # al> V2pts(N, B, P, Q)
-# sympy: Q.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Q, line=36)
 # al> %-----
 # al> % Forces

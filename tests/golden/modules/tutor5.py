@@ -118,30 +118,37 @@ al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
-# sympy: A.orient_axis(N, N.z, QA)
-al.simprot(N, A, 3, QA, line=23)
+A.orient_axis(N, N.z, QA)
+al.given_orientation(A, N, line=23)
 # al> Simprot(N, B, 3, QB)
-# sympy: B.orient_axis(N, N.z, QB)
-al.simprot(N, B, 3, QB, line=24)
+B.orient_axis(N, N.z, QB)
+al.given_orientation(B, N, line=24)
 # al> Simprot(N, C, 3, QC)
-# sympy: C.orient_axis(N, N.z, QC)
-al.simprot(N, C, 3, QC, line=25)
+C.orient_axis(N, N.z, QC)
+al.given_orientation(C, N, line=25)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
-al.set_pos(P, O_, LA * A.x, line=28)
+P.set_pos(O_, LA * A.x)
+al.given_pos(P, O_, line=28)
 # al> P_P_Q> = LB*B1>
-al.set_pos(Q, P, LB * B.x, line=29)
+Q.set_pos(P, LB * B.x)
+al.given_pos(Q, P, line=29)
 # al> P_R_Q> = LC*C1>
-al.set_pos(Q, R, LC * C.x, line=30)
+Q.set_pos(R, LC * C.x)
+al.given_pos(Q, R, line=30)
 # al> P_O_R> = LN*N2>
-al.set_pos(R, O_, LN * N.y, line=31)
+R.set_pos(O_, LN * N.y)
+al.given_pos(R, O_, line=31)
 # al> P_O_Ao> = 0.5*P_O_P>
-al.set_pos(Ao, O_, 0.5 * al.pos(O_, P), line=32)
+Ao.set_pos(O_, 0.5 * al.pos(O_, P))
+al.given_pos(Ao, O_, line=32)
 # al> P_P_Bo> = 0.5*P_P_Q>
-al.set_pos(Bo, P, 0.5 * al.pos(P, Q), line=33)
+Bo.set_pos(P, 0.5 * al.pos(P, Q))
+al.given_pos(Bo, P, line=33)
 # al> P_R_Co> = 0.5*P_R_Q>
-al.set_pos(Co, R, 0.5 * al.pos(R, Q), line=34)
+Co.set_pos(R, 0.5 * al.pos(R, Q))
+al.given_pos(Co, R, line=34)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
@@ -154,11 +161,14 @@ kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
-al.set_ang_vel(A, N, QA.diff(t) * A.z, line=42)
+A.set_ang_vel(N, QA.diff(t) * A.z)
+al.given_ang_vel(A, N, line=42)
 # al> W_B_N> = QB'*B3>
-al.set_ang_vel(B, N, QB.diff(t) * B.z, line=43)
+B.set_ang_vel(N, QB.diff(t) * B.z)
+al.given_ang_vel(B, N, line=43)
 # al> W_C_N> = QC'*C3>
-al.set_ang_vel(C, N, QC.diff(t) * C.z, line=44)
+C.set_ang_vel(N, QC.diff(t) * C.z)
+al.given_ang_vel(C, N, line=44)
 # al> %-----
 # al> %      Configuration Constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
@@ -172,24 +182,19 @@ CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=49)
 # al> %-----
 # al> %           Velocities
 # al> V_O_N> = 0>
-al.set_vel(O_, N, Vector(0), line=52)
+O_.set_vel(N, Vector(0))
+al.given_vel(O_, N, line=52)
 # al> V2pts(N, A, O, Ao)
-# sympy: Ao.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, Ao, line=53)
 # al> V2pts(N, A, O, P)
-# sympy: P.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, P, line=54)
 # al> V2pts(N, B, P, Bo)
-# sympy: Bo.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Bo, line=55)
 # al> V2pts(N, B, P, Q)
-# sympy: Q.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Q, line=56)
 # al> V2pts(N, C, Q, Co)
-# sympy: Co.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, Co, line=57)
 # al> V2pts(N, C, Q, R)
-# sympy: R.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, R, line=58)
 # al> %-----
 # al> %           Motion constraints

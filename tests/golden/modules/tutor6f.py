@@ -124,17 +124,19 @@ al.set_mass(Q, MQ)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
-# sympy: A.orient_axis(N, N.z, QA)
-al.simprot(N, A, 3, QA, line=25)
+A.orient_axis(N, N.z, QA)
+al.given_orientation(A, N, line=25)
 # al> Simprot(N, B, 3, QB)
-# sympy: B.orient_axis(N, N.z, QB)
-al.simprot(N, B, 3, QB, line=26)
+B.orient_axis(N, N.z, QB)
+al.given_orientation(B, N, line=26)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
-al.set_pos(P, O_, LA * A.x, line=29)
+P.set_pos(O_, LA * A.x)
+al.given_pos(P, O_, line=29)
 # al> P_P_Q> = LB*B1>
-al.set_pos(Q, P, LB * B.x, line=30)
+Q.set_pos(P, LB * B.x)
+al.given_pos(Q, P, line=30)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1/LA
@@ -145,18 +147,19 @@ kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=34))
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
-al.set_ang_vel(A, N, QA.diff(t) * A.z, line=37)
+A.set_ang_vel(N, QA.diff(t) * A.z)
+al.given_ang_vel(A, N, line=37)
 # al> W_B_N> = QB'*B3>
-al.set_ang_vel(B, N, QB.diff(t) * B.z, line=38)
+B.set_ang_vel(N, QB.diff(t) * B.z)
+al.given_ang_vel(B, N, line=38)
 # al> %-----
 # al> %      Velocities
 # al> V_O_N> = U3*N1> + U4*N2>          % Brings into evidence F1, F2
-al.set_vel(O_, N, U3 * N.x + U4 * N.y, line=41)
+O_.set_vel(N, U3 * N.x + U4 * N.y)
+al.given_vel(O_, N, line=41)
 # al> V2pts(N, A, O, P)
-# sympy: P.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, P, line=42)
 # al> V2pts(N, B, P, Q)
-# sympy: Q.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Q, line=43)
 # al> %-----
 # al> %      Motion constraints

@@ -130,30 +130,37 @@ al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
-# sympy: A.orient_axis(N, N.z, QA)
-al.simprot(N, A, 3, QA, line=28)
+A.orient_axis(N, N.z, QA)
+al.given_orientation(A, N, line=28)
 # al> Simprot(N, B, 3, QB)
-# sympy: B.orient_axis(N, N.z, QB)
-al.simprot(N, B, 3, QB, line=29)
+B.orient_axis(N, N.z, QB)
+al.given_orientation(B, N, line=29)
 # al> Simprot(N, C, 3, QC)
-# sympy: C.orient_axis(N, N.z, QC)
-al.simprot(N, C, 3, QC, line=30)
+C.orient_axis(N, N.z, QC)
+al.given_orientation(C, N, line=30)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
-al.set_pos(P, O_, LA * A.x, line=33)
+P.set_pos(O_, LA * A.x)
+al.given_pos(P, O_, line=33)
 # al> P_P_Q> = LB*B1>
-al.set_pos(Q, P, LB * B.x, line=34)
+Q.set_pos(P, LB * B.x)
+al.given_pos(Q, P, line=34)
 # al> P_R_Q> = LC*C1>
-al.set_pos(Q, R, LC * C.x, line=35)
+Q.set_pos(R, LC * C.x)
+al.given_pos(Q, R, line=35)
 # al> P_O_R> = LN*N2>
-al.set_pos(R, O_, LN * N.y, line=36)
+R.set_pos(O_, LN * N.y)
+al.given_pos(R, O_, line=36)
 # al> P_O_Ao> = 0.5*P_O_P>
-al.set_pos(Ao, O_, 0.5 * al.pos(O_, P), line=37)
+Ao.set_pos(O_, 0.5 * al.pos(O_, P))
+al.given_pos(Ao, O_, line=37)
 # al> P_P_Bo> = 0.5*P_P_Q>
-al.set_pos(Bo, P, 0.5 * al.pos(P, Q), line=38)
+Bo.set_pos(P, 0.5 * al.pos(P, Q))
+al.given_pos(Bo, P, line=38)
 # al> P_R_Co> = 0.5*P_R_Q>
-al.set_pos(Co, R, 0.5 * al.pos(R, Q), line=39)
+Co.set_pos(R, 0.5 * al.pos(R, Q))
+al.given_pos(Co, R, line=39)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
@@ -166,33 +173,31 @@ kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=44))
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
-al.set_ang_vel(A, N, QA.diff(t) * A.z, line=47)
+A.set_ang_vel(N, QA.diff(t) * A.z)
+al.given_ang_vel(A, N, line=47)
 # al> W_B_N> = QB'*B3>
-al.set_ang_vel(B, N, QB.diff(t) * B.z, line=48)
+B.set_ang_vel(N, QB.diff(t) * B.z)
+al.given_ang_vel(B, N, line=48)
 # al> W_C_N> = QC'*C3>
-al.set_ang_vel(C, N, QC.diff(t) * C.z, line=49)
+C.set_ang_vel(N, QC.diff(t) * C.z)
+al.given_ang_vel(C, N, line=49)
 # al> %-----
 # al> %      Velocities
 # al> % V_O_N> = U4*N1>
 # al> V_O_N> = 0>
-al.set_vel(O_, N, Vector(0), line=53)
+O_.set_vel(N, Vector(0))
+al.given_vel(O_, N, line=53)
 # al> V2pts(N, A, O, Ao)
-# sympy: Ao.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, Ao, line=54)
 # al> V2pts(N, A, O, P)
-# sympy: P.v2pt_theory(O_, N, A)
 al.v2pts(N, A, O_, P, line=55)
 # al> V2pts(N, B, P, Bo)
-# sympy: Bo.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Bo, line=56)
 # al> V2pts(N, B, P, Q)
-# sympy: Q.v2pt_theory(P, N, B)
 al.v2pts(N, B, P, Q, line=57)
 # al> V2pts(N, C, Q, Co)
-# sympy: Co.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, Co, line=58)
 # al> V2pts(N, C, Q, R)
-# sympy: R.v2pt_theory(Q, N, C)
 al.v2pts(N, C, Q, R, line=59)
 # al> %-----
 # al> %      Motion constraints
@@ -207,29 +212,28 @@ al.constrain("AUXILIARY", [U2, U3], line=64)
 # al> %-----
 # al> %           Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
-al.set_ang_acc(A, N, al.dt(al.ang_vel(A, N), N), line=69)
+A.set_ang_acc(N, al.dt(al.ang_vel(A, N), N))
+al.given_ang_acc(A, N, line=69)
 # al> ALF_B_N> = DT(W_B_N>, N)
-al.set_ang_acc(B, N, al.dt(al.ang_vel(B, N), N), line=70)
+B.set_ang_acc(N, al.dt(al.ang_vel(B, N), N))
+al.given_ang_acc(B, N, line=70)
 # al> ALF_C_N> = DT(W_C_N>, N)
-al.set_ang_acc(C, N, al.dt(al.ang_vel(C, N), N), line=71)
+C.set_ang_acc(N, al.dt(al.ang_vel(C, N), N))
+al.given_ang_acc(C, N, line=71)
 # al> %-----
 # al> %           Accelerations of particles and mass centers of bodies
 # al> A_O_N> = 0>
-al.set_acc(O_, N, Vector(0), line=74)
+O_.set_acc(N, Vector(0))
+al.given_acc(O_, N, line=74)
 # al> A2pts(N, A, O, Ao)
-# sympy: Ao.a2pt_theory(O_, N, A)
 al.a2pts(N, A, O_, Ao, line=75)
 # al> A2pts(N, A, O, P)
-# sympy: P.a2pt_theory(O_, N, A)
 al.a2pts(N, A, O_, P, line=76)
 # al> A2pts(N, B, P, Bo)
-# sympy: Bo.a2pt_theory(P, N, B)
 al.a2pts(N, B, P, Bo, line=77)
 # al> A2pts(N, B, P, Q)
-# sympy: Q.a2pt_theory(P, N, B)
 al.a2pts(N, B, P, Q, line=78)
 # al> A2pts(N, C, Q, Co)
-# sympy: Co.a2pt_theory(Q, N, C)
 al.a2pts(N, C, Q, Co, line=79)
 # al> %-----
 # al> %           Forces

@@ -125,14 +125,16 @@ al.set_inertia(B, IB, 0, IB)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, B, 3, THETA)
-# sympy: B.orient_axis(N, N.z, THETA)
-al.simprot(N, B, 3, THETA, line=25)
+B.orient_axis(N, N.z, THETA)
+al.given_orientation(B, N, line=25)
 # al> %-----
 # al> % Position vectors
 # al> P_O_Ao> = X*N1>
-al.set_pos(Ao, O_, X * N.x, line=28)
+Ao.set_pos(O_, X * N.x)
+al.given_pos(Ao, O_, line=28)
 # al> P_Ao_Bo> = 0.5*L*B2>
-al.set_pos(Bo, Ao, 0.5 * L * B.y, line=29)
+Bo.set_pos(Ao, 0.5 * L * B.y)
+al.given_pos(Bo, Ao, line=29)
 # al> %-----
 # al> % Kinematical differential equations
 # al> X' = U1
@@ -143,15 +145,17 @@ kd_eqs.append(al.kd(Eq(THETA.diff(t), U2), line=33))
 # al> %-----
 # al> % Angular velocities
 # al> W_A_N> = 0>
-al.set_ang_vel(A, N, Vector(0), line=36)
+A.set_ang_vel(N, Vector(0))
+al.given_ang_vel(A, N, line=36)
 # al> W_B_N> = THETA'*B3>
-al.set_ang_vel(B, N, THETA.diff(t) * B.z, line=37)
+B.set_ang_vel(N, THETA.diff(t) * B.z)
+al.given_ang_vel(B, N, line=37)
 # al> %-----
 # al> % Velocities
 # al> V_Ao_N> = DT(P_O_Ao>, N)
-al.set_vel(Ao, N, al.dt(al.pos(O_, Ao), N), line=40)
+Ao.set_vel(N, al.dt(al.pos(O_, Ao), N))
+al.given_vel(Ao, N, line=40)
 # al> V2pts(N, B, Ao, Bo)
-# sympy: Bo.v2pt_theory(Ao, N, B)
 al.v2pts(N, B, Ao, Bo, line=41)
 # al> %-----
 # al> % Forces

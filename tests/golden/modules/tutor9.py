@@ -108,19 +108,24 @@ al.set_inertia(A, I1, I2, I3)
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = U1*A1> + U2*A2> + U3*A3>
-al.set_ang_vel(A, N, U1 * A.x + U2 * A.y + U3 * A.z, line=19)
+A.set_ang_vel(N, U1 * A.x + U2 * A.y + U3 * A.z)
+al.given_ang_vel(A, N, line=19)
 # al> W_B_A> = OMEGA*A3>
-al.set_ang_vel(B, A, OMEGA * A.z, line=20)
+B.set_ang_vel(A, OMEGA * A.z)
+al.given_ang_vel(B, A, line=20)
 # al> %-----
 # al> %      Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
-al.set_ang_acc(A, N, al.dt(al.ang_vel(A, N), N), line=23)
+A.set_ang_acc(N, al.dt(al.ang_vel(A, N), N))
+al.given_ang_acc(A, N, line=23)
 # al> ALF_B_A> = DT(W_B_A>, A)
-al.set_ang_acc(B, A, al.dt(al.ang_vel(B, A), A), line=24)
+B.set_ang_acc(A, al.dt(al.ang_vel(B, A), A))
+al.given_ang_acc(B, A, line=24)
 # al> %-----
 # al> %      Acceleration of mass center of G is 0>
 # al> A_Ao_N> = 0>
-al.set_acc(Ao, N, Vector(0), line=27)
+Ao.set_acc(N, Vector(0))
+al.given_acc(Ao, N, line=27)
 # al> %-----
 # al> %      Equations of motion
 # al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
