@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-from al2py_runtime.names.transcript import module_source
+from al2py_runtime.safety import module_source
 from conftest import load_module
 
 from al2py import convert

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from al2py_runtime.names.transcript import echo_lines, echoed_source
+from al2py_runtime.safety import echo_lines, echoed_source
 
 from al2py import convert
 

@@ -10,12 +10,15 @@ cannot inject code.
 
 from __future__ import annotations
 
+import io
 import re
 import textwrap
+import tokenize
 from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
-from al2py_runtime.names.transcript import echo_lines
+from al2py_runtime.model.model import MODEL_COMMANDS
+from al2py_runtime.safety import echo_lines
 from al2py_runtime.vocabulary import (
     BUILTINS,
     Builtin,
@@ -119,7 +122,7 @@ class Generator:
                     "this statement is too deeply nested to convert", stmt.span
                 ) from None
         out.extend(self.echo_through(len(self.lines)))
-        return out
+        return _model_calls(out)
 
     def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
         self._facts = self.facts.of(stmt)
@@ -864,4 +867,32 @@ def comment_lines(text: str, prefix: str = "") -> list[str]:
         for k, c in enumerate(chunks):
             lead = prefix if k == 0 else " " * len(prefix)
             out.append(f"# {lead}{c}".rstrip())
+    return out
+
+
+def _model_calls(lines: list[str]) -> list[str]:
+    """``al.simprot(...)`` spelled ``al.model.simprot(...)`` for each command
+    of the runtime's :class:`Model` (the class that owns it), in code only
+    (comments and strings are left as they are)."""
+    text = "\n".join(lines)
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
+        raise InternalError("generated code does not tokenize") from None
+    edits: list[tuple[int, int]] = []  # (row, col) where ``model.`` goes
+    for k in range(len(tokens) - 2):
+        a, dot, name = tokens[k], tokens[k + 1], tokens[k + 2]
+        if (
+            a.type == tokenize.NAME
+            and a.string == "al"
+            and dot.string == "."
+            and name.type == tokenize.NAME
+            and name.string in MODEL_COMMANDS
+            and (k == 0 or tokens[k - 1].string != ".")
+        ):
+            edits.append(name.start)
+    out = text.split("\n")
+    for row, col in reversed(edits):
+        line = out[row - 1]
+        out[row - 1] = line[:col] + "model." + line[col:]
     return out

@@ -36,6 +36,7 @@ import sympy as sp
 from sympy.physics.vector import Vector
 
 from ..names.printing import element_labels
+from ..safety import Statements, statement
 from .records import (
     KINDS,
     InputValue,
@@ -80,8 +81,15 @@ class Numerics:
         self._ws = ws
         self._numerics = _NumericsState()
 
+    @property
+    def statements(self) -> Statements:
+        """Where the workspace's statement calls stand (a failing Input,
+        Output, UnitSystem or CODE statement names its ``.al`` line)."""
+        return self._ws.statements
+
     # ------------------------------------------------------------ recording
 
+    @statement
     def unit_system(
         self, mass: str = "kg", length: str = "m", time: str = "sec", *, line=None
     ) -> None:
@@ -94,6 +102,7 @@ class Numerics:
         for name, unit in units.items():
             self._numerics.units_of[normalize_name(name)] = unit
 
+    @statement
     def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
         """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
         store = self._numerics.inputs
@@ -113,6 +122,7 @@ class Numerics:
                 number, unit if unit else None, line
             )
 
+    @statement
     def output(
         self,
         items: Iterable[tuple[str, Any, str | None]],
@@ -178,6 +188,7 @@ class Numerics:
             return None, {}
         return OutputSpec(tuple(items), line, encoded=True), shapes
 
+    @statement
     def code(
         self,
         kind: str,

@@ -55,7 +55,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace  # noqa: E402
 from al2py_runtime.functions import sin  # noqa: E402
 
-al = Workspace("autorhs_off.al")
+al = Workspace("autorhs_off.al", __file__)
 
 # al> AUTORHS OFF
 al.settings.set("Autorhs", "OFF")

@@ -54,16 +54,20 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("constrain.al")
+al = Workspace("constrain.al", __file__)
 
 # al> % Problem: Triple pendulum whose tip has a specified motion
 # al> Newtonian      N                % Newtonian reference frame
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Bodies         A, B, C          % Links of pendulum
-A, B, C = al.bodies("A", "B", "C")
-A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
+A, B, C = al.model.bodies("A", "B", "C")
+A_body, B_body, C_body = (
+    al.model.rigid_body(A),
+    al.model.rigid_body(B),
+    al.model.rigid_body(C),
+)
 # al> Points         P                % Distal end of C
-P = al.points("P")
+P = al.model.points("P")
 # al> Variables      U{3}            % Generalized speeds
 U1, U2, U3 = al.variables("U1", "U2", "U3", line=5)
 # al> Variables      Qa, Qb, Qc       % Angles for A, B, C
@@ -74,22 +78,26 @@ LA, LB, LC = al.constants("LA", "LB", "LC", line=7)
 Vx, Vy = al.specified("VX", "VY", line=8)
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, Qa)
-al.given_orientation(A, N, line=9)
+al.model.given_orientation(A, N, line=9)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, Qb)
-al.given_orientation(B, N, line=10)
+al.model.given_orientation(B, N, line=10)
 # al> Simprot(N, C, 3, QC)
 C.orient_axis(N, N.z, Qc)
-al.given_orientation(C, N, line=11)
+al.model.given_orientation(C, N, line=11)
 # al> V_P_N> = LA*U1*A2> + LB*U2*B2> + LC*U3*C2>
 P.set_vel(N, LA * U1 * A.y + LB * U2 * B.y + LC * U3 * C.y)
-al.given_vel(P, N, line=12)
+al.model.given_vel(P, N, line=12)
 # al> DEPENDENT[1] = DOT(V_P_N>,N1>) - Vx
-DEPENDENT = al.assign("DEPENDENT[1]", al.dot(al.vel(P, N), N.x) - Vx, line=13)
+DEPENDENT = al.assign(
+    "DEPENDENT[1]", al.model.dot(al.model.vel(P, N), N.x) - Vx, line=13
+)
 # al> DEPENDENT[2] = DOT(V_P_N>,N2>) - Vy
-DEPENDENT = al.assign("DEPENDENT[2]", al.dot(al.vel(P, N), N.y) - Vy, line=14)
+DEPENDENT = al.assign(
+    "DEPENDENT[2]", al.model.dot(al.model.vel(P, N), N.y) - Vy, line=14
+)
 # al> Constrain( DEPENDENT[U2,U3] )
-al.constrain("DEPENDENT", [U2, U3], line=15)
+al.model.constrain("DEPENDENT", [U2, U3], line=15)
 
 AUTOLEV = al.names()
 

@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("factoring_off.al")
+al = Workspace("factoring_off.al", __file__)
 
 # al> FACTORING OFF
 al.settings.set("Factoring", "OFF")

@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("factoring_on.al")
+al = Workspace("factoring_on.al", __file__)
 
 # al> FACTORING ON
 al.settings.set("Factoring", "ON")

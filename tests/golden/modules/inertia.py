@@ -55,28 +55,28 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace  # noqa: E402
 from sympy.physics.vector import outer  # noqa: E402
 
-al = Workspace("inertia.al")
+al = Workspace("inertia.al", __file__)
 
 # al> Points P
-P = al.points("P")
+P = al.model.points("P")
 # al> Bodies B
-B = al.bodies("B")
-Bo = al.point("BO")
-B_body = al.rigid_body(B)
+B = al.model.bodies("B")
+Bo = al.model.point("BO")
+B_body = al.model.rigid_body(B)
 # al> Mass B=MB
 MB = al.constants("MB+", line=3)
-al.set_mass(B, MB)
+al.model.set_mass(B, MB)
 # al> Constants I,J,L
 I_, J, L = al.constants("I", "J", "L", line=4)
 # al> P_Bo_P> = L*B1>
 P.set_pos(Bo, L * B.x)
-al.given_pos(P, Bo, line=5)
+al.model.given_pos(P, Bo, line=5)
 # al> I_B_P>> = I*B1>*B1> + I*B2>*B2> + J*B3>*B3>
-al.set_inertia_about(
+al.model.set_inertia_about(
     B, P, outer(I_ * B.x, B.x) + outer(I_ * B.y, B.y) + outer(J * B.z, B.z), line=6
 )
 # al> I_B_BO>> = Inertia(Bo,B)
-al.set_inertia_about(B, Bo, al.inertia(Bo, B), line=7)
+al.model.set_inertia_about(B, Bo, al.model.inertia(Bo, B), line=7)
 
 AUTOLEV = al.names()
 

@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("intro.al")
+al = Workspace("intro.al", __file__)
 
 # al> Constants A, B
 A, B = al.constants("A", "B", line=1)

@@ -54,26 +54,26 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("mass.al")
+al = Workspace("mass.al", __file__)
 
 # al> Bodies      A,B
-A, B = al.bodies("A", "B")
-A_body, B_body = al.rigid_body(A), al.rigid_body(B)
+A, B = al.model.bodies("A", "B")
+A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
 # al> Particles   C
-C = al.particles("C")
-C_particle = al.particle(C)
+C = al.model.particles("C")
+C_particle = al.model.particle(C)
 # al> Mass        A=12.5, B=MB, C=MC=10
 MB, MC = al.constants("MB+", "MC+", line=3)
-al.set_mass(A, 12.5)
-al.set_mass(B, MB)
+al.model.set_mass(A, 12.5)
+al.model.set_mass(B, MB)
 al.assign("MC", 10, line=3)
-al.set_mass(C, MC)
+al.model.set_mass(C, MC)
 # al> Mass_A = Mass(A)           % Returns the mass of A
-Mass_A = al.assign("MASS_A", al.mass_of(A), line=4)
+Mass_A = al.assign("MASS_A", al.model.mass_of(A), line=4)
 # al> Mass_AB = Mass(A,B)       % Returns Mass(A) + Mass(B)
-Mass_AB = al.assign("MASS_AB", al.mass_of(A, B), line=5)
+Mass_AB = al.assign("MASS_AB", al.model.mass_of(A, B), line=5)
 # al> TOTAL = Mass()           % Returns Mass(A) + Mass(B) + Mass(C)
-TOTAL = al.assign("TOTAL", al.mass_of(), line=6)
+TOTAL = al.assign("TOTAL", al.model.mass_of(), line=6)
 
 AUTOLEV = al.names()
 

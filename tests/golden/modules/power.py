@@ -55,7 +55,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace  # noqa: E402
 from sympy import Integer  # noqa: E402
 
-al = Workspace("power.al")
+al = Workspace("power.al", __file__)
 
 # al> POWER(3,A)
 # ... expands macro power.a:

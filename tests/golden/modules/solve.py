@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("solve.al")
+al = Workspace("solve.al", __file__)
 
 # al> Variables X, Y
 X, Y = al.variables("X", "Y", line=1)

@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("sum.al")
+al = Workspace("sum.al", __file__)
 
 # al> PLUS = SUM(3,5)
 PLUS = al.assign("PLUS", 3 + 5, line=1)

@@ -56,7 +56,7 @@ from al2py_runtime import Workspace  # noqa: E402
 from al2py_runtime.functions import cos  # noqa: E402
 from sympy import Matrix, pi  # noqa: E402
 
-al = Workspace("tutor1.al")
+al = Workspace("tutor1.al", __file__)
 
 # al> % File: tutorial [Autolev: http://www.autolev.com]
 # al> % Problem: Examples of mathematical functions

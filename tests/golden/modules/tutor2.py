@@ -58,7 +58,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace  # noqa: E402
 from al2py_runtime.functions import acos_deg  # noqa: E402
 
-al = Workspace("tutor2.al")
+al = Workspace("tutor2.al", __file__)
 
 # al> % File: tutor2.al [Autolev: http://www.autolev.com]
 # al> % Problem: Mass and inertia calculations
@@ -68,15 +68,19 @@ al.settings.set("Degrees", "ON")
 # al> %-----
 # al> % Physical declarations: bodies, points
 # al> Bodies A, B, C % Right, middle, top plate
-A, B, C = al.bodies("A", "B", "C")
-Ao = al.point("AO")
-Bo = al.point("BO")
-Co = al.point("CO")
-A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
+A, B, C = al.model.bodies("A", "B", "C")
+Ao = al.model.point("AO")
+Bo = al.model.point("BO")
+Co = al.model.point("CO")
+A_body, B_body, C_body = (
+    al.model.rigid_body(A),
+    al.model.rigid_body(B),
+    al.model.rigid_body(C),
+)
 # al> Points O, P % Points on L
-O_, P = al.points("O", "P")
+O_, P = al.model.points("O", "P")
 # al> Points CM % Center of mass of system
-CM = al.points("CM")
+CM = al.model.points("CM")
 # al> %-----
 # al> % Mathematical declarations: variables, constants
 # al> Variables PHI % Angle between plates A and B
@@ -89,49 +93,49 @@ al.assign("W", 1, line=13)
 # al> Mass A=M=12, B=M, C=M
 M = al.constants("M+", line=16)
 al.assign("M", 12, line=16)
-al.set_mass(A, M)
-al.set_mass(B, M)
-al.set_mass(C, M)
+al.model.set_mass(A, M)
+al.model.set_mass(B, M)
+al.model.set_mass(C, M)
 # al> Inertia A, M*W^2/12, M*W^2/12, M*W^2/6
-al.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+al.model.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
 # al> Inertia B, M*W^2/12, M*W^2/12, M*W^2/6
-al.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+al.model.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
 # al> Inertia C, M*W^2/12, M*W^2/6, M*W^2/12
-al.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
+al.model.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(A, B, -2, PHI)
 B.orient_axis(A, -A.y, PHI)
-al.given_orientation(B, A, line=22)
+al.model.given_orientation(B, A, line=22)
 # al> A_C = Diagmat(3,1) % 3x3 identity matrix
-al.set_dcm(A, C, al.diagmat(3, 1), line=23)
+al.model.set_dcm(A, C, al.diagmat(3, 1), line=23)
 # al> %-----
 # al> % Position vectors (Ao, Bo, Co are mass centers)
 # al> P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>
 Ao.set_pos(O_, -0.5 * W * A.x + 0.5 * W * A.y)
-al.given_pos(Ao, O_, line=26)
+al.model.given_pos(Ao, O_, line=26)
 # al> P_O_Bo> = -W*A1> + 0.5*W*A2> + 0.5*W*B1>
 Bo.set_pos(O_, -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x)
-al.given_pos(Bo, O_, line=27)
+al.model.given_pos(Bo, O_, line=27)
 # al> P_O_Co> = W*A2> - 0.5*W*C1> - 0.5*W*C3>
 Co.set_pos(O_, W * A.y - 0.5 * W * C.x - 0.5 * W * C.z)
-al.given_pos(Co, O_, line=28)
+al.model.given_pos(Co, O_, line=28)
 # al> P_O_P> = W*A2> - W*C3>
 P.set_pos(O_, W * A.y - W * C.z)
-al.given_pos(P, O_, line=29)
+al.model.given_pos(P, O_, line=29)
 # al> %-----
 # al> % Center of mass of system
 # al> P_O_CM> = CM(O)
-CM.set_pos(O_, al.cm(O_))
-al.given_pos(CM, O_, line=32)
+CM.set_pos(O_, al.model.cm(O_))
+al.model.given_pos(CM, O_, line=32)
 # al> Distance = Mag( P_O_CM> )
-Distance = al.assign("DISTANCE", al.mag(al.pos(O_, CM)), line=33)
+Distance = al.assign("DISTANCE", al.model.mag(al.model.pos(O_, CM)), line=33)
 # al> %-----
 # al> % Inertia dyadics of system about CM and O
 # al> I_SYSTEM_CM>> = Inertia(CM, A, B, C) % Central inertia dyadic
-I_SYSTEM_CM_dyad = al.assign("I_SYSTEM_CM>>", al.inertia(CM, A, B, C), line=36)
+I_SYSTEM_CM_dyad = al.assign("I_SYSTEM_CM>>", al.model.inertia(CM, A, B, C), line=36)
 # al> I_SYSTEM_CM = Represent( I_SYSTEM_CM>>, A) % Central inertia matrix
-I_SYSTEM_CM = al.assign("I_SYSTEM_CM", al.represent(I_SYSTEM_CM_dyad, A), line=37)
+I_SYSTEM_CM = al.assign("I_SYSTEM_CM", al.model.represent(I_SYSTEM_CM_dyad, A), line=37)
 # al> Eig( Evaluate(I_SYSTEM_CM, PHI=90), LAMBDA, EIGENVECS )
 LAMBDA, EIGENVECS = al.assign_all(
     ("LAMBDA", "EIGENVECS"),
@@ -141,21 +145,23 @@ LAMBDA, EIGENVECS = al.assign_all(
 # al> EVEC = Rows(EIGENVECS, 1) % Extract eigenvector
 EVEC = al.assign("EVEC", al.rows(EIGENVECS, 1), line=39)
 # al> EVEC> = Represent( EVEC, A ) % Corresponding unit vector
-EVEC_vec = al.assign("EVEC>", al.represent(EVEC, A), line=40)
+EVEC_vec = al.assign("EVEC>", al.model.represent(EVEC, A), line=40)
 # al> ANGLE = acos( DOT(EVEC>,A2>) ) % Angle between EVEC>, A2>
-ANGLE = al.assign("ANGLE", acos_deg(al.dot(EVEC_vec, A.y)), line=41)
+ANGLE = al.assign("ANGLE", acos_deg(al.model.dot(EVEC_vec, A.y)), line=41)
 # al> %-----
 # al> % Moment of inertia of system about line joining O and P
 # al> I_SYSTEM_O>> = Inertia(O) % Inertia dyadic about point O
-I_SYSTEM_O_dyad = al.assign("I_SYSTEM_O>>", al.inertia(O_), line=44)
+I_SYSTEM_O_dyad = al.assign("I_SYSTEM_O>>", al.model.inertia(O_), line=44)
 # al> Express(I_SYSTEM_O>>, A) % Express in terms of A1>, A2>, A3>
-I_SYSTEM_O_dyad = al.update("I_SYSTEM_O>>", al.express(I_SYSTEM_O_dyad, A), line=45)
+I_SYSTEM_O_dyad = al.update(
+    "I_SYSTEM_O>>", al.model.express(I_SYSTEM_O_dyad, A), line=45
+)
 # al> L> = Unitvec( P_O_P> ) % Unit vector parallel to line L
-L_vec = al.assign("L>", al.unitvec(al.pos(O_, P)), line=46)
+L_vec = al.assign("L>", al.model.unitvec(al.model.pos(O_, P)), line=46)
 # al> IL = Dot(L>, DOT(I_SYSTEM_O>>, L>)) % Moment of inertia about L
-IL = al.assign("IL", al.dot(L_vec, al.dot(I_SYSTEM_O_dyad, L_vec)), line=47)
+IL = al.assign("IL", al.model.dot(L_vec, al.model.dot(I_SYSTEM_O_dyad, L_vec)), line=47)
 # al> MTOTAL = Mass() % Mass of system
-MTOTAL = al.assign("MTOTAL", al.mass_of(), line=48)
+MTOTAL = al.assign("MTOTAL", al.model.mass_of(), line=48)
 # al> GYRATION = (IL / MTOTAL)^0.5 % Radius of gyration about L
 GYRATION = al.assign("GYRATION", (IL / MTOTAL) ** 0.5, line=49)
 # al> %-----

@@ -67,16 +67,16 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 
-al = Workspace("tutor3.al")
+al = Workspace("tutor3.al", __file__)
 
 # al> %      File:  tutor3.al      [Autolev: http://www.autolev.com]
 # al> %      Problem:  Solving a set of nonlinear equations (4-bar linkage)
 # al> %-----
 # al> %      Physical declarations:  Frames and Points
 # al> Frames      A, B, C, N
-A, B, C, N = al.frames("A", "B", "C", "N")
+A, B, C, N = al.model.frames("A", "B", "C", "N")
 # al> Points      O, P, Q, R
-O_, P, Q, R = al.points("O", "P", "Q", "R")
+O_, P, Q, R = al.model.points("O", "P", "Q", "R")
 # al> %-----
 # al> %      Mathematical declarations:  variables, constants
 # al> Variables   QA, QB, QC      % Configuration variables
@@ -87,37 +87,39 @@ LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=10)
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, QA)
-al.given_orientation(A, N, line=13)
+al.model.given_orientation(A, N, line=13)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, QB)
-al.given_orientation(B, N, line=14)
+al.model.given_orientation(B, N, line=14)
 # al> Simprot(N, C, 3, QC)
 C.orient_axis(N, N.z, QC)
-al.given_orientation(C, N, line=15)
+al.model.given_orientation(C, N, line=15)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
 P.set_pos(O_, LA * A.x)
-al.given_pos(P, O_, line=18)
+al.model.given_pos(P, O_, line=18)
 # al> P_P_Q> = LB*B1>
 Q.set_pos(P, LB * B.x)
-al.given_pos(Q, P, line=19)
+al.model.given_pos(Q, P, line=19)
 # al> P_R_Q> = LC*C1>
 Q.set_pos(R, LC * C.x)
-al.given_pos(Q, R, line=20)
+al.model.given_pos(Q, R, line=20)
 # al> P_O_R> = LN*N2>
 R.set_pos(O_, LN * N.y)
-al.given_pos(R, O_, line=21)
+al.model.given_pos(R, O_, line=21)
 # al> %-----
 # al> %      Configuration constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
-    "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=24
+    "LOOP>",
+    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
+    line=24,
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>)
-CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=25)
+CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=25)
 # al> CONFIG[2] = Dot(LOOP>,N2>)
-CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=26)
+CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=26)
 # al> %-----
 # al> %      Input constants, variables, etc. for Fortran code
 # al> UnitSystem kg, meter, sec

@@ -71,21 +71,21 @@ from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor4.al")
+al = Workspace("tutor4.al", __file__)
 
 # al> % File: tutor4.al [Autolev: http://www.autolev.com]
 # al> % Problem: Spring-Restrained Double Pendulum -- Equilibrium Configuration
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian N
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Frames A, B
-A, B = al.frames("A", "B")
+A, B = al.model.frames("A", "B")
 # al> Particles P, Q
-P, Q = al.particles("P", "Q")
-P_particle, Q_particle = al.particle(P), al.particle(Q)
+P, Q = al.model.particles("P", "Q")
+P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)
 # al> Points O
-O_ = al.points("O")
+O_ = al.model.points("O")
 # al> %-----
 # al> % Mathematical declarations: variables, constants, mass
 # al> Variables U{2} % Generalized speeds
@@ -98,24 +98,24 @@ G, LA, LB = al.constants("G", "LA", "LB", line=13)
 K, LO = al.constants("K", "LO", line=14)
 # al> Mass P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=15)
-al.set_mass(P, MP)
-al.set_mass(Q, MQ)
+al.model.set_mass(P, MP)
+al.model.set_mass(Q, MQ)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, QA)
-al.given_orientation(A, N, line=18)
+al.model.given_orientation(A, N, line=18)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, QB)
-al.given_orientation(B, N, line=19)
+al.model.given_orientation(B, N, line=19)
 # al> %-----
 # al> % Position vectors
 # al> P_O_P> = LA*A1>
 P.set_pos(O_, LA * A.x)
-al.given_pos(P, O_, line=22)
+al.model.given_pos(P, O_, line=22)
 # al> P_P_Q> = LB*B1>
 Q.set_pos(P, LB * B.x)
-al.given_pos(Q, P, line=23)
+al.model.given_pos(Q, P, line=23)
 # al> %-----
 # al> % Kinematical differential equations
 # al> QA' = U1/LA
@@ -127,35 +127,35 @@ kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=27))
 # al> % Angular velocities
 # al> W_A_N> = QA'*A3>
 A.set_ang_vel(N, QA.diff(t) * A.z)
-al.given_ang_vel(A, N, line=30)
+al.model.given_ang_vel(A, N, line=30)
 # al> W_B_N> = QB'*B3>
 B.set_ang_vel(N, QB.diff(t) * B.z)
-al.given_ang_vel(B, N, line=31)
+al.model.given_ang_vel(B, N, line=31)
 # al> %-----
 # al> % Velocities
 # al> V_O_N> = 0>
 O_.set_vel(N, Vector(0))
-al.given_vel(O_, N, line=34)
+al.model.given_vel(O_, N, line=34)
 # al> V2pts(N, A, O, P)
-al.v2pts(N, A, O_, P, line=35)
+al.model.v2pts(N, A, O_, P, line=35)
 # al> V2pts(N, B, P, Q)
-al.v2pts(N, B, P, Q, line=36)
+al.model.v2pts(N, B, P, Q, line=36)
 # al> %-----
 # al> % Forces
 # al> Gravity( G*N1> )
-al.gravity(G * N.x)
+al.model.gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
-LOQ = al.assign("LOQ", al.mag(al.pos(O_, Q)), line=40)
+LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=40)
 # al> STRETCH = LOQ - LO % Stretch of spring
 STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 # al> UVEC> = P_O_Q> / LOQ % Unit vector from O to Q
-UVEC_vec = al.assign("UVEC>", al.pos(O_, Q) / LOQ, line=42)
+UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
-al.force_between(O_, Q, -K * STRETCH * UVEC_vec)
+al.model.force_between(O_, Q, -K * STRETCH * UVEC_vec)
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr()
-Zero = al.assign("ZERO", al.fr(), line=46)
+Zero = al.assign("ZERO", al.model.fr(), line=46)
 # al> Factor(Zero, G) % Simplify slightly
 Zero = al.update("ZERO", al.factor(Zero, G), line=47)
 # al> %-----
@@ -216,7 +216,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

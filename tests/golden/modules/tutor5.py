@@ -66,22 +66,26 @@ from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor5.al")
+al = Workspace("tutor5.al", __file__)
 
 # al> %      File:  tutor5.al      [Autolev: http://www.autolev.com]
 # al> %      Problem:  Four-Bar Linkage -- Equilibrium Configuration
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Bodies        A, B, C
-A, B, C = al.bodies("A", "B", "C")
-Ao = al.point("AO")
-Bo = al.point("BO")
-Co = al.point("CO")
-A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
+A, B, C = al.model.bodies("A", "B", "C")
+Ao = al.model.point("AO")
+Bo = al.model.point("BO")
+Co = al.model.point("CO")
+A_body, B_body, C_body = (
+    al.model.rigid_body(A),
+    al.model.rigid_body(B),
+    al.model.rigid_body(C),
+)
 # al> Points        O, P, Q, R
-O_, P, Q, R = al.points("O", "P", "Q", "R")
+O_, P, Q, R = al.model.points("O", "P", "Q", "R")
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}                % Generalized speeds
@@ -104,51 +108,51 @@ H = al.constants("H", line=14)
 # al> Mass          A=MA=10, B=MB=20, C=MC=20
 MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=17)
 al.assign("MA", 10, line=17)
-al.set_mass(A, MA)
+al.model.set_mass(A, MA)
 al.assign("MB", 20, line=17)
-al.set_mass(B, MB)
+al.model.set_mass(B, MB)
 al.assign("MC", 20, line=17)
-al.set_mass(C, MC)
+al.model.set_mass(C, MC)
 # al> Inertia       A, 0, MA*LA^2/12, MA*LA^2/12
-al.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
+al.model.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
 # al> Inertia       B, 0, MB*LB^2/12, MB*LB^2/12
-al.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
+al.model.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
 # al> Inertia       C, 0, MC*LC^2/12, MC*LC^2/12
-al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
+al.model.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, QA)
-al.given_orientation(A, N, line=23)
+al.model.given_orientation(A, N, line=23)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, QB)
-al.given_orientation(B, N, line=24)
+al.model.given_orientation(B, N, line=24)
 # al> Simprot(N, C, 3, QC)
 C.orient_axis(N, N.z, QC)
-al.given_orientation(C, N, line=25)
+al.model.given_orientation(C, N, line=25)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
 P.set_pos(O_, LA * A.x)
-al.given_pos(P, O_, line=28)
+al.model.given_pos(P, O_, line=28)
 # al> P_P_Q> = LB*B1>
 Q.set_pos(P, LB * B.x)
-al.given_pos(Q, P, line=29)
+al.model.given_pos(Q, P, line=29)
 # al> P_R_Q> = LC*C1>
 Q.set_pos(R, LC * C.x)
-al.given_pos(Q, R, line=30)
+al.model.given_pos(Q, R, line=30)
 # al> P_O_R> = LN*N2>
 R.set_pos(O_, LN * N.y)
-al.given_pos(R, O_, line=31)
+al.model.given_pos(R, O_, line=31)
 # al> P_O_Ao> = 0.5*P_O_P>
-Ao.set_pos(O_, 0.5 * al.pos(O_, P))
-al.given_pos(Ao, O_, line=32)
+Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))
+al.model.given_pos(Ao, O_, line=32)
 # al> P_P_Bo> = 0.5*P_P_Q>
-Bo.set_pos(P, 0.5 * al.pos(P, Q))
-al.given_pos(Bo, P, line=33)
+Bo.set_pos(P, 0.5 * al.model.pos(P, Q))
+al.model.given_pos(Bo, P, line=33)
 # al> P_R_Co> = 0.5*P_R_Q>
-Co.set_pos(R, 0.5 * al.pos(R, Q))
-al.given_pos(Co, R, line=34)
+Co.set_pos(R, 0.5 * al.model.pos(R, Q))
+al.model.given_pos(Co, R, line=34)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
@@ -162,58 +166,60 @@ kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
 A.set_ang_vel(N, QA.diff(t) * A.z)
-al.given_ang_vel(A, N, line=42)
+al.model.given_ang_vel(A, N, line=42)
 # al> W_B_N> = QB'*B3>
 B.set_ang_vel(N, QB.diff(t) * B.z)
-al.given_ang_vel(B, N, line=43)
+al.model.given_ang_vel(B, N, line=43)
 # al> W_C_N> = QC'*C3>
 C.set_ang_vel(N, QC.diff(t) * C.z)
-al.given_ang_vel(C, N, line=44)
+al.model.given_ang_vel(C, N, line=44)
 # al> %-----
 # al> %      Configuration Constraints
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
-    "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=47
+    "LOOP>",
+    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
+    line=47,
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>)
-CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=48)
+CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=48)
 # al> CONFIG[2] = Dot(LOOP>,N2>)
-CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=49)
+CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=49)
 # al> %-----
 # al> %           Velocities
 # al> V_O_N> = 0>
 O_.set_vel(N, Vector(0))
-al.given_vel(O_, N, line=52)
+al.model.given_vel(O_, N, line=52)
 # al> V2pts(N, A, O, Ao)
-al.v2pts(N, A, O_, Ao, line=53)
+al.model.v2pts(N, A, O_, Ao, line=53)
 # al> V2pts(N, A, O, P)
-al.v2pts(N, A, O_, P, line=54)
+al.model.v2pts(N, A, O_, P, line=54)
 # al> V2pts(N, B, P, Bo)
-al.v2pts(N, B, P, Bo, line=55)
+al.model.v2pts(N, B, P, Bo, line=55)
 # al> V2pts(N, B, P, Q)
-al.v2pts(N, B, P, Q, line=56)
+al.model.v2pts(N, B, P, Q, line=56)
 # al> V2pts(N, C, Q, Co)
-al.v2pts(N, C, Q, Co, line=57)
+al.model.v2pts(N, C, Q, Co, line=57)
 # al> V2pts(N, C, Q, R)
-al.v2pts(N, C, Q, R, line=58)
+al.model.v2pts(N, C, Q, R, line=58)
 # al> %-----
 # al> %           Motion constraints
 # al> DEPENDENT[1] = Dot(V_R_N>, N1>)
-DEPENDENT = al.assign("DEPENDENT[1]", al.dot(al.vel(R, N), N.x), line=61)
+DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(al.model.vel(R, N), N.x), line=61)
 # al> DEPENDENT[2] = Dot(V_R_N>, N2>)
-DEPENDENT = al.assign("DEPENDENT[2]", al.dot(al.vel(R, N), N.y), line=62)
+DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(al.model.vel(R, N), N.y), line=62)
 # al> Constrain( DEPENDENT[U2,U3] )
-al.constrain("DEPENDENT", [U2, U3], line=63)
+al.model.constrain("DEPENDENT", [U2, U3], line=63)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
-al.gravity(G * N.x)
+al.model.gravity(G * N.x)
 # al> Force_Q> = H*N2>
-al.set_force(Q, H * N.y, line=67)
+al.model.set_force(Q, H * N.y, line=67)
 # al> %-----
 # al> %           Equations of motion
 # al> Zero = Fr()
-Zero = al.assign("ZERO", al.fr(), line=70)
+Zero = al.assign("ZERO", al.model.fr(), line=70)
 # al> Zero[2] = CONFIG[1]
 Zero = al.assign("ZERO[2]", CONFIG[0], line=71)
 # al> Zero[3] = CONFIG[2]
@@ -265,7 +271,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

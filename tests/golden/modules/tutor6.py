@@ -80,7 +80,7 @@ from al2py_runtime.functions import sin  # noqa: E402
 from sympy import Eq  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor6.al")
+al = Workspace("tutor6.al", __file__)
 
 # al> %      File:  tutor6.al      [Autolev: http://www.autolev.com]
 # al> %      Problem:  Spring-Damper-Restrained Double Pendulum --
@@ -88,14 +88,14 @@ al = Workspace("tutor6.al")
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Frames         A, B
-A, B = al.frames("A", "B")
+A, B = al.model.frames("A", "B")
 # al> Particles      P, Q
-P, Q = al.particles("P", "Q")
-P_particle, Q_particle = al.particle(P), al.particle(Q)
+P, Q = al.model.particles("P", "Q")
+P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)
 # al> Points         O
-O_ = al.points("O")
+O_ = al.model.points("O")
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{2}'          % Generalized Speeds; derivatives
@@ -119,24 +119,24 @@ al.assign("FP", -D * QA.diff(t), line=19)
 # al> %      Mass and inertia
 # al> Mass           P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=22)
-al.set_mass(P, MP)
-al.set_mass(Q, MQ)
+al.model.set_mass(P, MP)
+al.model.set_mass(Q, MQ)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, QA)
-al.given_orientation(A, N, line=25)
+al.model.given_orientation(A, N, line=25)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, QB)
-al.given_orientation(B, N, line=26)
+al.model.given_orientation(B, N, line=26)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
 P.set_pos(O_, LA * A.x)
-al.given_pos(P, O_, line=29)
+al.model.given_pos(P, O_, line=29)
 # al> P_P_Q> = LB*B1>
 Q.set_pos(P, LB * B.x)
-al.given_pos(Q, P, line=30)
+al.model.given_pos(Q, P, line=30)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1/LA
@@ -148,20 +148,20 @@ kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=34))
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
 A.set_ang_vel(N, QA.diff(t) * A.z)
-al.given_ang_vel(A, N, line=37)
+al.model.given_ang_vel(A, N, line=37)
 # al> W_B_N> = QB'*B3>
 B.set_ang_vel(N, QB.diff(t) * B.z)
-al.given_ang_vel(B, N, line=38)
+al.model.given_ang_vel(B, N, line=38)
 # al> %-----
 # al> %      Velocities
 # al> % V_O_N> = U3*N1> + U4*N2>          % Brings into evidence F1, F2
 # al> V_O_N> = 0>
 O_.set_vel(N, Vector(0))
-al.given_vel(O_, N, line=42)
+al.model.given_vel(O_, N, line=42)
 # al> V2pts(N, A, O, P)
-al.v2pts(N, A, O_, P, line=43)
+al.model.v2pts(N, A, O_, P, line=43)
 # al> V2pts(N, B, P, Q)
-al.v2pts(N, B, P, Q, line=44)
+al.model.v2pts(N, B, P, Q, line=44)
 # al> %-----
 # al> %      Motion constraints
 # al> % AUXILIARY[1] = Dot(V_O_N>, N1>)    % Dot(V_O_N>,N1>) = 0
@@ -170,29 +170,29 @@ al.v2pts(N, B, P, Q, line=44)
 # al> %-----
 # al> %      Forces
 # al> Gravity( G*N1> )
-al.gravity(G * N.x)
+al.model.gravity(G * N.x)
 # al> Force_P> += Fp*A2>
-al.set_force(P, al.force_on(P) + (FP * A.y), line=53)
+al.model.set_force(P, al.model.force_on(P) + (FP * A.y), line=53)
 # al> LOQ = Mag(P_O_Q>)                        % Distance from O to Q
-LOQ = al.assign("LOQ", al.mag(al.pos(O_, Q)), line=54)
+LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=54)
 # al> STRETCH = LOQ - LO                       % Stretch of spring
 al.assign("STRETCH", LOQ - LO, line=55)
 # al> UVEC> = P_O_Q> / LOQ                     % Unit vector directed from O to Q
-UVEC_vec = al.assign("UVEC>", al.pos(O_, Q) / LOQ, line=56)
+UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=56)
 # al> STRETCH' = Dot(V_Q_N>,UVEC>)            % Time rate of change of stretch
-al.assign("STRETCH'", al.dot(al.vel(Q, N), UVEC_vec), line=57)
+al.assign("STRETCH'", al.model.dot(al.model.vel(Q, N), UVEC_vec), line=57)
 # al> Force(O/Q, (-K*STRETCH-C*STRETCH')*UVEC> )
-al.force_between(O_, Q, (-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec)
+al.model.force_between(O_, Q, (-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec)
 # al> Force_O> += F1*N1> + F2*N2>
-al.set_force(O_, al.force_on(O_) + (F1 * N.x + F2 * N.y), line=59)
+al.model.set_force(O_, al.model.force_on(O_) + (F1 * N.x + F2 * N.y), line=59)
 # al> %-----
 # al> %      Equations of motion
 # al> Zero = Fr() + FrStar()
-Zero = al.assign("ZERO", al.fr() + al.frstar(), line=62)
+Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=62)
 # al> Factor(Zero, G, SIN(QA-QB) )             % Simplify slightly
 Zero = al.update("ZERO", al.factor(Zero, G, sin(QA - QB)), line=63)
 # al> Kane()
-Zero = al.kane(line=64)
+Zero = al.model.kane(line=64)
 # al> % Kane(F1,F2)                            % Solve for F1, F2
 # al> %-----
 # al> %      Units system for CODE input/output conversions
@@ -221,7 +221,7 @@ al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=79)
 # al> %-----
 # al> %      Quantities to be output from CODE
 # al> ECHECK = NiCheck()                      % Checking function
-ECHECK = al.assign("ECHECK", al.nicheck(), line=82)
+ECHECK = al.assign("ECHECK", al.model.nicheck(), line=82)
 # al> Output T, STRETCH m, QA deg, QB deg, ECHECK joules
 al.numerics.output(
     [
@@ -269,7 +269,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

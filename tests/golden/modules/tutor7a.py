@@ -69,7 +69,7 @@ from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor7a.al")
+al = Workspace("tutor7a.al", __file__)
 
 # al> %      File:  tutor7a.al (tutor7.al modified to find FC1, FC2, FA1)      [Autolev:
 # al+ http://www.autolev.com]
@@ -83,15 +83,19 @@ al.settings.set("Digits", 7)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian  N
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Bodies     A, B, C
-A, B, C = al.bodies("A", "B", "C")
-Ao = al.point("AO")
-Bo = al.point("BO")
-Co = al.point("CO")
-A_body, B_body, C_body = al.rigid_body(A), al.rigid_body(B), al.rigid_body(C)
+A, B, C = al.model.bodies("A", "B", "C")
+Ao = al.model.point("AO")
+Bo = al.model.point("BO")
+Co = al.model.point("CO")
+A_body, B_body, C_body = (
+    al.model.rigid_body(A),
+    al.model.rigid_body(B),
+    al.model.rigid_body(C),
+)
 # al> Points     O, P, Q, R
-O_, P, Q, R = al.points("O", "P", "Q", "R")
+O_, P, Q, R = al.model.points("O", "P", "Q", "R")
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables  U{4}'          % Generalized speeds; derivatives
@@ -116,51 +120,51 @@ ZEE_NOT = al.assign("ZEE_NOT", Matrix([[FA1, FA2, FC1, FC2]]), line=19)
 # al> Mass       A=MA=10, B=MB=20, C=MC=20
 MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=22)
 al.assign("MA", 10, line=22)
-al.set_mass(A, MA)
+al.model.set_mass(A, MA)
 al.assign("MB", 20, line=22)
-al.set_mass(B, MB)
+al.model.set_mass(B, MB)
 al.assign("MC", 20, line=22)
-al.set_mass(C, MC)
+al.model.set_mass(C, MC)
 # al> Inertia    A, 0, MA*LA^2/12, MA*LA^2/12
-al.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
+al.model.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
 # al> Inertia    B, 0, MB*LB^2/12, MB*LB^2/12
-al.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
+al.model.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
 # al> Inertia    C, 0, MC*LC^2/12, MC*LC^2/12
-al.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
+al.model.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)
 A.orient_axis(N, N.z, QA)
-al.given_orientation(A, N, line=28)
+al.model.given_orientation(A, N, line=28)
 # al> Simprot(N, B, 3, QB)
 B.orient_axis(N, N.z, QB)
-al.given_orientation(B, N, line=29)
+al.model.given_orientation(B, N, line=29)
 # al> Simprot(N, C, 3, QC)
 C.orient_axis(N, N.z, QC)
-al.given_orientation(C, N, line=30)
+al.model.given_orientation(C, N, line=30)
 # al> %-----
 # al> %      Position vectors
 # al> P_O_P> = LA*A1>
 P.set_pos(O_, LA * A.x)
-al.given_pos(P, O_, line=33)
+al.model.given_pos(P, O_, line=33)
 # al> P_P_Q> = LB*B1>
 Q.set_pos(P, LB * B.x)
-al.given_pos(Q, P, line=34)
+al.model.given_pos(Q, P, line=34)
 # al> P_R_Q> = LC*C1>
 Q.set_pos(R, LC * C.x)
-al.given_pos(Q, R, line=35)
+al.model.given_pos(Q, R, line=35)
 # al> P_O_R> = LN*N2>
 R.set_pos(O_, LN * N.y)
-al.given_pos(R, O_, line=36)
+al.model.given_pos(R, O_, line=36)
 # al> P_O_Ao> = 0.5*P_O_P>
-Ao.set_pos(O_, 0.5 * al.pos(O_, P))
-al.given_pos(Ao, O_, line=37)
+Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))
+al.model.given_pos(Ao, O_, line=37)
 # al> P_P_Bo> = 0.5*P_P_Q>
-Bo.set_pos(P, 0.5 * al.pos(P, Q))
-al.given_pos(Bo, P, line=38)
+Bo.set_pos(P, 0.5 * al.model.pos(P, Q))
+al.model.given_pos(Bo, P, line=38)
 # al> P_R_Co> = 0.5*P_R_Q>
-Co.set_pos(R, 0.5 * al.pos(R, Q))
-al.given_pos(Co, R, line=39)
+Co.set_pos(R, 0.5 * al.model.pos(R, Q))
+al.model.given_pos(Co, R, line=39)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
@@ -174,80 +178,80 @@ kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=44))
 # al> %      Angular velocities
 # al> W_A_N> = QA'*A3>
 A.set_ang_vel(N, QA.diff(t) * A.z)
-al.given_ang_vel(A, N, line=47)
+al.model.given_ang_vel(A, N, line=47)
 # al> W_B_N> = QB'*B3>
 B.set_ang_vel(N, QB.diff(t) * B.z)
-al.given_ang_vel(B, N, line=48)
+al.model.given_ang_vel(B, N, line=48)
 # al> W_C_N> = QC'*C3>
 C.set_ang_vel(N, QC.diff(t) * C.z)
-al.given_ang_vel(C, N, line=49)
+al.model.given_ang_vel(C, N, line=49)
 # al> %-----
 # al> %      Velocities
 # al> V_O_N> = U4*N1>
 O_.set_vel(N, U4 * N.x)
-al.given_vel(O_, N, line=52)
+al.model.given_vel(O_, N, line=52)
 # al> V2pts(N, A, O, Ao)
-al.v2pts(N, A, O_, Ao, line=53)
+al.model.v2pts(N, A, O_, Ao, line=53)
 # al> V2pts(N, A, O, P)
-al.v2pts(N, A, O_, P, line=54)
+al.model.v2pts(N, A, O_, P, line=54)
 # al> V2pts(N, B, P, Bo)
-al.v2pts(N, B, P, Bo, line=55)
+al.model.v2pts(N, B, P, Bo, line=55)
 # al> V2pts(N, B, P, Q)
-al.v2pts(N, B, P, Q, line=56)
+al.model.v2pts(N, B, P, Q, line=56)
 # al> V2pts(N, C, Q, Co)
-al.v2pts(N, C, Q, Co, line=57)
+al.model.v2pts(N, C, Q, Co, line=57)
 # al> V2pts(N, C, Q, R)
-al.v2pts(N, C, Q, R, line=58)
+al.model.v2pts(N, C, Q, R, line=58)
 # al> %-----
 # al> %      Motion constraints
 # al> AUXILIARY[1] = Dot(V_R_N>, N1>)           % Dot(V_R_N>, N1>) = 0
-AUXILIARY = al.assign("AUXILIARY[1]", al.dot(al.vel(R, N), N.x), line=61)
+AUXILIARY = al.assign("AUXILIARY[1]", al.model.dot(al.model.vel(R, N), N.x), line=61)
 # al> AUXILIARY[2] = Dot(V_R_N>, N2>)           % Dot(V_R_N>, N2>) = 0
-AUXILIARY = al.assign("AUXILIARY[2]", al.dot(al.vel(R, N), N.y), line=62)
+AUXILIARY = al.assign("AUXILIARY[2]", al.model.dot(al.model.vel(R, N), N.y), line=62)
 # al> AUXILIARY[3] = Dot(V_O_N>, N1>)         % Dot(V_O_N>, N1>) = 0
-AUXILIARY = al.assign("AUXILIARY[3]", al.dot(al.vel(O_, N), N.x), line=63)
+AUXILIARY = al.assign("AUXILIARY[3]", al.model.dot(al.model.vel(O_, N), N.x), line=63)
 # al> Constrain( AUXILIARY[U2,U3,U4] )       % Solve for U2,U3,U4
-al.constrain("AUXILIARY", [U2, U3, U4], line=64)
+al.model.constrain("AUXILIARY", [U2, U3, U4], line=64)
 # al> %-----
 # al> %           Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
-A.set_ang_acc(N, al.dt(al.ang_vel(A, N), N))
-al.given_ang_acc(A, N, line=67)
+A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))
+al.model.given_ang_acc(A, N, line=67)
 # al> ALF_B_N> = DT(W_B_N>, N)
-B.set_ang_acc(N, al.dt(al.ang_vel(B, N), N))
-al.given_ang_acc(B, N, line=68)
+B.set_ang_acc(N, al.dt(al.model.ang_vel(B, N), N))
+al.model.given_ang_acc(B, N, line=68)
 # al> ALF_C_N> = DT(W_C_N>, N)
-C.set_ang_acc(N, al.dt(al.ang_vel(C, N), N))
-al.given_ang_acc(C, N, line=69)
+C.set_ang_acc(N, al.dt(al.model.ang_vel(C, N), N))
+al.model.given_ang_acc(C, N, line=69)
 # al> %-----
 # al> %           Accelerations of particles and mass centers of bodies
 # al> A_O_N> = 0>
 O_.set_acc(N, Vector(0))
-al.given_acc(O_, N, line=72)
+al.model.given_acc(O_, N, line=72)
 # al> A2pts(N, A, O, Ao)
-al.a2pts(N, A, O_, Ao, line=73)
+al.model.a2pts(N, A, O_, Ao, line=73)
 # al> A2pts(N, A, O, P)
-al.a2pts(N, A, O_, P, line=74)
+al.model.a2pts(N, A, O_, P, line=74)
 # al> A2pts(N, B, P, Bo)
-al.a2pts(N, B, P, Bo, line=75)
+al.model.a2pts(N, B, P, Bo, line=75)
 # al> A2pts(N, B, P, Q)
-al.a2pts(N, B, P, Q, line=76)
+al.model.a2pts(N, B, P, Q, line=76)
 # al> A2pts(N, C, Q, Co)
-al.a2pts(N, C, Q, Co, line=77)
+al.model.a2pts(N, C, Q, Co, line=77)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
-al.gravity(G * N.x)
+al.model.gravity(G * N.x)
 # al> Force_O> = FA1*N1> + FA2*N2>
-al.set_force(O_, FA1 * N.x + FA2 * N.y, line=81)
+al.model.set_force(O_, FA1 * N.x + FA2 * N.y, line=81)
 # al> Force_R> = FC1*N1> + FC2*N2>
-al.set_force(R, FC1 * N.x + FC2 * N.y, line=82)
+al.model.set_force(R, FC1 * N.x + FC2 * N.y, line=82)
 # al> %-----
 # al> %           Equations of motion
 # al> Zero = Fr() + FrStar()
-Zero = al.assign("ZERO", al.fr() + al.frstar(), line=85)
+Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=85)
 # al> Kane( FC1, FC2, FA1 )
-Zero = al.kane(FC1, FC2, FA1, line=86)
+Zero = al.model.kane(FC1, FC2, FA1, line=86)
 # al> %-----
 # al> %           Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
@@ -268,14 +272,16 @@ al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=95)
 # al> %           Quantities to be output from CODE
 # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
 LOOP_vec = al.assign(
-    "LOOP>", al.pos(O_, P) + al.pos(P, Q) + al.pos(Q, R) + al.pos(R, O_), line=98
+    "LOOP>",
+    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
+    line=98,
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>) % Should always equal 0
-CONFIG = al.assign("CONFIG[1]", al.dot(LOOP_vec, N.x), line=99)
+CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=99)
 # al> CONFIG[2] = Dot(LOOP>,N2>) % Should always equal 0
-CONFIG = al.assign("CONFIG[2]", al.dot(LOOP_vec, N.y), line=100)
+CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=100)
 # al> ECHECK = NICHECK() % Checking function
-ECHECK = al.assign("ECHECK", al.nicheck(), line=101)
+ECHECK = al.assign("ECHECK", al.model.nicheck(), line=101)
 # al> Output T, QA deg, QB deg, QC deg
 al.numerics.output(
     [("T", t, None), ("QA", QA, "deg"), ("QB", QB, "deg"), ("QC", QC, "deg")], line=102
@@ -331,7 +337,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

@@ -78,7 +78,7 @@ from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor8.al")
+al = Workspace("tutor8.al", __file__)
 
 # al> % File: tutor8.al [Autolev: http://www.autolev.com]
 # al> % Problem: Dynamics of a Cart Carrying an Inverted Pendulum
@@ -89,14 +89,14 @@ al.settings.set("Digits", 2)
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian   N          % Newtonian reference frame
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Bodies      A, B       % Cart, inverted pendulum
-A, B = al.bodies("A", "B")
-Ao = al.point("AO")
-Bo = al.point("BO")
-A_body, B_body = al.rigid_body(A), al.rigid_body(B)
+A, B = al.model.bodies("A", "B")
+Ao = al.model.point("AO")
+Bo = al.model.point("BO")
+A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
 # al> Points      O          % Point fixed in N
-O_ = al.points("O")
+O_ = al.model.points("O")
 # al> %-----
 # al> % Variables, constants, and specified
 # al> Variables   U{2}'      % Generalized speeds; derivatives
@@ -116,25 +116,25 @@ al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
 # al> % Mass and inertia
 # al> Mass        A=MA, B=MB
 MA, MB = al.constants("MA+", "MB+", line=21)
-al.set_mass(A, MA)
-al.set_mass(B, MB)
+al.model.set_mass(A, MA)
+al.model.set_mass(B, MB)
 # al> Inertia     B, IB=MB*L^2/12, 0, IB
 IB = al.constants("IB+", line=22)
 al.assign("IB", MB * L**2 / 12, line=22)
-al.set_inertia(B, IB, 0, IB)
+al.model.set_inertia(B, IB, 0, IB)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, B, 3, THETA)
 B.orient_axis(N, N.z, THETA)
-al.given_orientation(B, N, line=25)
+al.model.given_orientation(B, N, line=25)
 # al> %-----
 # al> % Position vectors
 # al> P_O_Ao> = X*N1>
 Ao.set_pos(O_, X * N.x)
-al.given_pos(Ao, O_, line=28)
+al.model.given_pos(Ao, O_, line=28)
 # al> P_Ao_Bo> = 0.5*L*B2>
 Bo.set_pos(Ao, 0.5 * L * B.y)
-al.given_pos(Bo, Ao, line=29)
+al.model.given_pos(Bo, Ao, line=29)
 # al> %-----
 # al> % Kinematical differential equations
 # al> X' = U1
@@ -146,29 +146,29 @@ kd_eqs.append(al.kd(Eq(THETA.diff(t), U2), line=33))
 # al> % Angular velocities
 # al> W_A_N> = 0>
 A.set_ang_vel(N, Vector(0))
-al.given_ang_vel(A, N, line=36)
+al.model.given_ang_vel(A, N, line=36)
 # al> W_B_N> = THETA'*B3>
 B.set_ang_vel(N, THETA.diff(t) * B.z)
-al.given_ang_vel(B, N, line=37)
+al.model.given_ang_vel(B, N, line=37)
 # al> %-----
 # al> % Velocities
 # al> V_Ao_N> = DT(P_O_Ao>, N)
-Ao.set_vel(N, al.dt(al.pos(O_, Ao), N))
-al.given_vel(Ao, N, line=40)
+Ao.set_vel(N, al.dt(al.model.pos(O_, Ao), N))
+al.model.given_vel(Ao, N, line=40)
 # al> V2pts(N, B, Ao, Bo)
-al.v2pts(N, B, Ao, Bo, line=41)
+al.model.v2pts(N, B, Ao, Bo, line=41)
 # al> %-----
 # al> % Forces
 # al> Gravity( -G*N2> )
-al.gravity(-G * N.y)
+al.model.gravity(-G * N.y)
 # al> Force_Ao> += F*N1>
-al.set_force(Ao, al.force_on(Ao) + (F * N.x), line=45)
+al.model.set_force(Ao, al.model.force_on(Ao) + (F * N.x), line=45)
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr() + FrStar()
-Zero = al.assign("ZERO", al.fr() + al.frstar(), line=48)
+Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=48)
 # al> Kane()
-Zero = al.kane(line=49)
+Zero = al.model.kane(line=49)
 # al> Zero := Evaluate( Zero, L=1, MA=10, MB=1, G=9.81 )
 Zero = al.assign("ZERO", al.evaluate(Zero, {L: 1, MA: 10, MB: 1, G: 9.81}), line=50)
 # al> %*****
@@ -338,7 +338,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

@@ -75,20 +75,20 @@ from al2py_runtime.functions import acos  # noqa: E402
 from sympy import Matrix  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
-al = Workspace("tutor9.al")
+al = Workspace("tutor9.al", __file__)
 
 # al> %      File:  tutor9.al      [Autolev: http://www.autolev.com]
 # al> %      Problem:  Spin stability of gyrostat
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N              % Newtonian reference frame
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Bodies         A              % Carrier
-A = al.bodies("A")
-Ao = al.point("AO")
-A_body = al.rigid_body(A)
+A = al.model.bodies("A")
+Ao = al.model.point("AO")
+A_body = al.model.rigid_body(A)
 # al> Frames         B              % Rotor
-B = al.frames("B")
+B = al.model.frames("B")
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}'         % Generalized speeds; derivatives
@@ -101,53 +101,57 @@ J = al.constants("J", line=12)
 # al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
 M = al.constants("M+", line=15)
-al.set_mass(A, M)
+al.model.set_mass(A, M)
 # al> Inertia        A, I1, I2, I3 % Attribute inertia of G to A
 I1, I2, I3 = al.constants("I1+", "I2+", "I3+", line=16)
-al.set_inertia(A, I1, I2, I3)
+al.model.set_inertia(A, I1, I2, I3)
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = U1*A1> + U2*A2> + U3*A3>
 A.set_ang_vel(N, U1 * A.x + U2 * A.y + U3 * A.z)
-al.given_ang_vel(A, N, line=19)
+al.model.given_ang_vel(A, N, line=19)
 # al> W_B_A> = OMEGA*A3>
 B.set_ang_vel(A, OMEGA * A.z)
-al.given_ang_vel(B, A, line=20)
+al.model.given_ang_vel(B, A, line=20)
 # al> %-----
 # al> %      Angular accelerations
 # al> ALF_A_N> = DT(W_A_N>, N)
-A.set_ang_acc(N, al.dt(al.ang_vel(A, N), N))
-al.given_ang_acc(A, N, line=23)
+A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))
+al.model.given_ang_acc(A, N, line=23)
 # al> ALF_B_A> = DT(W_B_A>, A)
-B.set_ang_acc(A, al.dt(al.ang_vel(B, A), A))
-al.given_ang_acc(B, A, line=24)
+B.set_ang_acc(A, al.dt(al.model.ang_vel(B, A), A))
+al.model.given_ang_acc(B, A, line=24)
 # al> %-----
 # al> %      Acceleration of mass center of G is 0>
 # al> A_Ao_N> = 0>
 Ao.set_acc(N, Vector(0))
-al.given_acc(Ao, N, line=27)
+al.model.given_acc(Ao, N, line=27)
 # al> %-----
 # al> %      Equations of motion
 # al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
 Zero = al.assign(
-    "ZERO", al.fr() + al.frstar() + al.gyrostat("FRSTAR", "CYLINDER", A, B, J), line=30
+    "ZERO",
+    al.model.fr()
+    + al.model.frstar()
+    + al.model.gyrostat("FRSTAR", "CYLINDER", A, B, J),
+    line=30,
 )
 # al> Kane()
-Zero = al.kane(line=31)
+Zero = al.model.kane(line=31)
 # al> %-----
 # al> %      Angular momentum of gyrostat
 # al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
 H_vec = al.assign(
     "H>",
-    al.momentum("ANGULAR", Ao) + al.gyrostat("ANGMOM", "CYLINDER", A, B, J),
+    al.model.momentum("ANGULAR", Ao) + al.model.gyrostat("ANGMOM", "CYLINDER", A, B, J),
     line=34,
 )
 # al> H = Mag(H>)
-H = al.assign("H", al.mag(H_vec), line=35)
+H = al.assign("H", al.model.mag(H_vec), line=35)
 # al> %-----
 # al> %      Angle between angular momentum vector and A3>
 # al> PHI = acos( Dot( UNITVEC(H>), A3> ) )
-PHI = al.assign("PHI", acos(al.dot(al.unitvec(H_vec), A.z)), line=38)
+PHI = al.assign("PHI", acos(al.model.dot(al.model.unitvec(H_vec), A.z)), line=38)
 # al> %-----
 # al> %      Units system for CODE input/output conversions
 # al> UnitSystem kg,meter,sec
@@ -269,7 +273,7 @@ def ode_function(values=None, /, **overrides):
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):

@@ -83,7 +83,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
 
-al = Workspace("whipple_benchmark.al")
+al = Workspace("whipple_benchmark.al", __file__)
 
 # al> % File: whipple_benchmark.al
 # al> % Problem: the Whipple bicycle of the benchmark by Meijaard, Papadopoulos,
@@ -95,23 +95,23 @@ al = Workspace("whipple_benchmark.al")
 # al> AutoZ ON                           % intermediates, as Autolev's Z's
 al.settings.set("Autoz", "ON")
 # al> Newtonian N
-N = al.newtonian("N")
+N = al.model.newtonian("N")
 # al> Frames    Y, L, E            % heading, lean (roll), steer axis
-Y, L, E = al.frames("Y", "L", "E")
+Y, L, E = al.model.frames("Y", "L", "E")
 # al> Bodies    R, B, H, F
-R, B, H, F = al.bodies("R", "B", "H", "F")
-Ro = al.point("RO")
-Bo = al.point("BO")
-Ho = al.point("HO")
-Fo = al.point("FO")
+R, B, H, F = al.model.bodies("R", "B", "H", "F")
+Ro = al.model.point("RO")
+Bo = al.model.point("BO")
+Ho = al.model.point("HO")
+Fo = al.model.point("FO")
 R_body, B_body, H_body, F_body = (
-    al.rigid_body(R),
-    al.rigid_body(B),
-    al.rigid_body(H),
-    al.rigid_body(F),
+    al.model.rigid_body(R),
+    al.model.rigid_body(B),
+    al.model.rigid_body(H),
+    al.model.rigid_body(F),
 )
 # al> Points    P, S               % rear contact point, a point on the steer axis
-P, S = al.points("P", "S")
+P, S = al.model.points("P", "S")
 # al> %-----
 # al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
 # al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
@@ -138,41 +138,41 @@ IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
 # al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
 MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
-al.set_mass(R, MR)
-al.set_mass(B, MB)
-al.set_mass(H, MH)
-al.set_mass(F, MF)
+al.model.set_mass(R, MR)
+al.model.set_mass(B, MB)
+al.model.set_mass(H, MH)
+al.model.set_mass(F, MF)
 # al> Inertia R, IRXX, IRYY, IRXX
-al.set_inertia(R, IRXX, IRYY, IRXX)
+al.model.set_inertia(R, IRXX, IRYY, IRXX)
 # al> Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ
-al.set_inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
+al.model.set_inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
 # al> Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ
-al.set_inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
+al.model.set_inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
 # al> Inertia F, IFXX, IFYY, IFXX
-al.set_inertia(F, IFXX, IFYY, IFXX)
+al.model.set_inertia(F, IFXX, IFYY, IFXX)
 # al> %-----
 # al> Simprot(N, Y, 3, Q3)
 Y.orient_axis(N, N.z, Q3)
-al.given_orientation(Y, N, line=31)
+al.model.given_orientation(Y, N, line=31)
 # al> Simprot(Y, L, 1, Q4)
 L.orient_axis(Y, Y.x, Q4)
-al.given_orientation(L, Y, line=32)
+al.model.given_orientation(L, Y, line=32)
 # al> Simprot(L, B, 2, Q5)
 B.orient_axis(L, L.y, Q5)
-al.given_orientation(B, L, line=33)
+al.model.given_orientation(B, L, line=33)
 # al> Simprot(B, R, 2, Q6)
 R.orient_axis(B, B.y, Q6)
-al.given_orientation(R, B, line=34)
+al.model.given_orientation(R, B, line=34)
 # al> Simprot(B, E, 2, LAM)
 E.orient_axis(B, B.y, LAM)
-al.given_orientation(E, B, line=35)
+al.model.given_orientation(E, B, line=35)
 # al> % H's axes are parallel to B's when the steer angle is zero.
 # al> Dircos(E, H, BODY321, Q7, -LAM, 0)
 H.orient_body_fixed(E, (Q7, -LAM, 0), "321")
-al.given_orientation(H, E, line=37)
+al.model.given_orientation(H, E, line=37)
 # al> Simprot(H, F, 2, Q8)
 F.orient_axis(H, H.y, Q8)
-al.given_orientation(F, H, line=38)
+al.model.given_orientation(F, H, line=38)
 # al> %-----
 # al> Q1' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
@@ -194,89 +194,93 @@ kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))
 # al> %-----
 # al> W_Y_N> = U3*N3>
 Y.set_ang_vel(N, U3 * N.z)
-al.given_ang_vel(Y, N, line=49)
+al.model.given_ang_vel(Y, N, line=49)
 # al> W_L_N> = W_Y_N> + U4*Y1>
-L.set_ang_vel(N, al.ang_vel(Y, N) + U4 * Y.x)
-al.given_ang_vel(L, N, line=50)
+L.set_ang_vel(N, al.model.ang_vel(Y, N) + U4 * Y.x)
+al.model.given_ang_vel(L, N, line=50)
 # al> W_B_N> = W_L_N> + U5*L2>
-B.set_ang_vel(N, al.ang_vel(L, N) + U5 * L.y)
-al.given_ang_vel(B, N, line=51)
+B.set_ang_vel(N, al.model.ang_vel(L, N) + U5 * L.y)
+al.model.given_ang_vel(B, N, line=51)
 # al> W_R_N> = W_B_N> + U6*B2>
-R.set_ang_vel(N, al.ang_vel(B, N) + U6 * B.y)
-al.given_ang_vel(R, N, line=52)
+R.set_ang_vel(N, al.model.ang_vel(B, N) + U6 * B.y)
+al.model.given_ang_vel(R, N, line=52)
 # al> W_E_N> = W_B_N>
-E.set_ang_vel(N, al.ang_vel(B, N))
-al.given_ang_vel(E, N, line=53)
+E.set_ang_vel(N, al.model.ang_vel(B, N))
+al.model.given_ang_vel(E, N, line=53)
 # al> W_H_N> = W_B_N> + U7*E3>
-H.set_ang_vel(N, al.ang_vel(B, N) + U7 * E.z)
-al.given_ang_vel(H, N, line=54)
+H.set_ang_vel(N, al.model.ang_vel(B, N) + U7 * E.z)
+al.model.given_ang_vel(H, N, line=54)
 # al> W_F_N> = W_H_N> + U8*H2>
-F.set_ang_vel(N, al.ang_vel(H, N) + U8 * H.y)
-al.given_ang_vel(F, N, line=55)
+F.set_ang_vel(N, al.model.ang_vel(H, N) + U8 * H.y)
+al.model.given_ang_vel(F, N, line=55)
 # al> %-----
 # al> P_P_Ro> = -RR*L3>
 Ro.set_pos(P, -RR * L.z)
-al.given_pos(Ro, P, line=57)
+al.model.given_pos(Ro, P, line=57)
 # al> P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>
 Bo.set_pos(Ro, XB * B.x + (ZB + RR) * B.z)
-al.given_pos(Bo, Ro, line=58)
+al.model.given_pos(Bo, Ro, line=58)
 # al> % The steer axis meets the ground at distance W + C ahead of P.
 # al> P_Ro_S> = (W + C)*B1> + RR*B3>
 S.set_pos(Ro, (W + C) * B.x + RR * B.z)
-al.given_pos(S, Ro, line=60)
+al.model.given_pos(S, Ro, line=60)
 # al> P_S_Ho> = (XH - W - C)*H1> + ZH*H3>
 Ho.set_pos(S, (XH - W - C) * H.x + ZH * H.z)
-al.given_pos(Ho, S, line=61)
+al.model.given_pos(Ho, S, line=61)
 # al> P_S_Fo> = -C*H1> - RF*H3>
 Fo.set_pos(S, -C * H.x - RF * H.z)
-al.given_pos(Fo, S, line=62)
+al.model.given_pos(Fo, S, line=62)
 # al> DOWN> = Cross(H2>, Cross(N3>, H2>))
-DOWN_vec = al.assign("DOWN>", al.cross(H.y, al.cross(N.z, H.y)), line=63)
+DOWN_vec = al.assign("DOWN>", al.model.cross(H.y, al.model.cross(N.z, H.y)), line=63)
 # al> P_Fo_Q> = RF*UnitVec(DOWN>)
-P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.unitvec(DOWN_vec), line=64)
+P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.model.unitvec(DOWN_vec), line=64)
 # al> %-----
 # al> V_P_N> = U1*N1> + U2*N2>
 P.set_vel(N, U1 * N.x + U2 * N.y)
-al.given_vel(P, N, line=66)
+al.model.given_vel(P, N, line=66)
 # al> V2pts(N, L, P, Ro)
-al.v2pts(N, L, P, Ro, line=67)
+al.model.v2pts(N, L, P, Ro, line=67)
 # al> V2pts(N, B, Ro, Bo)
-al.v2pts(N, B, Ro, Bo, line=68)
+al.model.v2pts(N, B, Ro, Bo, line=68)
 # al> V2pts(N, B, Ro, S)
-al.v2pts(N, B, Ro, S, line=69)
+al.model.v2pts(N, B, Ro, S, line=69)
 # al> V2pts(N, H, S, Ho)
-al.v2pts(N, H, S, Ho, line=70)
+al.model.v2pts(N, H, S, Ho, line=70)
 # al> V2pts(N, H, S, Fo)
-al.v2pts(N, H, S, Fo, line=71)
+al.model.v2pts(N, H, S, Fo, line=71)
 # al> %-----
 # al> % Rolling without slip: the wheels' material points at the contacts are at rest.
 # al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
 SLIPR_vec = al.assign(
-    "SLIPR>", al.vel(Ro, N) + al.cross(al.ang_vel(R, N), -al.pos(P, Ro)), line=74
+    "SLIPR>",
+    al.model.vel(Ro, N) + al.model.cross(al.model.ang_vel(R, N), -al.model.pos(P, Ro)),
+    line=74,
 )
 # al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
 SLIPF_vec = al.assign(
-    "SLIPF>", al.vel(Fo, N) + al.cross(al.ang_vel(F, N), P_Fo_Q_vec), line=75
+    "SLIPF>",
+    al.model.vel(Fo, N) + al.model.cross(al.model.ang_vel(F, N), P_Fo_Q_vec),
+    line=75,
 )
 # al> DEPENDENT[1] = Dot(SLIPR>, N1>)
-DEPENDENT = al.assign("DEPENDENT[1]", al.dot(SLIPR_vec, N.x), line=76)
+DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(SLIPR_vec, N.x), line=76)
 # al> DEPENDENT[2] = Dot(SLIPR>, N2>)
-DEPENDENT = al.assign("DEPENDENT[2]", al.dot(SLIPR_vec, N.y), line=77)
+DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(SLIPR_vec, N.y), line=77)
 # al> DEPENDENT[3] = Dot(SLIPF>, N1>)
-DEPENDENT = al.assign("DEPENDENT[3]", al.dot(SLIPF_vec, N.x), line=78)
+DEPENDENT = al.assign("DEPENDENT[3]", al.model.dot(SLIPF_vec, N.x), line=78)
 # al> DEPENDENT[4] = Dot(SLIPF>, N2>)
-DEPENDENT = al.assign("DEPENDENT[4]", al.dot(SLIPF_vec, N.y), line=79)
+DEPENDENT = al.assign("DEPENDENT[4]", al.model.dot(SLIPF_vec, N.y), line=79)
 # al> DEPENDENT[5] = Dot(SLIPF>, N3>)
-DEPENDENT = al.assign("DEPENDENT[5]", al.dot(SLIPF_vec, N.z), line=80)
+DEPENDENT = al.assign("DEPENDENT[5]", al.model.dot(SLIPF_vec, N.z), line=80)
 # al> Constrain(DEPENDENT[U1, U2, U3, U5, U8])
-al.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
+al.model.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
 # al> %-----
 # al> Gravity(G*N3>)
-al.gravity(G * N.z)
+al.model.gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
-Zero = al.assign("ZERO", al.fr() + al.frstar(), line=84)
+Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=84)
 # al> Kane()
-Zero = al.kane(line=85)
+Zero = al.model.kane(line=85)
 # al> % Linearized equations about the upright reference configuration: the
 # al> % accelerations of the independent speeds and their Jacobian by the lean
 # al> % and steer angles and rates (the forward speed is U6 = -v/RR).
@@ -311,7 +315,7 @@ AUTOLEV = al.names()
 def kanes_method():
     """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
     ``mass_matrix_full`` and ``forcing_full`` formed."""
-    return al.kanes_method()
+    return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
