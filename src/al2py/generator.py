@@ -228,7 +228,11 @@ class Generator:
         return [f"{idents} = al.constants({specs}, line={self._line})"]
 
     def _mass(self, stmt: ir.Declaration) -> list[str]:
+        """``Mass P=MP``: the mass of the module's sympy ``Particle`` or
+        ``RigidBody`` (``P_particle.mass = MP``), then the runtime's record
+        of it (Autolev's normal form, the body's central inertia)."""
         out = self._declare_new()
+        bodies = []
         for item in stmt.items:
             assert isinstance(item.target, ir.Name)
             obj = self.facts.object(item.target.name)
@@ -237,8 +241,23 @@ class Generator:
                 sym = self._symbol_for_name(first)
                 value = self.expr(item.values[1])
                 out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
-            out.append(f"al.set_mass({obj.ident}, {self.expr(first)})")
+            body = self._sympy_body(obj)
+            if body is None:  # not declared as a body or particle: its error
+                out.append(f"al.set_mass({obj.ident}, {self.expr(first)})")
+                continue
+            out.append(f"{body}.mass = {self.expr(first)}")
+            bodies.append(body)
+        if bodies:
+            out.append(f"al.given_masses({', '.join(bodies)}, line={self._line})")
         return out
+
+    def _sympy_body(self, obj: Symbol) -> str | None:
+        """The module's name for the sympy ``RigidBody``/``Particle`` of a
+        declared body or particle (None for anything else)."""
+        suffix = {Decl.BODY: "_body", Decl.PARTICLE: "_particle"}.get(obj.kind)
+        if suffix is None:
+            return None
+        return self.facts.helper_ident(obj.key + suffix, obj.ident + suffix)
 
     def _inertia(self, stmt: ir.Declaration) -> list[str]:
         out = self._declare_new()
@@ -262,7 +281,18 @@ class Generator:
                 value = self.expr(item.values[0])
                 out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
         scalars = ", ".join(self.expr(item.target) for item in rest)
-        out.append(f"al.set_inertia({obj.ident}, {scalars}{about}{basis})")
+        body_ident = self._sympy_body(obj)
+        if about or basis or body_ident is None or not 1 <= len(rest) <= 6:
+            # about another point (its position may come later) or in
+            # another basis: Autolev's rule, the runtime's
+            out.append(f"al.set_inertia({obj.ident}, {scalars}{about}{basis})")
+            return out
+        inertia = self.imports.use("sympy.physics.mechanics", "inertia")
+        zeros = ", 0" * (3 - len(rest)) if len(rest) < 3 else ""
+        out.append(
+            f"{body_ident}.central_inertia = {inertia}({obj.ident}, {scalars}{zeros})"
+        )
+        out.append(f"al.given_inertia({body_ident}, line={self._line})")
         return out
 
     def stmt_Assign(self, stmt: ir.Assign) -> list[str]:

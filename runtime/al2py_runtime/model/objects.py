@@ -188,6 +188,25 @@ class Objects:
         self._sync_sympy_body(body)
         return b.inertia
 
+    @command
+    def given_masses(self, *bodies: RigidBody | Particle, line=None) -> None:
+        """After ``P_particle.mass = MP`` (``Mass P=MP``): the masses as
+        Autolev keeps them (normalized; a body's central inertia follows)."""
+        for body in bodies:
+            obj = body.frame if isinstance(body, RigidBody) else body.point
+            self.set_mass(obj, body.mass)
+
+    @command
+    def given_inertia(self, body: RigidBody, *, line=None) -> Dyadic:
+        """After ``B_body.central_inertia = inertia(B, ...)`` (``Inertia B,
+        ...``): the inertia as Autolev keeps it (about the mass center, in
+        B's basis, each scalar normalized)."""
+        frame = body.frame
+        m = body.central_inertia.to_matrix(frame)
+        return self.set_inertia(
+            frame, m[0, 0], m[1, 1], m[2, 2], m[0, 1], m[1, 2], m[2, 0]
+        )
+
     def body_record(self, body: Any) -> BodyRecord:
         """What the model holds of a body (given its frame): mass center,
         mass and inertia; an error for anything that is not a body."""

@@ -65,7 +65,8 @@ Bo = al.model.point("BO")
 B_body = al.model.rigid_body(B)
 # al> Mass B=MB
 MB = al.constants("MB+", line=3)
-al.model.set_mass(B, MB)
+B_body.mass = MB
+al.model.given_masses(B_body, line=3)
 # al> Constants I,J,L
 I_, J, L = al.constants("I", "J", "L", line=4)
 # al> P_Bo_P> = L*B1>

@@ -64,10 +64,11 @@ C = al.model.particles("C")
 C_particle = al.model.particle(C)
 # al> Mass        A=12.5, B=MB, C=MC=10
 MB, MC = al.constants("MB+", "MC+", line=3)
-al.model.set_mass(A, 12.5)
-al.model.set_mass(B, MB)
+A_body.mass = 12.5
+B_body.mass = MB
 al.assign("MC", 10, line=3)
-al.model.set_mass(C, MC)
+C_particle.mass = MC
+al.model.given_masses(A_body, B_body, C_particle, line=3)
 # al> Mass_A = Mass(A)           % Returns the mass of A
 Mass_A = al.assign("MASS_A", al.model.mass_of(A), line=4)
 # al> Mass_AB = Mass(A,B)       % Returns Mass(A) + Mass(B)

@@ -57,6 +57,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace  # noqa: E402
 from al2py_runtime.functions import acos_deg  # noqa: E402
+from sympy.physics.mechanics import inertia  # noqa: E402
 
 al = Workspace("tutor2.al", __file__)
 
@@ -93,15 +94,19 @@ al.assign("W", 1, line=13)
 # al> Mass A=M=12, B=M, C=M
 M = al.constants("M+", line=16)
 al.assign("M", 12, line=16)
-al.model.set_mass(A, M)
-al.model.set_mass(B, M)
-al.model.set_mass(C, M)
+A_body.mass = M
+B_body.mass = M
+C_body.mass = M
+al.model.given_masses(A_body, B_body, C_body, line=16)
 # al> Inertia A, M*W^2/12, M*W^2/12, M*W^2/6
-al.model.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+A_body.central_inertia = inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+al.model.given_inertia(A_body, line=17)
 # al> Inertia B, M*W^2/12, M*W^2/12, M*W^2/6
-al.model.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+B_body.central_inertia = inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+al.model.given_inertia(B_body, line=18)
 # al> Inertia C, M*W^2/12, M*W^2/6, M*W^2/12
-al.model.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
+C_body.central_inertia = inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
+al.model.given_inertia(C_body, line=19)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(A, B, -2, PHI)

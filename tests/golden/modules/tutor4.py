@@ -98,8 +98,9 @@ G, LA, LB = al.constants("G", "LA", "LB", line=13)
 K, LO = al.constants("K", "LO", line=14)
 # al> Mass P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=15)
-al.model.set_mass(P, MP)
-al.model.set_mass(Q, MQ)
+P_particle.mass = MP
+Q_particle.mass = MQ
+al.model.given_masses(P_particle, Q_particle, line=15)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)

@@ -119,8 +119,9 @@ al.assign("FP", -D * QA.diff(t), line=19)
 # al> %      Mass and inertia
 # al> Mass           P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=22)
-al.model.set_mass(P, MP)
-al.model.set_mass(Q, MQ)
+P_particle.mass = MP
+Q_particle.mass = MQ
+al.model.given_masses(P_particle, Q_particle, line=22)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)

@@ -67,6 +67,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
+from sympy.physics.mechanics import inertia  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor7a.al", __file__)
@@ -120,17 +121,21 @@ ZEE_NOT = al.assign("ZEE_NOT", Matrix([[FA1, FA2, FC1, FC2]]), line=19)
 # al> Mass       A=MA=10, B=MB=20, C=MC=20
 MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=22)
 al.assign("MA", 10, line=22)
-al.model.set_mass(A, MA)
+A_body.mass = MA
 al.assign("MB", 20, line=22)
-al.model.set_mass(B, MB)
+B_body.mass = MB
 al.assign("MC", 20, line=22)
-al.model.set_mass(C, MC)
+C_body.mass = MC
+al.model.given_masses(A_body, B_body, C_body, line=22)
 # al> Inertia    A, 0, MA*LA^2/12, MA*LA^2/12
-al.model.set_inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
+A_body.central_inertia = inertia(A, 0, MA * LA**2 / 12, MA * LA**2 / 12)
+al.model.given_inertia(A_body, line=23)
 # al> Inertia    B, 0, MB*LB^2/12, MB*LB^2/12
-al.model.set_inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
+B_body.central_inertia = inertia(B, 0, MB * LB**2 / 12, MB * LB**2 / 12)
+al.model.given_inertia(B_body, line=24)
 # al> Inertia    C, 0, MC*LC^2/12, MC*LC^2/12
-al.model.set_inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
+C_body.central_inertia = inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
+al.model.given_inertia(C_body, line=25)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)

@@ -76,6 +76,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
+from sympy.physics.mechanics import inertia  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor8.al", __file__)
@@ -116,12 +117,14 @@ al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
 # al> % Mass and inertia
 # al> Mass        A=MA, B=MB
 MA, MB = al.constants("MA+", "MB+", line=21)
-al.model.set_mass(A, MA)
-al.model.set_mass(B, MB)
+A_body.mass = MA
+B_body.mass = MB
+al.model.given_masses(A_body, B_body, line=21)
 # al> Inertia     B, IB=MB*L^2/12, 0, IB
 IB = al.constants("IB+", line=22)
 al.assign("IB", MB * L**2 / 12, line=22)
-al.model.set_inertia(B, IB, 0, IB)
+B_body.central_inertia = inertia(B, IB, 0, IB)
+al.model.given_inertia(B_body, line=22)
 # al> %-----
 # al> % Geometry relating unit vectors
 # al> Simprot(N, B, 3, THETA)

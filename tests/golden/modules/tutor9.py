@@ -73,6 +73,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 from al2py_runtime import Workspace, t  # noqa: E402
 from al2py_runtime.functions import acos  # noqa: E402
 from sympy import Matrix  # noqa: E402
+from sympy.physics.mechanics import inertia  # noqa: E402
 from sympy.physics.vector import Vector  # noqa: E402
 
 al = Workspace("tutor9.al", __file__)
@@ -101,10 +102,12 @@ J = al.constants("J", line=12)
 # al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
 M = al.constants("M+", line=15)
-al.model.set_mass(A, M)
+A_body.mass = M
+al.model.given_masses(A_body, line=15)
 # al> Inertia        A, I1, I2, I3 % Attribute inertia of G to A
 I1, I2, I3 = al.constants("I1+", "I2+", "I3+", line=16)
-al.model.set_inertia(A, I1, I2, I3)
+A_body.central_inertia = inertia(A, I1, I2, I3)
+al.model.given_inertia(A_body, line=16)
 # al> %-----
 # al> %      Angular velocities
 # al> W_A_N> = U1*A1> + U2*A2> + U3*A3>

@@ -82,6 +82,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 
 from al2py_runtime import Workspace, t  # noqa: E402
 from sympy import Eq, Matrix  # noqa: E402
+from sympy.physics.mechanics import inertia  # noqa: E402
 
 al = Workspace("whipple_benchmark.al", __file__)
 
@@ -138,18 +139,23 @@ IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
 # al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
 MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
-al.model.set_mass(R, MR)
-al.model.set_mass(B, MB)
-al.model.set_mass(H, MH)
-al.model.set_mass(F, MF)
+R_body.mass = MR
+B_body.mass = MB
+H_body.mass = MH
+F_body.mass = MF
+al.model.given_masses(R_body, B_body, H_body, F_body, line=25)
 # al> Inertia R, IRXX, IRYY, IRXX
-al.model.set_inertia(R, IRXX, IRYY, IRXX)
+R_body.central_inertia = inertia(R, IRXX, IRYY, IRXX)
+al.model.given_inertia(R_body, line=26)
 # al> Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ
-al.model.set_inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
+B_body.central_inertia = inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
+al.model.given_inertia(B_body, line=27)
 # al> Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ
-al.model.set_inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
+H_body.central_inertia = inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
+al.model.given_inertia(H_body, line=28)
 # al> Inertia F, IFXX, IFYY, IFXX
-al.model.set_inertia(F, IFXX, IFYY, IFXX)
+F_body.central_inertia = inertia(F, IFXX, IFYY, IFXX)
+al.model.given_inertia(F_body, line=29)
 # al> %-----
 # al> Simprot(N, Y, 3, Q3)
 Y.orient_axis(N, N.z, Q3)
