@@ -6,8 +6,8 @@ any byte difference and prints the unified diff; ``make golden`` (that is,
 ``python tests/test_golden_modules.py``) writes them again, for review with
 ``git diff tests/golden/modules``.
 
-The tutorial's examples ``tutor2.al`` ... ``tutor9.al`` sit beside their
-modules (``tutor1.al`` is a golden case, ``tutor6.al`` is ``examples/``).
+The tutorial's examples are ``tests/tutorial/tutor*.al`` (``tutor1.al`` is a
+golden case, ``tutor6.al`` is ``examples/``).
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ def sources() -> list[Path]:
     return [
         ROOT / "examples" / "tutor6.al",
         *sorted((ROOT / "tests" / "golden" / "cases").glob("*.al")),
-        *sorted(MODULES.glob("*.al")),
+        *sorted((ROOT / "tests" / "tutorial").glob("tutor*.al")),
         ROOT / "tests" / "models" / "whipple_benchmark.al",
     ]
 

@@ -39,6 +39,7 @@ from ..names.printing import element_labels
 from ..safety import Statements, statement
 from .records import (
     KINDS,
+    AnimateSpec,
     InputValue,
     Job,
     NumericsError,
@@ -69,6 +70,8 @@ class _NumericsState:
     #: ``Units T=S, X=m``: the unit of a name in later Inputs and Outputs
     #: that give none.
     units_of: dict[str, str] = field(default_factory=dict)
+    #: the latest ``Animate(N, O, A, B)``
+    animate: AnimateSpec | None = None
 
 
 class Numerics:
@@ -96,6 +99,7 @@ class Numerics:
         """``UnitSystem kg, meter, sec``: the units values have inside a run."""
         self._numerics.unit_system = UnitSystem(mass, length, time)
 
+    @statement
     def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
         """``Units T=S, X=m``: the unit of each name where an Input or Output
         of it gives none."""
@@ -161,6 +165,7 @@ class Numerics:
                 return entry.obj
         return None
 
+    @statement
     def encode(self, *names: str, line: int | None = None) -> None:
         """``Encode A, B'``: the CODE job that follows computes these
         quantities at every output row, as Autolev's generated programs did
@@ -169,6 +174,16 @@ class Numerics:
             key = normalize_name(name)
             if key not in self._numerics.encoded:
                 self._numerics.encoded.append(key)
+
+    @statement
+    def animate(
+        self, newtonian: Any, point: Any, *frames: Any, line: int | None = None
+    ) -> None:
+        """``Animate(N, O, A, B)``: the CODE jobs that follow animate frames
+        and bodies ``A``, ``B`` in the Newtonian frame ``N``, positions
+        measured from the point ``O`` (``result.animate()``; see
+        :mod:`al2py_runtime.jobs.scene`)."""
+        self._numerics.animate = AnimateSpec(newtonian, point, tuple(frames), line)
 
     def _encoded_spec(self, line: int | None) -> tuple[OutputSpec | None, dict]:
         """The encoded quantities as one (unwritten) output table."""
@@ -248,6 +263,8 @@ class Numerics:
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         encoded, shapes = self._encoded_spec(line)
+        from .scene import Geometry
+
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
@@ -280,6 +297,8 @@ class Numerics:
                 for name, e in self._ws.table.entries.items()
                 if e.line is not None
             },
+            animate=state.animate,
+            geometry=Geometry.of(self._ws.model),
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
                 for name, e in self._ws.table.entries.items()
@@ -301,6 +320,7 @@ class Numerics:
 
     # ------------------------------------------------------------ functions
 
+    @statement
     def input_value(self, name: str, unit_system: bool = False) -> Any:
         """Autolev ``Input(X)``; ``Input(X, UnitSystem)`` with ``unit_system``
         converts it to the units of the ``UnitSystem``."""
@@ -348,6 +368,7 @@ class Numerics:
         value = self._ws.resolve(rhs).xreplace(known)
         return _as_number(value) if value.is_number else None
 
+    @statement
     def units(self, a: str, b: str) -> Any:
         """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to
         ``b`` (``Units("n*m", "lbf*ft")`` is 0.7375621...)."""

@@ -1,6 +1,6 @@
 """Autolev script tutor4.al, converted to Python.
 
-Converted from tutor4.al by al2py 0.1.0; edit the .al file and
+Converted from tutor4.al by al2py 0.2.0; edit the .al file and
 convert again rather than editing this module.
 
 ``import tutor4`` runs the symbolic part silently; ``AUTOLEV`` maps
@@ -16,7 +16,7 @@ if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
 usage: python tutor4.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot]
+                        [--outdir OUTDIR] [--plot] [--animate]
                         [--backend {auto,c,llvm,lambdify}] [--zero-missing]
                         [--emit-code DIR] [--no-run] [--max-seconds S]
                         [--max-evals N]
@@ -34,6 +34,9 @@ options:
                         output tables and plots, under their base names
                         (default: .)
   --plot                also write STEM.n.png plots
+  --animate             also write STEM.html, an animation of the model that
+                        plays in a browser (Dynamics/ODE jobs; what the
+                        script's Animate names, else every body)
   --backend {auto,c,llvm,lambdify}
                         how Dynamics/ODE equations are evaluated (default:
                         $AL2PY_BACKEND or auto, the fastest available)
