@@ -5,7 +5,8 @@ imported for more than :data:`AFTER` seconds and standard error is a terminal,
 one line on standard error names the Autolev statement being derived (the
 ``# al>`` echo above the Python line running now) and the time so far; the
 line is cleared when the module is done.  Anywhere else (a pipe, a file, CI)
-nothing is written.
+nothing is written.  :class:`Steps` does the same for other long waits
+counted in steps (a sweep's points, a linearization's columns).
 
 >>> watch = ImportWatch("m.al", None)  # no module: nothing to watch
 >>> watch.start(); watch.stop()
@@ -21,7 +22,7 @@ from typing import Any, TextIO
 
 from .safety import echo_above
 
-__all__ = ["AFTER", "ImportWatch", "is_terminal"]
+__all__ = ["AFTER", "ImportWatch", "Steps", "is_terminal"]
 
 #: seconds of deriving before the progress line appears
 AFTER = 2.0
@@ -106,3 +107,65 @@ class ImportWatch:
             self.stream.flush()
         except (OSError, ValueError):  # a closed terminal: nothing to show
             self._done.set()
+
+
+class Steps:
+    """A progress line for work counted in steps (a sweep's points, a
+    linearization's columns): after :data:`AFTER` seconds, and only when
+    the stream is a terminal, one line ``WHAT: done/total (s)`` on standard
+    error, updated every :data:`EVERY` seconds and cleared at the end.
+
+    >>> import io
+    >>> with Steps("sweeping AMAT", 3, stream=io.StringIO()) as steps:
+    ...     steps.advance(3)
+    >>> steps.done
+    3
+    """
+
+    def __init__(self, what: str, total: int, stream: TextIO | None = None) -> None:
+        self.what = what
+        self.total = total
+        self.done = 0
+        self.stream = stream if stream is not None else sys.stderr
+        self._stop = threading.Event()
+        self._shown = 0
+        self._thread: threading.Thread | None = None
+
+    def __enter__(self) -> Steps:
+        if is_terminal(self.stream):
+            self._thread = threading.Thread(target=self._watch, daemon=True)
+            self._thread.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+
+    def advance(self, steps: int = 1) -> None:
+        """``steps`` more are done."""
+        self.done += steps
+
+    def _watch(self) -> None:
+        t0 = time.perf_counter()
+        if self._stop.wait(AFTER):
+            return
+        while not self._stop.is_set():
+            text = (
+                f"{self.what[:50]}: {self.done}/{self.total}"
+                f" ({time.perf_counter() - t0:.0f} s)"
+            )
+            pad = " " * max(0, self._shown - len(text))
+            self._write("\r" + text + pad)
+            self._shown = len(text)
+            if self._stop.wait(EVERY):
+                break
+        if self._shown:
+            self._write("\r" + " " * self._shown + "\r")
+
+    def _write(self, text: str) -> None:
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+        except (OSError, ValueError):  # a closed terminal: nothing to show
+            self._stop.set()

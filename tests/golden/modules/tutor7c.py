@@ -352,9 +352,45 @@ def evaluate(name, values=None, /, **given):
     """The named Autolev quantity as a number (a numpy array for a matrix).
 
     Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.
+    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
+    is compiled on the first call; later calls take microseconds.  Values may
+    be numpy arrays: the result has their shape in front
+    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).
     """
     return al.numerics.evaluate_name(name, values, **given)
+
+
+def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
+    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
+    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
+
+    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
+    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
+    ``.plot()``.  Several arrays give their product; scalars are fixed.
+    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
+    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
+    serial ones.
+    """
+    return al.numerics.sweep(
+        name,
+        values,
+        executor=executor,
+        job=job,
+        origin=(__name__, globals().get("__file__")),
+        **given,
+    )
+
+
+def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
+    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
+    about the point its Inputs and ``overrides`` give (as for ``run()``).
+
+    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
+    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
+    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
+    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
+    """
+    return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 
 def main(argv: list[str] | None = None) -> int:
