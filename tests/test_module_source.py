@@ -26,14 +26,21 @@ TRICKY = [
     "% a form feed \x0c and a bell \x07 in a comment",
     '% quotes \' " and a backslash \\ and """',
     "% unicode: é ü ∂",
+    "T= [" + " " * 46 + "\t" * 5 + "     \t& % a long run of blanks and tabs",
+    "X = 1" + " " * 120 + "% blanks past a comment's width",
 ]
 
 
 def test_echo_lines_give_each_line_back():
+    """Also after black, which strips the blanks that end a comment."""
+    import black
+
     module = [c for line in TRICKY for c in echo_lines(line)]
     assert echoed_source(module) == [line.strip() for line in TRICKY]
     for c in module:
         assert c == c.rstrip() and len(c.expandtabs(8)) <= 88, c
+    code = black.format_str("x = 1\n" + "\n".join(module) + "\n", mode=black.Mode())
+    assert echoed_source(code.splitlines()) == [line.strip() for line in TRICKY]
 
 
 def test_words_are_not_split_in_the_echo():

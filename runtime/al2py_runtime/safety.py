@@ -163,23 +163,35 @@ def echo_lines(line: str) -> list[str]:
     text = line.strip()
     if not text:
         return [BLANK]
-    lead = ECHO
-    if not all(c.isprintable() or c == "\t" for c in text):
-        lead, text = QUOTED, repr(text)
+    if all(c.isprintable() or c == "\t" for c in text):
+        out = _pieces(ECHO, text)
+        if out is not None:
+            return out
+    # a character a comment cannot hold, or a run of blanks too long to cut
+    # after a word: the line as a string, with no blank left to lose
+    quoted = repr(text).replace(" ", "\\x20").replace("\t", "\\t")
+    return _pieces(QUOTED, quoted) or [QUOTED + quoted]
+
+
+def _pieces(lead: str, text: str) -> list[str] | None:
+    """``text`` in comment lines of at most 88 columns (a tab as 8), cut
+    before a space after a word (never on a blank, which black would strip);
+    None if that cannot be done."""
     out: list[str] = []
     while text:
-        room = _WIDTH - len(lead)
-        piece = _piece(text, room)
+        piece = _piece(text, _WIDTH - len(lead))
+        if piece is None:
+            return None
         out.append(lead + piece)
         text = text[len(piece) :]
         lead = MORE
     return out
 
 
-def _piece(text: str, room: int) -> str:
-    """The longest start of ``text`` that fits ``room`` columns (a tab as 8),
-    ending before a space where it can, and never on whitespace (black
-    would strip it)."""
+def _piece(text: str, room: int) -> str | None:
+    """The longest start of ``text`` that fits ``room`` columns, ending before
+    a space where it can, and never on whitespace (None if every start
+    that fits does)."""
     width = 0
     end = 0
     while end < len(text):
@@ -193,9 +205,9 @@ def _piece(text: str, room: int) -> str:
         if text[cut].isspace() and not text[cut - 1].isspace():
             return text[:cut]
     cut = end
-    while cut > 1 and text[cut - 1].isspace():
+    while cut > 0 and text[cut - 1].isspace():
         cut -= 1
-    return text[: max(cut, 1)]
+    return text[:cut] if cut > 0 else None
 
 
 def echoed_source(module_lines: Sequence[str]) -> list[str]:
