@@ -8,7 +8,7 @@ line is cleared when the module is done.  Anywhere else (a pipe, a file, CI)
 nothing is written.  :class:`Steps` does the same for other long waits
 counted in steps (a sweep's points, a linearization's columns).
 
->>> watch = ImportWatch("m.al", None)  # no module frame: nothing to watch
+>>> watch = ImportWatch("m.al", None)  # no module: nothing to watch
 >>> watch.start(); watch.stop()
 """
 
@@ -18,7 +18,6 @@ import linecache
 import sys
 import threading
 import time
-from types import FrameType
 from typing import Any, TextIO
 
 from .safety import echo_above
@@ -40,15 +39,15 @@ def is_terminal(stream: Any) -> bool:
 
 
 class ImportWatch:
-    """Shows which statement the module in ``frame`` is deriving (see the
+    """Shows which statement the module ``module_file`` is deriving (see the
     module docstring); :meth:`stop` when the module is done."""
 
     def __init__(
-        self, filename: str, frame: FrameType | None, stream: TextIO | None = None
+        self, filename: str, module_file: str | None, stream: TextIO | None = None
     ) -> None:
         self.filename = filename
         self.stream = stream if stream is not None else sys.stderr
-        self._file = frame.f_code.co_filename if frame is not None else None
+        self._file = module_file  # the generated module's __file__
         self._thread_id = threading.get_ident()
         self._done = threading.Event()
         self._shown = 0  # width of the line on screen

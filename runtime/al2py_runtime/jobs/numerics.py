@@ -37,6 +37,7 @@ import sympy as sp
 from sympy.physics.vector import Vector
 
 from ..names.printing import element_labels
+from ..safety import Statements, statement
 from .records import (
     KINDS,
     AnimateSpec,
@@ -87,20 +88,29 @@ class Numerics:
         #: compiled quantities (:meth:`compiled_quantity`)
         self._compiled: dict[tuple, tuple[Any, Any]] = {}
 
+    @property
+    def statements(self) -> Statements:
+        """Where the workspace's statement calls stand (a failing Input,
+        Output, UnitSystem or CODE statement names its ``.al`` line)."""
+        return self._ws.statements
+
     # ------------------------------------------------------------ recording
 
+    @statement
     def unit_system(
         self, mass: str = "kg", length: str = "m", time: str = "sec", *, line=None
     ) -> None:
         """``UnitSystem kg, meter, sec``: the units values have inside a run."""
         self._numerics.unit_system = UnitSystem(mass, length, time)
 
+    @statement
     def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
         """``Units T=S, X=m``: the unit of each name where an Input or Output
         of it gives none."""
         for name, unit in units.items():
             self._numerics.units_of[normalize_name(name)] = unit
 
+    @statement
     def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
         """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
         store = self._numerics.inputs
@@ -120,6 +130,7 @@ class Numerics:
                 number, unit if unit else None, line
             )
 
+    @statement
     def output(
         self,
         items: Iterable[tuple[str, Any, str | None]],
@@ -158,6 +169,7 @@ class Numerics:
                 return entry.obj
         return None
 
+    @statement
     def encode(self, *names: str, line: int | None = None) -> None:
         """``Encode A, B'``: the CODE job that follows computes these
         quantities at every output row, as Autolev's generated programs did
@@ -167,6 +179,7 @@ class Numerics:
             if key not in self._numerics.encoded:
                 self._numerics.encoded.append(key)
 
+    @statement
     def animate(
         self, newtonian: Any, point: Any, *frames: Any, line: int | None = None
     ) -> None:
@@ -194,6 +207,7 @@ class Numerics:
             return None, {}
         return OutputSpec(tuple(items), line, encoded=True), shapes
 
+    @statement
     def code(
         self,
         kind: str,
@@ -315,6 +329,7 @@ class Numerics:
 
     # ------------------------------------------------------------ functions
 
+    @statement
     def input_value(self, name: str, unit_system: bool = False) -> Any:
         """Autolev ``Input(X)``; ``Input(X, UnitSystem)`` with ``unit_system``
         converts it to the units of the ``UnitSystem``."""
@@ -362,6 +377,7 @@ class Numerics:
         value = self._ws.resolve(rhs).xreplace(known)
         return _as_number(value) if value.is_number else None
 
+    @statement
     def units(self, a: str, b: str) -> Any:
         """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to
         ``b`` (``Units("n*m", "lbf*ft")`` is 0.7375621...)."""

@@ -26,7 +26,7 @@ from .fastkane import (
     measure_split,
     named_measures,
 )
-from .state import command, t
+from .state import command, query, t
 
 __all__ = ["KaneEquations"]
 
@@ -533,7 +533,7 @@ class KaneEquations:
         speeds = self.generalized_speeds()
         return [sp.Derivative(q, t) - rhs for q, rhs in self.coordinates_of(speeds)]
 
-    @command
+    @query
     def kanes_method(self) -> Any:
         """``sympy.physics.mechanics.KanesMethod`` for this script, with its
         equations formed (``mass_matrix_full``, ``forcing_full``)."""
