@@ -36,7 +36,7 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
-from . import algebra, matrices, walks
+from . import algebra, matrices, progress, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
 from .model.model import MODEL_COMMANDS, Model
@@ -622,11 +622,14 @@ class Workspace(Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [
-            r if r.verbatim else replace(r, value=self.model.displayed(r.value))
-            for r in self._with_intermediates(self.responses)
-        ]
-        return transcript_lines(lines, shown)
+        with progress.task("printing the transcript", unit="responses") as task:
+            task.doing("naming intermediates")
+            shown = self._with_intermediates(self.responses)
+            task.doing("")
+            task.update(0, len(shown))
+            return transcript_lines(
+                lines, shown, self.model.displayed, tick=task.advance
+            )
 
     def _with_intermediates(self, responses: list[Response]) -> list[Response]:
         """Responses given while AutoZ was ON show intermediates by name, each

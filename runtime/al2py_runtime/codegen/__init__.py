@@ -20,6 +20,7 @@ from __future__ import annotations
 from pathlib import Path, PurePath
 from typing import Any
 
+from .. import progress
 from ..jobs import backends
 from ..jobs.run import Job, NumericsError
 from .infile import in_text
@@ -80,24 +81,42 @@ def write_programs(
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
-    for job in ws.numerics.jobs if jobs is None else jobs:
-        try:
-            name = PurePath(target_file(job, lang)).name
-            static = job.kind in ("ALGEBRAIC", "NONLINEAR")
-            program = (describe_static if static else describe)(job, source)
-            text = program_source(program, name)
-        except (NumericsError, backends.BackendError) as exc:
-            message = str(exc)
-            if not message.startswith(job.where):
-                message = f"{job.where}: {message}"
-            errors.append(message)
-            continue
-        directory.mkdir(parents=True, exist_ok=True)
-        path = directory / name
-        path.write_text(text, encoding="utf-8")
-        written.append(path)
-        if not program.nosubs:
-            infile = directory / f"{program.stem}.in"
-            infile.write_text(in_text(program), encoding="utf-8")
-            written.append(infile)
+    jobs = ws.numerics.jobs if jobs is None else jobs
+    with progress.task("writing programs", len(jobs)) as task:
+        for job in jobs:
+            _write_one(job, lang, source, directory, written, errors, task)
+            task.advance()
     return written, errors
+
+
+def _write_one(
+    job: Job,
+    lang: str | None,
+    source: str | None,
+    directory: Path,
+    written: list[Path],
+    errors: list[str],
+    task: progress.Task,
+) -> None:
+    """Write one job's program and ``.in`` (see :func:`write_programs`)."""
+    try:
+        name = PurePath(target_file(job, lang)).name
+        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
+        task.doing(f"{name} (forming the equations)")
+        program = (describe_static if static else describe)(job, source)
+        task.doing(f"{name} (printing)")
+        text = program_source(program, name)
+    except (NumericsError, backends.BackendError) as exc:
+        message = str(exc)
+        if not message.startswith(job.where):
+            message = f"{job.where}: {message}"
+        errors.append(message)
+        return
+    directory.mkdir(parents=True, exist_ok=True)
+    path = directory / name
+    path.write_text(text, encoding="utf-8")
+    written.append(path)
+    if not program.nosubs:
+        infile = directory / f"{program.stem}.in"
+        infile.write_text(in_text(program), encoding="utf-8")
+        written.append(infile)

@@ -55,6 +55,7 @@ import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.precedence import PRECEDENCE_FUNCTIONS, precedence
 
+from .. import progress
 from ..vocabulary import numeric_namespace
 from .kutta import ADVANCE_C, StepError
 
@@ -989,7 +990,11 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
     lib = folder / f"al2py_{key}{_SUFFIX}"
     if lib.exists():
         return lib, True
-    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+    with (
+        tempfile.TemporaryDirectory(dir=folder) as tmp,
+        progress.task("compiling the C code") as task,
+    ):
+        task.doing(f"{len(units)} unit{'s' if len(units) > 1 else ''}")
         out = Path(tmp) / f"model{_SUFFIX}"
         if len(units) == 1:
             src = Path(tmp) / "model.c"
@@ -1038,9 +1043,13 @@ def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool
     text = [cc, *C_FLAGS, sys.platform, platform.machine()]
     objs: list[Path] = []
     started: list[tuple[subprocess.Popen, Path, Path]] = []
-    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+    with (
+        tempfile.TemporaryDirectory(dir=folder) as tmp,
+        progress.task("compiling the C code", unit="units") as task,
+    ):
         try:
             for k, (source, flags) in enumerate(units):
+                task.doing(f"printing unit {k + 1}")
                 text += [source, *flags]
                 cmd = [*cc.split(), *flags, *_UNIT_FLAGS, "-c"]
                 own = [*cmd, sys.platform, platform.machine(), source]
@@ -1061,14 +1070,18 @@ def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool
             lib = folder / f"al2py_{key}{_SUFFIX}"
             if lib.exists():
                 return lib, True
+            task.doing("")
+            task.update(len(objs) - len(started), len(objs))
             for k, (proc, obj, kept) in enumerate(started):
                 if proc.wait(timeout=600):
                     error = (obj.with_suffix(".err")).read_text(errors="replace")
                     raise BackendError(_compiler_error(error))
+                task.advance()
                 os.replace(obj, kept)  # atomic, as the library
                 started[k] = (proc, obj, obj)
             out = Path(tmp) / f"model{_SUFFIX}"
             link = [*cc.split(), "-shared", "-o", str(out), *map(str, objs), "-lm"]
+            task.doing("linking")
             _run_compiler([link])
             os.replace(out, lib)
             return lib, False
