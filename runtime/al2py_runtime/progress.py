@@ -140,8 +140,8 @@ class ImportWatch:
 #: the tasks running now, innermost last (only the innermost one shows)
 _active: list[Task] = []
 _lock = threading.RLock()
-#: width of the progress line on screen, per stream id
-_widths: dict[int, int] = {}
+#: width of the progress line on screen, per stream
+_widths: dict[Any, int] = {}
 #: longest progress line (a terminal of 80 columns never wraps it)
 WIDTH = 79
 
@@ -265,13 +265,13 @@ def echo(text: str, stream: TextIO | None = None) -> None:
 
 
 def _show(stream: TextIO, text: str) -> None:
-    pad = " " * max(0, _widths.get(id(stream), 0) - len(text))
+    pad = " " * max(0, _widths.get(stream, 0) - len(text))
     if _write(stream, "\r" + text + pad):
-        _widths[id(stream)] = len(text)
+        _widths[stream] = len(text)
 
 
 def _clear(stream: TextIO) -> None:
-    shown = _widths.pop(id(stream), 0)
+    shown = _widths.pop(stream, 0)
     if shown:
         _write(stream, "\r" + " " * shown + "\r")
 

@@ -52,13 +52,12 @@ def transcript_lines(
     """The full transcript as text lines.  ``form(value)`` forms each value
     that is not verbatim just before it is printed; ``tick()`` after each
     response is printed (progress)."""
-    from .printing import format_response
+    from .printing import format_response, shared_keys
 
     by_line: dict[int | None, list[Response]] = defaultdict(list)
     for r in responses:
         by_line[r.line].append(r)
     out: list[str] = []
-    n = 0
 
     def lines_of(r: Response) -> list[str]:
         value = r.value if form is None or r.verbatim else form(r.value)
@@ -67,6 +66,19 @@ def transcript_lines(
             tick()
         return lines
 
+    with shared_keys():
+        _interleave(source, by_line, lines_of, out)
+    return out
+
+
+def _interleave(
+    source: Sequence[str],
+    by_line: dict[int | None, list[Response]],
+    lines_of: Callable[[Response], list[str]],
+    out: list[str],
+) -> None:
+    """The numbered input lines, each followed by its responses' lines."""
+    n = 0
     for start, text in logical_lines(source):
         n += 1
         out.append(f"({n}) {text.strip()}")
@@ -79,4 +91,3 @@ def transcript_lines(
             for line in lines_of(r):
                 n += 1
                 out.append(f"-> ({n}) {line}")
-    return out
