@@ -17,6 +17,7 @@ equations only (no driver).  One description of the program
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path, PurePath
 from typing import Any
 
@@ -82,11 +83,62 @@ def write_programs(
     written: list[Path] = []
     errors: list[str] = []
     jobs = ws.numerics.jobs if jobs is None else jobs
+    described: list[Program] = []
     with progress.task("writing programs", len(jobs)) as task:
         for job in jobs:
-            _write_one(job, lang, source, directory, written, errors, task)
+            _write_one(job, lang, source, directory, written, errors, task, described)
             task.advance()
     return written, errors
+
+
+#: what a job's program is made of: two jobs alike in all these (a script's
+#: ``CODE Dynamics() x.m`` and ``CODE Dynamics() x.c``) describe one program
+_DESCRIBED_BY = (
+    "kind",
+    "stem",
+    "source",
+    "eqs_name",
+    "sweep",
+    "digits",
+    "options",
+    "unit_system",
+    "variables",
+    "unknowns",
+    "names",
+    "entries",
+    "initials",
+    "encoded",
+    "declared",
+    "outputs",
+    "inputs",
+    "rhs",
+    "zero",
+    "eqs",
+)
+
+
+def _twin(job: Job, described: list[Program]) -> Program | None:
+    """The program already described for a job alike (see
+    :data:`_DESCRIBED_BY`), made this job's; None if there is none."""
+    for program in described:
+        other = program.job
+        try:
+            alike = all(
+                _same(getattr(job, f), getattr(other, f)) for f in _DESCRIBED_BY
+            )
+        except Exception:  # noqa: BLE001 - values that do not compare: not alike
+            alike = False
+        if alike:
+            return dataclasses.replace(program, job=job)
+    return None
+
+
+def _same(a: Any, b: Any) -> bool:
+    if a is b:
+        return True
+    if type(a) is not type(b):
+        return False
+    return bool(a == b)
 
 
 def _write_one(
@@ -97,13 +149,18 @@ def _write_one(
     written: list[Path],
     errors: list[str],
     task: progress.Task,
+    described: list[Program],
 ) -> None:
-    """Write one job's program and ``.in`` (see :func:`write_programs`)."""
+    """Write one job's program and ``.in`` (see :func:`write_programs`);
+    ``described`` keeps the programs described so far."""
     try:
         name = PurePath(target_file(job, lang)).name
         static = job.kind in ("ALGEBRAIC", "NONLINEAR")
         task.doing(f"{name} (forming the equations)")
-        program = (describe_static if static else describe)(job, source)
+        program = _twin(job, described)
+        if program is None:
+            program = (describe_static if static else describe)(job, source)
+            described.append(program)
         task.doing(f"{name} (printing)")
         text = program_source(program, name)
     except (NumericsError, backends.BackendError) as exc:

@@ -36,6 +36,7 @@ back to ``lambdify``.  ``AL2PY_BACKEND`` sets the default for a process.
 from __future__ import annotations
 
 import ctypes
+import functools
 import hashlib
 import math
 import os
@@ -321,13 +322,27 @@ def needed(
     """The intermediates that ``exprs`` use, in order."""
     want: set[Any] = set()
     for e in exprs:
-        want |= sp.sympify(e).free_symbols
+        want |= free_symbols_of(e)
     keep = []
     for sym, expr in reversed(list(intermediates)):
         if sym in want:
             keep.append((sym, expr))
-            want |= sp.sympify(expr).free_symbols
+            want |= free_symbols_of(expr)
     return keep[::-1]
+
+
+def free_symbols_of(expr: Any) -> frozenset:
+    """``sympify(expr).free_symbols``, remembered: writing a program asks it
+    of the same intermediates and equations again and again (sympy walks the
+    whole expression each time)."""
+    if not isinstance(expr, sp.Basic):
+        return frozenset(sp.sympify(expr).free_symbols)
+    return _free_symbols(expr)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _free_symbols(expr: Any) -> frozenset:
+    return frozenset(expr.free_symbols)
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
@@ -586,6 +601,9 @@ class CPrinter(C99CodePrinter):
 
     _print_Dummy = _print_Symbol
 
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        return unevaluated_re(self, expr)
+
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
         # sympy's (StrPrinter) computes the precedence twice, and finds a
         # symbol's by walking its class's bases: a fifth of printing time
@@ -639,6 +657,11 @@ for _attr in dir(CPrinter):
 _PRECEDENCE: dict[type, int] = {}
 
 
+def precedence_of(item: Any) -> int:
+    """sympy's ``precedence(item)``, kept per class where it can be."""
+    return _precedence(item)
+
+
 def _precedence(item: Any) -> int:
     """sympy's ``precedence``, kept per class where it depends on the class
     alone (not for numbers, products and the like, whose sign matters)."""
@@ -651,6 +674,15 @@ def _precedence(item: Any) -> int:
         ):
             _PRECEDENCE[cls] = found
     return found
+
+
+def unevaluated_re(printer: Any, expr: Any) -> Any:
+    """sympy's ``CodePrinter._handle_UnevaluatedExpr`` (``re(...)`` of an
+    ``UnevaluatedExpr``), which rebuilds the whole expression, only for an
+    expression with an ``re`` in it (a tenth of printing a large model)."""
+    if isinstance(expr, sp.Basic) and not expr.has(sp.re):
+        return expr
+    return type(printer).__mro__[1]._handle_UnevaluatedExpr(printer, expr)
 
 
 def c_expression(expr: Any, printer: CPrinter) -> str:
