@@ -622,14 +622,21 @@ class Workspace(Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
+        # printed once: ``python model.py`` prints it and saves it (``.all``)
+        key = (tuple(lines), len(self.responses))
+        memo = self.__dict__.get("_transcript")
+        if memo is not None and memo[0] == key:
+            return list(memo[1])
         with progress.task("printing the transcript", unit="responses") as task:
             task.doing("naming intermediates")
             shown = self._with_intermediates(self.responses)
             task.doing("")
             task.update(0, len(shown))
-            return transcript_lines(
+            out = transcript_lines(
                 lines, shown, self.model.displayed, tick=task.advance
             )
+        self.__dict__["_transcript"] = (key, out)
+        return list(out)
 
     def _with_intermediates(self, responses: list[Response]) -> list[Response]:
         """Responses given while AutoZ was ON show intermediates by name, each
