@@ -21,12 +21,9 @@ from pathlib import Path
 
 import pytest
 import sympy
+from conftest import GOLDEN, ROOT, SHARED
 
 from al2py import cli
-
-ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared" / "tutorial"
-GOLDEN = ROOT / "tests" / "golden" / "cases"
 
 SEED = 20240611
 N_CASES = 300

@@ -10,9 +10,9 @@ line): never a Python traceback.
 
 By default a representative subset of :data:`N_DEFAULT` mutants runs (about a
 minute on two cores).  The full acceptance run of :data:`N_FULL` mutants is
-marked ``slow`` and runs when ``AL2PY_FUZZ_FULL=1`` is set::
+in the full tier::
 
-    AL2PY_FUZZ_FULL=1 .venv/bin/python -m pytest -m slow tests/test_reliability_fuzz.py
+    make test-full        # or: .venv/bin/python -m pytest --full tests/test_reliability_fuzz.py
 """
 
 from __future__ import annotations
@@ -189,10 +189,7 @@ def test_generated_modules_survive_mutants(tmp_path, monkeypatch):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(
-    os.environ.get("AL2PY_FUZZ_FULL") != "1",
-    reason="the 500-mutant run takes several minutes; set AL2PY_FUZZ_FULL=1",
-)
+@pytest.mark.full  # the 500-mutant run takes several minutes
 def test_generated_modules_survive_500_mutants(tmp_path, monkeypatch):
     monkeypatch.delenv("AUTOLEVPATH", raising=False)
     outcomes = _fuzz(N_FULL, tmp_path)
