@@ -43,7 +43,7 @@ from typing import Any, TextIO
 
 from .safety import echo_above
 
-__all__ = ["AFTER", "ImportWatch", "Task", "echo", "is_terminal", "task"]
+__all__ = ["AFTER", "ImportWatch", "Steps", "Task", "echo", "is_terminal", "task"]
 
 #: seconds of waiting before the progress line appears
 #: (``AL2PY_PROGRESS_AFTER=0`` shows it at once: tests, demonstrations)
@@ -253,6 +253,29 @@ def task(
     (``total`` steps, counted by :meth:`Task.advance`) on standard error
     when it is a terminal, once the task has taken :data:`AFTER` seconds."""
     return Task(what, total, unit=unit, stream=stream)
+
+
+class Steps(Task):
+    """A :class:`Task` counted in steps (a sweep's points, a linearization's
+    columns), shown as ``WHAT: done/total (pct%), seconds``.
+
+    >>> import io
+    >>> with Steps("sweeping AMAT", 3, stream=io.StringIO()) as steps:
+    ...     steps.advance(3)
+    >>> steps.done
+    3
+    """
+
+    def __init__(self, what: str, total: int, stream: TextIO | None = None) -> None:
+        super().__init__(what, total, stream=stream)
+
+    def line(self) -> str:
+        text = f"{self.what[:50]}: {self.done}/{self.total}"
+        if self.total:
+            text += f" ({min(100, 100 * self.done // self.total)}%)"
+        if self.step:
+            text += f": {self.step}"
+        return f"{text[: WIDTH - 8]}, {time.perf_counter() - self._t0:.0f} s"
 
 
 def echo(text: str, stream: TextIO | None = None) -> None:

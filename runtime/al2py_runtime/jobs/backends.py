@@ -204,7 +204,8 @@ def choose(requested: str | None = None) -> str:
 _SAID: set[str] = set()
 
 
-def _say_once(line: str) -> None:
+def say_once(line: str) -> None:
+    """Print ``al2py: note: line`` on stderr, once per process."""
     if line not in _SAID:
         _SAID.add(line)
         print(f"al2py: note: {line}", file=sys.stderr)
@@ -245,7 +246,7 @@ def compile_dynamics(spec: DynamicsSpec, backend: str | None = None) -> Compiled
             continue
         if candidate == "lambdify" and reasons:
             compiled.note = "using the lambdify backend (slower): " + "; ".join(reasons)
-            _say_once(compiled.note)
+            say_once(compiled.note)
         return compiled
     raise BackendError("; ".join(reasons))  # pragma: no cover - lambdify works
 
@@ -1279,11 +1280,8 @@ def _raise(code: int, t: float) -> None:
     raise ValueError(NOT_FINITE)
 
 
-def _build_c(spec: DynamicsSpec) -> Compiled:
-    import time
-
-    start = time.perf_counter()
-    path, hit = build_stream(c_model_stream(spec))
+def load_library(path: Path) -> Any:
+    """The compiled model at ``path`` (``ctypes``), its functions typed."""
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:
@@ -1299,6 +1297,15 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
         fn.restype = ctypes.c_int
     lib.al_advance.argtypes = [ctypes.c_double] * 4 + [ctypes.c_void_p] * 4
     lib.al_advance.restype = ctypes.c_int
+    return lib
+
+
+def _build_c(spec: DynamicsSpec) -> Compiled:
+    import time
+
+    start = time.perf_counter()
+    path, hit = build_stream(c_model_stream(spec))
+    lib = load_library(path)
     ny = len(spec.states)
     nout = sum(map(len, spec.outputs))
     rows = [len(r) for r in spec.outputs]

@@ -82,6 +82,8 @@ class Numerics:
     def __init__(self, ws: Any) -> None:
         self._ws = ws
         self._numerics = _NumericsState()
+        #: compiled quantities (:meth:`compiled_quantity`)
+        self._compiled: dict[tuple, tuple[Any, Any]] = {}
 
     # ------------------------------------------------------------ recording
 
@@ -445,20 +447,170 @@ class Numerics:
         )
 
     def evaluate_name(
-        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+        self,
+        name: str,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        zero_missing: bool | None = None,
+        backend: str | None = None,
+        **more: Any,
     ) -> Any:
         """The named quantity as a float (or numpy array for a matrix).
 
         Every Input value (given in the Input's units), the ``values`` given
         here (also in the Input's units; names without an Input are in the
         unit system's units, radians for angles) and every named intermediate
-        are substituted.  Time is TINITIAL unless ``T`` is given."""
-        from .run import evaluate_with_inputs
+        are substituted.  Time is TINITIAL unless ``T`` is given.
+
+        The quantity is compiled on the first call (:mod:`.quantities`), so
+        later calls cost microseconds.  Any value may be a numpy array: the
+        values broadcast together and the result has their shape in front
+        (``evaluate_name("AMAT", U6=speeds)``: one matrix per speed).  A
+        Specified quantity nobody gives is 0 (noted once on stderr), as in
+        a run; a constant or variable without a value stops with its name
+        unless ``zero_missing``.  ``backend``: see
+        :func:`.quantities.build_kernel`."""
+        from .quantities import evaluate_compiled
 
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        return evaluate_with_inputs(job, self._ws.value(name), name, merged)
+        value = self._ws.value(name)
+        if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(job, value, name, merged)
+        plan = self.compiled_quantity(name, merged, backend, job)
+
+        def exact(point: Mapping[str, Any]) -> Any:
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(job, value, name, point)
+
+        return evaluate_compiled(job, plan, merged, exact, zero_missing)
+
+    def sweep(
+        self,
+        name: str | None = None,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        executor: Any = None,
+        job: str | None = None,
+        backend: str | None = None,
+        zero_missing: bool | None = None,
+        chunksize: int | None = None,
+        origin: tuple[str, str | None] | None = None,
+        **given: Any,
+    ) -> Any:
+        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once),
+        or without a name of the ``CODE`` job (``job`` chooses it as for
+        :meth:`run`), over the grid that the 1-D arrays among the values
+        span (several: their product); scalars are fixed.  Values are given
+        as for :meth:`evaluate_name` (a quantity) or :meth:`run` (a job).
+
+        ``executor``: ``None`` (in this process), any
+        ``concurrent.futures.Executor``, or ``"dask"`` (the Dask client of
+        this process); the work goes out in chunks of ``chunksize`` points.
+        ``origin`` is the module's ``(__name__, __file__)``, which a job
+        sweep's workers import (a module's ``sweep()`` passes it)."""
+        from .sweep import sweep_job, sweep_quantity
+
+        merged = dict(values or {})
+        merged.update(given)
+        if name is None:
+            chosen = self.job(job)
+            index = next(i for i, j in enumerate(self._numerics.jobs) if j is chosen)
+            return sweep_job(
+                chosen,
+                index,
+                merged,
+                origin=origin,
+                executor=executor,
+                backend=backend,
+                zero_missing=zero_missing,
+                chunksize=chunksize,
+            )
+        if job is not None:
+            raise NumericsError("sweep() takes a quantity's name or job=..., not both")
+        snapshot = self._make_job("ALGEBRAIC", line=None)
+        value = self._ws.value(name)
+        if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
+            raise NumericsError(
+                f"{name} is not a scalar or matrix; it cannot be evaluated"
+            )
+        plan = self.compiled_quantity(name, merged, backend, snapshot)
+
+        def exact(point: Mapping[str, Any]) -> Any:
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(snapshot, value, name, point)
+
+        return sweep_quantity(
+            snapshot,
+            plan,
+            merged,
+            exact,
+            executor=executor,
+            zero_missing=zero_missing,
+            chunksize=chunksize,
+        )
+
+    def linearize(
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        job: str | None = None,
+        inputs: Any = None,
+        symbolic: bool = False,
+        zero_missing: bool | None = None,
+        **overrides: Any,
+    ) -> Any:
+        """The ``CODE`` Dynamics/ODE job's equations of motion linearized
+        about the point its Inputs and the values given here make (as for
+        :meth:`run`): a :class:`.linearize.Linearization` with ``A``, ``B``
+        and the names of the states and inputs (the Specified quantities
+        with no equation, or the names in ``inputs``).  ``symbolic=True``
+        keeps the constants as symbols (sympy matrices)."""
+        from .linearize import linearize_job
+
+        merged = dict(values or {})
+        merged.update(overrides)
+        return linearize_job(
+            self.job(job),
+            merged,
+            inputs=inputs,
+            symbolic=symbolic,
+            zero_missing=zero_missing,
+        )
+
+    def compiled_quantity(
+        self,
+        name: str,
+        given: Mapping[str, Any] = {},  # noqa: B006 - read only
+        backend: str | None = None,
+        job: Job | None = None,
+    ) -> Any:
+        """The named quantity compiled for values of the names in ``given``
+        (a :class:`.quantities.CompiledQuantity`), built once and kept."""
+        from .quantities import compile_quantity, quantity_key, split_given
+        from .run import input_values
+
+        job = job if job is not None else self._make_job("ALGEBRAIC", line=None)
+        value = self._ws.value(name)
+        settable, free = split_given(job, given)
+        _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
+        key = quantity_key(name, free, frozenset(keep), backend)
+        cache = self._compiled
+        found = cache.get(key)
+        if found is None or found[0] is not value:
+            plan = compile_quantity(
+                job, value, name, frozenset(free), frozenset(keep), backend
+            )
+            cache[key] = found = (value, plan)
+        return found[1]
 
 
 def _as_number(value: Any) -> Any:

@@ -269,6 +269,38 @@ def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
     return expr.func(*args)
 
 
+@dataclass
+class NumericEntries:
+    """Expressions made numeric (:func:`numeric_entries`): of ``time`` and
+    the ``dummies`` standing for ``params`` (the objects, in argument
+    order), with ``intermediates`` (``(dummy, definition)``, in order)."""
+
+    time: Any
+    params: list[Any]
+    dummies: list[Any]
+    exprs: list[Any]
+    intermediates: list[tuple[Any, Any]]
+
+
+def numeric_entries(
+    job: Job, entries: Iterable[Any], drop: Iterable[Any], what: str
+) -> NumericEntries:
+    """``entries`` with the job's right-hand sides substituted (but those of
+    the objects in ``drop``) as expressions of argument dummies: every
+    constant, variable, specified quantity and derivative left is a
+    parameter (what ``evaluate()`` compiles; see :mod:`.quantities`)."""
+    table = _without(job.rhs, drop)
+    slots = _Slots(job)
+    exprs = [slots.numeric(_resolve(sp.sympify(e), table), what) for e in entries]
+    return NumericEntries(
+        slots.time,
+        list(slots.params),
+        list(slots.param_dummies),
+        exprs,
+        list(slots.intermediates),
+    )
+
+
 def label_of(obj: Any, names: Mapping[Any, str]) -> str:
     base, k = _base(obj)
     name = names.get(base)
@@ -668,8 +700,37 @@ def _compile_dynamics(job: Job, formed: _Dynamics, backend: str | None) -> _Dyna
     return dataclasses.replace(formed, compiled=compiled)
 
 
-def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
-    """The job's states, parameters and equations as sympy expressions."""
+@dataclass
+class DynamicsLayout:
+    """What a Dynamics/ODE job integrates, before any numbers: the
+    right-hand sides in force (``table``), each integrated variable as
+    ``(obj, order, implicit)`` in declaration order (``implicit``: its
+    highest derivative is found from ``zero``), the states (the variables
+    and their lower derivatives), the derivatives solved from ``zero``, and
+    ``zero`` itself with the right-hand sides substituted (None without
+    such derivatives)."""
+
+    table: dict
+    layout: list[tuple[Any, int, bool]]
+    state_objs: list[Any]
+    ud_objs: list[Any]
+    zero: Any
+
+    def rates(self) -> list[Any]:
+        """The derivative of each state, in state order: a state itself
+        (``Q'`` of a second-order ``Q``), an acceleration solved from
+        ``zero`` (its object), or the expression of an explicit equation."""
+        out: list[Any] = []
+        for obj, k, imp in self.layout:
+            out += [_deriv(obj, j + 1) for j in range(k - 1)]
+            top = _deriv(obj, k)
+            out.append(top if imp else _resolve(self.table[top], self.table))
+        return out
+
+
+def dynamics_layout(job: Job, keep: frozenset) -> DynamicsLayout:
+    """The states and equations of a Dynamics/ODE job (see
+    :class:`DynamicsLayout`)."""
     table = _without(job.rhs, keep)
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
@@ -716,6 +777,14 @@ def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
         )
     state_objs = [_deriv(obj, j) for obj, k, _i in layout for j in range(k)]
     ud_objs = [_deriv(obj, k) for obj, k, imp in layout if imp]
+    return DynamicsLayout(table, layout, state_objs, ud_objs, zero)
+
+
+def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
+    """The job's states, parameters and equations as sympy expressions."""
+    formed = dynamics_layout(job, keep)
+    table, layout, zero = formed.table, formed.layout, formed.zero
+    state_objs, ud_objs = formed.state_objs, formed.ud_objs
     slots = _Slots(job)
     ys = slots.add(state_objs, "y")
     uds = slots.add(ud_objs, "ud")
