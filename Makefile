@@ -8,10 +8,10 @@ ANTLR  := $(VENV)/bin/antlr4
 
 .PHONY: install bytecode run test test-full grammar bench lint clean
 
-$(VENV)/.installed: pyproject.toml runtime/pyproject.toml
+$(VENV)/.installed: pyproject.toml setup.py runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
-	$(PIP) install --quiet -e "./runtime[plot]"
+	$(PIP) install --quiet -e "./runtime[plot,dask]"
 	$(PIP) install --quiet -e ".[dev,plot,notebook]"
 	touch $@
 

@@ -35,7 +35,7 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 
 from typing import Any
 
-from .safety import AutolevRuntimeError
+from .safety import AutolevRuntimeError, MissingValueWarning
 from .version import __version__
 from .workspace import Response, Settings, Workspace, t
 
@@ -44,6 +44,7 @@ __all__ = [
     "Settings",
     "Response",
     "AutolevRuntimeError",
+    "MissingValueWarning",
     "read_table",
     "t",
     "__version__",

@@ -34,7 +34,21 @@ from pathlib import PurePath
 from types import FrameType, TracebackType
 from typing import Any
 
-__all__ = ["AutolevRuntimeError", "excepthook", "guard_methods", "register"]
+__all__ = [
+    "AutolevRuntimeError",
+    "MissingValueWarning",
+    "excepthook",
+    "guard_methods",
+    "register",
+]
+
+
+class MissingValueWarning(UserWarning):
+    """A value nobody gave was taken as 0, by al2py's one rule for missing
+    values (``al2py_runtime.jobs.run.missing_value_rule``): a Specified
+    quantity with no equation and no Input, a variable's initial value, or
+    (with ``zero_missing``) a constant.  ``python module.py`` prints the same
+    text as a ``note:`` line; ``result.notes`` keeps it."""
 
 
 class AutolevRuntimeError(ValueError):

@@ -78,7 +78,7 @@ class Workspace(Mapping):
         self.responses: list[Response] = []
         #: the script's names (:class:`~.names.table.NameTable`)
         self.table = NameTable()
-        self._saves: list[str] = []
+        self._saves: list[tuple[str, int | None]] = []  # (file, line)
         self._exit_line: int | None = None
         #: Quantities the script constrains to unit norm (the Euler parameters
         #: of ``Dircos``/``Angvel``/``Kindiffs(..., EULER, E1, E2, E3, E4)``):
@@ -607,9 +607,9 @@ class Workspace(Mapping):
 
     # ------------------------------------------------------------- files
 
-    def save(self, filename: str) -> None:
+    def save(self, filename: str, *, line: int | None = None) -> None:
         """``SAVE file.all``/``SAVE file.al``: written by ``python module.py``."""
-        self._saves.append(filename)
+        self._saves.append((filename, line))
 
     def exit(self, *, line: int | None = None) -> None:
         """``Exit``/``Quit``: the script ends here (the transcript stops too)."""
@@ -681,28 +681,45 @@ class Workspace(Mapping):
     def write_saved_files(self, source: Iterable[str], outdir: str = ".") -> list[str]:
         """Write the files named by ``SAVE`` into ``outdir`` under their base
         names (``Save ../x.all`` writes ``OUTDIR/x.all``), never overwriting an
-        existing ``.al`` file."""
-        from .safety import output_path
+        existing ``.al`` file.  A file the system refuses (a name too long,
+        a folder that cannot be made) stops with the ``Save`` statement's
+        line: :class:`~.safety.AutolevRuntimeError`."""
+        from .safety import AutolevRuntimeError, output_path
 
         written = []
         source = list(source)
-        for name in self._saves:
+        for name, line in self._saves:
             path = output_path(outdir, name)
             if path is None:
                 print(f"note: Save {name}: not a file name; nothing written")
                 continue
-            if name.lower().endswith(".all"):
-                text = "\n".join(self.transcript(source)) + "\n"
-            elif path.exists():
-                print(f"note: not overwriting existing {path}")
-                continue
-            else:
-                text = "\n".join(source) + "\n"
-            path.parent.mkdir(parents=True, exist_ok=True)
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(text)
+            try:
+                if name.lower().endswith(".all"):
+                    text = "\n".join(self.transcript(source)) + "\n"
+                elif path.exists():
+                    print(f"note: not overwriting existing {path}")
+                    continue
+                else:
+                    text = "\n".join(source) + "\n"
+                path.parent.mkdir(parents=True, exist_ok=True)
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+            except OSError as exc:
+                raise AutolevRuntimeError(
+                    f"Save {name}: cannot write {path}: {exc.strerror or exc}",
+                    self.filename,
+                    line,
+                    self._source_line(source, line),
+                ) from None
             written.append(str(path))
         return written
+
+    @staticmethod
+    def _source_line(source: list[str], line: int | None) -> str:
+        """Line ``line`` (1-based) of ``source``, or ""."""
+        if line is None or not 0 < line <= len(source):
+            return ""
+        return source[line - 1]
 
     # ------------------------------------------------ mathematical commands
 

@@ -465,7 +465,7 @@ class Generator:
         return out
 
     def stmt_FileCommand(self, stmt: ir.FileCommand) -> list[str]:
-        return [f"al.save({stmt.filename!r})"]
+        return [f"al.save({stmt.filename!r}, line={self._line})"]
 
     def stmt_ListCommand(self, stmt: ir.ListCommand) -> list[str]:
         if stmt.name == "ENCODE":

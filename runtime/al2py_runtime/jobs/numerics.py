@@ -30,6 +30,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import TYPE_CHECKING, Any
 
 import sympy as sp
@@ -46,6 +47,7 @@ from .records import (
     OutputSpec,
     job_stem,
     normalize_name,
+    output_stems,
 )
 from .units import UnitSystem, units_factor
 
@@ -207,9 +209,14 @@ class Numerics:
         ``Algebraic(eqs, x, y)`` and ``Algebraic() [PHI deg=0,360,1]``).
 
         Records the job; ``run()`` performs it.  ``file``'s stem names the
-        output files; its extension (.c, .m, .for, .f) is ignored."""
+        job and its output files (``STEM_2``, ``STEM_3``... when an earlier
+        job has that stem: :func:`~.records.output_stems`); its extension
+        (.c, .m, .for, .f) chooses the language of ``al2py code``."""
         job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
         job.options = tuple(str(w).upper() for w in options)
+        # a stem an earlier job has is named apart (STEM_2): no job writes
+        # another's output files
+        job.stem = output_stems([j.stem for j in self._numerics.jobs] + [job.stem])[-1]
         self._numerics.jobs.append(job)
         return job
 
@@ -379,41 +386,90 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
-        job: str | None = None,
+        job: str | int | None = None,
         **overrides: Any,
     ) -> Result:
-        """Perform the script's ``CODE`` job (the last one if there are several;
-        ``job`` names another by its file stem: ``run(job="WhippleDynamics")``).
+        """Perform one of the script's ``CODE`` jobs (see :meth:`job` for
+        which one without ``job``: the only job, else the only Dynamics/ODE
+        job, else an error listing the jobs; ``job="WhippleDynamics.c"``
+        names one by its file or file stem, ``job=2`` by its place).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.jobs.backends`.  A constant the job needs that no
-        Input gives stops it with the names; ``zero_missing=True`` uses 0."""
+        see :mod:`al2py_runtime.jobs.backends`.  Missing values follow
+        :func:`~.run.missing_value_rule`: a Specified quantity no equation
+        and no Input gives is 0, noted in ``result.notes`` and warned
+        (:class:`~al2py_runtime.MissingValueWarning`); a constant the job
+        needs that no Input gives stops it with its name and line, unless
+        ``zero_missing=True`` (then it is 0 and noted too)."""
         merged = dict(values or {})
         merged.update(overrides)
-        from .run import run_job
+        from .run import run_job, warn_notes
 
-        return run_job(
+        result = run_job(
             self.job(job), merged, backend=backend, zero_missing=zero_missing
         )
+        warn_notes(result.missing)
+        return result
 
-    def job(self, name: str | None = None) -> Job:
-        """The ``CODE`` job whose file stem (or file name) is ``name``, any
-        case; the last job when ``name`` is None."""
+    def job(self, name: str | int | None = None, *, dynamics: bool = False) -> Job:
+        """The ``CODE`` job called ``name``: its stem (the file's stem, named
+        apart as ``STEM_2`` when an earlier job has it), its file name (any
+        case; it must name one job), or its place among the CODE statements
+        (``1`` is the first).
+
+        Without ``name``, never a job the user probably did not mean: the
+        only job when there is one; else the only Dynamics/ODE job; else an
+        error that lists the jobs with their files and lines.  With
+        ``dynamics`` (:meth:`ode_function`) only Dynamics/ODE jobs count."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
+        moving = [j for j in jobs if j.kind in ("DYNAMICS", "ODE")]
         if name is None:
-            return jobs[-1]
-        key = str(name).upper()
-        for job in jobs:
-            if key in (job.stem.upper(), (job.filename or "").upper()):
-                return job
+            if len(moving) == 1:
+                return moving[0]
+            if len(jobs) == 1 and not dynamics:
+                return jobs[0]
+            if dynamics and not moving:
+                raise NumericsError(
+                    f"{self._ws.filename} has no CODE Dynamics or ODE job;"
+                    f" jobs: {_listing(jobs)}"
+                )
+            which = f", {len(moving)} of them Dynamics/ODE" if moving else ""
+            raise NumericsError(
+                f"{self._ws.filename} has {len(jobs)} CODE jobs{which}; choose"
+                f" one with job= (--job): {_listing(jobs)}"
+            )
+        if isinstance(name, int) and not isinstance(name, bool):
+            if 1 <= name <= len(jobs):
+                return jobs[name - 1]
+            found = []
+        else:
+            key = str(name).upper()
+            found = [
+                j
+                for j in jobs
+                if key
+                in (
+                    j.stem.upper(),
+                    (j.filename or "").upper(),
+                    PurePath((j.filename or "").replace("\\", "/")).name.upper(),
+                )
+            ]
+            if not found and key.isdigit() and 1 <= int(key) <= len(jobs):
+                found = [jobs[int(key) - 1]]
+        if len(found) == 1:
+            return found[0]
+        if found:
+            raise NumericsError(
+                f"{self._ws.filename}: {name!r} names {len(found)} CODE jobs; "
+                f"choose one with job=: {_listing(jobs)}"
+            )
         raise NumericsError(
-            f"{self._ws.filename} has no CODE job {name!r}; jobs: "
-            + ", ".join(j.stem for j in jobs)
+            f"{self._ws.filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
         )
 
     def document_run(self, run: Any) -> Any:
@@ -430,21 +486,30 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
-        job: str | None = None,
+        job: str | int | None = None,
         **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
-        """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
-        ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
-        UnitSystem's, SI by default; angles in radians).  Overrides are given
-        as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
-        the same function; ``backend`` and ``job`` as for :meth:`run`."""
+        """``(f, y0, names)``: a CODE Dynamics/ODE job's equations of motion
+        for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units
+        (the UnitSystem's, SI by default; angles in radians).  Without
+        ``job``, the script's only Dynamics/ODE job (else an error listing
+        the jobs; see :meth:`job`).  Overrides are given as for :meth:`run`,
+        in the Inputs' own units, and missing values follow the same rule.
+        ``run()`` integrates the same function; ``backend`` as for
+        :meth:`run`."""
         merged = dict(values or {})
         merged.update(overrides)
-        from .run import ode_function
+        from .run import ode_function, warn_notes
 
-        return ode_function(
-            self.job(job), merged, backend=backend, zero_missing=zero_missing
+        f, y0, names, notes = ode_function(
+            self.job(job, dynamics=True),
+            merged,
+            backend=backend,
+            zero_missing=zero_missing,
+            notes=True,
         )
+        warn_notes(notes)
+        return f, y0, names
 
     def evaluate_name(
         self,
@@ -611,6 +676,12 @@ class Numerics:
             )
             cache[key] = found = (value, plan)
         return found[1]
+
+
+def _listing(jobs: list[Job]) -> str:
+    """The jobs as messages list them: the name that picks each, with its
+    CODE statement's file and line."""
+    return ", ".join(f"{j.stem} ({j.where})" for j in jobs)
 
 
 def _as_number(value: Any) -> Any:

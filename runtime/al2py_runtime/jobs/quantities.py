@@ -343,11 +343,11 @@ def gather(
     ``free`` (other names, internal units), each possibly an array;
     broadcast together.
 
-    A value nobody gave follows the rule of a run: a Specified quantity
-    with no equation is 0 (noted), a constant stops with its name unless
-    ``zero_missing``, and a variable or derivative stops with its name
-    (``zero_missing``: 0, noted)."""
-    from .run import input_values
+    A value nobody gave follows the rule of a run,
+    :func:`~.run.missing_value_rule`: a Specified quantity, a variable or
+    a derivative with no equation is 0 (noted), a constant stops with its
+    name and line unless ``zero_missing`` (then 0, noted)."""
+    from .run import input_values, missing_value_rule
 
     arrays = {k: _as_array(k, v) for k, v in {**settable, **free}.items()}
     try:
@@ -385,22 +385,20 @@ def gather(
     zeros: list[str] = []
     missing: list[str] = []
     params = np.empty((size, len(plan.params)))
-    for j, (label, kind) in enumerate(zip(plan.params, plan.kinds, strict=True)):
+    for j, label in enumerate(plan.params):
         key = normalize_name(label)
         if key in columns:
             params[:, j] = np.broadcast_to(columns[key], shape).reshape(-1)
             continue
         params[:, j] = 0.0
-        if kind == "specified" or vals.zero_missing:
-            zeros.append(label)
+        zero, text = missing_value_rule(job, label, vals.zero_missing)
+        if zero:
+            zeros.append(text)
         else:
             missing.append(label)
     if missing:
         raise NumericsError(_missing_message(job, plan.name, missing))
-    notes = []
-    if zeros:
-        have = "has" if len(zeros) == 1 else "have"
-        notes.append(f"{', '.join(zeros)} {have} no value; using 0")
+    notes = list(dict.fromkeys(zeros))
     if "T" in columns:
         times = np.broadcast_to(columns["T"], shape).reshape(-1)
     else:
@@ -440,8 +438,9 @@ def evaluate_compiled(
     went wrong or gives the complex value)."""
     settable, free = split_given(job, given)
     points = gather(job, plan, settable, free, zero_missing)
-    for line in points.notes:
-        backends.say_once(f"evaluate {plan.name}: {line}")
+    from .run import warn_notes
+
+    warn_notes(points.notes)  # MissingValueWarning, as run() warns
     out = plan.kernel.table(points.times, points.params)
     return finish(plan, points, out, given, exact)
 
