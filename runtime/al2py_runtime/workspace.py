@@ -34,7 +34,7 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
-from . import algebra, matrices, walks
+from . import algebra, matrices, progress, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
 from .model.model import Model
@@ -643,11 +643,21 @@ class Workspace(Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [
-            r if r.verbatim else replace(r, value=self.model.displayed(r.value))
-            for r in self._with_intermediates(self.responses)
-        ]
-        return transcript_lines(lines, shown)
+        # printed once: ``python model.py`` prints it and saves it (``.all``)
+        key = (tuple(lines), len(self.responses))
+        memo = self.__dict__.get("_transcript")
+        if memo is not None and memo[0] == key:
+            return list(memo[1])
+        with progress.task("printing the transcript", unit="responses") as task:
+            task.doing("naming intermediates")
+            shown = self._with_intermediates(self.responses)
+            task.doing("")
+            task.update(0, len(shown))
+            out = transcript_lines(
+                lines, shown, self.model.displayed, tick=task.advance
+            )
+        self.__dict__["_transcript"] = (key, out)
+        return list(out)
 
     def _with_intermediates(self, responses: list[Response]) -> list[Response]:
         """Responses given while AutoZ was ON show intermediates by name, each

@@ -15,6 +15,7 @@ line and the exit status is 2 (the other files are written).
 from __future__ import annotations
 
 import argparse
+import linecache
 import sys
 import types
 from pathlib import Path
@@ -75,6 +76,13 @@ def main(argv: list[str]) -> int:
     code = convert(text, args.input).code
     module = types.ModuleType(path.stem)
     module.__file__ = str(path.with_suffix(".py"))
+    # the module's text, for the progress line and errors naming .al lines
+    linecache.cache[module.__file__] = (
+        len(code),
+        None,
+        code.splitlines(keepends=True),
+        module.__file__,
+    )
     try:
         exec(compile(code, module.__file__, "exec"), module.__dict__)  # noqa: S102
     except Exception as exc:  # noqa: BLE001 - the model itself fails

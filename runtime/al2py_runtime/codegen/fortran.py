@@ -12,6 +12,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.fortran import FCodePrinter
 
+from ..jobs import backends
 from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
@@ -27,6 +28,9 @@ class _Printer(FCodePrinter):
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        return backends.unevaluated_re(self, expr)
 
 
 def _d(x: float) -> str:

@@ -11,6 +11,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.octave import OctaveCodePrinter
 
+from ..jobs import backends
 from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
@@ -23,6 +24,20 @@ def _num(x: float) -> str:
 
 def _str(text: str) -> str:
     return "'" + text.replace("'", "''") + "'"
+
+
+class _Printer(OctaveCodePrinter):
+    """sympy's MATLAB printer, with its precedences kept per class as the C
+    printer keeps them, and no rebuilding of expressions without ``re``."""
+
+    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
+        prec = backends.precedence_of(item)
+        if prec < level or (not strict and prec <= level):
+            return f"({self._print(item)})"
+        return self._print(item)
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        return backends.unevaluated_re(self, expr)
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:
@@ -59,7 +74,7 @@ def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
 
 
 def equations(program: Program, name: str) -> list[str]:
-    printer = OctaveCodePrinter({"strict": True})
+    printer = _Printer({"strict": True})
     n, ny, nout = program.nu, program.ny, program.nout
     lines = [
         f"function [dy, ud, ierr] = {name}(T, y, p)",

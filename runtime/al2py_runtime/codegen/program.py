@@ -367,7 +367,7 @@ def one_based_target(a: Assign) -> str:
 def _used(entries: list[Entry], block: Iterable[Assign]) -> list[tuple[int, Entry]]:
     names: set[str] = set()
     for a in block:
-        names |= {s.name for s in sp.sympify(a.expr).free_symbols}
+        names |= {s.name for s in backends.free_symbols_of(a.expr)}
     return [(i, e) for i, e in enumerate(entries) if e.ident in names]
 
 
@@ -614,9 +614,9 @@ def iter_names(prefix: str, taken: set[str]) -> Any:
 def _free(exprs: list[Any], inter: list[tuple[Any, Any]]) -> set[Any]:
     out: set[Any] = set()
     for e in exprs:
-        out |= e.free_symbols
+        out |= backends.free_symbols_of(e)
     for _s, body in backends.needed(inter, exprs):
-        out |= sp.sympify(body).free_symbols
+        out |= backends.free_symbols_of(body)
     return out
 
 
