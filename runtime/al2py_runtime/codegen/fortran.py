@@ -30,7 +30,9 @@ class _Printer(FCodePrinter):
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
 
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        return backends.unevaluated_re(self, expr)
+        if backends.without_re(expr):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _d(x: float) -> str:

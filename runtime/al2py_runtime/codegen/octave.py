@@ -37,7 +37,9 @@ class _Printer(OctaveCodePrinter):
         return self._print(item)
 
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        return backends.unevaluated_re(self, expr)
+        if backends.without_re(expr):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:

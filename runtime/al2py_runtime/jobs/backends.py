@@ -608,7 +608,7 @@ class CPrinter(C99CodePrinter):
     _print_Dummy = _print_Symbol
 
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        return unevaluated_re(self, expr)
+        return expr if without_re(expr) else super()._handle_UnevaluatedExpr(expr)
 
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
         # sympy's (StrPrinter) computes the precedence twice, and finds a
@@ -682,13 +682,13 @@ def _precedence(item: Any) -> int:
     return found
 
 
-def unevaluated_re(printer: Any, expr: Any) -> Any:
-    """sympy's ``CodePrinter._handle_UnevaluatedExpr`` (``re(...)`` of an
-    ``UnevaluatedExpr``), which rebuilds the whole expression, only for an
-    expression with an ``re`` in it (a tenth of printing a large model)."""
-    if isinstance(expr, sp.Basic) and not expr.has(sp.re):
-        return expr
-    return type(printer).__mro__[1]._handle_UnevaluatedExpr(printer, expr)
+def without_re(expr: Any) -> bool:
+    """Whether ``expr`` holds no ``re``: then sympy's
+    ``CodePrinter._handle_UnevaluatedExpr`` (``re(...)`` of an
+    ``UnevaluatedExpr``), which rebuilds the whole expression, would give it
+    back unchanged, and a printer skips it (a tenth of printing a large
+    model)."""
+    return isinstance(expr, sp.Basic) and not expr.has(sp.re)
 
 
 def c_expression(expr: Any, printer: CPrinter) -> str:
