@@ -32,6 +32,8 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
+from .lines import split_lines
+
 __all__ = [
     "Script",
     "ResponseFailure",
@@ -229,7 +231,7 @@ def _check_in_this_process(
     try:
         conversion = convert(text, display, script_dir=source.parent)
     except AutolevError as exc:
-        result.message = with_source_line(exc, display, text.splitlines()).format()
+        result.message = with_source_line(exc, display, split_lines(text)).format()
         return result
     except InternalError as exc:
         result.message = f"al2py: internal error: {exc} (please report this bug)"
@@ -624,7 +626,7 @@ def format_table(results: Sequence[FileResult]) -> str:
     for line, r in zip(lines[1:], results, strict=True):
         out.append(line)
         if r.status == ERRORED and r.message:
-            out.append(" " * (sum(widths) + 6) + r.message.splitlines()[0])
+            out.append(" " * (sum(widths) + 6) + split_lines(r.message)[0])
     return "\n".join(out)
 
 
@@ -634,7 +636,7 @@ def format_file_report(result: FileResult) -> str:
     A file whose CODE job failed still reports its compared responses."""
     lines = []
     if result.status == ERRORED:
-        body = "\n".join("  " + line for line in result.message.splitlines())
+        body = "\n".join("  " + line for line in split_lines(result.message))
         lines.append(f"{result.path}: errored\n{body}")
         if not (result.transcript and (result.total or result.not_compared)):
             return lines[0]
@@ -759,7 +761,7 @@ def junit_xml(
                 case,
                 "error",
                 {
-                    "message": r.message.splitlines()[0] if r.message else "error",
+                    "message": split_lines(r.message)[0] if r.message else "error",
                     "type": "ConversionError",
                 },
             )
@@ -813,7 +815,7 @@ def convert_file(script: Script, outdir: Path) -> ConvertResult:
         target.parent.mkdir(parents=True, exist_ok=True)
         write_atomically(target, conversion.code)
     except AutolevError as exc:
-        exc = with_source_line(exc, script.display, text.splitlines())
+        exc = with_source_line(exc, script.display, split_lines(text))
         return ConvertResult(script.display, shown, False, exc.format())
     except InternalError as exc:
         message = f"al2py: internal error: {exc} (please report this bug)"

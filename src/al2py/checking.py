@@ -29,6 +29,7 @@ from sympy.physics.vector import Dyadic, Vector
 
 from . import ir
 from .errors import AutolevError
+from .lines import split_lines
 from .parser import parse
 
 __all__ = [
@@ -70,7 +71,7 @@ def parse_transcript(text: str) -> list[TranscriptEntry]:
     visibly unfinished (an open bracket, or a trailing operator) continues on
     the following unnumbered lines, as Autolev wraps long responses."""
     out: list[TranscriptEntry] = []
-    for lineno, line in enumerate(text.splitlines(), start=1):
+    for lineno, line in enumerate(split_lines(text), start=1):
         m = _RESPONSE.match(line)
         if m:
             out.append(

@@ -23,6 +23,7 @@ from pathlib import Path
 
 from . import __version__, batch
 from .errors import AutolevError, InternalError
+from .lines import split_lines
 
 __all__ = ["main"]
 
@@ -376,7 +377,7 @@ def _convert_file(source: str, output: str | None) -> int:
     try:
         result = convert(text, filename)
     except AutolevError as exc:
-        raise with_source_line(exc, filename, text.splitlines()) from None
+        raise with_source_line(exc, filename, split_lines(text)) from None
     except RecursionError:
         raise too_deep(filename, text) from None
     if output is None or output == "-":

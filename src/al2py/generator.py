@@ -28,6 +28,7 @@ from .analysis import (
     walk_expr,
 )
 from .errors import InternalError, SemanticError
+from .lines import OTHER_BREAKS, split_lines
 from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
@@ -823,13 +824,18 @@ def _number_code(text: str) -> str:
     return text
 
 
+_NOT_BREAKS = str.maketrans(dict.fromkeys(OTHER_BREAKS, " "))
+
+
 def comment_lines(text: str, prefix: str = "") -> list[str]:
     """``text`` as ``#`` comment lines, wrapped, never able to end the comment.
 
     ``prefix`` marks the first line (``al> `` for echoed Autolev statements)."""
     out = []
-    for raw in text.splitlines() or [""]:
-        raw = raw.replace("\r", " ").expandtabs(4).rstrip()
+    for raw in split_lines(text) or [""]:
+        # a form feed, NEL or U+2028 is not a line break in Autolev: shown
+        # as a blank, it can neither end the comment nor hide text
+        raw = raw.translate(_NOT_BREAKS).expandtabs(4).rstrip()
         chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
         for k, c in enumerate(chunks):
             lead = prefix if k == 0 else " " * len(prefix)

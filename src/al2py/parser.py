@@ -35,6 +35,7 @@ from ._antlr.AutolevLexer import AutolevLexer
 from ._antlr.AutolevParser import AutolevParser
 from ._antlr.AutolevVisitor import AutolevVisitor
 from .errors import AutolevError, InternalError, ParseError, ParseErrorList
+from .lines import split_lines
 
 __all__ = ["parse", "parse_partial", "span_text", "join_continuations"]
 
@@ -104,7 +105,7 @@ def parse_partial(
     text: str, filename: str = "<input>"
 ) -> tuple[ir.Script, list[AutolevError]]:
     """The statements that parsed, and the syntax errors of the others."""
-    lines = tuple(text.splitlines())
+    lines = tuple(split_lines(text))
     try:
         return _parse(lines, filename)
     except AutolevError as exc:

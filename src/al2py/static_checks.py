@@ -23,6 +23,7 @@ from pathlib import Path
 
 from . import ir
 from .errors import AutolevError, ParseError, SemanticError
+from .lines import split_lines
 
 __all__ = [
     "check_text",
@@ -44,7 +45,8 @@ def check_text(text: str, filename: str) -> None:
         return
     line = text.count("\n", 0, m.start()) + 1
     col = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
-    line_text = text.splitlines()[line - 1] if text.splitlines() else ""
+    lines = split_lines(text)
+    line_text = lines[line - 1] if lines else ""
     raise ParseError(
         "a NUL character (\\x00) cannot appear in a script, not even in a comment",
         ir.Span(filename, line, col),
@@ -243,7 +245,7 @@ def unknown_call_message(name: str) -> str:
 
 def too_deep(filename: str, text: str) -> ParseError:
     """The located error for input nested too deeply to convert."""
-    lines = text.splitlines()
+    lines = split_lines(text)
     span = deepest_nesting(filename, lines)
     return ParseError(
         "this expression is nested too deeply to convert",
@@ -283,9 +285,9 @@ def with_source_line(
         try:
             path = Path(exc.span.file)
             if path.is_file() and path.stat().st_size < 50_000_000:
-                text_lines = path.read_text(
-                    encoding="utf-8", errors="replace"
-                ).splitlines()
+                text_lines = split_lines(
+                    path.read_text(encoding="utf-8", errors="replace")
+                )
         except (OSError, ValueError):
             text_lines = None
     if text_lines and 0 < line <= len(text_lines):
