@@ -186,6 +186,9 @@ class FileResult:
     #: responses of the transcript not compared: definitions of Autolev's
     #: AutoZ intermediates (``Z12 = ...``), expanded where they are used
     not_compared: int = 0
+    #: what a check did not cover (a transcript that ends early or is cut
+    #: off mid-line): shown below the file's row even when it passed
+    notes: list[str] = field(default_factory=list)
 
     @property
     def responses(self) -> str:
@@ -266,12 +269,19 @@ def _check_in_this_process(
         return result
     # A failed CODE job does not stop the comparison: the symbolic responses
     # are compared and reported beside the job's failure.
-    from .checking import check_responses, parse_transcript
+    from .checking import check_responses, parse_transcript, transcript_verdict
 
     try:
-        entries = parse_transcript(
-            transcript.read_text(encoding="utf-8", errors="replace")
+        reference = transcript.read_text(encoding="utf-8", errors="replace")
+        entries = parse_transcript(reference)
+        problem, result.notes = transcript_verdict(
+            reference, entries, module.al, getattr(module, "AL_SOURCE", ())
         )
+        if problem:  # never "passed 0/0": the reference cannot be used
+            result.message = "\n".join(
+                m for m in (job_failure, f"{shown_transcript}: error: {problem}") if m
+            )
+            return result
         every = check_responses(entries, module.al)
     except Exception as exc:  # noqa: BLE001
         result.message = "\n".join(
@@ -568,7 +578,8 @@ def _outcome(result: FileResult) -> str:
         ran = " and ran its CODE job" if result.jobs_run else ""
         return f"passed (no transcript to compare: converted, imported{ran})"
     if result.transcript:
-        return f"{result.status} ({result.responses} responses{_z_note(result)})"
+        notes = "".join(f"; note: {n}" for n in result.notes)
+        return f"{result.status} ({result.responses} responses{_z_note(result)}{notes})"
     return result.status
 
 
@@ -627,6 +638,8 @@ def format_table(results: Sequence[FileResult]) -> str:
         out.append(line)
         if r.status == ERRORED and r.message:
             out.append(" " * (sum(widths) + 6) + split_lines(r.message)[0])
+        for note in r.notes:
+            out.append(" " * (sum(widths) + 6) + f"note: {note}")
     return "\n".join(out)
 
 
@@ -677,6 +690,15 @@ def summary_line(results: Sequence[FileResult], seconds: float | None = None) ->
         text += (
             f"\nresponses: {compared} compared, {matching} matching, "
             f"{skipped} not compared (AutoZ intermediate definitions)"
+        )
+    noted = [r.path for r in results if r.notes]
+    if noted:
+        shown = ", ".join(noted[:5]) + (
+            f" and {len(noted) - 5} more" if len(noted) > 5 else ""
+        )
+        text += (
+            f"\n{len(noted)} transcript{'s' if len(noted) != 1 else ''} not "
+            f"compared in full (see the notes): {shown}"
         )
     bare = [r.path for r in results if r.status == PASSED and not r.transcript]
     if bare:
