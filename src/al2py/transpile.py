@@ -114,10 +114,11 @@ def convert(
         )
     try:
         stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
-        try:
-            static_checks.check_statements(stmts)
-        except AutolevError as exc:
-            errors = errors + errors_of(exc)
+        for check in (static_checks.check_statements, static_checks.check_orientations):
+            try:
+                check(stmts)
+            except AutolevError as exc:
+                errors = errors + errors_of(exc)
         facts = Analysis(stmts).run(stmts, poisoned=_names_on_lines(script, errors))
     except AutolevError as exc:
         errors = errors + errors_of(exc)
