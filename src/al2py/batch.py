@@ -221,7 +221,7 @@ def _check_in_this_process(
     import importlib.util
 
     from .errors import AutolevError, InternalError
-    from .static_checks import too_deep, with_source_line
+    from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert
 
     shown_transcript = display_path(transcript) if transcript else None
@@ -241,6 +241,9 @@ def _check_in_this_process(
         return result
     except RecursionError:
         result.message = too_deep(display, text).format()
+        return result
+    except MemoryError:
+        result.message = too_large(display, text).format()
         return result
     except Exception as exc:  # noqa: BLE001 - a verdict, never a traceback
         result.message = f"al2py: internal error: {_unexpected(exc)}"
@@ -825,7 +828,7 @@ def output_path(script: Script, outdir: Path, module: str | None = None) -> Path
 def convert_file(script: Script, outdir: Path) -> ConvertResult:
     """Convert one script into its place under ``outdir`` (never raises)."""
     from .errors import AutolevError, InternalError
-    from .static_checks import too_deep, with_source_line
+    from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert
 
     target = output_path(script, outdir)
@@ -844,6 +847,9 @@ def convert_file(script: Script, outdir: Path) -> ConvertResult:
         return ConvertResult(script.display, shown, False, message)
     except RecursionError:
         message = too_deep(script.display, text).format()
+        return ConvertResult(script.display, shown, False, message)
+    except MemoryError:
+        message = too_large(script.display, text).format()
         return ConvertResult(script.display, shown, False, message)
     except OSError as exc:
         message = f"al2py: error: {exc.filename or script.display}: {exc.strerror}"

@@ -25,7 +25,6 @@ from .analysis import (
     Symbol,
     input_names,
     int_literal,
-    walk_expr,
 )
 from .errors import InternalError, SemanticError
 from .lines import OTHER_BREAKS, split_lines
@@ -624,13 +623,12 @@ class Generator:
         return f"{left} {op} {right}", prec
 
     def _exact(self, node: ir.Expr) -> str | None:
-        """``Integer(n)`` for a pure-number left operand, so Python keeps exactness."""
-        if not any(
-            isinstance(n, ir.Name | ir.Call | ir.Element) for n in walk_expr(node)
-        ):
-            if isinstance(node, ir.Number) and node.is_integer:
-                self.imports.use("sympy", "Integer")
-                return f"Integer({int(node.text)})"
+        """``Integer(n)`` for a pure-number left operand, so Python keeps
+        exactness (a number: nothing below it to walk, so a long ``A/B/C``
+        chain costs linear time)."""
+        if isinstance(node, ir.Number) and node.is_integer:
+            self.imports.use("sympy", "Integer")
+            return f"Integer({int(node.text)})"
         return None
 
     def expr_MatrixLit(self, node: ir.MatrixLit) -> tuple[str, int]:

@@ -31,6 +31,8 @@ __all__ = [
     "check_orientations",
     "unknown_call_message",
     "with_source_line",
+    "too_deep",
+    "too_large",
 ]
 
 # ------------------------------------------------------------------ text
@@ -356,19 +358,39 @@ def too_deep(filename: str, text: str) -> ParseError:
 
 
 def deepest_nesting(filename: str, lines: Iterable[str]) -> ir.Span:
-    """Where the brackets of ``lines`` nest deepest (the place to blame when
-    an expression is nested too deeply to convert)."""
+    """Where the brackets of ``lines`` nest deepest, or where the longest
+    run of operators starts (``----A``, ``A^A^A``), whichever is deeper: the
+    place to blame when an expression is nested too deeply to convert."""
     depth = best = 0
     where = (1, 1)
     for number, line in enumerate(lines, start=1):
-        for col, char in enumerate(line.split("%", 1)[0], start=1):
+        code = line.split("%", 1)[0]
+        for col, char in enumerate(code, start=1):
             if char in "([{":
                 depth += 1
                 if depth > best:
                     best, where = depth, (number, col)
             elif char in ")]}":
                 depth = max(0, depth - 1)
+        operators = sum(code.count(c) for c in "-+*/^")
+        if operators > best:
+            first = min((code.find(c) for c in "-+*/^" if c in code), default=0)
+            best, where = operators, (number, first + 1)
     return ir.Span(filename, *where)
+
+
+def too_large(filename: str, text: str) -> ParseError:
+    """The located error for input that exhausted memory while converting:
+    blamed on its longest line (the statement most likely to be at fault)."""
+    lines = split_lines(text)
+    if not lines:
+        return ParseError("out of memory converting this file", ir.Span(filename, 1, 1))
+    number = max(range(len(lines)), key=lambda i: (len(lines[i]), -i)) + 1
+    return ParseError(
+        "out of memory converting this file (its longest statement is here)",
+        ir.Span(filename, number, 1),
+        line_text=lines[number - 1],
+    )
 
 
 def with_source_line(
