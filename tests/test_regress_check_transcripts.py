@@ -114,3 +114,13 @@ def test_verdict_notes_numbers_that_go_back():
     source = ["X = 1", "X = 1"]
     error, notes = transcript_verdict(text, parse_transcript(text), _Ws([1, 2]), source)
     assert error == "" and len(notes) == 1 and "numbers go back" in notes[0]
+
+
+def test_verdict_notes_response_lines_without_a_number():
+    from al2py.checking import parse_transcript, transcript_verdict
+
+    text = "(1) X = 1\n-> (2) X = 1\n(3) Y = 2\n-> (4x) Y = 2\n"
+    source = ["X = 1", "Y = 2"]
+    error, notes = transcript_verdict(text, parse_transcript(text), _Ws([1, 2]), source)
+    assert error == "" and len(notes) == 1, notes
+    assert "1 response line" in notes[0] and "line 4" in notes[0]

@@ -146,6 +146,17 @@ def transcript_verdict(
                 f"(({before.number}) then ({after.number})): it may be damaged"
             )
             break
+    unread = [
+        n
+        for n, line in enumerate(split_lines(text), start=1)
+        if line.lstrip().startswith("->") and not _RESPONSE.match(line)
+    ]
+    if unread:
+        notes.append(
+            f"{len(unread)} response line{'s' if len(unread) != 1 else ''} of the "
+            f"transcript (the first at its line {unread[0]}) without a readable "
+            "'(n)' number: not compared"
+        )
     early = _ends_early(entries, ours, source)
     if early:
         notes.append(early)
