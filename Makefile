@@ -6,13 +6,13 @@ PIP    := $(PY) -m pip
 EXAMPLE ?= examples/tutor6.al
 ANTLR  := $(VENV)/bin/antlr4
 
-.PHONY: install bytecode run test grammar bench lint clean
+.PHONY: install bytecode run test test-full grammar bench lint clean
 
 $(VENV)/.installed: pyproject.toml runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
 	$(PIP) install --quiet -e "./runtime[plot]"
-	$(PIP) install --quiet -e ".[dev,plot]"
+	$(PIP) install --quiet -e ".[dev,plot,notebook]"
 	touch $@
 
 install: $(VENV)/.installed
@@ -28,8 +28,15 @@ run: bytecode
 	$(VENV)/bin/al2py $(EXAMPLE) -o out/$(basename $(notdir $(EXAMPLE))).py
 	cd out && ../$(PY) $(basename $(notdir $(EXAMPLE))).py
 
+# The default tier: about 10 minutes on 2 cores.
 test: bytecode
 	$(PY) -m pytest -q
+
+# The full tier adds the tests marked 'full' (pytest --full): the 500-mutant
+# fuzz run, the full-size determinism runs, sympy's own derivation of the
+# converted Whipple bicycle and every published Autolev program pair.
+test-full: bytecode
+	$(PY) -m pytest -q --full
 
 lint: install
 	$(VENV)/bin/ruff check src runtime tests

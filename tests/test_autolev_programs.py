@@ -7,7 +7,6 @@ absent.  Our own small script checks the finding they led to."""
 from __future__ import annotations
 
 import importlib.util
-import os
 import shutil
 import sys
 from pathlib import Path
@@ -281,10 +280,7 @@ SAME_LANGUAGE_SLOW = [
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(
-    os.environ.get("AL2PY_JUDGE_ALL") != "1",
-    reason="every published pair takes 30+ minutes: set AL2PY_JUDGE_ALL=1",
-)
+@pytest.mark.full  # every published pair takes 30+ minutes
 @pytest.mark.parametrize(
     "name, same_language",
     [(n, False) for n in SLOW]

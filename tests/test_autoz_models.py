@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import has_intermediates
-from conftest import load_module
+from conftest import SHARED, load_module
 from sympy.core.function import AppliedUndef
 
 from al2py import convert
@@ -144,7 +144,7 @@ def test_autolev_names_are_written_out(disc):
     assert np.allclose(got, want, rtol=1e-10)
 
 
-TUTORIAL = Path(__file__).resolve().parents[2] / "shared" / "tutorial"
+TUTORIAL = SHARED
 KANE_SCRIPTS = sorted(
     p.stem
     for p in TUTORIAL.glob("tutor*.al")

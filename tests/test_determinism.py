@@ -10,8 +10,7 @@ nodes of ``X{a:b}``.
 
 ``make test`` runs small versions.  The full sizes of issue 23 (tutor8 2,000
 times and the range script 500 times in one process, tutor8 in 200 fresh
-processes) run with ``AL2PY_DETERMINISM_FULL=1 pytest -m slow
-tests/test_determinism.py``.
+processes) run in the full tier: ``make test-full`` (``pytest --full``).
 """
 
 from __future__ import annotations
@@ -24,11 +23,9 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import ROOT, SHARED
+from conftest import ROOT, SHARED, full_tier
 
 from al2py import convert, ir
-
-FULL = os.environ.get("AL2PY_DETERMINISM_FULL") == "1"
 
 
 def range_script(solves: int = 20) -> str:
@@ -116,7 +113,7 @@ def test_no_table_is_keyed_by_id():
 
 def test_tutor8_is_one_module_in_one_process():
     path = SHARED / "tutor8.al"
-    modules = distinct_modules(path.read_text(), str(path), 2000 if FULL else 40)
+    modules = distinct_modules(path.read_text(), str(path), 2000 if full_tier() else 40)
     assert len(modules) == 1
     code = convert(path.read_text(), str(path)).code
     # the unknowns of Solve(PERTURB, dU{1:2}') are dU1' and dU2', in order
@@ -125,7 +122,7 @@ def test_tutor8_is_one_module_in_one_process():
 
 def test_range_script_is_one_module_in_one_process():
     text = range_script()
-    modules = distinct_modules(text, "ranges.al", 500 if FULL else 40)
+    modules = distinct_modules(text, "ranges.al", 500 if full_tier() else 40)
     assert len(modules) == 1
     code = convert(text, "ranges.al").code
     for k in range(1, 21):
@@ -166,7 +163,7 @@ def test_fresh_processes_and_hash_seeds_give_the_same_bytes(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(not FULL, reason="full size: set AL2PY_DETERMINISM_FULL=1")
+@pytest.mark.full
 def test_tutor8_in_200_fresh_processes():
     path = SHARED / "tutor8.al"
     here = digest(convert(path.read_text(), str(path)).code)
@@ -177,10 +174,10 @@ def test_tutor8_in_200_fresh_processes():
 
 
 def test_convert_folder_of_copies_equals_each_alone(tmp_path):
-    """40 copies (FULL; 4 otherwise) each of tutor8, tutor9 and the range
+    """40 copies (full tier; 4 otherwise) each of tutor8, tutor9 and the range
     script, converted as one folder by the CLI, give the modules that
     converting each alone gives."""
-    copies = 40 if FULL else 4
+    copies = 40 if full_tier() else 4
     src, out = tmp_path / "src", tmp_path / "out"
     scripts = {
         "tutor8.al": (SHARED / "tutor8.al").read_text(),

@@ -24,12 +24,9 @@ from pathlib import Path
 
 import pytest
 import sympy
+from conftest import GOLDEN, ROOT, SHARED
 
 from al2py import cli
-
-ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared" / "tutorial"
-GOLDEN = ROOT / "tests" / "golden" / "cases"
 
 SEED = 20240611
 N_CASES = 300
@@ -95,13 +92,6 @@ def _seed_files() -> list[Path]:
 
 SEEDS = _seed_files()
 
-
-def fuzz_full() -> bool:
-    """Whether the large tiers run (the only place the switch is read)."""
-    return os.environ.get("AL2PY_FUZZ_FULL") == "1"
-
-
-FULL_REASON = "the large fuzz tier takes many minutes; set AL2PY_FUZZ_FULL=1"
 
 # ------------------------------------------------ the public corpus (issue 32)
 
@@ -361,7 +351,7 @@ def test_mutated_corpus_script_converts_or_stops_located(index, tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(not fuzz_full(), reason=FULL_REASON)
+@pytest.mark.full  # 200 corpus conversions take many minutes
 @pytest.mark.parametrize("index", range(N_CORPUS, N_CORPUS + N_CORPUS_FULL))
 def test_mutated_corpus_script_full(index, tmp_path):
     _convert_corpus_mutant(index, tmp_path)

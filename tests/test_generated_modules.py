@@ -15,13 +15,11 @@ from pathlib import Path
 
 import black
 import pytest
+from conftest import GOLDEN, SHARED
 
 from al2py import convert
 from al2py.errors import AutolevError
 
-ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared" / "tutorial"
-GOLDEN = ROOT / "tests" / "golden" / "cases"
 RUFF = Path(sys.executable).with_name("ruff")
 
 SCRIPTS = sorted(SHARED.glob("*.al")) + sorted(GOLDEN.glob("*.al"))

@@ -3,17 +3,14 @@
 from __future__ import annotations
 
 import os
-from pathlib import Path
 
 import pytest
+from conftest import SHARED as TUTORIAL
 
 from al2py import ir
 from al2py.errors import MacroError
 from al2py.macros import MacroExpansion, expand_macro, find_macro
 from al2py.parser import parse, span_text
-
-ROOT = Path(__file__).resolve().parents[1]
-TUTORIAL = ROOT.parent / "shared" / "tutorial"
 
 
 def expand(text, args, *, newtonian="N", degrees=False, path="m.a"):

@@ -9,13 +9,12 @@ from pathlib import Path
 
 import pytest
 import sympy
+from conftest import SHARED as TUTORIAL
 
 from al2py import ir
 from al2py.errors import ParseError
 from al2py.parser import parse, span_text
 
-ROOT = Path(__file__).resolve().parents[1]
-TUTORIAL = ROOT.parent / "shared" / "tutorial"
 SYMPY_EXAMPLES = Path(sympy.__file__).parent / "parsing" / "autolev" / "test-examples"
 
 TUTORIAL_FILES = sorted(TUTORIAL.glob("*.al"))

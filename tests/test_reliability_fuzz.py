@@ -17,10 +17,9 @@ traceback.
 
 By default a representative subset of :data:`N_DEFAULT` tutorial and
 :data:`N_CORPUS_DEFAULT` corpus mutants runs (a minute or two on two cores).
-The full acceptance run is marked ``slow`` and runs when
-``AL2PY_FUZZ_FULL=1`` is set (read by ``test_fuzz.fuzz_full``)::
+The full acceptance runs are in the full tier::
 
-    AL2PY_FUZZ_FULL=1 .venv/bin/python -m pytest -m slow tests/test_reliability_fuzz.py
+    make test-full        # or: .venv/bin/python -m pytest --full tests/test_reliability_fuzz.py
 """
 
 from __future__ import annotations
@@ -38,15 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from test_fuzz import (
-    FULL_REASON,
-    SEEDS,
-    CorpusScript,
-    _workdir,
-    capped,
-    corpus_mutant,
-    fuzz_full,
-)
+from test_fuzz import SEEDS, CorpusScript, _workdir, capped, corpus_mutant
 from test_fuzz import mutated_case as syntax_mutant
 
 from al2py import cli
@@ -258,7 +249,7 @@ def test_generated_modules_survive_corpus_mutants(tmp_path, monkeypatch):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(not fuzz_full(), reason=FULL_REASON)
+@pytest.mark.full  # 150 corpus mutants take many minutes
 def test_generated_modules_survive_many_corpus_mutants(tmp_path, monkeypatch):
     monkeypatch.delenv("AUTOLEVPATH", raising=False)
     outcomes = _fuzz_corpus(N_CORPUS_FULL, tmp_path)
@@ -277,7 +268,7 @@ def test_generated_modules_survive_mutants(tmp_path, monkeypatch):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(not fuzz_full(), reason=FULL_REASON)
+@pytest.mark.full  # the 500-mutant run takes several minutes
 def test_generated_modules_survive_500_mutants(tmp_path, monkeypatch):
     monkeypatch.delenv("AUTOLEVPATH", raising=False)
     outcomes = _fuzz(N_FULL, tmp_path)

@@ -455,11 +455,15 @@ def test_unknown_and_unsupported_commands(tmp_path):
     # a longer spelling of a built-in is that built-in, as Autolev read
     # ``inverse(GTran)`` as Inv (docs/semantics.md, "Spellings")
     with pytest.raises(AutolevError) as info:
-        convert("Newtonian N\nAnimate(N)\n", "x.al")
+        convert("Newtonian N\nClear(N)\n", "x.al")
     assert info.value.message.startswith(
-        "the Autolev command 'Animate' is not supported by al2py"
+        "the Autolev command 'Clear' is not supported by al2py"
     )
     assert "unknown" not in info.value.message
+    # Animate is translated (issue 34); its arguments are checked
+    with pytest.raises(AutolevError) as info:
+        convert("Newtonian N\nAnimate(N)\n", "x.al")
+    assert info.value.message == "Animate takes at least 3 arguments, not 1"
 
 
 def test_long_integration_shows_progress_on_a_terminal(monkeypatch, capsys):

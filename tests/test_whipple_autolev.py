@@ -7,7 +7,6 @@ Autolev did (issue 10), and its own linearization gives Table 2."""
 from __future__ import annotations
 
 import importlib.util
-import os
 from pathlib import Path
 
 import numpy as np
@@ -133,12 +132,7 @@ def test_whipple_script_fastkane_eigenvalues(whipple_module):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(
-    os.environ.get("AL2PY_KANE_FULL") != "1",
-    reason="sympy's own derivation of the converted Whipple takes 3-7 minutes"
-    " (the engine is proven on the Whipple model by test_whipple.py): set"
-    " AL2PY_KANE_FULL=1",
-)
+@pytest.mark.full  # sympy's own derivation of the converted Whipple takes 3-7 minutes
 def test_whipple_kanes_method_equals_sympys_derivation(whipple_module):
     """The exported model (``kanes_method()``, derived by FastKane, written
     out) equals sympy's own ``KanesMethod`` derivation on the same inputs

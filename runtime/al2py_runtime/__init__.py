@@ -33,6 +33,8 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 [0, 2]]), Matrix([[U(t), -2*G]]))
 """
 
+from typing import Any
+
 from .safety import AutolevRuntimeError
 from .version import __version__
 from .workspace import Response, Settings, Workspace, t
@@ -42,6 +44,16 @@ __all__ = [
     "Settings",
     "Response",
     "AutolevRuntimeError",
+    "read_table",
     "t",
     "__version__",
 ]
+
+
+def read_table(path: Any) -> Any:
+    """An output table (``STEM.1``, written by a job or by one of Autolev's
+    own programs) read back as a ``Result``: ``read_table("tutor6.1")["QA"]``
+    (see :mod:`al2py_runtime.jobs.reading`; numpy loads only now)."""
+    from .jobs.reading import read_table as read
+
+    return read(path)

@@ -5,7 +5,7 @@ by ``SAVE``, then performs the script's ``CODE`` job(s) with the ``Input``
 values (changed by ``--set NAME=VALUE`` in the Input's units and ``--tfinal``),
 writes the output files ``STEM.1``, ``STEM.2``, ... into ``--outdir``, prints
 solved values of Nonlinear/Algebraic jobs and, with ``--plot``, writes one PNG
-per output file.  Errors print one line and return 2.
+per output file; ``--animate`` writes ``STEM.html``, the model in motion.  Errors print one line and return 2.
 """
 
 from __future__ import annotations
@@ -121,6 +121,13 @@ def build_parser(
     )
     parser.add_argument(
         "--plot", action="store_true", help="also write STEM.n.png plots"
+    )
+    parser.add_argument(
+        "--animate",
+        action="store_true",
+        help="also write STEM.html, an animation of the model that plays in a"
+        " browser (Dynamics/ODE jobs; what the script's Animate names, else"
+        " every body)",
     )
     parser.add_argument(
         "--backend",
@@ -294,8 +301,22 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
                         file=sys.stderr,
                     )
                     continue
-                for path in result.plot(outdir):
+                for path in result.save_plots(outdir):
                     print(f"Wrote {path}")
+            if args.animate:
+                if result.motion is None:
+                    print(
+                        f"note: no animation: {job.where} has no time history"
+                        " (animations need CODE Dynamics or ODE)",
+                        file=sys.stderr,
+                    )
+                    continue
+                try:
+                    path = result.animate(outdir / f"{result.stem}.html").path
+                except NumericsError as exc:  # nothing to place: say so
+                    print(f"note: no animation: {exc}", file=sys.stderr)
+                    continue
+                print(f"Wrote {path}")
         except BrokenPipeError:
             raise
         except (AutolevRuntimeError, NumericsError) as exc:

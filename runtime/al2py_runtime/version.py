@@ -1,3 +1,3 @@
 """The runtime's version (one place: ``__init__`` and generated programs read it)."""
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"

@@ -13,7 +13,20 @@ from __future__ import annotations
 
 from typing import Any
 
-__version__ = "0.1.0"
+
+def _version() -> str:
+    """The installed distribution's version.  It is written once, in
+    ``runtime/al2py_runtime/version.py``; ``setup.py`` gives al2py the same
+    version and pins al2py-runtime to it."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("al2py")
+    except PackageNotFoundError:  # a source tree on sys.path, not installed
+        return version("al2py-runtime")
+
+
+__version__ = _version()
 
 __all__ = ["convert", "Conversion", "AutolevError", "InternalError", "__version__"]
 

@@ -1224,6 +1224,8 @@ class Analysis:
                         "Gravity(v>, A, B, ...) names bodies or particles after the vector",
                         a.span,
                     )
+        if b.name == "ANIMATE":
+            self._check_animate(call)
         if b.name == "SIMPROT":
             axis = call.args[2]
             value = int_literal(axis)
@@ -1233,6 +1235,25 @@ class Analysis:
                     "Simprot's axis is 1, 2, 3, -1, -2, -3 or a vector", axis.span
                 )
         return self._facts()
+
+    def _check_animate(self, call: ir.Call) -> None:
+        """``Animate(N, O, A, B, ...)``: the Newtonian frame, a point, then
+        the frames and bodies to animate (names)."""
+        first, point, *shown = call.args
+        checks = [
+            (first, self._is_newtonian, "a Newtonian frame"),
+            (point, self.is_point, "a point"),
+        ] + [(a, self.is_frame, "a frame or body") for a in shown]
+        for arg, test, what in checks:
+            plain = isinstance(arg, ir.Name) and not arg.primes and not arg.rank
+            if not plain or not test(arg.name):
+                raise SemanticError(
+                    f"Animate(N, O, A, ...) expects {what} here", arg.span
+                )
+
+    def _is_newtonian(self, name: str) -> bool:
+        sym = self.table.physical(name)
+        return sym is not None and sym.kind == Decl.NEWTONIAN
 
     def _enter_FileCommand(self, stmt: ir.FileCommand) -> StmtFacts:
         if stmt.command != "SAVE":

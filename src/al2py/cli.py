@@ -237,16 +237,33 @@ def _guarded_inner(run) -> int:
         if isinstance(exc, ModuleNotFoundError) and (exc.name or "").startswith(
             "al2py_runtime"
         ):
-            print(
-                "al2py: error: the al2py-runtime distribution is not installed "
-                "(al2py depends on it): pip install al2py-runtime",
-                file=sys.stderr,
-            )
+            print(f"al2py: error: {_runtime_missing(exc.name or '')}", file=sys.stderr)
             return EXIT_BUG
         from al2py_runtime.safety import unexpected
 
         print(f"al2py: internal error: {unexpected(exc)}", file=sys.stderr)
         return EXIT_BUG
+
+
+def _runtime_missing(name: str) -> str:
+    """What is wrong when the runtime cannot be imported: not installed at
+    all, or installed without one of its modules (a broken install)."""
+    import importlib.util
+
+    try:
+        found = importlib.util.find_spec("al2py_runtime") is not None
+    except (ImportError, ValueError):
+        found = False
+    if name == "al2py_runtime" or not found:
+        return (
+            "the al2py-runtime distribution is not installed (al2py depends "
+            "on it): pip install al2py-runtime (from a checkout: pip install ./runtime)"
+        )
+    return (
+        f"the installed al2py-runtime is incomplete: its module {name} is "
+        "missing; reinstall it (pip install --force-reinstall al2py-runtime, "
+        "from a checkout: pip install --force-reinstall ./runtime)"
+    )
 
 
 def _quiet_broken_pipe() -> None:

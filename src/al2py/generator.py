@@ -407,6 +407,8 @@ class Generator:
             code = self._args(tuple(args), b)
         if b.responds:  # it prints a response: say which line
             code += f"{', ' if code else ''}line={self._line}"
+        if b.name == "ANIMATE":  # a code command, recorded for the CODE jobs
+            return f"al.numerics.animate({code}, line={self._line})"
         if b.name == "KANE":
             # Kane rewrites ZERO (the independent speeds' rows, the forces
             # solved for): the script's name for it follows.

@@ -313,7 +313,6 @@ def static_shape(
 
 #: Autolev commands of the tutorial that al2py does not translate
 UNSUPPORTED_COMMANDS = {
-    "ANIMATE": "it drives Autolev's animation program",
     "CLEAR": "a script cannot restart its own workspace",
     "HELP": "it is interactive",
     "LIST": "it is interactive",

@@ -536,7 +536,7 @@ def test_write_files_with_digits_of_code_statement(tmp_path):
 def test_plot(tmp_path):
     pytest.importorskip("matplotlib")
     result = odexy().numerics.run()
-    (path,) = result.plot(tmp_path)
+    (path,) = result.save_plots(tmp_path)
     assert path.name == "odexy.1.png"
     assert path.read_bytes()[:4] == b"\x89PNG"
 
@@ -568,7 +568,9 @@ def test_plot_without_matplotlib(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
     monkeypatch.setitem(sys.modules, "matplotlib.backends.backend_agg", None)
     with pytest.raises(NumericsError, match="pip install"):
-        result.plot(tmp_path)
+        result.save_plots(tmp_path)
+    with pytest.raises(NumericsError, match="pip install"):
+        result.plot()
 
 
 # --------------------------------------------------------------------- main

@@ -473,14 +473,12 @@ def test_a_run_parameter_goes_straight_to_the_job(tmp_path, monkeypatch):
     assert result["X"][-1] == pytest.approx(math.exp(-3), rel=1e-4)
 
 
-def test_the_readme_layout_names_every_runtime_module():
-    """The README's layout table names each folder and module of the runtime
-    (with the one concept it owns)."""
+def test_the_layout_names_every_runtime_module():
+    """The layout table (docs/layout.md) names each folder and module of the
+    runtime (with the one concept it owns)."""
     import re
 
-    readme = (ROOT.parents[1] / "README.md").read_text(encoding="utf-8")
-    layout = readme[readme.index("## Layout") :]
-    layout = layout[: layout.index("\n## ", 1)]
+    layout = (ROOT.parents[1] / "docs" / "layout.md").read_text(encoding="utf-8")
     words = set(re.findall(r"\w+", layout))
     missing = [
         str(path.relative_to(ROOT))

@@ -344,15 +344,20 @@ def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
 
 
 def lambdify_job(
-    args: list[Any], exprs: list[Any], intermediates: Sequence[tuple[Any, Any]] = ()
+    args: list[Any],
+    exprs: list[Any],
+    intermediates: Sequence[tuple[Any, Any]] = (),
+    numbers: str = "math",
 ) -> Callable[..., list[float]]:
     """A scalar function ``f(*args) -> list of floats`` (math module, CSE);
-    ``intermediates`` (``(symbol, expr)`` in order) are computed first."""
+    ``intermediates`` (``(symbol, expr)`` in order) are computed first.
+    With ``numbers="numpy"`` the function takes arrays and computes every
+    element at once (:func:`~al2py_runtime.jobs.run.evaluate_rows`)."""
     if not exprs:
         return lambda *a: []
     args, exprs, intermediates = _undummied(args, list(exprs), intermediates)
     return sp.lambdify(
-        args, exprs, modules=[numeric_namespace(), "math"], cse=cse_with(intermediates)
+        args, exprs, modules=[numeric_namespace(), numbers], cse=cse_with(intermediates)
     )
 
 

@@ -38,6 +38,7 @@ from sympy.physics.vector import Vector
 from ..names.printing import element_labels
 from .records import (
     KINDS,
+    AnimateSpec,
     InputValue,
     Job,
     NumericsError,
@@ -68,6 +69,8 @@ class _NumericsState:
     #: ``Units T=S, X=m``: the unit of a name in later Inputs and Outputs
     #: that give none.
     units_of: dict[str, str] = field(default_factory=dict)
+    #: the latest ``Animate(N, O, A, B)``
+    animate: AnimateSpec | None = None
 
 
 class Numerics:
@@ -160,6 +163,15 @@ class Numerics:
             if key not in self._numerics.encoded:
                 self._numerics.encoded.append(key)
 
+    def animate(
+        self, newtonian: Any, point: Any, *frames: Any, line: int | None = None
+    ) -> None:
+        """``Animate(N, O, A, B)``: the CODE jobs that follow animate frames
+        and bodies ``A``, ``B`` in the Newtonian frame ``N``, positions
+        measured from the point ``O`` (``result.animate()``; see
+        :mod:`al2py_runtime.jobs.scene`)."""
+        self._numerics.animate = AnimateSpec(newtonian, point, tuple(frames), line)
+
     def _encoded_spec(self, line: int | None) -> tuple[OutputSpec | None, dict]:
         """The encoded quantities as one (unwritten) output table."""
         items: list[OutputItem] = []
@@ -237,6 +249,8 @@ class Numerics:
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         encoded, shapes = self._encoded_spec(line)
+        from .scene import Geometry
+
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
@@ -269,6 +283,8 @@ class Numerics:
                 for name, e in self._ws.table.entries.items()
                 if e.line is not None
             },
+            animate=state.animate,
+            geometry=Geometry.of(self._ws.model),
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
                 for name, e in self._ws.table.entries.items()

@@ -23,6 +23,7 @@ __all__ = [
     "InputValue",
     "OutputItem",
     "OutputSpec",
+    "AnimateSpec",
     "Job",
 ]
 
@@ -85,6 +86,18 @@ class OutputSpec:
     encoded: bool = False
 
 
+@dataclass(frozen=True)
+class AnimateSpec:
+    """``Animate(N, O, A, B)``: the Newtonian frame, a point, and the frames
+    and bodies the CODE jobs that follow animate (see
+    :mod:`al2py_runtime.jobs.scene`)."""
+
+    newtonian: Any
+    point: Any
+    frames: tuple[Any, ...]
+    line: int | None = None
+
+
 @dataclass
 class Job:
     """Everything a ``CODE`` statement needs, captured when it is recorded."""
@@ -116,6 +129,11 @@ class Job:
     declared: dict[str, int] = field(default_factory=dict)
     #: words after the file name (``CODE Dynamics() f.c, NOSUBS``), upper case
     options: tuple[str, ...] = ()
+    #: the latest ``Animate`` before the CODE statement (None: none)
+    animate: AnimateSpec | None = None
+    #: the model's positions, frames and mass centers at the CODE statement
+    #: (a :class:`~al2py_runtime.jobs.scene.Geometry`), for animations
+    geometry: Any = field(default=None, repr=False)
     cache: dict = field(default_factory=dict, repr=False)
 
     @property

@@ -109,14 +109,19 @@ class ResultViews(_Views):
                 columns[name] = values
         return pandas.DataFrame(columns)
 
-    def __repr__(self) -> str:
+    def title(self) -> str:
+        """What the result is of: ``CODE Dynamics tutor6``, or the file a
+        table was read from."""
+        source = self.source  # type: ignore[attr-defined]
+        if source is not None:
+            return f"table {source}"
         kind = self.kind.title()  # type: ignore[attr-defined]
+        return f"CODE {kind} {self.stem}"  # type: ignore[attr-defined]
+
+    def __repr__(self) -> str:
         tables = self.tables  # type: ignore[attr-defined]
         rows = len(tables[0]) if tables else len(next(iter(self.values()), []))
-        return (
-            f"<Result of CODE {kind} {self.stem}: {rows} rows of "  # type: ignore[attr-defined]
-            f"{_names(self.keys())}>"
-        )
+        return f"<Result of {self.title()}: {rows} rows of " f"{_names(self.keys())}>"
 
 
 def _number(value: Any) -> float | None:

@@ -53,6 +53,8 @@ __all__ = [
     "INTEGRATION_DEFAULTS",
     "run_job",
     "ode_function",
+    "Motion",
+    "evaluate_rows",
     "check_overrides",
     "normalize_name",
 ]
@@ -915,7 +917,99 @@ def _run_dynamics(
     for j, name in enumerate(c.state_names):
         unit = vals.units.get(name)
         states[name] = ys[j] / job.unit_system.to_internal(unit)
-    return _result(job, tables, vals, states=states, nfev=nfev)
+    motion = Motion(job, vals, frozenset(keep), list(c.state_objs), times, ys)
+    return _result(job, tables, vals, states=states, nfev=nfev, motion=motion)
+
+
+@dataclass
+class Motion:
+    """What a Dynamics/ODE run keeps for computing other quantities at its
+    output rows (:func:`evaluate_rows`; ``result.animate()``): the job, the
+    values it ran with, and its states at every row, in internal units."""
+
+    job: Job
+    values: _Values
+    keep: frozenset
+    states: list[Any]  # the state objects, in the order of ``ys``' rows
+    times: np.ndarray
+    ys: np.ndarray  # (states, rows)
+
+    @property
+    def rows(self) -> int:
+        return len(self.times)
+
+    def evaluate(self, exprs: Sequence[Any], what: str = "Animate") -> np.ndarray:
+        """:func:`evaluate_rows` of this run."""
+        return evaluate_rows(self, exprs, what)
+
+    def animation(
+        self,
+        *,
+        frames: Sequence[Any] | None = None,
+        points: Sequence[Any] = (),
+        origin: Any = None,
+        newtonian: Any = None,
+        time_unit: str | None = None,
+        **options: Any,
+    ) -> Any:
+        """An :class:`~al2py_runtime.jobs.animation.Animation` of this run:
+        the job's ``Animate`` statement, changed by the arguments given
+        (:func:`~al2py_runtime.jobs.scene.layout`)."""
+        from .animation import Animation
+        from .scene import layout, scene
+
+        spec = self.job.animate
+        if spec is not None:
+            newtonian = spec.newtonian if newtonian is None else newtonian
+            origin = spec.point if origin is None else origin
+            frames = spec.frames if frames is None else frames
+        shown = layout(self.job.geometry, newtonian, origin, frames, points)
+        units = (time_unit, self.job.unit_system.names[1])
+        options.setdefault("title", self.job.stem)
+        return Animation(scene(self.evaluate, shown, self.times, units), **options)
+
+
+def evaluate_rows(motion: Motion, exprs: Sequence[Any], what: str) -> np.ndarray:
+    """``exprs`` (sympy expressions of the script's names) at every output
+    row of a run: an array ``(rows, len(exprs))`` in internal units.
+
+    The expressions are resolved and numbered as the job's own outputs are
+    (:class:`_Slots`: the job's right-hand sides, its parameters and the
+    named intermediates they need, each computed once), then one
+    ``lambdify``'d numpy function (built once per job and expressions)
+    computes all rows at once."""
+    job = motion.job
+    exprs = [sp.sympify(e) for e in exprs]
+    key = ("rows", motion.keep, tuple(exprs))
+    if key not in job.cache:
+        table = _without(job.rhs, motion.keep)
+        slots = _Slots(job)
+        ys = slots.add(motion.states, "y")
+        numeric = [slots.numeric(_resolve(e, table), what) for e in exprs]
+        args = [slots.time, *ys, *slots.param_dummies]
+        job.cache[key] = (
+            list(slots.params),
+            backends.lambdify_job(args, numeric, slots.intermediates, "numpy"),
+            backends.lambdify_job(args, numeric, slots.intermediates),
+        )
+    params, vectorized, scalar = job.cache[key]
+    motion.values.require(params)
+    p = [motion.values.get(label_of(o, job.names), note=False) for o in params]
+    rows = motion.rows
+    if not exprs:
+        return np.empty((rows, 0))
+    try:
+        with np.errstate(all="ignore"):
+            out = vectorized(motion.times, *motion.ys, *p)
+        columns = [np.broadcast_to(np.asarray(v, dtype=float), (rows,)) for v in out]
+        return np.stack(columns, axis=1)
+    except (TypeError, ValueError):
+        # a function with no numpy form (Autolev's INT, ROUND): row by row
+        values = [
+            scalar(float(tt), *motion.ys[:, i].tolist(), *p)
+            for i, tt in enumerate(motion.times)
+        ]
+        return np.array(values, dtype=float).reshape(rows, len(exprs))
 
 
 def _result(job: Job, tables: list[Table], vals: _Values, **more: Any) -> Result:

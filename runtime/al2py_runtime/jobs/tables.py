@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -75,6 +77,12 @@ class Result(ResultViews):
     #: ``Encode``d and ``Output`` matrices: name -> shape; ``result["AMAT"]``
     #: is an array of shape (rows, m, n), one matrix per output row.
     encoded: dict[str, tuple[int, int]] = field(default_factory=dict)
+    #: a Dynamics/ODE run's job, values and states at every row
+    #: (:class:`~al2py_runtime.jobs.run.Motion`), what :meth:`animate` needs;
+    #: None for other jobs and for tables read from files
+    motion: Any = field(default=None, repr=False)
+    #: the file a table was read from (:func:`~.reading.read_table`), else None
+    source: str | None = None
 
     def _encoded(self, key: str) -> np.ndarray:
         m, n = self.encoded[key]
@@ -125,38 +133,100 @@ class Result(ResultViews):
             written.append(path)
         return written
 
-    def plot(self, directory: str | Path = ".") -> list[Path]:
-        """Write ``STEM.n.png`` per table: each column against time (the
-        table's ``T`` column, else the job's time at each row), or against
-        the row number where the job has no time (a solve or a sweep)."""
-        try:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-        except ImportError:
-            raise NumericsError(
-                "plotting needs matplotlib: pip install 'al2py-runtime[plot]'"
-            ) from None
+    def plot(
+        self,
+        x: str | None = "T",
+        y: str | Sequence[str] | None = None,
+        *,
+        table: int | None = None,
+        overlay: bool = False,
+        title: str | None = None,
+        **style: Any,
+    ) -> Any:
+        """A ``matplotlib.figure.Figure`` of ``y`` against ``x``, units in the
+        labels: by default each column of the first table against time (or
+        the row number where the job has no time), one panel each;
+        ``plot(x="QA", y="U1")`` is a phase plane.  See
+        :func:`~al2py_runtime.jobs.viewing.figure`."""
+        from .viewing import figure
+
+        return figure(self, x, y, table=table, overlay=overlay, title=title, **style)
+
+    def save_plots(self, directory: str | Path = ".") -> list[Path]:
+        """Write ``STEM.n.png`` per table (``--plot``): :meth:`plot` of each
+        column against time (the table's ``T`` column, else the job's time
+        at each row), or against the row number where the job has no time
+        (a solve or a sweep)."""
         directory = Path(directory)
         directory.mkdir(parents=True, exist_ok=True)
         written = []
         for table, name in zip(self.written, self.files(), strict=True):
-            x, xlabel, ys = self.abscissa(table)
+            x, _label, ys = self.abscissa(table)
             if not ys or len(table) == 0:
                 continue
-            fig = Figure(figsize=(7, 1.0 + 2.0 * len(ys)))
-            FigureCanvasAgg(fig)
-            axes = fig.subplots(len(ys), 1, sharex=True, squeeze=False)[:, 0]
-            for ax, j in zip(axes, ys, strict=True):
-                ax.plot(x, table.data[:, j], marker="." if len(x) < 60 else None)
-                ax.set_ylabel(_heading(table.columns[j], self.time_unit))
-                ax.grid(True, alpha=0.3)
-            axes[-1].set_xlabel(xlabel)
-            fig.suptitle(name)
-            fig.tight_layout()
+            xname = None
+            if len(ys) < len(table.columns):
+                xname = next(
+                    c.label for j, c in enumerate(table.columns) if j not in ys
+                )
+            elif "T" in self.states and len(self.states["T"]) == len(table):
+                xname = "T"
+            fig = self.plot(
+                xname,
+                [table.columns[j].label for j in ys],
+                table=table.number,
+                title=name,
+            )
             path = directory / f"{name}.png"
             fig.savefig(path, dpi=100)
             written.append(path)
         return written
+
+    def animate(
+        self,
+        path: str | Path | None = None,
+        *,
+        frames: Sequence[Any] | None = None,
+        points: Sequence[Any] = (),
+        origin: Any = None,
+        newtonian: Any = None,
+        **options: Any,
+    ) -> Any:
+        """An :class:`~al2py_runtime.jobs.animation.Animation` of the run:
+        the points locating the animated bodies, each animated frame's triad
+        and the lines joining points fixed together, at every output row.
+
+        What is shown is the script's ``Animate(N, O, A, B)`` before the
+        CODE statement; ``frames``, ``points``, ``origin`` and ``newtonian``
+        (names or objects) change it, and without ``Animate`` choose it
+        (default: every body, else every frame; a point at rest in N).  In
+        a notebook the animation shows itself; with ``path`` it is also
+        written (``.html`` self-contained, ``.gif``, ``.mp4``).  ``options``:
+        ``speed`` (simulated seconds per second), ``width``, ``height``,
+        ``follow``, ``title`` (see docs/animation.md)."""
+        motion = self.motion
+        if motion is None:
+            raise NumericsError(
+                f"{self.title()} has no motion to animate: animations need a"
+                " CODE Dynamics or ODE job run by run()"
+            )
+        options.setdefault("title", self.stem)
+        animation = motion.animation(
+            frames=frames,
+            points=points,
+            origin=origin,
+            newtonian=newtonian,
+            time_unit=self.time_unit,
+            **options,
+        )
+        if path is not None:
+            animation.save(path)
+        return animation
+
+    def _repr_html_(self) -> str:
+        from .viewing import result_html
+
+        return result_html(self)
 
     def abscissa(self, table: Table) -> tuple[np.ndarray, str, list[int]]:
         """``(x, x label, columns to plot)`` for a plot of ``table``: time

@@ -170,6 +170,7 @@ class MassAndLoads:
         (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
         listed bodies and particles only."""
         vec = kin.as_vector(vec)
+        self.registry.gravity.append(vec)
         for o in self.massive_objects(objs):
             m = self.body_mass(o, strict=False)
             if m != 0:

@@ -43,6 +43,7 @@ class ModelState:
     #: ``ALF_B_A> = v`` as the script wrote it: B -> [(A, v)], in order
     angacc_given: dict = field(default_factory=dict)
     forces: dict = field(default_factory=dict)  # Point -> Vector
+    gravity: list = field(default_factory=list)  # Gravity(v>)'s vectors, in order
     torques: dict = field(default_factory=dict)  # frame -> Vector
     dependent: list = field(default_factory=list)
     auxiliary: list = field(default_factory=list)

@@ -377,6 +377,9 @@ _TABLE: list[Builtin] = [
     _command("TORQUE", "add_torque", 2, 2, objects=(0,), responds=False),
     _command("CONSTRAIN", "constrain", 1, None),
     _command("KANE", "kane", 0, None),
+    # -- code commands: Animate(N, O, A, B) records what a job's animation
+    # shows (al.numerics.animate; see jobs/scene.py)
+    _command("ANIMATE", "animate", 3, None, objects_from=0, responds=False),
     Builtin("INPUT", Style.SPECIAL, "input_value", 1, 2, words=(1,)),
     Builtin("UNITS", Style.SPECIAL, "units", 2, 2),
     Builtin("AUTOTAYLOR", Style.SPECIAL, "autotaylor", 2, None, statement=True),
