@@ -194,8 +194,13 @@ def check_orientations(stmts: Iterable[ir.Stmt]) -> None:
         for call in calls:
             if call.key in _RELATING and len(call.args) >= 2:
                 join(_frame_arg(call.args[0], root), _frame_arg(call.args[1], root))
-        if isinstance(stmt, ir.Assign) and isinstance(stmt.target, ir.Name):
-            pair = _frame_pair(stmt.target.key, root)
+        if isinstance(stmt, ir.Assign):
+            target = stmt.target
+            if isinstance(target, ir.Element):  # N_A[1,1] = ...
+                target = target.base
+            pair = (
+                _frame_pair(target.key, root) if isinstance(target, ir.Name) else None
+            )
             if pair:
                 join(*pair)
     if errors:
