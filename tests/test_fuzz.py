@@ -178,10 +178,16 @@ def corpus_scripts() -> tuple[CorpusScript, ...]:
     return tuple(found)
 
 
+#: corpus scripts whose own, unmutated module runs past the fuzz's time
+#: limit, so that every mutant would too: BICYCLE12.AL's ZERO=FR()+FRSTAR()
+#: takes more than 5 minutes (a known performance gap, not a mutant's fault)
+SLOW_SEEDS = ("MAE-223/BicycleDynamicsProject/AutolevSRC/BICYCLE12.AL",)
+
+
 def corpus_mutant(index: int) -> tuple[CorpusScript, str]:
     """A corpus script mutated like the tutorial's (syntax, or for odd
     indexes numbers, names, operators and lines)."""
-    scripts = corpus_scripts()
+    scripts = [s for s in corpus_scripts() if not s.name.endswith(SLOW_SEEDS)]
     if not scripts:
         pytest.skip("needs the public corpus ($ALMIRROR or ../corpus)")
     rng = random.Random(CORPUS_SEED * 100_003 + index)
