@@ -6,12 +6,12 @@ PIP    := $(PY) -m pip
 EXAMPLE ?= examples/tutor6.al
 ANTLR  := $(VENV)/bin/antlr4
 
-.PHONY: install bytecode run test test-full grammar bench lint clean
+.PHONY: install bytecode run test test-full golden grammar bench lint clean
 
-$(VENV)/.installed: pyproject.toml runtime/pyproject.toml
+$(VENV)/.installed: pyproject.toml setup.py runtime/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PIP) install --quiet --upgrade pip
-	$(PIP) install --quiet -e "./runtime[plot]"
+	$(PIP) install --quiet -e "./runtime[plot,dask]"
 	$(PIP) install --quiet -e ".[dev,plot,notebook]"
 	touch $@
 
@@ -37,6 +37,10 @@ test: bytecode
 # converted Whipple bicycle and every published Autolev program pair.
 test-full: bytecode
 	$(PY) -m pytest -q --full
+
+# Write the kept generated modules (tests/golden/modules/*.py) again.
+golden: install
+	$(PY) tests/test_golden_modules.py
 
 lint: install
 	$(VENV)/bin/ruff check src runtime tests

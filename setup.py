@@ -37,6 +37,8 @@ setup(
     extras_require={
         "plot": [f"al2py-runtime[plot]=={VERSION}"],
         "fast": [f"al2py-runtime[fast]=={VERSION}"],
+        # sweeps on a Dask cluster (model.sweep(..., executor=...))
+        "dask": [f"al2py-runtime[dask]=={VERSION}"],
         # tests that run a notebook in a real Jupyter kernel
         # (tests/test_animation.py)
         "notebook": ["nbclient>=0.7", "nbformat>=5", "ipykernel>=6"],

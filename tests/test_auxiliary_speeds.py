@@ -164,11 +164,11 @@ def test_formed_velocity_keeps_auxiliary_speeds(models):
     partial velocity for U1 is N1> (the response shows them too), while
     their values are those of the actual motion: zero."""
     first, _ = models["aux_spherical_pendulum"]
-    N, AO = first.N, first.al.point("AO")
+    N, AO = first.N, first.al.model.point("AO")
     u1, u2, u3 = _symbols(first, "U1 U2 U3")
-    v = first.al.vel(AO, N)
+    v = first.al.model.vel(AO, N)
     for u, e in ((u1, N.x), (u2, N.y), (u3, N.z)):
-        part = first.al.partials(v, u)
+        part = first.al.model.partials(v, u)
         assert (part - e).express(N).simplify() == 0 * N.x
     shown = [r for r in first.al.responses if r.label == "V_AO_N>"]
     assert len(shown) == 1
@@ -268,7 +268,7 @@ def test_planar_reaction_forces_with_a_dependent_speed(models):
             assert np.allclose(ours, expected, rtol=1e-10, atol=1e-12), ours
     # al2py's KanesMethod inputs: U1, U2 auxiliary, U4 dependent; its
     # auxiliary equations give the same forces
-    inputs = first.al.kane_inputs()
+    inputs = first.al.model.kane_inputs()
     u1, u2, u4 = _symbols(first, "U1 U2 U4")
     assert inputs.u_auxiliary == [u1, u2] and inputs.u_dependent == [u4]
     km = first.kanes_method()

@@ -57,7 +57,7 @@ def assert_module_text(code: str) -> None:
     compile(code, "<generated>", "exec")
     assert code.startswith('"""Autolev script ')
     assert "\nAUTOLEV = " in code
-    assert "\nAL_SOURCE = " in code
+    assert "\nAL_SOURCE = " not in code  # the # al> lines are the source
     assert 'if __name__ == "__main__":' in code
 
 

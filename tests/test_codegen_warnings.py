@@ -46,7 +46,9 @@ def _code(script: Path, out: Path, *options: str) -> list[Path]:
         text=True,
         timeout=1200,
     )
-    assert done.returncode == 0 and done.stderr == "", done.stderr
+    # notes (a file two programs share, docs/jobs.md) are not warnings
+    noise = [ln for ln in done.stderr.splitlines() if "note: " not in ln]
+    assert done.returncode == 0 and noise == [], done.stderr
     return [out / w.split()[-1] for w in done.stdout.splitlines() if "Wrote" in w]
 
 

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
+from al2py_runtime.safety import module_source
 from conftest import load_module
 
 from al2py import convert
@@ -600,7 +601,7 @@ def test_degrees_off_again(tmp_path):
 
 def test_digits_changes_the_transcript(tmp_path):
     m = run("Digits 3\nE = 1/3\nDigits 10\nF = 2/3\nG = PI\n", tmp_path)
-    lines = m.al.transcript(m.AL_SOURCE)
+    lines = m.al.transcript(module_source(m.__file__))
     responses = [line for line in lines if line.startswith("->")]
     assert responses[0].endswith("E = 0.333")
     assert responses[1].endswith("F = 0.6666666667")
@@ -610,7 +611,7 @@ def test_digits_changes_the_transcript(tmp_path):
 
 def test_default_digits(tmp_path):
     m = run("E = 1/3\n", tmp_path)
-    lines = m.al.transcript(m.AL_SOURCE)
+    lines = m.al.transcript(module_source(m.__file__))
     assert lines == ["(1) E = 1/3", "-> (2) E = 0.3333333"]
 
 

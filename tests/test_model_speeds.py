@@ -207,7 +207,7 @@ def test_double_pendulum_matches_sympy_kanes_method(tmp_path):
     """Two motion-variable speeds (DoublePendulum.al's style): the solved
     OMEGA1', OMEGA2' equal sympy's KanesMethod at random states."""
     mod = _load(DOUBLE, tmp_path, "double_pendulum")
-    km = mod.al.kanes_method()
+    km = mod.al.model.kanes_method()
     w1, w2 = mod.al.symbol("OMEGA1"), mod.al.symbol("OMEGA2")
     assert list(km.u) == [w1, w2]
     assert list(km.q) == [mod.al.symbol("THETA1"), mod.al.symbol("THETA2")]
@@ -256,7 +256,7 @@ def test_rolling_disc_matches_sympy_kanes_method(tmp_path):
     mod = _load(DISC, tmp_path, "rolling_disc")
     ws = [mod.al.symbol(f"W{k}") for k in (1, 2, 3)]
     assert mod.al.model.generalized_speeds() == ws
-    km = mod.al.kanes_method()
+    km = mod.al.model.kanes_method()
     names = ["X", "Y", "PSI", "PHI", "TH"]
     assert list(km.q) == [mod.al.symbol(n) for n in names]
     assert list(km.u) == ws

@@ -72,8 +72,8 @@ def test_semicolons_end_statements(tmp_path):
     assert mod.AUTOLEV["B"] == mod.a + 1
     assert mod.AUTOLEV["C"] == 2 * mod.b
     assert mod.AUTOLEV["D"] == sp.Matrix([1, 2])
-    # every statement is echoed and numbered in the transcript
-    assert "# al> b = a + 1;" in code and "# al> c = 2*b;" in code
+    # the line is echoed once, and numbered once in the transcript
+    assert code.count("# al> b = a + 1; c = 2*b;") == 1
 
 
 def test_semicolon_statement_still_responds(tmp_path, capsys):
@@ -396,7 +396,7 @@ def test_kane_with_forces_after_constrain_of_declared_auxiliary_speeds(tmp_path)
         "Solve(Zero, U')\n"
     )
     mod, code = run(src, tmp_path)
-    assert "Zero = al.kane(" in code
+    assert "Zero = al.model.kane(" in code
     q, u, m, g, length = (mod.al.symbol(n) for n in ("Q", "U", "M", "G", "L"))
     point = {q: 0.7, u: 1.3, m: 2.0, g: 9.81, length: 0.8}
     tension = mod.AUTOLEV["TEN"].xreplace(point)

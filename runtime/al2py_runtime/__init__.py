@@ -13,20 +13,20 @@ numbers):
 >>> from sympy import Eq
 >>> from al2py_runtime import Workspace, t
 >>> al = Workspace("fall.al")
->>> N = al.newtonian("N")
->>> P = al.particles("P")
+>>> N = al.model.newtonian("N")
+>>> P = al.model.particles("P")
 >>> Q, G = al.variables("Q'"), al.constants("G")
->>> U = al.motion_variables("U'")
->>> al.set_mass(P, 2)
+>>> U = al.model.motion_variables("U'")
+>>> al.model.set_mass(P, 2)
 >>> al.kd(Eq(Q.diff(t), U))
 Eq(Derivative(Q(t), t), U(t))
->>> al.set_vel(P, N, U * N.x)
+>>> al.model.set_vel(P, N, U * N.x)
 U(t)*N.x
->>> al.gravity(-G * N.x)
->>> zero = al.assign("ZERO", al.fr() + al.frstar())
+>>> al.model.gravity(-G * N.x)
+>>> zero = al.assign("ZERO", al.model.fr() + al.model.frstar())
 >>> al["ZERO"]
 Matrix([[-2*(G + Derivative(U(t), t))]])
->>> km = al.kanes_method()
+>>> km = al.model.kanes_method()
 >>> km.mass_matrix_full, km.forcing_full.T
 (Matrix([
 [1, 0],
@@ -35,7 +35,7 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 
 from typing import Any
 
-from .safety import AutolevRuntimeError
+from .safety import AutolevRuntimeError, MissingValueWarning
 from .version import __version__
 from .workspace import Response, Settings, Workspace, t
 
@@ -44,6 +44,7 @@ __all__ = [
     "Settings",
     "Response",
     "AutolevRuntimeError",
+    "MissingValueWarning",
     "read_table",
     "t",
     "__version__",

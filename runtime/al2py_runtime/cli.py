@@ -17,7 +17,13 @@ from pathlib import Path, PurePath
 from typing import Any
 
 from .jobs import budget
-from .jobs.records import INTEGRATION_DEFAULTS, NumericsError, job_stem, job_where
+from .jobs.records import (
+    INTEGRATION_DEFAULTS,
+    NumericsError,
+    job_stem,
+    job_where,
+    output_stems,
+)
 from .jobs.run import check_overrides, run_job
 from .progress import is_terminal
 from .safety import AutolevRuntimeError, describe
@@ -44,9 +50,10 @@ def help_text(
       m: CODE Ode m.c (line 3) -> m.1, ...
     ...
     """
+    stems = output_stems([job_stem(file, filename) for _kind, file, _line in jobs])
     described = [
-        (job_stem(file, filename), job_where(kind, file, line))
-        for kind, file, line in jobs
+        (stem, job_where(kind, file, line))
+        for stem, (kind, file, line) in zip(stems, jobs, strict=True)
     ]
     return build_parser(filename, inputs, described).format_help()
 
@@ -69,7 +76,7 @@ def build_parser(
     jobs: Sequence[tuple[str, str]],
 ) -> argparse.ArgumentParser:
     """The command line of ``python module.py``: ``inputs`` are ``(name,
-    value as shown, unit)``, ``jobs`` are ``(file stem, description)``."""
+    value as shown, unit)``, ``jobs`` are ``(stem, description)``."""
     name = PurePath(filename).stem or "autolev"
     lines = []
     if inputs:
@@ -253,9 +260,12 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     if args.emit_code is not None:
         from .codegen import write_programs
 
-        written, errors = write_programs(ws, args.emit_code, jobs=jobs)
+        notes: list[str] = []
+        written, errors = write_programs(ws, args.emit_code, jobs=jobs, notes=notes)
         for path in written:
             print(f"Wrote {path}")
+        for note in notes:
+            print(f"note: {note}", file=sys.stderr)
         for message in errors:
             print(f"error: {message}", file=sys.stderr)
         if not ws.numerics.jobs:
@@ -267,8 +277,9 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     outdir = Path(args.outdir)
     try:
         ws.write_saved_files(source_lines, outdir)
-    except OSError as exc:
-        return _error(ws, f"Save: cannot write into {outdir}: {exc.strerror}")
+    except AutolevRuntimeError as exc:  # names the Save statement's line
+        print(exc, file=sys.stderr)
+        return 2
     if args.max_seconds is not None:
         budget.LIMITS["seconds"] = args.max_seconds
     if args.max_evals is not None:
@@ -285,6 +296,13 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
             budget.clear_progress()
             for note in result.notes:
                 print(f"note: {note}", file=sys.stderr)
+            own = job_stem(job.filename, ws.filename)
+            if own != job.stem:  # named apart: no job writes another's files
+                print(
+                    f"note: {job.where} writes {job.stem}.1, ...: an earlier"
+                    f" CODE statement's file has the stem {own}",
+                    file=sys.stderr,
+                )
             written = result.write(outdir)
             for path, table in zip(written, result.written, strict=True):
                 cols = ", ".join(table.names)

@@ -30,11 +30,29 @@ import linecache
 import os
 import re
 import sys
-from pathlib import PurePath
-from types import FrameType, TracebackType
-from typing import Any
+from collections.abc import Callable, Sequence
+from types import TracebackType
+from typing import Any, TypeVar
 
-__all__ = ["AutolevRuntimeError", "excepthook", "guard_methods", "register"]
+__all__ = [
+    "AutolevRuntimeError",
+    "MissingValueWarning",
+    "Statements",
+    "echo_lines",
+    "echoed_source",
+    "excepthook",
+    "module_source",
+    "register",
+    "statement",
+]
+
+
+class MissingValueWarning(UserWarning):
+    """A value nobody gave was taken as 0, by al2py's one rule for missing
+    values (``al2py_runtime.jobs.run.missing_value_rule``): a Specified
+    quantity with no equation and no Input, a variable's initial value, or
+    (with ``zero_missing``) a constant.  ``python module.py`` prints the same
+    text as a ``note:`` line; ``result.notes`` keeps it."""
 
 
 class AutolevRuntimeError(ValueError):
@@ -55,9 +73,23 @@ class AutolevRuntimeError(ValueError):
     ) -> None:
         self.message = message
         self.filename = filename
-        self.line = line
-        self.source = source
-        super().__init__(self.format())
+        self._line = line
+        self._source = source
+        super().__init__(message)
+
+    @property
+    def line(self) -> int | None:
+        """The ``.al`` line: the one the module's call passed, else the
+        statement whose Python line this error's own traceback passes in a
+        generated module (known once the error has left the module)."""
+        if self._line is None:
+            self._line, self._source = _traceback_line(self)
+        return self._line
+
+    @property
+    def source(self) -> str:
+        self.line  # noqa: B018 - placed from the traceback if need be
+        return self._source
 
     def format(self) -> str:
         if self.filename is None:
@@ -68,6 +100,22 @@ class AutolevRuntimeError(ValueError):
             out += "\n    " + self.source.strip()
         return out
 
+    def __str__(self) -> str:
+        return self.format()
+
+
+def _traceback_line(exc: BaseException) -> tuple[int | None, str]:
+    """``(line, source)`` of the ``.al`` statement whose module-level Python
+    line ``exc``'s traceback passes (``(None, "")`` if it passes none)."""
+    tb = exc.__traceback__
+    found: tuple[int | None, str] = (None, "")
+    while tb is not None:
+        code = tb.tb_frame.f_code
+        if code.co_filename in _MODULES and code.co_name == "<module>":
+            found = al_line(code.co_filename, tb.tb_lineno, tb.tb_frame.f_globals)
+        tb = tb.tb_next
+    return found
+
 
 #: generated module files (``co_filename``) -> the ``.al`` name they came from
 _MODULES: dict[str, str] = {}
@@ -75,19 +123,14 @@ _installed = False
 _previous_hook = sys.excepthook
 
 
-def _is_generated(frame: FrameType) -> bool:
-    doc = frame.f_globals.get("__doc__") or ""
-    return doc.startswith("Autolev script ") and "by al2py" in doc
-
-
-def register(filename: str, frame: FrameType | None) -> bool:
+def register(filename: str, module_file: str | None) -> bool:
     """Called by ``Workspace.__init__``: remember the generated module that
-    creates the workspace (``frame`` is its frame) and install the hook.
-    True if ``frame`` is a generated module's."""
+    creates the workspace (``module_file`` is its ``__file__``, which the
+    module passes) and install the hook.  True if there is such a module."""
     global _installed
-    if frame is None or not _is_generated(frame):
+    if module_file is None:
         return False
-    _MODULES[frame.f_code.co_filename] = filename
+    _MODULES[module_file] = filename
     if not _installed:
         _installed = True
         sys.excepthook = excepthook
@@ -109,29 +152,127 @@ def output_path(outdir: str | os.PathLike, name: str) -> Any:
 
 # ----------------------------------------------------------- line mapping
 
+#: how a generated module holds each line of its ``.al`` file, once, as a
+#: comment at column 0: ``# al> TEXT`` (the line, stripped), ``# al+ ...``
+#: (the rest of a line too long for one comment), ``# al! 'TEXT'`` (a line
+#: with a character a comment cannot hold, as a Python string), and ``#``
+#: (a blank line).  The transcript reads its source from these comments.
+ECHO, MORE, QUOTED, BLANK = "# al> ", "# al+", "# al! ", "#"
+_WIDTH = 88
+
+
+def echo_lines(line: str) -> list[str]:
+    """The comment lines that hold one ``.al`` line in a module.
+
+    >>> echo_lines("Simprot(N, A, 3, QA)   ")
+    ['# al> Simprot(N, A, 3, QA)']
+    >>> echo_lines("")
+    ['#']
+    """
+    text = line.strip()
+    if not text:
+        return [BLANK]
+    if all(c.isprintable() or c == "\t" for c in text):
+        out = _pieces(ECHO, text)
+        if out is not None:
+            return out
+    # a character a comment cannot hold, or a run of blanks too long to cut
+    # after a word: the line as a string, with no blank left to lose
+    quoted = repr(text).replace(" ", "\\x20").replace("\t", "\\t")
+    return _pieces(QUOTED, quoted) or [QUOTED + quoted]
+
+
+def _pieces(lead: str, text: str) -> list[str] | None:
+    """``text`` in comment lines of at most 88 columns (a tab as 8), cut
+    before a space after a word (never on a blank, which black would strip);
+    None if that cannot be done."""
+    out: list[str] = []
+    while text:
+        piece = _piece(text, _WIDTH - len(lead))
+        if piece is None:
+            return None
+        out.append(lead + piece)
+        text = text[len(piece) :]
+        lead = MORE
+    return out
+
+
+def _piece(text: str, room: int) -> str | None:
+    """The longest start of ``text`` that fits ``room`` columns, ending before
+    a space where it can, and never on whitespace (None if every start
+    that fits does)."""
+    width = 0
+    end = 0
+    while end < len(text):
+        width += 8 if text[end] == "\t" else 1
+        if width > room:
+            break
+        end += 1
+    if end == len(text):
+        return text
+    for cut in range(end, 0, -1):  # before a space, after a word
+        if text[cut].isspace() and not text[cut - 1].isspace():
+            return text[:cut]
+    cut = end
+    while cut > 0 and text[cut - 1].isspace():
+        cut -= 1
+    return text[:cut] if cut > 0 else None
+
+
+def echoed_source(module_lines: Sequence[str]) -> list[str]:
+    """The ``.al`` lines (stripped) that a generated module echoes, in order:
+    what :func:`transcript_lines` numbers.
+
+    >>> echoed_source(["x = 1", "# al> Q' = U", "f(x)", "#", "# al> %  a", "# al+ b"])
+    ["Q' = U", '', '%  a b']
+    """
+    return [text for _, text in echo_records(module_lines)]
+
+
+def echo_records(module_lines: Sequence[str]) -> list[tuple[int, str]]:
+    """``(index in module_lines, .al line)`` of each line a module echoes:
+    the ``k``-th record is line ``k`` of the ``.al`` file."""
+    import ast
+    import io
+    import tokenize
+
+    text = "".join(
+        line if line.endswith("\n") else line + "\n" for line in module_lines
+    )
+    out: list[tuple[int, str]] = []
+    quoted: list[bool] = []
+    try:
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+            if tok.type != tokenize.COMMENT or tok.start[1] != 0:
+                continue
+            comment, index = tok.string.rstrip(), tok.start[0] - 1
+            if comment == BLANK:
+                out.append((index, ""))
+                quoted.append(False)
+            elif comment.startswith((ECHO, QUOTED)):
+                out.append((index, comment[len(ECHO) :]))
+                quoted.append(comment.startswith(QUOTED))
+            elif comment.startswith(MORE) and out:
+                out[-1] = (out[-1][0], out[-1][1] + comment[len(MORE) :])
+    except (tokenize.TokenError, SyntaxError):
+        return []
+    for k, is_quoted in enumerate(quoted):
+        if is_quoted:
+            try:
+                out[k] = (out[k][0], str(ast.literal_eval(out[k][1])))
+            except (ValueError, SyntaxError):
+                pass
+    return out
+
+
+def module_source(module_file: str, module_globals: object = None) -> list[str]:
+    """:func:`echoed_source` of the module in ``module_file``."""
+
+    return echoed_source(linecache.getlines(module_file, module_globals))
+
+
 _ECHO = "# al> "
 _LINE_ARG = re.compile(r"\bline=(\d+)")
-
-
-def _al_source(lines: list[str]) -> list[str] | None:
-    import ast
-
-    try:
-        tree = ast.parse("".join(lines))
-    except (SyntaxError, ValueError):
-        return None
-    for node in tree.body:
-        if (
-            isinstance(node, ast.Assign)
-            and len(node.targets) == 1
-            and isinstance(node.targets[0], ast.Name)
-            and node.targets[0].id == "AL_SOURCE"
-        ):
-            try:
-                return list(ast.literal_eval(node.value))
-            except (ValueError, TypeError, SyntaxError):
-                return None
-    return None
 
 
 def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
@@ -152,12 +293,15 @@ def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
 
 def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
     """``(line, source text)`` of the ``.al`` statement that Python line
-    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown)."""
+    ``pyline`` of a generated module belongs to (``(None, "")`` if unknown):
+    the ``line=`` its call passes, else the ``# al>`` line above it (the
+    ``k``-th line the module echoes is line ``k`` of the ``.al`` file)."""
     lines = linecache.getlines(module_file, module_globals)
     start, echoed = echo_above(lines, pyline)
     if start is None:
         return None, ""
-    source = _al_source(lines) or []
+    records = echo_records(lines)
+    source = [text for _, text in records]
     end = start + 1
     while end < len(lines) and not lines[end].lstrip().startswith(_ECHO):
         end += 1
@@ -166,19 +310,9 @@ def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
         if m:
             n = int(m.group(1))
             return n, source[n - 1] if 0 < n <= len(source) else echoed
-    # the k-th statement echoing this text is on the k-th source line with it
-    k = sum(
-        1
-        for text in lines[: start + 1]
-        if text.lstrip().startswith(_ECHO)
-        and text.lstrip()[len(_ECHO) :].rstrip() == echoed
-    )
-    seen = 0
-    for number, text in enumerate(source, start=1):
-        if text.strip() and text.strip().startswith(echoed.strip()):
-            seen += 1
-            if seen == k:
-                return number, text
+    for number, (index, text) in enumerate(records, start=1):
+        if index == start:
+            return number, text
     return None, echoed
 
 
@@ -320,70 +454,69 @@ def _library(exc: BaseException) -> str:
 
 
 def located(
-    exc: BaseException, frame: FrameType, line: int | None = None
+    exc: BaseException, filename: str, module_file: str, line: int
 ) -> AutolevRuntimeError:
-    """``exc``, raised while ``frame`` (of a generated module) ran, as an
-    :class:`AutolevRuntimeError` naming the ``.al`` line."""
-    module_file = frame.f_code.co_filename
-    found, source = al_line(module_file, frame.f_lineno, frame.f_globals)
-    if line is None:
-        line = found
-    elif found != line:
-        source = _source_line(module_file, line, frame.f_globals) or source
-    name = _MODULES.get(module_file, PurePath(module_file).with_suffix(".al").name)
-    return AutolevRuntimeError(describe(exc), name, line, source)
+    """``exc``, raised by the statement of ``.al`` line ``line`` of the
+    generated module ``module_file``, as an :class:`AutolevRuntimeError`
+    naming that line."""
+    return AutolevRuntimeError(
+        describe(exc), filename, line, _source_line(module_file, line, None)
+    )
 
 
 def _source_line(module_file: str, line: int, module_globals: Any) -> str:
-    source = _al_source(linecache.getlines(module_file, module_globals)) or []
+    source = module_source(module_file, module_globals)
     return source[line - 1] if 0 < line <= len(source) else ""
 
 
-# --------------------------------------------------------- the wrappers
+# ----------------------------------------------------- statement methods
 
-#: methods with their own error reporting (jobs name their CODE statement),
-#: and those a module's own functions call (their errors are not statements')
-_UNGUARDED = frozenset({"run", "main", "names", "evaluate_name", "document_run"})
+F = TypeVar("F", bound=Callable[..., Any])
 
 
-def guard_methods(cls: type) -> type:
-    """Wrap the public methods of ``cls`` (a workspace class) so that an
-    exception escaping into a generated module becomes located."""
-    for name in dir(cls):
-        if name.startswith("_") or name in _UNGUARDED:
-            continue
-        func = getattr(cls, name)
-        if not callable(func) or isinstance(func, type):
-            continue
-        raw = cls.__dict__.get(name)
-        if raw is None:  # inherited from a mixin: look it up along the MRO
-            for base in cls.__mro__:
-                if name in base.__dict__:
-                    raw = base.__dict__[name]
-                    break
-        if isinstance(raw, staticmethod | classmethod | property):
-            continue
-        setattr(cls, name, _guarded(raw))
-    return cls
+class Statements:
+    """Where a workspace's statement calls stand: the generated module it
+    serves (``module_file``, None for a workspace made by hand) and how deep
+    the current statement's calls are (only the outermost call locates)."""
+
+    def __init__(self, filename: str, module_file: str | None) -> None:
+        self.filename = filename
+        self.module_file = module_file
+        self.depth = 0
 
 
-def _guarded(func: Any) -> Any:
-    @functools.wraps(func)
-    def method(self: Any, *args: Any, **kw: Any) -> Any:
+def statement(method: F) -> F:
+    """Mark a method that a generated module calls: an exception escaping the
+    module's own call (the outermost) becomes an :class:`AutolevRuntimeError`
+    naming the ``.al`` line, the ``line=`` the module passes (a call without
+    one, inside an expression, is placed from the error's traceback).  The object reaches its workspace's
+    :class:`Statements` as ``self.statements``."""
+
+    @functools.wraps(method)
+    def call(self: Any, *args: Any, **kw: Any) -> Any:
+        where: Statements | None = self.statements
+        if where is None:  # not a workspace's (settings made by hand)
+            return method(self, *args, **kw)
+        where.depth += 1
         try:
-            return func(self, *args, **kw)
+            return method(self, *args, **kw)
         except Exception as exc:
-            frame = sys._getframe(1)
             if (
-                frame.f_code.co_filename not in _MODULES
-                or frame.f_code.co_name != "<module>"  # run(), kanes_method()...
+                where.depth > 1
+                or where.module_file is None
                 or (isinstance(exc, AutolevRuntimeError) and exc.filename is not None)
             ):
                 raise
             line = kw.get("line")
-            raise located(exc, frame, line if isinstance(line, int) else None) from exc
+            if isinstance(line, int):
+                raise located(exc, where.filename, where.module_file, line) from exc
+            # an expression's call (``al.d(...)`` inside a statement): its
+            # line is placed from the traceback once it leaves the module
+            raise AutolevRuntimeError(describe(exc), where.filename) from exc
+        finally:
+            where.depth -= 1
 
-    return method
+    return call  # type: ignore[return-value]
 
 
 # ------------------------------------------------------------ the hook

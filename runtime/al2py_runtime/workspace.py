@@ -22,11 +22,9 @@ A + 7*B
 
 from __future__ import annotations
 
-import functools
 import gc
-import sys
 import weakref
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -36,16 +34,16 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
-from . import algebra, matrices, walks
+from . import algebra, matrices, progress, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
-from .model.model import MODEL_COMMANDS, Model
+from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
 from .names.table import Entry, NameTable
 from .names.variables import time_function
 from .progress import ImportWatch
-from .safety import guard_methods
+from .safety import Statements, statement
 from .safety import register as register_module
 from .vocabulary import OBJECT_DECLS
 
@@ -62,23 +60,27 @@ class Workspace(Mapping):
     values, e.g. ``ws["ZERO[2]"]`` or ``ws["STRETCH'"]`` (case-insensitive).
     """
 
-    def __init__(self, filename: str = "<autolev>") -> None:
+    def __init__(
+        self, filename: str = "<autolev>", module_file: str | None = None
+    ) -> None:
         self.filename = filename
-        frame = sys._getframe(1)
-        generated = register_module(filename, frame)  # errors name the .al line
+        #: the generated module this workspace serves (its ``__file__``):
+        #: its failures name the .al line (:mod:`.safety`)
+        generated = register_module(filename, module_file)
+        self.statements = Statements(filename, module_file)
         #: a progress line while a long import derives (stopped by names())
-        self._watch = ImportWatch(filename, frame if generated else None)
+        self._watch = ImportWatch(filename, module_file)
         self._watch.start()
         #: while a generated module derives, the cyclic garbage collector runs
         #: less often (sympy's expressions are trees: its passes over
         #: millions of new objects find nothing, and took a tenth of a
         #: bicycle's import); names() or the workspace's end restores it
         self._collector = _DerivingCollector() if generated else None
-        self.settings = Settings()
+        self.settings = Settings(statements=self.statements)
         self.responses: list[Response] = []
         #: the script's names (:class:`~.names.table.NameTable`)
         self.table = NameTable()
-        self._saves: list[str] = []
+        self._saves: list[tuple[str, int | None]] = []  # (file, line)
         self._exit_line: int | None = None
         #: Quantities the script constrains to unit norm (the Euler parameters
         #: of ``Dircos``/``Angvel``/``Kindiffs(..., EULER, E1, E2, E3, E4)``):
@@ -95,16 +97,20 @@ class Workspace(Mapping):
         self.table.declare("PI", "constant", sp.pi)
         self.table.declare("I", "imaginary", sp.I)
 
-    # ------------------------------------------------ the model (mechanics.py)
+    # The model's commands are :class:`Model`'s own methods: a module calls
+    # them as ``al.model.simprot(...)``, ``al.model.fr()``...
 
-    # Its commands (``al.simprot``, ``al.fr``...) are methods of this class
-    # too: see :func:`_offer_model_commands` below the class.
-
-    def main(self, source_lines: Any, argv: Any = None) -> int:
-        """The ``python module.py`` entry point (see :mod:`.cli`)."""
+    def main(
+        self, source: str | Sequence[str], argv: Sequence[str] | None = None
+    ) -> int:
+        """The ``python module.py`` entry point (see :mod:`.cli`): ``source``
+        is the module's file, whose ``# al>`` lines are the ``.al`` source
+        the transcript echoes (or those source lines themselves)."""
         from .cli import main
+        from .safety import module_source
 
-        return main(self, source_lines, argv)
+        lines = module_source(source) if isinstance(source, str) else list(source)
+        return main(self, lines, argv)
 
     # ------------------------------------------------------------ mapping API
 
@@ -149,6 +155,7 @@ class Workspace(Mapping):
             return {"nonpositive": True}
         return {"real": True}
 
+    @statement
     def constants(self, *names: str, line: int | None = None) -> Any:
         """``Constants A, B+, C-``: real symbols (``+`` non-negative, ``-``
         non-positive).  Returns one symbol or a tuple, in order; ``line`` is
@@ -160,10 +167,12 @@ class Workspace(Mapping):
             out.append(self.table.declare(name, "constant", sym, sign=sign, line=line))
         return one_or_tuple(out)
 
+    @statement
     def variables(self, *names: str, line: int | None = None) -> Any:
         """``Variables X', Y''``: functions of time; primes give the order."""
         return self._time_functions(names, "variable", line)
 
+    @statement
     def specified(self, *names: str, line: int | None = None) -> Any:
         """``Specified PHI``: a function of time given by the user."""
         return self._time_functions(names, "specified", line)
@@ -179,6 +188,7 @@ class Workspace(Mapping):
             out.append(self.table.declare(base, kind, func, order=order, line=line))
         return one_or_tuple(out)
 
+    @statement
     def imaginary(self, name: str, line: int | None = None) -> Any:
         """``Imaginary j``: ``j`` is the imaginary unit."""
         return self.table.declare(name, "imaginary", sp.I, line=line)
@@ -230,18 +240,21 @@ class Workspace(Mapping):
             return self.table.rhs[rhs_key]
         return self.symbol(name)
 
+    @statement
     def rhs(self, x: Any) -> Any:
         """``Rhs(y)``: the right-hand side of a name (or ``y`` itself)."""
         if isinstance(x, str):
             return self.value(x)
         return self.table.rhs.get(x, x)
 
+    @statement
     def val(self, x: Any) -> Any:
         """The value behind a quantity symbol (used by dual functions)."""
         if isinstance(x, sp.Basic) and x in self.table.rhs:
             return self.table.rhs[x]
         return x
 
+    @statement
     def form(self, x: Any) -> Any:
         """The value behind ``x`` as a command that reads its *form* sees it
         (``Coef``, ``Exclude``, ``Factor``, small ``Solve``...).  With
@@ -256,6 +269,7 @@ class Workspace(Mapping):
 
     # ------------------------------------------------------------ resolution
 
+    @statement
     def explicit(self, y: Any, x: Any = None) -> Any:
         """``Explicit(y)``: ``y`` with every right-hand side substituted.
 
@@ -294,6 +308,7 @@ class Workspace(Mapping):
 
     # ------------------------------------------------------------ assignment
 
+    @statement
     def assign(self, target: str, value: Any, *, line: int | None = None) -> Any:
         """``target = value``: store, respond, and return the Python binding.
 
@@ -303,6 +318,7 @@ class Workspace(Mapping):
         """
         return self._store(target, value, line=line, rearrange=self.settings.factoring)
 
+    @statement
     def kd(self, eq: sp.Eq, *, line: int | None = None) -> sp.Eq:
         """``Q' = rhs`` given as the sympy equation ``Eq(Q.diff(t), rhs)``:
         assigned as :meth:`assign` does (same response), and returned, so a
@@ -312,6 +328,7 @@ class Workspace(Mapping):
         self.assign(self.name_of(eq.lhs), eq.rhs, line=line)
         return eq
 
+    @statement
     def update(self, target: str, value: Any, *, line: int | None = None) -> Any:
         """Like :meth:`assign` but without automatic factoring (dual functions);
         the response prints the value as the command produced it."""
@@ -322,6 +339,7 @@ class Workspace(Mapping):
         ]
         return out
 
+    @statement
     def assign_all(
         self, targets: Iterable[str], values: Iterable[Any], *, line: int | None = None
     ) -> Any:
@@ -572,6 +590,7 @@ class Workspace(Mapping):
         """The book if any intermediate was ever made (for expansion)."""
         return self.__dict__.get("_book")
 
+    @statement
     def show(self, label: str, value: Any, *, line: int | None = None) -> Any:
         """A bare expression statement: respond with its value."""
         value = self.normalize(value)
@@ -607,10 +626,12 @@ class Workspace(Mapping):
 
     # ------------------------------------------------------------- files
 
-    def save(self, filename: str) -> None:
+    @statement
+    def save(self, filename: str, *, line: int | None = None) -> None:
         """``SAVE file.all``/``SAVE file.al``: written by ``python module.py``."""
-        self._saves.append(filename)
+        self._saves.append((filename, line))
 
+    @statement
     def exit(self, *, line: int | None = None) -> None:
         """``Exit``/``Quit``: the script ends here (the transcript stops too)."""
         self._exit_line = line
@@ -622,11 +643,21 @@ class Workspace(Mapping):
         lines = list(source)
         if self._exit_line is not None:
             lines = lines[: self._exit_line]
-        shown = [
-            r if r.verbatim else replace(r, value=self.model.displayed(r.value))
-            for r in self._with_intermediates(self.responses)
-        ]
-        return transcript_lines(lines, shown)
+        # printed once: ``python model.py`` prints it and saves it (``.all``)
+        key = (tuple(lines), len(self.responses))
+        memo = self.__dict__.get("_transcript")
+        if memo is not None and memo[0] == key:
+            return list(memo[1])
+        with progress.task("printing the transcript", unit="responses") as task:
+            task.doing("naming intermediates")
+            shown = self._with_intermediates(self.responses)
+            task.doing("")
+            task.update(0, len(shown))
+            out = transcript_lines(
+                lines, shown, self.model.displayed, tick=task.advance
+            )
+        self.__dict__["_transcript"] = (key, out)
+        return list(out)
 
     def _with_intermediates(self, responses: list[Response]) -> list[Response]:
         """Responses given while AutoZ was ON show intermediates by name, each
@@ -671,31 +702,49 @@ class Workspace(Mapping):
     def write_saved_files(self, source: Iterable[str], outdir: str = ".") -> list[str]:
         """Write the files named by ``SAVE`` into ``outdir`` under their base
         names (``Save ../x.all`` writes ``OUTDIR/x.all``), never overwriting an
-        existing ``.al`` file."""
-        from .safety import output_path
+        existing ``.al`` file.  A file the system refuses (a name too long,
+        a folder that cannot be made) stops with the ``Save`` statement's
+        line: :class:`~.safety.AutolevRuntimeError`."""
+        from .safety import AutolevRuntimeError, output_path
 
         written = []
         source = list(source)
-        for name in self._saves:
+        for name, line in self._saves:
             path = output_path(outdir, name)
             if path is None:
                 print(f"note: Save {name}: not a file name; nothing written")
                 continue
-            if name.lower().endswith(".all"):
-                text = "\n".join(self.transcript(source)) + "\n"
-            elif path.exists():
-                print(f"note: not overwriting existing {path}")
-                continue
-            else:
-                text = "\n".join(source) + "\n"
-            path.parent.mkdir(parents=True, exist_ok=True)
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(text)
+            try:
+                if name.lower().endswith(".all"):
+                    text = "\n".join(self.transcript(source)) + "\n"
+                elif path.exists():
+                    print(f"note: not overwriting existing {path}")
+                    continue
+                else:
+                    text = "\n".join(source) + "\n"
+                path.parent.mkdir(parents=True, exist_ok=True)
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+            except OSError as exc:
+                raise AutolevRuntimeError(
+                    f"Save {name}: cannot write {path}: {exc.strerror or exc}",
+                    self.filename,
+                    line,
+                    self._source_line(source, line),
+                ) from None
             written.append(str(path))
         return written
 
+    @staticmethod
+    def _source_line(source: list[str], line: int | None) -> str:
+        """Line ``line`` (1-based) of ``source``, or ""."""
+        if line is None or not 0 < line <= len(source):
+            return ""
+        return source[line - 1]
+
     # ------------------------------------------------ mathematical commands
 
+    @statement
     def d(self, y: Any, x: Any, frame: Any = None) -> Any:
         """``D(y, x)``: partial derivative, seeing through right-hand sides.
 
@@ -735,6 +784,7 @@ class Workspace(Mapping):
         atom = isinstance(value, sp.Symbol | sp.Derivative | AppliedUndef)
         return value if atom else x
 
+    @statement
     def dt(self, y: Any, frame: Any = None) -> Any:
         """``Dt(y)``: total time derivative, seeing through right-hand sides
         (except the auxiliary speeds', see ``Model._auxiliary_kept``)."""
@@ -746,6 +796,7 @@ class Workspace(Mapping):
             return y.applyfunc(lambda e: sp.diff(e, t))
         return sp.diff(y, t)
 
+    @statement
     def evaluate(self, y: Any, subs: Mapping[Any, Any] | None = None) -> Any:
         """``Evaluate(y, a=x, b=2)``: substitute, seeing through other names."""
         subs = {sp.sympify(k): sp.sympify(v) for k, v in (subs or {}).items()}
@@ -765,6 +816,7 @@ class Workspace(Mapping):
             )
         return y
 
+    @statement
     def taylor(self, y: Any, order: Any, points: Iterable[tuple[Any, ...]]) -> Any:
         """``Taylor(y, 0:2, w=a, x=0:dx)``; see :func:`algebra.taylor`."""
         from . import algebra
@@ -774,6 +826,7 @@ class Workspace(Mapping):
         y = self.form(self.resolve(self.val(y), keep=[p[0] for p in pts]))
         return algebra.taylor(y, orders, pts)
 
+    @statement
     def solve(
         self, eqs: Any, unknowns: Iterable[Any], *, line: int | None = None
     ) -> tuple:
@@ -813,16 +866,19 @@ class Workspace(Mapping):
                 keep.append(entry.obj)
         return keep
 
+    @statement
     def eig(self, m: Any) -> Any:
         from . import algebra
 
         return algebra.eig(self.val(m))
 
+    @statement
     def eig_vectors(self, m: Any) -> tuple[Any, Any]:
         from . import algebra
 
         return algebra.eig_vectors(self.val(m))
 
+    @statement
     def autotaylor(self, order: Any, points: Iterable[tuple[Any, ...]]) -> None:
         """``AutoTaylor(0:2, w=a, x=0)``: expand every later assigned value in a
         Taylor series about these points (linearization)."""
@@ -830,6 +886,7 @@ class Workspace(Mapping):
         orders = tuple(order) if isinstance(order, tuple | list) else (0, int(order))
         self._autotaylor = (orders, pts)
 
+    @statement
     def zee(self, y: Any, x: Any = None) -> Any:
         """``Zee(y)``: Autolev's display with Z variables; values are unchanged
         (numerical code always uses common subexpressions)."""
@@ -839,74 +896,92 @@ class Workspace(Mapping):
 
     # Autolev's algebra and matrix commands (their first argument resolved)
 
+    @statement
     def expand(self, y: Any, *args: Any) -> Any:
         """Autolev ``Expand``: see :func:`al2py_runtime.algebra.expand`."""
         return algebra.expand(self.form(y), *args)
 
+    @statement
     def factor(self, y: Any, *args: Any) -> Any:
         """Autolev ``Factor``: see :func:`al2py_runtime.algebra.factor`."""
         return algebra.factor(self.form(y), *args)
 
+    @statement
     def polynomial(self, y: Any, *args: Any) -> Any:
         """Autolev ``Polynomial``: see :func:`al2py_runtime.algebra.polynomial`."""
         return algebra.polynomial(self.form(y), *args)
 
+    @statement
     def roots(self, y: Any, *args: Any) -> Any:
         """Autolev ``Roots``: see :func:`al2py_runtime.algebra.roots`."""
         return algebra.roots(self.form(y), *args)
 
+    @statement
     def coef(self, y: Any, *args: Any) -> Any:
         """Autolev ``Coef``: see :func:`al2py_runtime.algebra.coef`."""
         return algebra.coef(self.form(y), *args)
 
+    @statement
     def exclude(self, y: Any, *args: Any) -> Any:
         """Autolev ``Exclude``: see :func:`al2py_runtime.algebra.exclude`."""
         return algebra.exclude(self.form(y), *args)
 
+    @statement
     def include(self, y: Any, *args: Any) -> Any:
         """Autolev ``Include``: see :func:`al2py_runtime.algebra.include`."""
         return algebra.include(self.form(y), *args)
 
+    @statement
     def arrange(self, y: Any, *args: Any) -> Any:
         """Autolev ``Arrange``: see :func:`al2py_runtime.algebra.arrange`."""
         return algebra.arrange(self.form(y), *args)
 
+    @statement
     def replace(self, y: Any, *args: Any) -> Any:
         """Autolev ``Replace``: see :func:`al2py_runtime.algebra.replace`."""
         return algebra.replace(self.form(y), *args)
 
+    @statement
     def epsilon(self, y: Any, *args: Any) -> Any:
         """Autolev ``Epsilon``: see :func:`al2py_runtime.algebra.epsilon`."""
         return algebra.epsilon(self.form(y), *args)
 
+    @statement
     def rows(self, y: Any, *args: Any) -> Any:
         """Autolev ``Rows``: see :func:`al2py_runtime.matrices.rows`."""
         return matrices.rows(self.val(y), *args)
 
+    @statement
     def cols(self, y: Any, *args: Any) -> Any:
         """Autolev ``Cols``: see :func:`al2py_runtime.matrices.cols`."""
         return matrices.cols(self.val(y), *args)
 
+    @statement
     def det(self, y: Any, *args: Any) -> Any:
         """Autolev ``Det``: see :func:`al2py_runtime.matrices.det`."""
         return matrices.det(self.form(y), *args)
 
+    @statement
     def diagmat(self, y: Any, *args: Any) -> Any:
         """Autolev ``Diagmat``: see :func:`al2py_runtime.matrices.diagmat`."""
         return matrices.diagmat(self.val(y), *args)
 
+    @statement
     def element(self, y: Any, *args: Any) -> Any:
         """Autolev ``Element``: see :func:`al2py_runtime.matrices.element`."""
         return matrices.element(self.val(y), *args)
 
+    @statement
     def inv(self, y: Any, *args: Any) -> Any:
         """Autolev ``Inv``: see :func:`al2py_runtime.matrices.inv`."""
         return matrices.inv(self.form(y), *args)
 
+    @statement
     def transpose(self, y: Any, *args: Any) -> Any:
         """Autolev ``Transpose``: see :func:`al2py_runtime.matrices.transpose`."""
         return matrices.transpose(self.val(y), *args)
 
+    @statement
     def block(self, rows: Any) -> Any:
         from .matrices import block
 
@@ -1138,46 +1213,3 @@ class AutolevNames(Mapping):
 
     def __repr__(self) -> str:
         return f"<Autolev names of {self._ws.filename}: {', '.join(self)}>"
-
-
-def _offer_model_commands() -> None:
-    """Give :class:`Workspace` one method per model command
-    (:data:`~.model.model.MODEL_COMMANDS`, the :class:`Model` methods marked
-    ``@command``) that calls it on :attr:`Workspace.model`, with the
-    command's name, signature and docstring."""
-    for name in sorted(MODEL_COMMANDS):
-        if name in Workspace.__dict__:
-            raise TypeError(f"Workspace.{name} hides the model command {name}")
-        attr = getattr(Model, name)
-        if isinstance(attr, property):
-            offered: Any = property(
-                functools.update_wrapper(_model_property(name), attr.fget)
-            )
-        else:
-            offered = functools.update_wrapper(_model_method(name), attr)
-        setattr(Workspace, name, offered)
-
-
-def _model_method(name: str) -> Callable[..., Any]:
-    def command(self: Workspace, *args: Any, **kw: Any) -> Any:
-        return getattr(self.model, name)(*args, **kw)
-
-    return command
-
-
-def _model_property(name: str) -> Callable[[Workspace], Any]:
-    def command(self: Workspace) -> Any:
-        return getattr(self.model, name)
-
-    return command
-
-
-_offer_model_commands()
-
-# failures inside a generated module name the .al line (model commands are
-# answered by Model's methods, numeric statements by Numerics' and setting
-# lines by Settings', so those are guarded too)
-guard_methods(Workspace)
-guard_methods(Model)
-guard_methods(Numerics)
-guard_methods(Settings)

@@ -105,6 +105,7 @@ RESERVED_IDENTIFIERS = (
             "Rational",
             "Integer",
             "Vector",
+            "inertia",
             "outer",
             "Workspace",
             "AUTOLEV",

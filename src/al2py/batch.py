@@ -522,12 +522,14 @@ def check_files(
     run_jobs: bool = True,
     heartbeat: Callable[[list[tuple[str, float]]], None] | None = None,
     heartbeat_every: float = 15.0,
+    started: Callable[[str], None] | None = None,
 ) -> list[FileResult]:
     """Check ``scripts`` with up to ``jobs`` worker processes at a time.
 
     Results come back in the order of ``scripts``; ``progress(k, n, result)``
-    is called as each finishes, and ``heartbeat([(file, seconds so far)])``
-    every ``heartbeat_every`` seconds while files are being checked."""
+    is called as each finishes, ``started(file)`` as each starts, and
+    ``heartbeat([(file, seconds so far)])`` every ``heartbeat_every`` seconds
+    while files are being checked."""
     results: list[FileResult | None] = [None] * len(scripts)
     _STOPPING.clear()
     running: dict[str, float] = {}
@@ -537,6 +539,8 @@ def check_files(
     def one(script: Script) -> FileResult:
         with running_lock:
             running[script.display] = time.perf_counter()
+        if started is not None:
+            started(script.display)
         try:
             return check_file(script, timeout, run_jobs)
         finally:

@@ -255,7 +255,7 @@ class _Evaluator:
         unit = unit_vector(key)
         if unit and node.primes == 0:
             try:
-                frame = ws.frame(unit[0])  # type: ignore[attr-defined]
+                frame = ws.model.frame(unit[0])  # type: ignore[attr-defined]
             except (KeyError, AttributeError):
                 pass
             else:

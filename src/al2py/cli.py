@@ -16,6 +16,7 @@ error: ...``) or files that fail their check, 3 for a bug in al2py itself,
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os  # part of the module interface (tests patch cli.os)
 import sys
 import time
@@ -287,6 +288,24 @@ def _progress(quiet: bool):
     return show
 
 
+def _live(what: str, total: int, unit: str):
+    """A live progress line on standard error when it is a terminal (the
+    runtime's :func:`al2py_runtime.progress.task`); else no task (``None``),
+    and the runtime (sympy) is not imported for it."""
+    if not sys.stderr.isatty():
+        return contextlib.nullcontext()
+    from al2py_runtime import progress
+
+    return progress.task(what, total, unit=unit)
+
+
+def _echo(line: str) -> None:
+    """A line on standard error that does not mix with the live line."""
+    from al2py_runtime import progress
+
+    progress.echo(line)
+
+
 def _find(paths: list[str], exclude: list[str]) -> list[batch.Script] | None:
     try:
         scripts = batch.find_scripts(paths, exclude)
@@ -313,19 +332,26 @@ def _check(args: argparse.Namespace) -> int:
         more = f" and {len(orphans) - 5} more" if len(orphans) > 5 else ""
         show(f"note: transcripts without a script are not checked: {names}{more}")
     start = time.perf_counter()
+    with _live("checking", len(scripts), "scripts") as task:
+        if show and task is not None:
+            show = _echo
 
-    def progress(k: int, n: int, r: batch.FileResult) -> None:
-        eta = batch.eta_seconds(k, n, time.perf_counter() - start)
-        show(batch.progress_line(k, n, r, eta))
+        def progress(k: int, n: int, r: batch.FileResult) -> None:
+            if task is not None:
+                task.update(k)
+            if show:
+                eta = batch.eta_seconds(k, n, time.perf_counter() - start)
+                show(batch.progress_line(k, n, r, eta))
 
-    results = batch.check_files(
-        scripts,
-        jobs=args.jobs,
-        timeout=args.timeout,
-        progress=progress if show else None,
-        run_jobs=not args.no_run,
-        heartbeat=(lambda cur: show(batch.heartbeat_line(cur))) if show else None,
-    )
+        results = batch.check_files(
+            scripts,
+            jobs=args.jobs,
+            timeout=args.timeout,
+            progress=progress,
+            run_jobs=not args.no_run,
+            heartbeat=(lambda cur: show(batch.heartbeat_line(cur))) if show else None,
+            started=task.doing if task is not None else None,
+        )
     elapsed = time.perf_counter() - start
     sys.stdout.write(batch.format_report(results, elapsed))
     sys.stdout.flush()

@@ -15,6 +15,7 @@ line and the exit status is 2 (the other files are written).
 from __future__ import annotations
 
 import argparse
+import linecache
 import sys
 import types
 from pathlib import Path
@@ -35,9 +36,12 @@ def parser() -> argparse.ArgumentParser:
         "Nonlinear) that writes the tables NAME.1, ... as run() does.  "
         "'CODE Dynamics() NAME.c, NOSUBS' writes the equations only.",
         epilog="C: 'cc -O2 -std=c99 -o NAME NAME.c -lm && ./NAME [X=VALUE ...]'; "
-        "Fortran: 'gfortran -O2 -o NAME NAME.f && ./NAME'; MATLAB or Octave: "
-        "'octave --eval NAME' in the folder of NAME.m.  Each reads NAME.in "
-        "(values from column 60) from the current folder.",
+        "Fortran: 'gfortran -O2 -o NAME NAME.f && ./NAME [X=VALUE ...]'; MATLAB"
+        " or Octave: 'octave --eval \"NAME X=VALUE ...\"' in the folder of "
+        "NAME.m.  Each reads NAME.in (values from column 60) from the current "
+        "folder, then the X=VALUE arguments.  No file is written twice: a "
+        "job whose files another job already wrote is named apart, NAME_2 "
+        "(docs/jobs.md).",
     )
     p.add_argument("input", help="the .al script")
     p.add_argument(
@@ -72,6 +76,13 @@ def main(argv: list[str]) -> int:
     code = convert(text, args.input).code
     module = types.ModuleType(path.stem)
     module.__file__ = str(path.with_suffix(".py"))
+    # the module's text, for the progress line and errors naming .al lines
+    linecache.cache[module.__file__] = (
+        len(code),
+        None,
+        code.splitlines(keepends=True),
+        module.__file__,
+    )
     try:
         exec(compile(code, module.__file__, "exec"), module.__dict__)  # noqa: S102
     except Exception as exc:  # noqa: BLE001 - the model itself fails
@@ -89,9 +100,12 @@ def main(argv: list[str]) -> int:
     if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
-    written, errors = write_programs(ws, args.outdir, lang=args.lang)
+    notes: list[str] = []
+    written, errors = write_programs(ws, args.outdir, lang=args.lang, notes=notes)
     for item in written:
         print(f"Wrote {item}")
+    for note in notes:
+        print(f"al2py: note: {note}", file=sys.stderr)
     for message in errors:
         print(f"al2py: error: {message}", file=sys.stderr)
     return 2 if errors else 0

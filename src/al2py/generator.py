@@ -10,12 +10,24 @@ cannot inject code.
 
 from __future__ import annotations
 
+import io
 import re
 import textwrap
+import tokenize
 from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
-from al2py_runtime.vocabulary import BUILTINS, Builtin, Decl, Form, Kind, Match, Style
+from al2py_runtime.model.model import MODEL_COMMANDS
+from al2py_runtime.safety import echo_lines
+from al2py_runtime.vocabulary import (
+    BUILTINS,
+    Builtin,
+    Decl,
+    Form,
+    Kind,
+    Match,
+    Style,
+)
 
 from . import ir
 from .analysis import (
@@ -46,6 +58,15 @@ _POINT_THEORIES = {
     "A1PT": "a1pt_theory",
 }
 _COMMENT_WIDTH = 84
+#: syntactical forms whose assignment is sympy's own setter
+#: (``P_O_P> = v`` is ``P.set_pos(O, v)``), by form
+_SYMPY_SETTERS = {
+    Form.POS: "set_pos",
+    Form.VEL: "set_vel",
+    Form.ACC: "set_acc",
+    Form.ANGVEL: "set_ang_vel",
+    Form.ANGACC: "set_ang_acc",
+}
 
 
 class Imports:
@@ -84,6 +105,7 @@ class Generator:
         self.help_jobs: list[tuple[str, str | None, int]] = []
         self.has_kane = False  # Fr() or FrStar() was generated
         self._kd_started = False  # ``kd_eqs = []`` was emitted
+        self._echoed = 0  # lines of the .al echoed so far
 
     # ------------------------------------------------------------ driving
 
@@ -99,7 +121,8 @@ class Generator:
                 raise SemanticError(
                     "this statement is too deeply nested to convert", stmt.span
                 ) from None
-        return out
+        out.extend(self.echo_through(len(self.lines)))
+        return _model_calls(out)
 
     def statement(self, stmt: ir.Stmt, *, line: int | None = None) -> list[str]:
         self._facts = self.facts.of(stmt)
@@ -108,35 +131,25 @@ class Generator:
         if emit is None:
             raise InternalError(f"no emitter for {type(stmt).__name__}")
         code = emit(stmt)
-        if isinstance(stmt, ir.Comment) or line is not None:
+        if line is not None:
             return code
-        return [*self.echo(stmt), *code]
-
-    def echo(self, stmt: ir.Stmt) -> list[str]:
-        """The ``.al`` source of a statement, as Python comments."""
         span = stmt.span
-        first, last = span.line, max(span.end_line, span.line)
-        text = [
-            self.lines[i - 1].strip()
-            for i in range(first, last + 1)
-            if i <= len(self.lines)
-        ]
-        if first == last and 0 < first <= len(self.lines) and span.end_col:
-            # ``a = 1; b = 2``: each statement echoes its own text.
-            line = self.lines[first - 1]
-            before = line[: span.col - 1].strip()
-            after = line[span.end_col - 1 :].split("%", 1)[0].strip().lstrip(";")
-            if before or after.strip():
-                text = [line[span.col - 1 : span.end_col - 1].strip() + ";"]
-        return [c for t in text if t for c in comment_lines(t, prefix="al> ")]
+        return [*self.echo_through(max(span.end_line, span.line)), *code]
+
+    def echo_through(self, last: int) -> list[str]:
+        """The ``.al`` lines up to ``last`` not yet echoed, as ``# al>``
+        comments: each line of the file appears once in the module, and the
+        transcript reads its source from them (``names.transcript``)."""
+        out: list[str] = []
+        while self._echoed < min(last, len(self.lines)):
+            out.extend(echo_lines(self.lines[self._echoed]))
+            self._echoed += 1
+        return out
 
     # -------------------------------------------------------- statements
 
     def stmt_Comment(self, stmt: ir.Comment) -> list[str]:
-        text = stmt.text.strip()
-        if stmt.code_comment:
-            text = "%" + text
-        return comment_lines(text) if text else ["#"]
+        return []  # its line is echoed as it stands
 
     def stmt_Setting(self, stmt: ir.Setting) -> list[str]:
         value = stmt.value or ""
@@ -215,7 +228,11 @@ class Generator:
         return [f"{idents} = al.constants({specs}, line={self._line})"]
 
     def _mass(self, stmt: ir.Declaration) -> list[str]:
+        """``Mass P=MP``: the mass of the module's sympy ``Particle`` or
+        ``RigidBody`` (``P_particle.mass = MP``), then the runtime's record
+        of it (Autolev's normal form, the body's central inertia)."""
         out = self._declare_new()
+        bodies = []
         for item in stmt.items:
             assert isinstance(item.target, ir.Name)
             obj = self.facts.object(item.target.name)
@@ -224,8 +241,23 @@ class Generator:
                 sym = self._symbol_for_name(first)
                 value = self.expr(item.values[1])
                 out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
-            out.append(f"al.set_mass({obj.ident}, {self.expr(first)})")
+            body = self._sympy_body(obj)
+            if body is None:  # not declared as a body or particle: its error
+                out.append(f"al.set_mass({obj.ident}, {self.expr(first)})")
+                continue
+            out.append(f"{body}.mass = {self.expr(first)}")
+            bodies.append(body)
+        if bodies:
+            out.append(f"al.given_masses({', '.join(bodies)}, line={self._line})")
         return out
+
+    def _sympy_body(self, obj: Symbol) -> str | None:
+        """The module's name for the sympy ``RigidBody``/``Particle`` of a
+        declared body or particle (None for anything else)."""
+        suffix = {Decl.BODY: "_body", Decl.PARTICLE: "_particle"}.get(obj.kind)
+        if suffix is None:
+            return None
+        return self.facts.helper_ident(obj.key + suffix, obj.ident + suffix)
 
     def _inertia(self, stmt: ir.Declaration) -> list[str]:
         out = self._declare_new()
@@ -249,7 +281,18 @@ class Generator:
                 value = self.expr(item.values[0])
                 out.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
         scalars = ", ".join(self.expr(item.target) for item in rest)
-        out.append(f"al.set_inertia({obj.ident}, {scalars}{about}{basis})")
+        body_ident = self._sympy_body(obj)
+        if about or basis or body_ident is None or not 1 <= len(rest) <= 6:
+            # about another point (its position may come later) or in
+            # another basis: Autolev's rule, the runtime's
+            out.append(f"al.set_inertia({obj.ident}, {scalars}{about}{basis})")
+            return out
+        inertia = self.imports.use("sympy.physics.mechanics", "inertia")
+        zeros = ", 0" * (3 - len(rest)) if len(rest) < 3 else ""
+        out.append(
+            f"{body_ident}.central_inertia = {inertia}({obj.ident}, {scalars}{zeros})"
+        )
+        out.append(f"al.given_inertia({body_ident}, line={self._line})")
         return out
 
     def stmt_Assign(self, stmt: ir.Assign) -> list[str]:
@@ -265,6 +308,14 @@ class Generator:
             if setter is None or target.primes:
                 return [f"al.assign({target.key!r}, {value}, line={self._line})"]
             objs = [self._object(form.parts[i]) for i in form.row.setter_order]
+            sympy_setter = _SYMPY_SETTERS.get(form.kind)
+            if sympy_setter is not None:
+                # sympy is told; the runtime reads it back with Autolev's rules
+                obj, other = objs
+                return [
+                    f"{obj}.{sympy_setter}({other}, {value})",
+                    f"al.given_{setter[4:]}({obj}, {other}, line={self._line})",
+                ]
             return [f"al.{setter}({', '.join(objs)}, {value}, line={self._line})"]
         sym = self._facts.target
         if sym is None:
@@ -349,7 +400,7 @@ class Generator:
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
-                return [*self._sympy_hint(expr, b), self._command(expr, b)]
+                return self._sympy_call(expr, b) or [self._command(expr, b)]
             if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
@@ -362,25 +413,37 @@ class Generator:
         label = ir.autolev_text(expr)  # also from RUN files and macros
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
 
-    def _sympy_hint(self, call: ir.Call, b: Builtin) -> list[str]:
-        """A comment with the sympy.physics.mechanics call a command amounts to."""
+    def _sympy_call(self, call: ir.Call, b: Builtin) -> list[str]:
+        """A rotation command as sympy's own call (``A.orient_axis(N, N.z,
+        QA)``), then the runtime's record of it (its response, its named
+        direction cosines); ``[]`` where Autolev's command is the runtime's
+        (an axis given as a vector, Euler parameters, Rodrigues)."""
         args = call.args
-        if b.name in _POINT_THEORIES and all(isinstance(a, ir.Name) for a in args):
-            n, a, o, p = (self.expr(x) for x in args)
-            return [f"# sympy: {p}.{_POINT_THEORIES[b.name]}({o}, {n}, {a})"]
+        if b.name not in ("SIMPROT", "DIRCOS") or len(args) < 4:
+            return []
+        if not all(isinstance(a, ir.Name) for a in args[:2]):
+            return []
+        parent, child = self.expr(args[0]), self.expr(args[1])
+        record = f"al.given_orientation({child}, {parent}, line={self._line})"
         if b.name == "SIMPROT":
             axis = int_literal(args[2])
-            if axis is not None and isinstance(args[0], ir.Name):
-                parent, child, angle = (
-                    self.expr(args[0]),
-                    self.expr(args[1]),
-                    self.expr(args[3]),
-                )
-                sign = "-" if axis < 0 else ""
-                unit = f"{parent}.{'xyz'[abs(axis) - 1]}"
-                return [
-                    f"# sympy: {child}.orient_axis({parent}, {sign}{unit}, {angle})"
-                ]
+            if axis is None or not 1 <= abs(axis) <= 3:
+                return []
+            sign = "-" if axis < 0 else ""
+            unit = f"{parent}.{'xyz'[abs(axis) - 1]}"
+            angle = self.expr(args[3])
+            return [f"{child}.orient_axis({parent}, {sign}{unit}, {angle})", record]
+        if b.name == "DIRCOS" and len(args) == 6 and isinstance(args[2], ir.Name):
+            kind = args[2].key.upper()
+            m = re.fullmatch(r"(BODY|SPACE)([123]{3})", kind)
+            if m is None:
+                return []
+            how = "orient_body_fixed" if m.group(1) == "BODY" else "orient_space_fixed"
+            angles = ", ".join(self.expr(a) for a in args[3:])
+            return [
+                f"{child}.{how}({parent}, ({angles}), {m.group(2)!r})",
+                record,
+            ]
         return []
 
     def _command(self, call: ir.Call, b: Builtin) -> str:
@@ -465,7 +528,7 @@ class Generator:
         return out
 
     def stmt_FileCommand(self, stmt: ir.FileCommand) -> list[str]:
-        return [f"al.save({stmt.filename!r})"]
+        return [f"al.save({stmt.filename!r}, line={self._line})"]
 
     def stmt_ListCommand(self, stmt: ir.ListCommand) -> list[str]:
         if stmt.name == "ENCODE":
@@ -840,4 +903,32 @@ def comment_lines(text: str, prefix: str = "") -> list[str]:
         for k, c in enumerate(chunks):
             lead = prefix if k == 0 else " " * len(prefix)
             out.append(f"# {lead}{c}".rstrip())
+    return out
+
+
+def _model_calls(lines: list[str]) -> list[str]:
+    """``al.simprot(...)`` spelled ``al.model.simprot(...)`` for each command
+    of the runtime's :class:`Model` (the class that owns it), in code only
+    (comments and strings are left as they are)."""
+    text = "\n".join(lines)
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
+        raise InternalError("generated code does not tokenize") from None
+    edits: list[tuple[int, int]] = []  # (row, col) where ``model.`` goes
+    for k in range(len(tokens) - 2):
+        a, dot, name = tokens[k], tokens[k + 1], tokens[k + 2]
+        if (
+            a.type == tokenize.NAME
+            and a.string == "al"
+            and dot.string == "."
+            and name.type == tokenize.NAME
+            and name.string in MODEL_COMMANDS
+            and (k == 0 or tokens[k - 1].string != ".")
+        ):
+            edits.append(name.start)
+    out = text.split("\n")
+    for row, col in reversed(edits):
+        line = out[row - 1]
+        out[row - 1] = line[:col] + "model." + line[col:]
     return out

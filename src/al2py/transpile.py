@@ -41,30 +41,36 @@ def _template() -> jinja2.Template:
     return env.get_template("module.py.j2")
 
 
-_CHUNK = 70  # characters of source per string literal in AL_SOURCE
+_HELP_WIDTH = 86  # columns of a help line in the module (88 with its backslash)
 
 
-def _literals(text: str) -> str:
-    """``text`` as adjacent string literals of at most ``_CHUNK`` characters
-    each, one per line, so that every line fits in 88 columns."""
-    return "\n".join(repr(text[i : i + _CHUNK]) for i in range(0, len(text), _CHUNK))
-
-
-def _source_literal(lines: tuple[str, ...]) -> str:
-    """``AL_SOURCE`` as a tuple literal whose lines all fit in 88 columns."""
-    items = []
-    for line in lines:
-        if len(repr(line)) <= _CHUNK + 10:
-            items.append(repr(line))
-        else:
-            items.append("(\n" + _literals(line) + "\n)")
-    return "(\n" + "".join(item + ",\n" for item in items) + ")"
+def _escaped(text: str) -> str:
+    """``text`` as it is written inside a triple-quoted string (trailing
+    spaces escaped, so that no line of the module ends in whitespace)."""
+    code = text.encode("unicode_escape").decode("ascii").replace('"', '\\"')
+    stripped = code.rstrip(" ")
+    return stripped + "\\x20" * (len(code) - len(stripped))
 
 
 def _help_literal(text: str) -> str:
-    """The ``--help`` text as adjacent string literals, a line (or a piece of
-    a long line) each, all within 88 columns."""
-    return "\n".join(_literals(line) for line in text.splitlines(keepends=True))
+    """The ``--help`` text as one triple-quoted string, a line of the module
+    per line of help.  A line too long for 88 columns goes on after a
+    backslash (a line continuation inside the string), between two words."""
+    out = []
+    for line in text.splitlines(keepends=True):
+        rest = line.rstrip("\n")
+        while len(_escaped(rest)) > _HELP_WIDTH:
+            cut = rest.rfind(" ", 1, _HELP_WIDTH)
+            while cut > 0 and len(_escaped(rest[:cut])) > _HELP_WIDTH:
+                cut = rest.rfind(" ", 1, cut)
+            if cut <= 0:  # one long word: cut it where it fits
+                cut = _HELP_WIDTH
+                while cut > 1 and len(_escaped(rest[:cut])) > _HELP_WIDTH:
+                    cut -= 1
+            out.append(_escaped(rest[:cut]) + "\\\n")
+            rest = rest[cut:]
+        out.append(_escaped(rest) + ("\n" if line.endswith("\n") else "\\\n"))
+    return '"""\\\n' + "".join(out) + '"""'
 
 
 def module_name(filename: str) -> str:
@@ -145,7 +151,6 @@ def convert(
         version=__version__,
         imports=generator.imports.lines(),
         body="\n".join(body),
-        source_lines=_source_literal(script.lines),
         has_job=generator.has_job,
         help_text=_help_literal(
             help_text(source_name, generator.help_inputs, generator.help_jobs)

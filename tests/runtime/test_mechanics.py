@@ -56,19 +56,19 @@ def same(a, b, al=None, tol=1e-9, seeds=(1, 2, 3)):
 
 def tutor4():
     al = Workspace("tutor4.al")
-    N = al.newtonian("N")
-    A, B = al.frames("A", "B")
-    P, Q = al.particles("P", "Q")
-    O = al.points("O")
+    N = al.model.newtonian("N")
+    A, B = al.model.frames("A", "B")
+    P, Q = al.model.particles("P", "Q")
+    O = al.model.points("O")
     U1, U2 = al.variables("U1", "U2")
     QA, QB = al.variables("QA'", "QB'")
     G, LA, LB = al.constants("G", "LA", "LB")
     K, LO = al.constants("K", "LO")
     MP, MQ = al.constants("MP+", "MQ+")
-    al.set_mass(P, MP)
-    al.set_mass(Q, MQ)
-    al.simprot(N, A, 3, QA, line=17)
-    al.simprot(N, B, 3, QB, line=18)
+    al.model.set_mass(P, MP)
+    al.model.set_mass(Q, MQ)
+    al.model.simprot(N, A, 3, QA, line=17)
+    al.model.simprot(N, B, 3, QB, line=18)
     al.assign("P_O_P>", LA * A.x, line=21)
     al.assign("P_P_Q>", LB * B.x, line=22)
     al.assign("QA'", U1 / LA, line=25)
@@ -76,14 +76,14 @@ def tutor4():
     al.assign("W_A_N>", D(QA, t) * A.z, line=29)
     al.assign("W_B_N>", D(QB, t) * B.z, line=30)
     al.assign("V_O_N>", Vector(0), line=33)
-    al.v2pts(N, A, O, P, line=34)
-    al.v2pts(N, B, P, Q, line=35)
-    al.gravity(G * N.x)
-    LOQ = al.assign("LOQ", al.mag(al["P_O_Q>"]), line=39)
+    al.model.v2pts(N, A, O, P, line=34)
+    al.model.v2pts(N, B, P, Q, line=35)
+    al.model.gravity(G * N.x)
+    LOQ = al.assign("LOQ", al.model.mag(al["P_O_Q>"]), line=39)
     STRETCH = al.assign("STRETCH", LOQ - LO, line=40)
     UVEC = al.assign("UVEC>", al["P_O_Q>"] / LOQ, line=41)
-    al.force_between(O, Q, -K * STRETCH * UVEC)
-    al.assign("ZERO", al.fr(), line=45)
+    al.model.force_between(O, Q, -K * STRETCH * UVEC)
+    al.assign("ZERO", al.model.fr(), line=45)
     return al, locals()
 
 
@@ -109,15 +109,15 @@ def test_tutor4_responses_and_forms():
     N, A, Q, O, U1 = v["N"], v["A"], v["Q"], v["O"], v["U1"]
     # reversal and chaining of positions
     assert al["P_Q_O>"] == -al["P_O_Q>"]
-    assert al.pos(O, Q) == al["P_O_P>"] + al["P_P_Q>"]
+    assert al.model.pos(O, Q) == al["P_O_P>"] + al["P_P_Q>"]
     # V_P_N> = U1*A2> once the kinematical equation is used
     vp = al["V_P_N>"]
-    assert same(al.dot(vp, A.y), U1, al) and same(al.dot(vp, A.x), 0, al)
+    assert same(al.model.dot(vp, A.y), U1, al) and same(al.model.dot(vp, A.x), 0, al)
     # DCM elements and names
     assert al["N_A[1,2]"] == -sp.sin(v["QA"])
-    assert al.point("O") is O and al.frame("a") is A
-    assert al["FORCE_Q>"] == al.force_on(Q)
-    assert al.vel(al.point("NO"), N) == Vector(0)
+    assert al.model.point("O") is O and al.model.frame("a") is A
+    assert al["FORCE_Q>"] == al.model.force_on(Q)
+    assert al.model.vel(al.model.point("NO"), N) == Vector(0)
 
 
 # ------------------------------------------------------ tutor5 / tutor7
@@ -127,9 +127,9 @@ def fourbar(mode):
     """tutor5 (mode "static"), tutor7 ("dependent"), tutor7c ("aux2"),
     tutor7a ("aux3")."""
     al = Workspace("tutor7.al")
-    N = al.newtonian("N")
-    A, B, C = al.bodies("A", "B", "C")
-    O, P, Q, R = al.points("O", "P", "Q", "R")
+    N = al.model.newtonian("N")
+    A, B, C = al.model.bodies("A", "B", "C")
+    O, P, Q, R = al.model.points("O", "P", "Q", "R")
     n_speeds = 4 if mode == "aux3" else 3
     us = al.variables(*[f"U{i}'" for i in range(1, n_speeds + 1)])
     U1, U2, U3 = us[:3]
@@ -144,12 +144,12 @@ def fourbar(mode):
         H = al.constants("H")
     MA, MB, MC = al.constants("MA+", "MB+", "MC+")
     for body, m, val, length in ((A, MA, 10, LA), (B, MB, 20, LB), (C, MC, 20, LC)):
-        al.set_mass(body, m)
+        al.model.set_mass(body, m)
         al.assign(str(m), val)
-        al.set_inertia(body, 0, m * length**2 / 12, m * length**2 / 12)
-    al.simprot(N, A, 3, QA)
-    al.simprot(N, B, 3, QB)
-    al.simprot(N, C, 3, QC)
+        al.model.set_inertia(body, 0, m * length**2 / 12, m * length**2 / 12)
+    al.model.simprot(N, A, 3, QA)
+    al.model.simprot(N, B, 3, QB)
+    al.model.simprot(N, C, 3, QC)
     al.assign("P_O_P>", LA * A.x)
     al.assign("P_P_Q>", LB * B.x)
     al.assign("P_R_Q>", LC * C.x)
@@ -164,31 +164,31 @@ def fourbar(mode):
     al.assign("W_B_N>", D(QB, t) * B.z)
     al.assign("W_C_N>", D(QC, t) * C.z)
     loop = al.assign("LOOP>", al["P_O_P>"] + al["P_P_Q>"] + al["P_Q_R>"] + al["P_R_O>"])
-    al.assign("CONFIG[1]", al.dot(loop, N.x))
-    al.assign("CONFIG[2]", al.dot(loop, N.y))
+    al.assign("CONFIG[1]", al.model.dot(loop, N.x))
+    al.assign("CONFIG[2]", al.model.dot(loop, N.y))
     if mode == "aux3":
         al.assign("V_O_N>", us[3] * N.x)
     else:
         al.assign("V_O_N>", 0)
-    AO, BO, CO = al.point("AO"), al.point("BO"), al.point("CO")
-    al.v2pts(N, A, O, AO)
-    al.v2pts(N, A, O, P)
-    al.v2pts(N, B, P, BO)
-    al.v2pts(N, B, P, Q)
-    al.v2pts(N, C, Q, CO)
-    al.v2pts(N, C, Q, R)
+    AO, BO, CO = al.model.point("AO"), al.model.point("BO"), al.model.point("CO")
+    al.model.v2pts(N, A, O, AO)
+    al.model.v2pts(N, A, O, P)
+    al.model.v2pts(N, B, P, BO)
+    al.model.v2pts(N, B, P, Q)
+    al.model.v2pts(N, C, Q, CO)
+    al.model.v2pts(N, C, Q, R)
     which = "DEPENDENT" if mode in ("static", "dependent") else "AUXILIARY"
-    al.assign(f"{which}[1]", al.dot(al["V_R_N>"], N.x))
-    al.assign(f"{which}[2]", al.dot(al["V_R_N>"], N.y))
+    al.assign(f"{which}[1]", al.model.dot(al["V_R_N>"], N.x))
+    al.assign(f"{which}[2]", al.model.dot(al["V_R_N>"], N.y))
     if mode == "aux3":
-        al.assign("AUXILIARY[3]", al.dot(al["V_O_N>"], N.x))
-        al.constrain(which, [U2, U3, us[3]], line=70)
+        al.assign("AUXILIARY[3]", al.model.dot(al["V_O_N>"], N.x))
+        al.model.constrain(which, [U2, U3, us[3]], line=70)
     else:
-        al.constrain(which, [U2, U3], line=70)
+        al.model.constrain(which, [U2, U3], line=70)
     if mode == "static":
-        al.gravity(G * N.x)
+        al.model.gravity(G * N.x)
         al.assign("FORCE_Q>", H * N.y)
-        al.assign("ZERO", al.fr())
+        al.assign("ZERO", al.model.fr())
         al.assign("ZERO[2]", al["CONFIG[1]"])
         al.assign("ZERO[3]", al["CONFIG[2]"])
         return al, locals()
@@ -196,22 +196,22 @@ def fourbar(mode):
     al.assign("ALF_B_N>", al.dt(al["W_B_N>"], N))
     al.assign("ALF_C_N>", al.dt(al["W_C_N>"], N))
     al.assign("A_O_N>", 0)
-    al.a2pts(N, A, O, AO)
-    al.a2pts(N, A, O, P)
-    al.a2pts(N, B, P, BO)
-    al.a2pts(N, B, P, Q)
-    al.a2pts(N, C, Q, CO)
-    al.gravity(G * N.x)
+    al.model.a2pts(N, A, O, AO)
+    al.model.a2pts(N, A, O, P)
+    al.model.a2pts(N, B, P, BO)
+    al.model.a2pts(N, B, P, Q)
+    al.model.a2pts(N, C, Q, CO)
+    al.model.gravity(G * N.x)
     al.assign("FORCE_O>", FA1 * N.x + FA2 * N.y)
     if mode != "dependent":
         al.assign("FORCE_R>", FC1 * N.x + FC2 * N.y)
-    al.assign("ZERO", al.fr() + al.frstar())
+    al.assign("ZERO", al.model.fr() + al.model.frstar())
     if mode == "dependent":
-        al.kane(line=90)
+        al.model.kane(line=90)
     elif mode == "aux2":
-        al.kane(FC1, FC2, line=90)
+        al.model.kane(FC1, FC2, line=90)
     else:
-        al.kane(FC1, FC2, FA1, line=90)
+        al.model.kane(FC1, FC2, FA1, line=90)
     return al, locals()
 
 
@@ -231,20 +231,20 @@ def test_tutor5_static_four_bar():
 
 def test_tutor3_configuration_constraints():
     al = Workspace("tutor3.al")
-    A, B, C, N = al.frames("A", "B", "C", "N")
-    O, P, Q, R = al.points("O", "P", "Q", "R")
+    A, B, C, N = al.model.frames("A", "B", "C", "N")
+    O, P, Q, R = al.model.points("O", "P", "Q", "R")
     QA, QB, QC = al.variables("QA", "QB", "QC")
     LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN")
-    al.simprot(N, A, 3, QA)
-    al.simprot(N, B, 3, QB)
-    al.simprot(N, C, 3, QC)
+    al.model.simprot(N, A, 3, QA)
+    al.model.simprot(N, B, 3, QB)
+    al.model.simprot(N, C, 3, QC)
     al.assign("P_O_P>", LA * A.x)
     al.assign("P_P_Q>", LB * B.x)
     al.assign("P_R_Q>", LC * C.x)
     al.assign("P_O_R>", LN * N.y)
     loop = al.assign("LOOP>", al["P_O_P>"] + al["P_P_Q>"] + al["P_Q_R>"] + al["P_R_O>"])
-    c1 = al.assign("CONFIG[1]", al.dot(loop, N.x))
-    c2 = al.assign("CONFIG[2]", al.dot(loop, N.y))
+    c1 = al.assign("CONFIG[1]", al.model.dot(loop, N.x))
+    c2 = al.assign("CONFIG[2]", al.model.dot(loop, N.y))
     s, c = sp.sin, sp.cos
     assert sp.simplify(c1[0] - (LA * c(QA) + LB * c(QB) - LC * c(QC))) == 0
     assert sp.simplify(c2[1] - (LA * s(QA) + LB * s(QB) - LC * s(QC) - LN)) == 0
@@ -252,20 +252,20 @@ def test_tutor3_configuration_constraints():
 
 def test_constrain_transcript():
     al = Workspace("constrain.al")
-    N = al.newtonian("N")
-    A, B, C = al.bodies("A", "B", "C")
-    al.points("P")
+    N = al.model.newtonian("N")
+    A, B, C = al.model.bodies("A", "B", "C")
+    al.model.points("P")
     U1, U2, U3 = al.variables("U1", "U2", "U3")
     QA, QB, QC = al.variables("QA", "QB", "QC")
     LA, LB, LC = al.constants("LA", "LB", "LC")
     VX, VY = al.specified("VX", "VY")
-    al.simprot(N, A, 3, QA, line=9)
-    al.simprot(N, B, 3, QB, line=11)
-    al.simprot(N, C, 3, QC, line=13)
+    al.model.simprot(N, A, 3, QA, line=9)
+    al.model.simprot(N, B, 3, QB, line=11)
+    al.model.simprot(N, C, 3, QC, line=13)
     al.assign("V_P_N>", LA * U1 * A.y + LB * U2 * B.y + LC * U3 * C.y, line=15)
-    al.assign("DEPENDENT[1]", al.dot(al["V_P_N>"], N.x) - VX, line=17)
-    al.assign("DEPENDENT[2]", al.dot(al["V_P_N>"], N.y) - VY, line=19)
-    al.constrain("DEPENDENT", [U2, U3], line=21)
+    al.assign("DEPENDENT[1]", al.model.dot(al["V_P_N>"], N.x) - VX, line=17)
+    al.assign("DEPENDENT[2]", al.model.dot(al["V_P_N>"], N.y) - VY, line=19)
+    al.model.constrain("DEPENDENT", [U2, U3], line=21)
     s, c = sp.sin, sp.cos
     got = {r.label: r for r in al.responses}
     assert got["N_A"].value == sp.Matrix(
@@ -309,16 +309,18 @@ def test_tutor7_against_sympy_kanes_method():
     R = v["R"]
     bodies = []
     for frame, m, length in ((A, 10, 1), (B, 20, 2), (C, 20, 2)):
-        cm = al.point(frame.name + "O")
-        cm.set_vel(N, al.model.actual_value(al.vel(cm, N), [U1, U2, U3]))
+        cm = al.model.point(frame.name + "O")
+        cm.set_vel(N, al.model.actual_value(al.model.vel(cm, N), [U1, U2, U3]))
         i = inertia(
             frame, 0, sp.Rational(m * length**2, 12), sp.Rational(m * length**2, 12)
         )
-        frame.set_ang_vel(N, al.model.actual_value(al.ang_vel(frame, N), [U1, U2, U3]))
+        frame.set_ang_vel(
+            N, al.model.actual_value(al.model.ang_vel(frame, N), [U1, U2, U3])
+        )
         bodies.append(RigidBody(frame.name, cm, frame, m, (i, cm)))
     g = sp.Rational(981, 100)
     loads = [(b.masscenter, b.mass * g * N.x) for b in bodies]
-    vr = al.model.actual_value(al.vel(R, N), [U1, U2, U3])
+    vr = al.model.actual_value(al.model.vel(R, N), [U1, U2, U3])
     km = KanesMethod(
         N,
         q_ind=[QA, QB, QC],
@@ -337,10 +339,10 @@ def test_tutor7_against_sympy_kanes_method():
 
 def tutor6(contact_forces=False):
     al = Workspace("tutor6.al")
-    N = al.newtonian("N")
-    A, B = al.frames("A", "B")
-    P, Q = al.particles("P", "Q")
-    O = al.points("O")
+    N = al.model.newtonian("N")
+    A, B = al.model.frames("A", "B")
+    P, Q = al.model.particles("P", "Q")
+    O = al.model.points("O")
     us = al.variables(*[f"U{i}'" for i in range(1, 5 if contact_forces else 3)])
     U1, U2 = us[:2]
     QA, QB = al.variables("QA'", "QB'")
@@ -352,10 +354,10 @@ def tutor6(contact_forces=False):
     FP = al.specified("FP")
     al.assign("FP", -DD * D(QA, t))
     MP, MQ = al.constants("MP+", "MQ+")
-    al.set_mass(P, MP)
-    al.set_mass(Q, MQ)
-    al.simprot(N, A, 3, QA)
-    al.simprot(N, B, 3, QB)
+    al.model.set_mass(P, MP)
+    al.model.set_mass(Q, MQ)
+    al.model.simprot(N, A, 3, QA)
+    al.model.simprot(N, B, 3, QB)
     al.assign("P_O_P>", LA * A.x)
     al.assign("P_P_Q>", LB * B.x)
     al.assign("QA'", U1 / LA)
@@ -366,26 +368,26 @@ def tutor6(contact_forces=False):
         al.assign("V_O_N>", us[2] * N.x + us[3] * N.y)
     else:
         al.assign("V_O_N>", Vector(0))
-    al.v2pts(N, A, O, P)
-    al.v2pts(N, B, P, Q)
+    al.model.v2pts(N, A, O, P)
+    al.model.v2pts(N, B, P, Q)
     if contact_forces:
-        al.assign("AUXILIARY[1]", al.dot(al["V_O_N>"], N.x))
-        al.assign("AUXILIARY[2]", al.dot(al["V_O_N>"], N.y))
-        al.constrain("AUXILIARY", [us[2], us[3]])
-    al.gravity(G * N.x)
+        al.assign("AUXILIARY[1]", al.model.dot(al["V_O_N>"], N.x))
+        al.assign("AUXILIARY[2]", al.model.dot(al["V_O_N>"], N.y))
+        al.model.constrain("AUXILIARY", [us[2], us[3]])
+    al.model.gravity(G * N.x)
     al.assign("FORCE_P>", al["FORCE_P>"] + FP * A.y)
-    LOQ = al.assign("LOQ", al.mag(al["P_O_Q>"]))
+    LOQ = al.assign("LOQ", al.model.mag(al["P_O_Q>"]))
     al.assign("STRETCH", LOQ - LO)
     UVEC = al.assign("UVEC>", al["P_O_Q>"] / LOQ)
-    al.assign("STRETCH'", al.dot(al["V_Q_N>"], UVEC))
-    al.force_between(O, Q, (-K * STRETCH - C * D(STRETCH, t)) * UVEC)
+    al.assign("STRETCH'", al.model.dot(al["V_Q_N>"], UVEC))
+    al.model.force_between(O, Q, (-K * STRETCH - C * D(STRETCH, t)) * UVEC)
     al.assign("FORCE_O>", al["FORCE_O>"] + F1 * N.x + F2 * N.y)
-    al.assign("ZERO", al.fr() + al.frstar(), line=62)
+    al.assign("ZERO", al.model.fr() + al.model.frstar(), line=62)
     zero_before_kane = al["ZERO"]
     if contact_forces:
-        al.kane(F1, F2, line=64)
+        al.model.kane(F1, F2, line=64)
     else:
-        al.kane(line=64)
+        al.model.kane(line=64)
     return al, locals()
 
 
@@ -461,9 +463,9 @@ def test_tutor6f_contact_forces():
 def tutor8():
     al = Workspace("tutor8.al")
     al.settings.set("Digits", 2)
-    N = al.newtonian("N")
-    A, B = al.bodies("A", "B")
-    O = al.points("O")
+    N = al.model.newtonian("N")
+    A, B = al.model.bodies("A", "B")
+    O = al.model.points("O")
     U1, U2 = al.variables("U1'", "U2'")
     X, THETA = al.variables("X'", "THETA'")
     L = al.constants("L")
@@ -472,13 +474,13 @@ def tutor8():
     F = al.specified("F")
     al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2)
     MA, MB = al.constants("MA+", "MB+")
-    al.set_mass(A, MA)
-    al.set_mass(B, MB)
+    al.model.set_mass(A, MA)
+    al.model.set_mass(B, MB)
     IB = al.constants("IB")
     al.assign("IB", MB * L**2 / 12)
-    al.set_inertia(B, IB, 0, IB)
-    al.simprot(N, B, 3, THETA)
-    AO, BO = al.point("AO"), al.point("BO")
+    al.model.set_inertia(B, IB, 0, IB)
+    al.model.simprot(N, B, 3, THETA)
+    AO, BO = al.model.point("AO"), al.model.point("BO")
     al.assign("P_O_AO>", X * N.x)
     al.assign("P_AO_BO>", 0.5 * L * B.y)
     al.assign("X'", U1)
@@ -486,11 +488,11 @@ def tutor8():
     al.assign("W_A_N>", Vector(0))
     al.assign("W_B_N>", D(THETA, t) * B.z)
     al.assign("V_AO_N>", al.dt(al["P_O_AO>"], N))
-    al.v2pts(N, B, AO, BO)
-    al.gravity(-G * N.y)
+    al.model.v2pts(N, B, AO, BO)
+    al.model.gravity(-G * N.y)
     al.assign("FORCE_AO>", al["FORCE_AO>"] + F * N.x)
-    al.assign("ZERO", al.fr() + al.frstar())
-    al.kane(line=49)
+    al.assign("ZERO", al.model.fr() + al.model.frstar())
+    al.model.kane(line=49)
     kane_zero = al["ZERO"]
     al.assign("ZERO", al.evaluate(al["ZERO"], {L: 1, MA: 10, MB: 1, G: 9.81}))
     dU1, dU2 = al.variables("dU1'", "dU2'")
@@ -563,32 +565,36 @@ def test_tutor8_cart_pendulum():
 
 def tutor9():
     al = Workspace("tutor9.al")
-    N = al.newtonian("N")
-    A = al.bodies("A")
-    B = al.frames("B")
+    N = al.model.newtonian("N")
+    A = al.model.bodies("A")
+    B = al.model.frames("B")
     U1, U2, U3 = al.variables("U1'", "U2'", "U3'")
     OMEGA = al.constants("OMEGA")
     J = al.constants("J")
     M = al.constants("M+")
-    al.set_mass(A, M)
+    al.model.set_mass(A, M)
     I1, I2, I3 = al.constants("I1+", "I2+", "I3+")
-    al.set_inertia(A, I1, I2, I3)
+    al.model.set_inertia(A, I1, I2, I3)
     al.assign("W_A_N>", U1 * A.x + U2 * A.y + U3 * A.z)
     al.assign("W_B_A>", OMEGA * A.z)
     al.assign("ALF_A_N>", al.dt(al["W_A_N>"], N))
     al.assign("ALF_B_A>", al.dt(al["W_B_A>"], A))
-    AO = al.point("AO")
+    AO = al.model.point("AO")
     al.assign("A_AO_N>", Vector(0))
     al.assign(
-        "ZERO", al.fr() + al.frstar() + al.gyrostat("FRSTAR", "CYLINDER", A, B, J)
+        "ZERO",
+        al.model.fr()
+        + al.model.frstar()
+        + al.model.gyrostat("FRSTAR", "CYLINDER", A, B, J),
     )
-    al.kane(line=31)
+    al.model.kane(line=31)
     h = al.assign(
         "H>",
-        al.momentum("ANGULAR", AO) + al.gyrostat("ANGMOM", "CYLINDER", A, B, J),
+        al.model.momentum("ANGULAR", AO)
+        + al.model.gyrostat("ANGMOM", "CYLINDER", A, B, J),
     )
-    al.assign("H", al.mag(h))
-    al.assign("PHI", sp.acos(al.dot(al.unitvec(h), A.z)))
+    al.assign("H", al.model.mag(h))
+    al.assign("PHI", sp.acos(al.model.dot(al.model.unitvec(h), A.z)))
     dU1, dU2, dU3 = al.variables("dU1'", "dU2'", "dU3'")
     nU3 = al.constants("nU3")
     nominal = {U1: 0, D(U1, t): 0, U2: 0, D(U2, t): 0, U3: nU3, D(U3, t): 0}
@@ -632,8 +638,8 @@ def test_tutor9_gyrostat():
     # angular momentum of the gyrostat
     h = al["H>"]
     A = v["A"]
-    assert sp.expand(al.dot(h, A.z) - (I3 * U3 + J * OMEGA)) == 0
-    assert sp.expand(al.dot(h, A.x) - I1 * U1) == 0
+    assert sp.expand(al.model.dot(h, A.z) - (I3 * U3 + J * OMEGA)) == 0
+    assert sp.expand(al.model.dot(h, A.x) - I1 * U1) == 0
 
 
 # ------------------------------------------------- tutor2 and transcripts
@@ -642,36 +648,38 @@ def test_tutor9_gyrostat():
 def tutor2():
     al = Workspace("tutor2.al")
     al.settings.set("Degrees", "ON")
-    A, B, C = al.bodies("A", "B", "C")
-    O, P = al.points("O", "P")
-    CM = al.points("CM")
+    A, B, C = al.model.bodies("A", "B", "C")
+    O, P = al.model.points("O", "P")
+    CM = al.model.points("CM")
     PHI = al.variables("PHI")
     W = al.constants("W")
     al.assign("W", 1)
     M = al.constants("M+")
     al.assign("M", 12)
     for body in (A, B, C):
-        al.set_mass(body, M)
-    al.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
-    al.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
-    al.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
-    al.simprot(A, B, -2, PHI)
+        al.model.set_mass(body, M)
+    al.model.set_inertia(A, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+    al.model.set_inertia(B, M * W**2 / 12, M * W**2 / 12, M * W**2 / 6)
+    al.model.set_inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
+    al.model.simprot(A, B, -2, PHI)
     al.assign("A_C", sp.eye(3))
     al.assign("P_O_AO>", -0.5 * W * A.x + 0.5 * W * A.y)
     al.assign("P_O_BO>", -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x)
     al.assign("P_O_CO>", W * A.y - 0.5 * W * C.x - 0.5 * W * C.z)
     al.assign("P_O_P>", W * A.y - W * C.z)
-    al.assign("P_O_CM>", al.cm(O))
-    al.assign("DISTANCE", al.mag(al["P_O_CM>"]))
-    al.assign("I_SYSTEM_CM>>", al.inertia(CM, A, B, C))
-    al.assign("I_SYSTEM_CM", al.represent(al["I_SYSTEM_CM>>"], A))
+    al.assign("P_O_CM>", al.model.cm(O))
+    al.assign("DISTANCE", al.model.mag(al["P_O_CM>"]))
+    al.assign("I_SYSTEM_CM>>", al.model.inertia(CM, A, B, C))
+    al.assign("I_SYSTEM_CM", al.model.represent(al["I_SYSTEM_CM>>"], A))
     lam, vecs = al.eig_vectors(al.evaluate(al["I_SYSTEM_CM"], {PHI: 90}))
     al.assign("LAMBDA", lam)
     al.assign("EIGENVECS", vecs)
-    al.assign("I_SYSTEM_O>>", al.inertia(O))
-    al.assign("L>", al.unitvec(al["P_O_P>"]))
-    il = al.assign("IL", al.dot(al["L>"], al.dot(al["I_SYSTEM_O>>"], al["L>"])))
-    mt = al.assign("MTOTAL", al.mass_of())
+    al.assign("I_SYSTEM_O>>", al.model.inertia(O))
+    al.assign("L>", al.model.unitvec(al["P_O_P>"]))
+    il = al.assign(
+        "IL", al.model.dot(al["L>"], al.model.dot(al["I_SYSTEM_O>>"], al["L>"]))
+    )
+    mt = al.assign("MTOTAL", al.model.mass_of())
     al.assign("GYRATION", (il / mt) ** 0.5)
     return al, locals()
 
@@ -689,8 +697,8 @@ def test_tutor2_mass_center_and_inertia():
     vecs = al["EIGENVECS"]
     lams = [float(x) for x in al["LAMBDA"]]
     row = vecs.row(lams.index(min(lams)))
-    evec = al.represent(row, v["A"])
-    cosang = float(al.dot(evec, v["A"].y)) / float(al.mag(evec))
+    evec = al.model.represent(row, v["A"])
+    cosang = float(al.model.dot(evec, v["A"].y)) / float(al.model.mag(evec))
     angle = math.degrees(math.acos(cosang))
     assert min(abs(angle - 65.90516), abs(angle - 114.09484)) < 1e-4
     assert al["MTOTAL"] == 36
@@ -704,18 +712,18 @@ def test_tutor2_mass_center_and_inertia():
 
 def test_mass_transcript():
     al = Workspace("mass.al")
-    A, B = al.bodies("A", "B")
-    C = al.particles("C")
+    A, B = al.model.bodies("A", "B")
+    C = al.model.particles("C")
     MB = al.constants("MB+")
     MC = al.constants("MC+")
-    al.set_mass(A, 12.5)
-    al.set_mass(B, MB)
+    al.model.set_mass(A, 12.5)
+    al.model.set_mass(B, MB)
     al.assign("MC", 10, line=4)
-    al.set_mass(C, MC)
-    assert al.assign("MASS_A", al.mass_of(A), line=6) is not None
+    al.model.set_mass(C, MC)
+    assert al.assign("MASS_A", al.model.mass_of(A), line=6) is not None
     assert sp.nsimplify(al["MASS_A"]) == sp.Rational(25, 2)
-    al.assign("MASS_AB", al.mass_of(A, B), line=8)
-    al.assign("TOTAL", al.mass_of(), line=10)
+    al.assign("MASS_AB", al.model.mass_of(A, B), line=8)
+    al.assign("TOTAL", al.model.mass_of(), line=10)
     assert sp.expand(al.resolve(al["MASS_AB"]) - (sp.Rational(25, 2) + MB)) == 0
     assert sp.expand(al.resolve(al["TOTAL"]) - (sp.Rational(45, 2) + MB)) == 0
     got = {r.label: r for r in al.responses}
@@ -724,17 +732,17 @@ def test_mass_transcript():
 
 def test_inertia_transcript():
     al = Workspace("inertia.al")
-    P = al.points("P")
-    B = al.bodies("B")
+    P = al.model.points("P")
+    B = al.model.bodies("B")
     MB = al.constants("MB+")
-    al.set_mass(B, MB)
+    al.model.set_mass(B, MB)
     I, J, L = al.constants("I", "J", "L")
     al.assign("P_BO_P>", L * B.x, line=5)
     ib = al.assign(
         "I_B_P>>", I * (B.x | B.x) + I * (B.y | B.y) + J * (B.z | B.z), line=7
     )
-    assert al.inertia_dyadic(B, P) == ib
-    got = al.assign("I_B_BO>>", al.inertia(al.point("BO"), B), line=9)
+    assert al.model.inertia_dyadic(B, P) == ib
+    got = al.assign("I_B_BO>>", al.model.inertia(al.model.point("BO"), B), line=9)
     expected = (
         I * (B.x | B.x) + (I - MB * L**2) * (B.y | B.y) + (J - MB * L**2) * (B.z | B.z)
     )
@@ -742,21 +750,21 @@ def test_inertia_transcript():
     labels = [(r.line, r.label) for r in al.responses]
     assert labels == [(5, "P_BO_P>"), (7, "I_B_P>>"), (9, "I_B_BO>>")]
     # the transfer theorem back to P gives the given dyadic
-    back = al.inertia(P, B) - ib
+    back = al.model.inertia(P, B) - ib
     assert back.to_matrix(B).applyfunc(sp.expand) == sp.zeros(3, 3)
 
 
 def test_inertia_about_a_point():
     """``Inertia A, about=O``: the dyadic is about O; the central one follows."""
     al = Workspace()
-    al.newtonian("N")
-    A = al.bodies("A")
-    O = al.points("O")
+    al.model.newtonian("N")
+    A = al.model.bodies("A")
+    O = al.model.points("O")
     m, length = al.constants("M", "L")
-    al.set_mass(A, m)
+    al.model.set_mass(A, m)
     al.assign("P_O_AO>", length / 2 * A.x)
-    al.set_inertia(A, 0, m * length**2 / 3, m * length**2 / 3, about=O)
-    central = al.central_inertia(A).to_matrix(A)
+    al.model.set_inertia(A, 0, m * length**2 / 3, m * length**2 / 3, about=O)
+    central = al.model.central_inertia(A).to_matrix(A)
     assert central.applyfunc(sp.expand) == sp.diag(
         0, m * length**2 / 12, m * length**2 / 12
     )
@@ -768,24 +776,24 @@ def test_inertia_about_a_point():
 
 def test_dircos_body_and_space_match_sympy():
     al = Workspace()
-    A, B, C = al.frames("A", "B", "C")
+    A, B, C = al.model.frames("A", "B", "C")
     Q1, Q2, Q3 = al.variables("Q1", "Q2", "Q3")
-    m = al.dircos(A, B, "BODY123", Q1, Q2, Q3, line=3)
+    m = al.model.dircos(A, B, "BODY123", Q1, Q2, Q3, line=3)
     assert m[0, 2] == sp.sin(Q2)
     assert al.responses[-1].label == "A_B" and al.responses[-1].line == 3
     for kind, method in (
         ("BODY313", "orient_body_fixed"),
         ("SPACE231", "orient_space_fixed"),
     ):
-        al.dircos(A, C, kind, Q1, Q2, Q3)
+        al.model.dircos(A, C, kind, Q1, Q2, Q3)
         from sympy.physics.vector import ReferenceFrame
 
         ref_a, ref_c = ReferenceFrame("RA"), ReferenceFrame("RC")
         getattr(ref_c, method)(ref_a, (Q1, Q2, Q3), kind[-3:])
-        for x, y in zip(al.dcm(A, C), ref_a.dcm(ref_c), strict=True):
+        for x, y in zip(al.model.dcm(A, C), ref_a.dcm(ref_c), strict=True):
             assert same(x, y)
     # Simprot with a negative axis is a rotation by -angle
-    al.simprot(A, B, -2, Q1)
+    al.model.simprot(A, B, -2, Q1)
     assert al["A_B[1,3]"] == -sp.sin(Q1)
 
 
@@ -796,15 +804,15 @@ def test_kindiffs_reproduce_the_angular_velocity(kind, n):
     from al2py_runtime.model import kinematics as kin
 
     al = Workspace()
-    N = al.newtonian("N")
-    B = al.bodies("B")
+    N = al.model.newtonian("N")
+    B = al.model.bodies("B")
     us = al.variables("U1", "U2", "U3")
     qs = al.variables(*[f"Q{i}'" for i in range(1, n + 1)])
-    al.dircos(N, B, kind, *qs)
-    w = al.angvel(N, B, kind, *qs)
+    al.model.dircos(N, B, kind, *qs)
+    w = al.model.angvel(N, B, kind, *qs)
     assert al.responses[-1].label == "W_B_N>"
     al.assign("W_B_N>", us[0] * B.x + us[1] * B.y + us[2] * B.z)
-    al.kindiffs(N, B, kind, *qs, line=9)
+    al.model.kindiffs(N, B, kind, *qs, line=9)
     assert [r.label for r in al.responses[-n:]] == [f"Q{i}'" for i in range(1, n + 1)]
     # the orientation's angular velocity with the q' substituted is the U's
     values = {}
@@ -826,7 +834,7 @@ def test_kindiffs_reproduce_the_angular_velocity(kind, n):
         # Angvel uses 2*(e4*e' - e4'*e - e x e'), equal to the direction
         # cosines' angular velocity only on the unit sphere.
         wq = kin.euler_parameter_angvel(list(qs))
-    assert same(al.dot(w, B.z), wq[2])
+    assert same(al.model.dot(w, B.z), wq[2])
 
 
 # ------------------------------------------------------ kinematics misc
@@ -835,15 +843,15 @@ def test_kindiffs_reproduce_the_angular_velocity(kind, n):
 def slider():
     """A particle P sliding along A1> of a frame A spinning about N3>."""
     al = Workspace()
-    N = al.newtonian("N")
-    A = al.frames("A")
-    O = al.points("O")
-    P = al.particles("P")
+    N = al.model.newtonian("N")
+    A = al.model.frames("A")
+    O = al.model.points("O")
+    P = al.model.particles("P")
     U1, U2 = al.variables("U1'", "U2'")
     QA, X = al.variables("QA'", "X'")
     MP, G = al.constants("MP+", "G")
-    al.set_mass(P, MP)
-    al.simprot(N, A, 3, QA)
+    al.model.set_mass(P, MP)
+    al.model.simprot(N, A, 3, QA)
     al.assign("QA'", U1)
     al.assign("X'", U2)
     al.assign("P_O_P>", X * A.x)
@@ -855,19 +863,19 @@ def slider():
 def test_one_point_formulas_match_differentiation():
     al, v = slider()
     N, A, O, P = v["N"], v["A"], v["O"], v["P"]
-    derived_v, derived_a = al.vel(P, N), al.acc(P, N)
-    vp = al.v1pt(N, A, O, P, line=4)
-    ap = al.a1pt(N, A, O, P, line=5)
+    derived_v, derived_a = al.model.vel(P, N), al.model.acc(P, N)
+    vp = al.model.v1pt(N, A, O, P, line=4)
+    ap = al.model.a1pt(N, A, O, P, line=5)
     assert [r.label for r in al.responses[-2:]] == ["V_P_N>", "A_P_N>"]
     for got, ref in ((vp, derived_v), (ap, derived_a)):
         assert (al.model.actual_value(got - ref)).to_matrix(N).applyfunc(
             sp.simplify
         ) == sp.zeros(3, 1)
     # partials and remainder
-    pv = al.partials(al["V_P_N>"])
+    pv = al.model.partials(al["V_P_N>"])
     assert len(pv) == 2
     assert al.model.actual_value(pv[1] - A.x) == Vector(0)
-    assert al.remainder(al["V_P_N>"]) == Vector(0)
+    assert al.model.remainder(al["V_P_N>"]) == Vector(0)
 
 
 def test_nicheck_is_constant_along_motion():
@@ -875,13 +883,13 @@ def test_nicheck_is_constant_along_motion():
     N, A, P = v["N"], v["A"], v["P"]
     U1, U2, X, MP, G = v["U1"], v["U2"], v["X"], v["MP"], v["G"]
     TQ = al.specified("TQ")
-    al.gravity(-G * N.y)
-    al.torque_between(N, A, TQ * A.z)
-    al.add_force(P, -MP * X * A.x)  # a spring towards O
-    al.assign("ZERO", al.fr() + al.frstar())
-    al.kane()
+    al.model.gravity(-G * N.y)
+    al.model.torque_between(N, A, TQ * A.z)
+    al.model.add_force(P, -MP * X * A.x)  # a spring towards O
+    al.assign("ZERO", al.model.fr() + al.model.frstar())
+    al.model.kane()
     sol = sp.solve(list(al["ZERO"]), [D(U1, t), D(U2, t)], dict=True)[0]
-    echeck = al.assign("ECHECK", al.nicheck())
+    echeck = al.assign("ECHECK", al.model.nicheck())
     rate = al.dt(echeck)
     rate = al.resolve(rate).xreplace(sol)
     assert sp.simplify(rate) == 0 or same(rate, 0, al)
@@ -894,29 +902,29 @@ def test_vector_helpers_and_derivatives():
     al, v = slider()
     N, A, QA, X, U1 = v["N"], v["A"], v["QA"], v["X"], v["U1"]
     r = al["P_O_P>"]
-    assert al.represent(r, N) == sp.Matrix([[X * sp.cos(QA), X * sp.sin(QA), 0]])
-    assert al.represent(sp.Matrix([[1, 2, 3]]), A) == A.x + 2 * A.y + 3 * A.z
-    assert al.matrix(A, 2 * (A.x | A.y))[0, 1] == 2
-    assert al.vector(A, 1, 2, 3) == al.vector(A, sp.Matrix([1, 2, 3]))
-    assert al.dyadic(A, 1, 2, 3).to_matrix(A) == sp.diag(1, 2, 3)
-    assert al.trace(al.dyadic(A, 1, 2, 3)) == 6
-    assert al.trace(sp.eye(2)) == 2
-    assert al.express(r, N) == X * sp.cos(QA) * N.x + X * sp.sin(QA) * N.y
-    assert al.dot(A.x, N.x) == sp.cos(QA)
-    assert al.dot(2 * (A.x | A.x), A.x) == 2 * A.x
-    assert al.dot(A.x, 2 * (A.x | A.x)) == 2 * A.x
-    assert al.dot(0, A.x) == 0 and al.dot(3, 4) == 12
-    assert al.cross(A.x, A.y) == A.z and al.cross(0, A.x) == Vector(0)
-    assert al.mag(3 * A.x + 4 * A.y) == 5 and al.mag(-2) == 2
-    assert al.magsq(r) == X**2
-    assert al.unitvec(3 * A.x) == A.x
-    assert al.unit_dyadic() & N.x == N.x
+    assert al.model.represent(r, N) == sp.Matrix([[X * sp.cos(QA), X * sp.sin(QA), 0]])
+    assert al.model.represent(sp.Matrix([[1, 2, 3]]), A) == A.x + 2 * A.y + 3 * A.z
+    assert al.model.matrix(A, 2 * (A.x | A.y))[0, 1] == 2
+    assert al.model.vector(A, 1, 2, 3) == al.model.vector(A, sp.Matrix([1, 2, 3]))
+    assert al.model.dyadic(A, 1, 2, 3).to_matrix(A) == sp.diag(1, 2, 3)
+    assert al.model.trace(al.model.dyadic(A, 1, 2, 3)) == 6
+    assert al.model.trace(sp.eye(2)) == 2
+    assert al.model.express(r, N) == X * sp.cos(QA) * N.x + X * sp.sin(QA) * N.y
+    assert al.model.dot(A.x, N.x) == sp.cos(QA)
+    assert al.model.dot(2 * (A.x | A.x), A.x) == 2 * A.x
+    assert al.model.dot(A.x, 2 * (A.x | A.x)) == 2 * A.x
+    assert al.model.dot(0, A.x) == 0 and al.model.dot(3, 4) == 12
+    assert al.model.cross(A.x, A.y) == A.z and al.model.cross(0, A.x) == Vector(0)
+    assert al.model.mag(3 * A.x + 4 * A.y) == 5 and al.model.mag(-2) == 2
+    assert al.model.magsq(r) == X**2
+    assert al.model.unitvec(3 * A.x) == A.x
+    assert al.model.unit_dyadic() & N.x == N.x
     assert al["1>>"] & N.y == N.y and al["0>"] == Vector(0)
     # D(v>, q, N) and Dt(v>, N) (hooks reached through Workspace.d/dt)
     assert al.d(r, QA, N) == X * A.y
     assert al.d(r, QA, A) == Vector(0)
     vel = al.dt(r, N)
-    assert al.model.actual_value(vel - al.vel(v["P"], N)) == Vector(0)
+    assert al.model.actual_value(vel - al.model.vel(v["P"], N)) == Vector(0)
     assert al.dt(r, A) == v["U2"] * A.x
     # Dt of a formed quantity sees through right-hand sides
     al.assign("W_A_N>", D(QA, t) * A.z)
@@ -927,18 +935,18 @@ def test_momentum_and_energy():
     al, v = slider()
     N, A, MP, X, U1, U2 = (v[k] for k in ("N", "A", "MP", "X", "U1", "U2"))
     O = v["O"]
-    assert sp.expand(al.ke() - MP * (U2**2 + X**2 * U1**2) / 2) == 0
-    lin = al.momentum("LINEAR")
+    assert sp.expand(al.model.ke() - MP * (U2**2 + X**2 * U1**2) / 2) == 0
+    lin = al.model.momentum("LINEAR")
     assert al.model.actual_value(lin - MP * (U2 * A.x + X * U1 * A.y)) == Vector(0)
-    ang = al.momentum("ANGULAR", O)
-    assert sp.expand(al.dot(ang, N.z) - MP * X**2 * U1) == 0
-    gen = al.momentum("GENERALIZED")
+    ang = al.model.momentum("ANGULAR", O)
+    assert sp.expand(al.model.dot(ang, N.z) - MP * X**2 * U1) == 0
+    gen = al.model.momentum("GENERALIZED")
     assert sp.expand(gen[0] - MP * X**2 * U1) == 0 and sp.expand(gen[1] - MP * U2) == 0
     # tstar of a spinning body
-    B = al.bodies("B")
-    al.set_inertia(B, 1, 2, 3)
+    B = al.model.bodies("B")
+    al.model.set_inertia(B, 1, 2, 3)
     al.assign("W_B_N>", U1 * B.z)
-    assert al.tstar(B, N) == -3 * D(U1, t) * B.z
+    assert al.model.tstar(B, N) == -3 * D(U1, t) * B.z
 
 
 def test_errors_and_non_forms():
@@ -946,23 +954,23 @@ def test_errors_and_non_forms():
     N, P = v["N"], v["P"]
     with pytest.raises(KeyError):
         al["V_Q_N>"]  # Q is not a point: not a form, not defined
-    Q = al.points("Q")
+    Q = al.model.points("Q")
     with pytest.raises(KeyError, match="P_O_Q"):
         al["P_O_Q>"]
     with pytest.raises(ValueError, match="V_Q_N"):
-        al.vel(Q, N)
+        al.model.vel(Q, N)
     # user vectors and dyadics with form-like names are plain values
-    al.assign("I_SYSTEM_O>>", al.unit_dyadic())
-    assert al["I_SYSTEM_O>>"] == al.unit_dyadic()
+    al.assign("I_SYSTEM_O>>", al.model.unit_dyadic())
+    assert al["I_SYSTEM_O>>"] == al.model.unit_dyadic()
     al.assign("UVEC>", N.x)
     assert al["UVEC>"] == N.x
     with pytest.raises(ValueError):
-        al.set_mass(Q, 1)
+        al.model.set_mass(Q, 1)
     with pytest.raises(ValueError):
-        al.mass_of(al.bodies("E"))
+        al.model.mass_of(al.model.bodies("E"))
     al.assign("FORCE_P>", N.x)
     al.assign("FORCE_P>", al["FORCE_P>"] + N.y)
-    assert al.force_on(P) == N.x + N.y
+    assert al.model.force_on(P) == N.x + N.y
 
 
 # ------------------------------------------- SymPy's examples: runtime rules
@@ -970,121 +978,121 @@ def test_errors_and_non_forms():
 
 def test_simprot_about_a_vector_rotates_about_it():
     al = Workspace()
-    N = al.newtonian("N")
-    A, B = al.frames("A", "B")
+    N = al.model.newtonian("N")
+    A, B = al.model.frames("A", "B")
     X = al.variables("X")
-    al.simprot(N, A, N.x + N.y, X, line=1)
+    al.model.simprot(N, A, N.x + N.y, X, line=1)
     B.orient_axis(N, (N.x + N.y).normalize(), X)
     assert sp.simplify(A.dcm(N) - B.dcm(N)) == sp.zeros(3, 3)
     w = (A.ang_vel_in(N) - B.ang_vel_in(N)).to_matrix(N)
     assert sp.simplify(w) == sp.zeros(3, 1)
     # a numeric angle about a unit vector: the 1-axis
-    m = al.simprot(N, A, N.x, sp.pi / 2, line=2)
+    m = al.model.simprot(N, A, N.x, sp.pi / 2, line=2)
     assert m == sp.Matrix([[1, 0, 0], [0, 0, -1], [0, 1, 0]])
     with pytest.raises(ValueError, match="zero"):
-        al.simprot(N, A, Vector(0), X, line=3)
+        al.model.simprot(N, A, Vector(0), X, line=3)
 
 
 def test_partials_one_speed_is_one_vector_several_a_tuple():
     al = Workspace()
-    A = al.frames("A")
-    P = al.particles("P")
+    A = al.model.frames("A")
+    P = al.model.particles("P")
     U1, U2 = al.variables("U1", "U2")
     al.assign("V_P_A>", U1 * A.x + 3 * U2 * A.y, line=1)
-    v = al.vel(P, A)
-    assert al.partials(v, U1) == A.x
-    assert al.partials(v, U1, U2) == (A.x, 3 * A.y)
+    v = al.model.vel(P, A)
+    assert al.model.partials(v, U1) == A.x
+    assert al.model.partials(v, U1, U2) == (A.x, 3 * A.y)
 
 
 def test_unit_dyadic_is_the_identity_in_any_frame():
     al = Workspace()
-    A = al.frames("A")  # no Newtonian frame, no orientation
-    one = al.express(al.unit_dyadic(), A)
+    A = al.model.frames("A")  # no Newtonian frame, no orientation
+    one = al.model.express(al.model.unit_dyadic(), A)
     assert one.to_matrix(A) == sp.eye(3)
     al2 = Workspace()
-    N = al2.newtonian("N")
-    B = al2.frames("B")  # not oriented relative to N
-    assert al2.express(al2.unit_dyadic(), B).to_matrix(B) == sp.eye(3)
+    N = al2.model.newtonian("N")
+    B = al2.model.frames("B")  # not oriented relative to N
+    assert al2.model.express(al2.model.unit_dyadic(), B).to_matrix(B) == sp.eye(3)
     # a dyadic that is not 1>> still needs the orientation
     with pytest.raises(ValueError):
-        al2.express(2 * (N.x | N.x) + (N.y | N.y) + (N.z | N.z), B)
+        al2.model.express(2 * (N.x | N.x) + (N.y | N.y) + (N.z | N.z), B)
 
 
 def test_dot_with_a_matrix_of_vectors_is_a_matrix():
     al = Workspace()
-    A = al.frames("A")
+    A = al.model.frames("A")
     v1 = 2 * A.x - 3 * A.y
     v2 = A.x + A.y
-    m = al.dot(v1, al.vector_matrix([[v2], [2 * v2]]))
+    m = al.model.dot(v1, al.model.vector_matrix([[v2], [2 * v2]]))
     assert m == sp.Matrix([[-1], [-2]])
 
 
 def test_angvel_with_two_frames_shows_the_angular_velocity():
     al = Workspace()
-    N = al.newtonian("N")
-    A = al.frames("A")
+    N = al.model.newtonian("N")
+    A = al.model.frames("A")
     C3 = al.constants("C3")
     al.assign("W_A_N>", C3 * A.z, line=1)
-    assert al.angvel(A, N, line=2) == -C3 * A.z  # W_N_A>
+    assert al.model.angvel(A, N, line=2) == -C3 * A.z  # W_N_A>
     assert al.responses[-1].label == "W_N_A>"
 
 
 def test_v2pts_waits_for_the_other_point():
     al = Workspace()
-    N = al.newtonian("N")
-    A = al.frames("A")
-    O, P = al.points("O", "P")
+    N = al.model.newtonian("N")
+    A = al.model.frames("A")
+    O, P = al.model.points("O", "P")
     C1, C3 = al.constants("C1", "C3")
     al.assign("W_A_N>", C3 * A.z, line=1)
-    al.v2pts(N, A, O, P, line=2)  # P_O_P> and V_O_N> are not known yet
+    al.model.v2pts(N, A, O, P, line=2)  # P_O_P> and V_O_N> are not known yet
     with pytest.raises(ValueError, match="V2pts"):
-        al.vel(P, N)
+        al.model.vel(P, N)
     al.assign("P_O_P>", C1 * A.x, line=3)
     al.assign("V_O_N>", Vector(0), line=4)
-    assert al.vel(P, N) == C1 * C3 * A.y
+    assert al.model.vel(P, N) == C1 * C3 * A.y
 
 
 def test_quantity_may_share_its_name_with_a_frame():
     al = Workspace()
-    A = al.frames("A")
+    A = al.model.frames("A")
     x = al.assign("A", 3, line=1)
     assert al["A"] == 3 and x == sp.Symbol("A", real=True)
-    assert al.frame("A") is A
+    assert al.model.frame("A") is A
 
 
 def test_particle_inertia_about_a_point():
     al = Workspace()
-    A = al.frames("A")
-    P1 = al.particles("P1")
-    O = al.points("O")
+    A = al.model.frames("A")
+    P1 = al.model.particles("P1")
+    O = al.model.points("O")
     C1, M1 = al.constants("C1", "M1")
-    al.set_mass(P1, M1)
+    al.model.set_mass(P1, M1)
     al.assign("P_P1_O>", C1 * A.x, line=1)
     i = al["I_P1_O>>"].to_matrix(A)
     assert i == sp.diag(0, M1 * C1**2, M1 * C1**2)
-    assert al.inertia_dyadic(P1, O).to_matrix(A) == i
+    assert al.model.inertia_dyadic(P1, O).to_matrix(A) == i
 
 
 def _motion_pendulum(with_kin_eq: bool):
     """A pendulum with MotionVariables' and no U variables."""
     al = Workspace()
-    N = al.newtonian("N")
-    A = al.frames("A")
-    P = al.particles("P")
+    N = al.model.newtonian("N")
+    A = al.model.frames("A")
+    P = al.model.particles("P")
     L, M, G = al.constants("L", "M", "G")
     if with_kin_eq:  # MotionVariables' Q', W'  with  Q' = W
-        Q, W = al.motion_variables("Q'", "W'")
+        Q, W = al.model.motion_variables("Q'", "W'")
         al.assign("Q'", W, line=1)
     else:  # MotionVariables' Q''
-        Q = al.motion_variables("Q''")
+        Q = al.model.motion_variables("Q''")
         W = D(Q, t)
-    al.simprot(N, A, 3, Q, line=2)
+    al.model.simprot(N, A, 3, Q, line=2)
     al.assign("W_A_N>", D(Q, t) * A.z, line=3)
     al.assign("P_NO_P>", L * A.x, line=4)
-    al.set_mass(P, M)
-    al.gravity(G * N.x)
-    al.assign("ZERO", al.fr() + al.frstar(), line=5)
-    al.kane(line=6)
+    al.model.set_mass(P, M)
+    al.model.gravity(G * N.x)
+    al.assign("ZERO", al.model.fr() + al.model.frstar(), line=5)
+    al.model.kane(line=6)
     return al, Q, W
 
 
@@ -1105,7 +1113,7 @@ def test_speeds_from_motion_variables():
 
 def test_motion_variable_named_for_a_rate_is_not_a_speed():
     al = Workspace()
-    TH, OM = al.motion_variables("TH''", "OM'")
+    TH, OM = al.model.motion_variables("TH''", "OM'")
     al.assign("OM", D(TH, t), line=1)
     assert al.model.generalized_speeds() == [D(TH, t)]
     # declared U variables take precedence

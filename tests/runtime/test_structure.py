@@ -29,6 +29,14 @@ What is checked, and how far a static check can see:
 * **The model parts' interface is explicit**: a method that one module of
   ``model/`` defines and another calls on ``self`` is public, has a docstring
   and a return annotation.
+* **A module's calls resolve to methods written in their class** (issue 33):
+  every ``al.NAME``, ``al.model.NAME``, ``al.numerics.NAME`` and
+  ``al.settings.NAME`` call of the golden modules is a function defined in
+  the body of ``Workspace``, ``Model`` (or one of its parts), ``Numerics``
+  or ``Settings``, as an editor's go-to-definition or ``mypy`` finds it; no
+  class gains a method at import (no ``setattr`` on a class, no
+  ``Class.attr = ...`` outside its body), and no caller's frame is read
+  (``sys._getframe``).
 """
 
 from __future__ import annotations
@@ -56,7 +64,6 @@ FOREIGN = {
     "_print": "sympy printers' dispatch (the printer extension protocol)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",
-    "_getframe": "sys._getframe: the generated module's line",
     "_current_frames": "sys._current_frames: the statement a long import derives",
     "_exit": "os._exit",
     "_assume_defined": "sympy.core.assumptions: the names of sympy's facts"
@@ -490,3 +497,142 @@ def test_the_layout_names_every_runtime_module():
         if d.is_dir() and (d / "__init__.py").exists() and f"{d.name}/" not in layout
     ]
     assert missing == []
+
+
+# ------------------------------------------------- the module's API (issue 33)
+
+GOLDEN_MODULES = ROOT.parent.parent / "tests" / "golden" / "modules"
+
+
+def _owners() -> dict[str, type]:
+    from al2py_runtime.jobs.numerics import Numerics
+    from al2py_runtime.model.model import Model
+    from al2py_runtime.names.settings import Settings
+    from al2py_runtime.workspace import Workspace
+
+    return {"al": Workspace, "model": Model, "numerics": Numerics, "settings": Settings}
+
+
+def written_in_class(cls: type, name: str) -> bool:
+    """``cls.name`` is a function written in the body of ``cls`` or of one of
+    its bases (its source is there), not one attached later."""
+    import inspect
+
+    for base in cls.__mro__:
+        func = base.__dict__.get(name)
+        if func is None:
+            continue
+        func = inspect.unwrap(getattr(func, "fget", func))
+        if not inspect.isfunction(func):
+            return False
+        return func.__qualname__ == f"{base.__name__}.{name}"
+    return False
+
+
+def module_calls(tree: ast.AST) -> set[tuple[str, str]]:
+    """``(owner, method)`` of every ``al.m(...)``, ``al.model.m(...)``,
+    ``al.numerics.m(...)`` and ``al.settings.m(...)`` call in a module."""
+    out = set()
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)):
+            continue
+        target = node.func.value
+        if isinstance(target, ast.Name) and target.id == "al":
+            out.add(("al", node.func.attr))
+        elif (
+            isinstance(target, ast.Attribute)
+            and isinstance(target.value, ast.Name)
+            and target.value.id == "al"
+        ):
+            out.add((target.attr, node.func.attr))
+    return out
+
+
+def test_the_checker_finds_an_attached_method():
+    from al2py_runtime.workspace import Workspace
+
+    class Late:
+        pass
+
+    Late.offered = lambda self: None  # type: ignore[attr-defined]
+    assert not written_in_class(Late, "offered")
+    assert written_in_class(Workspace, "assign")
+    assert not written_in_class(Workspace, "simprot")  # a Model command
+
+
+def test_every_module_call_is_written_in_its_class():
+    owners = _owners()
+    modules = sorted(GOLDEN_MODULES.glob("*.py"))
+    assert len(modules) > 20
+    unresolved = []
+    for path in modules:
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for owner, name in sorted(module_calls(tree)):
+            if owner not in owners or not written_in_class(owners[owner], name):
+                unresolved.append(f"{path.name}: al.{owner}.{name}")
+    assert unresolved == []
+
+
+def class_patches(tree: ast.AST) -> list[tuple[int, str]]:
+    """``setattr(Class, ...)`` and ``Class.attr = ...`` outside a class body
+    (a capitalized name taken for a class)."""
+    out = []
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id == "setattr"
+            and node.args
+            and isinstance(node.args[0], ast.Name)
+            and node.args[0].id[:1].isupper()
+        ):
+            out.append((node.lineno, f"setattr({node.args[0].id}, ...)"))
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                if (
+                    isinstance(target, ast.Attribute)
+                    and isinstance(target.value, ast.Name)
+                    and target.value.id[:1].isupper()
+                ):
+                    out.append((node.lineno, f"{target.value.id}.{target.attr} = ..."))
+    return out
+
+
+#: classes that still gain attributes at import, and why (not the API a
+#: generated module calls)
+PATCHED = {
+    "Intermediate": "sympy's assumption properties answered from one table"
+    " (intermediates/autoz.py)",
+    "CPrinter": "every sympy function's C printing goes through hoisted_call"
+    " (jobs/backends.py)",
+}
+
+
+def test_the_checker_finds_a_class_patch():
+    tree = ast.parse("setattr(Workspace, 'simprot', f)\nModel.x = property(g)\n")
+    assert sorted(what for _, what in class_patches(tree)) == [
+        "Model.x = ...",
+        "setattr(Workspace, ...)",
+    ]
+
+
+def test_no_class_gains_a_method_at_import():
+    import re
+
+    found = [
+        f
+        for f in everywhere(class_patches)
+        if re.search(r": (?:setattr\()?(\w+)", f).group(1) not in PATCHED
+    ]
+    assert found == []
+
+
+def test_no_caller_frame_is_read():
+    def frames(tree: ast.AST) -> list[tuple[int, str]]:
+        return [
+            (node.lineno, node.attr)
+            for node in ast.walk(tree)
+            if isinstance(node, ast.Attribute) and node.attr == "_getframe"
+        ]
+
+    assert everywhere(frames) == []

@@ -180,6 +180,10 @@ def c_source(program: Program, target: str) -> str:
         lines.append(f"    {_string(t.header if t else '')},")
     lines += [
         "};",
+        f"#define AL_NNOTE {len(program.notes)}  /* values taken as 0 */",
+        f"static const char *al_note[{max(len(program.notes), 1)}] = {{"
+        + ", ".join(_string(x) for x in program.notes or [""])
+        + "};",
         f"#define AL_DIGITS {program.digits}",
         f"#define AL_STEM {_string(program.stem)}",
         f"#define AL_WHERE {_string(job.where)}",
@@ -385,6 +389,7 @@ static int al_start(int argc, char **argv, double v[])
     if (al_read_in(AL_STEM ".in")) return 2;
     for (int i = 1; i < argc; i++)
         if (al_set(argv[i])) return 2;
+    for (int i = 0; i < AL_NNOTE; i++) fprintf(stderr, "note: %s\n", al_note[i]);
     for (int i = 0; i < AL_NIN; i++) v[i] = al_inputs[i].value * al_inputs[i].factor;
     return 0;
 }

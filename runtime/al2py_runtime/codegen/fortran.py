@@ -12,6 +12,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.fortran import FCodePrinter
 
+from ..jobs import backends
 from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
@@ -27,6 +28,11 @@ class _Printer(FCodePrinter):
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        if backends.without_re(expr):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _d(x: float) -> str:
@@ -57,6 +63,14 @@ def _string_write(unit: str, text: str, advance: bool = False) -> list[str]:
     if not quoted:
         return [f"      write({unit}, {fmt}) ''"]
     lines = [f"      write({unit}, {fmt}) '{quoted[0]}'"]
+    lines += [f"     &  // '{q}'" for q in quoted[1:]]
+    return lines
+
+
+def _string_assign(target: str, text: str) -> list[str]:
+    """``target = 'text'`` split over continuation lines."""
+    quoted = [text[i : i + 40].replace("'", "''") for i in range(0, len(text), 40)]
+    lines = [f"      {target} = '{quoted[0] if quoted else ''}'"]
     lines += [f"     &  // '{q}'" for q in quoted[1:]]
     return lines
 
@@ -196,6 +210,7 @@ def _program_name(program: Program) -> str:
         "alsolve",
         "alrow",
         "alread",
+        "alargs",
     }:
         return stem
     return "alprog"
@@ -213,20 +228,21 @@ def fortran_source(program: Program, target: str) -> str:
         return "\n".join(lines + [""] + equations(program)) + "\n"
     stem = program.stem
     lines += _comment(f"Build: gfortran -O2 -o {stem} {target}")
-    lines += _comment(f"Run:   ./{stem}   (reads {stem}.in when present, the")
-    lines += _comment("values from column 60, a blank line after each group;")
-    lines += _comment("else the script's Input values).")
+    lines += _comment(f"Run:   ./{stem} [NAME=VALUE ...]   (reads {stem}.in when")
+    lines += _comment("present, the values from column 60, a blank line after")
+    lines += _comment("each group, else the script's Input values; NAME=VALUE")
+    lines += _comment("changes one, in its Input's unit).")
     for text in textwrap.wrap(program.task, 64):
         lines += _comment(text)
     if program.kind == "NONLINEAR":
         lines += _nonlinear_main(program)
-        tail = _NEWTON_F + _READ_F
+        tail = _NEWTON_F + _READ_F + _ARGS_F
     elif program.kind == "ALGEBRAIC":
         lines += _algebraic_main(program)
-        tail = _READ_F
+        tail = _READ_F + _ARGS_F
     else:
         lines += _dynamics_main(program)
-        tail = _KUTTA_F + _READ_F
+        tail = _KUTTA_F + _READ_F + _ARGS_F
     lines += equations(program)
     lines += _row_routine(program.tables)
     lines += tail.splitlines()
@@ -251,6 +267,8 @@ def _prologue(program: Program, decls: list[str]) -> list[str]:
         "      integer ncol(nt), iw(nt), ngrp(3), ierr"
         + (", i" if np_ or program.ny else ""),
         "      logical there",
+        f"      character(len={max([len(e.setting) for e in entries] + [1])})"
+        " names(nin)",
         *decls,
     ]
     for k, e in enumerate(entries, start=1):
@@ -268,13 +286,19 @@ def _prologue(program: Program, decls: list[str]) -> list[str]:
     for k in range(3):
         lines.append(f"      ngrp({k + 1}) = {groups[k] if k < len(groups) else 0}")
     stem = program.stem
+    for k, e in enumerate(entries, start=1):
+        lines += _string_assign(f"names({k})", e.setting)
     lines += [
         f"      inquire(file='{stem}.in', exist=there)",
         "      if (there) then",
         f"        call alread('{stem}.in', nin, ngrp, v, ierr)",
         "        if (ierr .ne. 0) stop 2",
         "      end if",
+        "      call alargs(nin, names, v, ierr)",
+        "      if (ierr .ne. 0) stop 2",
     ]
+    for note in program.notes:
+        lines += _string_write("0", f"note: {note}")
     # a model without constants still passes p(1)
     if np_:
         lines += [
@@ -715,6 +739,59 @@ C     values from column 60, one more line after each group.
      &  line
       ierr = 1
       close(9)
+      end
+"""
+
+_ARGS_F = """\
+
+C     The arguments NAME=VALUE: VALUE (in the Input's unit) replaces the
+C     value of the input NAME (any case), as in the C program.
+      subroutine alargs(nin, names, v, ierr)
+      implicit none
+      integer nin, ierr, i, k, eq, ios, c
+      character(len=*) names(nin)
+      double precision v(nin), x
+      character(len=4096) arg
+      ierr = 0
+      do i = 1, command_argument_count()
+        call get_command_argument(i, arg)
+        eq = index(arg, '=')
+        if (eq .le. 1) then
+          write(0, '(A, A, A)') 'error: ', trim(arg),
+     &      ': expected NAME=VALUE'
+          ierr = 1
+          return
+        end if
+        do k = 1, eq - 1
+          c = ichar(arg(k:k))
+          if (c .ge. 97 .and. c .le. 122) arg(k:k) = char(c - 32)
+        end do
+        ios = 1
+        if (len_trim(arg(eq + 1:)) .gt. 0 .and.
+     &      scan(trim(adjustl(arg(eq + 1:))), ' ,/') .eq. 0) then
+          read(arg(eq + 1:), *, iostat=ios) x
+        end if
+        if (ios .ne. 0) then
+          write(0, '(A, A, A, A, A)') 'error: ', trim(arg), ': ',
+     &      trim(arg(eq + 1:)), ' is not a number'
+          ierr = 1
+          return
+        end if
+        do k = 1, nin
+          if (arg(1:eq - 1) .eq. names(k)) exit
+        end do
+        if (k .gt. nin) then
+          write(0, '(A, A, A)', advance='no') 'error: ', arg(1:eq - 1),
+     &      ' is not an input; inputs:'
+          do k = 1, nin
+            write(0, '(A, A)', advance='no') ' ', trim(names(k))
+          end do
+          write(0, '(A)') ''
+          ierr = 1
+          return
+        end if
+        v(k) = x
+      end do
       end
 """
 

@@ -11,6 +11,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.octave import OctaveCodePrinter
 
+from ..jobs import backends
 from ..jobs.run import NumericsError
 from .program import Assign, Program, one_based_target
 
@@ -23,6 +24,22 @@ def _num(x: float) -> str:
 
 def _str(text: str) -> str:
     return "'" + text.replace("'", "''") + "'"
+
+
+class _Printer(OctaveCodePrinter):
+    """sympy's MATLAB printer, with its precedences kept per class as the C
+    printer keeps them, and no rebuilding of expressions without ``re``."""
+
+    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
+        prec = backends.precedence_of(item)
+        if prec < level or (not strict and prec <= level):
+            return f"({self._print(item)})"
+        return self._print(item)
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        if backends.without_re(expr):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:
@@ -59,7 +76,7 @@ def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
 
 
 def equations(program: Program, name: str) -> list[str]:
-    printer = OctaveCodePrinter({"strict": True})
+    printer = _Printer({"strict": True})
     n, ny, nout = program.nu, program.ny, program.nout
     lines = [
         f"function [dy, ud, ierr] = {name}(T, y, p)",
@@ -125,19 +142,23 @@ def octave_source(program: Program, target: str) -> str:
     np_ = len(program.inputs)
     base = np_ + program.ny
     lines = [
-        f"function {stem}()",
+        f"function {stem}(varargin)",
         *head,
         "%",
         f"% Run: octave --eval {stem}  (or {stem} at the MATLAB prompt).  Reads",
         f"% {stem}.in when it is in the current folder (values from column 60, a",
         "% blank line after each group), else starts from the script's Input",
-        "% values.",
+        "% values; NAME=VALUE arguments change them, in their Input's units",
+        f'% ({stem} NAME=VALUE at the prompt, octave --eval "{stem} NAME=VALUE").',
         *["% " + x for x in textwrap.wrap(program.task, 70)],
         "  % Inputs: value (in the Input's unit), factor to internal units",
         "  v = [" + "; ".join(_num(e.value) for e in entries) + "];",
         "  fac = [" + "; ".join(_num(e.factor) for e in entries) + "];",
         "  groups = [" + ", ".join(str(len(g)) for g in program.groups) + "];",
         f"  v = read_in({_str(stem + '.in')}, v, groups);",
+        "  names = {" + "; ".join(_str(e.setting) for e in entries) + "};",
+        "  v = set_args(names, v, varargin);",
+        *[f"  fprintf(2, '%s\\n', {_str('note: ' + x)});" for x in program.notes],
         "  raw = v;",
         "  v = v .* fac;",
         f"  p = v(1:{np_});" if np_ else "  p = 0;",
@@ -155,7 +176,7 @@ def octave_source(program: Program, target: str) -> str:
     lines += ["end", ""]
     lines += _files(program)
     lines += equations(program, "eqns")
-    lines += (tail + _READ_M).splitlines()
+    lines += (tail + _READ_M + _ARGS_M).splitlines()
     return "\n".join(lines) + "\n"
 
 
@@ -467,6 +488,32 @@ function [m, worst] = maxabs(f)
   [m, worst] = max(a);
 end
 
+"""
+
+_ARGS_M = r"""
+function v = set_args(names, v, args)
+  % NAME=VALUE arguments (STEM QA=30 at the prompt, or octave --eval
+  % "STEM QA=30"): VALUE, in the Input's unit, replaces the value of the
+  % input NAME (any case), as in the C program.
+  for i = 1:numel(args)
+    arg = args{i};
+    eq = strfind(arg, '=');
+    if isempty(eq) || eq(1) == 1
+      error('%s: expected NAME=VALUE', arg);
+    end
+    name = upper(arg(1:eq(1) - 1));
+    text = arg(eq(1) + 1:end);
+    x = str2double(text);
+    if isnan(x) && ~strcmpi(strtrim(text), 'nan')
+      error('%s: ''%s'' is not a number', arg, text);
+    end
+    k = find(strcmp(names, name), 1);
+    if isempty(k)
+      error('%s is not an input; inputs: %s', name, strjoin(names', ' '));
+    end
+    v(k) = x;
+  end
+end
 """
 
 _READ_M = r"""

@@ -30,6 +30,7 @@ from ..jobs.run import (
     input_values,
     integration_parameters,
     label_of,
+    missing_value_rule,
     normalize_name,
     output_factors,
 )
@@ -257,6 +258,9 @@ class Program:
     #: DYNAMICS, ODE, ALGEBRAIC (solve M ud = f for the unknowns ud) or
     #: NONLINEAR (Newton's method on the unknowns y: dy = F(y), M = dF/dy,
     #: ud = -F, so the solve leaves the Newton step in ud)
+    #: what the program says on standard error before it runs: the values
+    #: nobody gave that it takes as 0 (``jobs.run.missing_value_rule``)
+    notes: list[str] = field(default_factory=list)
     kind: str = "DYNAMICS"
     #: Algebraic ``[PHI deg=0,360,1]``: start, final value, step of the
     #: last constant (which the .in file then leaves out of the constants)
@@ -363,7 +367,7 @@ def one_based_target(a: Assign) -> str:
 def _used(entries: list[Entry], block: Iterable[Assign]) -> list[tuple[int, Entry]]:
     names: set[str] = set()
     for a in block:
-        names |= {s.name for s in sp.sympify(a.expr).free_symbols}
+        names |= {s.name for s in backends.free_symbols_of(a.expr)}
     return [(i, e) for i, e in enumerate(entries) if e.ident in names]
 
 
@@ -437,6 +441,7 @@ def describe(
     # equation nor an Input is 0 in the program, not read.
     constants = []
     unspecified: list[sp.Symbol] = []
+    notes: list[str] = []  # one for each
     for obj, d in sorted(
         zip(c.params, spec.params, strict=True),
         key=lambda od: in_order(label_of(od[0], job.names)),
@@ -447,6 +452,7 @@ def describe(
         ):
             s = sp.Symbol(identifier(name, taken), real=True)
             unspecified.append(s)
+            notes.append(missing_value_rule(job, name)[1])
             rename[d] = s
             continue
         e = made.entry("Constant", name, vals.param(obj))
@@ -504,6 +510,7 @@ def describe(
         (constants, initials, integration),
         (n, eqns, solve_at, outputs),
         output_tables(job, vals),
+        notes=notes,
     )
 
 
@@ -607,9 +614,9 @@ def iter_names(prefix: str, taken: set[str]) -> Any:
 def _free(exprs: list[Any], inter: list[tuple[Any, Any]]) -> set[Any]:
     out: set[Any] = set()
     for e in exprs:
-        out |= e.free_symbols
+        out |= backends.free_symbols_of(e)
     for _s, body in backends.needed(inter, exprs):
-        out |= sp.sympify(body).free_symbols
+        out |= backends.free_symbols_of(body)
     return out
 
 

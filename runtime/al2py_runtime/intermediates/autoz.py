@@ -218,11 +218,15 @@ def _instances(expr: Any, cls: type) -> set[Any]:
     traversal is most of the cost of ordering a large model's intermediates)."""
     found: set[Any] = set()
     stack = [expr]
+    seen: set[Any] = set()  # a shared (or repeated) subtree is walked once
     while stack:
         e = stack.pop()
         if isinstance(e, cls):
             found.add(e)
-        stack.extend(e.args)
+        args = e.args
+        if args and e not in seen:
+            seen.add(e)
+            stack.extend(args)
     return found
 
 

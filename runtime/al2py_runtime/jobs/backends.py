@@ -36,6 +36,7 @@ back to ``lambdify``.  ``AL2PY_BACKEND`` sets the default for a process.
 from __future__ import annotations
 
 import ctypes
+import functools
 import hashlib
 import math
 import os
@@ -55,6 +56,7 @@ import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.precedence import PRECEDENCE_FUNCTIONS, precedence
 
+from .. import progress
 from ..vocabulary import numeric_namespace
 from .kutta import ADVANCE_C, StepError
 
@@ -202,7 +204,8 @@ def choose(requested: str | None = None) -> str:
 _SAID: set[str] = set()
 
 
-def _say_once(line: str) -> None:
+def say_once(line: str) -> None:
+    """Print ``al2py: note: line`` on stderr, once per process."""
     if line not in _SAID:
         _SAID.add(line)
         print(f"al2py: note: {line}", file=sys.stderr)
@@ -243,7 +246,7 @@ def compile_dynamics(spec: DynamicsSpec, backend: str | None = None) -> Compiled
             continue
         if candidate == "lambdify" and reasons:
             compiled.note = "using the lambdify backend (slower): " + "; ".join(reasons)
-            _say_once(compiled.note)
+            say_once(compiled.note)
         return compiled
     raise BackendError("; ".join(reasons))  # pragma: no cover - lambdify works
 
@@ -320,13 +323,27 @@ def needed(
     """The intermediates that ``exprs`` use, in order."""
     want: set[Any] = set()
     for e in exprs:
-        want |= sp.sympify(e).free_symbols
+        want |= free_symbols_of(e)
     keep = []
     for sym, expr in reversed(list(intermediates)):
         if sym in want:
             keep.append((sym, expr))
-            want |= sp.sympify(expr).free_symbols
+            want |= free_symbols_of(expr)
     return keep[::-1]
+
+
+def free_symbols_of(expr: Any) -> frozenset:
+    """``sympify(expr).free_symbols``, remembered: writing a program asks it
+    of the same intermediates and equations again and again (sympy walks the
+    whole expression each time)."""
+    if not isinstance(expr, sp.Basic):
+        return frozenset(sp.sympify(expr).free_symbols)
+    return _free_symbols(expr)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _free_symbols(expr: Any) -> frozenset:
+    return frozenset(expr.free_symbols)
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
@@ -590,6 +607,9 @@ class CPrinter(C99CodePrinter):
 
     _print_Dummy = _print_Symbol
 
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        return expr if without_re(expr) else super()._handle_UnevaluatedExpr(expr)
+
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
         # sympy's (StrPrinter) computes the precedence twice, and finds a
         # symbol's by walking its class's bases: a fifth of printing time
@@ -643,6 +663,11 @@ for _attr in dir(CPrinter):
 _PRECEDENCE: dict[type, int] = {}
 
 
+def precedence_of(item: Any) -> int:
+    """sympy's ``precedence(item)``, kept per class where it can be."""
+    return _precedence(item)
+
+
 def _precedence(item: Any) -> int:
     """sympy's ``precedence``, kept per class where it depends on the class
     alone (not for numbers, products and the like, whose sign matters)."""
@@ -655,6 +680,15 @@ def _precedence(item: Any) -> int:
         ):
             _PRECEDENCE[cls] = found
     return found
+
+
+def without_re(expr: Any) -> bool:
+    """Whether ``expr`` holds no ``re``: then sympy's
+    ``CodePrinter._handle_UnevaluatedExpr`` (``re(...)`` of an
+    ``UnevaluatedExpr``), which rebuilds the whole expression, would give it
+    back unchanged, and a printer skips it (a tenth of printing a large
+    model)."""
+    return isinstance(expr, sp.Basic) and not expr.has(sp.re)
 
 
 def c_expression(expr: Any, printer: CPrinter) -> str:
@@ -994,7 +1028,11 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
     lib = folder / f"al2py_{key}{_SUFFIX}"
     if lib.exists():
         return lib, True
-    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+    with (
+        tempfile.TemporaryDirectory(dir=folder) as tmp,
+        progress.task("compiling the C code") as task,
+    ):
+        task.doing(f"{len(units)} unit{'s' if len(units) > 1 else ''}")
         out = Path(tmp) / f"model{_SUFFIX}"
         if len(units) == 1:
             src = Path(tmp) / "model.c"
@@ -1043,9 +1081,13 @@ def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool
     text = [cc, *C_FLAGS, sys.platform, platform.machine()]
     objs: list[Path] = []
     started: list[tuple[subprocess.Popen, Path, Path]] = []
-    with tempfile.TemporaryDirectory(dir=folder) as tmp:
+    with (
+        tempfile.TemporaryDirectory(dir=folder) as tmp,
+        progress.task("compiling the C code", unit="units") as task,
+    ):
         try:
             for k, (source, flags) in enumerate(units):
+                task.doing(f"printing unit {k + 1}")
                 text += [source, *flags]
                 cmd = [*cc.split(), *flags, *_UNIT_FLAGS, "-c"]
                 own = [*cmd, sys.platform, platform.machine(), source]
@@ -1066,14 +1108,18 @@ def build_stream(units: Iterable[tuple[str, Sequence[str]]]) -> tuple[Path, bool
             lib = folder / f"al2py_{key}{_SUFFIX}"
             if lib.exists():
                 return lib, True
+            task.doing("")
+            task.update(len(objs) - len(started), len(objs))
             for k, (proc, obj, kept) in enumerate(started):
                 if proc.wait(timeout=600):
                     error = (obj.with_suffix(".err")).read_text(errors="replace")
                     raise BackendError(_compiler_error(error))
+                task.advance()
                 os.replace(obj, kept)  # atomic, as the library
                 started[k] = (proc, obj, obj)
             out = Path(tmp) / f"model{_SUFFIX}"
             link = [*cc.split(), "-shared", "-o", str(out), *map(str, objs), "-lm"]
+            task.doing("linking")
             _run_compiler([link])
             os.replace(out, lib)
             return lib, False
@@ -1234,11 +1280,8 @@ def _raise(code: int, t: float) -> None:
     raise ValueError(NOT_FINITE)
 
 
-def _build_c(spec: DynamicsSpec) -> Compiled:
-    import time
-
-    start = time.perf_counter()
-    path, hit = build_stream(c_model_stream(spec))
+def load_library(path: Path) -> Any:
+    """The compiled model at ``path`` (``ctypes``), its functions typed."""
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:
@@ -1254,6 +1297,15 @@ def _build_c(spec: DynamicsSpec) -> Compiled:
         fn.restype = ctypes.c_int
     lib.al_advance.argtypes = [ctypes.c_double] * 4 + [ctypes.c_void_p] * 4
     lib.al_advance.restype = ctypes.c_int
+    return lib
+
+
+def _build_c(spec: DynamicsSpec) -> Compiled:
+    import time
+
+    start = time.perf_counter()
+    path, hit = build_stream(c_model_stream(spec))
+    lib = load_library(path)
     ny = len(spec.states)
     nout = sum(map(len, spec.outputs))
     rows = [len(r) for r in spec.outputs]

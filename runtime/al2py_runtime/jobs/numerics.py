@@ -30,12 +30,14 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 from sympy.physics.vector import Vector
 
 from ..names.printing import element_labels
+from ..safety import Statements, statement
 from .records import (
     KINDS,
     AnimateSpec,
@@ -46,6 +48,7 @@ from .records import (
     OutputSpec,
     job_stem,
     normalize_name,
+    output_stems,
 )
 from .units import UnitSystem, units_factor
 
@@ -82,21 +85,32 @@ class Numerics:
     def __init__(self, ws: Any) -> None:
         self._ws = ws
         self._numerics = _NumericsState()
+        #: compiled quantities (:meth:`compiled_quantity`)
+        self._compiled: dict[tuple, tuple[Any, Any]] = {}
+
+    @property
+    def statements(self) -> Statements:
+        """Where the workspace's statement calls stand (a failing Input,
+        Output, UnitSystem or CODE statement names its ``.al`` line)."""
+        return self._ws.statements
 
     # ------------------------------------------------------------ recording
 
+    @statement
     def unit_system(
         self, mass: str = "kg", length: str = "m", time: str = "sec", *, line=None
     ) -> None:
         """``UnitSystem kg, meter, sec``: the units values have inside a run."""
         self._numerics.unit_system = UnitSystem(mass, length, time)
 
+    @statement
     def units_of(self, units: Mapping[str, str], *, line: int | None = None) -> None:
         """``Units T=S, X=m``: the unit of each name where an Input or Output
         of it gives none."""
         for name, unit in units.items():
             self._numerics.units_of[normalize_name(name)] = unit
 
+    @statement
     def input(self, values: Mapping[str, Any], *, line: int | None = None) -> None:
         """``Input A=1, QA=30 deg``: values are numbers or ``(number, unit)``."""
         store = self._numerics.inputs
@@ -116,6 +130,7 @@ class Numerics:
                 number, unit if unit else None, line
             )
 
+    @statement
     def output(
         self,
         items: Iterable[tuple[str, Any, str | None]],
@@ -154,6 +169,7 @@ class Numerics:
                 return entry.obj
         return None
 
+    @statement
     def encode(self, *names: str, line: int | None = None) -> None:
         """``Encode A, B'``: the CODE job that follows computes these
         quantities at every output row, as Autolev's generated programs did
@@ -163,6 +179,7 @@ class Numerics:
             if key not in self._numerics.encoded:
                 self._numerics.encoded.append(key)
 
+    @statement
     def animate(
         self, newtonian: Any, point: Any, *frames: Any, line: int | None = None
     ) -> None:
@@ -190,6 +207,7 @@ class Numerics:
             return None, {}
         return OutputSpec(tuple(items), line, encoded=True), shapes
 
+    @statement
     def code(
         self,
         kind: str,
@@ -205,9 +223,14 @@ class Numerics:
         ``Algebraic(eqs, x, y)`` and ``Algebraic() [PHI deg=0,360,1]``).
 
         Records the job; ``run()`` performs it.  ``file``'s stem names the
-        output files; its extension (.c, .m, .for, .f) is ignored."""
+        job and its output files (``STEM_2``, ``STEM_3``... when an earlier
+        job has that stem: :func:`~.records.output_stems`); its extension
+        (.c, .m, .for, .f) chooses the language of ``al2py code``."""
         job = self._make_job(kind, eqs, unknowns, sweep=sweep, file=file, line=line)
         job.options = tuple(str(w).upper() for w in options)
+        # a stem an earlier job has is named apart (STEM_2): no job writes
+        # another's output files
+        job.stem = output_stems([j.stem for j in self._numerics.jobs] + [job.stem])[-1]
         self._numerics.jobs.append(job)
         return job
 
@@ -306,6 +329,7 @@ class Numerics:
 
     # ------------------------------------------------------------ functions
 
+    @statement
     def input_value(self, name: str, unit_system: bool = False) -> Any:
         """Autolev ``Input(X)``; ``Input(X, UnitSystem)`` with ``unit_system``
         converts it to the units of the ``UnitSystem``."""
@@ -353,6 +377,7 @@ class Numerics:
         value = self._ws.resolve(rhs).xreplace(known)
         return _as_number(value) if value.is_number else None
 
+    @statement
     def units(self, a: str, b: str) -> Any:
         """Autolev ``Units(a, b)``: the factor converting a value in ``a`` to
         ``b`` (``Units("n*m", "lbf*ft")`` is 0.7375621...)."""
@@ -377,41 +402,90 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
-        job: str | None = None,
+        job: str | int | None = None,
         **overrides: Any,
     ) -> Result:
-        """Perform the script's ``CODE`` job (the last one if there are several;
-        ``job`` names another by its file stem: ``run(job="WhippleDynamics")``).
+        """Perform one of the script's ``CODE`` jobs (see :meth:`job` for
+        which one without ``job``: the only job, else the only Dynamics/ODE
+        job, else an error listing the jobs; ``job="WhippleDynamics.c"``
+        names one by its file or file stem, ``job=2`` by its place).
 
         Keyword names are Autolev names in any case, in the Input's own
         units: ``run(QA=30, tfinal=5)``; names with primes go in a mapping:
         ``run({"X'": 1})``.  ``backend`` (``"auto"``, ``"c"``, ``"llvm"``,
         ``"lambdify"``) chooses how Dynamics/ODE equations are evaluated;
-        see :mod:`al2py_runtime.jobs.backends`.  A constant the job needs that no
-        Input gives stops it with the names; ``zero_missing=True`` uses 0."""
+        see :mod:`al2py_runtime.jobs.backends`.  Missing values follow
+        :func:`~.run.missing_value_rule`: a Specified quantity no equation
+        and no Input gives is 0, noted in ``result.notes`` and warned
+        (:class:`~al2py_runtime.MissingValueWarning`); a constant the job
+        needs that no Input gives stops it with its name and line, unless
+        ``zero_missing=True`` (then it is 0 and noted too)."""
         merged = dict(values or {})
         merged.update(overrides)
-        from .run import run_job
+        from .run import run_job, warn_notes
 
-        return run_job(
+        result = run_job(
             self.job(job), merged, backend=backend, zero_missing=zero_missing
         )
+        warn_notes(result.missing)
+        return result
 
-    def job(self, name: str | None = None) -> Job:
-        """The ``CODE`` job whose file stem (or file name) is ``name``, any
-        case; the last job when ``name`` is None."""
+    def job(self, name: str | int | None = None, *, dynamics: bool = False) -> Job:
+        """The ``CODE`` job called ``name``: its stem (the file's stem, named
+        apart as ``STEM_2`` when an earlier job has it), its file name (any
+        case; it must name one job), or its place among the CODE statements
+        (``1`` is the first).
+
+        Without ``name``, never a job the user probably did not mean: the
+        only job when there is one; else the only Dynamics/ODE job; else an
+        error that lists the jobs with their files and lines.  With
+        ``dynamics`` (:meth:`ode_function`) only Dynamics/ODE jobs count."""
         jobs = self._numerics.jobs
         if not jobs:
             raise NumericsError(f"{self._ws.filename} has no CODE statement")
+        moving = [j for j in jobs if j.kind in ("DYNAMICS", "ODE")]
         if name is None:
-            return jobs[-1]
-        key = str(name).upper()
-        for job in jobs:
-            if key in (job.stem.upper(), (job.filename or "").upper()):
-                return job
+            if len(moving) == 1:
+                return moving[0]
+            if len(jobs) == 1 and not dynamics:
+                return jobs[0]
+            if dynamics and not moving:
+                raise NumericsError(
+                    f"{self._ws.filename} has no CODE Dynamics or ODE job;"
+                    f" jobs: {_listing(jobs)}"
+                )
+            which = f", {len(moving)} of them Dynamics/ODE" if moving else ""
+            raise NumericsError(
+                f"{self._ws.filename} has {len(jobs)} CODE jobs{which}; choose"
+                f" one with job= (--job): {_listing(jobs)}"
+            )
+        if isinstance(name, int) and not isinstance(name, bool):
+            if 1 <= name <= len(jobs):
+                return jobs[name - 1]
+            found = []
+        else:
+            key = str(name).upper()
+            found = [
+                j
+                for j in jobs
+                if key
+                in (
+                    j.stem.upper(),
+                    (j.filename or "").upper(),
+                    PurePath((j.filename or "").replace("\\", "/")).name.upper(),
+                )
+            ]
+            if not found and key.isdigit() and 1 <= int(key) <= len(jobs):
+                found = [jobs[int(key) - 1]]
+        if len(found) == 1:
+            return found[0]
+        if found:
+            raise NumericsError(
+                f"{self._ws.filename}: {name!r} names {len(found)} CODE jobs; "
+                f"choose one with job=: {_listing(jobs)}"
+            )
         raise NumericsError(
-            f"{self._ws.filename} has no CODE job {name!r}; jobs: "
-            + ", ".join(j.stem for j in jobs)
+            f"{self._ws.filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
         )
 
     def document_run(self, run: Any) -> Any:
@@ -428,37 +502,202 @@ class Numerics:
         *,
         backend: str | None = None,
         zero_missing: bool | None = None,
-        job: str | None = None,
+        job: str | int | None = None,
         **overrides: Any,
     ) -> tuple[Any, list[float], list[str]]:
-        """``(f, y0, names)``: the CODE Dynamics job's equations of motion for
-        ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units (the
-        UnitSystem's, SI by default; angles in radians).  Overrides are given
-        as for :meth:`run`, in the Inputs' own units.  ``run()`` integrates
-        the same function; ``backend`` and ``job`` as for :meth:`run`."""
+        """``(f, y0, names)``: a CODE Dynamics/ODE job's equations of motion
+        for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``, in internal units
+        (the UnitSystem's, SI by default; angles in radians).  Without
+        ``job``, the script's only Dynamics/ODE job (else an error listing
+        the jobs; see :meth:`job`).  Overrides are given as for :meth:`run`,
+        in the Inputs' own units, and missing values follow the same rule.
+        ``run()`` integrates the same function; ``backend`` as for
+        :meth:`run`."""
         merged = dict(values or {})
         merged.update(overrides)
-        from .run import ode_function
+        from .run import ode_function, warn_notes
 
-        return ode_function(
-            self.job(job), merged, backend=backend, zero_missing=zero_missing
+        f, y0, names, notes = ode_function(
+            self.job(job, dynamics=True),
+            merged,
+            backend=backend,
+            zero_missing=zero_missing,
+            notes=True,
         )
+        warn_notes(notes)
+        return f, y0, names
 
     def evaluate_name(
-        self, name: str, values: Mapping[str, Any] | None = None, /, **more: Any
+        self,
+        name: str,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        zero_missing: bool | None = None,
+        backend: str | None = None,
+        **more: Any,
     ) -> Any:
         """The named quantity as a float (or numpy array for a matrix).
 
         Every Input value (given in the Input's units), the ``values`` given
         here (also in the Input's units; names without an Input are in the
         unit system's units, radians for angles) and every named intermediate
-        are substituted.  Time is TINITIAL unless ``T`` is given."""
-        from .run import evaluate_with_inputs
+        are substituted.  Time is TINITIAL unless ``T`` is given.
+
+        The quantity is compiled on the first call (:mod:`.quantities`), so
+        later calls cost microseconds.  Any value may be a numpy array: the
+        values broadcast together and the result has their shape in front
+        (``evaluate_name("AMAT", U6=speeds)``: one matrix per speed).  A
+        Specified quantity nobody gives is 0 (noted once on stderr), as in
+        a run; a constant or variable without a value stops with its name
+        unless ``zero_missing``.  ``backend``: see
+        :func:`.quantities.build_kernel`."""
+        from .quantities import evaluate_compiled
 
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        return evaluate_with_inputs(job, self._ws.value(name), name, merged)
+        value = self._ws.value(name)
+        if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(job, value, name, merged)
+        plan = self.compiled_quantity(name, merged, backend, job)
+
+        def exact(point: Mapping[str, Any]) -> Any:
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(job, value, name, point)
+
+        return evaluate_compiled(job, plan, merged, exact, zero_missing)
+
+    def sweep(
+        self,
+        name: str | None = None,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        executor: Any = None,
+        job: str | None = None,
+        backend: str | None = None,
+        zero_missing: bool | None = None,
+        chunksize: int | None = None,
+        origin: tuple[str, str | None] | None = None,
+        **given: Any,
+    ) -> Any:
+        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once),
+        or without a name of the ``CODE`` job (``job`` chooses it as for
+        :meth:`run`), over the grid that the 1-D arrays among the values
+        span (several: their product); scalars are fixed.  Values are given
+        as for :meth:`evaluate_name` (a quantity) or :meth:`run` (a job).
+
+        ``executor``: ``None`` (in this process), any
+        ``concurrent.futures.Executor``, or ``"dask"`` (the Dask client of
+        this process); the work goes out in chunks of ``chunksize`` points.
+        ``origin`` is the module's ``(__name__, __file__)``, which a job
+        sweep's workers import (a module's ``sweep()`` passes it)."""
+        from .sweep import sweep_job, sweep_quantity
+
+        merged = dict(values or {})
+        merged.update(given)
+        if name is None:
+            chosen = self.job(job)
+            index = next(i for i, j in enumerate(self._numerics.jobs) if j is chosen)
+            return sweep_job(
+                chosen,
+                index,
+                merged,
+                origin=origin,
+                executor=executor,
+                backend=backend,
+                zero_missing=zero_missing,
+                chunksize=chunksize,
+            )
+        if job is not None:
+            raise NumericsError("sweep() takes a quantity's name or job=..., not both")
+        snapshot = self._make_job("ALGEBRAIC", line=None)
+        value = self._ws.value(name)
+        if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
+            raise NumericsError(
+                f"{name} is not a scalar or matrix; it cannot be evaluated"
+            )
+        plan = self.compiled_quantity(name, merged, backend, snapshot)
+
+        def exact(point: Mapping[str, Any]) -> Any:
+            from .run import evaluate_with_inputs
+
+            return evaluate_with_inputs(snapshot, value, name, point)
+
+        return sweep_quantity(
+            snapshot,
+            plan,
+            merged,
+            exact,
+            executor=executor,
+            zero_missing=zero_missing,
+            chunksize=chunksize,
+        )
+
+    def linearize(
+        self,
+        values: Mapping[str, Any] | None = None,
+        /,
+        *,
+        job: str | None = None,
+        inputs: Any = None,
+        symbolic: bool = False,
+        zero_missing: bool | None = None,
+        **overrides: Any,
+    ) -> Any:
+        """The ``CODE`` Dynamics/ODE job's equations of motion linearized
+        about the point its Inputs and the values given here make (as for
+        :meth:`run`): a :class:`.linearize.Linearization` with ``A``, ``B``
+        and the names of the states and inputs (the Specified quantities
+        with no equation, or the names in ``inputs``).  ``symbolic=True``
+        keeps the constants as symbols (sympy matrices)."""
+        from .linearize import linearize_job
+
+        merged = dict(values or {})
+        merged.update(overrides)
+        return linearize_job(
+            self.job(job),
+            merged,
+            inputs=inputs,
+            symbolic=symbolic,
+            zero_missing=zero_missing,
+        )
+
+    def compiled_quantity(
+        self,
+        name: str,
+        given: Mapping[str, Any] = {},  # noqa: B006 - read only
+        backend: str | None = None,
+        job: Job | None = None,
+    ) -> Any:
+        """The named quantity compiled for values of the names in ``given``
+        (a :class:`.quantities.CompiledQuantity`), built once and kept."""
+        from .quantities import compile_quantity, quantity_key, split_given
+        from .run import input_values
+
+        job = job if job is not None else self._make_job("ALGEBRAIC", line=None)
+        value = self._ws.value(name)
+        settable, free = split_given(job, given)
+        _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
+        key = quantity_key(name, free, frozenset(keep), backend)
+        cache = self._compiled
+        found = cache.get(key)
+        if found is None or found[0] is not value:
+            plan = compile_quantity(
+                job, value, name, frozenset(free), frozenset(keep), backend
+            )
+            cache[key] = found = (value, plan)
+        return found[1]
+
+
+def _listing(jobs: list[Job]) -> str:
+    """The jobs as messages list them: the name that picks each, with its
+    CODE statement's file and line."""
+    return ", ".join(f"{j.stem} ({j.where})" for j in jobs)
 
 
 def _as_number(value: Any) -> Any:

@@ -165,3 +165,24 @@ def job_where(kind: str, filename: str | None, line: int | None) -> str:
     if line is not None:
         what += f" (line {line})"
     return what
+
+
+def output_stems(stems: list[str]) -> list[str]:
+    """The stems of jobs whose CODE files have the stems ``stems``, in
+    order: a stem an earlier job has (in any case) is named apart,
+    ``STEM_2`` (``_3``, ...), so that no job writes another's files
+    (Whipple.al's ``WhippleDynamics.m`` and ``WhippleDynamics.c`` write
+    ``WhippleDynamics.1`` and ``WhippleDynamics_2.1``).
+
+    >>> output_stems(["w", "W", "a", "w"])
+    ['w', 'W_2', 'a', 'w_3']
+    """
+    used: set[str] = set()
+    out = []
+    for stem in stems:
+        name, k = stem, 2
+        while name.lower() in used:
+            name, k = f"{stem}_{k}", k + 1
+        used.add(name.lower())
+        out.append(name)
+    return out

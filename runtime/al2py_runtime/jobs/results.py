@@ -159,7 +159,10 @@ def document_run(numerics: Any, run: Any) -> Any:
         params.append(
             inspect.Parameter("job", inspect.Parameter.KEYWORD_ONLY, default=None)
         )
-        lines.append(f"    job = None (the last CODE job; or one of {', '.join(jobs)})")
+        lines.append(
+            "    job = None (the only Dynamics/ODE job, else an error listing"
+            f" the jobs; or one of {', '.join(jobs)})"
+        )
     try:
         run.__signature__ = inspect.Signature(params)
         if lines:

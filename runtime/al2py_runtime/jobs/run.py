@@ -27,6 +27,7 @@ from sympy.core.function import AppliedUndef
 
 from ..intermediates import autoz
 from ..model.arrange import linear_terms
+from ..safety import MissingValueWarning
 from . import backends, budget
 from .kutta import KuttaMerson, StepError
 from .records import (
@@ -57,6 +58,8 @@ __all__ = [
     "evaluate_rows",
     "check_overrides",
     "normalize_name",
+    "missing_value_rule",
+    "warn_notes",
 ]
 
 t = sp.Symbol("t")  # replaced below by the workspace's time symbol
@@ -269,6 +272,38 @@ def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
     return expr.func(*args)
 
 
+@dataclass
+class NumericEntries:
+    """Expressions made numeric (:func:`numeric_entries`): of ``time`` and
+    the ``dummies`` standing for ``params`` (the objects, in argument
+    order), with ``intermediates`` (``(dummy, definition)``, in order)."""
+
+    time: Any
+    params: list[Any]
+    dummies: list[Any]
+    exprs: list[Any]
+    intermediates: list[tuple[Any, Any]]
+
+
+def numeric_entries(
+    job: Job, entries: Iterable[Any], drop: Iterable[Any], what: str
+) -> NumericEntries:
+    """``entries`` with the job's right-hand sides substituted (but those of
+    the objects in ``drop``) as expressions of argument dummies: every
+    constant, variable, specified quantity and derivative left is a
+    parameter (what ``evaluate()`` compiles; see :mod:`.quantities`)."""
+    table = _without(job.rhs, drop)
+    slots = _Slots(job)
+    exprs = [slots.numeric(_resolve(sp.sympify(e), table), what) for e in entries]
+    return NumericEntries(
+        slots.time,
+        list(slots.params),
+        list(slots.param_dummies),
+        exprs,
+        list(slots.intermediates),
+    )
+
+
 def label_of(obj: Any, names: Mapping[Any, str]) -> str:
     base, k = _base(obj)
     name = names.get(base)
@@ -278,6 +313,57 @@ def label_of(obj: Any, names: Mapping[Any, str]) -> str:
 
 
 # -------------------------------------------------------------- input values
+
+
+def missing_value_rule(
+    job: Job, name: str, zero_missing: bool = False
+) -> tuple[bool, str]:
+    """al2py's one rule for a value that a job, ``ode_function()`` or
+    ``evaluate()`` needs and nobody gave (no Input, no override, no
+    equation), as Autolev's generated programs have it: ``(True, note)``
+    when the value is 0 (the note says so: ``result.notes``, a ``note:``
+    line of ``python module.py``, a :class:`MissingValueWarning` in Python),
+    ``(False, what)`` when it stops (``what`` names it and its line).
+
+    - a Specified quantity (or its derivative) is 0: an input of the job;
+    - a variable is 0: its initial value (tutor7 inputs no U1), and a
+      derivative with no equation is an input, as a Specified quantity is
+      (the ``.in`` files of Autolev's Algebraic programs list them);
+    - a constant stops, unless ``zero_missing`` (then 0, noted);
+    - a name the job cannot know stops.
+
+    >>> from al2py_runtime import Workspace
+    >>> al = Workspace("m.al")
+    >>> _ = al.constants("K", line=2), al.specified("TQ", line=3)
+    >>> job = al.numerics._make_job("ALGEBRAIC")
+    >>> missing_value_rule(job, "TQ")[0], missing_value_rule(job, "K")
+    (True, (False, 'K (declared on line 2)'))
+    """
+    key = normalize_name(name)
+    m = re.fullmatch(r"([A-Z][A-Z0-9_]*)('*)", key)
+    base, primes = (m.group(1), m.group(2)) if m else (key, "")
+    kind = job.entries.get(base, ("",))[0]
+    line = job.declared.get(base)
+    what = f"{name} (declared on line {line})" if line else name
+    if kind == "specified":
+        return True, (
+            f"{name} is Specified with no equation and no Input; using 0"
+            " (as Autolev's programs do)"
+        )
+    if kind == "variable":
+        return True, f"{name} has no Input value; using 0"
+    if kind == "constant" and zero_missing:
+        return True, f"{name} has no Input value; using 0"
+    return False, what
+
+
+def warn_notes(notes: Iterable[str]) -> None:
+    """Each note of a missing value as a :class:`MissingValueWarning` (for
+    Python callers; ``python module.py`` prints ``note:`` lines instead)."""
+    import warnings
+
+    for note in notes:
+        warnings.warn(note, MissingValueWarning, stacklevel=3)
 
 
 @dataclass
@@ -291,31 +377,29 @@ class _Values:
     given: set[str] = field(default_factory=set)
     #: go on with 0 for values the script never gives (else stop and name them)
     zero_missing: bool = False
+    #: the notes of values taken as 0 (:func:`missing_value_rule`)
+    missing: list[str] = field(default_factory=list)
+    #: the parameters (not initial values) taken as 0, by name
+    zeroed: list[str] = field(default_factory=list)
 
     def require(self, params: Iterable[Any]) -> None:
-        """Stop, naming every constant among ``params`` that has no value,
-        with the line declaring it; with :attr:`zero_missing` they are 0,
-        each noted.  Initial values and guesses are not required: a variable
-        the script never inputs starts at 0, as in Autolev (the tutorial's
-        tutor7 inputs no U1), and a Specified quantity without an equation is
-        an input that is 0 unless given, as in Autolev's programs."""
+        """Stop, naming every value among ``params`` that nobody gave and
+        :func:`missing_value_rule` does not make 0 (a constant no Input
+        gives, unless :attr:`zero_missing`), with the line declaring it."""
         job = self.job
         wanted = [label_of(obj, job.names) for obj in params]
-        missing = [
-            n
-            for n in _unique(wanted)
-            if job.entries.get(normalize_name(n), ("",))[0] == "constant"
-            and normalize_name(n) not in self.values
-        ]
-        if not missing or self.zero_missing:
-            return
         listed = []
-        for n in missing:
-            line = job.declared.get(normalize_name(n))
-            listed.append(f"{n} (declared on line {line})" if line else n)
+        for n in _unique(wanted):
+            if normalize_name(n) in self.values:
+                continue
+            zero, what = missing_value_rule(job, n, self.zero_missing)
+            if not zero:
+                listed.append(what)
+        if not listed:
+            return
         raise NumericsError(
             f"{job.where}: no value for {', '.join(listed)}. Give "
-            f"{'them' if len(missing) > 1 else 'it'} with Input (or "
+            f"{'them' if len(listed) > 1 else 'it'} with Input (or "
             "--set NAME=VALUE, run(NAME=value)), or use 0 with --zero-missing"
             " (run(zero_missing=True), AL2PY_ZERO_MISSING=1)"
         )
@@ -333,15 +417,58 @@ class _Values:
             )
 
     def get(self, name: str, default: float = 0.0, note: bool = True) -> float:
+        """An initial value or guess: its Input, else ``default``, noted."""
         key = normalize_name(name)
         if key in self.values:
             return self.values[key]
-        if note:
+        if note:  # noted, not warned: Autolev starts variables at 0
             self.notes.append(f"{name} has no Input value; using {default:g}")
         return default
 
     def param(self, obj: Any) -> float:
-        return self.get(label_of(obj, self.job.names))
+        """A parameter's value: its Input, else 0 by
+        :func:`missing_value_rule`, noted and warned (a job has stopped on
+        the others with :meth:`require`; ``al2py code`` writes them as 0
+        into the ``.in`` file, where Autolev's programs read them)."""
+        name = label_of(obj, self.job.names)
+        key = normalize_name(name)
+        if key in self.values:
+            return self.values[key]
+        zero, text = missing_value_rule(self.job, name, self.zero_missing)
+        if not zero:  # not required (al2py code: the .in file holds it)
+            self.notes.append(f"{name} has no Input value; using 0")
+        else:
+            self._note(text)
+        self.zeroed.append(name)
+        return 0.0
+
+    def zero_hint(self) -> str:
+        """For a division by zero or a singular matrix: the Variables and
+        constants nobody gave that were taken as 0, with their lines (a
+        mass or inertia declared with Variables and given no Input)."""
+        named = []
+        for name in _unique(self.zeroed):
+            key = normalize_name(name)
+            kind = self.job.entries.get(key, ("",))[0]
+            if kind not in ("variable", "constant"):
+                continue
+            line = self.job.declared.get(key)
+            word = "Variables" if kind == "variable" else "Constants"
+            named.append(f"{name} ({word}, line {line})" if line else name)
+        if not named:
+            return ""
+        many = len(named) > 1
+        return (
+            f"; {', '.join(named)} {'have' if many else 'has'} no value (no Input,"
+            f" no equation) and {'were' if many else 'was'} taken as 0: a mass or"
+            " inertia of 0 divides by zero; give "
+            + ("them" if many else "it")
+            + " with Input (or declare a parameter with Constants)"
+        )
+
+    def _note(self, text: str) -> None:
+        self.notes.append(text)
+        self.missing.append(text)
 
 
 def input_values(
@@ -435,15 +562,24 @@ def _computed_inputs(
 
 
 def evaluate_with_inputs(
-    job: Job, value: Any, name: str, overrides: Mapping[str, Any]
+    job: Job,
+    value: Any,
+    name: str,
+    overrides: Mapping[str, Any],
+    zero_missing: bool | None = None,
 ) -> Any:
-    """``value`` with Inputs, ``overrides`` and right-hand sides substituted."""
+    """``value`` with Inputs, ``overrides`` and right-hand sides substituted.
+
+    A name still without a value follows :func:`missing_value_rule`, as in
+    ``run()``: a Specified quantity, a variable and a derivative with no
+    equation are 0, warned (:class:`MissingValueWarning`); a constant stops
+    with its name and line (``zero_missing``: 0, warned)."""
     given = {normalize_name(k): v for k, v in overrides.items()}
     settable = {
         k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
     }
     free = {k: v for k, v in given.items() if k not in settable}
-    vals, keep = input_values(job, settable)
+    vals, keep = input_values(job, settable, zero_missing)
     numbers = dict(vals.values)
     for key, v in free.items():
         try:
@@ -463,31 +599,63 @@ def evaluate_with_inputs(
             subs[_deriv(entry[1], len(m.group(2)))] = number
 
     cache: dict[Any, complex] = {}  # intermediates at this point
+    notes: list[str] = []
+
+    def missing(objs: set[Any]) -> None:
+        """Give the names nobody gave their value by the rule, or stop."""
+        stops = []
+        for obj in sorted(objs, key=sp.default_sort_key):
+            label = label_of(obj, job.names)
+            zero, text = missing_value_rule(job, label, vals.zero_missing)
+            if not zero:
+                stops.append(text)
+                continue
+            notes.append(text)
+            subs[obj] = 0.0
+            if cache:
+                cache[obj] = 0j
+        if stops:
+            raise NumericsError(
+                f"{name} needs a value for {', '.join(stops)}"
+                " (give it as a keyword argument"
+                + (
+                    "; constants may be 0 with zero_missing=True)"
+                    if any("(declared on line" in x for x in stops)
+                    else ")"
+                )
+            )
 
     def one(expr: Any) -> float:
         expr = _resolve(sp.sympify(expr), table)
         has_z = autoz.has_intermediates(expr)
-        # Derivatives first, so that QA' is not taken as d(value of QA)/dt.
-        out = sp.sympify(expr).xreplace(
-            {k: v for k, v in subs.items() if isinstance(k, sp.Derivative)}
-        )
-        left = {label_of(a, job.names) for a in out.atoms(sp.Derivative)}
+
+        def derivatives() -> Any:
+            # Derivatives first, so that QA' is not taken as d(value of QA)/dt.
+            return sp.sympify(expr).xreplace(
+                {k: v for k, v in subs.items() if isinstance(k, sp.Derivative)}
+            )
+
+        out = derivatives()
+        # derivatives nobody gave, before their functions are substituted
+        # (U(t) -> 0.5 would leave the derivative of a number)
+        if out.has(sp.Derivative):
+            missing(set(out.atoms(sp.Derivative)))
+            out = derivatives()
         if has_z:
             # Intermediates are evaluated at the values, once each, in order
             # (substituting numbers into them would rebuild each one).
-            left |= {
-                label_of(a, job.names) for a in out.atoms(AppliedUndef) if a not in subs
-            }
-            left |= {str(s) for s in out.free_symbols if s != t and s not in subs}
+            left = {a for a in out.atoms(AppliedUndef) if a not in subs}
+            left |= {s for s in out.free_symbols if s != t and s not in subs}
+            if left:
+                missing(left)
         else:
-            out = sp.sympify(out.xreplace({k: v for k, v in subs.items() if k != t}))
-            left |= {label_of(a, job.names) for a in out.atoms(AppliedUndef)}
-            left |= {str(s) for s in out.free_symbols if s != t}
-        if left:
-            raise NumericsError(
-                f"{name} needs a value for {', '.join(sorted(left))}"
-                " (give it as a keyword argument)"
-            )
+            plain = {k: v for k, v in subs.items() if k != t}
+            out = sp.sympify(out.xreplace(plain))
+            left = out.atoms(AppliedUndef) | {s for s in out.free_symbols if s != t}
+            if left:
+                missing(left)
+                plain = {k: v for k, v in subs.items() if k != t}
+                out = sp.sympify(derivatives().xreplace(plain))
         if has_z:
             if not cache:
                 cache.update({k: complex(v) for k, v in subs.items()})
@@ -500,12 +668,15 @@ def evaluate_with_inputs(
         )
 
     if isinstance(value, sp.MatrixBase):
-        return np.array(
+        result: Any = np.array(
             [[one(value[i, j]) for j in range(value.cols)] for i in range(value.rows)]
         )
-    if not isinstance(value, sp.Basic | int | float):
+    elif not isinstance(value, sp.Basic | int | float):
         raise NumericsError(f"{name} is not a scalar or matrix; it cannot be evaluated")
-    return one(value)
+    else:
+        result = one(value)
+    warn_notes(_unique(notes))
+    return result
 
 
 def check_overrides(job: Job, overrides: Mapping[str, Any]) -> None:
@@ -668,8 +839,37 @@ def _compile_dynamics(job: Job, formed: _Dynamics, backend: str | None) -> _Dyna
     return dataclasses.replace(formed, compiled=compiled)
 
 
-def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
-    """The job's states, parameters and equations as sympy expressions."""
+@dataclass
+class DynamicsLayout:
+    """What a Dynamics/ODE job integrates, before any numbers: the
+    right-hand sides in force (``table``), each integrated variable as
+    ``(obj, order, implicit)`` in declaration order (``implicit``: its
+    highest derivative is found from ``zero``), the states (the variables
+    and their lower derivatives), the derivatives solved from ``zero``, and
+    ``zero`` itself with the right-hand sides substituted (None without
+    such derivatives)."""
+
+    table: dict
+    layout: list[tuple[Any, int, bool]]
+    state_objs: list[Any]
+    ud_objs: list[Any]
+    zero: Any
+
+    def rates(self) -> list[Any]:
+        """The derivative of each state, in state order: a state itself
+        (``Q'`` of a second-order ``Q``), an acceleration solved from
+        ``zero`` (its object), or the expression of an explicit equation."""
+        out: list[Any] = []
+        for obj, k, imp in self.layout:
+            out += [_deriv(obj, j + 1) for j in range(k - 1)]
+            top = _deriv(obj, k)
+            out.append(top if imp else _resolve(self.table[top], self.table))
+        return out
+
+
+def dynamics_layout(job: Job, keep: frozenset) -> DynamicsLayout:
+    """The states and equations of a Dynamics/ODE job (see
+    :class:`DynamicsLayout`)."""
     table = _without(job.rhs, keep)
     explicit: list[tuple[Any, int]] = []
     implicit: dict[Any, int] = {}
@@ -716,6 +916,14 @@ def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
         )
     state_objs = [_deriv(obj, j) for obj, k, _i in layout for j in range(k)]
     ud_objs = [_deriv(obj, k) for obj, k, imp in layout if imp]
+    return DynamicsLayout(table, layout, state_objs, ud_objs, zero)
+
+
+def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
+    """The job's states, parameters and equations as sympy expressions."""
+    formed = dynamics_layout(job, keep)
+    table, layout, zero = formed.table, formed.layout, formed.zero
+    state_objs, ud_objs = formed.state_objs, formed.ud_objs
     slots = _Slots(job)
     ys = slots.add(state_objs, "y")
     uds = slots.add(ud_objs, "ud")
@@ -803,6 +1011,8 @@ class OdeSystem:
     params: list[float]
     clock: list[float]
     bound: backends.Bound
+    #: :meth:`_Values.zero_hint`, for a singular matrix or a division by 0
+    hint: str = ""
 
 
 def _compiled(
@@ -843,29 +1053,31 @@ def ode_system(
     bound = c.compiled.bind(p)
     clock = [t0]  # time of the latest evaluation, for messages
     rhs = bound.rhs
+    hint = vals.zero_hint()
 
     def fun(tt: float, y: np.ndarray) -> np.ndarray:
         clock[0] = tt
         try:
             return rhs(tt, y)
         except backends.SingularMatrixError as exc:
-            raise _singular(job, c, exc.t) from None
+            raise _singular(job, c, exc.t, hint) from None
 
     def outputs(tt: float, y: Any) -> list[list[float]]:
         clock[0] = tt
         try:
             return bound.outputs(tt, y)
         except backends.SingularMatrixError as exc:
-            raise _singular(job, c, exc.t) from None
+            raise _singular(job, c, exc.t, hint) from None
 
-    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock, bound)
+    return OdeSystem(fun, y0, list(c.state_names), outputs, c, p, clock, bound, hint)
 
 
-def _singular(job: Job, c: _Dynamics, at: float) -> NumericsError:
+def _singular(job: Job, c: _Dynamics, at: float, hint: str = "") -> NumericsError:
     return NumericsError(
         f"{job.where}: the coefficient matrix of "
         + ", ".join(label_of(d, job.names) for d in c.ud_objs)
         + f" in ZERO is singular at t = {at:g}"
+        + hint
     )
 
 
@@ -875,15 +1087,20 @@ def ode_function(
     *,
     backend: str | None = None,
     zero_missing: bool | None = None,
-) -> tuple[Any, list[float], list[str]]:
+    notes: bool = False,
+) -> tuple[Any, ...]:
     """``(f, y0, names)`` for ``solve_ivp(f, (t0, t1), y0)``: the job's
     equations of motion in internal units, with Inputs changed by
-    ``overrides`` (as ``run()``), evaluated by ``backend``."""
+    ``overrides`` (as ``run()``), evaluated by ``backend``.  With ``notes``,
+    ``(f, y0, names, notes)``: the notes of the values taken as 0
+    (:func:`missing_value_rule`)."""
     if job.kind not in ("DYNAMICS", "ODE"):
         raise NumericsError(f"{job.where}: CODE {job.kind} has no equations of motion")
     vals, keep = input_values(job, overrides or {}, zero_missing)
     ip = integration_parameters(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
+    if notes:
+        return system.fun, list(system.y0), list(system.names), _unique(vals.missing)
     return system.fun, list(system.y0), list(system.names)
 
 
@@ -900,11 +1117,11 @@ def _run_dynamics(
         try:
             values = system.bound.table(times, ys, clock)
         except backends.SingularMatrixError as exc:
-            raise _singular(job, c, exc.t) from None
+            raise _singular(job, c, exc.t, system.hint) from None
     except NumericsError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
-        hint = "; check the Input values" if vals.notes else ""
+        hint = system.hint or ("; check the Input values" if vals.notes else "")
         raise NumericsError(f"{job.where}: {exc} at t = {clock[0]:g}{hint}") from None
     tables, k = [], 0
     for number, (cols, fac, spec) in enumerate(
@@ -1022,6 +1239,7 @@ def _result(job: Job, tables: list[Table], vals: _Values, **more: Any) -> Result
         job.digits,
         encoded=dict(job.encoded),
         notes=_unique(vals.notes),
+        missing=_unique(vals.missing),
         time_unit=job.unit_system.time_unit,
         **more,
     )
@@ -1061,7 +1279,7 @@ def _integrate(
             clock[0] = float(times[i])
             meter.tick(clock[0])
     except backends.SingularMatrixError as exc:
-        raise _singular(job, system.compiled, exc.t) from None
+        raise _singular(job, system.compiled, exc.t, system.hint) from None
     except StepError as exc:
         clock[0] = exc.t
         if exc.code == 4:
@@ -1232,7 +1450,12 @@ def _static_result(
             try:
                 data = [func(t0, *x, *p) for x, p in rows]
             except (ValueError, ZeroDivisionError, OverflowError) as exc:
-                raise NumericsError(f"{job.where}: Output: {exc}") from None
+                what = "Encode" if spec.encoded else "Output"
+                at = f" (line {spec.line})" if spec.line else ""
+                raise NumericsError(
+                    f"{job.where}: {what} {', '.join(col.label for col in cols)}{at}:"
+                    f" {exc}{vals.zero_hint()}"
+                ) from None
             arr = np.array(data, dtype=float).reshape(len(rows), len(cols)) * fac
             tables.append(Table(number, cols, arr, spec.line, spec.encoded))
     if c.unknown_names and not any(not s.encoded for s in job.outputs):
@@ -1273,7 +1496,7 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
             if res.max() <= tol:
                 break
     except (ValueError, ZeroDivisionError, OverflowError) as exc:
-        raise NumericsError(f"{job.where}: {exc}") from None
+        raise NumericsError(f"{job.where}: {exc}{vals.zero_hint()}") from None
     x, res = best
     if not np.all(np.isfinite(res)) or res.max() > tol:
         worst = int(np.nanargmax(res)) if np.any(np.isfinite(res)) else 0
@@ -1320,13 +1543,19 @@ def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
     rows = []
     for p in param_rows:
         if n:
-            a = np.array(c.jacobian(t0, *p), dtype=float).reshape(n, n)
-            b = np.array(c.rhs(t0, *p), dtype=float)
+            try:
+                a = np.array(c.jacobian(t0, *p), dtype=float).reshape(n, n)
+                b = np.array(c.rhs(t0, *p), dtype=float)
+            except (ValueError, ZeroDivisionError, OverflowError) as exc:
+                raise NumericsError(
+                    f"{job.where}: the equations: {exc}{vals.zero_hint()}"
+                ) from None
             try:
                 x = np.linalg.solve(a, b).tolist()
             except np.linalg.LinAlgError:
                 raise NumericsError(
-                    f"{job.where}: the equations are singular (no unique solution)"
+                    f"{job.where}: the equations are singular (no unique"
+                    f" solution){vals.zero_hint()}"
                 ) from None
         else:
             x = []

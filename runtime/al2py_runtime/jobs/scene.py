@@ -27,13 +27,13 @@ A pendulum of two links, as a generated module builds it:
 
 >>> from al2py_runtime import Workspace
 >>> al = Workspace("links.al")
->>> N = al.newtonian("N")
->>> A, B = al.frames("A", "B")
->>> O, P, Q = al.points("O", "P", "Q")
+>>> N = al.model.newtonian("N")
+>>> A, B = al.model.frames("A", "B")
+>>> O, P, Q = al.model.points("O", "P", "Q")
 >>> QA, QB = al.variables("QA", "QB")
 >>> LA, LB = al.constants("LA", "LB")
->>> _ = al.simprot(N, A, 3, QA), al.simprot(N, B, 3, QB)
->>> _ = al.set_pos(P, O, LA * A.x), al.set_pos(Q, P, LB * B.x)
+>>> _ = al.model.simprot(N, A, 3, QA), al.model.simprot(N, B, 3, QB)
+>>> _ = al.model.set_pos(P, O, LA * A.x), al.model.set_pos(Q, P, LB * B.x)
 >>> shown = layout(Geometry.of(al.model), frames=["A", "B"])
 >>> shown.origin.name, [p.name for p in shown.points], shown.lines
 ('O', ['O', 'P', 'Q'], [(0, 1), (1, 2)])

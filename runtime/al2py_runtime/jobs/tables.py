@@ -72,6 +72,9 @@ class Result(ResultViews):
     solution_units: dict[str, str | None] = field(default_factory=dict)
     states: dict[str, np.ndarray] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    #: the notes of values nobody gave, taken as 0 (a subset of ``notes``;
+    #: ``al2py_runtime.jobs.run.missing_value_rule``)
+    missing: list[str] = field(default_factory=list)
     time_unit: str | None = None
     nfev: int = 0  # right-hand-side evaluations of a Dynamics/ODE integration
     #: ``Encode``d and ``Output`` matrices: name -> shape; ``result["AMAT"]``

@@ -26,11 +26,11 @@ The model of a falling particle, exported to ``KanesMethod``:
 >>> from al2py_runtime import Workspace, t
 >>> from al2py_runtime.model import kane_inputs, kanes_method
 >>> al = Workspace("drop.al")
->>> N, P = al.newtonian("N"), al.particles("P")
->>> Q, G, U = al.variables("Q'"), al.constants("G"), al.motion_variables("U'")
->>> al.set_mass(P, 3)
->>> _ = al.kd(Eq(Q.diff(t), U)), al.set_vel(P, N, U * N.y)
->>> al.gravity(-G * N.y)
+>>> N, P = al.model.newtonian("N"), al.model.particles("P")
+>>> Q, G, U = al.variables("Q'"), al.constants("G"), al.model.motion_variables("U'")
+>>> al.model.set_mass(P, 3)
+>>> _ = al.kd(Eq(Q.diff(t), U)), al.model.set_vel(P, N, U * N.y)
+>>> al.model.gravity(-G * N.y)
 >>> inputs = kane_inputs(al.model)
 >>> inputs.q, inputs.u, inputs.kd_eqs
 ([Q(t)], [U(t)], [-U(t) + Derivative(Q(t), t)])

@@ -26,7 +26,7 @@ from .fastkane import (
     measure_split,
     named_measures,
 )
-from .state import command, t
+from .state import command, query, t
 
 __all__ = ["KaneEquations"]
 
@@ -66,6 +66,7 @@ class KaneEquations:
         book = self.ws.intermediates
         loads = [(f, self.vel(p, n), n) for p, f in st.forces.items()]
         loads += [(tq, self.ang_vel(b, n), b) for b, tq in st.torques.items()]
+        moved = False  # a loaded velocity depends on a speed
         for f, v, frame in loads:
             if f == Vector(0):
                 continue
@@ -76,6 +77,7 @@ class KaneEquations:
                     None if p == Vector(0) else p
                     for p in self.partial_velocities(v, speeds)
                 ]
+                moved = moved or any(p is not None for p in parts)
                 dots = active_rows(
                     [(parts, f)], len(speeds), _same, dot=lambda p, g: g.dot(p)
                 )
@@ -84,9 +86,41 @@ class KaneEquations:
                 keep = self.ws.specified_inputs([])
                 mf = named_measures(self.actual_value(f, keep), frame, book)
                 parts = self._zpartials(v, speeds, frame, book)
+                moved = moved or any(x != 0 for p in parts for x in p)
                 dots = active_rows([(parts, mf)], len(speeds), book.name)
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
+        if not moved and not self._moves_with(speeds):
+            names = ", ".join(self.ws.name_of(u) for u in speeds)
+            one = len(speeds) == 1
+            raise ValueError(
+                "Fr(): no velocity or angular velocity depends on the generalized"
+                f" speed{'' if one else 's'} {names}, so every generalized active"
+                " force would be 0; is a kinematical differential equation"
+                " (Q' = ...) missing, or is a velocity written with a speed's"
+                f" derivative ({names.split(', ')[0]}') instead of the speed?"
+            )
         return sp.Matrix(rows)
+
+    def _moves_with(self, speeds: list) -> bool:
+        """Whether the velocity or angular velocity of a loaded or massive
+        object depends on any of ``speeds`` (else ``Fr()`` is an error, as
+        :meth:`frstar` is for each speed no velocity depends on)."""
+        n = self.newtonian_frame()
+        st = self.registry
+        getters: list[Any] = [lambda p=p: self.vel(p, n) for p in st.forces]
+        getters += [lambda b=b: self.ang_vel(b, n) for b in st.torques]
+        for o in st.massive:
+            getters.append(lambda o=o: self.vel(self.mass_center(o), n))
+            if isinstance(o, ReferenceFrame):
+                getters.append(lambda o=o: self.ang_vel(o, n))
+        for get in getters:
+            try:
+                v = get()
+            except ValueError:  # no velocity defined: it moves with no speed
+                continue
+            if any(p != Vector(0) for p in self.partial_velocities(v, speeds)):
+                return True
+        return False
 
     def _inertia_torque(self, b: ReferenceFrame, n: ReferenceFrame) -> Vector:
         inertia = self.central_inertia(b)
@@ -499,7 +533,7 @@ class KaneEquations:
         speeds = self.generalized_speeds()
         return [sp.Derivative(q, t) - rhs for q, rhs in self.coordinates_of(speeds)]
 
-    @command
+    @query
     def kanes_method(self) -> Any:
         """``sympy.physics.mechanics.KanesMethod`` for this script, with its
         equations formed (``mass_matrix_full``, ``forcing_full``)."""

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import KanesMethod, RigidBody
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
@@ -153,11 +154,24 @@ def _constant_masses(bodies: list) -> None:
         if isinstance(body, RigidBody):
             what.append(("inertia", body.central_inertia.to_matrix(body.frame)))
         for kind, value in what:
-            if sp.sympify(value).has(t):
+            value = sp.sympify(value)
+            if value.has(t):
+                names = sorted(
+                    {f.func.__name__ for f in value.atoms(AppliedUndef)}, key=str
+                )
+                why = ""
+                if names:
+                    many = len(names) > 1
+                    why = (
+                        f": {', '.join(names)} {'are' if many else 'is a'}"
+                        f" function{'s' if many else ''} of time (declared with"
+                        " Variables or Specified); declare a parameter with"
+                        " Constants"
+                    )
                 raise ValueError(
                     f"kanes_method(): the {kind} of {body.name} varies in time"
-                    f" ({value}); the exported model takes constant masses and"
-                    " inertias"
+                    f" ({value}){why}; the exported model takes constant masses"
+                    " and inertias"
                 )
 
 

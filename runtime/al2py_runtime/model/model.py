@@ -1,7 +1,7 @@
 """Physical entities and Kane's method (tutorial §3, §4.4-4.5, §5.2-5.9).
 
-:class:`Model` holds the physics of a script; the :class:`Workspace` offers
-its commands (:data:`MODEL_COMMANDS`) to generated modules.
+:class:`Model` holds the physics of a script; generated modules call its
+commands (:data:`MODEL_COMMANDS`) as ``al.model.NAME(...)``.
 
 Objects.  A frame or body *is* its ``sympy.physics.vector.ReferenceFrame``
 (named with the Autolev name, ``A1>`` is ``A.x``); points, particles and mass
@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..safety import Statements
 from .bodies import MassAndLoads
 from .energy import Energy
 from .equations import KaneEquations
@@ -59,10 +60,16 @@ class Model(
         #: the parts; read by :mod:`.kane` to build ``KanesMethod``'s inputs).
         self.registry = ModelState()
 
+    @property
+    def statements(self) -> Statements:
+        """Where the workspace's statement calls stand (errors of a
+        module's call name its ``.al`` line)."""
+        return self.ws.statements
 
-#: The commands a :class:`Model` answers for its workspace (``al.simprot``,
-#: ``al.v2pts``, ``al.fr``...): its methods marked ``@command``.  Generated
-#: modules call them on the workspace, which offers each one.
+
+#: The commands a :class:`Model` answers (``al.model.simprot``,
+#: ``al.model.v2pts``, ``al.model.fr``...): its methods marked ``@command``.
+#: The generator writes these calls as ``al.model.NAME``.
 def _commands(cls: type) -> frozenset[str]:
     out = set()
     for name in dir(cls):

@@ -188,6 +188,25 @@ class Objects:
         self._sync_sympy_body(body)
         return b.inertia
 
+    @command
+    def given_masses(self, *bodies: RigidBody | Particle, line=None) -> None:
+        """After ``P_particle.mass = MP`` (``Mass P=MP``): the masses as
+        Autolev keeps them (normalized; a body's central inertia follows)."""
+        for body in bodies:
+            obj = body.frame if isinstance(body, RigidBody) else body.point
+            self.set_mass(obj, body.mass)
+
+    @command
+    def given_inertia(self, body: RigidBody, *, line=None) -> Dyadic:
+        """After ``B_body.central_inertia = inertia(B, ...)`` (``Inertia B,
+        ...``): the inertia as Autolev keeps it (about the mass center, in
+        B's basis, each scalar normalized)."""
+        frame = body.frame
+        m = body.central_inertia.to_matrix(frame)
+        return self.set_inertia(
+            frame, m[0, 0], m[1, 1], m[2, 2], m[0, 1], m[1, 2], m[2, 0]
+        )
+
     def body_record(self, body: Any) -> BodyRecord:
         """What the model holds of a body (given its frame): mass center,
         mass and inertia; an error for anything that is not a body."""
@@ -329,6 +348,36 @@ class Objects:
     def set_inertia_about(self, body: Any, p: Point, value: Any, *, line=None):
         """``I_B_P>> = d``: the inertia dyadic of body B about P."""
         return self._set(Form.INERTIA, [body, p], value, line)
+
+    # What a module told sympy directly (``P.set_pos(O, v)``...): the
+    # runtime takes the value back from the sympy object, applies Autolev's
+    # rules to it (the same as the setters above: normalized, kept for
+    # Autolev's chains) and records Autolev's response.
+
+    @command
+    def given_pos(self, p: Point, o: Point, *, line=None) -> Vector:
+        """After ``P.set_pos(O, v)`` (``P_O_P> = v``): Autolev's response."""
+        return self._set(Form.POS, [o, p], p.pos_from(o), line)
+
+    @command
+    def given_vel(self, p: Point, frame: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.set_vel(N, v)`` (``V_P_N> = v``): Autolev's response."""
+        return self._set(Form.VEL, [p, frame], p.vel(frame), line)
+
+    @command
+    def given_acc(self, p: Point, frame: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.set_acc(N, v)`` (``A_P_N> = v``): Autolev's response."""
+        return self._set(Form.ACC, [p, frame], p.acc(frame), line)
+
+    @command
+    def given_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
+        """After ``B.set_ang_vel(A, w)`` (``W_B_A> = w``): Autolev's response."""
+        return self._set(Form.ANGVEL, [b, a], b.ang_vel_in(a), line)
+
+    @command
+    def given_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
+        """After ``B.set_ang_acc(A, v)`` (``ALF_B_A> = v``): Autolev's response."""
+        return self._set(Form.ANGACC, [b, a], b.ang_acc_in(a), line)
 
     def form_value(self, key: Any) -> Any:
         """The value of a syntactical form, or ``NotImplemented``."""

@@ -267,6 +267,19 @@ class Kinematics:
         return m
 
     @command
+    def given_orientation(
+        self, b: ReferenceFrame, a: ReferenceFrame, *, line=None
+    ) -> sp.Matrix:
+        """After ``B.orient_axis(A, ...)`` or ``B.orient_body_fixed(A, ...)``
+        (``Simprot``, ``Dircos``): B's direction cosines to every connected
+        frame are named (as :meth:`simprot` does) and Autolev's response
+        ``A_B`` is recorded."""
+        m = sp.Matrix(a.dcm(b))
+        self._name_dcms(b)
+        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        return m
+
+    @command
     def dircos(
         self, a: ReferenceFrame, b: ReferenceFrame, kind: str, *qs: Any, line=None
     ) -> sp.Matrix:

@@ -5,10 +5,14 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector, dynamicsymbols
+
+from ..safety import statement
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 t = dynamicsymbols._t
 
@@ -58,10 +62,20 @@ class ModelState:
     kane: dict | None = None
 
 
-def command(method: Callable) -> Callable:
-    """Mark a model method as an Autolev command that scripts call: the
-    workspace offers each one under the same name (``al.simprot``), see
-    :data:`al2py_runtime.model.model.MODEL_COMMANDS`."""
+def command(method: F) -> F:
+    """Mark a model method as an Autolev command that a generated module
+    calls (``al.model.simprot(...)``, listed in
+    :data:`al2py_runtime.model.model.MODEL_COMMANDS`): a failure of the
+    module's call names its ``.al`` line (:func:`~al2py_runtime.safety.statement`)."""
+    marked = statement(method)
+    marked.autolev_command = True  # type: ignore[attr-defined]
+    return marked
+
+
+def query(method: F) -> F:
+    """Mark a model method that a generated module's own functions call
+    (``kanes_method()``): a command whose errors are the caller's, raised
+    unchanged."""
     method.autolev_command = True  # type: ignore[attr-defined]
     return method
 

@@ -24,7 +24,9 @@ Conventions (see ``docs/semantics.md``):
 
 from __future__ import annotations
 
+import contextlib
 import math
+from collections.abc import Iterator
 from typing import Any
 
 import mpmath
@@ -36,7 +38,13 @@ from ..intermediates.autoz import Intermediate
 from ..model.kinematics import VectorMatrix
 from ..vocabulary import printed_name
 
-__all__ = ["autolev_str", "element_labels", "format_response", "format_number"]
+__all__ = [
+    "autolev_str",
+    "element_labels",
+    "format_response",
+    "format_number",
+    "shared_keys",
+]
 
 _T = dynamicsymbols._t
 
@@ -127,7 +135,11 @@ class _AutolevPrinter:
                 expr = sp.sympify(expr)
             except (sp.SympifyError, TypeError):
                 return str(expr), _ATOM
-        if isinstance(expr, sp.Expr) and expr.is_number and not expr.has(AppliedUndef):
+        if (
+            isinstance(expr, sp.Expr)
+            and _is_number(expr)
+            and not expr.has(AppliedUndef)
+        ):
             return self.number(expr, top)
         if isinstance(expr, sp.Symbol):
             return ("T" if expr == _T else expr.name.upper()), _ATOM
@@ -195,7 +207,7 @@ class _AutolevPrinter:
     # ---------------------------------------------------------------- sums
 
     def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
-        numeric = [a for a in expr.args if a.is_number and not a.has(AppliedUndef)]
+        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
         others = [a for a in expr.args if a not in numeric]
         terms = sorted(others, key=_term_key)
         if numeric:
@@ -219,7 +231,7 @@ class _AutolevPrinter:
     # ------------------------------------------------------------ products
 
     def mul(self, expr: sp.Mul) -> tuple[str, int]:
-        numeric = [a for a in expr.args if a.is_number and not a.has(AppliedUndef)]
+        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
         coeff = sp.Mul(*numeric)
         num, den = [], []
         for factor in expr.args:
@@ -344,23 +356,121 @@ def _leading_negative(expr: sp.Add) -> bool:
     return bool(re.is_negative)
 
 
+#: sort keys already formed, while :func:`shared_keys` is in force (a
+#: transcript's responses share most of their subexpressions)
+_KEYS: list[dict] = []
+#: and which subexpressions are numbers (sympy's ``is_number`` walks the
+#: whole subtree again at each node the printer visits)
+_NUMBERS: list[dict] = []
+
+
+@contextlib.contextmanager
+def shared_keys() -> Iterator[None]:
+    """Within this context every printed value shares one memo of sort keys
+    (sympy's own cache holds 1000 and is soon overrun by a large model's
+    transcript, so each key was formed again, down to the leaves) and of
+    which subexpressions are numbers."""
+    _KEYS.append({})
+    _NUMBERS.append({})
+    try:
+        yield
+    finally:
+        _KEYS.pop()
+        _NUMBERS.pop()
+
+
+_EXPR_IS_NUMBER = sp.Expr.is_number
+
+
+def _is_number(expr: Any) -> bool:
+    """``expr.is_number``, each node's answer formed once (see
+    :func:`shared_keys`): sympy's generic rule, all arguments numbers, is
+    followed here with the memo; a class with its own rule answers itself."""
+    memo = _NUMBERS[-1] if _NUMBERS else None
+    if memo is None:
+        return expr.is_number
+    return _number_in(expr, memo)
+
+
+def _number_in(expr: Any, memo: dict) -> bool:
+    found = memo.get(expr)
+    if found is None:
+        if type(expr).is_number is _EXPR_IS_NUMBER and expr.args:
+            found = all(_number_in(a, memo) for a in expr.args)
+        else:
+            found = bool(expr.is_number)
+        memo[expr] = found
+    return found
+
+
+def _sort_key(expr: Any, memo: dict) -> tuple:
+    """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
+    per ``memo`` (sympy's ``Expr.sort_key``, written with the memo)."""
+    key = memo.get(expr)
+    if key is not None:
+        return key
+    if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
+        key = sp.default_sort_key(expr)
+    else:
+        coeff, rest = expr.as_coeff_Mul()
+        exp = sp.S.One
+        if rest.is_Pow:
+            base, exp = rest.as_base_exp()
+            if base is sp.S.Exp1:  # as sympy: E**x sorts as exp(x)
+                base, exp = sp.Function("exp")(exp), sp.S.One
+            rest = base
+        if rest.is_Dummy:
+            args: tuple = (rest.sort_key(),)
+        elif rest.is_Atom:
+            args = (str(rest),)
+        else:
+            if rest.is_Add:
+                parts = rest.as_ordered_terms()
+            elif rest.is_Mul:
+                cpart, ncpart = rest.args_cnc()
+                cpart.sort(key=lambda e: _sort_key(e, memo))
+                parts = cpart + ncpart
+            else:
+                parts = rest.args
+            args = tuple([_sort_key(a, memo) for a in parts])
+        key = (rest.class_key(), (len(args), args), _sort_key(exp, memo), coeff)
+    memo[expr] = key
+    return key
+
+
+_EXPR_SORT_KEY = sp.Expr.sort_key
+
+
+def _default_sort_key(expr: Any) -> tuple:
+    return _sort_key(expr, _KEYS[-1] if _KEYS else {})
+
+
 def _factor_key(factor: sp.Expr) -> tuple:
     """Order factors of a product: names and functions first, sums last."""
     base = factor.as_base_exp()[0]
-    return (isinstance(base, sp.Add), sp.default_sort_key(factor))
+    return (isinstance(base, sp.Add), _default_sort_key(factor))
 
 
 def _term_key(term: sp.Expr) -> tuple:
     """Order terms of a sum roughly as Autolev does: by degree, then by the
     number of factors (``4*X^2 + 7*X*Y``), then by name."""
     degree = 0
-    for factor in sp.Mul.make_args(term):
-        if factor.is_number:
+    args = sp.Mul.make_args(term)
+    factors = []
+    for factor in args:
+        if _is_number(factor):
             continue
+        factors.append(factor)
         _, exp = factor.as_base_exp()
-        degree += int(exp) if exp.is_Integer and exp > 0 else 1
-    factors = [f for f in sp.Mul.make_args(term) if not f.is_number]
-    return (degree, len(factors), sp.default_sort_key(sp.Mul(*factors)))
+        power = int(exp) if exp.is_Integer else 0
+        degree += power if power > 0 else 1
+    if len(factors) == len(args):  # the term itself (no numbers to drop)
+        rest = term if len(args) > 1 else factors[0]
+    elif len(factors) < 2:
+        rest = factors[0] if factors else sp.S.One
+    else:  # a canonical product's factors stay canonical without the numbers
+        rest = sp.Mul._from_args(factors)
+    return (degree, len(factors), _default_sort_key(rest))
 
 
 # ------------------------------------------------------- vectors, dyadics

@@ -14,8 +14,10 @@ True
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
+
+from ..safety import Statements, statement
 
 __all__ = ["SETTINGS", "Settings", "Response", "check_setting"]
 
@@ -71,7 +73,11 @@ class Settings:
     autoexpress: bool = False
     beepsound: bool = True
     pause: float = 0.0
+    #: the workspace's statement calls (a failing setting line names its
+    #: ``.al`` line); None for settings made by hand
+    statements: Statements | None = field(default=None, repr=False, compare=False)
 
+    @statement
     def set(self, name: str, value: Any = None) -> None:
         """Apply a setting line such as ``Digits 7`` or ``AutoRHS ALL``."""
         key = name.upper()

@@ -13,7 +13,8 @@ line.  Responses are attached to the physical line their statement starts on.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from typing import Any
 
 from .settings import Response
 
@@ -42,25 +43,51 @@ def logical_lines(source: Sequence[str]) -> Iterator[tuple[int, str]]:
         yield start, " ".join(p.strip() for p in pending)
 
 
-def transcript_lines(source: Sequence[str], responses: Iterable[Response]) -> list[str]:
-    """The full transcript as text lines."""
-    from .printing import format_response
+def transcript_lines(
+    source: Sequence[str],
+    responses: Iterable[Response],
+    form: Callable[[Any], Any] | None = None,
+    tick: Callable[[], None] | None = None,
+) -> list[str]:
+    """The full transcript as text lines.  ``form(value)`` forms each value
+    that is not verbatim just before it is printed; ``tick()`` after each
+    response is printed (progress)."""
+    from .printing import format_response, shared_keys
 
     by_line: dict[int | None, list[Response]] = defaultdict(list)
     for r in responses:
         by_line[r.line].append(r)
     out: list[str] = []
+
+    def lines_of(r: Response) -> list[str]:
+        value = r.value if form is None or r.verbatim else form(r.value)
+        lines = format_response(r.label, value, r.digits)
+        if tick is not None:
+            tick()
+        return lines
+
+    with shared_keys():
+        _interleave(source, by_line, lines_of, out)
+    return out
+
+
+def _interleave(
+    source: Sequence[str],
+    by_line: dict[int | None, list[Response]],
+    lines_of: Callable[[Response], list[str]],
+    out: list[str],
+) -> None:
+    """The numbered input lines, each followed by its responses' lines."""
     n = 0
     for start, text in logical_lines(source):
         n += 1
         out.append(f"({n}) {text.strip()}")
         for r in by_line.pop(start, []):
-            for line in format_response(r.label, r.value, r.digits):
+            for line in lines_of(r):
                 n += 1
                 out.append(f"-> ({n}) {line}")
     for key in sorted(by_line, key=lambda k: -1 if k is None else k):
         for r in by_line[key]:
-            for line in format_response(r.label, r.value, r.digits):
+            for line in lines_of(r):
                 n += 1
                 out.append(f"-> ({n}) {line}")
-    return out

@@ -1,0 +1,206 @@
+"""Every wait against the floor: ``import sympy.physics.mechanics`` (issue 35).
+
+    python benchmarks/waits.py                 # Moore's Whipple and the corpus
+    python benchmarks/waits.py --repeats 5     # more turns (median of each)
+    python benchmarks/waits.py --no-corpus     # the Whipple bicycle only
+
+The cheapest thing any sympy model does is ``import sympy.physics.mechanics``;
+every figure here is a ratio to that floor, measured in the same run, the
+floor taking its turn before each measurement (the machine may be shared:
+only ratios measured side by side mean anything).  Each measurement is a
+fresh process; printed are the median wall time and the median CPU time
+(user + system, less sensitive to other processes) and their ratios to the
+floor's.  Measured:
+
+* Moore's Whipple bicycle (``models/Whipple/Whipple.al`` of the corpus):
+  its import; its transcript (``python whipple.py --no-run``, also as a ratio
+  to its import); ``al2py code Whipple.al`` (also to its import); its first
+  ``run()`` of the Dynamics job with an empty compile cache (in the process
+  that imported it, the import not counted; as a ratio to the import);
+* each public corpus script (``find CORPUS -name '*.al'``; the default
+  corpus is ``../corpus`` next to the checkout, or ``$AL2PY_CORPUS``):
+  converted in a copy of its own folder and imported.
+
+The targets of issue 35 are printed beside: the bicycle's import at most 3x
+the floor, its transcript and ``al2py code`` at most 1.5x its import, its
+first run at most 1x its import, each corpus script at most 12x the floor.
+Nothing is kept (the third-party scripts are copied to a temporary folder).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+WHIPPLE = "moorepants__AutolevToolKit/models/Whipple/Whipple.al"
+FLOOR = "import sympy.physics.mechanics"
+
+RUN_CHILD = r"""
+import json, sys, time
+start = time.perf_counter(); cpu = time.process_time()
+import whipple
+t_import, c_import = time.perf_counter() - start, time.process_time() - cpu
+start = time.perf_counter(); cpu = time.process_time()
+whipple.al.numerics.run(job="WhippleDynamics")
+print(json.dumps({"import": [t_import, c_import],
+                  "run": [time.perf_counter() - start, time.process_time() - cpu]}))
+"""
+
+
+def timed(cmd: list[str], cwd: Path, env: dict | None = None) -> tuple[float, float]:
+    """(wall, CPU) seconds of ``cmd`` as a fresh process."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if proc.returncode:
+        raise RuntimeError(proc.stderr.decode(errors="replace")[-2000:])
+    cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
+    return wall, cpu
+
+
+class Series:
+    """Turns of one measurement, each after a turn of the floor."""
+
+    def __init__(self) -> None:
+        self.rows: dict[str, list[tuple[float, float]]] = {}
+
+    def add(self, name: str, wall: float, cpu: float) -> None:
+        self.rows.setdefault(name, []).append((wall, cpu))
+
+    def median(self, name: str) -> tuple[float, float]:
+        turns = self.rows[name]
+        return (
+            statistics.median(w for w, _ in turns),
+            statistics.median(c for _, c in turns),
+        )
+
+
+def floor_turn(series: Series, work: Path) -> None:
+    series.add("floor", *timed([sys.executable, "-c", FLOOR], work))
+
+
+def whipple(series: Series, corpus: Path, work: Path, repeats: int) -> None:
+    folder = work / "whipple"
+    folder.mkdir()
+    shutil.copy(corpus / WHIPPLE, folder / "Whipple.al")
+    al2py = [sys.executable, "-m", "al2py"]
+    subprocess.run([*al2py, "Whipple.al", "-o", "whipple.py"], cwd=folder, check=True)
+    for k in range(repeats):
+        floor_turn(series, work)
+        series.add(
+            "Whipple import", *timed([sys.executable, "-c", "import whipple"], folder)
+        )
+        floor_turn(series, work)
+        series.add(
+            "Whipple transcript",
+            *timed([sys.executable, "whipple.py", "--no-run"], folder),
+        )
+        floor_turn(series, work)
+        series.add(
+            "al2py code Whipple.al",
+            *timed([*al2py, "code", "Whipple.al", "-o", f"code{k}"], folder),
+        )
+        floor_turn(series, work)
+        with tempfile.TemporaryDirectory(dir=work) as cache:
+            env = {**os.environ, "AL2PY_CACHE_DIR": cache}
+            proc = subprocess.run(
+                [sys.executable, "-c", RUN_CHILD],
+                cwd=folder,
+                env=env,
+                capture_output=True,
+                text=True,
+                check=True,
+            )
+        times = json.loads(proc.stdout.strip().splitlines()[-1])
+        series.add("first run() (import not counted)", *times["run"])
+        series.add("  its import, same process", *times["import"])
+
+
+def corpus_scripts(series: Series, corpus: Path, work: Path) -> list[str]:
+    names = []
+    for k, script in enumerate(sorted(corpus.rglob("*.al"))):
+        folder = work / f"corpus{k}"
+        folder.mkdir()
+        for f in script.parent.iterdir():  # the script's own folder
+            if f.is_file() and f.stat().st_size < 5_000_000:
+                shutil.copy(f, folder / f.name)
+        module = f"m{k}"
+        name = str(script.relative_to(corpus))
+        convert = subprocess.run(
+            [sys.executable, "-m", "al2py", script.name, "-o", f"{module}.py"],
+            cwd=folder,
+            capture_output=True,
+        )
+        if convert.returncode:
+            print(f"  {name}: does not convert (exit {convert.returncode})")
+            continue
+        floor_turn(series, work)
+        try:
+            series.add(name, *timed([sys.executable, "-c", f"import {module}"], folder))
+        except RuntimeError as exc:
+            last = str(exc).strip().splitlines()[-1:] or ["?"]
+            print(f"  {name}: does not import: {last[0][:100]}")
+            continue
+        names.append(name)
+    return names
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument(
+        "--corpus",
+        type=Path,
+        default=Path(os.environ.get("AL2PY_CORPUS", ROOT.parent / "corpus")),
+    )
+    parser.add_argument("--no-corpus", action="store_true")
+    args = parser.parse_args(argv)
+    if not (args.corpus / WHIPPLE).exists():
+        print(f"needs the corpus ({args.corpus / WHIPPLE} not found)")
+        return 1
+    series = Series()
+    with tempfile.TemporaryDirectory(prefix="al2py-waits-") as tmp:
+        work = Path(tmp)
+        whipple(series, args.corpus, work, args.repeats)
+        scripts = [] if args.no_corpus else corpus_scripts(series, args.corpus, work)
+    fw, fc = series.median("floor")
+    iw, ic = series.median("Whipple import")
+    print(f"\nfloor: {FLOOR}: {fw:.2f} s wall, {fc:.2f} s CPU (median)\n")
+    print(f"{'':44} {'wall':>7} {'x floor':>8} {'CPU':>7} {'x floor':>8}  target")
+    targets = {
+        "Whipple import": "<= 3x floor",
+        "Whipple transcript": "<= 1.5x import",
+        "al2py code Whipple.al": "<= 1.5x import",
+        "first run() (import not counted)": "<= 1x import",
+    }
+    for name in [*targets, "  its import, same process"]:
+        w, c = series.median(name)
+        line = f"{name:44} {w:7.2f} {w / fw:8.2f} {c:7.2f} {c / fc:8.2f}"
+        if name in targets and name != "Whipple import":
+            line += f"  {w / iw:.2f}x import wall, {c / ic:.2f}x CPU"
+            line += f" ({targets[name]})"
+        elif name in targets:
+            line += f"  ({targets[name]})"
+        print(line)
+    if scripts:
+        print(f"\ncorpus scripts' imports ({len(scripts)}; target <= 12x floor):")
+        for name in sorted(scripts, key=lambda n: -series.median(n)[1]):
+            w, c = series.median(name)
+            print(f"  {name[:60]:60} {w:7.2f} {w / fw:6.1f}x {c:7.2f} {c / fc:6.1f}x")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
