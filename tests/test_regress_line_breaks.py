@@ -9,6 +9,7 @@ the line (``Constants HIDDEN``) became code, and the transcript numbered a
 from __future__ import annotations
 
 import pytest
+from al2py_runtime.safety import module_source
 from conftest import load_module
 
 from al2py import convert
@@ -31,7 +32,7 @@ def test_a_comment_holding_a_break_character_stays_a_comment(name, tmp_path):
     assert 'al.constants("HIDDEN"' not in result.code
     module = load_module(result.code, tmp_path, result.module)
     assert "HIDDEN" not in module.AUTOLEV
-    transcript = module.al.transcript(module.AL_SOURCE)
+    transcript = module.al.transcript(module_source(module.__file__))
     # 4 input lines and 2 responses, numbered as Autolev did: 1 to 6
     assert [line.split(")")[0] for line in transcript] == [
         "(1",

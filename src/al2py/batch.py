@@ -277,8 +277,10 @@ def _check_in_this_process(
     try:
         reference = transcript.read_text(encoding="utf-8", errors="replace")
         entries = parse_transcript(reference)
+        from al2py_runtime.safety import module_source
+
         problem, result.notes = transcript_verdict(
-            reference, entries, module.al, getattr(module, "AL_SOURCE", ())
+            reference, entries, module.al, module_source(str(module_path))
         )
         if problem:  # never "passed 0/0": the reference cannot be used
             result.message = "\n".join(

@@ -113,7 +113,7 @@ def transcript_verdict(
     cover: a transcript cut off in the middle of a line, numbers out of
     order, or one that ends before the script does (the responses of the
     lines after its end are not compared).  ``source`` is the script's lines
-    (a module's ``AL_SOURCE``)."""
+    (the lines a module echoes: ``al2py_runtime.safety.module_source``)."""
     if not text.strip():
         return "the transcript is empty", []
     bad = text.count("\ufffd") + text.count("\x00")
