@@ -37,9 +37,9 @@ from .analysis import (
     Symbol,
     input_names,
     int_literal,
-    walk_expr,
 )
 from .errors import InternalError, SemanticError
+from .lines import OTHER_BREAKS, split_lines
 from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
@@ -688,13 +688,12 @@ class Generator:
         return f"{left} {op} {right}", prec
 
     def _exact(self, node: ir.Expr) -> str | None:
-        """``Integer(n)`` for a pure-number left operand, so Python keeps exactness."""
-        if not any(
-            isinstance(n, ir.Name | ir.Call | ir.Element) for n in walk_expr(node)
-        ):
-            if isinstance(node, ir.Number) and node.is_integer:
-                self.imports.use("sympy", "Integer")
-                return f"Integer({int(node.text)})"
+        """``Integer(n)`` for a pure-number left operand, so Python keeps
+        exactness (a number: nothing below it to walk, so a long ``A/B/C``
+        chain costs linear time)."""
+        if isinstance(node, ir.Number) and node.is_integer:
+            self.imports.use("sympy", "Integer")
+            return f"Integer({int(node.text)})"
         return None
 
     def expr_MatrixLit(self, node: ir.MatrixLit) -> tuple[str, int]:
@@ -888,13 +887,18 @@ def _number_code(text: str) -> str:
     return text
 
 
+_NOT_BREAKS = str.maketrans(dict.fromkeys(OTHER_BREAKS, " "))
+
+
 def comment_lines(text: str, prefix: str = "") -> list[str]:
     """``text`` as ``#`` comment lines, wrapped, never able to end the comment.
 
     ``prefix`` marks the first line (``al> `` for echoed Autolev statements)."""
     out = []
-    for raw in text.splitlines() or [""]:
-        raw = raw.replace("\r", " ").expandtabs(4).rstrip()
+    for raw in split_lines(text) or [""]:
+        # a form feed, NEL or U+2028 is not a line break in Autolev: shown
+        # as a blank, it can neither end the comment nor hide text
+        raw = raw.translate(_NOT_BREAKS).expandtabs(4).rstrip()
         chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
         for k, c in enumerate(chunks):
             lead = prefix if k == 0 else " " * len(prefix)
