@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import io
 import re
-import textwrap
 import tokenize
 from collections import defaultdict
 
@@ -39,7 +38,6 @@ from .analysis import (
     int_literal,
 )
 from .errors import InternalError, SemanticError
-from .lines import OTHER_BREAKS, split_lines
 from .static_checks import unknown_call_message
 
 __all__ = ["Generator", "Imports"]
@@ -57,7 +55,6 @@ _POINT_THEORIES = {
     "V1PT": "v1pt_theory",
     "A1PT": "a1pt_theory",
 }
-_COMMENT_WIDTH = 84
 #: syntactical forms whose assignment is sympy's own setter
 #: (``P_O_P> = v`` is ``P.set_pos(O, v)``), by form
 _SYMPY_SETTERS = {
@@ -885,25 +882,6 @@ def _number_code(text: str) -> str:
     if text.endswith("."):
         text += "0"
     return text
-
-
-_NOT_BREAKS = str.maketrans(dict.fromkeys(OTHER_BREAKS, " "))
-
-
-def comment_lines(text: str, prefix: str = "") -> list[str]:
-    """``text`` as ``#`` comment lines, wrapped, never able to end the comment.
-
-    ``prefix`` marks the first line (``al> `` for echoed Autolev statements)."""
-    out = []
-    for raw in split_lines(text) or [""]:
-        # a form feed, NEL or U+2028 is not a line break in Autolev: shown
-        # as a blank, it can neither end the comment nor hide text
-        raw = raw.translate(_NOT_BREAKS).expandtabs(4).rstrip()
-        chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
-        for k, c in enumerate(chunks):
-            lead = prefix if k == 0 else " " * len(prefix)
-            out.append(f"# {lead}{c}".rstrip())
-    return out
 
 
 def _model_calls(lines: list[str]) -> list[str]:
