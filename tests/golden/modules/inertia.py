@@ -56,12 +56,13 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
-    from sympy.physics.vector import outer
+    from sympy.physics.vector import Point, outer
 
 al = Workspace("inertia.al", __file__)
 
 # al> Points P
-P = al.model.points("P")
+P = Point("P")
+al.model.declare_points(P)
 # al> Bodies B
 B = al.model.bodies("B")
 Bo = al.model.point("BO")

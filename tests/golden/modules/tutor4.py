@@ -72,7 +72,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from sympy import Eq
-    from sympy.physics.vector import Vector
+    from sympy.physics.mechanics import Force, Particle
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor4.al", __file__)
 
@@ -81,14 +82,18 @@ al = Workspace("tutor4.al", __file__)
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Frames A, B
-A, B = al.model.frames("A", "B")
+A, B = ReferenceFrame("A"), ReferenceFrame("B")
+al.model.declare_frames(A, B)
 # al> Particles P, Q
-P, Q = al.model.particles("P", "Q")
-P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)
+P, Q = Point("P"), Point("Q")
+P_particle, Q_particle = Particle("P", P, 0), Particle("Q", Q, 0)
+al.model.declare_particles(P_particle, Q_particle)
 # al> Points O
-O_ = al.model.points("O")
+O_ = Point("O")
+al.model.declare_points(O_)
 # al> %-----
 # al> % Mathematical declarations: variables, constants, mass
 # al> Variables U{2} % Generalized speeds
@@ -147,6 +152,7 @@ al.model.v2pts(N, B, P, Q, line=36)
 # al> %-----
 # al> % Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
 LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=40)
@@ -155,7 +161,7 @@ STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 # al> UVEC> = P_O_Q> / LOQ % Unit vector from O to Q
 UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
-al.model.force_between(O_, Q, -K * STRETCH * UVEC_vec)
+loads += [Force(O_, -(-K * STRETCH * UVEC_vec)), Force(Q, -K * STRETCH * UVEC_vec)]
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr()

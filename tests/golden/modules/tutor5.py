@@ -68,7 +68,7 @@ else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from sympy import Eq
     from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor5.al", __file__)
 
@@ -77,7 +77,8 @@ al = Workspace("tutor5.al", __file__)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies        A, B, C
 A, B, C = al.model.bodies("A", "B", "C")
 Ao = al.model.point("AO")
@@ -89,7 +90,8 @@ A_body, B_body, C_body = (
     al.model.rigid_body(C),
 )
 # al> Points        O, P, Q, R
-O_, P, Q, R = al.model.points("O", "P", "Q", "R")
+O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
+al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}                % Generalized speeds
@@ -221,6 +223,7 @@ al.model.constrain("DEPENDENT", [U2, U3], line=63)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> Force_Q> = H*N2>
 al.model.set_force(Q, H * N.y, line=67)

@@ -79,8 +79,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from sympy import Eq, Matrix
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.mechanics import Force, inertia
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor8.al", __file__)
 
@@ -93,14 +93,16 @@ al.settings.set("Digits", 2)
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian   N          % Newtonian reference frame
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies      A, B       % Cart, inverted pendulum
 A, B = al.model.bodies("A", "B")
 Ao = al.model.point("AO")
 Bo = al.model.point("BO")
 A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
 # al> Points      O          % Point fixed in N
-O_ = al.model.points("O")
+O_ = Point("O")
+al.model.declare_points(O_)
 # al> %-----
 # al> % Variables, constants, and specified
 # al> Variables   U{2}'      % Generalized speeds; derivatives
@@ -166,9 +168,11 @@ al.model.v2pts(N, B, Ao, Bo, line=41)
 # al> %-----
 # al> % Forces
 # al> Gravity( -G*N2> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(-G * N.y)
 # al> Force_Ao> += F*N1>
-al.model.set_force(Ao, al.model.force_on(Ao) + (F * N.x), line=45)
+loads.append(Force(Ao, F * N.x))
+al.model.given_force(Ao, line=45)
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr() + FrStar()

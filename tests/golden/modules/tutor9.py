@@ -77,7 +77,7 @@ else:  # imported only here, so that the --help above answers at once
     from al2py_runtime.functions import acos
     from sympy import Matrix
     from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.vector import ReferenceFrame, Vector
 
 al = Workspace("tutor9.al", __file__)
 
@@ -86,13 +86,15 @@ al = Workspace("tutor9.al", __file__)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N              % Newtonian reference frame
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies         A              % Carrier
 A = al.model.bodies("A")
 Ao = al.model.point("AO")
 A_body = al.model.rigid_body(A)
 # al> Frames         B              % Rotor
-B = al.model.frames("B")
+B = ReferenceFrame("B")
+al.model.declare_frames(B)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}'         % Generalized speeds; derivatives

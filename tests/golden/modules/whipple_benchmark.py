@@ -87,6 +87,7 @@ else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from sympy import Eq, Matrix
     from sympy.physics.mechanics import inertia
+    from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("whipple_benchmark.al", __file__)
 
@@ -100,9 +101,11 @@ al = Workspace("whipple_benchmark.al", __file__)
 # al> AutoZ ON                           % intermediates, as Autolev's Z's
 al.settings.set("Autoz", "ON")
 # al> Newtonian N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Frames    Y, L, E            % heading, lean (roll), steer axis
-Y, L, E = al.model.frames("Y", "L", "E")
+Y, L, E = ReferenceFrame("Y"), ReferenceFrame("L"), ReferenceFrame("E")
+al.model.declare_frames(Y, L, E)
 # al> Bodies    R, B, H, F
 R, B, H, F = al.model.bodies("R", "B", "H", "F")
 Ro = al.model.point("RO")
@@ -116,7 +119,8 @@ R_body, B_body, H_body, F_body = (
     al.model.rigid_body(F),
 )
 # al> Points    P, S               % rear contact point, a point on the steer axis
-P, S = al.model.points("P", "S")
+P, S = Point("P"), Point("S")
+al.model.declare_points(P, S)
 # al> %-----
 # al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
 # al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
@@ -286,6 +290,7 @@ DEPENDENT = al.assign("DEPENDENT[5]", al.model.dot(SLIPF_vec, N.z), line=80)
 al.model.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
 # al> %-----
 # al> Gravity(G*N3>)
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=84)
