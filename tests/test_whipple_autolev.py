@@ -36,7 +36,7 @@ def test_whipple_script_converts():
     compile(code, "whipple_benchmark.py", "exec")
     # Every constraint and the steer-axis orientation reach the module.
     assert code.count("DEPENDENT") >= 5
-    assert '"BODY321"' in code
+    assert 'orient_body_fixed(E, (Q7, -LAM, 0), "321")' in code
 
 
 def test_whipple_script_parameters_are_table1():
