@@ -112,6 +112,7 @@ RESERVED_IDENTIFIERS = (
             "ReferenceFrame",
             "Point",
             "Particle",
+            "symbols",
             "Workspace",
             "AUTOLEV",
             "AL_SOURCE",

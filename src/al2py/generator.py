@@ -110,6 +110,7 @@ class Generator:
         self.has_kane = False  # Fr() or FrStar() was generated
         self._kd_started = False  # ``kd_eqs = []`` was emitted
         self._loads_started = False  # ``loads = al.model.loads`` was emitted
+        self._complex_set = False  # a Complex setting was seen
         self._echoed = 0  # lines of the .al echoed so far
 
     # ------------------------------------------------------------ driving
@@ -161,6 +162,8 @@ class Generator:
         arg = value if re.fullmatch(r"\d+", value) else repr(value.upper())
         if stmt.name == "AUTOEPSILON":
             arg = _number_code(value)
+        if stmt.name == "COMPLEX":  # constants' assumptions follow it
+            self._complex_set = True
         return [f"al.settings.set({stmt.name.title()!r}, {arg})"]
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
@@ -196,6 +199,16 @@ class Generator:
                 sym = self.facts.quantity(spellings[-1])
                 value = self.expr(item.values[0])
                 assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
+        if method == "constants" and not self._complex_set:
+            if not any(spec.endswith(("+'", "-'")) for spec in specs):
+                # real symbols, as sympy writes them; the runtime declares them
+                make = self.imports.use("sympy", "symbols")
+                spelled = " ".join(spec[1:-1] for spec in specs)
+                return [
+                    f"{', '.join(names)} = {make}({spelled!r}, real=True)",
+                    f"al.declare_constants({', '.join(names)}, line={self._line})",
+                    *assigns,
+                ]
         call = f"al.{method}({', '.join(specs)}, line={self._line})"
         return [f"{', '.join(names)} = {call}", *assigns]
 

@@ -1142,3 +1142,26 @@ def test_loads_are_one_list_of_sympy_loads():
     assert any(entry.has(F) for entry in fr)
     forcing = al.model.kanes_method().forcing
     assert any(entry.has(F) for entry in forcing)
+
+
+def test_declared_sympy_objects_are_autolevs_names():
+    """Issue 33: ``N = ReferenceFrame("N")``, ``O = Point("O")``,
+    ``symbols("G", real=True)`` declared by the runtime are the names' objects;
+    a constant without Autolev's assumptions is refused, not taken silently."""
+    from sympy.physics.mechanics import Particle
+    from sympy.physics.vector import Point, ReferenceFrame
+
+    al = Workspace("decl.al")
+    N = ReferenceFrame("N")
+    al.model.declare_newtonian(N)
+    P = Point("P")
+    P_particle = Particle("P", P, 0)
+    al.model.declare_particles(P_particle)
+    G = sp.Symbol("G", real=True)
+    al.declare_constants(G, line=3)
+    assert al.model.frame("N") is N and al.model.point("P") is P
+    assert al.model.point("NO") is not None
+    assert al.model.particle(P) is P_particle
+    assert al.kind("G") == "constant" and al.table.entries["G"].obj is G
+    with pytest.raises(Exception, match="real"):
+        al.declare_constants(sp.Symbol("H"), line=4)

@@ -56,6 +56,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
     from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("constrain.al", __file__)
@@ -79,7 +80,8 @@ U1, U2, U3 = al.variables("U1", "U2", "U3", line=5)
 # al> Variables      Qa, Qb, Qc       % Angles for A, B, C
 Qa, Qb, Qc = al.variables("QA", "QB", "QC", line=6)
 # al> Constants      LA, LB, LC       % Lengths of A, B, C
-LA, LB, LC = al.constants("LA", "LB", "LC", line=7)
+LA, LB, LC = symbols("LA LB LC", real=True)
+al.declare_constants(LA, LB, LC, line=7)
 # al> Specified      Vx, Vy           % Specified motion of P
 Vx, Vy = al.specified("VX", "VY", line=8)
 # al> Simprot(N, A, 3, QA)

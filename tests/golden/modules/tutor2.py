@@ -60,6 +60,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from al2py_runtime.functions import acos_deg
+    from sympy import symbols
     from sympy.physics.mechanics import inertia
     from sympy.physics.vector import Point
 
@@ -93,7 +94,8 @@ al.model.declare_points(CM)
 # al> Variables PHI % Angle between plates A and B
 PHI = al.variables("PHI", line=12)
 # al> Constants W=1 % Width of plate
-W = al.constants("W", line=13)
+W = symbols("W", real=True)
+al.declare_constants(W, line=13)
 al.assign("W", 1, line=13)
 # al> %-----
 # al> % Mass and inertia

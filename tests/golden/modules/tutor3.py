@@ -69,6 +69,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
     from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("tutor3.al", __file__)
@@ -93,7 +94,8 @@ al.model.declare_points(O_, P, Q, R)
 # al> Variables   QA, QB, QC      % Configuration variables
 QA, QB, QC = al.variables("QA", "QB", "QC", line=9)
 # al> Constants   LA, LB, LC, LN  % Lengths
-LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=10)
+LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
+al.declare_constants(LA, LB, LC, LN, line=10)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)

@@ -71,7 +71,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq
+    from sympy import Eq, symbols
     from sympy.physics.mechanics import Force, Particle
     from sympy.physics.vector import Point, ReferenceFrame, Vector
 
@@ -101,9 +101,11 @@ U1, U2 = al.variables("U1", "U2", line=11)
 # al> Variables QA', QB' % Generalized coordinates; derivatives
 QA, QB = al.variables("QA'", "QB'", line=12)
 # al> Constants G, LA, LB % Gravitational acceleration, lengths of A, B
-G, LA, LB = al.constants("G", "LA", "LB", line=13)
+G, LA, LB = symbols("G LA LB", real=True)
+al.declare_constants(G, LA, LB, line=13)
 # al> Constants K, LO % Spring constant, natural length of spring
-K, LO = al.constants("K", "LO", line=14)
+K, LO = symbols("K LO", real=True)
+al.declare_constants(K, LO, line=14)
 # al> Mass P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=15)
 P_particle.mass = MP

@@ -80,7 +80,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from al2py_runtime.functions import sin
-    from sympy import Eq
+    from sympy import Eq, symbols
     from sympy.physics.mechanics import Force, Particle
     from sympy.physics.vector import Point, ReferenceFrame
 
@@ -114,11 +114,14 @@ QA, QB = al.variables("QA'", "QB'", line=13)
 # al> Variables      F1, F2         % Contact forces
 F1, F2 = al.variables("F1", "F2", line=14)
 # al> Constants      G, LA, LB      % Gravitational acceleration, lengths of A, B
-G, LA, LB = al.constants("G", "LA", "LB", line=15)
+G, LA, LB = symbols("G LA LB", real=True)
+al.declare_constants(G, LA, LB, line=15)
 # al> Constants      K, LO          % Spring constant, natural length of spring
-K, LO = al.constants("K", "LO", line=16)
+K, LO = symbols("K LO", real=True)
+al.declare_constants(K, LO, line=16)
 # al> Constants      C, D           % Damping constants
-C, D = al.constants("C", "D", line=17)
+C, D = symbols("C D", real=True)
+al.declare_constants(C, D, line=17)
 # al> Specified      STRETCH'       % Elongation of spring joining O and Q
 STRETCH = al.specified("STRETCH'", line=18)
 # al> Specified      FP = -D*QA'    % Force on P

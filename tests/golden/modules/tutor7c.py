@@ -69,7 +69,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
+    from sympy import Eq, Matrix, symbols
     from sympy.physics.mechanics import inertia
     from sympy.physics.vector import Point, ReferenceFrame, Vector
 
@@ -111,10 +111,12 @@ QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=15)
 # al> Variables  FA{2}, FC{2}  % Contact forces
 FA1, FA2, FC1, FC2 = al.variables("FA1", "FA2", "FC1", "FC2", line=16)
 # al> Constants  G=9.81        % Gravitational acceleration
-G = al.constants("G", line=17)
+G = symbols("G", real=True)
+al.declare_constants(G, line=17)
 al.assign("G", 9.81, line=17)
 # al> Constants  LA=1, LB=2, LC=2, LN=1 % Lengths
-LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=18)
+LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
+al.declare_constants(LA, LB, LC, LN, line=18)
 al.assign("LA", 1, line=18)
 al.assign("LB", 2, line=18)
 al.assign("LC", 2, line=18)

@@ -78,7 +78,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
+    from sympy import Eq, Matrix, symbols
     from sympy.physics.mechanics import Force, inertia
     from sympy.physics.vector import Point, ReferenceFrame, Vector
 
@@ -110,11 +110,14 @@ U1, U2 = al.variables("U1'", "U2'", line=13)
 # al> Variables   X', THETA' % Generalized coordinates; derivatives
 X, THETA = al.variables("X'", "THETA'", line=14)
 # al> Constants   L          % Length of rod
-L = al.constants("L", line=15)
+L = symbols("L", real=True)
+al.declare_constants(L, line=15)
 # al> Constants   G          % Gravitational acceleration
-G = al.constants("G", line=16)
+G = symbols("G", real=True)
+al.declare_constants(G, line=16)
 # al> Constants   K{4}       % Control gains
-K1, K2, K3, K4 = al.constants("K1", "K2", "K3", "K4", line=17)
+K1, K2, K3, K4 = symbols("K1 K2 K3 K4", real=True)
+al.declare_constants(K1, K2, K3, K4, line=17)
 # al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
 F = al.specified("F", line=18)
 al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)

@@ -75,7 +75,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from al2py_runtime.functions import acos
-    from sympy import Matrix
+    from sympy import Matrix, symbols
     from sympy.physics.mechanics import inertia
     from sympy.physics.vector import ReferenceFrame, Vector
 
@@ -100,9 +100,11 @@ al.model.declare_frames(B)
 # al> Variables      U{3}'         % Generalized speeds; derivatives
 U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=10)
 # al> Constants      OMEGA         % Angular speed of B in A
-OMEGA = al.constants("OMEGA", line=11)
+OMEGA = symbols("OMEGA", real=True)
+al.declare_constants(OMEGA, line=11)
 # al> Constants      J              % Moment of inertia of B about spin axis
-J = al.constants("J", line=12)
+J = symbols("J", real=True)
+al.declare_constants(J, line=12)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
@@ -191,7 +193,8 @@ al.numerics.code("DYNAMICS", file="tutor9.for", line=54)
 # al> Variables  dU{3}'          % Perturbations of U1, U2, U3
 dU1, dU2, dU3 = al.variables("DU1'", "DU2'", "DU3'", line=59)
 # al> Constants  nU3             % Nominal solution for U3
-nU3 = al.constants("NU3", line=60)
+nU3 = symbols("NU3", real=True)
+al.declare_constants(nU3, line=60)
 # al> %-----
 # al> %      Check nominal solution
 # al> CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)

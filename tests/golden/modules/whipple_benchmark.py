@@ -85,7 +85,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
+    from sympy import Eq, Matrix, symbols
     from sympy.physics.mechanics import inertia
     from sympy.physics.vector import Point, ReferenceFrame
 
@@ -133,17 +133,23 @@ U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(
     "U1'", "U2'", "U3'", "U4'", "U5'", "U6'", "U7'", "U8'", line=17
 )
 # al> Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt, gravity
-W, C, LAM, G = al.constants("W", "C", "LAM", "G", line=18)
+W, C, LAM, G = symbols("W C LAM G", real=True)
+al.declare_constants(W, C, LAM, G, line=18)
 # al> Constants RR, RF                   % wheel radii
-RR, RF = al.constants("RR", "RF", line=19)
+RR, RF = symbols("RR RF", real=True)
+al.declare_constants(RR, RF, line=19)
 # al> Constants XB, ZB, XH, ZH           % mass centres in the reference configuration
-XB, ZB, XH, ZH = al.constants("XB", "ZB", "XH", "ZH", line=20)
+XB, ZB, XH, ZH = symbols("XB ZB XH ZH", real=True)
+al.declare_constants(XB, ZB, XH, ZH, line=20)
 # al> Constants IRXX, IRYY, IFXX, IFYY
-IRXX, IRYY, IFXX, IFYY = al.constants("IRXX", "IRYY", "IFXX", "IFYY", line=21)
+IRXX, IRYY, IFXX, IFYY = symbols("IRXX IRYY IFXX IFYY", real=True)
+al.declare_constants(IRXX, IRYY, IFXX, IFYY, line=21)
 # al> Constants IBXX, IBYY, IBZZ, IBXZ
-IBXX, IBYY, IBZZ, IBXZ = al.constants("IBXX", "IBYY", "IBZZ", "IBXZ", line=22)
+IBXX, IBYY, IBZZ, IBXZ = symbols("IBXX IBYY IBZZ IBXZ", real=True)
+al.declare_constants(IBXX, IBYY, IBZZ, IBXZ, line=22)
 # al> Constants IHXX, IHYY, IHZZ, IHXZ
-IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
+IHXX, IHYY, IHZZ, IHXZ = symbols("IHXX IHYY IHZZ IHXZ", real=True)
+al.declare_constants(IHXX, IHYY, IHZZ, IHXZ, line=23)
 # al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
 MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
