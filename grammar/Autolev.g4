@@ -150,9 +150,22 @@ fileCommand
     : (SAVE | RUN) fileName
     ;
 
+// A path is read from its pieces (`../lib/kin.al` is `.` `.` `/` `lib` `/`
+// `kin.al`; `sub\x.al` holds a backslash, an ERRCHAR): a FILENAME token
+// holding `/` or `-` would make the lexer look ahead across every `A-B-C`
+// or `----A` of an expression (quadratic time).  The parser checks that the
+// pieces touch and which characters they are.
 fileName
+    : filePiece* (FILENAME | ident)
+    ;
+
+filePiece
     : FILENAME
     | ident
+    | NUMBER
+    | DIV
+    | MINUS
+    | ERRCHAR
     ;
 
 // `Digits 7`, `Overwrite All`, and word commands with a list:
@@ -296,8 +309,10 @@ NUMBER
 
 ID         : LETTER (LETTER | DIGIT | '_')* ('>' ('>' '>'?)?)? ;
 
-// A file name has an extension: `tutor2.all`, `../lib/kin.al`, `tutor3.for`.
-FILENAME   : (LETTER | DIGIT | [_./\\~-])* '.' LETTER (LETTER | DIGIT | '_')* ;
+// A file name has an extension: `tutor2.all`, `tutor3.for`, `my_file.al`;
+// paths (`../lib/kin.al`, `my-file.al`) are put together by the parser's
+// fileName rule.
+FILENAME   : (LETTER | DIGIT | [_.~])* '.' LETTER (LETTER | DIGIT | '_')* ;
 
 STRING     : '"' ~["\r\n]* '"' ;
 UNTERMINATED_STRING : '"' ~["\r\n]* ;

@@ -8,9 +8,16 @@ time budget.  At every stage the only acceptable outcomes are success or exit
 status 2 with a message naming the ``.al`` file (and, after conversion, the
 line): never a Python traceback.
 
-By default a representative subset of :data:`N_DEFAULT` mutants runs (about a
-minute on two cores).  The full acceptance run of :data:`N_FULL` mutants is
-in the full tier::
+Mutants of the public corpus scripts (Moore's bicycles, DAS3, the BioMAC
+gait models: read at run time from ``$ALMIRROR`` or ``../corpus``, skipped
+when absent) are converted and run the same way, each in its own process.
+Every child process runs under a memory cap (``resource.setrlimit``) and a
+time limit: running out of either is a failure too, as is a ``MemoryError``
+traceback.
+
+By default a representative subset of :data:`N_DEFAULT` tutorial and
+:data:`N_CORPUS_DEFAULT` corpus mutants runs (a minute or two on two cores).
+The full acceptance runs are in the full tier::
 
     make test-full        # or: .venv/bin/python -m pytest --full tests/test_reliability_fuzz.py
 """
@@ -30,7 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from test_fuzz import SEEDS, _workdir
+from test_fuzz import SEEDS, CorpusScript, _workdir, capped, corpus_mutant
 from test_fuzz import mutated_case as syntax_mutant
 
 from al2py import cli
@@ -38,6 +45,10 @@ from al2py import cli
 FIRST = 5000  # mutant numbers not used by test_fuzz.py
 N_DEFAULT = 24
 N_FULL = 500
+N_CORPUS_DEFAULT = 8
+N_CORPUS_FULL = 150
+CORPUS_FIRST = 9000  # corpus mutant numbers not used by test_fuzz.py
+CONVERT_TIMEOUT = 120.0  # seconds to convert one corpus mutant
 WORKERS = max(1, min(4, os.cpu_count() or 1))
 RUN_TIMEOUT = 120.0  # seconds per module process (symbolic work included)
 BUDGET = {"AL2PY_MAX_SECONDS": "10", "AL2PY_MAX_EVALS": "300000"}
@@ -156,9 +167,14 @@ def _convert_only(index: int, root: Path) -> Outcome | None:
 
 def _run_only(index: int, root: Path) -> Outcome:
     seed, _ = mutated_case(index)
-    work = root / f"m{index}"
     name = "fuzz_" + re.sub(r"\W", "_", seed.stem)
-    context = f"mutant {index} of {seed.name}"
+    return _run_module(
+        index, root / f"m{index}", name, f"mutant {index} of {seed.name}"
+    )
+
+
+def _run_module(index: int, work: Path, name: str, context: str) -> Outcome:
+    """Import and run a converted mutant in a capped child process."""
     try:
         run = subprocess.run(
             [sys.executable, "-c", DRIVER, name],
@@ -167,11 +183,12 @@ def _run_only(index: int, root: Path) -> Outcome:
             cwd=work,
             timeout=RUN_TIMEOUT,
             env={**os.environ, **BUDGET},
+            preexec_fn=capped,
         )
     except subprocess.TimeoutExpired:
-        return Outcome(index, "timeout")
+        return Outcome(index, "timeout", f"{context}: ran past {RUN_TIMEOUT:g} s")
     stderr = run.stderr
-    if "Traceback" in stderr or run.returncode not in (0, 2):
+    if "Traceback" in stderr or "MemoryError" in stderr or run.returncode not in (0, 2):
         return Outcome(
             index, "run", f"{context}: exit {run.returncode}\n{stderr[-3000:]}"
         )
@@ -181,6 +198,68 @@ def _run_only(index: int, root: Path) -> Outcome:
             return Outcome(index, "run", f"{context}: unlocated\n{stderr[-2000:]}")
         return Outcome(index, "run")
     return Outcome(index, "ok")
+
+
+def _corpus_case(index: int, root: Path) -> Outcome:
+    """Convert (in a capped child process) and run one corpus mutant."""
+    script, text = corpus_mutant(index)
+    work = root / f"c{index}"
+    work.mkdir()
+    name = "fuzz_" + re.sub(r"\W", "_", Path(script.name).stem)
+    path = CorpusScript(script.name, text, script.macros).write(work, name)
+    context = f"corpus mutant {index} of {script.name}"
+    try:
+        conv = subprocess.run(
+            [sys.executable, "-m", "al2py", path.name, "-o", f"{name}.py"],
+            capture_output=True,
+            text=True,
+            cwd=work,
+            timeout=CONVERT_TIMEOUT,
+            preexec_fn=capped,
+        )
+    except subprocess.TimeoutExpired:
+        return Outcome(
+            index, "timeout", f"{context}: converting took {CONVERT_TIMEOUT:g} s"
+        )
+    errors = conv.stderr
+    if (
+        "Traceback" in errors
+        or "MemoryError" in errors
+        or conv.returncode not in (0, 2)
+    ):
+        return Outcome(index, "convert", f"{context}: exit {conv.returncode}\n{errors}")
+    if conv.returncode == 2:
+        if not CONVERT_ERROR.match(errors):
+            return Outcome(index, "convert", f"{context}: unlocated\n{errors}")
+        return Outcome(index, "convert")
+    return _run_module(index, work, name, context)
+
+
+def _fuzz_corpus(n: int, root: Path) -> list[Outcome]:
+    with ThreadPoolExecutor(max_workers=WORKERS) as pool:
+        first = CORPUS_FIRST
+        return list(pool.map(lambda i: _corpus_case(i, root), range(first, first + n)))
+
+
+def test_generated_modules_survive_corpus_mutants(tmp_path, monkeypatch):
+    monkeypatch.delenv("AUTOLEVPATH", raising=False)
+    outcomes = _fuzz_corpus(N_CORPUS_DEFAULT, tmp_path)
+    problems = [o.problem for o in outcomes if o.problem]
+    assert not problems, "\n\n".join(problems[:5])
+
+
+@pytest.mark.slow
+@pytest.mark.full  # 150 corpus mutants take many minutes
+def test_generated_modules_survive_many_corpus_mutants(tmp_path, monkeypatch):
+    monkeypatch.delenv("AUTOLEVPATH", raising=False)
+    outcomes = _fuzz_corpus(N_CORPUS_FULL, tmp_path)
+    problems = [o.problem for o in outcomes if o.problem]
+    stages = {
+        s: sum(o.stage == s for o in outcomes)
+        for s in ("convert", "run", "ok", "timeout")
+    }
+    print(f"\n{N_CORPUS_FULL} corpus mutants: {stages}")
+    assert not problems, "\n\n".join(problems[:5])
 
 
 def test_generated_modules_survive_mutants(tmp_path, monkeypatch):

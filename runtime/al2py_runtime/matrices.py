@@ -182,8 +182,24 @@ def det(a: Any) -> sp.Expr:
     A*D - B*C
     """
     m = _square(a, "Det(A)")
+    if m.rows > MAX_SYMBOLIC_DET and (m.is_upper or m.is_lower):
+        return sp.Mul(*m.diagonal())
+    if m.rows > MAX_SYMBOLIC_DET and m.free_symbols:
+        raise ValueError(
+            f"Det of a {m.rows}x{m.cols} matrix of symbolic expressions would "
+            f"take minutes to hours (al2py expands symbolic determinants up to "
+            f"{MAX_SYMBOLIC_DET}x{MAX_SYMBOLIC_DET}: about 10 s for a full one); "
+            "give the quantities numbers first (Evaluate) or split the matrix"
+        )
     with dotprodsimp(False if _large(m) else None):
         return m.det(method="berkowitz")
+
+
+#: the largest matrix of symbolic expressions whose determinant ``Det``
+#: expands (a full 16x16 one takes about 13 s, a 20x20 one 33 s and the
+#: time grows as the fourth power of the size: a 40x40 one would take
+#: minutes to hours, silently)
+MAX_SYMBOLIC_DET = 16
 
 
 def _large(m: sp.MatrixBase) -> bool:

@@ -391,17 +391,47 @@ _SYMPY_KINDS = {
 }
 
 
+#: sympy.physics.vector's failures that are the script's own error (two
+#: frames used together that nothing relates), reworded
+_UNRELATED_FRAMES = re.compile(
+    r"^No connecting (orientation|angular velocity) path found between "
+    r"(\S+) and (\S+?)\.?$"
+)
+
+
+def _unrelated_frames(exc: BaseException) -> str:
+    """``frame A is not oriented relative to frame N ...`` for sympy's
+    ``No connecting orientation path found between N and A.`` (else '')."""
+    if not isinstance(exc, ValueError) or _library(exc) != "sympy":
+        return ""
+    m = _UNRELATED_FRAMES.match(str(exc).strip())
+    if m is None:
+        return ""
+    what, a, b = m.groups()
+    if what == "orientation":
+        return (
+            f"frame {b} is not oriented relative to frame {a}: orient one in the "
+            f"other first (for example Simprot({a}, {b}, 3, angle), Dircos(...) "
+            f"or {a}_{b} = ...)"
+        )
+    return (
+        f"frame {a} has no angular velocity relative to frame {b}: orient one "
+        f"in the other first (Simprot, Dircos) or give W_{a}_{b}> = ..."
+    )
+
+
 def unexpected(exc: BaseException) -> str:
     """The user's message for an exception al2py did not word: what it
     means where that is known (division by zero, too deep, out of
-    memory), else which library failed; the library's own text only with
+    memory, two frames that nothing orients relative to each other), else
+    which library failed; the library's own text only with
     ``AL2PY_DEBUG=1``."""
     for kind, meaning in _KINDS:
         if isinstance(exc, kind):
             out = meaning
             break
     else:
-        out = _SYMPY_KINDS.get(type(exc).__name__, "")
+        out = _SYMPY_KINDS.get(type(exc).__name__, "") or _unrelated_frames(exc)
     if not out:
         out = (
             f"an unexpected failure in {_library(exc)} (an al2py bug: please"

@@ -32,6 +32,8 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
+from .lines import split_lines
+
 __all__ = [
     "Script",
     "ResponseFailure",
@@ -184,6 +186,9 @@ class FileResult:
     #: responses of the transcript not compared: definitions of Autolev's
     #: AutoZ intermediates (``Z12 = ...``), expanded where they are used
     not_compared: int = 0
+    #: what a check did not cover (a transcript that ends early or is cut
+    #: off mid-line): shown below the file's row even when it passed
+    notes: list[str] = field(default_factory=list)
 
     @property
     def responses(self) -> str:
@@ -216,7 +221,7 @@ def _check_in_this_process(
     import importlib.util
 
     from .errors import AutolevError, InternalError
-    from .static_checks import too_deep, with_source_line
+    from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert
 
     shown_transcript = display_path(transcript) if transcript else None
@@ -229,13 +234,16 @@ def _check_in_this_process(
     try:
         conversion = convert(text, display, script_dir=source.parent)
     except AutolevError as exc:
-        result.message = with_source_line(exc, display, text.splitlines()).format()
+        result.message = with_source_line(exc, display, split_lines(text)).format()
         return result
     except InternalError as exc:
         result.message = f"al2py: internal error: {exc} (please report this bug)"
         return result
     except RecursionError:
         result.message = too_deep(display, text).format()
+        return result
+    except MemoryError:
+        result.message = too_large(display, text).format()
         return result
     except Exception as exc:  # noqa: BLE001 - a verdict, never a traceback
         result.message = f"al2py: internal error: {_unexpected(exc)}"
@@ -264,12 +272,21 @@ def _check_in_this_process(
         return result
     # A failed CODE job does not stop the comparison: the symbolic responses
     # are compared and reported beside the job's failure.
-    from .checking import check_responses, parse_transcript
+    from .checking import check_responses, parse_transcript, transcript_verdict
 
     try:
-        entries = parse_transcript(
-            transcript.read_text(encoding="utf-8", errors="replace")
+        reference = transcript.read_text(encoding="utf-8", errors="replace")
+        entries = parse_transcript(reference)
+        from al2py_runtime.safety import module_source
+
+        problem, result.notes = transcript_verdict(
+            reference, entries, module.al, module_source(str(module_path))
         )
+        if problem:  # never "passed 0/0": the reference cannot be used
+            result.message = "\n".join(
+                m for m in (job_failure, f"{shown_transcript}: error: {problem}") if m
+            )
+            return result
         every = check_responses(entries, module.al)
     except Exception as exc:  # noqa: BLE001
         result.message = "\n".join(
@@ -570,7 +587,8 @@ def _outcome(result: FileResult) -> str:
         ran = " and ran its CODE job" if result.jobs_run else ""
         return f"passed (no transcript to compare: converted, imported{ran})"
     if result.transcript:
-        return f"{result.status} ({result.responses} responses{_z_note(result)})"
+        notes = "".join(f"; note: {n}" for n in result.notes)
+        return f"{result.status} ({result.responses} responses{_z_note(result)}{notes})"
     return result.status
 
 
@@ -628,7 +646,9 @@ def format_table(results: Sequence[FileResult]) -> str:
     for line, r in zip(lines[1:], results, strict=True):
         out.append(line)
         if r.status == ERRORED and r.message:
-            out.append(" " * (sum(widths) + 6) + r.message.splitlines()[0])
+            out.append(" " * (sum(widths) + 6) + split_lines(r.message)[0])
+        for note in r.notes:
+            out.append(" " * (sum(widths) + 6) + f"note: {note}")
     return "\n".join(out)
 
 
@@ -638,7 +658,7 @@ def format_file_report(result: FileResult) -> str:
     A file whose CODE job failed still reports its compared responses."""
     lines = []
     if result.status == ERRORED:
-        body = "\n".join("  " + line for line in result.message.splitlines())
+        body = "\n".join("  " + line for line in split_lines(result.message))
         lines.append(f"{result.path}: errored\n{body}")
         if not (result.transcript and (result.total or result.not_compared)):
             return lines[0]
@@ -679,6 +699,15 @@ def summary_line(results: Sequence[FileResult], seconds: float | None = None) ->
         text += (
             f"\nresponses: {compared} compared, {matching} matching, "
             f"{skipped} not compared (AutoZ intermediate definitions)"
+        )
+    noted = [r.path for r in results if r.notes]
+    if noted:
+        shown = ", ".join(noted[:5]) + (
+            f" and {len(noted) - 5} more" if len(noted) > 5 else ""
+        )
+        text += (
+            f"\n{len(noted)} transcript{'s' if len(noted) != 1 else ''} not "
+            f"compared in full (see the notes): {shown}"
         )
     bare = [r.path for r in results if r.status == PASSED and not r.transcript]
     if bare:
@@ -763,7 +792,7 @@ def junit_xml(
                 case,
                 "error",
                 {
-                    "message": r.message.splitlines()[0] if r.message else "error",
+                    "message": split_lines(r.message)[0] if r.message else "error",
                     "type": "ConversionError",
                 },
             )
@@ -805,7 +834,7 @@ def output_path(script: Script, outdir: Path, module: str | None = None) -> Path
 def convert_file(script: Script, outdir: Path) -> ConvertResult:
     """Convert one script into its place under ``outdir`` (never raises)."""
     from .errors import AutolevError, InternalError
-    from .static_checks import too_deep, with_source_line
+    from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert
 
     target = output_path(script, outdir)
@@ -817,13 +846,16 @@ def convert_file(script: Script, outdir: Path) -> ConvertResult:
         target.parent.mkdir(parents=True, exist_ok=True)
         write_atomically(target, conversion.code)
     except AutolevError as exc:
-        exc = with_source_line(exc, script.display, text.splitlines())
+        exc = with_source_line(exc, script.display, split_lines(text))
         return ConvertResult(script.display, shown, False, exc.format())
     except InternalError as exc:
         message = f"al2py: internal error: {exc} (please report this bug)"
         return ConvertResult(script.display, shown, False, message)
     except RecursionError:
         message = too_deep(script.display, text).format()
+        return ConvertResult(script.display, shown, False, message)
+    except MemoryError:
+        message = too_large(script.display, text).format()
         return ConvertResult(script.display, shown, False, message)
     except OSError as exc:
         message = f"al2py: error: {exc.filename or script.display}: {exc.strerror}"

@@ -29,11 +29,13 @@ from sympy.physics.vector import Dyadic, Vector
 
 from . import ir
 from .errors import AutolevError
+from .lines import split_lines
 from .parser import parse
 
 __all__ = [
     "TranscriptEntry",
     "parse_transcript",
+    "transcript_verdict",
     "ResponseCheck",
     "check_responses",
     "evaluate_text",
@@ -70,7 +72,7 @@ def parse_transcript(text: str) -> list[TranscriptEntry]:
     visibly unfinished (an open bracket, or a trailing operator) continues on
     the following unnumbered lines, as Autolev wraps long responses."""
     out: list[TranscriptEntry] = []
-    for lineno, line in enumerate(text.splitlines(), start=1):
+    for lineno, line in enumerate(split_lines(text), start=1):
         m = _RESPONSE.match(line)
         if m:
             out.append(
@@ -89,6 +91,114 @@ def parse_transcript(text: str) -> list[TranscriptEntry]:
                 joined = f"{last.text} {line.strip()}"
                 out[-1] = TranscriptEntry(last.number, True, joined, last.line)
     return out
+
+
+#: share of characters that did not decode (or NULs) beyond which a
+#: transcript is not text at all
+_UNREADABLE_SHARE = 0.01
+
+
+def transcript_verdict(
+    text: str,
+    entries: Sequence[TranscriptEntry],
+    ws: object,
+    source: Sequence[str] = (),
+) -> tuple[str, list[str]]:
+    """Whether a transcript can serve as the reference: ``(error, notes)``.
+
+    ``error`` (else '') says why nothing can be compared: the file is empty,
+    is not text, holds no numbered line, or holds no response although the
+    script gives some.  A check with such a transcript must fail, never
+    pass with 0 of 0 responses.  ``notes`` say what a passing check did not
+    cover: a transcript cut off in the middle of a line, numbers out of
+    order, or one that ends before the script does (the responses of the
+    lines after its end are not compared).  ``source`` is the script's lines
+    (the lines a module echoes: ``al2py_runtime.safety.module_source``)."""
+    if not text.strip():
+        return "the transcript is empty", []
+    bad = text.count("\ufffd") + text.count("\x00")
+    if bad > _UNREADABLE_SHARE * len(text):
+        return (
+            f"the transcript is not text ({bad} of its {len(text)} characters "
+            "are not UTF-8 or are NUL): it is damaged or not an Autolev transcript"
+        ), []
+    if not entries:
+        return (
+            "the transcript has no numbered line ('(1) ...' or '-> (2) ...'): "
+            "it is damaged or not an Autolev transcript"
+        ), []
+    ours = list(getattr(ws, "responses", ()))
+    if not any(e.is_response for e in entries) and ours:
+        return (
+            "the transcript has no response ('-> (n) NAME = ...') to compare, "
+            f"though the script gives {len(ours)}"
+        ), []
+    notes = []
+    if not text.endswith(("\n", "\r")):
+        notes.append(
+            "the transcript ends in the middle of a line (no line break after "
+            "its last line): it may be cut off"
+        )
+    for before, after in zip(entries, entries[1:], strict=False):
+        if after.number <= before.number:
+            notes.append(
+                f"the transcript's numbers go back at its line {after.line} "
+                f"(({before.number}) then ({after.number})): it may be damaged"
+            )
+            break
+    unread = [
+        n
+        for n, line in enumerate(split_lines(text), start=1)
+        if line.lstrip().startswith("->") and not _RESPONSE.match(line)
+    ]
+    if unread:
+        notes.append(
+            f"{len(unread)} response line{'s' if len(unread) != 1 else ''} of the "
+            f"transcript (the first at its line {unread[0]}) without a readable "
+            "'(n)' number: not compared"
+        )
+    early = _ends_early(entries, ours, source)
+    if early:
+        notes.append(early)
+    return "", notes
+
+
+def _squeezed(text: str) -> str:
+    return re.sub(r"\s+", "", text).upper()
+
+
+def _ends_early(
+    entries: Sequence[TranscriptEntry], ours: Sequence[object], source: Sequence[str]
+) -> str:
+    """A note if the transcript's input lines stop before script lines that
+    give responses (else '')."""
+    from al2py_runtime.names.transcript import logical_lines
+
+    inputs = [e for e in entries if not e.is_response]
+    logical = list(logical_lines(source))
+    if not inputs or len(inputs) >= len(logical):
+        return ""
+    last = inputs[-1]
+    # the script line the transcript ends on: the one with its text nearest
+    # to its position by count, else the position by count
+    k = len(inputs) - 1
+    same = [
+        i
+        for i, (_, txt) in enumerate(logical)
+        if _squeezed(txt) == _squeezed(last.text)
+    ]
+    if same:
+        k = min(same, key=lambda i: (abs(i - (len(inputs) - 1)), i))
+    end = logical[k][0]
+    later = [r for r in ours if getattr(r, "line", None) and r.line > end]  # type: ignore[attr-defined]
+    if not later:
+        return ""
+    first = min(r.line for r in later)  # type: ignore[attr-defined]
+    return (
+        f"the transcript ends early: its last line ({last.number}) is line {end} "
+        f"of the script, so the {len(later)} response{'s' if len(later) != 1 else ''}"
+        f" from line {first} on are not compared"
+    )
 
 
 def _unfinished(text: str) -> bool:

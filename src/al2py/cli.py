@@ -24,6 +24,7 @@ from pathlib import Path
 
 from . import __version__, batch
 from .errors import AutolevError, InternalError
+from .lines import split_lines
 
 __all__ = ["main"]
 
@@ -413,15 +414,17 @@ def _convert_file(source: str, output: str | None) -> int:
             )
             return EXIT_INPUT
         filename = source
-    from .static_checks import too_deep, with_source_line
+    from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert  # sympy: only when a command needs it
 
     try:
         result = convert(text, filename)
     except AutolevError as exc:
-        raise with_source_line(exc, filename, text.splitlines()) from None
+        raise with_source_line(exc, filename, split_lines(text)) from None
     except RecursionError:
         raise too_deep(filename, text) from None
+    except MemoryError:
+        raise too_large(filename, text) from None
     if output is None or output == "-":
         sys.stdout.write(result.code)
         return EXIT_OK

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import io
 import re
-import textwrap
 import tokenize
 from collections import defaultdict
 
@@ -37,7 +36,6 @@ from .analysis import (
     Symbol,
     input_names,
     int_literal,
-    walk_expr,
 )
 from .errors import InternalError, SemanticError
 from .static_checks import unknown_call_message
@@ -57,7 +55,6 @@ _POINT_THEORIES = {
     "V1PT": "v1pt_theory",
     "A1PT": "a1pt_theory",
 }
-_COMMENT_WIDTH = 84
 #: syntactical forms whose assignment is sympy's own setter
 #: (``P_O_P> = v`` is ``P.set_pos(O, v)``), by form
 _SYMPY_SETTERS = {
@@ -794,13 +791,12 @@ class Generator:
         return f"{left} {op} {right}", prec
 
     def _exact(self, node: ir.Expr) -> str | None:
-        """``Integer(n)`` for a pure-number left operand, so Python keeps exactness."""
-        if not any(
-            isinstance(n, ir.Name | ir.Call | ir.Element) for n in walk_expr(node)
-        ):
-            if isinstance(node, ir.Number) and node.is_integer:
-                self.imports.use("sympy", "Integer")
-                return f"Integer({int(node.text)})"
+        """``Integer(n)`` for a pure-number left operand, so Python keeps
+        exactness (a number: nothing below it to walk, so a long ``A/B/C``
+        chain costs linear time)."""
+        if isinstance(node, ir.Number) and node.is_integer:
+            self.imports.use("sympy", "Integer")
+            return f"Integer({int(node.text)})"
         return None
 
     def expr_MatrixLit(self, node: ir.MatrixLit) -> tuple[str, int]:
@@ -992,20 +988,6 @@ def _number_code(text: str) -> str:
     if text.endswith("."):
         text += "0"
     return text
-
-
-def comment_lines(text: str, prefix: str = "") -> list[str]:
-    """``text`` as ``#`` comment lines, wrapped, never able to end the comment.
-
-    ``prefix`` marks the first line (``al> `` for echoed Autolev statements)."""
-    out = []
-    for raw in text.splitlines() or [""]:
-        raw = raw.replace("\r", " ").expandtabs(4).rstrip()
-        chunks = textwrap.wrap(raw, _COMMENT_WIDTH, break_long_words=True) or [""]
-        for k, c in enumerate(chunks):
-            lead = prefix if k == 0 else " " * len(prefix)
-            out.append(f"# {lead}{c}".rstrip())
-    return out
 
 
 def _model_calls(lines: list[str]) -> list[str]:

@@ -33,6 +33,7 @@ from al2py_runtime.vocabulary import BUILTINS, by_spelling
 from . import ir
 from .errors import MacroError, ParseError
 from .ir import map_expr
+from .lines import split_lines
 
 __all__ = ["MacroExpansion", "find_macro", "expand_macro", "check_confined"]
 
@@ -152,7 +153,7 @@ class _MacroText:
         degrees: bool,
         path: str,
     ) -> None:
-        kept = [ln for ln in text.splitlines() if not ln.lstrip().startswith("%")]
+        kept = [ln for ln in split_lines(text) if not ln.lstrip().startswith("%")]
         self.src = "\n".join(kept)
         self.args = args
         self.newtonian = newtonian
@@ -164,7 +165,7 @@ class _MacroText:
     def run(self) -> MacroExpansion:
         self._check_placeholders()
         out = self._body(top=True)
-        lines = (ln.strip() for ln in out.splitlines())
+        lines = (ln.strip() for ln in split_lines(out))
         return MacroExpansion("\n".join(ln for ln in lines if ln), tuple(self.echoes))
 
     def _error(self, message: str) -> MacroError:

@@ -35,6 +35,7 @@ from ._antlr.AutolevLexer import AutolevLexer
 from ._antlr.AutolevParser import AutolevParser
 from ._antlr.AutolevVisitor import AutolevVisitor
 from .errors import AutolevError, InternalError, ParseError, ParseErrorList
+from .lines import split_lines
 
 __all__ = ["parse", "parse_partial", "span_text", "join_continuations"]
 
@@ -82,6 +83,13 @@ _NEEDS_OPERAND = frozenset(
 #: sums with more terms than this are built as balanced trees (issue 12)
 _LONG_SUM = 64
 
+#: the most names one index range (``X{3,4}``) may make, and all the index
+#: ranges of one file together: far beyond real scripts (tens), and small
+#: enough that conversion stops with a located message before memory runs
+#: out (``Variables X{100000000}`` grew past 5 GB)
+MAX_INDEXED_NAMES = 10_000
+MAX_INDEXED_NAMES_PER_FILE = 100_000
+
 
 # ------------------------------------------------------------------ public API
 
@@ -104,7 +112,7 @@ def parse_partial(
     text: str, filename: str = "<input>"
 ) -> tuple[ir.Script, list[AutolevError]]:
     """The statements that parsed, and the syntax errors of the others."""
-    lines = tuple(text.splitlines())
+    lines = tuple(split_lines(text))
     try:
         return _parse(lines, filename)
     except AutolevError as exc:
@@ -192,6 +200,10 @@ def _statement_ranges(tokens: list[Token]) -> Iterator[tuple[int, int]]:
             if tok.type == Token.EOF:
                 return
 
+
+#: characters that are no token of the language but may appear in a file
+#: name (``..\\lib\\kin.al``, ``~/x.al``)
+_FILE_CHARACTERS = frozenset({"\\", "~", "."})
 
 #: a unit written with dots (``KG.M``, ``M/KG.S``), which the lexer reads as
 #: one file-name token
@@ -538,6 +550,8 @@ class _IRBuilder(AutolevVisitor):
         self.tokens = stream.tokens
         #: Errors found while building statements (one per statement).
         self.errors: list[AutolevError] = []
+        #: names made by the index ranges so far (MAX_INDEXED_NAMES_PER_FILE)
+        self._indexed_names = 0
 
     # -- spans and text -----------------------------------------------------
 
@@ -846,7 +860,7 @@ class _IRBuilder(AutolevVisitor):
             words[0].getText().upper(),
             args,
             sweep,
-            name.getText() if name is not None else None,
+            self._file_name(name) if name is not None else None,
             tuple(w.getText().upper() for w in words[1:]),
         )
 
@@ -859,7 +873,21 @@ class _IRBuilder(AutolevVisitor):
 
     def visitFileCommand(self, ctx: AutolevParser.FileCommandContext):
         command = ctx.getChild(0).getText().upper()
-        return ir.FileCommand(self._ctx_span(ctx), command, ctx.fileName().getText())
+        return ir.FileCommand(
+            self._ctx_span(ctx), command, self._file_name(ctx.fileName())
+        )
+
+    def _file_name(self, ctx: AutolevParser.FileNameContext) -> str:
+        """The file name of ``Save``, ``Run`` or ``Code``, put together from
+        its pieces (``../lib/kin.al``), which must touch."""
+        pieces = self.tokens[ctx.start.tokenIndex : ctx.stop.tokenIndex + 1]
+        for before, tok in zip(pieces, pieces[1:], strict=False):
+            if tok.start != before.stop + 1:
+                raise self._error("a file name cannot hold a blank", tok)
+        for tok in pieces:
+            if tok.type == _P.ERRCHAR and tok.text not in _FILE_CHARACTERS:
+                raise self._error(f"unexpected character {tok.text!r}", tok)
+        return "".join(tok.text for tok in pieces)
 
     def visitSetting(self, ctx: AutolevParser.SettingContext) -> ir.Stmt:
         name = ctx.ID().getText().upper()
@@ -1048,7 +1076,24 @@ class _IRBuilder(AutolevVisitor):
         return exprs[0]
 
     def visitIndexBraces(self, ctx: AutolevParser.IndexBracesContext):
-        return tuple(self.visit(r) for r in ctx.indexRange())
+        ranges = tuple(self.visit(r) for r in ctx.indexRange())
+        count = 1
+        for lo, hi in ranges:
+            count *= hi - lo + 1
+        self._indexed_names += count
+        if count > MAX_INDEXED_NAMES:
+            raise self._error(
+                f"the index range {ctx.getText()} makes {count} names; al2py allows at most "
+                f"{MAX_INDEXED_NAMES} in one index range",
+                ctx.start,
+            )
+        if self._indexed_names > MAX_INDEXED_NAMES_PER_FILE:
+            raise self._error(
+                f"the index range {ctx.getText()} brings the names of this file's index ranges "
+                f"beyond {MAX_INDEXED_NAMES_PER_FILE}, al2py's limit",
+                ctx.start,
+            )
+        return ranges
 
     def visitIndexRange(self, ctx: AutolevParser.IndexRangeContext):
         bounds = []

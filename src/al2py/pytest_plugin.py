@@ -103,6 +103,9 @@ class AutolevItem(pytest.Item):
         self.user_properties.append(("al2py_status", result.status))
         if result.transcript:
             self.user_properties.append(("al2py_responses", result.responses))
+        for note in result.notes:  # what a passing check did not cover
+            self.user_properties.append(("al2py_note", note))
+            self.warn(pytest.PytestWarning(f"{self.path.name}: {note}"))
         if result.status != batch.PASSED:
             raise AutolevCheckFailed(result)
 

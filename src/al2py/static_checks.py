@@ -22,13 +22,17 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 
 from . import ir
-from .errors import AutolevError, ParseError, SemanticError
+from .errors import AutolevError, ErrorList, ParseError, SemanticError
+from .lines import split_lines
 
 __all__ = [
     "check_text",
     "check_statements",
+    "check_orientations",
     "unknown_call_message",
     "with_source_line",
+    "too_deep",
+    "too_large",
 ]
 
 # ------------------------------------------------------------------ text
@@ -44,7 +48,8 @@ def check_text(text: str, filename: str) -> None:
         return
     line = text.count("\n", 0, m.start()) + 1
     col = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
-    line_text = text.splitlines()[line - 1] if text.splitlines() else ""
+    lines = split_lines(text)
+    line_text = lines[line - 1] if lines else ""
     raise ParseError(
         "a NUL character (\\x00) cannot appear in a script, not even in a comment",
         ir.Span(filename, line, col),
@@ -141,6 +146,111 @@ def _check_unit_word(word: str, span: ir.Span) -> None:
     close = difflib.get_close_matches(word.lower(), list(names), n=1, cutoff=0.6)
     hint = f"; did you mean {close[0]}?" if close else ""
     raise SemanticError(f"unknown unit '{word}'{hint}", span)
+
+
+# ------------------------------------------------------ orientations
+
+#: calls that need the orientation (or angular velocity) between the frames
+#: of their arguments' unit vectors (and their frame argument)
+_RELATES_FRAMES = frozenset({"DOT", "CROSS", "EXPRESS", "MAG", "UNITVEC", "DT"})
+#: commands that relate their first two frames (orientation or angular
+#: velocity): after them the two frames may be used together
+_RELATING = frozenset({"SIMPROT", "DIRCOS", "ANGVEL", "KINDIFFS"})
+_FRAME_DECLS = frozenset({"NEWTONIAN", "FRAMES", "BODIES"})
+
+
+def check_orientations(stmts: Iterable[ir.Stmt]) -> None:
+    """A frame used before it is oriented: ``Dot(A1>, N1>)`` (also ``Cross``,
+    ``Express``, ``Mag``, ``Dt``) with unit vectors of two frames that no
+    earlier ``Simprot``, ``Dircos``, ``N_A = ...`` or ``W_A_N> = ...``
+    relates, directly or through other frames.  Only what is visible in the
+    text is checked (unit vectors written out, not vectors held in names);
+    the module reports the rest when it runs."""
+    root: dict[str, str] = {}
+
+    def find(name: str) -> str:
+        while root[name] != name:
+            root[name] = root[root[name]]
+            name = root[name]
+        return name
+
+    def join(a: str | None, b: str | None) -> None:
+        if a in root and b in root:
+            root[find(a)] = find(b)  # type: ignore[arg-type]
+
+    errors: list[AutolevError] = []
+    for stmt in _flatten(stmts):
+        if isinstance(stmt, ir.Declaration) and stmt.keyword in _FRAME_DECLS:
+            for item in stmt.items:
+                if isinstance(item.target, ir.Name):
+                    root.setdefault(item.target.key, item.target.key)
+            continue
+        calls = [n for n in _nodes(stmt) if isinstance(n, ir.Call)]
+        for call in calls:
+            if call.key in _RELATES_FRAMES:
+                err = _unrelated(call, root, find)
+                if err is not None:
+                    errors.append(err)
+        for call in calls:
+            if call.key in _RELATING and len(call.args) >= 2:
+                join(_frame_arg(call.args[0], root), _frame_arg(call.args[1], root))
+        if isinstance(stmt, ir.Assign):
+            target = stmt.target
+            if isinstance(target, ir.Element):  # N_A[1,1] = ...
+                target = target.base
+            pair = (
+                _frame_pair(target.key, root) if isinstance(target, ir.Name) else None
+            )
+            if pair:
+                join(*pair)
+    if errors:
+        raise errors[0] if len(errors) == 1 else ErrorList(errors)
+
+
+def _frame_arg(expr: ir.Expr, frames: dict[str, str]) -> str | None:
+    return expr.key if isinstance(expr, ir.Name) and expr.key in frames else None
+
+
+def _frame_pair(key: str, frames: dict[str, str]) -> tuple[str, str] | None:
+    """The two frames of ``N_A`` (direction cosines) or ``W_A_N>`` (angular
+    velocity), if ``key`` is one of those forms of declared frames."""
+    parts = key.rstrip(">").split("_")
+    if key.endswith(">") and len(parts) == 3 and parts[0] in ("W", "ALF"):
+        parts = parts[1:]
+    elif key.endswith(">") or len(parts) != 2:
+        return None
+    a, b = parts
+    return (a, b) if a in frames and b in frames else None
+
+
+def _unrelated(
+    call: ir.Call, frames: dict[str, str], find: Callable[[str], str]
+) -> AutolevError | None:
+    """The error for ``call`` if it names frames that nothing relates."""
+    from al2py_runtime.vocabulary import unit_vector
+
+    seen: list[str] = []
+    for node in _nodes(call):
+        name = None
+        if isinstance(node, ir.Name):
+            unit = unit_vector(node.key)
+            if unit and unit[0] in frames:
+                name = unit[0]
+            elif node.key in frames and call.key in ("EXPRESS", "DT"):
+                name = node.key
+        if name and name not in seen:
+            seen.append(name)
+    for i, a in enumerate(seen):
+        for b in seen[i + 1 :]:
+            if find(a) != find(b):
+                return SemanticError(
+                    f"frame {b} is not oriented relative to frame {a}: "
+                    f"{call.func}() needs their orientation; orient one in the "
+                    f"other first (for example Simprot({a}, {b}, 3, angle), "
+                    f"Dircos(...) or {a}_{b} = ...)",
+                    call.span,
+                )
+    return None
 
 
 # ------------------------------------------------------ matrix shapes
@@ -242,7 +352,7 @@ def unknown_call_message(name: str) -> str:
 
 def too_deep(filename: str, text: str) -> ParseError:
     """The located error for input nested too deeply to convert."""
-    lines = text.splitlines()
+    lines = split_lines(text)
     span = deepest_nesting(filename, lines)
     return ParseError(
         "this expression is nested too deeply to convert",
@@ -252,19 +362,39 @@ def too_deep(filename: str, text: str) -> ParseError:
 
 
 def deepest_nesting(filename: str, lines: Iterable[str]) -> ir.Span:
-    """Where the brackets of ``lines`` nest deepest (the place to blame when
-    an expression is nested too deeply to convert)."""
+    """Where the brackets of ``lines`` nest deepest, or where the longest
+    run of operators starts (``----A``, ``A^A^A``), whichever is deeper: the
+    place to blame when an expression is nested too deeply to convert."""
     depth = best = 0
     where = (1, 1)
     for number, line in enumerate(lines, start=1):
-        for col, char in enumerate(line.split("%", 1)[0], start=1):
+        code = line.split("%", 1)[0]
+        for col, char in enumerate(code, start=1):
             if char in "([{":
                 depth += 1
                 if depth > best:
                     best, where = depth, (number, col)
             elif char in ")]}":
                 depth = max(0, depth - 1)
+        operators = sum(code.count(c) for c in "-+*/^")
+        if operators > best:
+            first = min((code.find(c) for c in "-+*/^" if c in code), default=0)
+            best, where = operators, (number, first + 1)
     return ir.Span(filename, *where)
+
+
+def too_large(filename: str, text: str) -> ParseError:
+    """The located error for input that exhausted memory while converting:
+    blamed on its longest line (the statement most likely to be at fault)."""
+    lines = split_lines(text)
+    if not lines:
+        return ParseError("out of memory converting this file", ir.Span(filename, 1, 1))
+    number = max(range(len(lines)), key=lambda i: (len(lines[i]), -i)) + 1
+    return ParseError(
+        "out of memory converting this file (its longest statement is here)",
+        ir.Span(filename, number, 1),
+        line_text=lines[number - 1],
+    )
 
 
 def with_source_line(
@@ -282,9 +412,9 @@ def with_source_line(
         try:
             path = Path(exc.span.file)
             if path.is_file() and path.stat().st_size < 50_000_000:
-                text_lines = path.read_text(
-                    encoding="utf-8", errors="replace"
-                ).splitlines()
+                text_lines = split_lines(
+                    path.read_text(encoding="utf-8", errors="replace")
+                )
         except (OSError, ValueError):
             text_lines = None
     if text_lines and 0 < line <= len(text_lines):

@@ -120,10 +120,11 @@ def convert(
         )
     try:
         stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
-        try:
-            static_checks.check_statements(stmts)
-        except AutolevError as exc:
-            errors = errors + errors_of(exc)
+        for check in (static_checks.check_statements, static_checks.check_orientations):
+            try:
+                check(stmts)
+            except AutolevError as exc:
+                errors = errors + errors_of(exc)
         facts = Analysis(stmts).run(stmts, poisoned=_names_on_lines(script, errors))
     except AutolevError as exc:
         errors = errors + errors_of(exc)
@@ -159,9 +160,17 @@ def convert(
     try:
         if len(code) <= BLACK_LIMIT:
             code = black.format_str(code, mode=black.Mode())
-        else:  # black would take minutes; the code is valid, just not pretty
-            compile(code, f"{module}.py", "exec")
-    except (black.InvalidInput, SyntaxError) as exc:  # invalid generated code
+        # Python itself must load the module: an expression nested too deeply
+        # for its parser (a 3,000-term power chain) is refused here, located,
+        # rather than as a MemoryError traceback at import
+        compile(code, f"{module}.py", "exec", dont_inherit=True)
+    except (MemoryError, RecursionError):
+        raise static_checks.too_deep(filename, text) from None
+    except SyntaxError as exc:
+        if "nested" in str(exc.msg):  # "too many nested parentheses"
+            raise static_checks.too_deep(filename, text) from None
+        raise InternalError(f"generated code does not parse: {exc}") from None
+    except black.InvalidInput as exc:  # invalid generated code
         raise InternalError(f"generated code does not parse: {exc}") from None
     return Conversion(code, module)
 

@@ -149,6 +149,11 @@ class AutolevVisitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by AutolevParser#filePiece.
+    def visitFilePiece(self, ctx:AutolevParser.FilePieceContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by AutolevParser#setting.
     def visitSetting(self, ctx:AutolevParser.SettingContext):
         return self.visitChildren(ctx)
