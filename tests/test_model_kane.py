@@ -215,9 +215,17 @@ def test_generated_source_speaks_sympy(name):
     assert ".set_pos(" in code and "al.model.set_pos(" not in code
     if name == "tutor6":
         assert (
-            "P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)"
-            in code
+            'P_particle, Q_particle = Particle("P", P, 0), Particle("Q", Q, 0)\n'
+            "al.model.declare_particles(P_particle, Q_particle)" in code
         )
+        assert 'N = ReferenceFrame("N")\nal.model.declare_newtonian(N)' in code
+        assert 'O_ = Point("O")\nal.model.declare_points(O_)' in code
+        # loads: one list of sympy loads, which Fr() and kanes_method() read
+        assert "loads = al.model.loads" in code
+        assert (
+            "loads.append(Force(P, FP * A.y))\nal.model.given_force(P, line=53)" in code
+        )
+        assert "set_force" not in code and "force_between" not in code
         assert "kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=33))" in code
         assert not re.search(r'al\.assign\("Q[AB]\'"', code)
         assert "P.set_pos(O_, LA * A.x)\nal.model.given_pos(P, O_, line=29)" in code

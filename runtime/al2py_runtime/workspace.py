@@ -168,6 +168,20 @@ class Workspace(Mapping):
         return one_or_tuple(out)
 
     @statement
+    def declare_constants(self, *symbols: sp.Symbol, line: int | None = None) -> None:
+        """After ``G, L = symbols("G L", real=True)`` (``Constants G, L``):
+        the module's sympy symbols become the constants of those names.  They
+        must carry Autolev's assumptions (real unless ``Complex ON``)."""
+        for sym in symbols:
+            want = sp.Symbol(sym.name, **self._assumptions(None))
+            if sym != want:
+                raise ValueError(
+                    f"constant {sym.name} must be declared with"
+                    f" {self._assumptions(None) or 'no assumptions'}"
+                )
+            self.table.declare(sym.name, "constant", sym, sign=None, line=line)
+
+    @statement
     def variables(self, *names: str, line: int | None = None) -> Any:
         """``Variables X', Y''``: functions of time; primes give the order."""
         return self._time_functions(names, "variable", line)

@@ -66,6 +66,10 @@ _SYMPY_SETTERS = {
 }
 
 
+#: syntactical forms that are loads (``Force_P>``, ``Torque_B>``)
+_LOADS = (Form.FORCE, Form.TORQUE)
+
+
 class Imports:
     """The names a generated module imports, by module."""
 
@@ -102,6 +106,8 @@ class Generator:
         self.help_jobs: list[tuple[str, str | None, int]] = []
         self.has_kane = False  # Fr() or FrStar() was generated
         self._kd_started = False  # ``kd_eqs = []`` was emitted
+        self._loads_started = False  # ``loads = al.model.loads`` was emitted
+        self._complex_set = False  # a Complex setting was seen
         self._echoed = 0  # lines of the .al echoed so far
 
     # ------------------------------------------------------------ driving
@@ -153,6 +159,8 @@ class Generator:
         arg = value if re.fullmatch(r"\d+", value) else repr(value.upper())
         if stmt.name == "AUTOEPSILON":
             arg = _number_code(value)
+        if stmt.name == "COMPLEX":  # constants' assumptions follow it
+            self._complex_set = True
         return [f"al.settings.set({stmt.name.title()!r}, {arg})"]
 
     def stmt_Declaration(self, stmt: ir.Declaration) -> list[str]:
@@ -188,6 +196,16 @@ class Generator:
                 sym = self.facts.quantity(spellings[-1])
                 value = self.expr(item.values[0])
                 assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
+        if method == "constants" and not self._complex_set:
+            if not any(spec.endswith(("+'", "-'")) for spec in specs):
+                # real symbols, as sympy writes them; the runtime declares them
+                make = self.imports.use("sympy", "symbols")
+                spelled = " ".join(spec[1:-1] for spec in specs)
+                return [
+                    f"{', '.join(names)} = {make}({spelled!r}, real=True)",
+                    f"al.declare_constants({', '.join(names)}, line={self._line})",
+                    *assigns,
+                ]
         call = f"al.{method}({', '.join(specs)}, line={self._line})"
         return [f"{', '.join(names)} = {call}", *assigns]
 
@@ -196,7 +214,9 @@ class Generator:
         syms = [self.facts.object(n) for n in names]
         idents = ", ".join(s.ident for s in syms)
         keys = ", ".join(repr(s.key) for s in syms)
-        out = [f"{idents} = al.{stmt.keyword.lower()}({keys})"]
+        out = self._sympy_objects(stmt.keyword, syms)
+        if not out:
+            out = [f"{idents} = al.{stmt.keyword.lower()}({keys})"]
         if Decl.of_keyword(stmt.keyword) in vocab.FRAME_DECLS:
             for s in syms:
                 point = self.facts.table.physical(s.key + "O")
@@ -205,7 +225,7 @@ class Generator:
         # The module holds sympy's RigidBody/Particle objects (their mass and
         # inertia follow the Mass and Inertia declarations).
         sympy_class = {"BODIES": "rigid_body", "PARTICLES": "particle"}
-        if stmt.keyword in sympy_class:
+        if stmt.keyword in sympy_class and stmt.keyword != "PARTICLES":
             method = sympy_class[stmt.keyword]
             suffix = "_body" if method == "rigid_body" else "_particle"
             lhs = [
@@ -213,6 +233,33 @@ class Generator:
             ]
             rhs = [f"al.{method}({s.ident})" for s in syms]
             out.append(f"{', '.join(lhs)} = {', '.join(rhs)}")
+        return out
+
+    def _sympy_objects(self, keyword: str, syms: list) -> list[str]:
+        """``Newtonian N``, ``Frames A``, ``Points O``, ``Particles P`` as
+        the sympy objects (``N = ReferenceFrame("N")``, ``O_ = Point("O")``,
+        ``P_particle = Particle("P", P, 0)``), then the runtime's record of
+        them under their Autolev names; ``[]`` for other declarations."""
+        cls = {"NEWTONIAN": "ReferenceFrame", "FRAMES": "ReferenceFrame"}.get(
+            keyword, "Point" if keyword in ("POINTS", "PARTICLES") else None
+        )
+        if cls is None:
+            return []
+        make = self.imports.use(_VECTOR, cls)
+        idents = ", ".join(s.ident for s in syms)
+        news = ", ".join(f"{make}({s.key!r})" for s in syms)
+        out = [f"{idents} = {news}"]
+        if keyword != "PARTICLES":
+            out.append(f"al.declare_{keyword.lower()}({idents})")
+            return out
+        particle = self.imports.use("sympy.physics.mechanics", "Particle")
+        lhs = [
+            self.facts.helper_ident(s.key + "_particle", s.ident + "_particle")
+            for s in syms
+        ]
+        rhs = [f"{particle}({s.key!r}, {s.ident}, 0)" for s in syms]
+        out.append(f"{', '.join(lhs)} = {', '.join(rhs)}")
+        out.append(f"al.declare_particles({', '.join(lhs)})")
         return out
 
     def _declare_new(self) -> list[str]:
@@ -305,6 +352,19 @@ class Generator:
             if setter is None or target.primes:
                 return [f"al.assign({target.key!r}, {value}, line={self._line})"]
             objs = [self._object(form.parts[i]) for i in form.row.setter_order]
+            if form.kind in _LOADS and stmt.op in ("+=", "-="):
+                # Force_P> += v: one more sympy load on P, then the runtime's
+                # record of P's resultant (Autolev's response)
+                sign = "-" if stmt.op == "-=" else ""
+                value = self._form_value(stmt.value)
+                load = self._load(
+                    form.kind, objs[0], f"{sign}({value})" if sign else value
+                )
+                return [
+                    *self._loads_start(),
+                    f"{self._loads_ident()}.append({load})",
+                    f"al.given_{setter[4:]}({objs[0]}, line={self._line})",
+                ]
             sympy_setter = _SYMPY_SETTERS.get(form.kind)
             if sympy_setter is not None:
                 # sympy is told; the runtime reads it back with Autolev's rules
@@ -397,7 +457,11 @@ class Generator:
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
-                return self._sympy_call(expr, b) or [self._command(expr, b)]
+                return (
+                    self._loads_call(expr, b)
+                    or self._sympy_call(expr, b)
+                    or [self._command(expr, b)]
+                )
             if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
@@ -409,6 +473,48 @@ class Generator:
                 return [self._solve(expr)]
         label = ir.autolev_text(expr)  # also from RUN files and macros
         return [f"al.show({label!r}, {self.expr(expr)}, line={self._line})"]
+
+    def _loads_ident(self) -> str:
+        return self.facts.helper_ident("LOADS", "loads")
+
+    def _loads_start(self) -> list[str]:
+        """``loads = al.model.loads`` before the module's first load: the
+        runtime's list of sympy loads, which Fr() and kanes_method() read."""
+        if self._loads_started:
+            return []
+        self._loads_started = True
+        return [f"{self._loads_ident()} = al.model.loads  # sympy Force/Torque loads"]
+
+    def _load(self, kind: Form, where: str, value: str) -> str:
+        cls = "Force" if kind is Form.FORCE else "Torque"
+        self.imports.use("sympy.physics.mechanics", cls)
+        return f"{cls}({where}, {value})"
+
+    def _loads_call(self, call: ir.Call, b: Builtin) -> list[str]:
+        """``Force(P, v>)``, ``Force(O/Q, v>)`` (and ``Torque``) as sympy
+        loads the module appends to its ``loads`` (``-v>`` on O, ``v>`` on Q)."""
+        if b.name == "GRAVITY":
+            # Autolev's rule (every mass declared so far), kept by the runtime:
+            # it appends mass*g> on each to the same loads
+            return [*self._loads_start(), self._command(call, b)]
+        if b.name not in ("FORCE", "TORQUE") or len(call.args) != 2:
+            return []
+        kind = Form.FORCE if b.name == "FORCE" else Form.TORQUE
+        where, vec = call.args
+        value = self._form_value(vec)
+        loads = self._loads_ident()
+        if isinstance(where, ir.BinOp):
+            if not (
+                isinstance(where.left, ir.Name) and isinstance(where.right, ir.Name)
+            ):
+                return []
+            first = self._load(kind, self._object(where.left.name), f"-({value})")
+            second = self._load(kind, self._object(where.right.name), value)
+            return [*self._loads_start(), f"{loads} += [{first}, {second}]"]
+        if not isinstance(where, ir.Name):
+            return []
+        load = self._load(kind, self._object(where.name), value)
+        return [*self._loads_start(), f"{loads}.append({load})"]
 
     def _sympy_call(self, call: ir.Call, b: Builtin) -> list[str]:
         """A rotation command as sympy's own call (``A.orient_axis(N, N.z,

@@ -1119,3 +1119,49 @@ def test_motion_variable_named_for_a_rate_is_not_a_speed():
     # declared U variables take precedence
     U1 = al.variables("U1")
     assert al.model.generalized_speeds() == [U1]
+
+
+def test_loads_are_one_list_of_sympy_loads():
+    """Issue 33: Gravity, Force(O/Q, v>) and a module's
+    ``loads.append(Force(P, v))`` all land in ``al.model.loads``, the one
+    list that ``Force_P>``, Fr() and ``kanes_method()`` read."""
+    from sympy.physics.mechanics import Force
+
+    al, v = tutor4()
+    N, P, Q, O, G, MP = (v[k] for k in ("N", "P", "Q", "O", "G", "MP"))
+    loads = al.model.loads
+    assert all(isinstance(load, Force) for load in loads)
+    assert [load.point for load in loads] == [P, Q, O, Q]
+    assert loads[0].force == MP * G * N.x
+    F = al.constants("F")
+    loads.append(Force(P, F * N.y))
+    al.model.given_force(P, line=50)  # Force_P> += F*N2>: one load on P
+    assert [load.point for load in loads] == [P, Q, O, Q]
+    assert al.model.force_on(P) == MP * G * N.x + F * N.y
+    fr = al.model.fr()
+    assert any(entry.has(F) for entry in fr)
+    forcing = al.model.kanes_method().forcing
+    assert any(entry.has(F) for entry in forcing)
+
+
+def test_declared_sympy_objects_are_autolevs_names():
+    """Issue 33: ``N = ReferenceFrame("N")``, ``O = Point("O")``,
+    ``symbols("G", real=True)`` declared by the runtime are the names' objects;
+    a constant without Autolev's assumptions is refused, not taken silently."""
+    from sympy.physics.mechanics import Particle
+    from sympy.physics.vector import Point, ReferenceFrame
+
+    al = Workspace("decl.al")
+    N = ReferenceFrame("N")
+    al.model.declare_newtonian(N)
+    P = Point("P")
+    P_particle = Particle("P", P, 0)
+    al.model.declare_particles(P_particle)
+    G = sp.Symbol("G", real=True)
+    al.declare_constants(G, line=3)
+    assert al.model.frame("N") is N and al.model.point("P") is P
+    assert al.model.point("NO") is not None
+    assert al.model.particle(P) is P_particle
+    assert al.kind("G") == "constant" and al.table.entries["G"].obj is G
+    with pytest.raises(Exception, match="real"):
+        al.declare_constants(sp.Symbol("H"), line=4)

@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.physics.mechanics import Force, Torque
 from sympy.physics.vector import (
     Dyadic,
     Point,
@@ -138,17 +139,22 @@ class MassAndLoads:
         """``Torque_B>`` (the zero vector if none was applied)."""
         return self.registry.torques.get(b, Vector(0))
 
+    @property
+    def loads(self) -> list:
+        """The model's loads, sympy ``Force``/``Torque`` objects in order:
+        the list a module appends to (``loads.append(Force(P, v))``) and
+        the one that ``Fr()``, ``kanes_method()`` and ``Force_P>`` read."""
+        return self.registry.loads
+
     @command
     def add_force(self, p: Point, v: Any) -> Vector:
-        st = self.registry
-        st.forces[p] = self.force_on(p) + kin.as_vector(v)
-        return st.forces[p]
+        self.registry.loads.append(Force(p, kin.as_vector(v)))
+        return self.force_on(p)
 
     @command
     def add_torque(self, b: ReferenceFrame, v: Any) -> Vector:
-        st = self.registry
-        st.torques[b] = self.torque_on(b) + kin.as_vector(v)
-        return st.torques[b]
+        self.registry.loads.append(Torque(b, kin.as_vector(v)))
+        return self.torque_on(b)
 
     @command
     def force_between(self, o: Point, q: Point, v: Any) -> None:
@@ -168,7 +174,9 @@ class MassAndLoads:
     def gravity(self, vec: Any, *objs: Any, line: int | None = None) -> None:
         """``Gravity(G*N1>)``: adds mass*vec to every particle and mass center
         (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the
-        listed bodies and particles only."""
+        listed bodies and particles only.  Each is a sympy ``Force`` appended
+        to :attr:`loads` (``Force(P, MP*G*N.x)``), as sympy's
+        ``gravity(G*N.x, *bodies)`` gives them for the bodies with a mass."""
         vec = kin.as_vector(vec)
         self.registry.gravity.append(vec)
         for o in self.massive_objects(objs):

@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
-from sympy.physics.mechanics import Particle, RigidBody
+from sympy.physics.mechanics import Force, Particle, RigidBody, Torque
 from sympy.physics.vector import (
     Dyadic,
     Point,
@@ -26,17 +26,21 @@ __all__ = ["Objects"]
 class Objects:
     """Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned."""
 
-    def _new_point(self, name: str, kind: Decl = Decl.POINT) -> Point:
+    def _new_point(
+        self, name: str, kind: Decl = Decl.POINT, p: Point | None = None
+    ) -> Point:
         st = self.registry
-        p = Point(name.upper())
+        p = Point(name.upper()) if p is None else p
         st.points[name.upper()] = p
         st.edges.setdefault(p, {})
         self.ws.table.declare(name, kind, p)
         return p
 
-    def _new_frame(self, name: str, kind: Decl) -> ReferenceFrame:
+    def _new_frame(
+        self, name: str, kind: Decl, f: ReferenceFrame | None = None
+    ) -> ReferenceFrame:
         st = self.registry
-        f = ReferenceFrame(name.upper())
+        f = ReferenceFrame(name.upper()) if f is None else f
         st.frames[name.upper()] = f
         self.ws.table.declare(name, kind, f)
         origin = self._new_point(name.upper() + "O", Decl.POINT)
@@ -56,6 +60,38 @@ class Objects:
     def frames(self, *names: str) -> Any:
         """``Frames A, B``: frames and their fixed points AO, BO."""
         return kin.one_or_tuple([self._new_frame(n, Decl.FRAME) for n in names])
+
+    # The module's own sympy objects (``N = ReferenceFrame("N")``), declared
+    # under their names as the commands above declare new ones.
+
+    @command
+    def declare_newtonian(self, frame: ReferenceFrame) -> ReferenceFrame:
+        """After ``N = ReferenceFrame("N")`` (``Newtonian N``): N and NO."""
+        self.registry.newtonian = self._new_frame(frame.name, Decl.NEWTONIAN, frame)
+        return frame
+
+    @command
+    def declare_frames(self, *frames: ReferenceFrame) -> None:
+        """After ``A = ReferenceFrame("A")`` (``Frames A``): A and AO."""
+        for f in frames:
+            self._new_frame(f.name, Decl.FRAME, f)
+
+    @command
+    def declare_points(self, *points: Point) -> None:
+        """After ``O = Point("O")`` (``Points O``)."""
+        for p in points:
+            self._new_point(p.name, Decl.POINT, p)
+
+    @command
+    def declare_particles(self, *particles: Particle) -> None:
+        """After ``P_particle = Particle("P", P, 0)`` (``Particles P``): the
+        massive point P, whose mass ``Mass P=MP`` gives."""
+        st = self.registry
+        for body in particles:
+            p = self._new_point(body.point.name, Decl.PARTICLE, body.point)
+            st.particles[p] = None
+            st.massive.append(p)
+            st.sympy_bodies[p] = body
 
     @command
     def bodies(self, *names: str) -> Any:
@@ -288,9 +324,9 @@ class Objects:
             st.angacc[(objs[1], objs[0])] = -value
             st.angacc_given.setdefault(objs[0], []).append((objs[1], value))
         elif kind is Form.FORCE:
-            st.forces[objs[0]] = value
+            _replace_loads(st.loads, objs[0], Force(objs[0], value))
         elif kind is Form.TORQUE:
-            st.torques[objs[0]] = value
+            _replace_loads(st.loads, objs[0], Torque(objs[0], value))
         self.ws.respond(label, value, line=line)
         return value
 
@@ -370,6 +406,18 @@ class Objects:
         return self._set(Form.ACC, [p, frame], p.acc(frame), line)
 
     @command
+    def given_force(self, p: Point, *, line=None) -> Vector:
+        """After ``loads.append(Force(P, v))`` (``Force_P> += v``): P's
+        resultant force, kept as one load, and Autolev's response."""
+        return self._set(Form.FORCE, [p], self.force_on(p), line)
+
+    @command
+    def given_torque(self, b: ReferenceFrame, *, line=None) -> Vector:
+        """After ``loads.append(Torque(B, v))`` (``Torque_B> += v``): B's
+        resultant torque, kept as one load, and Autolev's response."""
+        return self._set(Form.TORQUE, [b], self.torque_on(b), line)
+
+    @command
     def given_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
         """After ``B.set_ang_vel(A, w)`` (``W_B_A> = w``): Autolev's response."""
         return self._set(Form.ANGVEL, [b, a], b.ang_vel_in(a), line)
@@ -402,3 +450,15 @@ class Objects:
         if key.index or key.primes:
             raise KeyError(f"{key}: not an element of {key.name}")
         return value
+
+
+def _replace_loads(loads: list, where: Any, load: Any) -> None:
+    """``Force_P> = v``: ``load`` takes the place of the loads on ``where``
+    (at the first one's place, else at the end)."""
+    at = [i for i, old in enumerate(loads) if old[0] is where]
+    for i in reversed(at[1:]):
+        del loads[i]
+    if at:
+        loads[at[0]] = load
+    else:
+        loads.append(load)

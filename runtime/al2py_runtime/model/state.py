@@ -46,9 +46,12 @@ class ModelState:
     angacc: dict = field(default_factory=dict)  # (B, A) -> Vector
     #: ``ALF_B_A> = v`` as the script wrote it: B -> [(A, v)], in order
     angacc_given: dict = field(default_factory=dict)
-    forces: dict = field(default_factory=dict)  # Point -> Vector
+    #: the loads, sympy ``Force``/``Torque`` objects (or ``(Point, Vector)``,
+    #: ``(ReferenceFrame, Vector)`` pairs) in the order they were applied: the
+    #: list a module appends to (``loads.append(Force(P, v))``), and the one
+    #: source of ``Force_P>``, ``Torque_B>``, ``Fr()`` and ``kanes_method()``
+    loads: list = field(default_factory=list)
     gravity: list = field(default_factory=list)  # Gravity(v>)'s vectors, in order
-    torques: dict = field(default_factory=dict)  # frame -> Vector
     dependent: list = field(default_factory=list)
     auxiliary: list = field(default_factory=list)
     speed_dt: dict = field(default_factory=dict)  # U' -> expression (Constrain)
@@ -60,6 +63,26 @@ class ModelState:
     speeds: list | None = None  # the speeds, fixed when Fr/FrStar are formed
     fr_speeds: list | None = None
     kane: dict | None = None
+
+    @property
+    def forces(self) -> dict:
+        """Point -> the resultant of its force loads, points in the order
+        of their first load."""
+        return _resultants(self.loads, Point)
+
+    @property
+    def torques(self) -> dict:
+        """Frame -> the resultant of its torque loads, in order."""
+        return _resultants(self.loads, ReferenceFrame)
+
+
+def _resultants(loads: list, kind: type) -> dict:
+    out: dict = {}
+    for load in loads:
+        where, vec = load[0], load[1]
+        if isinstance(where, kind):
+            out[where] = out[where] + vec if where in out else vec
+    return out
 
 
 def command(method: F) -> F:

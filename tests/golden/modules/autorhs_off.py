@@ -57,13 +57,15 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from al2py_runtime.functions import sin
+    from sympy import symbols
 
 al = Workspace("autorhs_off.al", __file__)
 
 # al> AUTORHS OFF
 al.settings.set("Autorhs", "OFF")
 # al> Constants B
-B = al.constants("B", line=2)
+B = symbols("B", real=True)
+al.declare_constants(B, line=2)
 # al> A = 7
 A = al.assign("A", 7, line=3)
 # al> C = A + B

@@ -56,12 +56,15 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
+    from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("constrain.al", __file__)
 
 # al> % Problem: Triple pendulum whose tip has a specified motion
 # al> Newtonian      N                % Newtonian reference frame
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies         A, B, C          % Links of pendulum
 A, B, C = al.model.bodies("A", "B", "C")
 A_body, B_body, C_body = (
@@ -70,13 +73,15 @@ A_body, B_body, C_body = (
     al.model.rigid_body(C),
 )
 # al> Points         P                % Distal end of C
-P = al.model.points("P")
+P = Point("P")
+al.model.declare_points(P)
 # al> Variables      U{3}            % Generalized speeds
 U1, U2, U3 = al.variables("U1", "U2", "U3", line=5)
 # al> Variables      Qa, Qb, Qc       % Angles for A, B, C
 Qa, Qb, Qc = al.variables("QA", "QB", "QC", line=6)
 # al> Constants      LA, LB, LC       % Lengths of A, B, C
-LA, LB, LC = al.constants("LA", "LB", "LC", line=7)
+LA, LB, LC = symbols("LA LB LC", real=True)
+al.declare_constants(LA, LB, LC, line=7)
 # al> Specified      Vx, Vy           % Specified motion of P
 Vx, Vy = al.specified("VX", "VY", line=8)
 # al> Simprot(N, A, 3, QA)

@@ -56,13 +56,15 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
 
 al = Workspace("factoring_off.al", __file__)
 
 # al> FACTORING OFF
 al.settings.set("Factoring", "OFF")
 # al> Constants A,B,C
-A, B, C = al.constants("A", "B", "C", line=2)
+A, B, C = symbols("A B C", real=True)
+al.declare_constants(A, B, C, line=2)
 # al> X = A*B + A*C + A^2
 X = al.assign("X", A * B + A * C + A**2, line=3)
 # al> Y = A/C + B/C

@@ -56,12 +56,14 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
-    from sympy.physics.vector import outer
+    from sympy import symbols
+    from sympy.physics.vector import Point, outer
 
 al = Workspace("inertia.al", __file__)
 
 # al> Points P
-P = al.model.points("P")
+P = Point("P")
+al.model.declare_points(P)
 # al> Bodies B
 B = al.model.bodies("B")
 Bo = al.model.point("BO")
@@ -71,7 +73,8 @@ MB = al.constants("MB+", line=3)
 B_body.mass = MB
 al.model.given_masses(B_body, line=3)
 # al> Constants I,J,L
-I_, J, L = al.constants("I", "J", "L", line=4)
+I_, J, L = symbols("I J L", real=True)
+al.declare_constants(I_, J, L, line=4)
 # al> P_Bo_P> = L*B1>
 P.set_pos(Bo, L * B.x)
 al.model.given_pos(P, Bo, line=5)

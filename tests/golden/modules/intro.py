@@ -56,11 +56,13 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
 
 al = Workspace("intro.al", __file__)
 
 # al> Constants A, B
-A, B = al.constants("A", "B", line=1)
+A, B = symbols("A B", real=True)
+al.declare_constants(A, B, line=1)
 # al> X = 4*(A+B) - 3*(a-b)
 X = al.assign("X", 4 * (A + B) - 3 * (A - B), line=2)
 

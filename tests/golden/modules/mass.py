@@ -56,6 +56,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy.physics.mechanics import Particle
+    from sympy.physics.vector import Point
 
 al = Workspace("mass.al", __file__)
 
@@ -63,8 +65,9 @@ al = Workspace("mass.al", __file__)
 A, B = al.model.bodies("A", "B")
 A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
 # al> Particles   C
-C = al.model.particles("C")
-C_particle = al.model.particle(C)
+C = Point("C")
+C_particle = Particle("C", C, 0)
+al.model.declare_particles(C_particle)
 # al> Mass        A=12.5, B=MB, C=MC=10
 MB, MC = al.constants("MB+", "MC+", line=3)
 A_body.mass = 12.5

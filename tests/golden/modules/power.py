@@ -56,7 +56,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
-    from sympy import Integer
+    from sympy import Integer, symbols
 
 al = Workspace("power.al", __file__)
 
@@ -66,7 +66,8 @@ ASQ = al.assign("ASQ", Integer(3) ** 2, line=1)
 ACUBE = al.assign("ACUBE", Integer(3) ** 3, line=1)
 # ... end of power.a
 # al> Constants A,B
-A, B = al.constants("A", "B", line=2)
+A, B = symbols("A B", real=True)
+al.declare_constants(A, B, line=2)
 # al> POWER(A+B,ED)
 # ... expands macro power.a:
 EDSQ = al.assign("EDSQ", (A + B) ** 2, line=3)

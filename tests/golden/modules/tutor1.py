@@ -57,7 +57,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from al2py_runtime.functions import cos
-    from sympy import Matrix, pi
+    from sympy import Matrix, pi, symbols
 
 al = Workspace("tutor1.al", __file__)
 
@@ -68,7 +68,8 @@ al = Workspace("tutor1.al", __file__)
 # al> Variables X', Y'
 X, Y = al.variables("X'", "Y'", line=5)
 # al> Constants A,B,C,D
-A, B, C, D = al.constants("A", "B", "C", "D", line=6)
+A, B, C, D = symbols("A B C D", real=True)
+al.declare_constants(A, B, C, D, line=6)
 # al> %-----
 # al> % Create an expression and then rearrange (simplify) it
 # al> E = (X+2*Y)^2 + 3*(7+X)*(X+Y) % Create an expression

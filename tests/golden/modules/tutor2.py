@@ -60,7 +60,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from al2py_runtime.functions import acos_deg
+    from sympy import symbols
     from sympy.physics.mechanics import inertia
+    from sympy.physics.vector import Point
 
 al = Workspace("tutor2.al", __file__)
 
@@ -82,15 +84,18 @@ A_body, B_body, C_body = (
     al.model.rigid_body(C),
 )
 # al> Points O, P % Points on L
-O_, P = al.model.points("O", "P")
+O_, P = Point("O"), Point("P")
+al.model.declare_points(O_, P)
 # al> Points CM % Center of mass of system
-CM = al.model.points("CM")
+CM = Point("CM")
+al.model.declare_points(CM)
 # al> %-----
 # al> % Mathematical declarations: variables, constants
 # al> Variables PHI % Angle between plates A and B
 PHI = al.variables("PHI", line=12)
 # al> Constants W=1 % Width of plate
-W = al.constants("W", line=13)
+W = symbols("W", real=True)
+al.declare_constants(W, line=13)
 al.assign("W", 1, line=13)
 # al> %-----
 # al> % Mass and inertia

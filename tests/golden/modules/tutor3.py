@@ -69,6 +69,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
+    from sympy import symbols
+    from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("tutor3.al", __file__)
 
@@ -77,15 +79,23 @@ al = Workspace("tutor3.al", __file__)
 # al> %-----
 # al> %      Physical declarations:  Frames and Points
 # al> Frames      A, B, C, N
-A, B, C, N = al.model.frames("A", "B", "C", "N")
+A, B, C, N = (
+    ReferenceFrame("A"),
+    ReferenceFrame("B"),
+    ReferenceFrame("C"),
+    ReferenceFrame("N"),
+)
+al.model.declare_frames(A, B, C, N)
 # al> Points      O, P, Q, R
-O_, P, Q, R = al.model.points("O", "P", "Q", "R")
+O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
+al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Mathematical declarations:  variables, constants
 # al> Variables   QA, QB, QC      % Configuration variables
 QA, QB, QC = al.variables("QA", "QB", "QC", line=9)
 # al> Constants   LA, LB, LC, LN  % Lengths
-LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=10)
+LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
+al.declare_constants(LA, LB, LC, LN, line=10)
 # al> %-----
 # al> %      Geometry relating unit vectors
 # al> Simprot(N, A, 3, QA)

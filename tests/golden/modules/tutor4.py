@@ -71,8 +71,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq
-    from sympy.physics.vector import Vector
+    from sympy import Eq, symbols
+    from sympy.physics.mechanics import Force, Particle
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor4.al", __file__)
 
@@ -81,14 +82,18 @@ al = Workspace("tutor4.al", __file__)
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Frames A, B
-A, B = al.model.frames("A", "B")
+A, B = ReferenceFrame("A"), ReferenceFrame("B")
+al.model.declare_frames(A, B)
 # al> Particles P, Q
-P, Q = al.model.particles("P", "Q")
-P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)
+P, Q = Point("P"), Point("Q")
+P_particle, Q_particle = Particle("P", P, 0), Particle("Q", Q, 0)
+al.model.declare_particles(P_particle, Q_particle)
 # al> Points O
-O_ = al.model.points("O")
+O_ = Point("O")
+al.model.declare_points(O_)
 # al> %-----
 # al> % Mathematical declarations: variables, constants, mass
 # al> Variables U{2} % Generalized speeds
@@ -96,9 +101,11 @@ U1, U2 = al.variables("U1", "U2", line=11)
 # al> Variables QA', QB' % Generalized coordinates; derivatives
 QA, QB = al.variables("QA'", "QB'", line=12)
 # al> Constants G, LA, LB % Gravitational acceleration, lengths of A, B
-G, LA, LB = al.constants("G", "LA", "LB", line=13)
+G, LA, LB = symbols("G LA LB", real=True)
+al.declare_constants(G, LA, LB, line=13)
 # al> Constants K, LO % Spring constant, natural length of spring
-K, LO = al.constants("K", "LO", line=14)
+K, LO = symbols("K LO", real=True)
+al.declare_constants(K, LO, line=14)
 # al> Mass P=MP, Q=MQ
 MP, MQ = al.constants("MP+", "MQ+", line=15)
 P_particle.mass = MP
@@ -147,6 +154,7 @@ al.model.v2pts(N, B, P, Q, line=36)
 # al> %-----
 # al> % Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
 LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=40)
@@ -155,7 +163,7 @@ STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 # al> UVEC> = P_O_Q> / LOQ % Unit vector from O to Q
 UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
-al.model.force_between(O_, Q, -K * STRETCH * UVEC_vec)
+loads += [Force(O_, -(-K * STRETCH * UVEC_vec)), Force(Q, -K * STRETCH * UVEC_vec)]
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr()

@@ -66,9 +66,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq
+    from sympy import Eq, symbols
     from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor5.al", __file__)
 
@@ -77,7 +77,8 @@ al = Workspace("tutor5.al", __file__)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies        A, B, C
 A, B, C = al.model.bodies("A", "B", "C")
 Ao = al.model.point("AO")
@@ -89,7 +90,8 @@ A_body, B_body, C_body = (
     al.model.rigid_body(C),
 )
 # al> Points        O, P, Q, R
-O_, P, Q, R = al.model.points("O", "P", "Q", "R")
+O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
+al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}                % Generalized speeds
@@ -97,16 +99,19 @@ U1, U2, U3 = al.variables("U1", "U2", "U3", line=10)
 # al> Variables      QA', QB', QC'        % Generalized coordinates; derivatives
 QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=11)
 # al> Constants      G=9.81                % Gravitational acceleration
-G = al.constants("G", line=12)
+G = symbols("G", real=True)
+al.declare_constants(G, line=12)
 al.assign("G", 9.81, line=12)
 # al> Constants      LA=1, LB=2, LC=2, LN=1 % Lengths
-LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=13)
+LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
+al.declare_constants(LA, LB, LC, LN, line=13)
 al.assign("LA", 1, line=13)
 al.assign("LB", 2, line=13)
 al.assign("LC", 2, line=13)
 al.assign("LN", 1, line=13)
 # al> Constants      H                      % Horizontal force on Q
-H = al.constants("H", line=14)
+H = symbols("H", real=True)
+al.declare_constants(H, line=14)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass          A=MA=10, B=MB=20, C=MC=20
@@ -221,6 +226,7 @@ al.model.constrain("DEPENDENT", [U2, U3], line=63)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> Force_Q> = H*N2>
 al.model.set_force(Q, H * N.y, line=67)

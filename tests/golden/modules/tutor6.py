@@ -80,8 +80,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from al2py_runtime.functions import sin
-    from sympy import Eq
-    from sympy.physics.vector import Vector
+    from sympy import Eq, symbols
+    from sympy.physics.mechanics import Force, Particle
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor6.al", __file__)
 
@@ -91,14 +92,18 @@ al = Workspace("tutor6.al", __file__)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Frames         A, B
-A, B = al.model.frames("A", "B")
+A, B = ReferenceFrame("A"), ReferenceFrame("B")
+al.model.declare_frames(A, B)
 # al> Particles      P, Q
-P, Q = al.model.particles("P", "Q")
-P_particle, Q_particle = al.model.particle(P), al.model.particle(Q)
+P, Q = Point("P"), Point("Q")
+P_particle, Q_particle = Particle("P", P, 0), Particle("Q", Q, 0)
+al.model.declare_particles(P_particle, Q_particle)
 # al> Points         O
-O_ = al.model.points("O")
+O_ = Point("O")
+al.model.declare_points(O_)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{2}'          % Generalized Speeds; derivatives
@@ -108,11 +113,14 @@ QA, QB = al.variables("QA'", "QB'", line=13)
 # al> Variables      F1, F2         % Contact forces
 F1, F2 = al.variables("F1", "F2", line=14)
 # al> Constants      G, LA, LB      % Gravitational acceleration, lengths of A, B
-G, LA, LB = al.constants("G", "LA", "LB", line=15)
+G, LA, LB = symbols("G LA LB", real=True)
+al.declare_constants(G, LA, LB, line=15)
 # al> Constants      K, LO          % Spring constant, natural length of spring
-K, LO = al.constants("K", "LO", line=16)
+K, LO = symbols("K LO", real=True)
+al.declare_constants(K, LO, line=16)
 # al> Constants      C, D           % Damping constants
-C, D = al.constants("C", "D", line=17)
+C, D = symbols("C D", real=True)
+al.declare_constants(C, D, line=17)
 # al> Specified      STRETCH'       % Elongation of spring joining O and Q
 STRETCH = al.specified("STRETCH'", line=18)
 # al> Specified      FP = -D*QA'    % Force on P
@@ -174,9 +182,11 @@ al.model.v2pts(N, B, P, Q, line=44)
 # al> %-----
 # al> %      Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> Force_P> += Fp*A2>
-al.model.set_force(P, al.model.force_on(P) + (FP * A.y), line=53)
+loads.append(Force(P, FP * A.y))
+al.model.given_force(P, line=53)
 # al> LOQ = Mag(P_O_Q>)                        % Distance from O to Q
 LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=54)
 # al> STRETCH = LOQ - LO                       % Stretch of spring
@@ -186,9 +196,13 @@ UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=56)
 # al> STRETCH' = Dot(V_Q_N>,UVEC>)            % Time rate of change of stretch
 al.assign("STRETCH'", al.model.dot(al.model.vel(Q, N), UVEC_vec), line=57)
 # al> Force(O/Q, (-K*STRETCH-C*STRETCH')*UVEC> )
-al.model.force_between(O_, Q, (-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec)
+loads += [
+    Force(O_, -((-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec)),
+    Force(Q, (-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec),
+]
 # al> Force_O> += F1*N1> + F2*N2>
-al.model.set_force(O_, al.model.force_on(O_) + (F1 * N.x + F2 * N.y), line=59)
+loads.append(Force(O_, F1 * N.x + F2 * N.y))
+al.model.given_force(O_, line=59)
 # al> %-----
 # al> %      Equations of motion
 # al> Zero = Fr() + FrStar()

@@ -69,9 +69,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
+    from sympy import Eq, Matrix, symbols
     from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor7c.al", __file__)
 
@@ -87,7 +87,8 @@ al.settings.set("Digits", 7)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian  N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies     A, B, C
 A, B, C = al.model.bodies("A", "B", "C")
 Ao = al.model.point("AO")
@@ -99,7 +100,8 @@ A_body, B_body, C_body = (
     al.model.rigid_body(C),
 )
 # al> Points     O, P, Q, R
-O_, P, Q, R = al.model.points("O", "P", "Q", "R")
+O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
+al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables  U{3}'          % Generalized speeds; derivatives
@@ -109,10 +111,12 @@ QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=15)
 # al> Variables  FA{2}, FC{2}  % Contact forces
 FA1, FA2, FC1, FC2 = al.variables("FA1", "FA2", "FC1", "FC2", line=16)
 # al> Constants  G=9.81        % Gravitational acceleration
-G = al.constants("G", line=17)
+G = symbols("G", real=True)
+al.declare_constants(G, line=17)
 al.assign("G", 9.81, line=17)
 # al> Constants  LA=1, LB=2, LC=2, LN=1 % Lengths
-LA, LB, LC, LN = al.constants("LA", "LB", "LC", "LN", line=18)
+LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
+al.declare_constants(LA, LB, LC, LN, line=18)
 al.assign("LA", 1, line=18)
 al.assign("LB", 2, line=18)
 al.assign("LC", 2, line=18)
@@ -250,6 +254,7 @@ al.model.a2pts(N, C, Q, Co, line=79)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
 # al> Force_O> = FA1*N1> + FA2*N2>
 al.model.set_force(O_, FA1 * N.x + FA2 * N.y, line=83)

@@ -78,9 +78,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy import Eq, Matrix, symbols
+    from sympy.physics.mechanics import Force, inertia
+    from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor8.al", __file__)
 
@@ -93,14 +93,16 @@ al.settings.set("Digits", 2)
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
 # al> Newtonian   N          % Newtonian reference frame
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies      A, B       % Cart, inverted pendulum
 A, B = al.model.bodies("A", "B")
 Ao = al.model.point("AO")
 Bo = al.model.point("BO")
 A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
 # al> Points      O          % Point fixed in N
-O_ = al.model.points("O")
+O_ = Point("O")
+al.model.declare_points(O_)
 # al> %-----
 # al> % Variables, constants, and specified
 # al> Variables   U{2}'      % Generalized speeds; derivatives
@@ -108,11 +110,14 @@ U1, U2 = al.variables("U1'", "U2'", line=13)
 # al> Variables   X', THETA' % Generalized coordinates; derivatives
 X, THETA = al.variables("X'", "THETA'", line=14)
 # al> Constants   L          % Length of rod
-L = al.constants("L", line=15)
+L = symbols("L", real=True)
+al.declare_constants(L, line=15)
 # al> Constants   G          % Gravitational acceleration
-G = al.constants("G", line=16)
+G = symbols("G", real=True)
+al.declare_constants(G, line=16)
 # al> Constants   K{4}       % Control gains
-K1, K2, K3, K4 = al.constants("K1", "K2", "K3", "K4", line=17)
+K1, K2, K3, K4 = symbols("K1 K2 K3 K4", real=True)
+al.declare_constants(K1, K2, K3, K4, line=17)
 # al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
 F = al.specified("F", line=18)
 al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
@@ -166,9 +171,11 @@ al.model.v2pts(N, B, Ao, Bo, line=41)
 # al> %-----
 # al> % Forces
 # al> Gravity( -G*N2> )
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(-G * N.y)
 # al> Force_Ao> += F*N1>
-al.model.set_force(Ao, al.model.force_on(Ao) + (F * N.x), line=45)
+loads.append(Force(Ao, F * N.x))
+al.model.given_force(Ao, line=45)
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr() + FrStar()

@@ -75,9 +75,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
     from al2py_runtime.functions import acos
-    from sympy import Matrix
+    from sympy import Matrix, symbols
     from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Vector
+    from sympy.physics.vector import ReferenceFrame, Vector
 
 al = Workspace("tutor9.al", __file__)
 
@@ -86,21 +86,25 @@ al = Workspace("tutor9.al", __file__)
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
 # al> Newtonian      N              % Newtonian reference frame
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Bodies         A              % Carrier
 A = al.model.bodies("A")
 Ao = al.model.point("AO")
 A_body = al.model.rigid_body(A)
 # al> Frames         B              % Rotor
-B = al.model.frames("B")
+B = ReferenceFrame("B")
+al.model.declare_frames(B)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}'         % Generalized speeds; derivatives
 U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=10)
 # al> Constants      OMEGA         % Angular speed of B in A
-OMEGA = al.constants("OMEGA", line=11)
+OMEGA = symbols("OMEGA", real=True)
+al.declare_constants(OMEGA, line=11)
 # al> Constants      J              % Moment of inertia of B about spin axis
-J = al.constants("J", line=12)
+J = symbols("J", real=True)
+al.declare_constants(J, line=12)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
@@ -189,7 +193,8 @@ al.numerics.code("DYNAMICS", file="tutor9.for", line=54)
 # al> Variables  dU{3}'          % Perturbations of U1, U2, U3
 dU1, dU2, dU3 = al.variables("DU1'", "DU2'", "DU3'", line=59)
 # al> Constants  nU3             % Nominal solution for U3
-nU3 = al.constants("NU3", line=60)
+nU3 = symbols("NU3", real=True)
+al.declare_constants(nU3, line=60)
 # al> %-----
 # al> %      Check nominal solution
 # al> CHECK = Evaluate(Zero, U1=0, U1'=0, U2=0, U2'=0, U3=nU3, U3'=0)

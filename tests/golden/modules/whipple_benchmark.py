@@ -85,8 +85,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace, t
-    from sympy import Eq, Matrix
+    from sympy import Eq, Matrix, symbols
     from sympy.physics.mechanics import inertia
+    from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("whipple_benchmark.al", __file__)
 
@@ -100,9 +101,11 @@ al = Workspace("whipple_benchmark.al", __file__)
 # al> AutoZ ON                           % intermediates, as Autolev's Z's
 al.settings.set("Autoz", "ON")
 # al> Newtonian N
-N = al.model.newtonian("N")
+N = ReferenceFrame("N")
+al.model.declare_newtonian(N)
 # al> Frames    Y, L, E            % heading, lean (roll), steer axis
-Y, L, E = al.model.frames("Y", "L", "E")
+Y, L, E = ReferenceFrame("Y"), ReferenceFrame("L"), ReferenceFrame("E")
+al.model.declare_frames(Y, L, E)
 # al> Bodies    R, B, H, F
 R, B, H, F = al.model.bodies("R", "B", "H", "F")
 Ro = al.model.point("RO")
@@ -116,7 +119,8 @@ R_body, B_body, H_body, F_body = (
     al.model.rigid_body(F),
 )
 # al> Points    P, S               % rear contact point, a point on the steer axis
-P, S = al.model.points("P", "S")
+P, S = Point("P"), Point("S")
+al.model.declare_points(P, S)
 # al> %-----
 # al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
 # al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
@@ -129,17 +133,23 @@ U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(
     "U1'", "U2'", "U3'", "U4'", "U5'", "U6'", "U7'", "U8'", line=17
 )
 # al> Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt, gravity
-W, C, LAM, G = al.constants("W", "C", "LAM", "G", line=18)
+W, C, LAM, G = symbols("W C LAM G", real=True)
+al.declare_constants(W, C, LAM, G, line=18)
 # al> Constants RR, RF                   % wheel radii
-RR, RF = al.constants("RR", "RF", line=19)
+RR, RF = symbols("RR RF", real=True)
+al.declare_constants(RR, RF, line=19)
 # al> Constants XB, ZB, XH, ZH           % mass centres in the reference configuration
-XB, ZB, XH, ZH = al.constants("XB", "ZB", "XH", "ZH", line=20)
+XB, ZB, XH, ZH = symbols("XB ZB XH ZH", real=True)
+al.declare_constants(XB, ZB, XH, ZH, line=20)
 # al> Constants IRXX, IRYY, IFXX, IFYY
-IRXX, IRYY, IFXX, IFYY = al.constants("IRXX", "IRYY", "IFXX", "IFYY", line=21)
+IRXX, IRYY, IFXX, IFYY = symbols("IRXX IRYY IFXX IFYY", real=True)
+al.declare_constants(IRXX, IRYY, IFXX, IFYY, line=21)
 # al> Constants IBXX, IBYY, IBZZ, IBXZ
-IBXX, IBYY, IBZZ, IBXZ = al.constants("IBXX", "IBYY", "IBZZ", "IBXZ", line=22)
+IBXX, IBYY, IBZZ, IBXZ = symbols("IBXX IBYY IBZZ IBXZ", real=True)
+al.declare_constants(IBXX, IBYY, IBZZ, IBXZ, line=22)
 # al> Constants IHXX, IHYY, IHZZ, IHXZ
-IHXX, IHYY, IHZZ, IHXZ = al.constants("IHXX", "IHYY", "IHZZ", "IHXZ", line=23)
+IHXX, IHYY, IHZZ, IHXZ = symbols("IHXX IHYY IHZZ IHXZ", real=True)
+al.declare_constants(IHXX, IHYY, IHZZ, IHXZ, line=23)
 # al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
 MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
@@ -286,6 +296,7 @@ DEPENDENT = al.assign("DEPENDENT[5]", al.model.dot(SLIPF_vec, N.z), line=80)
 al.model.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
 # al> %-----
 # al> Gravity(G*N3>)
+loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=84)
