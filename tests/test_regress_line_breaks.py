@@ -28,8 +28,10 @@ def _script(char: str) -> str:
 def test_a_comment_holding_a_break_character_stays_a_comment(name, tmp_path):
     text = _script(BREAKS[name])
     result = convert(text, "hidden.al")
-    assert "HIDDEN =" not in result.code
-    assert 'al.constants("HIDDEN"' not in result.code
+    code_lines = [
+        ln for ln in result.code.splitlines() if not ln.lstrip().startswith("#")
+    ]
+    assert [ln for ln in code_lines if "HIDDEN" in ln] == []  # only in the echo
     module = load_module(result.code, tmp_path, result.module)
     assert "HIDDEN" not in module.AUTOLEV
     transcript = module.al.transcript(module_source(module.__file__))
