@@ -55,8 +55,8 @@ def write(path: Path, folder: Path, text: str | None = None, stem: str = "") -> 
     return out
 
 
-def import_seconds(folder: Path, module: str) -> float:
-    code = f"import time; t = time.perf_counter(); import {module}; print(time.perf_counter() - t)"
+def _last_number(folder: Path, code: str) -> float:
+    """The last number ``code`` prints, run by a new Python in ``folder``."""
     out = subprocess.run(
         [sys.executable, "-c", code],
         cwd=folder,
@@ -65,20 +65,19 @@ def import_seconds(folder: Path, module: str) -> float:
         check=True,
     )
     return float(out.stdout.split()[-1])
+
+
+def import_seconds(folder: Path, module: str) -> float:
+    code = f"import time; t = time.perf_counter(); import {module}; print(time.perf_counter() - t)"
+    return _last_number(folder, code)
 
 
 def in_fresh_process(folder: Path, module: str, body: str) -> float:
     """Seconds of ``body`` (which sets ``seconds``) after importing ``module``
     in a new process."""
-    code = f"import {module} as m, numpy as np, time\n{body}\nprint(seconds)"
-    out = subprocess.run(
-        [sys.executable, "-c", code],
-        cwd=folder,
-        capture_output=True,
-        text=True,
-        check=True,
+    return _last_number(
+        folder, f"import {module} as m, numpy as np, time\n{body}\nprint(seconds)"
     )
-    return float(out.stdout.split()[-1])
 
 
 def worst_table2(ev_by_speed: dict[float, np.ndarray]) -> float:
