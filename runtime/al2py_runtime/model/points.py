@@ -469,6 +469,16 @@ class Kinematics:
         )
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
+    @command
+    def formed_vel(self, p: Point, n: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.v2pt_theory(O, N, A)`` (``V2pts(N, A, O, P)``, with
+        ``V_O_N>``, ``W_A_N>`` and ``P_O_P>`` known): sympy's velocity as
+        Autolev keeps it (the kinematical differential equations applied,
+        lightly simplified) and its response."""
+        st = self.registry
+        st.deferred_vel.pop((p, n), None)
+        return self._set_formed("V", p, n, self._tidyv(p.vel(n)), line)
+
     def _set_formed(self, which, p, n, v, line) -> Vector:
         v = self.with_kindiffs(v)
         table = self.registry.vel if which == "V" else self.registry.acc

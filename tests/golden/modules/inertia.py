@@ -57,7 +57,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from sympy import symbols
-    from sympy.physics.vector import Point, outer
+    from sympy.physics.mechanics import RigidBody
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, outer
 
 al = Workspace("inertia.al", __file__)
 
@@ -65,11 +66,13 @@ al = Workspace("inertia.al", __file__)
 P = Point("P")
 al.model.declare_points(P)
 # al> Bodies B
-B = al.model.bodies("B")
-Bo = al.model.point("BO")
-B_body = al.model.rigid_body(B)
+B = ReferenceFrame("B")
+Bo = Point("BO")
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+al.model.declare_bodies(B_body)
 # al> Mass B=MB
-MB = al.constants("MB+", line=3)
+MB = symbols("MB", nonnegative=True)
+al.declare_constants(MB, line=3)
 B_body.mass = MB
 al.model.given_masses(B_body, line=3)
 # al> Constants I,J,L

@@ -58,6 +58,7 @@ else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from al2py_runtime.functions import cos
     from sympy import Matrix, pi, symbols
+    from sympy.physics.mechanics import dynamicsymbols
 
 al = Workspace("tutor1.al", __file__)
 
@@ -66,7 +67,8 @@ al = Workspace("tutor1.al", __file__)
 # al> %-----
 # al> % Mathematical declarations: variables, constants
 # al> Variables X', Y'
-X, Y = al.variables("X'", "Y'", line=5)
+X, Y = dynamicsymbols("X Y", real=True)
+al.declare_variables(X, Y, primes=1, line=5)
 # al> Constants A,B,C,D
 A, B, C, D = symbols("A B C D", real=True)
 al.declare_constants(A, B, C, D, line=6)
