@@ -661,7 +661,7 @@ class Generator:
 
     def _two_point(self, call: ir.Call, b: Builtin) -> list[str]:
         """``V2pts(N, A, O, P)`` as sympy's ``P.v2pt_theory(O, N, A)`` where
-        ``V_O_N>``, ``P_O_P>`` and ``W_A_N>`` are known here (Autolev
+        ``V_O_N>``, ``P_O_P>`` (given directly) and ``W_A_N>`` are known here (Autolev
         forms ``V_P_N>`` later, when it is used, if they are not: the
         runtime's rule), then the runtime's record of it; ``[]`` else."""
         args = call.args
@@ -679,7 +679,7 @@ class Generator:
             return []
         known = (
             (o.key, n.key) in self._known_vel
-            and self._joined(self._pos_edges, o.key, p.key)
+            and p.key in self._pos_edges[o.key]
             and self._joined(self._frame_edges, a.key, n.key)
         )
         if not known:
@@ -951,9 +951,13 @@ class Generator:
         """sympy's own getter for ``P_O_Q>``, ``W_A_N>`` and ``V_Q_N>``
         where it gives what Autolev's rule gives: the chain of positions or
         of orientations is known here, the velocity was given or formed (not
-        derived, nor formed later); else None (the runtime's rule)."""
+        derived, nor formed later); else None (the runtime's rule).
+
+        A position is sympy's only where it was given directly: along a
+        chain Autolev adds the steps from ``O``, sympy's ``pos_from`` from
+        the far end, and the terms would print in another order."""
         keys = [self.facts.object(part).key for part in form.parts]
-        if form.kind is Form.POS and self._joined(self._pos_edges, *keys):
+        if form.kind is Form.POS and keys[1] in self._pos_edges[keys[0]]:
             return "pos_from"
         if form.kind is Form.ANGVEL and self._joined(self._frame_edges, *keys):
             return "ang_vel_in"

@@ -164,11 +164,11 @@ loads = al.model.loads  # sympy Force/Torque loads
 loads += gravity(G * N.x, P_particle, Q_particle)
 al.model.given_gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
-LOQ = al.assign("LOQ", al.model.mag(Q.pos_from(O_)), line=40)
+LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=40)
 # al> STRETCH = LOQ - LO % Stretch of spring
 STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 # al> UVEC> = P_O_Q> / LOQ % Unit vector from O to Q
-UVEC_vec = al.assign_vector(UVEC=Q.pos_from(O_) / LOQ, line=42)
+UVEC_vec = al.assign_vector(UVEC=al.model.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
 loads += [Force(O_, -(-K * STRETCH * UVEC_vec)), Force(Q, -K * STRETCH * UVEC_vec)]
 # al> %-----

@@ -198,11 +198,11 @@ al.model.given_gravity(G * N.x)
 loads.append(Force(P, FP * A.y))
 al.model.given_force(P, line=53)
 # al> LOQ = Mag(P_O_Q>)                        % Distance from O to Q
-LOQ = al.assign("LOQ", al.model.mag(Q.pos_from(O_)), line=54)
+LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=54)
 # al> STRETCH = LOQ - LO                       % Stretch of spring
 al.assign("STRETCH", LOQ - LO, line=55)
 # al> UVEC> = P_O_Q> / LOQ                     % Unit vector directed from O to Q
-UVEC_vec = al.assign_vector(UVEC=Q.pos_from(O_) / LOQ, line=56)
+UVEC_vec = al.assign_vector(UVEC=al.model.pos(O_, Q) / LOQ, line=56)
 # al> STRETCH' = Dot(V_Q_N>,UVEC>)            % Time rate of change of stretch
 al.assign("STRETCH'", al.model.dot(Q.vel(N), UVEC_vec), line=57)
 # al> Force(O/Q, (-K*STRETCH-C*STRETCH')*UVEC> )
