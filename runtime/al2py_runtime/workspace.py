@@ -41,7 +41,7 @@ from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
 from .names.table import Entry, NameTable
-from .names.variables import time_function
+from .names.variables import TimeFunction, time_function
 from .progress import ImportWatch
 from .safety import Statements, statement
 from .safety import register as register_module
@@ -222,7 +222,12 @@ class Workspace(Mapping):
                     f"{name or func} must be dynamicsymbols({name!r},"
                     f" {self._assumptions(None) or 'no assumptions'})"
                 )
-            self.table.declare(name, kind, want, order=order, line=line)
+            # the module's own function when it keeps its hash (the runtime's
+            # dynamicsymbols), so that both are one object
+            own = isinstance(func.func, TimeFunction)
+            self.table.declare(
+                name, kind, func if own else want, order=order, line=line
+            )
 
     @statement
     def variables(self, *names: str, line: int | None = None) -> Any:

@@ -223,7 +223,8 @@ class Generator:
             # functions of time, as sympy writes them (``dynamicsymbols``)
             keys = [spec[1:-1].rstrip("'") for spec in specs]
             if all(re.fullmatch(r"\w+", k) for k in keys):
-                make = self.imports.use("sympy.physics.mechanics", "dynamicsymbols")
+                # sympy's dynamicsymbols, each function keeping its hash
+                make = self.imports.use(_RUNTIME, "dynamicsymbols")
                 orders = [
                     len(spec[1:-1]) - len(k)
                     for spec, k in zip(specs, keys, strict=True)

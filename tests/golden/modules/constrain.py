@@ -55,9 +55,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from sympy import symbols
-    from sympy.physics.mechanics import RigidBody, dynamicsymbols
+    from sympy.physics.mechanics import RigidBody
     from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("constrain.al", __file__)

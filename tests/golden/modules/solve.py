@@ -55,8 +55,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
-    from sympy.physics.mechanics import dynamicsymbols
+    from al2py_runtime import Workspace, dynamicsymbols
 
 al = Workspace("solve.al", __file__)
 

@@ -55,10 +55,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from al2py_runtime.functions import cos
     from sympy import Matrix, pi, symbols
-    from sympy.physics.mechanics import dynamicsymbols
 
 al = Workspace("tutor1.al", __file__)
 

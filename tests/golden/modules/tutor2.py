@@ -58,10 +58,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from al2py_runtime.functions import acos_deg
     from sympy import symbols
-    from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
+    from sympy.physics.mechanics import RigidBody, inertia
     from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("tutor2.al", __file__)

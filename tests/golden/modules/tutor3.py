@@ -68,9 +68,8 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from sympy import symbols
-    from sympy.physics.mechanics import dynamicsymbols
     from sympy.physics.vector import Point, ReferenceFrame
 
 al = Workspace("tutor3.al", __file__)

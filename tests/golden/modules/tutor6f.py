@@ -78,10 +78,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from al2py_runtime.functions import sin
     from sympy import Eq, symbols
-    from sympy.physics.mechanics import Force, Particle, dynamicsymbols
+    from sympy.physics.mechanics import Force, Particle
     from sympy.physics.mechanics.loads import gravity
     from sympy.physics.vector import Point, ReferenceFrame
 

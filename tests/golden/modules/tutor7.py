@@ -68,9 +68,9 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, Matrix, symbols
-    from sympy.physics.mechanics import RigidBody, dynamicsymbols, inertia
+    from sympy.physics.mechanics import RigidBody, inertia
     from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector
 
 al = Workspace("tutor7.al", __file__)
