@@ -499,6 +499,8 @@ class Generator:
     def _note_form(self, form: Match) -> None:
         """What an assignment to ``P_O_P>``, ``V_P_N>``, ``W_A_N>`` or
         ``N_A`` makes known (:meth:`_two_point`)."""
+        if form.kind not in (Form.POS, Form.VEL, Form.ANGVEL, Form.DCM):
+            return
         keys = [self.facts.object(part).key for part in form.parts]
         if form.kind is Form.POS:
             self._pos_edges[keys[0]].add(keys[1])
