@@ -214,6 +214,11 @@ def sweep_quantity(
         notes.append(f"{', '.join(unused)} does not appear in {plan.name}")
     pool = resolve_executor(executor)
     size = len(points.times)
+    if getattr(plan.kernel, "vectorized", False) and pool is None:
+        # a numpy tape takes many points at once
+        from .tape import CHUNK
+
+        chunksize = chunksize or CHUNK
     ranges = _chunks(size, pool, chunksize)
     chunks = [
         (
