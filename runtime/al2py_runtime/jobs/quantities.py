@@ -303,6 +303,9 @@ class CompiledQuantity:
     kinds: list[str]
     kernel: Kernel
     notes: list[str] = field(default_factory=list)
+    #: how it was made: ``compiled`` here, loaded from ``disk``
+    #: (:func:`load_plan`), or a ``numpy`` tape (:func:`tape_quantity`)
+    origin: str = "compiled"
 
 
 def split_given(job: Job, given: Mapping[str, Any]) -> tuple[dict, dict]:
@@ -438,7 +441,9 @@ def tape_quantity(
     labels = [label_of(obj, job.names) for obj in objs]
     kinds = [_kind(job, o, label) for o, label in zip(objs, labels, strict=True)]
     kernel = TapeKernel(tape, len(objs), len(exprs))
-    return CompiledQuantity(name, shape, labels, kinds, kernel)  # type: ignore[arg-type]
+    return CompiledQuantity(
+        name, shape, labels, kinds, kernel, origin="numpy"  # type: ignore[arg-type]
+    )
 
 
 # ------------------------------------------------------------- on disk
@@ -561,6 +566,7 @@ def load_plan(key: str) -> CompiledQuantity | None:
             list(meta["params"]),
             list(meta["kinds"]),
             kernel,
+            origin="disk",
         )
     except (OSError, ValueError, KeyError, TypeError, backends.BackendError):
         return None
