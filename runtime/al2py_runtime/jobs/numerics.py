@@ -586,7 +586,9 @@ class Numerics:
         origin: tuple[str, str | None] | None = None,
         **given: Any,
     ) -> Any:
-        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once),
+        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once,
+        or for a large quantity over a few points its numpy tape:
+        :func:`.quantities.takes_tape`),
         or without a name of the ``CODE`` job (``job`` chooses it as for
         :meth:`run`), over the grid that the 1-D arrays among the values
         span (several: their product); scalars are fixed.  Values are given

@@ -483,15 +483,15 @@ def _disk() -> Path:
 
 
 def store_plan(key: str, plan: CompiledQuantity) -> None:
-    """Keep ``plan`` on disk under ``key``: a JSON sidecar with what the
-    compiled quantity needs besides the library (shape, parameter names
-    in argument order, their kinds, the kernel's size and key), the
-    library's name (C) or the Python source (``lambdify``), and the C
-    units (sent to an executor's workers).  Nothing is kept if the cache
-    cannot be written (it is only a cache)."""
+    """Keep ``plan`` (compiled by C) on disk under ``key``: a JSON sidecar
+    with what the compiled quantity needs besides the library (shape,
+    parameter names in argument order, their kinds, the kernel's size and
+    key, the library's name), and the C units (read only when the kernel
+    is sent to an executor's workers).  Nothing is kept if the cache cannot
+    be written (it is only a cache)."""
     kernel = plan.kernel
-    if not isinstance(kernel, Kernel):
-        return
+    if not isinstance(kernel, Kernel) or kernel.backend != "c":
+        return  # lambdify builds in milliseconds, and writes nothing to disk
     meta: dict[str, Any] = {
         "sidecar": SIDECAR,
         "key": key,
@@ -505,15 +505,12 @@ def store_plan(key: str, plan: CompiledQuantity) -> None:
         "kernel": kernel.key,
     }
     try:
+        if kernel.library is None:
+            return
         folder = _disk()
-        if kernel.backend == "c":
-            if kernel.library is None:
-                return
-            meta["library"] = kernel.library.name
-            units = [[text, list(flags)] for text, flags in kernel.source]
-            _write(folder / f"{key}.units.json", json.dumps(units))
-        else:
-            meta["source"] = kernel.source
+        meta["library"] = kernel.library.name
+        units = [[text, list(flags)] for text, flags in kernel.source]
+        _write(folder / f"{key}.units.json", json.dumps(units))
         _write(folder / f"{key}.json", json.dumps(meta, indent=1))
     except OSError:
         return
@@ -544,22 +541,20 @@ def load_plan(key: str) -> CompiledQuantity | None:
         if meta.get("sidecar") != SIDECAR or meta.get("key") != key:
             return None
         n_params, n_out = int(meta["n_params"]), int(meta["n_out"])
-        if meta["backend"] == "c":
-            library = backends.cache_folder() / meta["library"]
-            units = folder / f"{key}.units.json"
-            if not (library.exists() and units.exists()):
-                return None
-            call = _open_c(library, n_out)
-            with _KERNELS_LOCK:
-                kernel = _KERNELS.get(meta["kernel"])
-                if kernel is None:
-                    kernel = Kernel("c", None, n_params, n_out, meta["kernel"], units)
-                    _KERNELS[meta["kernel"]] = kernel
-            kernel.attach(call)
-            kernel.library = library
-        else:
-            kernel = kernel_for(meta["backend"], meta["source"], n_params, n_out)
-            kernel.load()
+        if meta["backend"] != "c":
+            return None
+        library = backends.cache_folder() / meta["library"]
+        units = folder / f"{key}.units.json"
+        if not (library.exists() and units.exists()):
+            return None
+        call = _open_c(library, n_out)
+        with _KERNELS_LOCK:
+            kernel = _KERNELS.get(meta["kernel"])
+            if kernel is None:
+                kernel = Kernel("c", None, n_params, n_out, meta["kernel"], units)
+                _KERNELS[meta["kernel"]] = kernel
+        kernel.attach(call)
+        kernel.library = library
         return CompiledQuantity(
             meta["name"],
             tuple(meta["shape"]),
