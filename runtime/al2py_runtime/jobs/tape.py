@@ -23,6 +23,7 @@ The choice between the tape and a compiled function is
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -150,28 +151,8 @@ class TapeKernel:
 # ------------------------------------------------------------------ building
 
 
-def _add(a: Any, b: Any) -> Any:
-    return a + b
-
-
-def _mul(a: Any, b: Any) -> Any:
-    return a * b
-
-
-def _square(a: Any) -> Any:
-    return a * a
-
-
-def _reciprocal(a: Any) -> Any:
-    return 1.0 / a
-
-
 def _inverse_sqrt(a: Any) -> Any:
     return 1.0 / np.sqrt(a)
-
-
-def _power(a: Any, b: Any) -> Any:
-    return np.power(a, b)
 
 
 _FUNCS: dict[tuple[type, int], Any] = {}
@@ -230,6 +211,10 @@ def build_tape(entries: Iterable[Any], time: Any) -> tuple[Tape, list[Any]] | No
         return None
 
 
+#: a node on the walk's stack whose arguments are done
+_READY = object()
+
+
 def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
     # Nodes are found by identity first (kept alive by ``seen``): sympy's
     # structural ``==``, which a dict of nodes calls for equal nodes that
@@ -275,6 +260,9 @@ def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
             e, body = stack.pop()
             if id(e) in by_id:
                 continue
+            if body is _READY:  # its arguments done
+                put(e, _operation(e, by_id, ops, names, new))
+                continue
             if body is not None:  # an intermediate, its definition done
                 put(e, by_id[id(body)])
                 zs += 1
@@ -309,7 +297,7 @@ def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
                 continue
             missing = [(a, None) for a in args if id(a) not in by_id]
             if missing:
-                stack.append((e, None))
+                stack.append((e, _READY))
                 stack.extend(missing)
                 continue
             put(e, _operation(e, by_id, ops, names, new))
@@ -334,7 +322,8 @@ def _operation(e: Any, by_id: dict, ops: list, names: list, new: Any) -> int:
         raise Unsupported(type(e).__name__)
     args = [by_id[id(a)] for a in e.args]
     if e.is_Add or e.is_Mul:
-        fn, name = (_add, "add") if e.is_Add else (_mul, "mul")
+        # operator's functions: no Python frame per operation
+        fn, name = (operator.add, "add") if e.is_Add else (operator.mul, "mul")
         acc = args[0]
         for b in args[1:]:
             out = new()
@@ -347,14 +336,14 @@ def _operation(e: Any, by_id: dict, ops: list, names: list, new: Any) -> int:
         if e.exp.is_Number:
             if e.exp == 1:  # x**1, unevaluated
                 return base
-            fn = _POWERS.get(e.exp)
-            if fn is not None:
+            power = _POWERS.get(e.exp)
+            if power is not None:
                 out = new()
-                ops.append((fn, base, -1, out))
-                names.append(fn.__name__)
+                ops.append((_OPS[power], base, -1, out))
+                names.append(power)
                 return out
         out = new()
-        ops.append((_power, base, exp, out))
+        ops.append((np.power, base, exp, out))
         names.append("power")
         return out
     if len(args) > 2:
@@ -367,15 +356,19 @@ def _operation(e: Any, by_id: dict, ops: list, names: list, new: Any) -> int:
     return out
 
 
-#: powers with a function of their own
-_POWERS = {2: _square, -1: _reciprocal, sp.S.Half: np.sqrt, -sp.S.Half: _inverse_sqrt}
+#: powers with a function of their own (the same numbers as ``x**2``,
+#: ``x**-1``...)
+_POWERS = {2: "square", -1: "reciprocal", sp.S.Half: "sqrt", -sp.S.Half: "inverse_sqrt"}
 
 #: operations by their names in a tape
 _OPS = {
-    "add": _add,
-    "mul": _mul,
-    "power": _power,
-    **{fn.__name__: fn for fn in _POWERS.values()},
+    "add": operator.add,
+    "mul": operator.mul,
+    "power": np.power,
+    "square": np.square,
+    "reciprocal": np.reciprocal,
+    "sqrt": np.sqrt,
+    "inverse_sqrt": _inverse_sqrt,
 }
 
 
