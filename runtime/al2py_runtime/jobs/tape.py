@@ -1,5 +1,5 @@
 """A quantity at many points at once with numpy, without compiling: what a
-one-shot sweep takes when nothing compiled is at hand.
+sweep of a large quantity over a few points runs.
 
 Compiling a large quantity (a bicycle's ``AMAT``: 5,000 intermediates)
 costs seconds: its numeric form, the printed C, the compiler.  A sweep of a
@@ -18,7 +18,9 @@ derivative of an expression, a complex number, a function numpy lacks)
 gives ``None``: the quantity is then compiled as usual.
 
 The choice between the tape and a compiled function is
-:func:`~.quantities.plan_quantity`'s.
+:func:`~.quantities.takes_tape`'s (it reads no cache: a call gives the same
+numbers in any process).  The tape's digest (:meth:`Tape.digest`) also keys
+the compiled function on disk (:mod:`.fingerprint`).
 """
 
 from __future__ import annotations
