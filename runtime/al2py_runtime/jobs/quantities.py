@@ -405,9 +405,20 @@ def plan_quantity(
     if plan is not None:
         return plan
     plan = compile_quantity(job, value, name, free, keep, backend)
-    if key is not None:
+    if key is not None and plan.kernel.backend == _resolved(tape, backend):
         store_plan(key, plan)
     return plan
+
+
+def _resolved(tape: Any, backend: str | None) -> str:
+    """The backend :func:`build_kernel` takes for ``tape``'s quantity: C
+    for more than :data:`SMALL` intermediates when there is a compiler
+    (``auto``), else ``lambdify`` (also for ``llvm``)."""
+    name = backends.choose(backend)
+    if name == "auto":
+        big = tape.kernel.tape.zs > SMALL
+        return "c" if big and backends.available("c") else "lambdify"
+    return "c" if name == "c" else "lambdify"
 
 
 def tape_quantity(
@@ -460,7 +471,7 @@ def disk_key(tape: CompiledQuantity, backend: str | None) -> str:
 
     compiler = backends.find_compiler() if backends.available("c") else None
     extra = [
-        f"backend={backends.choose(backend)}",
+        f"backend={_resolved(tape, backend)}",  # the default and "c" share C
         f"small={SMALL}",
         f"cc={compiler}",
         f"flags={backends.C_FLAGS}",
