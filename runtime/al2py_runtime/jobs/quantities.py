@@ -158,8 +158,11 @@ _BUILT = [0]
 
 def kernels_built() -> int:
     """How many kernels this process has built (or loaded) from their
-    source: once per model and worker, whatever the number of chunks."""
-    return _BUILT[0]
+    source, numpy tapes too: once per model and worker, whatever the number
+    of chunks."""
+    from .tape import tapes_built
+
+    return _BUILT[0] + tapes_built()
 
 
 def _key(backend: str, source: Any) -> str:
@@ -178,20 +181,6 @@ def kernel_for(backend: str, source: Any, n_params: int, n_out: int) -> Kernel:
         found = _KERNELS.get(key)
         if found is None:
             found = _KERNELS[key] = Kernel(backend, source, n_params, n_out, key)
-    return found
-
-
-def tape_kernel_for(tape: Any, n_params: int, n_out: int) -> Any:
-    """The :class:`~.tape.TapeKernel` of ``tape``, made once per process
-    (what unpickling one calls: a worker makes each model once)."""
-    from .tape import TapeKernel
-
-    key = "tape:" + tape.digest()
-    with _KERNELS_LOCK:
-        found = _KERNELS.get(key)
-        if found is None:
-            found = _KERNELS[key] = TapeKernel(tape, n_params, n_out)  # type: ignore[assignment]
-            _BUILT[0] += 1
     return found
 
 
@@ -429,7 +418,7 @@ def tape_quantity(
     node the tape does not take."""
     from ..intermediates import autoz
     from .fingerprint import collector_paused
-    from .run import _resolve, _without, label_of, t
+    from .run import label_of, resolved_entries, t
     from .tape import TapeKernel, build_tape
 
     drop = [obj for key, (_kind, obj) in job.entries.items() if key in free]
@@ -438,11 +427,9 @@ def tape_quantity(
         entries = list(value)
     else:
         shape, entries = (), [value]
-    table = _without(job.rhs, [*drop, *keep])
     exprs = []
     with collector_paused():
-        for e in entries:
-            e = _resolve(sp.sympify(e), table)
+        for e in resolved_entries(job, entries, [*drop, *keep]):
             book = autoz.book_of(e)
             exprs.append(book.rebase(e) if book is not None else e)
     made = build_tape(exprs, t)

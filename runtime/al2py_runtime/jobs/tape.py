@@ -26,6 +26,7 @@ the compiled function on disk (:mod:`.fingerprint`).
 from __future__ import annotations
 
 import operator
+import threading
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -37,7 +38,7 @@ from sympy.core.function import AppliedUndef
 from ..intermediates import autoz
 from ..vocabulary import numeric_namespace
 
-__all__ = ["CHUNK", "Tape", "TapeKernel", "build_tape"]
+__all__ = ["CHUNK", "Tape", "TapeKernel", "build_tape", "tape_kernel_for"]
 
 #: points evaluated together (the tape holds one array per node and point)
 CHUNK = 1024
@@ -145,9 +146,28 @@ class TapeKernel:
         return np.concatenate(parts) if parts else np.empty((0, self.n_out))
 
     def __reduce__(self) -> Any:
-        from .quantities import tape_kernel_for
-
         return (tape_kernel_for, (self.tape, self.n_params, self.n_out))
+
+
+#: tape kernels unpickled in this process, by their tape's digest
+_TAPES: dict[str, TapeKernel] = {}
+_TAPES_LOCK = threading.Lock()
+
+
+def tape_kernel_for(tape: Tape, n_params: int, n_out: int) -> TapeKernel:
+    """The kernel of ``tape``, made once per process (what unpickling a
+    :class:`TapeKernel` calls: a worker makes each model once)."""
+    key = tape.digest()
+    with _TAPES_LOCK:
+        found = _TAPES.get(key)
+        if found is None:
+            found = _TAPES[key] = TapeKernel(tape, n_params, n_out)
+    return found
+
+
+def tapes_built() -> int:
+    """How many tapes this process has received (and made kernels of)."""
+    return len(_TAPES)
 
 
 # ------------------------------------------------------------------ building
