@@ -61,6 +61,11 @@ FOREIGN = {
     " without differentiating them for an angular velocity set at once)",
     "_var_dict": "sympy ReferenceFrame: cached variable maps (reset on a new"
     " orientation, as sympy's orient_* do)",
+    "_pos_dict": "sympy Point: the positions given to it (set_pos), the edges"
+    " of Autolev's position chains (model/points.py; docs/semantics.md,"
+    ' "Kinematics stored on the sympy objects")',
+    "_vel_dict": "sympy Point: its velocities; a V2pts deferred by Autolev's"
+    " rule withdraws a given one (sympy has no unset)",
     "_print": "sympy printers' dispatch (the printer extension protocol)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",

@@ -86,18 +86,14 @@ class Geometry:
         centers = {f: rec.point for f, rec in st.bodies.items()}
         seen: set[frozenset] = set()
         given = []
-        for p, targets in st.edges.items():
-            for q, v in targets.items():
+        for p in st.points.values():
+            for q in p._pos_dict:  # the positions given (sympy's set_pos)
                 pair = frozenset((p, q))
                 if pair not in seen:
                     seen.add(pair)
-                    given.append((p, q, v))
+                    given.append((p, q, q._pos_dict[p]))  # P_P_Q>
         rest = [p for p, f in st.fixed_in.items() if f is n]
-        rest += [
-            p
-            for (p, f), v in st.vel.items()
-            if f is n and isinstance(v, Vector) and not v.args  # ``0>``
-        ]
+        rest += [p for (p, f) in st.vel_given if f is n and not p.vel(f).args]  # ``0>``
         return cls(
             n,
             dict(st.frames),

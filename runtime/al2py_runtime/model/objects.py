@@ -32,7 +32,6 @@ class Objects:
         st = self.registry
         p = Point(name.upper()) if p is None else p
         st.points[name.upper()] = p
-        st.edges.setdefault(p, {})
         self.ws.table.declare(name, kind, p)
         return p
 
@@ -313,10 +312,9 @@ class Objects:
         if kind is Form.POS:
             self.add_position(objs[0], objs[1], value)
         elif kind is Form.VEL:
-            st.vel[(objs[0], objs[1])] = value
-            objs[0].set_vel(objs[1], value)
+            self.keep_given("V", objs[0], objs[1], value)
         elif kind is Form.ACC:
-            st.acc[(objs[0], objs[1])] = value
+            self.keep_given("A", objs[0], objs[1], value)
         elif kind is Form.ANGVEL:
             objs[0].set_ang_vel(objs[1], value)
         elif kind is Form.ANGACC:

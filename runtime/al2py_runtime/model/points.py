@@ -30,16 +30,15 @@ class Kinematics:
     # --------------------------------------------------------- positions
 
     def add_position(self, p: Point, q: Point, v: Vector) -> None:
-        """Record ``P_P_Q> = v`` both ways (``P_Q_P>`` is ``-v``), as an edge
-        of the position chains :meth:`pos` follows."""
-        st = self.registry
-        st.edges.setdefault(p, {})[q] = v
-        st.edges.setdefault(q, {})[p] = -v
+        """Record ``P_P_Q> = v``: sympy's ``Q.set_pos(P, v)``, which keeps it
+        both ways (``P_Q_P>`` is ``-v``), as an edge of the position chains
+        :meth:`pos` follows."""
         q.set_pos(p, v)
 
     def _path(self, p: Point, q: Point) -> list[Point] | None:
-        """Shortest chain of given positions from p to q."""
-        edges = self.registry.edges
+        """Shortest chain of given positions from p to q (breadth first, in
+        the order the positions were given: see docs/semantics.md,
+        "Kinematics stored on the sympy objects")."""
         prev = {p: None}
         todo = deque([p])
         while todo:
@@ -49,7 +48,7 @@ class Kinematics:
                 while prev[path[-1]] is not None:
                     path.append(prev[path[-1]])
                 return path[::-1]
-            for s in edges.get(r, {}):
+            for s in r._pos_dict:
                 if s not in prev:
                     prev[s] = r
                     todo.append(s)
@@ -63,10 +62,9 @@ class Kinematics:
         path = self._path(p, q)
         if path is None:
             raise ValueError(f"P_{p.name}_{q.name}> is not defined")
-        edges = self.registry.edges
         out = Vector(0)
         for a, b in zip(path, path[1:], strict=False):
-            out += edges[a][b]
+            out += b._pos_dict[a]  # P_A_B>, as given
         return out
 
     # ------------------------------------------------------- resolution
@@ -118,8 +116,8 @@ class Kinematics:
 
     def _known_vel(self, p: Point, frame: ReferenceFrame) -> Vector | None:
         st = self.registry
-        if (p, frame) in st.vel:
-            return st.vel[(p, frame)]
+        if (p, frame) in st.vel_given:
+            return p.vel(frame)
         if (p, frame) in st.deferred_vel:
             return self._deferred("V", p, frame)
         if st.fixed_in.get(p) is frame:
@@ -133,12 +131,11 @@ class Kinematics:
         known = self._known_vel(p, frame)
         if known is not None:
             return known
-        edges = self.registry.edges
         seen = {p}
         todo = deque([p])
         while todo:
             r = todo.popleft()
-            for s in edges.get(r, {}):
+            for s in r._pos_dict:
                 if s in seen:
                     continue
                 seen.add(s)
@@ -421,7 +418,11 @@ class Kinematics:
             st = self.registry
             table = st.deferred_vel if which == "V" else st.deferred_acc
             table[(p, n)] = (a, o)
-            (st.vel if which == "V" else st.acc).pop((p, n), None)
+            if which == "V":
+                st.vel_given.pop((p, n), None)
+                p._vel_dict.pop(n, None)  # sympy has no unset
+            else:
+                st.acc.pop((p, n), None)
             return None
         return self._set_formed(which, p, n, v, line)
 
@@ -442,7 +443,7 @@ class Kinematics:
     def v1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         r = self.pos(o, p)
-        vpa = self.registry.vel.get((p, a))
+        vpa = p.vel(a) if (p, a) in self.registry.vel_given else None
         if vpa is None:
             vpa = self.resolved_dt(r, a)
         v = self.vel(o, n) + vpa + kin.cross(self.ang_vel(a, n), r)
@@ -453,7 +454,7 @@ class Kinematics:
         """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         st = self.registry
         r = self.pos(o, p)
-        vpa = st.vel.get((p, a))
+        vpa = p.vel(a) if (p, a) in st.vel_given else None
         if vpa is None:
             vpa = self.resolved_dt(r, a)
         apa = st.acc.get((p, a))
@@ -469,11 +470,20 @@ class Kinematics:
         )
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
-    def _set_formed(self, which, p, n, v, line) -> Vector:
-        v = self.with_kindiffs(v)
-        table = self.registry.vel if which == "V" else self.registry.acc
-        table[(p, n)] = v
+    def keep_given(self, which: str, p: Point, n: ReferenceFrame, v: Vector) -> None:
+        """``V_P_N> = v`` (``which`` is ``"V"``) or ``A_P_N> = v`` (``"A"``),
+        given or formed: a velocity is stored on the sympy point
+        (``P.set_vel(N, v)``) and marked as Autolev's own; an acceleration is
+        kept by the model (see :class:`~.state.ModelState`)."""
+        st = self.registry
         if which == "V":
             p.set_vel(n, v)
+            st.vel_given[(p, n)] = None
+        else:
+            st.acc[(p, n)] = v
+
+    def _set_formed(self, which, p, n, v, line) -> Vector:
+        v = self.with_kindiffs(v)
+        self.keep_given(which, p, n, v)
         self.ws.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v

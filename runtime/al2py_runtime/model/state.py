@@ -40,10 +40,21 @@ class ModelState:
     sympy_bodies: dict = field(
         default_factory=dict
     )  # frame/Point -> RigidBody/Particle
-    edges: dict = field(default_factory=dict)  # Point -> {Point: P_from_to>}
-    vel: dict = field(default_factory=dict)  # (Point, frame) -> Vector
+    # Positions, velocities, orientations and angular velocities are stored
+    # once, on the sympy objects (``Q.set_pos(P, v)``, ``P.set_vel(N, v)``,
+    # ``B.orient_axis(...)``, ``B.set_ang_vel(A, w)``; Kinematics reads them
+    # back).  The model keeps only what sympy lacks (docs/semantics.md,
+    # "Kinematics stored on the sympy objects").
+    #: ``(P, N)`` whose velocity ``P.vel(N)`` the script gave or V2pts/V1pt
+    #: formed, in order (a dict used as an ordered set: every value is
+    #: None); Autolev forms any other velocity from positions when used
+    vel_given: dict = field(default_factory=dict)
+    #: ``(P, N) -> A_P_N>`` given or formed by A2pts/A1pt, and ``(B, A) ->
+    #: ALF_B_A>`` given (both ways): Autolev's accelerations, which are not
+    #: sympy's (their dependent speeds' derivatives are substituted, which
+    #: sympy's KanesMethod, reading ``P.acc(N)``, would count twice)
     acc: dict = field(default_factory=dict)
-    angacc: dict = field(default_factory=dict)  # (B, A) -> Vector
+    angacc: dict = field(default_factory=dict)
     #: ``ALF_B_A> = v`` as the script wrote it: B -> [(A, v)], in order
     angacc_given: dict = field(default_factory=dict)
     #: the loads, sympy ``Force``/``Torque`` objects (or ``(Point, Vector)``,
