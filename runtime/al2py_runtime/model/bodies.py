@@ -17,12 +17,12 @@ from sympy.physics.vector import (
 )
 
 from . import kinematics as kin
-from .state import command
+from .state import ModelPart, command
 
 __all__ = ["MassAndLoads"]
 
 
-class MassAndLoads:
+class MassAndLoads(ModelPart):
     """Mass distribution (``Mass()``, ``CM``, inertia dyadics and the transfer theorem) and loads (``Force_P>``, ``Torque_B>``, ``Force(O/Q, v>)``, ``Gravity``)."""
 
     # ------------------------------------------------- mass distribution

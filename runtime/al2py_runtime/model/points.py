@@ -19,12 +19,12 @@ from sympy.physics.vector import (
 
 from . import kinematics as kin
 from .arrange import solve_speeds
-from .state import command, t
+from .state import ModelPart, command, t
 
 __all__ = ["Kinematics"]
 
 
-class Kinematics:
+class Kinematics(ModelPart):
     """Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet)."""
 
     # --------------------------------------------------------- positions
@@ -72,15 +72,15 @@ class Kinematics:
     def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         keep = list(keep)
-        return kin.vmap(x, self.ws.resolver(keep))
+        return kin.vmap(x, self.script.resolver(keep))
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
         cosmetic, and large models are why AutoZ is on)."""
-        return v if self.ws.settings.autoz else kin.tidy_vector(v)
+        return v if self.settings.autoz else kin.tidy_vector(v)
 
     def _tidy(self, e: Any) -> Any:
-        return e if self.ws.settings.autoz else kin.tidy(e)
+        return e if self.settings.autoz else kin.tidy(e)
 
     def auxiliary_kept(self) -> list:
         """The auxiliary speeds and their derivatives: what formed quantities
@@ -98,7 +98,7 @@ class Kinematics:
         # one formed before it does (U1 is set to zero in the equations).
         keep = self.auxiliary_kept()
         v = self.actual_value(v, keep)
-        book = self.ws.book
+        book = self.script.book
         if isinstance(v, Dyadic):
             out = time_derivative(v, frame)
         elif isinstance(v, Vector):
@@ -216,7 +216,7 @@ class Kinematics:
         each entry named (the product along the tree of short matrices), in
         sympy's own cache, so that dot products, ``express`` and time
         derivatives work with short expressions."""
-        book = self.ws.book
+        book = self.script.book
         if len(b._dcm_dict) != 1:
             return
         (a,) = b._dcm_dict
@@ -243,7 +243,7 @@ class Kinematics:
 
         The axis may also be a vector (``Simprot(N, A, N1>, X)``, or any
         direction): B is rotated by ``angle`` about it, right-handed."""
-        axis = self.ws.val(axis)
+        axis = self.script.val(axis)
         if isinstance(axis, Vector):
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
@@ -260,7 +260,7 @@ class Kinematics:
             unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
             b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     @command
@@ -273,7 +273,7 @@ class Kinematics:
         ``A_B`` is recorded."""
         m = sp.Matrix(a.dcm(b))
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     @command
@@ -292,14 +292,14 @@ class Kinematics:
         else:
             self._orient(a, b, m)
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     def _note_unit_norm(self, kind: str, qs: tuple) -> None:
         """Euler parameters have unit norm (for ``al2py check``'s points)."""
         if kind.upper() == "EULER" and len(qs) == 4:
-            if tuple(qs) not in self.ws.unit_norms:
-                self.ws.unit_norms.append(tuple(qs))
+            if tuple(qs) not in self.unit_norms:
+                self.unit_norms.append(tuple(qs))
 
     def _dcm_angvel(self, a, b, kind, qs) -> list:
         """B measure numbers of the angular velocity implied by the
@@ -332,11 +332,11 @@ class Kinematics:
         ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
         if kind is None:
             w = self.with_kindiffs(self.ang_vel(b, a))
-            self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+            self.script.respond(f"W_{b.name}_{a.name}>", w, line=line)
             return w
         w = self.with_kindiffs(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
         b.set_ang_vel(a, w)
-        self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+        self.script.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
 
     @command
@@ -369,8 +369,8 @@ class Kinematics:
             rates = solve_speeds(eqs, qdots)
         out = []
         for q, r in zip(qs, rates, strict=True):
-            r = r if self.ws.settings.autoz else kin.simplify_small(r)
-            out.append(self.ws.assign(self.ws.name_of(q) + "'", r, line=line))
+            r = r if self.settings.autoz else kin.simplify_small(r)
+            out.append(self.script.assign(self.script.name_of(q) + "'", r, line=line))
         return tuple(out)
 
     # ------------------------------------------------- velocity formulas
@@ -485,5 +485,5 @@ class Kinematics:
     def _set_formed(self, which, p, n, v, line) -> Vector:
         v = self.with_kindiffs(v)
         self.keep_given(which, p, n, v)
-        self.ws.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
+        self.script.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v

@@ -5,12 +5,17 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector, dynamicsymbols
 
-from ..safety import statement
+from ..safety import Statements, statement
+
+if TYPE_CHECKING:
+    from ..names.settings import Settings
+    from ..names.table import NameTable
+    from .script import ScriptNames
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -85,6 +90,26 @@ class ModelState:
     def torques(self) -> dict:
         """Frame -> the resultant of its torque loads, in order."""
         return _resultants(self.loads, ReferenceFrame)
+
+
+class ModelPart:
+    """What every part of :class:`~.model.Model` works with, given to its
+    constructor: the model's own state, and the small objects of the script
+    it uses (no reference to the workspace as a whole)."""
+
+    #: frames, points, bodies, loads, speeds (the parts' shared state)
+    registry: ModelState
+    #: the script's operations on Autolev names (:class:`~.script.ScriptNames`)
+    script: ScriptNames
+    #: the script's names: declarations, right-hand sides, stored values
+    table: NameTable
+    #: ``AutoZ``, ``Factoring``, ``Digits``...
+    settings: Settings
+    #: where the script's statement calls stand (errors name the .al line)
+    statements: Statements
+    #: quantities constrained to unit norm (Euler parameters), for
+    #: ``al2py check``'s random points
+    unit_norms: list[tuple[Any, ...]]
 
 
 def _resultants(loads: list, kind: type) -> dict:
