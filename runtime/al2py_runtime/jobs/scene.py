@@ -56,6 +56,8 @@ from .records import NumericsError
 if TYPE_CHECKING:
     import numpy as np
 
+    from ..model.model import Model
+
 __all__ = ["Geometry", "Layout", "Scene", "layout", "scene"]
 
 t = dynamicsymbols._t
@@ -79,7 +81,7 @@ class Geometry:
     gravity: tuple[Vector, ...] = ()
 
     @classmethod
-    def of(cls, model: Any) -> Geometry:
+    def of(cls, model: Model) -> Geometry:
         """The geometry of ``model`` (a workspace's ``al.model``) now."""
         st = model.registry
         n = st.newtonian
