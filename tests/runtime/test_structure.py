@@ -859,7 +859,8 @@ def test_the_workspace_is_what_its_parts_call():
 def test_positions_and_velocities_are_stored_once():
     """Positions and velocities live in sympy's ``Point`` only (issue 33):
     the model's registry holds no position or velocity vector, and sympy's
-    own ``pos_from``/``vel`` give Autolev's values."""
+    own ``pos_from``/``vel`` give Autolev's values; masses are the sympy
+    ``RigidBody``/``Particle``'s."""
     import dataclasses
 
     import sympy as sp
@@ -907,3 +908,14 @@ def test_positions_and_velocities_are_stored_once():
     }
     # accelerations Autolev forms (not sympy's: see ModelState), and loads
     assert holding == {"acc", "angacc", "angacc_given", "loads", "gravity"}
+
+    # masses are the sympy bodies' own (Autolev's record keeps no copy)
+    from al2py_runtime.model.state import BodyRecord
+
+    assert "mass" not in {f.name for f in dataclasses.fields(BodyRecord)}
+    ball = al.model.particles("BALL")
+    assert al.model.mass_of() == 2  # BALL's mass is not declared: zero
+    al.model.set_mass(ball, length)
+    assert al.model.particle(ball).mass == length
+    assert al.model.rigid_body(a).mass == 2
+    assert al.model.mass_of(a, ball) == 2 + length

@@ -88,7 +88,7 @@ class Objects(ModelPart):
         st = self.registry
         for body in particles:
             p = self._new_point(body.point.name, Decl.PARTICLE, body.point)
-            st.particles[p] = None
+            st.particles.add(p)
             st.massive.append(p)
             st.sympy_bodies[p] = body
 
@@ -118,7 +118,7 @@ class Objects(ModelPart):
         st = self.registry
         for n in names:
             p = self._new_point(n, Decl.PARTICLE)
-            st.particles[p] = None
+            st.particles.add(p)
             st.massive.append(p)
             st.sympy_bodies[p] = Particle(p.name, p, sp.S.Zero)
             out.append(p)
@@ -141,11 +141,10 @@ class Objects(ModelPart):
         return self.registry.sympy_bodies[point]
 
     def _sync_sympy_body(self, obj: Any) -> None:
-        """Give the module's ``RigidBody``/``Particle`` the declared mass and
-        central inertia."""
+        """Give the module's ``RigidBody`` the central inertia of the
+        inertia as declared (when its position and mass are known)."""
         st = self.registry
         body = st.sympy_bodies[obj]
-        body.mass = self.body_mass(obj, strict=False)
         if isinstance(obj, ReferenceFrame):
             try:
                 central = self.central_inertia(obj)
@@ -188,12 +187,13 @@ class Objects(ModelPart):
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
         st = self.registry
         value = self.script.normalize(value)
-        if isinstance(obj, ReferenceFrame) and obj in st.bodies:
-            st.bodies[obj].mass = value
-        elif isinstance(obj, Point) and obj in st.particles:
-            st.particles[obj] = value
-        else:
+        if not (
+            (isinstance(obj, ReferenceFrame) and obj in st.bodies)
+            or (isinstance(obj, Point) and obj in st.particles)
+        ):
             raise ValueError(f"{obj} is not a body or particle; it has no mass")
+        st.sympy_bodies[obj].mass = value  # the mass is the sympy body's
+        st.mass_given[obj] = None
         self._sync_sympy_body(obj)
 
     @command

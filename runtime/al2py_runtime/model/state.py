@@ -26,9 +26,15 @@ SPEED_NAME = re.compile(r"U(\d+)$")
 
 @dataclass
 class BodyRecord:
+    """What Autolev keeps of a body beside its sympy ``RigidBody`` (whose
+    mass and central inertia are the body's): the inertia as the script
+    gave it, about any point (``Inertia B, ...`` or ``I_B_P>> = ...``),
+    whose central dyadic follows by the transfer theorem when it is used
+    (sympy's ``RigidBody.inertia`` forms it at once, which needs the
+    position and the mass then)."""
+
     frame: ReferenceFrame
     point: Point
-    mass: Any = None
     inertia: Any = None  # Dyadic about ``inertia_point`` (None: not given)
     inertia_point: Point | None = None
 
@@ -40,7 +46,12 @@ class ModelState:
     points: dict = field(default_factory=dict)  # name -> Point
     fixed_in: dict = field(default_factory=dict)  # Point -> frame (origins)
     bodies: dict = field(default_factory=dict)  # ReferenceFrame -> BodyRecord
-    particles: dict = field(default_factory=dict)  # Point -> mass or None
+    particles: set = field(default_factory=set)  # the particles' points
+    #: the bodies (frames) and particles (points) whose mass was declared, in
+    #: order (a dict used as an ordered set); the mass itself is the sympy
+    #: ``RigidBody``/``Particle``'s (``sympy_bodies``), Autolev's "not
+    #: declared" is the absence here
+    mass_given: dict = field(default_factory=dict)
     massive: list = field(default_factory=list)  # bodies' frames and particles
     sympy_bodies: dict = field(
         default_factory=dict
