@@ -1057,6 +1057,12 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
 _SUFFIX = ".dll" if sys.platform == "win32" else ".so"
 
 
+def cache_folder() -> Path:
+    """:func:`cache_dir`, made if need be (a temporary folder of the user's
+    when it cannot be)."""
+    return _cache_folder()
+
+
 def _cache_folder() -> Path:
     folder = cache_dir()
     try:

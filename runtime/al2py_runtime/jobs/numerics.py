@@ -28,6 +28,7 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
@@ -622,7 +623,9 @@ class Numerics:
         origin: tuple[str, str | None] | None = None,
         **given: Any,
     ) -> Any:
-        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once),
+        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once,
+        or for a large quantity over a few points its numpy tape:
+        :func:`.quantities.takes_tape`),
         or without a name of the ``CODE`` job (``job`` chooses it as for
         :meth:`run`), over the grid that the 1-D arrays among the values
         span (several: their product); scalars are fixed.  Values are given
@@ -633,7 +636,7 @@ class Numerics:
         this process); the work goes out in chunks of ``chunksize`` points.
         ``origin`` is the module's ``(__name__, __file__)``, which a job
         sweep's workers import (a module's ``sweep()`` passes it)."""
-        from .sweep import sweep_job, sweep_quantity
+        from .sweep import grid, sweep_job, sweep_quantity
 
         merged = dict(values or {})
         merged.update(given)
@@ -658,7 +661,10 @@ class Numerics:
             raise NumericsError(
                 f"{name} is not a scalar or matrix; it cannot be evaluated"
             )
-        plan = self.compiled_quantity(name, merged, backend, snapshot)
+        # the grid's size: a sweep of a few points may run a numpy tape
+        # (quantities.takes_tape)
+        points = math.prod(len(a) for a in grid(merged)[0].values())
+        plan = self.compiled_quantity(name, merged, backend, snapshot, points=points)
 
         def exact(point: Mapping[str, Any]) -> Any:
             from .run import evaluate_with_inputs
@@ -710,10 +716,21 @@ class Numerics:
         given: Mapping[str, Any] = {},  # noqa: B006 - read only
         backend: str | None = None,
         job: Job | None = None,
+        *,
+        points: int | None = None,
     ) -> Any:
         """The named quantity compiled for values of the names in ``given``
-        (a :class:`.quantities.CompiledQuantity`), built once and kept."""
-        from .quantities import compile_quantity, quantity_key, split_given
+        (a :class:`.quantities.CompiledQuantity`), built once and kept (on
+        disk too: :func:`.quantities.plan_quantity`).  ``points``: the size
+        of a sweep, which its numpy tape serves instead when
+        :func:`.quantities.takes_tape` says so."""
+        from .quantities import (
+            plan_quantity,
+            quantity_key,
+            split_given,
+            takes_tape,
+            tape_quantity,
+        )
         from .run import input_values
 
         job = job if job is not None else self._make_job("ALGEBRAIC", line=None)
@@ -721,14 +738,40 @@ class Numerics:
         settable, free = split_given(job, given)
         _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
         key = quantity_key(name, free, frozenset(keep), backend)
+        tape_key = (*key, "tape")
         cache = self._compiled
-        found = cache.get(key)
-        if found is None or found[0] is not value:
-            plan = compile_quantity(
-                job, value, name, frozenset(free), frozenset(keep), backend
+
+        def kept(slot: tuple) -> Any:
+            found = cache.get(slot)
+            return found if found is not None and found[0] is value else None
+
+        numpy = backend is not None and backend.strip().lower() == "numpy"
+        compiled = None if numpy else kept(key)
+        tape = kept(tape_key)
+        if tape is None and (compiled is None or points is not None):
+            # the tape decides a sweep's way, and keys the disk cache
+            made = tape_quantity(job, value, name, frozenset(free), frozenset(keep))
+            cache[tape_key] = tape = (value, made)
+        if takes_tape(tape[1] if tape else None, points, backend):
+            return tape[1]
+        if numpy:
+            raise NumericsError(
+                f"{name} holds an operation that numpy does not evaluate here;"
+                " use another backend"
             )
-            cache[key] = found = (value, plan)
-        return found[1]
+        if compiled is not None:
+            return compiled[1]
+        plan = plan_quantity(
+            job,
+            value,
+            name,
+            frozenset(free),
+            frozenset(keep),
+            backend,
+            tape=tape[1] if tape else None,
+        )
+        cache[key] = (value, plan)
+        return plan
 
 
 def _listing(jobs: list[Job]) -> str:
