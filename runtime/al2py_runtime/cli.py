@@ -95,7 +95,7 @@ def build_parser(
     if jobs:
         lines.append("Jobs (--job STEM runs one; default: all, in script order):")
         for stem, where in jobs:
-            lines.append(f"  {stem}: {where} -> {stem}.1, ...")
+            lines += _wrapped(f"  {stem}: {where} -> {stem}.1, ...", "    ")
     else:
         lines.append(
             "This script has no CODE statement: it only prints its transcript."
@@ -104,9 +104,11 @@ def build_parser(
     parser = argparse.ArgumentParser(
         prog=f"python {name}.py",
         usage="%(prog)s [-h] [options]",  # each option is listed below
-        description=(
-            f"Print the Autolev transcript of {filename} and perform its"
-            " numerical CODE job."
+        description="\n".join(
+            _wrapped(
+                f"Print the Autolev transcript of {filename} and perform its"
+                " numerical CODE job."
+            )
         ),
         epilog="\n".join(lines),
         # one width everywhere: the converter writes this help into modules
@@ -185,6 +187,26 @@ def build_parser(
         f"{budget.LIMITS['evaluations']:g}; or AL2PY_MAX_EVALS)",
     )
     return parser
+
+
+def _wrapped(text: str, indent: str = "") -> list[str]:
+    """``text`` in lines of the help's width, cut between words (later lines
+    indented by ``indent`` more).
+
+    >>> _wrapped("  job: CODE Ode x.m (line 3) -> x.1, ...", "  ")
+    ['  job: CODE Ode x.m (line 3) -> x.1, ...']
+    """
+    import textwrap
+
+    lead = text[: len(text) - len(text.lstrip())]
+    return textwrap.wrap(
+        text.lstrip(),
+        _WIDTH,
+        initial_indent=lead,
+        subsequent_indent=lead + indent,
+        break_long_words=False,
+        break_on_hyphens=False,
+    )
 
 
 def _columns(items: Sequence[str], width: int = _WIDTH) -> list[str]:

@@ -12,7 +12,8 @@ if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     sys.stdout.write("""\
 usage: python constrain.py [-h] [options]
 
-Print the Autolev transcript of constrain.al and perform its numerical CODE job.
+Print the Autolev transcript of constrain.al and perform its numerical CODE
+job.
 
 options:
   -h, --help            show this help message and exit

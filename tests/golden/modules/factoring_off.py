@@ -12,7 +12,8 @@ if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     sys.stdout.write("""\
 usage: python factoring_off.py [-h] [options]
 
-Print the Autolev transcript of factoring_off.al and perform its numerical CODE job.
+Print the Autolev transcript of factoring_off.al and perform its numerical CODE
+job.
 
 options:
   -h, --help            show this help message and exit

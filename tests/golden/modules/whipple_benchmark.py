@@ -13,8 +13,8 @@ if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     sys.stdout.write("""\
 usage: python whipple_benchmark.py [-h] [options]
 
-Print the Autolev transcript of whipple_benchmark.al and perform its numerical CODE\
- job.
+Print the Autolev transcript of whipple_benchmark.al and perform its numerical
+CODE job.
 
 options:
   -h, --help            show this help message and exit
