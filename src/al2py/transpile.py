@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import functools
 import re
 import sys
 import textwrap
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, partial
 from pathlib import Path
 
 import black
@@ -77,7 +76,7 @@ def _help_literal(text: str) -> str:
 
 def _docstring(source_name: str, module: str, has_job: bool) -> str:
     """The module's docstring: where it came from and how it is used."""
-    fill = functools.partial(
+    fill = partial(
         textwrap.fill, width=79, break_long_words=False, break_on_hyphens=False
     )
     use = (
