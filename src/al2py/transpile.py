@@ -89,8 +89,8 @@ def _docstring(source_name: str, module: str, has_job: bool) -> str:
             " and runs the CODE job (``--help`` lists its options); ``run()``"
             " runs it from Python"
         )
-    head = f"{source_name}, converted by al2py {__version__}: edit the .al file, not"
-    return f"{fill(head + ' this module.')}\n\n{fill(use + '.')}"
+    head = f"Autolev script {source_name} converted by al2py {__version__}: edit"
+    return f"{fill(head + ' the .al file instead.')}\n\n{fill(use + '.')}"
 
 
 def module_name(filename: str) -> str:

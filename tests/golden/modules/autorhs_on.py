@@ -1,4 +1,5 @@
-"""autorhs_on.al, converted by al2py 0.2.0: edit the .al file, not this module.
+"""Autolev script autorhs_on.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import autorhs_on`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
 names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python

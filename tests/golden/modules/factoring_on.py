@@ -1,4 +1,5 @@
-"""factoring_on.al, converted by al2py 0.2.0: edit the .al file, not this module.
+"""Autolev script factoring_on.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import factoring_on`` runs the symbolic part silently; ``AUTOLEV`` maps
 Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python

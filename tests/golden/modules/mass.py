@@ -1,4 +1,4 @@
-"""mass.al, converted by al2py 0.2.0: edit the .al file, not this module.
+"""Autolev script mass.al converted by al2py 0.2.0: edit the .al file instead.
 
 ``import mass`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev names
 (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python mass.py`` prints

@@ -1,4 +1,4 @@
-"""tutor1.al, converted by al2py 0.2.0: edit the .al file, not this module.
+"""Autolev script tutor1.al converted by al2py 0.2.0: edit the .al file instead.
 
 ``import tutor1`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
 names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor1.py``

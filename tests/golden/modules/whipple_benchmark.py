@@ -1,5 +1,5 @@
-"""whipple_benchmark.al, converted by al2py 0.2.0: edit the .al file, not this
-module.
+"""Autolev script whipple_benchmark.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import whipple_benchmark`` runs the symbolic part silently; ``AUTOLEV`` maps
 Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python
