@@ -689,6 +689,11 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
+        #: variable -> (expression -> partial derivative by it): the answer
+        #: depends only on the expression (the intermediates' partials are
+        #: named once, in :attr:`_partials`), so every ``D()`` of a script
+        #: and every intermediate's partial share one memo per variable
+        self._pd_memos: dict[Any, dict[Any, Any]] = {}
         self._real: dict[int, bool | None] = {}
         self._busy: set[int] = set()
         self._positions: dict[Any, dict[Any, int]] = {}
@@ -1156,7 +1161,8 @@ class Intermediates:
         found = self._partials.get(key)
         if found is None:
             x = self._vars[k][j]
-            found = self.name(self._pd(self._defs[k], x, {}))
+            memo = self._pd_memos.setdefault(x, {})
+            found = self.name(self._pd(self._defs[k], x, memo))
             self._partials[key] = found
         if not self._canonical(z):
             args = tuple(z.args[1:])
@@ -1183,9 +1189,12 @@ class Intermediates:
 
     def derivative(self, e: Any, x: Any, memo: dict | None = None) -> Any:
         """``D(e, x)``, the partial derivative by the variable ``x`` (the
-        intermediates' derivatives named); ``memo`` may be shared by
-        expressions differentiated by the same ``x``."""
-        return self._pd(sp.sympify(e), x, {} if memo is None else memo)
+        intermediates' derivatives named).  Without ``memo``, the book's
+        own memo of ``x`` (shared by every derivative by ``x``: each
+        distinct part is differentiated once per book)."""
+        if memo is None:
+            memo = self._pd_memos.setdefault(x, {})
+        return self._pd(sp.sympify(e), x, memo)
 
     def total_dt(self, e: Any) -> Any:
         """``de/dt``, as sympy's ``diff(e, t)`` gives it (each variable's
