@@ -641,6 +641,8 @@ def total(terms: Sequence[Any]) -> Any:
             # _product((c, *key.args)): the term itself when it stood alone
             o = alone.get(key)
             out.append(o if o is not None else _product((c, *key.args)))
+        elif key.is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key, evaluate=False))
         else:
             out.append(sp.Mul(c, key))
     return _sum(number, out)
