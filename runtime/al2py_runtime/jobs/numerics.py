@@ -31,7 +31,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 import sympy as sp
 from sympy.physics.vector import Vector
@@ -53,6 +53,9 @@ from .records import (
 from .units import UnitSystem, units_factor
 
 if TYPE_CHECKING:
+    from ..model.model import Model
+    from ..names.settings import Settings
+    from ..names.table import NameTable
     from .tables import Result
 
 # The job runner (numpy, the compiled backends) loads when a job first
@@ -76,23 +79,57 @@ class _NumericsState:
     animate: AnimateSpec | None = None
 
 
+class ScriptValues(Protocol):
+    """The script's operations on Autolev names that :class:`Numerics`
+    calls (the workspace, :class:`al2py_runtime.workspace.Workspace`, is
+    the one implementation)."""
+
+    def value(self, name: str) -> Any:
+        """The current value of an Autolev name (``"X"``, ``"ZERO[2]"``)."""
+        ...
+
+    def val(self, x: Any) -> Any:
+        """The value of an Autolev name or expression."""
+        ...
+
+    def symbol(self, name: str) -> Any:
+        """The sympy object of a declared name."""
+        ...
+
+    def resolve(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
+        """``expr`` with every right-hand side substituted but ``keep``."""
+        ...
+
+
 class Numerics:
     """Inputs, outputs, units and the numerical jobs of a script.
 
-    It reads the script's names (``ws``: the workspace's name table and
-    settings) when ``CODE`` takes its snapshot; nothing else refers back."""
+    It is given the small objects of the script it reads when ``CODE``
+    takes its snapshot: ``script`` (:class:`ScriptValues`), the file name,
+    the name table, the settings, the statements, and the model (for the
+    geometry an animation draws); nothing else refers back."""
 
-    def __init__(self, ws: Any) -> None:
-        self._ws = ws
+    def __init__(
+        self,
+        script: ScriptValues,
+        *,
+        filename: str,
+        table: NameTable,
+        settings: Settings,
+        statements: Statements,
+        model: Model,
+    ) -> None:
+        self._script = script
+        self._filename = filename
+        self._table = table
+        self._settings = settings
+        #: where the script's statement calls stand (a failing Input,
+        #: Output, UnitSystem or CODE statement names its ``.al`` line)
+        self.statements = statements
+        self._model = model
         self._numerics = _NumericsState()
         #: compiled quantities (:meth:`compiled_quantity`)
         self._compiled: dict[tuple, tuple[Any, Any]] = {}
-
-    @property
-    def statements(self) -> Statements:
-        """Where the workspace's statement calls stand (a failing Input,
-        Output, UnitSystem or CODE statement names its ``.al`` line)."""
-        return self._ws.statements
 
     # ------------------------------------------------------------ recording
 
@@ -164,7 +201,7 @@ class Numerics:
         return [OutputItem(n, e, unit) for n, e in zip(names, value, strict=True)]
 
     def _newtonian(self) -> Any:
-        for entry in self._ws.table.entries.values():
+        for entry in self._table.entries.values():
             if entry.kind == "newtonian":
                 return entry.obj
         return None
@@ -194,7 +231,7 @@ class Numerics:
         items: list[OutputItem] = []
         shapes: dict[str, tuple[int, int]] = {}
         for key in self._numerics.encoded:
-            value = self._ws.value(key)
+            value = self._script.value(key)
             if isinstance(value, sp.MatrixBase):
                 shapes[key] = value.shape
                 names = element_labels(key, value.rows, value.cols)
@@ -257,18 +294,20 @@ class Numerics:
             elif isinstance(eqs, list | tuple):
                 eq_matrix = sp.Matrix(list(eqs))
             else:
-                eq_matrix = sp.Matrix([self._ws.val(eqs)])
-        objs = [self._ws.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+                eq_matrix = sp.Matrix([self._script.val(eqs)])
+        objs = [
+            self._script.symbol(u) if isinstance(u, str) else u for u in unknowns or ()
+        ]
         if sweep is not None:
             obj, unit, start, stop, step = sweep
             if isinstance(obj, str):
-                obj = self._ws.symbol(obj)
+                obj = self._script.symbol(obj)
             sweep = (obj, unit or None, float(start), float(stop), float(step))
             if float(step) == 0:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._ws.table.stored.get("ZERO")
+            value = self._table.stored.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         encoded, shapes = self._encoded_spec(line)
@@ -277,40 +316,38 @@ class Numerics:
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
-            stem=job_stem(file, self._ws.filename),
+            stem=job_stem(file, self._filename),
             filename=file,
             line=line,
-            source=self._ws.filename,
+            source=self._filename,
             eqs=eq_matrix,
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._ws.table.rhs),
+            rhs=dict(self._table.rhs),
             zero=zero,
             outputs=outputs,
             encoded={**state.shapes, **shapes},
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
-            digits=self._ws.settings.digits,
+            digits=self._settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._ws.table.by_obj),
-            entries={
-                name: (e.kind, e.obj) for name, e in self._ws.table.entries.items()
-            },
+            names=dict(self._table.by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._table.entries.items()},
             declared={
                 name: e.line
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if e.line is not None
             },
             animate=state.animate,
-            geometry=Geometry.of(self._ws.model),
+            geometry=Geometry.of(self._model),
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -318,11 +355,11 @@ class Numerics:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._ws.table.stored.items():
+        for name, stored in self._table.stored.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._ws.table.stored.items():
+            for name, stored in self._table.stored.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -360,10 +397,10 @@ class Numerics:
         it; None if ``A`` has no such value, or it is not a number then.
         Autolev's programs fold such a constant into the code rather than
         reading it (docs/semantics.md, "Input")."""
-        entry = self._ws.table.entries.get(key)
+        entry = self._table.entries.get(key)
         if entry is None or entry.kind not in ("constant", "variable", "specified"):
             return None
-        rhs = self._ws.table.rhs.get(entry.obj)
+        rhs = self._table.rhs.get(entry.obj)
         if not isinstance(rhs, sp.Basic):
             return None
         from .run import input_values
@@ -371,10 +408,10 @@ class Numerics:
         values, _ = input_values(self._make_job("ALGEBRAIC"), {}, zero_missing=False)
         known = {
             e.obj: values.values[name]
-            for name, e in self._ws.table.entries.items()
+            for name, e in self._table.entries.items()
             if name in values.values
         }
-        value = self._ws.resolve(rhs).xreplace(known)
+        value = self._script.resolve(rhs).xreplace(known)
         return _as_number(value) if value.is_number else None
 
     @statement
@@ -442,7 +479,7 @@ class Numerics:
         ``dynamics`` (:meth:`ode_function`) only Dynamics/ODE jobs count."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self._ws.filename} has no CODE statement")
+            raise NumericsError(f"{self._filename} has no CODE statement")
         moving = [j for j in jobs if j.kind in ("DYNAMICS", "ODE")]
         if name is None:
             if len(moving) == 1:
@@ -451,12 +488,12 @@ class Numerics:
                 return jobs[0]
             if dynamics and not moving:
                 raise NumericsError(
-                    f"{self._ws.filename} has no CODE Dynamics or ODE job;"
+                    f"{self._filename} has no CODE Dynamics or ODE job;"
                     f" jobs: {_listing(jobs)}"
                 )
             which = f", {len(moving)} of them Dynamics/ODE" if moving else ""
             raise NumericsError(
-                f"{self._ws.filename} has {len(jobs)} CODE jobs{which}; choose"
+                f"{self._filename} has {len(jobs)} CODE jobs{which}; choose"
                 f" one with job= (--job): {_listing(jobs)}"
             )
         if isinstance(name, int) and not isinstance(name, bool):
@@ -481,11 +518,11 @@ class Numerics:
             return found[0]
         if found:
             raise NumericsError(
-                f"{self._ws.filename}: {name!r} names {len(found)} CODE jobs; "
+                f"{self._filename}: {name!r} names {len(found)} CODE jobs; "
                 f"choose one with job=: {_listing(jobs)}"
             )
         raise NumericsError(
-            f"{self._ws.filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
+            f"{self._filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
         )
 
     def document_run(self, run: Any) -> Any:
@@ -557,7 +594,7 @@ class Numerics:
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
             from .run import evaluate_with_inputs
 
@@ -616,7 +653,7 @@ class Numerics:
         if job is not None:
             raise NumericsError("sweep() takes a quantity's name or job=..., not both")
         snapshot = self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
             raise NumericsError(
                 f"{name} is not a scalar or matrix; it cannot be evaluated"
@@ -680,7 +717,7 @@ class Numerics:
         from .run import input_values
 
         job = job if job is not None else self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         settable, free = split_given(job, given)
         _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
         key = quantity_key(name, free, frozenset(keep), backend)
