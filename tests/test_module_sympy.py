@@ -43,16 +43,19 @@ _FORM = re.compile(
 
 def statements(text: str) -> list[tuple[str, str]]:
     """``(Autolev statement, its Python code)`` in the module's order: the
-    code between one ``# al>`` echo of a statement and the next echo."""
+    code from one ``# al>`` echo of a statement (a line of its own above the
+    code, or the end of the code's first line) to the next echo."""
     body = text.split("al = Workspace(", 1)[1].split("\nAUTOLEV = ", 1)[0]
     out: list[tuple[str, list[str]]] = []
     for line in body.splitlines()[1:]:
-        if line.startswith("# al>"):
-            source = line[5:].strip()
-            if source and not source.startswith("%"):
-                out.append((source.split("%", 1)[0].strip(), []))
-        elif out and line.strip() and not line.lstrip().startswith("#"):
-            out[-1][1].append(line)
+        code, mark, source = line.partition("# al>")
+        source = source.strip()
+        if mark and (not source or source.startswith("%")):
+            continue  # a comment of the script
+        if mark:
+            out.append((source.split("%", 1)[0].strip(), []))
+        if out and code.strip() and not code.lstrip().startswith("#"):
+            out[-1][1].append(code.rstrip())
     return [(src, "\n".join(code)) for src, code in out]
 
 

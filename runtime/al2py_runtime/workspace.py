@@ -88,11 +88,24 @@ class Workspace(Mapping):
         self.unit_norms: list[tuple[Any, ...]] = []
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
-        self.model = Model(self)
+        self.model = Model(
+            self,
+            table=self.table,
+            settings=self.settings,
+            statements=self.statements,
+            unit_norms=self.unit_norms,
+        )
         #: Inputs, Outputs, UnitSystem and CODE jobs.  Generated modules call
         #: it directly (``al.numerics.input(...)``, ``al.numerics.run(...)``):
         #: an Input value or a ``backend`` reaches the job without a forwarder.
-        self.numerics = Numerics(self)
+        self.numerics = Numerics(
+            self,
+            filename=filename,
+            table=self.table,
+            settings=self.settings,
+            statements=self.statements,
+            model=self.model,
+        )
         self.table.declare("T", "variable", t)
         self.table.declare("PI", "constant", sp.pi)
         self.table.declare("I", "imaginary", sp.I)
@@ -1249,12 +1262,12 @@ def _named_for_display(book: Any, value: Any) -> Any:
 
 class _Partial:
     """``D(y, x)`` for the entries of one command: sympy's ``diff``, or with
-    AutoZ on, the book's walk (one memo per variable, shared by the
-    entries, which share subexpressions; no ``Derivative`` objects built)."""
+    AutoZ on, the book's walk (the book's memo of each variable, shared by
+    every ``D()`` of the script, whose arguments share subexpressions; no
+    ``Derivative`` objects built)."""
 
     def __init__(self, book: Any) -> None:
         self.book = book
-        self.memos: dict[Any, dict] = {}
 
     def __call__(self, y: Any, x: Any) -> Any:
         if not isinstance(y, sp.Basic):
@@ -1262,7 +1275,7 @@ class _Partial:
         book = self.book
         if book is None or x == t or not book.is_variable(x):
             return sp.diff(y, x)
-        return book.derivative(y, x, self.memos.setdefault(x, {}))
+        return book.derivative(y, x)
 
 
 class AutolevNames(Mapping):

@@ -63,6 +63,46 @@ _VARIABLE = (AppliedUndef, sp.Derivative)
 _ZERO = sp.S.Zero
 
 
+#: sympy's own ``is_<fact>`` getters (``Basic``'s), asked when an
+#: intermediate has no table of facts
+_SYMPY_FACT = {f: getattr(sp.Basic, "is_" + f).fget for f in _assume_defined}
+
+
+def _fact_property(fact: str) -> property:
+    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
+    facts when the instance has one (see :meth:`Intermediates.facts`)."""
+    sympys = _SYMPY_FACT[fact]
+
+    def getit(self: Intermediate) -> bool | None:
+        try:
+            return self._assumptions[fact]
+        except KeyError:
+            pass
+        table = self.book.facts(self)
+        if table is None:
+            return sympys(self)
+        self._assumptions = table
+        return table[fact]
+
+    return property(getit)
+
+
+def _is_commutative(self: Intermediate) -> bool | None:
+    # sympy's handler (Function._eval_is_commutative), without the search,
+    # found once per instance (sympy asks it of every factor of a product).
+    found = self.__dict__.get("_commutative", _UNKNOWN)
+    if found is _UNKNOWN:
+        if all(a.is_commutative for a in self.args):
+            found = True
+        else:
+            found = _SYMPY_FACT["commutative"](self)
+        self.__dict__["_commutative"] = found
+    return found
+
+
+_UNKNOWN = object()
+
+
 class Intermediate(sp.Function):
     """``Z_k(vars)``: intermediate number ``k`` of a book, at ``vars``.
 
@@ -129,6 +169,41 @@ class Intermediate(sp.Function):
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
 
+    # sympy's assumption properties, answered from the book's one table of
+    # facts for the intermediate's number (Intermediates.facts) when it has
+    # one; ``is_commutative`` is found once per instance.
+    is_algebraic = _fact_property("algebraic")
+    is_antihermitian = _fact_property("antihermitian")
+    is_commutative = property(_is_commutative)
+    is_complex = _fact_property("complex")
+    is_composite = _fact_property("composite")
+    is_even = _fact_property("even")
+    is_extended_negative = _fact_property("extended_negative")
+    is_extended_nonnegative = _fact_property("extended_nonnegative")
+    is_extended_nonpositive = _fact_property("extended_nonpositive")
+    is_extended_nonzero = _fact_property("extended_nonzero")
+    is_extended_positive = _fact_property("extended_positive")
+    is_extended_real = _fact_property("extended_real")
+    is_finite = _fact_property("finite")
+    is_hermitian = _fact_property("hermitian")
+    is_imaginary = _fact_property("imaginary")
+    is_infinite = _fact_property("infinite")
+    is_integer = _fact_property("integer")
+    is_irrational = _fact_property("irrational")
+    is_negative = _fact_property("negative")
+    is_noninteger = _fact_property("noninteger")
+    is_nonnegative = _fact_property("nonnegative")
+    is_nonpositive = _fact_property("nonpositive")
+    is_nonzero = _fact_property("nonzero")
+    is_odd = _fact_property("odd")
+    is_polar = _fact_property("polar")
+    is_positive = _fact_property("positive")
+    is_prime = _fact_property("prime")
+    is_rational = _fact_property("rational")
+    is_real = _fact_property("real")
+    is_transcendental = _fact_property("transcendental")
+    is_zero = _fact_property("zero")
+
     def walk_parts(self) -> frozenset:
         """Every part of the arguments (the number too), and the arguments:
         found once per instance, for :mod:`al2py_runtime.walks`."""
@@ -155,46 +230,7 @@ class Intermediate(sp.Function):
         return found
 
 
-def _fact_property(fact: str) -> property:
-    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
-    facts when the instance has one (see :meth:`Intermediates.facts`)."""
-    sympys = getattr(Intermediate, "is_" + fact).fget
-
-    def getit(self: Intermediate) -> bool | None:
-        try:
-            return self._assumptions[fact]
-        except KeyError:
-            pass
-        table = self.book.facts(self)
-        if table is None:
-            return sympys(self)
-        self._assumptions = table
-        return table[fact]
-
-    return property(getit)
-
-
-def _is_commutative(self: Intermediate) -> bool | None:
-    # sympy's handler (Function._eval_is_commutative), without the search,
-    # found once per instance (sympy asks it of every factor of a product).
-    found = self.__dict__.get("_commutative", _UNKNOWN)
-    if found is _UNKNOWN:
-        if all(a.is_commutative for a in self.args):
-            found = True
-        else:
-            found = _sympy_commutative(self)
-        self.__dict__["_commutative"] = found
-    return found
-
-
-_UNKNOWN = object()
 _ONE_KEY = sp.S.One.sort_key()
-
-
-_sympy_commutative = Intermediate.is_commutative.fget
-for _fact in _assume_defined:
-    setattr(Intermediate, "is_" + _fact, _fact_property(_fact))
-Intermediate.is_commutative = property(_is_commutative)
 
 
 def trivial(expr: Any) -> bool:
@@ -561,8 +597,11 @@ def minus(expr: Any) -> Any:
     coefficient alone (sympy multiplies ``-1`` into each term with
     ``Mul.flatten`` and collects them again with ``Add.flatten``), then the
     terms sorted as ``Add.flatten`` sorts them (a number first, the rest
-    by ``Basic.compare``).  Terms that are themselves sums, or
-    non-commutative, go to sympy."""
+    by ``Basic.compare``).  A term with a sum among its factors stays a
+    product (``-(2*(a + b))`` is ``-2*(a + b)``, as sympy's ``Mul.__neg__``
+    makes it), unless the negation leaves the sum alone (``-(-(a + b))``:
+    sympy adds its terms to the sum); that case and non-commutative terms
+    go to sympy."""
     if not expr.is_Add:
         return -expr
     number, terms = sp.S.Zero, []
@@ -574,8 +613,10 @@ def minus(expr: Any) -> Any:
             c, rest = -term.args[0], term.args[1:]
         else:
             c, rest = sp.S.NegativeOne, term.args if term.is_Mul else (term,)
-        if not term.is_commutative or any(r.is_Add or r.is_Number for r in rest):
+        if not term.is_commutative or any(r.is_Number for r in rest):
             return -expr
+        if c is sp.S.One and len(rest) == 1 and rest[0].is_Add:
+            return -expr  # -(-(a + b)): sympy adds a + b's terms to the sum
         if c is sp.S.One:
             terms.append(rest[0] if len(rest) == 1 else _product(rest))
         else:
@@ -594,6 +635,9 @@ def total(terms: Sequence[Any]) -> Any:
         return sp.Add(*terms)
     number = sp.S.Zero
     collected: dict[Any, Any] = {}
+    #: key -> the term itself, while no other term has joined it (a product
+    #: of its coefficient and of the key's factors, kept as it is)
+    alone: dict[Any, Any] = {}
     seq = list(terms)
     for o in seq:  # a sum's terms join the end, as in Add.flatten
         if o.is_Add and o.is_commutative:
@@ -617,7 +661,12 @@ def total(terms: Sequence[Any]) -> Any:
         else:
             c, key = sp.S.One, o
         found = collected.get(key)
-        collected[key] = c if found is None else found + c
+        if found is None:
+            collected[key] = c
+            alone[key] = o
+        else:
+            collected[key] = found + c
+            alone.pop(key, None)
     out = []
     for key, c in collected.items():
         if c.is_zero:
@@ -625,7 +674,11 @@ def total(terms: Sequence[Any]) -> Any:
         if c is sp.S.One:
             out.append(key)
         elif key.is_Mul:
-            out.append(_product((c, *key.args)))
+            # _product((c, *key.args)): the term itself when it stood alone
+            o = alone.get(key)
+            out.append(o if o is not None else _product((c, *key.args)))
+        elif key.is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key, evaluate=False))
         else:
             out.append(sp.Mul(c, key))
     return _sum(number, out)
@@ -689,6 +742,11 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
+        #: variable -> (expression -> partial derivative by it): the answer
+        #: depends only on the expression (the intermediates' partials are
+        #: named once, in :attr:`_partials`), so every ``D()`` of a script
+        #: and every intermediate's partial share one memo per variable
+        self._pd_memos: dict[Any, dict[Any, Any]] = {}
         self._real: dict[int, bool | None] = {}
         self._busy: set[int] = set()
         self._positions: dict[Any, dict[Any, int]] = {}
@@ -1156,7 +1214,8 @@ class Intermediates:
         found = self._partials.get(key)
         if found is None:
             x = self._vars[k][j]
-            found = self.name(self._pd(self._defs[k], x, {}))
+            memo = self._pd_memos.setdefault(x, {})
+            found = self.name(self._pd(self._defs[k], x, memo))
             self._partials[key] = found
         if not self._canonical(z):
             args = tuple(z.args[1:])
@@ -1183,9 +1242,12 @@ class Intermediates:
 
     def derivative(self, e: Any, x: Any, memo: dict | None = None) -> Any:
         """``D(e, x)``, the partial derivative by the variable ``x`` (the
-        intermediates' derivatives named); ``memo`` may be shared by
-        expressions differentiated by the same ``x``."""
-        return self._pd(sp.sympify(e), x, {} if memo is None else memo)
+        intermediates' derivatives named).  Without ``memo``, the book's
+        own memo of ``x`` (shared by every derivative by ``x``: each
+        distinct part is differentiated once per book)."""
+        if memo is None:
+            memo = self._pd_memos.setdefault(x, {})
+        return self._pd(sp.sympify(e), x, memo)
 
     def total_dt(self, e: Any) -> Any:
         """``de/dt``, as sympy's ``diff(e, t)`` gives it (each variable's
