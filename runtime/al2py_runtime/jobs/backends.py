@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
-from sympy.printing.precedence import PRECEDENCE_FUNCTIONS, precedence
+from sympy.printing.precedence import PRECEDENCE, PRECEDENCE_FUNCTIONS, precedence
 
 from .. import progress
 from ..vocabulary import numeric_namespace
@@ -673,6 +673,8 @@ def _precedence(item: Any) -> int:
     alone (not for numbers, products and the like, whose sign matters)."""
     cls = type(item)
     found = _PRECEDENCE.get(cls)
+    if cls is sp.Mul:
+        return _precedence_mul(item)
     if found is None:
         found = precedence(item)
         if not hasattr(cls, "precedence") and not any(
@@ -680,6 +682,20 @@ def _precedence(item: Any) -> int:
         ):
             _PRECEDENCE[cls] = found
     return found
+
+
+def _precedence_mul(item: Any) -> int:
+    """sympy's ``precedence_Mul`` without forming ``-item``: its
+    ``could_extract_minus_sign`` asks ``item == -item`` (false whenever the
+    leading factor is a negative number, the only case it matters) and then
+    whether the leading factor is a negative number."""
+    mul = PRECEDENCE["Mul"]
+    for arg in item.args:
+        prec = getattr(arg, "precedence", None)
+        if prec is not None and isinstance(arg, sp.Function) and prec < mul:
+            return mul
+    c = item.args[0]
+    return PRECEDENCE["Add"] if c.is_Number and c.is_extended_negative else mul
 
 
 def without_re(expr: Any) -> bool:
