@@ -10,10 +10,15 @@ one run, each figure against its baseline measured in turns with it:
 * ``evaluate("AMAT", U6=...)``: the first call (it compiles the quantity)
   and later calls, against the substituting path that every call took
   before issue 36 (``jobs.run.evaluate_with_inputs``), medians of turns;
-* a 101-speed ``sweep`` per point (after the first call, and in a fresh
-  process including the compile), its eigenvalues against Meijaard et al.
-  (2007) Table 2 at 4, 5 and 10 m/s, and the same sweep on a local Dask
-  cluster of 2 worker processes (identical arrays?);
+* a 101-speed ``sweep`` per point (its numpy tape made, against the
+  compiled function), its eigenvalues against Meijaard et al. (2007)
+  Table 2 at 4, 5 and 10 m/s, and the same sweep on a local Dask cluster
+  of 2 worker processes (identical arrays?);
+* the 101-speed sweep and the first ``evaluate()`` in a fresh process (as a
+  user meets them: ``import whipple_linear; whipple_linear.sweep(...)``),
+  with an empty cache folder and with a warm one, each against the path
+  before the tape and the disk cache (the quantity compiled from its
+  printed C: ``quantities.compile_quantity``), in alternating turns;
 * ``linearize()`` of the Dynamics job against the script's import time
   (``python -c "import whipple_linear"``, turns alternated), also for the
   script without its ``D()`` lines (linearize then derives every partial
@@ -27,6 +32,7 @@ The machine may be shared: figures are ratios within one run.
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
 import subprocess
 import sys
@@ -55,14 +61,19 @@ def write(path: Path, folder: Path, text: str | None = None, stem: str = "") -> 
     return out
 
 
-def _last_number(folder: Path, code: str) -> float:
-    """The last number ``code`` prints, run by a new Python in ``folder``."""
+def _last_number(folder: Path, code: str, cache: Path | None = None) -> float:
+    """The last number ``code`` prints, run by a new Python in ``folder``
+    (``cache``: its AL2PY_CACHE_DIR, else this process's)."""
+    env = dict(os.environ)
+    if cache is not None:
+        env["AL2PY_CACHE_DIR"] = str(cache)
     out = subprocess.run(
-        [sys.executable, "-c", code],
+        [sys.executable, "-W", "ignore", "-c", code],
         cwd=folder,
         capture_output=True,
         text=True,
         check=True,
+        env=env,
     )
     return float(out.stdout.split()[-1])
 
@@ -72,12 +83,69 @@ def import_seconds(folder: Path, module: str) -> float:
     return _last_number(folder, code)
 
 
-def in_fresh_process(folder: Path, module: str, body: str) -> float:
+def in_fresh_process(
+    folder: Path, module: str, body: str, cache: Path | None = None
+) -> float:
     """Seconds of ``body`` (which sets ``seconds``) after importing ``module``
-    in a new process."""
+    in a new process (``cache``: its AL2PY_CACHE_DIR)."""
     return _last_number(
-        folder, f"import {module} as m, numpy as np, time\n{body}\nprint(seconds)"
+        folder,
+        f"import {module} as m, numpy as np, time\n{body}\nprint(seconds)",
+        cache,
     )
+
+
+#: a 101-speed sweep of AMAT as a user meets it: ``sweep()`` in a new process
+NEW_SWEEP = """
+t = time.perf_counter()
+m.sweep("AMAT", U6=-np.linspace(0, 10, 101) / 0.3)
+seconds = time.perf_counter() - t
+"""
+
+#: the first ``evaluate()`` of AMAT in a new process
+NEW_EVALUATE = """
+t = time.perf_counter()
+m.evaluate("AMAT", U6=-5 / 0.3)
+seconds = time.perf_counter() - t
+"""
+
+#: the path before the tape and the disk cache (in the same run): the
+#: quantity compiled from its printed C (numeric form, printing, the
+#: compiler unless the printed text's library is cached), then evaluated
+OLD = """
+from al2py_runtime.jobs.quantities import compile_quantity, evaluate_compiled
+from al2py_runtime.jobs.quantities import split_given
+from al2py_runtime.jobs.run import evaluate_with_inputs, input_values
+from al2py_runtime.jobs.sweep import sweep_quantity
+given = {given}
+t = time.perf_counter()
+job = m.al.numerics._make_job("ALGEBRAIC", line=None)
+value = m.al.value("AMAT")
+settable, free = split_given(job, given)
+keep = input_values(job, dict.fromkeys(settable, 0.0), False)[1]
+plan = compile_quantity(job, value, "AMAT", frozenset(free), frozenset(keep))
+exact = lambda p: evaluate_with_inputs(job, value, "AMAT", p)
+{what}(job, plan, given, exact)
+seconds = time.perf_counter() - t
+"""
+OLD_SWEEP = OLD.format(
+    given='{"U6": -np.linspace(0, 10, 101) / 0.3}', what="sweep_quantity"
+)
+OLD_EVALUATE = OLD.format(given='{"U6": -5 / 0.3}', what="evaluate_compiled")
+
+
+def fresh_turns(
+    folder: Path, turns: int, bodies: dict[str, str], warm: Path | None
+) -> dict[str, float]:
+    """Median seconds of each body in new processes, in alternating turns:
+    each with an empty cache folder of its own (``warm`` None), else all
+    with the folder ``warm``."""
+    times: dict[str, list[float]] = {k: [] for k in bodies}
+    for _ in range(turns):
+        for key, body in bodies.items():
+            cache = warm or Path(tempfile.mkdtemp(prefix="al2py_cache_"))
+            times[key].append(in_fresh_process(folder, "whipple_linear", body, cache))
+    return {k: statistics.median(v) for k, v in times.items()}
 
 
 def worst_table2(ev_by_speed: dict[float, np.ndarray]) -> float:
@@ -94,6 +162,9 @@ def main() -> None:
     parser.add_argument("--turns", type=int, default=3)
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp(prefix="al2py_research_"))
+    # this process starts from an empty cache of its own (the figures
+    # below do not depend on what an earlier run left)
+    os.environ["AL2PY_CACHE_DIR"] = str(folder / "cache")
     sys.path.insert(0, str(folder))
     write(BICYCLE, folder)
     plain = "\n".join(
@@ -163,31 +234,81 @@ def main() -> None:
     # ---------------------------------------------------------------- sweep
     speeds = np.linspace(0, 10, 101)
     t = time.perf_counter()
-    s = bike.sweep("AMAT", U6=-speeds / RR)
-    sweep = time.perf_counter() - t
+    s = bike.sweep("AMAT", U6=-speeds / RR)  # makes the numpy tape
+    tape_first = time.perf_counter() - t
+    bike.sweep("AMAT", U6=-speeds / RR, backend="c")  # its plan made once
+    again, compiled = [], []
+    for _ in range(args.turns):
+        t = time.perf_counter()
+        s = bike.sweep("AMAT", U6=-speeds / RR)
+        again.append(time.perf_counter() - t)
+        t = time.perf_counter()
+        c = bike.sweep("AMAT", U6=-speeds / RR, backend="c")
+        compiled.append(time.perf_counter() - t)
+    sweep, csweep = statistics.median(again), statistics.median(compiled)
     ev = s.eigenvalues()
     worst = worst_table2({v: ev[int(round(v * 10))] for v in (4.0, 5.0, 10.0)})
-    fresh = in_fresh_process(
-        folder,
-        "whipple_linear",
-        "t = time.perf_counter(); m.sweep('AMAT', U6=-np.linspace(0, 10, 101) / 0.3)"
-        "; seconds = time.perf_counter() - t",
-    )
+    scale = np.maximum(np.abs(s.values), np.abs(c.values))
+    gap = np.abs(s.values - c.values) / np.where(scale > 0, scale, 1)
     rows.append(
         (
             "sweep of 101 speeds, per point (ms)",
             f"{sweep / 101 * 1e3:.3f}",
-            f"before: {o * 1e3:.0f} ms a point (a loop of evaluate)",
+            f"its numpy tape; backend='c': {csweep / 101 * 1e3:.3f} ms;"
+            f" before: {o * 1e3:.0f} ms a point (a loop of evaluate)",
         )
     )
     rows.append(
         (
-            "  the same in a fresh process, compile included (ms/pt)",
-            f"{fresh / 101 * 1e3:.1f}",
-            f"{fresh:.2f} s in all",
+            "  first sweep in this process (makes the tape) (ms/pt)",
+            f"{tape_first / 101 * 1e3:.2f}",
+            f"tape vs compiled: largest relative difference {gap.max():.1e}",
         )
     )
     rows.append(("sweep eigenvalues vs Table 2 at 4, 5, 10 m/s", f"{worst:.1e}", ""))
+
+    # ------------------------------------------- fresh processes (a user's)
+    empty = fresh_turns(
+        folder,
+        args.turns,
+        {
+            "new": NEW_SWEEP,
+            "old": OLD_SWEEP,
+            "new_e": NEW_EVALUATE,
+            "old_e": OLD_EVALUATE,
+        },
+        None,
+    )
+    warm_dir = Path(tempfile.mkdtemp(prefix="al2py_cache_"))
+    in_fresh_process(folder, "whipple_linear", NEW_EVALUATE, warm_dir)  # warms
+    warm = fresh_turns(
+        folder,
+        args.turns,
+        {
+            "new": NEW_SWEEP,
+            "old": OLD_SWEEP,
+            "new_e": NEW_EVALUATE,
+            "old_e": OLD_EVALUATE,
+        },
+        warm_dir,
+    )
+    for label, got in (("empty cache", empty), ("warm disk cache", warm)):
+        rows.append(
+            (
+                f"fresh process, {label}: 101-speed sweep (ms/pt)",
+                f"{got['new'] / 101 * 1e3:.1f}",
+                f"{got['new']:.2f} s in all; before: {got['old'] / 101 * 1e3:.1f}"
+                f" ms/pt ({got['old']:.2f} s, {got['old'] / got['new']:.1f}x)",
+            )
+        )
+    for label, got in (("empty cache", empty), ("warm disk cache", warm)):
+        rows.append(
+            (
+                f"fresh process, {label}: first evaluate() (s)",
+                f"{got['new_e']:.2f}",
+                f"before: {got['old_e']:.2f} s ({got['old_e'] / got['new_e']:.1f}x)",
+            )
+        )
     if not args.no_dask:
         try:
             import distributed

@@ -427,3 +427,13 @@ def test_solve_for_some_accelerations_names_over_the_others(tmp_path):
             assert shown and not any(re.search(r"\bZ\d+\(", x) for x in shown)
             assert re.search(r"U3' = .*U4'", shown[-1]), shown[-1]
     assert values[1] == pytest.approx(values[0], rel=1e-10, abs=1e-12)
+
+
+def test_intermediates_answer_every_assumption_from_their_own_class():
+    """Each of sympy's assumption properties is written in the body of
+    ``Intermediate`` (none attached at import, none left to sympy's)."""
+    from al2py_runtime.intermediates.autoz import Intermediate
+    from sympy.core.assumptions import _assume_defined
+
+    for fact in _assume_defined:
+        assert isinstance(Intermediate.__dict__.get("is_" + fact), property), fact

@@ -204,3 +204,39 @@ def test_module_emit_code_writes_the_same_program(tutor6_program, tmp_path):
     theirs = tutor6_program.with_suffix(".c").read_text().splitlines()
     assert ours[1:] == theirs[1:]  # the first line names the source file
     assert not (tmp_path / "tutor6.1").exists()  # nothing was run
+
+
+def test_every_function_printer_hoists():
+    """Each printing method of a sympy function is written in ``CPrinter``'s
+    body through ``_hoisting`` (none attached at import, none missing after
+    a sympy upgrade adds one)."""
+    import sympy as sp
+
+    wrapped = {
+        attr
+        for attr in dir(backends.CPrinter)
+        if attr.startswith("_print_")
+        and isinstance(getattr(sp, attr[len("_print_") :], None), type)
+        and issubclass(getattr(sp, attr[len("_print_") :]), sp.Function)
+    }
+    assert "_print_sin" in wrapped and "_print_Function" in wrapped
+    for attr in sorted(wrapped):
+        assert attr in backends.CPrinter.__dict__, attr
+        assert getattr(backends.CPrinter, attr).__qualname__.startswith("_hoisting")
+
+
+def test_hoisted_calls_are_kept_once():
+    """A call of the hoisted symbols alone (sympy's ``sin`` and our own
+    ``sign``) is printed once and kept in ``z``; others stay in place."""
+    import sympy as sp
+
+    x, y = sp.symbols("x y")
+    printer = backends.CPrinter(hoist=({x}, 10))
+    text = printer.doprint(
+        sp.sin(x) * sp.cos(y) + sp.sin(x) ** 5 + sp.sign(x) + sp.exp(x + y)
+    )
+    assert text == "pow(z[10], 5) + cos(y)*z[10] + exp(x + y) + z[11]"
+    assert printer.hoisted == {
+        "sin(x)": "z[10]",
+        "(double)((((x) > 0) - ((x) < 0)))": "z[11]",
+    }

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 
+import black
 from al2py_runtime.safety import echo_lines, echoed_source
 
 from al2py import convert
@@ -80,3 +81,47 @@ def test_help_text_reads_whole():
     block = code[start : code.index('""")', start)]
     assert "--zero-missing" in block
     assert re.search(r'^\s*"', block.split("\n", 1)[1], re.M) is None
+
+
+def test_echo_ends_the_statement_line_when_it_fits():
+    """``code  # al> line`` when black's 88 columns hold both, else the echo
+    keeps its own line above; the transcript reads both back, and a
+    ``# al>`` inside a string is no echo."""
+    src = [
+        "Newtonian N",
+        "Frames A",
+        "Variables QA'",
+        "Simprot(N, A, 3, QA)",
+        "% a comment keeps its line",
+        "LONG_NAME_OF_A_QUANTITY = QA*QA + QA*QA*QA + QA*QA*QA*QA  % and a long comment",
+    ]
+    code = convert("\n".join(src) + "\n", "e.al").code
+    lines = code.splitlines()
+    assert "A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)" in lines
+    assert "# al> % a comment keeps its line" in lines
+    assert f"# al> {src[-1]}" in lines  # too long to end its statement's line
+    assert all(len(line) <= 88 for line in lines)
+    assert echoed_source(lines) == src
+    assert black.format_str(code, mode=black.Mode()) == code
+    quoted = ['x = "# al> not an echo"', "y = 1  # al> Q' = U", "# al> % c"]
+    assert echoed_source(quoted) == ["Q' = U", "% c"]
+
+
+def test_a_failure_names_the_line_of_an_echo_at_the_end(tmp_path):
+    """A run-time error of a statement whose echo ends its line names that
+    statement's ``.al`` line."""
+    from al2py_runtime.safety import al_line, echo_above
+
+    lines = [
+        "# al> Constants A",
+        "A = 1  # al> Q = 1",
+        "# al> % a comment",
+        "B = f(A)  # al> B = F(A)",
+        "g(B)",
+    ]
+    path = tmp_path / "m.py"
+    path.write_text("\n".join(lines) + "\n")
+    assert echo_above(lines, 2) == (1, "Q = 1")
+    assert echo_above(lines, 5) == (3, "B = F(A)")
+    assert al_line(str(path), 5) == (4, "B = F(A)")
+    assert al_line(str(path), 2) == (2, "Q = 1")

@@ -36,7 +36,8 @@ def test_help_answers_before_sympy_loads(tmp_path):
     help_text, last = proc.stdout.rsplit("\n", 2)[0], proc.stdout.splitlines()[-1]
     assert last == "EXIT 0 False"  # exit 0, and sympy was never imported
     assert help_text.startswith("usage: python tutor6.py [-h]")
-    assert "  QA = 20 deg\n" in help_text  # the script's Input, as written
+    inputs = help_text.split("in these units):\n", 1)[1].split("Jobs (", 1)[0]
+    assert "  QA = 20 deg  " in inputs  # the script's Input, as written
     assert "  tutor6: CODE Dynamics tutor6.c (line " in help_text
     assert proc.stderr == ""
 

@@ -10,9 +10,13 @@ Meijaard et al. (2007), Table 2.  Timings live in
 from __future__ import annotations
 
 import io
+import json
 import multiprocessing
+import os
 import pickle
 import random
+import subprocess
+import sys
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -457,3 +461,181 @@ def test_evaluate_arrays_of_an_input_others_are_computed_from(tmp_path):
     got = module.evaluate("Y", QQ1=angles, X=3.0)
     assert np.allclose(got, 3 * 2 * np.cos(np.radians(angles) / 2), rtol=1e-13)
     assert module.evaluate("Y", QQ1=120.0, X=3.0) == pytest.approx(got[2], rel=1e-13)
+
+
+# ------------------------------------------- numpy tape and the disk cache
+
+
+def _relative_gap(a, b):
+    """The largest difference of ``a`` and ``b`` relative to each entry's
+    size (entries that are exactly 0 in both count as equal)."""
+    a, b = np.asarray(a), np.asarray(b)
+    scale = np.maximum(np.abs(a), np.abs(b))
+    gap = np.abs(a - b)
+    return float(np.max(np.where(scale > 0, gap / np.where(scale > 0, scale, 1), 0)))
+
+
+def test_bicycle_sweep_runs_the_tape_and_equals_the_compiled_function(bicycle):
+    """A 101-speed sweep of the bicycle's AMAT (5,000 intermediates) runs its
+    numpy tape (no printing, no compiler) and gives the compiled function's
+    numbers within 1e-12 relative; evaluate() keeps the compiled function."""
+    speeds = np.linspace(0, 10, 101)
+    numerics = bicycle.al.numerics
+    tape = numerics.compiled_quantity("AMAT", {"U6": speeds}, points=101)
+    assert tape.origin == "numpy" and tape.kernel.tape.zs > quantities.SMALL
+    compiled = numerics.compiled_quantity("AMAT", {"U6": 0.0})
+    assert compiled.origin in ("compiled", "disk") and compiled.kernel.backend == "c"
+    s = bicycle.sweep("AMAT", U6=-speeds / RR)
+    c = bicycle.sweep("AMAT", U6=-speeds / RR, backend="c")
+    assert _relative_gap(s.values, c.values) < 1e-12
+    assert np.max(np.abs(s.values - c.values)) > 0  # two ways, truly
+    # the rule reads no cache: more points than ONE_SHOT_POINTS, another
+    # backend, or evaluate() take the compiled function
+    assert not quantities.takes_tape(tape, quantities.ONE_SHOT_POINTS + 1, None)
+    assert not quantities.takes_tape(tape, 101, "c")
+    assert not quantities.takes_tape(tape, None, None)
+    assert quantities.takes_tape(tape, 101, "numpy")
+
+
+def test_tape_rule_follows_al2py_backend(bicycle, monkeypatch):
+    tape = bicycle.al.numerics.compiled_quantity("AMAT", {"U6": 0.0}, points=5)
+    monkeypatch.setenv("AL2PY_BACKEND", "c")
+    assert not quantities.takes_tape(tape, 5, None)
+    monkeypatch.setenv("AL2PY_BACKEND", "auto")
+    assert quantities.takes_tape(tape, 5, None)
+
+
+def test_numpy_backend_equals_lambdify_and_falls_back_where_not_finite(small):
+    """backend="numpy" (the tape, whatever the size) gives lambdify's numbers
+    within 1e-12; a point where it is not finite is evaluated exactly."""
+    xs = np.linspace(-1, 1, 7)
+    for name in ("E", "M"):
+        got = small.sweep(name, X=xs, C=[1.0, 2.0], F=0.3, backend="numpy")
+        want = small.sweep(name, X=xs, C=[1.0, 2.0], F=0.3, backend="lambdify")
+        assert _relative_gap(got.values, want.values) < 1e-12
+    r = small.sweep("R", X=[4.0, -4.0], backend="numpy")
+    assert r.values.tolist() == pytest.approx([2.0, 2j])
+    assert small.evaluate("E", X=0.5, F=0.0, backend="numpy") == pytest.approx(
+        small.evaluate("E", X=0.5, F=0.0)
+    )
+
+
+def test_numpy_tape_on_a_pool_is_the_serial_one(small):
+    """A tape travels as operation names and slots, is made once per worker,
+    and gives the serial arrays bit for bit."""
+    xs = np.linspace(-1, 1, 40)
+    serial = small.sweep("M", X=xs, C=1.0, backend="numpy")
+    plan = small.al.numerics.compiled_quantity("M", {"X": xs}, "numpy")
+    data = pickle.dumps(plan.kernel)
+    assert b"sympy.core" not in data
+    spawn = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(2, mp_context=spawn) as pool:
+        pooled = small.sweep(
+            "M", X=xs, C=1.0, executor=pool, chunksize=4, backend="numpy"
+        )
+        built = [pool.submit(quantities.kernels_built).result() for _ in range(8)]
+    assert np.array_equal(pooled.values, serial.values)
+    assert set(built) <= {0, 1} and max(built) == 1
+
+
+CACHED = SMALL.replace("Input A=2, B=0.5", "Input A=2, B=0.5, C=0.25")
+
+
+def _fresh(tmp: Path, text: str, stem: str = "cached"):
+    tmp.mkdir(parents=True, exist_ok=True)
+    return _module(Path(f"{stem}.al"), tmp, text)
+
+
+def test_disk_cache_serves_a_new_model_and_never_a_stale_one(tmp_path, monkeypatch):
+    """A compiled quantity is kept on disk under its tape's digest, with a
+    sidecar: a new model object of the same script loads it; another
+    script or another runtime compile anew;
+    another Input value reuses it (the value is an argument) with the new
+    value; a library gone or a sidecar spoiled is compiled again."""
+    from al2py_runtime.jobs import fingerprint
+
+    monkeypatch.setenv("AL2PY_CACHE_DIR", str(tmp_path / "cache"))
+    if not quantities.backends.available("c"):
+        pytest.skip("needs a C compiler")
+    backend = "c"
+
+    def plan(module, **given):
+        return module.al.numerics.compiled_quantity("M", given, backend)
+
+    first = _fresh(tmp_path / "a", CACHED)
+    assert plan(first).origin == "compiled"
+    want = first.evaluate("M", X=0.7, Y=0.1, F=0.0, backend=backend)
+    sidecars = sorted((tmp_path / "cache" / "quantities").glob("*[0-9a-f].json"))
+    assert len(sidecars) == 1
+    again = _fresh(tmp_path / "b", CACHED)
+    assert plan(again).origin == "disk"
+    got = again.evaluate("M", X=0.7, Y=0.1, F=0.0, backend=backend)
+    assert np.array_equal(got, want)
+    # another script (a coefficient of M): compiled anew, its own numbers
+    other = _fresh(tmp_path / "c", CACHED.replace("X*Y + F", "X*Y + 2*F"))
+    assert plan(other).origin == "compiled"
+    m = other.evaluate("M", X=0.7, Y=0.1, F=1.0, backend=backend)
+    assert m[1, 1] == pytest.approx(0.07 + 2.0, rel=1e-14)
+    # another Input value: the same function, the new value
+    changed = _fresh(tmp_path / "e", CACHED.replace("C=0.25", "C=0.75"))
+    assert plan(changed).origin == "disk"
+    m = changed.evaluate("M", X=0.7, Y=0.1, F=0.0, backend=backend)
+    assert m[1, 0] == pytest.approx(0.75 * np.cos(0.1), rel=1e-14)
+    # another runtime: compiled anew
+    monkeypatch.setattr(fingerprint, "runtime_digest", lambda: "another runtime")
+    assert plan(_fresh(tmp_path / "f", CACHED)).origin == "compiled"
+    monkeypatch.undo()
+    monkeypatch.setenv("AL2PY_CACHE_DIR", str(tmp_path / "cache"))
+    # a spoiled sidecar, a library removed: compiled again
+    sidecars[0].write_text("{not json")
+    assert plan(_fresh(tmp_path / "g", CACHED)).origin == "compiled"
+    meta = json.loads(sidecars[0].read_text())
+    (tmp_path / "cache" / meta["library"]).unlink()
+    assert plan(_fresh(tmp_path / "h", CACHED)).origin == "compiled"
+    # a kernel loaded from disk still travels to workers as its source
+    loaded = plan(_fresh(tmp_path / "i", CACHED))
+    assert loaded.origin == "disk"
+    assert pickle.loads(pickle.dumps(loaded.kernel)) is loaded.kernel
+    units = loaded.kernel.source
+    assert units and all(isinstance(text, str) for text, _flags in units)
+    # lambdify (milliseconds to build) is not kept on disk
+    lam = _fresh(tmp_path / "j", CACHED).al.numerics
+    assert lam.compiled_quantity("M", {}, "lambdify").origin == "compiled"
+    assert (
+        _fresh(tmp_path / "k", CACHED)
+        .al.numerics.compiled_quantity("M", {}, "lambdify")
+        .origin
+        == "compiled"
+    )
+
+
+def test_disk_key_is_the_same_in_every_process(tmp_path):
+    """The key is computed without Python's per-process string hashing:
+    two processes with different hash seeds find the same key, and the
+    second loads the library the first compiled."""
+    result = convert(CACHED, "cached.al")
+    (tmp_path / "cached.py").write_text(result.code)
+    code = (
+        "import cached, json; p = cached.al.numerics.compiled_quantity('M', {}, 'c');"
+        " from al2py_runtime.jobs import quantities as q;"
+        " t = cached.al.numerics.compiled_quantity('M', {}, 'numpy');"
+        " print(json.dumps([q.disk_key(t, 'c'), p.origin]))"
+    )
+    seen = []
+    for seed in ("1", "2"):
+        env = {
+            **os.environ,
+            "PYTHONHASHSEED": seed,
+            "AL2PY_CACHE_DIR": str(tmp_path / "cache"),
+        }
+        out = subprocess.run(
+            [sys.executable, "-c", code],
+            cwd=tmp_path,
+            env=env,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        seen.append(json.loads(out.stdout.splitlines()[-1]))
+    assert seen[0][0] == seen[1][0]
+    assert [s[1] for s in seen] == ["compiled", "disk"]

@@ -70,6 +70,11 @@ def _described(ws: Any) -> tuple[list, list]:
     return inputs, [(j.stem, j.where) for j in ws.numerics.jobs]
 
 
+#: columns of the help text (one width everywhere: the converter writes it
+#: into modules)
+_WIDTH = 79
+
+
 def build_parser(
     filename: str,
     inputs: Sequence[tuple[str, str, str | None]],
@@ -81,12 +86,16 @@ def build_parser(
     lines = []
     if inputs:
         lines.append("Input values (change with --set NAME=VALUE, in these units):")
-        for key, shown, unit in inputs:
-            lines.append(f"  {key} = {shown}" + (f" {unit}" if unit else ""))
+        lines += _columns(
+            [
+                f"{key} = {shown}" + (f" {unit}" if unit else "")
+                for key, shown, unit in inputs
+            ]
+        )
     if jobs:
         lines.append("Jobs (--job STEM runs one; default: all, in script order):")
         for stem, where in jobs:
-            lines.append(f"  {stem}: {where} -> {stem}.1, ...")
+            lines += _wrapped(f"  {stem}: {where} -> {stem}.1, ...", "    ")
     else:
         lines.append(
             "This script has no CODE statement: it only prints its transcript."
@@ -94,14 +103,17 @@ def build_parser(
     lines.append("Integration parameters: " + ", ".join(INTEGRATION_DEFAULTS) + ".")
     parser = argparse.ArgumentParser(
         prog=f"python {name}.py",
-        description=(
-            f"Print the Autolev transcript of {filename} and perform its"
-            " numerical CODE job."
+        usage="%(prog)s [-h] [options]",  # each option is listed below
+        description="\n".join(
+            _wrapped(
+                f"Print the Autolev transcript of {filename} and perform its"
+                " numerical CODE job."
+            )
         ),
         epilog="\n".join(lines),
         # one width everywhere: the converter writes this help into modules
         formatter_class=lambda prog: argparse.RawDescriptionHelpFormatter(
-            prog, width=79
+            prog, width=_WIDTH
         ),
     )
     parser.add_argument(
@@ -175,6 +187,44 @@ def build_parser(
         f"{budget.LIMITS['evaluations']:g}; or AL2PY_MAX_EVALS)",
     )
     return parser
+
+
+def _wrapped(text: str, indent: str = "") -> list[str]:
+    """``text`` in lines of the help's width, cut between words (later lines
+    indented by ``indent`` more).
+
+    >>> _wrapped("  job: CODE Ode x.m (line 3) -> x.1, ...", "  ")
+    ['  job: CODE Ode x.m (line 3) -> x.1, ...']
+    """
+    import textwrap
+
+    lead = text[: len(text) - len(text.lstrip())]
+    return textwrap.wrap(
+        text.lstrip(),
+        _WIDTH,
+        initial_indent=lead,
+        subsequent_indent=lead + indent,
+        break_long_words=False,
+        break_on_hyphens=False,
+    )
+
+
+def _columns(items: Sequence[str], width: int = _WIDTH) -> list[str]:
+    """``items`` in columns, in order along each line, in ``width`` columns.
+
+    >>> _columns(["A = 1", "BB = 2 m", "C = 3"], 30)
+    ['  A = 1     BB = 2 m  C = 3']
+    """
+    if not items:
+        return []
+    column = max(len(item) for item in items) + 2
+    per_line = max(1, (width - 2 + 2) // column)
+    return [
+        (
+            "  " + "".join(item.ljust(column) for item in items[k : k + per_line])
+        ).rstrip()
+        for k in range(0, len(items), per_line)
+    ]
 
 
 def _positive(text: str) -> float:

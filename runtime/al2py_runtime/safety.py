@@ -231,31 +231,24 @@ def echoed_source(module_lines: Sequence[str]) -> list[str]:
 
 def echo_records(module_lines: Sequence[str]) -> list[tuple[int, str]]:
     """``(index in module_lines, .al line)`` of each line a module echoes:
-    the ``k``-th record is line ``k`` of the ``.al`` file."""
-    import ast
-    import io
-    import tokenize
+    the ``k``-th record is line ``k`` of the ``.al`` file.
 
-    text = "".join(
-        line if line.endswith("\n") else line + "\n" for line in module_lines
-    )
+    >>> echo_records(["# al> Constants G", "A.orient_axis(N, N.z, Q)  # al> Simprot(N, A, 3, Q)"])
+    [(0, 'Constants G'), (1, 'Simprot(N, A, 3, Q)')]
+    """
+    import ast
+
     out: list[tuple[int, str]] = []
     quoted: list[bool] = []
-    try:
-        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
-            if tok.type != tokenize.COMMENT or tok.start[1] != 0:
-                continue
-            comment, index = tok.string.rstrip(), tok.start[0] - 1
-            if comment == BLANK:
-                out.append((index, ""))
-                quoted.append(False)
-            elif comment.startswith((ECHO, QUOTED)):
-                out.append((index, comment[len(ECHO) :]))
-                quoted.append(comment.startswith(QUOTED))
-            elif comment.startswith(MORE) and out:
-                out[-1] = (out[-1][0], out[-1][1] + comment[len(MORE) :])
-    except (tokenize.TokenError, SyntaxError):
-        return []
+    for index, _col, comment in _echo_comments(module_lines):
+        if comment == BLANK:
+            out.append((index, ""))
+            quoted.append(False)
+        elif comment.startswith((ECHO, QUOTED)):
+            out.append((index, comment[len(ECHO) :]))
+            quoted.append(comment.startswith(QUOTED))
+        elif comment.startswith(MORE) and out:
+            out[-1] = (out[-1][0], out[-1][1] + comment[len(MORE) :])
     for k, is_quoted in enumerate(quoted):
         if is_quoted:
             try:
@@ -265,48 +258,81 @@ def echo_records(module_lines: Sequence[str]) -> list[tuple[int, str]]:
     return out
 
 
+def _echo_comments(module_lines: Sequence[str]) -> list[tuple[int, int, str]]:
+    """``(index, column, comment)`` of each comment of ``module_lines`` that
+    holds an echoed line: a comment at column 0 (``# al> ...``, ``# al+``,
+    ``# al! ...``, ``#``), or a ``# al> ...`` comment that ends a top-level
+    statement's line (``A.orient_axis(N, N.z, Q)  # al> Simprot(N, A, 3, Q)``).
+    Comments are found by Python's tokenizer: a ``# al>`` inside a string
+    is no echo."""
+    import io
+    import tokenize
+
+    text = "".join(
+        line if line.endswith("\n") else line + "\n" for line in module_lines
+    )
+    out: list[tuple[int, int, str]] = []
+    try:
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+            if tok.type != tokenize.COMMENT:
+                continue
+            (row, col), comment = tok.start, tok.string.rstrip()
+            if col == 0:
+                out.append((row - 1, 0, comment))
+            elif comment.startswith(ECHO) and not tok.line[:1].isspace():
+                out.append((row - 1, col, comment))
+    except (tokenize.TokenError, SyntaxError):
+        return []
+    return out
+
+
 def module_source(module_file: str, module_globals: object = None) -> list[str]:
     """:func:`echoed_source` of the module in ``module_file``."""
 
     return echoed_source(linecache.getlines(module_file, module_globals))
 
 
-_ECHO = "# al> "
 _LINE_ARG = re.compile(r"\bline=(\d+)")
 
 
 def echo_above(lines: list[str], pyline: int) -> tuple[int | None, str]:
     """``(index, text)`` of the ``# al>`` echo at or above Python line
-    ``pyline`` of a generated module's ``lines``: the Autolev statement that
-    line belongs to (``(None, "")`` if there is none).
+    ``pyline`` of a generated module's ``lines`` (on the line itself, or
+    ending a line above): the Autolev statement that line belongs to
+    (``(None, "")`` if there is none).
 
     >>> echo_above(["x = 1", "# al> Q' = U", "al.kd(...)"], 3)
     (1, "Q' = U")
+    >>> echo_above(["x = 1", "Y.orient_axis(N, N.z, Q)  # al> Simprot(N, Y, 3, Q)"], 2)
+    (1, 'Simprot(N, Y, 3, Q)')
     """
-    start = min(pyline, len(lines)) - 1
-    while start >= 0 and not lines[start].lstrip().startswith(_ECHO):
-        start -= 1
-    if start < 0:
-        return None, ""
-    return start, lines[start].lstrip()[len(_ECHO) :].rstrip()
+    found: tuple[int | None, str] = (None, "")
+    for index, _col, comment in _echo_comments(lines):
+        if index >= pyline:
+            break
+        if comment.startswith(ECHO):
+            found = (index, comment[len(ECHO) :])
+    return found
 
 
 def al_line(module_file: str, pyline: int, module_globals: Any = None) -> tuple:
     """``(line, source text)`` of the ``.al`` statement that Python line
     ``pyline`` of a generated module belongs to (``(None, "")`` if unknown):
-    the ``line=`` its call passes, else the ``# al>`` line above it (the
-    ``k``-th line the module echoes is line ``k`` of the ``.al`` file)."""
+    the ``line=`` its call passes, else the ``# al>`` echo at or above it
+    (the ``k``-th line the module echoes is line ``k`` of the ``.al`` file)."""
     lines = linecache.getlines(module_file, module_globals)
     start, echoed = echo_above(lines, pyline)
     if start is None:
         return None, ""
     records = echo_records(lines)
     source = [text for _, text in records]
-    end = start + 1
-    while end < len(lines) and not lines[end].lstrip().startswith(_ECHO):
-        end += 1
-    for text in lines[start:end]:
-        m = _LINE_ARG.search(text)
+    comments = _echo_comments(lines)
+    starts = [i for i, _c, text in comments if text.startswith(ECHO)]
+    end = next((i for i in starts if i > start), len(lines))
+    column = {i: c for i, c, text in comments if c > 0}  # trailing echoes
+    for index in range(start, end):
+        text = lines[index]
+        m = _LINE_ARG.search(text[: column[index]] if index in column else text)
         if m:
             n = int(m.group(1))
             return n, source[n - 1] if 0 < n <= len(source) else echoed

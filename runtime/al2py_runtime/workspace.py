@@ -88,11 +88,24 @@ class Workspace(Mapping):
         self.unit_norms: list[tuple[Any, ...]] = []
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
-        self.model = Model(self)
+        self.model = Model(
+            self,
+            table=self.table,
+            settings=self.settings,
+            statements=self.statements,
+            unit_norms=self.unit_norms,
+        )
         #: Inputs, Outputs, UnitSystem and CODE jobs.  Generated modules call
         #: it directly (``al.numerics.input(...)``, ``al.numerics.run(...)``):
         #: an Input value or a ``backend`` reaches the job without a forwarder.
-        self.numerics = Numerics(self)
+        self.numerics = Numerics(
+            self,
+            filename=filename,
+            table=self.table,
+            settings=self.settings,
+            statements=self.statements,
+            model=self.model,
+        )
         self.table.declare("T", "variable", t)
         self.table.declare("PI", "constant", sp.pi)
         self.table.declare("I", "imaginary", sp.I)

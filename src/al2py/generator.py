@@ -17,7 +17,7 @@ from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
 from al2py_runtime.model.model import MODEL_COMMANDS
-from al2py_runtime.safety import echo_lines
+from al2py_runtime.safety import ECHO, echo_lines
 from al2py_runtime.vocabulary import (
     BUILTINS,
     Builtin,
@@ -40,7 +40,7 @@ from .analysis import (
 from .errors import InternalError, SemanticError
 from .static_checks import unknown_call_message
 
-__all__ = ["Generator", "Imports"]
+__all__ = ["Generator", "Imports", "attach_echoes"]
 
 # Python operator precedence (higher binds tighter).
 ATOM, POWER, UNARY, MUL, ADD = 100, 90, 80, 70, 60
@@ -1016,3 +1016,67 @@ def _model_calls(lines: list[str]) -> list[str]:
         line = out[row - 1]
         out[row - 1] = line[:col] + "model." + line[col:]
     return out
+
+
+def attach_echoes(code: str, width: int = 88) -> str:
+    """``code`` (a formatted module) with each ``# al>`` echo that stands
+    alone just above a statement moved to the end of the statement's first
+    line, when the two fit ``width`` columns and that line is the whole
+    statement or ends in an opening bracket::
+
+        # al> Simprot(N, A, 3, QA)
+        A.orient_axis(N, N.z, QA)
+
+    becomes ``A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)``.  A
+    line that fits is one black leaves as it is (and a comment after an
+    opening bracket stays there), so the module stays black's; the
+    transcript reads both forms back
+    (:func:`al2py_runtime.safety.echo_records`).  Only plain echoes move
+    (ASCII, no tab, not continued by ``# al+``); others keep their line.
+    """
+    lines = code.split("\n")
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(code).readline))
+    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
+        raise InternalError("generated code does not tokenize") from None
+    #: first rows (1-based) of top-level statements that can take a comment
+    single: set[int] = set()
+    row = 0  # the first row of the statement being read (0: between them)
+    ok = False  # it starts at column 0 and its first row has no comment
+    last = ""  # the last token of its first row
+    more = False  # it goes on below its first row
+    skip = (tokenize.NL, tokenize.INDENT, tokenize.DEDENT, tokenize.ENCODING)
+    for tok in tokens:
+        if tok.type in skip or tok.type == tokenize.ENDMARKER:
+            continue
+        if tok.type == tokenize.NEWLINE:
+            if ok and (last in "([{" if more else last != ":"):  # ":" a block
+                single.add(row)
+            row = 0
+        elif row == 0:
+            if tok.type != tokenize.COMMENT:
+                row, ok, last, more = tok.start[0], tok.start[1] == 0, tok.string, False
+        elif tok.start[0] == row:
+            ok = ok and tok.type != tokenize.COMMENT
+            last = tok.string
+            more = more or tok.end[0] > row
+        else:
+            more = True
+    out: list[str] = []
+    k = 0
+    while k < len(lines):
+        echo, row = lines[k], k + 2  # the line below the echo is row k + 2
+        below = lines[k + 1] if k + 1 < len(lines) else ""
+        if (
+            echo.startswith(ECHO)
+            and row in single
+            and echo.isascii()
+            and "\t" not in echo
+            and len(below) + 2 + len(echo) <= width
+        ):
+            out.append(f"{below}  {echo}")
+            k += 2
+            continue
+        out.append(echo)
+        k += 1
+    return "\n".join(out)

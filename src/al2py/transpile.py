@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import re
 import sys
+import textwrap
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, partial
 from pathlib import Path
 
 import black
@@ -15,7 +16,7 @@ from al2py_runtime.cli import help_text
 from . import __version__, ir, static_checks
 from .analysis import Analysis
 from .errors import AutolevError, ErrorList, InternalError, errors_of
-from .generator import Generator
+from .generator import Generator, attach_echoes
 from .macros import expand
 from .parser import parse, parse_partial
 
@@ -71,6 +72,25 @@ def _help_literal(text: str) -> str:
             rest = rest[cut:]
         out.append(_escaped(rest) + ("\n" if line.endswith("\n") else "\\\n"))
     return '"""\\\n' + "".join(out) + '"""'
+
+
+def _docstring(source_name: str, module: str, has_job: bool) -> str:
+    """The module's docstring: where it came from and how it is used."""
+    fill = partial(
+        textwrap.fill, width=79, break_long_words=False, break_on_hyphens=False
+    )
+    use = (
+        f"``import {module}`` runs the symbolic part silently; ``AUTOLEV`` maps"
+        ' Autolev names (``"ZERO[1]"``, ``"X\'"``) to their current values.'
+        f"  ``python {module}.py`` prints the transcript Autolev would print"
+    )
+    if has_job:
+        use += (
+            " and runs the CODE job (``--help`` lists its options); ``run()``"
+            " runs it from Python"
+        )
+    head = f"Autolev script {source_name} converted by al2py {__version__}: edit"
+    return f"{fill(head + ' the .al file instead.')}\n\n{fill(use + '.')}"
 
 
 def module_name(filename: str) -> str:
@@ -144,7 +164,7 @@ def convert(
     module = module_name(source_name)
     safe_name = re.sub(r"[^\w.\-]", "_", source_name)
     code = _template().render(
-        title=f"Autolev script {safe_name}, converted to Python.",
+        docstring=_docstring(safe_name, module, generator.has_job),
         source_name=safe_name,
         source_name_repr=repr(source_name),
         module=module,
@@ -160,6 +180,7 @@ def convert(
     try:
         if len(code) <= BLACK_LIMIT:
             code = black.format_str(code, mode=black.Mode())
+        code = attach_echoes(code)  # after black: only lines that fit move
         # Python itself must load the module: an expression nested too deeply
         # for its parser (a 3,000-term power chain) is refused here, located,
         # rather than as a MemoryError traceback at import

@@ -61,6 +61,11 @@ FOREIGN = {
     " without differentiating them for an angular velocity set at once)",
     "_var_dict": "sympy ReferenceFrame: cached variable maps (reset on a new"
     " orientation, as sympy's orient_* do)",
+    "_pos_dict": "sympy Point: the positions given to it (set_pos), the edges"
+    " of Autolev's position chains (model/points.py; docs/semantics.md,"
+    ' "Kinematics stored on the sympy objects")',
+    "_vel_dict": "sympy Point: its velocities; a V2pts deferred by Autolev's"
+    " rule withdraws a given one (sympy has no unset)",
     "_print": "sympy printers' dispatch (the printer extension protocol)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",
@@ -598,16 +603,6 @@ def class_patches(tree: ast.AST) -> list[tuple[int, str]]:
     return out
 
 
-#: classes that still gain attributes at import, and why (not the API a
-#: generated module calls)
-PATCHED = {
-    "Intermediate": "sympy's assumption properties answered from one table"
-    " (intermediates/autoz.py)",
-    "CPrinter": "every sympy function's C printing goes through hoisted_call"
-    " (jobs/backends.py)",
-}
-
-
 def test_the_checker_finds_a_class_patch():
     tree = ast.parse("setattr(Workspace, 'simprot', f)\nModel.x = property(g)\n")
     assert sorted(what for _, what in class_patches(tree)) == [
@@ -617,14 +612,7 @@ def test_the_checker_finds_a_class_patch():
 
 
 def test_no_class_gains_a_method_at_import():
-    import re
-
-    found = [
-        f
-        for f in everywhere(class_patches)
-        if re.search(r": (?:setattr\()?(\w+)", f).group(1) not in PATCHED
-    ]
-    assert found == []
+    assert everywhere(class_patches) == []
 
 
 def test_no_caller_frame_is_read():
@@ -636,3 +624,281 @@ def test_no_caller_frame_is_read():
         ]
 
     assert everywhere(frames) == []
+
+
+# ------------------------------- narrow, typed collaborators (issue 33)
+
+
+def _class_defs() -> dict[str, tuple[str, ast.ClassDef]]:
+    """Every class of the runtime by name: ``name -> (module, node)``."""
+    out: dict[str, tuple[str, ast.ClassDef]] = {}
+    for m, tree in TREES.items():
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ClassDef):
+                out.setdefault(node.name, (m, node))
+    return out
+
+
+def _is_protocol(cls: ast.ClassDef) -> bool:
+    return any(isinstance(b, ast.Name) and b.id == "Protocol" for b in cls.bases)
+
+
+def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
+    return next(
+        (
+            f
+            for f in cls.body
+            if isinstance(f, ast.FunctionDef) and f.name == "__init__"
+        ),
+        None,
+    )
+
+
+def _init_params(cls: ast.ClassDef) -> list[tuple[str, ast.expr | None]]:
+    """``(name, annotation)`` of what constructing ``cls`` takes: its
+    ``__init__``'s parameters, or a dataclass's fields."""
+    init = _init_of(cls)
+    if init is None:
+        return [
+            (n.target.id, n.annotation)
+            for n in cls.body
+            if isinstance(n, ast.AnnAssign) and isinstance(n.target, ast.Name)
+        ]
+    return [(a.arg, a.annotation) for a in init.args.args[1:] + init.args.kwonlyargs]
+
+
+def handed_self(tree: ast.AST, classes: dict) -> list[tuple[int, str]]:
+    """``(line, what)`` for each object a class's ``__init__`` makes with
+    ``self`` as an argument (a part given its owner) whose receiving
+    parameter is not annotated with a ``Protocol``: an owner handed to a
+    part must reach it as a narrow, typed collaborator, never as ``Any``."""
+    found = []
+    for owner in ast.walk(tree):
+        if not isinstance(owner, ast.ClassDef) or _init_of(owner) is None:
+            continue
+        for call in ast.walk(_init_of(owner)):
+            if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Name)):
+                continue
+            if call.func.id not in classes:
+                continue
+            params = _init_params(classes[call.func.id][1])
+            by_name = {name: ann for name, ann in params}
+            given = [
+                params[i]
+                for i, a in enumerate(call.args)
+                if isinstance(a, ast.Name) and a.id == "self" and i < len(params)
+            ] + [
+                (k.arg, by_name.get(k.arg))
+                for k in call.keywords
+                if isinstance(k.value, ast.Name) and k.value.id == "self"
+            ]
+            for param, ann in given:
+                name = (
+                    ann.id
+                    if isinstance(ann, ast.Name)
+                    else ast.unparse(ann or ast.Constant(None))
+                )
+                if not (name in classes and _is_protocol(classes[name][1])):
+                    found.append(
+                        (
+                            call.lineno,
+                            f"{owner.name} gives itself to {call.func.id}({param}: {name})",
+                        )
+                    )
+    return found
+
+
+def test_the_checker_finds_an_owner_handed_as_any():
+    tree = ast.parse(
+        "from typing import Any, Protocol\n"
+        "class Names(Protocol):\n    def val(self, x: Any) -> Any: ...\n"
+        "class Part:\n    def __init__(self, ws: Any) -> None:\n        self.ws = ws\n"
+        "class Good:\n    def __init__(self, ws: Names) -> None:\n        self.ws = ws\n"
+        "class Owner:\n    def __init__(self) -> None:\n"
+        "        self.part = Part(self)\n        self.good = Good(ws=self)\n"
+    )
+    classes = {n.name: ("m", n) for n in ast.walk(tree) if isinstance(n, ast.ClassDef)}
+    assert handed_self(tree, classes) == [(12, "Owner gives itself to Part(ws: Any)")]
+
+
+def test_no_part_holds_an_untyped_reference_to_its_owner():
+    """The workspace's parts (``al.model``, ``al.numerics``...) receive it
+    only through a ``Protocol`` that lists what they call (issue 33): no
+    ``ws: Any`` back-reference."""
+    classes = _class_defs()
+    found = [
+        f"{MODULES[m].relative_to(ROOT)}:{line}: {what}"
+        for m, tree in TREES.items()
+        for line, what in handed_self(tree, classes)
+    ]
+    assert found == []
+    # the check sees the parts the workspace makes
+    tree = TREES[f"{PACKAGE}.workspace"]
+    made = {
+        c.func.id
+        for c in ast.walk(tree)
+        if isinstance(c, ast.Call)
+        and isinstance(c.func, ast.Name)
+        and any(isinstance(a, ast.Name) and a.id == "self" for a in c.args)
+    }
+    assert {"Model", "Numerics"} <= made
+
+
+def _members(cls: ast.ClassDef) -> set[str]:
+    """Names a class body defines: methods, annotated and assigned names."""
+    out = set()
+    for node in cls.body:
+        if isinstance(node, ast.FunctionDef):
+            out.add(node.name)
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+            out.add(node.target.id)
+        elif isinstance(node, ast.Assign):
+            out.update(t.id for t in node.targets if isinstance(t, ast.Name))
+    return out
+
+
+def _uses(tree: ast.AST, holder: str, attr: str) -> list[tuple[int, str]]:
+    """``(line, name)`` of each ``holder.attr.name`` (``self.script.val``)."""
+    return [
+        (node.lineno, node.attr)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Attribute)
+        and isinstance(node.value, ast.Attribute)
+        and node.value.attr == attr
+        and isinstance(node.value.value, ast.Name)
+        and node.value.value.id == holder
+    ]
+
+
+def test_the_model_parts_use_only_what_they_are_given():
+    """Every ``self.x`` of a part of ``Model`` is declared in a part (a
+    method, or an annotation of :class:`ModelPart`, set by ``Model``'s
+    constructor), and every call on ``self.script`` (``model.script``) is a
+    member of :class:`ScriptNames`: a reader, or ``mypy``, sees what each
+    part uses of the script."""
+    classes = _class_defs()
+    parts = [
+        (m, cls)
+        for m, tree in TREES.items()
+        if m.startswith(MODEL)
+        for cls in tree.body
+        if isinstance(cls, ast.ClassDef)
+        and (
+            cls.name in ("Model", "ModelPart")
+            or any(isinstance(b, ast.Name) and b.id == "ModelPart" for b in cls.bases)
+        )
+    ]
+    assert len(parts) >= 9  # ModelPart, Model and its seven parts
+    declared = set().union(*(_members(cls) for _m, cls in parts))
+    bad = [
+        f"{MODULES[m].relative_to(ROOT)}:{node.lineno}: self.{node.attr}"
+        for m, cls in parts
+        for node in ast.walk(cls)
+        if isinstance(node, ast.Attribute)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == "self"
+        and node.attr not in declared
+    ]
+    assert bad == []
+    allowed = _members(classes["ScriptNames"][1])
+    calls = [
+        (m, line, name)
+        for m, tree in TREES.items()
+        if m.startswith(MODEL)
+        for holder in ("self", "model")
+        for line, name in _uses(tree, holder, "script")
+    ]
+    assert len(calls) > 40
+    assert [c for c in calls if c[2] not in allowed] == []
+    allowed = _members(classes["ScriptValues"][1])
+    calls = _uses(TREES[f"{PACKAGE}.jobs.numerics"], "self", "_script")
+    assert calls and [c for c in calls if c[1] not in allowed] == []
+
+
+def test_the_workspace_is_what_its_parts_call():
+    """The workspace has each member of the protocols its parts receive,
+    with the same parameters (the protocols describe it, not a wish)."""
+    import inspect
+
+    from al2py_runtime.jobs.numerics import ScriptValues
+    from al2py_runtime.model.script import ScriptNames
+    from al2py_runtime.workspace import Workspace
+
+    def shape(func) -> list[tuple[str, object]]:
+        params = inspect.signature(inspect.unwrap(func)).parameters.values()
+        return [(p.name, p.kind) for p in params]
+
+    for protocol in (ScriptNames, ScriptValues):
+        for name, member in vars(protocol).items():
+            if name.startswith("_"):
+                continue
+            mine = inspect.getattr_static(Workspace, name)
+            if isinstance(member, property):
+                assert isinstance(mine, property), name
+            else:
+                assert shape(mine) == shape(member), name
+
+
+def test_positions_and_velocities_are_stored_once():
+    """Positions and velocities live in sympy's ``Point`` only (issue 33):
+    the model's registry holds no position or velocity vector, and sympy's
+    own ``pos_from``/``vel`` give Autolev's values; masses are the sympy
+    ``RigidBody``/``Particle``'s."""
+    import dataclasses
+
+    import sympy as sp
+    from al2py_runtime import Workspace
+    from sympy.physics.vector import Vector
+
+    al = Workspace("once.al")
+    n = al.model.newtonian("N")
+    a = al.model.bodies("A")
+    o, p, q = al.model.points("O", "P", "Q")
+    qa, u = al.variables("QA'", "U'")
+    length = al.constants("L")
+    al.model.simprot(n, a, 3, qa)
+    al.assign("QA'", u)
+    al.assign("P_O_P>", length * a.x)
+    al.assign("P_P_Q>", length * a.y)
+    al.assign("V_O_N>", 0)
+    al.model.v2pts(n, a, o, p)
+    al.assign("A_O_N>", 0)
+    al.model.a2pts(n, a, o, p)
+    al.assign("ALF_A_N>", al.dt(al["W_A_N>"], n))
+    al.model.set_mass(a, 2)
+    al.assign("FORCE_P>", length * n.x)
+    al.model.gravity(-length * n.y)
+    assert q.pos_from(o) == al["P_O_Q>"] == length * (a.x + a.y)
+    assert p.vel(n) == al["V_P_N>"]
+    assert sp.simplify(al["V_P_N>"].dot(a.y) - length * u) == 0
+    # Autolev's rule forms V_Q_N> when used (not stored)
+    assert al["V_Q_N>"] != Vector(0)
+
+    def vectors(x) -> bool:
+        if isinstance(x, Vector):
+            return True
+        if isinstance(x, dict):
+            return any(vectors(k) or vectors(v) for k, v in x.items())
+        if isinstance(x, list | tuple | set):
+            return any(vectors(e) for e in x)
+        return False
+
+    registry = al.model.registry
+    holding = {
+        f.name
+        for f in dataclasses.fields(registry)
+        if vectors(getattr(registry, f.name))
+    }
+    # accelerations Autolev forms (not sympy's: see ModelState), and loads
+    assert holding == {"acc", "angacc", "angacc_given", "loads", "gravity"}
+
+    # masses are the sympy bodies' own (Autolev's record keeps no copy)
+    from al2py_runtime.model.state import BodyRecord
+
+    assert "mass" not in {f.name for f in dataclasses.fields(BodyRecord)}
+    ball = al.model.particles("BALL")
+    assert al.model.mass_of() == 2  # BALL's mass is not declared: zero
+    al.model.set_mass(ball, length)
+    assert al.model.particle(ball).mass == length
+    assert al.model.rigid_body(a).mass == 2
+    assert al.model.mass_of(a, ball) == 2 + length

@@ -63,6 +63,46 @@ _VARIABLE = (AppliedUndef, sp.Derivative)
 _ZERO = sp.S.Zero
 
 
+#: sympy's own ``is_<fact>`` getters (``Basic``'s), asked when an
+#: intermediate has no table of facts
+_SYMPY_FACT = {f: getattr(sp.Basic, "is_" + f).fget for f in _assume_defined}
+
+
+def _fact_property(fact: str) -> property:
+    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
+    facts when the instance has one (see :meth:`Intermediates.facts`)."""
+    sympys = _SYMPY_FACT[fact]
+
+    def getit(self: Intermediate) -> bool | None:
+        try:
+            return self._assumptions[fact]
+        except KeyError:
+            pass
+        table = self.book.facts(self)
+        if table is None:
+            return sympys(self)
+        self._assumptions = table
+        return table[fact]
+
+    return property(getit)
+
+
+def _is_commutative(self: Intermediate) -> bool | None:
+    # sympy's handler (Function._eval_is_commutative), without the search,
+    # found once per instance (sympy asks it of every factor of a product).
+    found = self.__dict__.get("_commutative", _UNKNOWN)
+    if found is _UNKNOWN:
+        if all(a.is_commutative for a in self.args):
+            found = True
+        else:
+            found = _SYMPY_FACT["commutative"](self)
+        self.__dict__["_commutative"] = found
+    return found
+
+
+_UNKNOWN = object()
+
+
 class Intermediate(sp.Function):
     """``Z_k(vars)``: intermediate number ``k`` of a book, at ``vars``.
 
@@ -129,6 +169,41 @@ class Intermediate(sp.Function):
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
 
+    # sympy's assumption properties, answered from the book's one table of
+    # facts for the intermediate's number (Intermediates.facts) when it has
+    # one; ``is_commutative`` is found once per instance.
+    is_algebraic = _fact_property("algebraic")
+    is_antihermitian = _fact_property("antihermitian")
+    is_commutative = property(_is_commutative)
+    is_complex = _fact_property("complex")
+    is_composite = _fact_property("composite")
+    is_even = _fact_property("even")
+    is_extended_negative = _fact_property("extended_negative")
+    is_extended_nonnegative = _fact_property("extended_nonnegative")
+    is_extended_nonpositive = _fact_property("extended_nonpositive")
+    is_extended_nonzero = _fact_property("extended_nonzero")
+    is_extended_positive = _fact_property("extended_positive")
+    is_extended_real = _fact_property("extended_real")
+    is_finite = _fact_property("finite")
+    is_hermitian = _fact_property("hermitian")
+    is_imaginary = _fact_property("imaginary")
+    is_infinite = _fact_property("infinite")
+    is_integer = _fact_property("integer")
+    is_irrational = _fact_property("irrational")
+    is_negative = _fact_property("negative")
+    is_noninteger = _fact_property("noninteger")
+    is_nonnegative = _fact_property("nonnegative")
+    is_nonpositive = _fact_property("nonpositive")
+    is_nonzero = _fact_property("nonzero")
+    is_odd = _fact_property("odd")
+    is_polar = _fact_property("polar")
+    is_positive = _fact_property("positive")
+    is_prime = _fact_property("prime")
+    is_rational = _fact_property("rational")
+    is_real = _fact_property("real")
+    is_transcendental = _fact_property("transcendental")
+    is_zero = _fact_property("zero")
+
     def walk_parts(self) -> frozenset:
         """Every part of the arguments (the number too), and the arguments:
         found once per instance, for :mod:`al2py_runtime.walks`."""
@@ -155,46 +230,7 @@ class Intermediate(sp.Function):
         return found
 
 
-def _fact_property(fact: str) -> property:
-    """``Intermediate.is_<fact>``: sympy's answer, from the book's table of
-    facts when the instance has one (see :meth:`Intermediates.facts`)."""
-    sympys = getattr(Intermediate, "is_" + fact).fget
-
-    def getit(self: Intermediate) -> bool | None:
-        try:
-            return self._assumptions[fact]
-        except KeyError:
-            pass
-        table = self.book.facts(self)
-        if table is None:
-            return sympys(self)
-        self._assumptions = table
-        return table[fact]
-
-    return property(getit)
-
-
-def _is_commutative(self: Intermediate) -> bool | None:
-    # sympy's handler (Function._eval_is_commutative), without the search,
-    # found once per instance (sympy asks it of every factor of a product).
-    found = self.__dict__.get("_commutative", _UNKNOWN)
-    if found is _UNKNOWN:
-        if all(a.is_commutative for a in self.args):
-            found = True
-        else:
-            found = _sympy_commutative(self)
-        self.__dict__["_commutative"] = found
-    return found
-
-
-_UNKNOWN = object()
 _ONE_KEY = sp.S.One.sort_key()
-
-
-_sympy_commutative = Intermediate.is_commutative.fget
-for _fact in _assume_defined:
-    setattr(Intermediate, "is_" + _fact, _fact_property(_fact))
-Intermediate.is_commutative = property(_is_commutative)
 
 
 def trivial(expr: Any) -> bool:

@@ -560,6 +560,21 @@ def _build_llvm(spec: DynamicsSpec) -> Compiled:
 # ------------------------------------------------------------------------ C
 
 
+def _hoisting(method: Callable[..., str]) -> Callable[..., str]:
+    """A printing method of a sympy function, through ``hoisted_call``."""
+
+    def printed(self: CPrinter, expr: Any, **kwargs: Any) -> str:
+        return self.hoisted_call(expr, method(self, expr, **kwargs))
+
+    return printed
+
+
+def _sympys_hoisting(name: str) -> Callable[..., str]:
+    """sympy's printing method ``name`` of a function (``_print_sin``),
+    found as sympy's printers find it, through ``hoisted_call``."""
+    return _hoisting(getattr(C99CodePrinter, name))
+
+
 class CPrinter(C99CodePrinter):
     """C99 with small integer powers as products and Autolev's functions;
     with ``z_array`` the intermediates ``zK`` are the elements ``z[K]``."""
@@ -705,28 +720,41 @@ class CPrinter(C99CodePrinter):
         x = self._print(expr.args[0])
         return f"copysign(floor(fabs({x}) + 0.5), {x})"
 
+    @_hoisting
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"(double)(((({x}) > 0) - (({x}) < 0)))"
 
-
-def _hoisting(method: Callable[..., str]) -> Callable[..., str]:
-    def printed(self: CPrinter, expr: Any, **kwargs: Any) -> str:
-        return self.hoisted_call(expr, method(self, expr, **kwargs))
-
-    return printed
-
-
-# Every printing method of a sympy function (sin, cos, ..., and the general
-# one) goes through CPrinter.hoisted_call.
-for _attr in dir(CPrinter):
-    _cls = getattr(sp, _attr[len("_print_") :], None)
-    if (
-        _attr.startswith("_print_")
-        and isinstance(_cls, type)
-        and issubclass(_cls, sp.Function)
-    ):
-        setattr(CPrinter, _attr, _hoisting(getattr(CPrinter, _attr)))
+    # Every printing method of a sympy function (sin, cos, ..., and the
+    # general one) goes through hoisted_call (tests/test_codegen_c.py checks
+    # that none is missing).
+    _print_Abs = _sympys_hoisting("_print_Abs")
+    _print_Function = _sympys_hoisting("_print_Function")
+    _print_Heaviside = _sympys_hoisting("_print_Heaviside")
+    _print_Mod = _sympys_hoisting("_print_Mod")
+    _print_Piecewise = _sympys_hoisting("_print_Piecewise")
+    _print_WildFunction = _sympys_hoisting("_print_WildFunction")
+    _print_acos = _sympys_hoisting("_print_acos")
+    _print_acosh = _sympys_hoisting("_print_acosh")
+    _print_asin = _sympys_hoisting("_print_asin")
+    _print_asinh = _sympys_hoisting("_print_asinh")
+    _print_atan = _sympys_hoisting("_print_atan")
+    _print_atan2 = _sympys_hoisting("_print_atan2")
+    _print_atanh = _sympys_hoisting("_print_atanh")
+    _print_ceiling = _sympys_hoisting("_print_ceiling")
+    _print_cos = _sympys_hoisting("_print_cos")
+    _print_cosh = _sympys_hoisting("_print_cosh")
+    _print_erf = _sympys_hoisting("_print_erf")
+    _print_erfc = _sympys_hoisting("_print_erfc")
+    _print_exp = _sympys_hoisting("_print_exp")
+    _print_floor = _sympys_hoisting("_print_floor")
+    _print_gamma = _sympys_hoisting("_print_gamma")
+    _print_log = _sympys_hoisting("_print_log")
+    _print_loggamma = _sympys_hoisting("_print_loggamma")
+    _print_sin = _sympys_hoisting("_print_sin")
+    _print_sinh = _sympys_hoisting("_print_sinh")
+    _print_tan = _sympys_hoisting("_print_tan")
+    _print_tanh = _sympys_hoisting("_print_tanh")
 
 
 _PRECEDENCE: dict[type, int] = {}
@@ -1140,6 +1168,12 @@ def build_units(units: Sequence[tuple[str, Sequence[str]]]) -> tuple[Path, bool]
 
 
 _SUFFIX = ".dll" if sys.platform == "win32" else ".so"
+
+
+def cache_folder() -> Path:
+    """:func:`cache_dir`, made if need be (a temporary folder of the user's
+    when it cannot be)."""
+    return _cache_folder()
 
 
 def _cache_folder() -> Path:

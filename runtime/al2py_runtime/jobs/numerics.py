@@ -28,10 +28,11 @@ do not change the job.  ``run()`` performs the job (see :mod:`.jobs`).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePath
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 import sympy as sp
 from sympy.physics.vector import Vector
@@ -53,6 +54,9 @@ from .records import (
 from .units import UnitSystem, units_factor
 
 if TYPE_CHECKING:
+    from ..model.model import Model
+    from ..names.settings import Settings
+    from ..names.table import NameTable
     from .tables import Result
 
 # The job runner (numpy, the compiled backends) loads when a job first
@@ -76,23 +80,57 @@ class _NumericsState:
     animate: AnimateSpec | None = None
 
 
+class ScriptValues(Protocol):
+    """The script's operations on Autolev names that :class:`Numerics`
+    calls (the workspace, :class:`al2py_runtime.workspace.Workspace`, is
+    the one implementation)."""
+
+    def value(self, name: str) -> Any:
+        """The current value of an Autolev name (``"X"``, ``"ZERO[2]"``)."""
+        ...
+
+    def val(self, x: Any) -> Any:
+        """The value of an Autolev name or expression."""
+        ...
+
+    def symbol(self, name: str) -> Any:
+        """The sympy object of a declared name."""
+        ...
+
+    def resolve(self, expr: Any, keep: Iterable[Any] = ()) -> Any:
+        """``expr`` with every right-hand side substituted but ``keep``."""
+        ...
+
+
 class Numerics:
     """Inputs, outputs, units and the numerical jobs of a script.
 
-    It reads the script's names (``ws``: the workspace's name table and
-    settings) when ``CODE`` takes its snapshot; nothing else refers back."""
+    It is given the small objects of the script it reads when ``CODE``
+    takes its snapshot: ``script`` (:class:`ScriptValues`), the file name,
+    the name table, the settings, the statements, and the model (for the
+    geometry an animation draws); nothing else refers back."""
 
-    def __init__(self, ws: Any) -> None:
-        self._ws = ws
+    def __init__(
+        self,
+        script: ScriptValues,
+        *,
+        filename: str,
+        table: NameTable,
+        settings: Settings,
+        statements: Statements,
+        model: Model,
+    ) -> None:
+        self._script = script
+        self._filename = filename
+        self._table = table
+        self._settings = settings
+        #: where the script's statement calls stand (a failing Input,
+        #: Output, UnitSystem or CODE statement names its ``.al`` line)
+        self.statements = statements
+        self._model = model
         self._numerics = _NumericsState()
         #: compiled quantities (:meth:`compiled_quantity`)
         self._compiled: dict[tuple, tuple[Any, Any]] = {}
-
-    @property
-    def statements(self) -> Statements:
-        """Where the workspace's statement calls stand (a failing Input,
-        Output, UnitSystem or CODE statement names its ``.al`` line)."""
-        return self._ws.statements
 
     # ------------------------------------------------------------ recording
 
@@ -164,7 +202,7 @@ class Numerics:
         return [OutputItem(n, e, unit) for n, e in zip(names, value, strict=True)]
 
     def _newtonian(self) -> Any:
-        for entry in self._ws.table.entries.values():
+        for entry in self._table.entries.values():
             if entry.kind == "newtonian":
                 return entry.obj
         return None
@@ -194,7 +232,7 @@ class Numerics:
         items: list[OutputItem] = []
         shapes: dict[str, tuple[int, int]] = {}
         for key in self._numerics.encoded:
-            value = self._ws.value(key)
+            value = self._script.value(key)
             if isinstance(value, sp.MatrixBase):
                 shapes[key] = value.shape
                 names = element_labels(key, value.rows, value.cols)
@@ -257,18 +295,20 @@ class Numerics:
             elif isinstance(eqs, list | tuple):
                 eq_matrix = sp.Matrix(list(eqs))
             else:
-                eq_matrix = sp.Matrix([self._ws.val(eqs)])
-        objs = [self._ws.symbol(u) if isinstance(u, str) else u for u in unknowns or ()]
+                eq_matrix = sp.Matrix([self._script.val(eqs)])
+        objs = [
+            self._script.symbol(u) if isinstance(u, str) else u for u in unknowns or ()
+        ]
         if sweep is not None:
             obj, unit, start, stop, step = sweep
             if isinstance(obj, str):
-                obj = self._ws.symbol(obj)
+                obj = self._script.symbol(obj)
             sweep = (obj, unit or None, float(start), float(stop), float(step))
             if float(step) == 0:
                 raise ValueError("CODE sweep step must not be 0")
         zero = None
         if kind in ("DYNAMICS", "ODE"):
-            value = self._ws.table.stored.get("ZERO")
+            value = self._table.stored.get("ZERO")
             if isinstance(value, sp.MatrixBase):
                 zero = sp.Matrix(value)
         encoded, shapes = self._encoded_spec(line)
@@ -277,40 +317,38 @@ class Numerics:
         outputs = list(state.outputs) + ([encoded] if encoded is not None else [])
         job = Job(
             kind=kind,
-            stem=job_stem(file, self._ws.filename),
+            stem=job_stem(file, self._filename),
             filename=file,
             line=line,
-            source=self._ws.filename,
+            source=self._filename,
             eqs=eq_matrix,
             eqs_name=eqs_name,
             unknowns=objs,
             sweep=sweep,
-            rhs=dict(self._ws.table.rhs),
+            rhs=dict(self._table.rhs),
             zero=zero,
             outputs=outputs,
             encoded={**state.shapes, **shapes},
             inputs=dict(state.inputs),
             unit_system=state.unit_system,
-            digits=self._ws.settings.digits,
+            digits=self._settings.digits,
             variables=[
                 (name, e.obj, e.order)
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if e.kind in ("variable", "specified") and name != "T"
             ],
-            names=dict(self._ws.table.by_obj),
-            entries={
-                name: (e.kind, e.obj) for name, e in self._ws.table.entries.items()
-            },
+            names=dict(self._table.by_obj),
+            entries={name: (e.kind, e.obj) for name, e in self._table.entries.items()},
             declared={
                 name: e.line
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if e.line is not None
             },
             animate=state.animate,
-            geometry=Geometry.of(self._ws.model),
+            geometry=Geometry.of(self._model),
             initials={
                 name: float(getattr(e, "extra", {}).get("initial", 0.0))
-                for name, e in self._ws.table.entries.items()
+                for name, e in self._table.entries.items()
                 if "initial" in getattr(e, "extra", {})
                 or name.startswith("NICHECK_WORK")
             },
@@ -318,11 +356,11 @@ class Numerics:
         return job
 
     def _matrix_name(self, value: Any) -> str | None:
-        for name, stored in self._ws.table.stored.items():
+        for name, stored in self._table.stored.items():
             if stored is value:
                 return name
         if isinstance(value, sp.MatrixBase):
-            for name, stored in self._ws.table.stored.items():
+            for name, stored in self._table.stored.items():
                 if isinstance(stored, sp.MatrixBase) and stored == value:
                     return name
         return None
@@ -360,10 +398,10 @@ class Numerics:
         it; None if ``A`` has no such value, or it is not a number then.
         Autolev's programs fold such a constant into the code rather than
         reading it (docs/semantics.md, "Input")."""
-        entry = self._ws.table.entries.get(key)
+        entry = self._table.entries.get(key)
         if entry is None or entry.kind not in ("constant", "variable", "specified"):
             return None
-        rhs = self._ws.table.rhs.get(entry.obj)
+        rhs = self._table.rhs.get(entry.obj)
         if not isinstance(rhs, sp.Basic):
             return None
         from .run import input_values
@@ -371,10 +409,10 @@ class Numerics:
         values, _ = input_values(self._make_job("ALGEBRAIC"), {}, zero_missing=False)
         known = {
             e.obj: values.values[name]
-            for name, e in self._ws.table.entries.items()
+            for name, e in self._table.entries.items()
             if name in values.values
         }
-        value = self._ws.resolve(rhs).xreplace(known)
+        value = self._script.resolve(rhs).xreplace(known)
         return _as_number(value) if value.is_number else None
 
     @statement
@@ -442,7 +480,7 @@ class Numerics:
         ``dynamics`` (:meth:`ode_function`) only Dynamics/ODE jobs count."""
         jobs = self._numerics.jobs
         if not jobs:
-            raise NumericsError(f"{self._ws.filename} has no CODE statement")
+            raise NumericsError(f"{self._filename} has no CODE statement")
         moving = [j for j in jobs if j.kind in ("DYNAMICS", "ODE")]
         if name is None:
             if len(moving) == 1:
@@ -451,12 +489,12 @@ class Numerics:
                 return jobs[0]
             if dynamics and not moving:
                 raise NumericsError(
-                    f"{self._ws.filename} has no CODE Dynamics or ODE job;"
+                    f"{self._filename} has no CODE Dynamics or ODE job;"
                     f" jobs: {_listing(jobs)}"
                 )
             which = f", {len(moving)} of them Dynamics/ODE" if moving else ""
             raise NumericsError(
-                f"{self._ws.filename} has {len(jobs)} CODE jobs{which}; choose"
+                f"{self._filename} has {len(jobs)} CODE jobs{which}; choose"
                 f" one with job= (--job): {_listing(jobs)}"
             )
         if isinstance(name, int) and not isinstance(name, bool):
@@ -481,11 +519,11 @@ class Numerics:
             return found[0]
         if found:
             raise NumericsError(
-                f"{self._ws.filename}: {name!r} names {len(found)} CODE jobs; "
+                f"{self._filename}: {name!r} names {len(found)} CODE jobs; "
                 f"choose one with job=: {_listing(jobs)}"
             )
         raise NumericsError(
-            f"{self._ws.filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
+            f"{self._filename} has no CODE job {name!r}; jobs: {_listing(jobs)}"
         )
 
     def document_run(self, run: Any) -> Any:
@@ -557,7 +595,7 @@ class Numerics:
         merged = dict(values or {})
         merged.update(more)
         job = self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
             from .run import evaluate_with_inputs
 
@@ -585,7 +623,9 @@ class Numerics:
         origin: tuple[str, str | None] | None = None,
         **given: Any,
     ) -> Any:
-        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once),
+        """A :class:`.sweep.Sweep` of the quantity ``name`` (compiled once,
+        or for a large quantity over a few points its numpy tape:
+        :func:`.quantities.takes_tape`),
         or without a name of the ``CODE`` job (``job`` chooses it as for
         :meth:`run`), over the grid that the 1-D arrays among the values
         span (several: their product); scalars are fixed.  Values are given
@@ -596,7 +636,7 @@ class Numerics:
         this process); the work goes out in chunks of ``chunksize`` points.
         ``origin`` is the module's ``(__name__, __file__)``, which a job
         sweep's workers import (a module's ``sweep()`` passes it)."""
-        from .sweep import sweep_job, sweep_quantity
+        from .sweep import grid, sweep_job, sweep_quantity
 
         merged = dict(values or {})
         merged.update(given)
@@ -616,12 +656,15 @@ class Numerics:
         if job is not None:
             raise NumericsError("sweep() takes a quantity's name or job=..., not both")
         snapshot = self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         if not isinstance(value, sp.Basic | sp.MatrixBase | int | float):
             raise NumericsError(
                 f"{name} is not a scalar or matrix; it cannot be evaluated"
             )
-        plan = self.compiled_quantity(name, merged, backend, snapshot)
+        # the grid's size: a sweep of a few points may run a numpy tape
+        # (quantities.takes_tape)
+        points = math.prod(len(a) for a in grid(merged)[0].values())
+        plan = self.compiled_quantity(name, merged, backend, snapshot, points=points)
 
         def exact(point: Mapping[str, Any]) -> Any:
             from .run import evaluate_with_inputs
@@ -673,25 +716,62 @@ class Numerics:
         given: Mapping[str, Any] = {},  # noqa: B006 - read only
         backend: str | None = None,
         job: Job | None = None,
+        *,
+        points: int | None = None,
     ) -> Any:
         """The named quantity compiled for values of the names in ``given``
-        (a :class:`.quantities.CompiledQuantity`), built once and kept."""
-        from .quantities import compile_quantity, quantity_key, split_given
+        (a :class:`.quantities.CompiledQuantity`), built once and kept (on
+        disk too: :func:`.quantities.plan_quantity`).  ``points``: the size
+        of a sweep, which its numpy tape serves instead when
+        :func:`.quantities.takes_tape` says so."""
+        from .quantities import (
+            plan_quantity,
+            quantity_key,
+            split_given,
+            takes_tape,
+            tape_quantity,
+        )
         from .run import input_values
 
         job = job if job is not None else self._make_job("ALGEBRAIC", line=None)
-        value = self._ws.value(name)
+        value = self._script.value(name)
         settable, free = split_given(job, given)
         _vals, keep = input_values(job, dict.fromkeys(settable, 0.0), False)
         key = quantity_key(name, free, frozenset(keep), backend)
+        tape_key = (*key, "tape")
         cache = self._compiled
-        found = cache.get(key)
-        if found is None or found[0] is not value:
-            plan = compile_quantity(
-                job, value, name, frozenset(free), frozenset(keep), backend
+
+        def kept(slot: tuple) -> Any:
+            found = cache.get(slot)
+            return found if found is not None and found[0] is value else None
+
+        numpy = backend is not None and backend.strip().lower() == "numpy"
+        compiled = None if numpy else kept(key)
+        tape = kept(tape_key)
+        if tape is None and (compiled is None or points is not None):
+            # the tape decides a sweep's way, and keys the disk cache
+            made = tape_quantity(job, value, name, frozenset(free), frozenset(keep))
+            cache[tape_key] = tape = (value, made)
+        if takes_tape(tape[1] if tape else None, points, backend):
+            return tape[1]
+        if numpy:
+            raise NumericsError(
+                f"{name} holds an operation that numpy does not evaluate here;"
+                " use another backend"
             )
-            cache[key] = found = (value, plan)
-        return found[1]
+        if compiled is not None:
+            return compiled[1]
+        plan = plan_quantity(
+            job,
+            value,
+            name,
+            frozenset(free),
+            frozenset(keep),
+            backend,
+            tape=tape[1] if tape else None,
+        )
+        cache[key] = (value, plan)
+        return plan
 
 
 def _listing(jobs: list[Job]) -> str:

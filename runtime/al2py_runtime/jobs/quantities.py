@@ -36,9 +36,13 @@ from __future__ import annotations
 
 import hashlib
 import inspect
+import json
+import os
+import tempfile
 import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -76,15 +80,34 @@ class Kernel:
     is built once there (:func:`kernel_for`, keyed by the source's hash)."""
 
     def __init__(
-        self, backend: str, source: Any, n_params: int, n_out: int, key: str
+        self,
+        backend: str,
+        source: Any,
+        n_params: int,
+        n_out: int,
+        key: str,
+        source_file: Path | None = None,
     ) -> None:
         self.backend = backend
-        self.source = source
+        self._source = source
+        #: where the source is kept (a kernel loaded from the disk cache
+        #: reads it only when it is sent to a worker)
+        self._source_file = source_file
         self.n_params = n_params
         self.n_out = n_out
         self.key = key
+        #: the compiled library (the C backend), once built or loaded
+        self.library: Path | None = None
         self._call: Any = None
         self._lock = threading.Lock()
+
+    @property
+    def source(self) -> Any:
+        """The C translation units ``[(text, flags)]`` or the Python source."""
+        if self._source is None and self._source_file is not None:
+            units = json.loads(self._source_file.read_text(encoding="utf-8"))
+            self._source = [(text, tuple(flags)) for text, flags in units]
+        return self._source
 
     def __reduce__(self) -> tuple:
         return (kernel_for, (self.backend, self.source, self.n_params, self.n_out))
@@ -94,7 +117,7 @@ class Kernel:
         with self._lock:
             if self._call is None:
                 if self.backend == "c":
-                    self._call = _load_c(self.source, self.n_out)
+                    self._call, self.library = _load_c(self.source, self.n_out)
                 else:
                     self._call = _load_python(self.source)
                 _BUILT[0] += 1
@@ -135,8 +158,11 @@ _BUILT = [0]
 
 def kernels_built() -> int:
     """How many kernels this process has built (or loaded) from their
-    source: once per model and worker, whatever the number of chunks."""
-    return _BUILT[0]
+    source, numpy tapes too: once per model and worker, whatever the number
+    of chunks."""
+    from .tape import tapes_built
+
+    return _BUILT[0] + tapes_built()
 
 
 def _key(backend: str, source: Any) -> str:
@@ -160,7 +186,7 @@ def kernel_for(backend: str, source: Any, n_params: int, n_out: int) -> Kernel:
 
 def _load_c(units: Sequence[tuple[str, Sequence[str]]], n_out: int) -> Any:
     path, _hit = backends.build_stream(iter(units))
-    return _open_c(path, n_out)
+    return _open_c(path, n_out), path
 
 
 def _open_c(path: Any, n_out: int) -> Any:
@@ -231,6 +257,7 @@ def build_kernel(
             path, _hit = backends.build_stream(printed())
             kernel = kernel_for("c", units, len(params), len(exprs))
             kernel.attach(_open_c(path, len(exprs)))
+            kernel.library = path
             return kernel
         except backends.BackendError as exc:
             if backends.choose(backend) != "auto":
@@ -265,6 +292,9 @@ class CompiledQuantity:
     kinds: list[str]
     kernel: Kernel
     notes: list[str] = field(default_factory=list)
+    #: how it was made: ``compiled`` here, loaded from ``disk``
+    #: (:func:`load_plan`), or a ``numpy`` tape (:func:`tape_quantity`)
+    origin: str = "compiled"
 
 
 def split_given(job: Job, given: Mapping[str, Any]) -> tuple[dict, dict]:
@@ -307,6 +337,232 @@ def compile_quantity(
         made.time, made.dummies, made.exprs, made.intermediates, backend
     )
     return CompiledQuantity(name, shape, labels, kinds, kernel)
+
+
+#: a sweep of at most this many points of a large quantity runs its numpy
+#: tape (:func:`takes_tape`): a few tenths of a second for the bicycle's
+#: ``AMAT`` against seconds to print and compile it; beyond, the compiled
+#: function's microseconds a point win
+ONE_SHOT_POINTS = 20_000
+
+
+def takes_tape(
+    tape: CompiledQuantity | None, points: int | None, backend: str | None
+) -> bool:
+    """Whether a sweep of ``points`` points (None: ``evaluate()``) runs the
+    quantity's numpy tape rather than a compiled function.  The rule looks
+    at nothing that a cache holds, so that the same call gives the same
+    numbers in any process, serially or on any executor:
+
+    * ``backend="numpy"``: always;
+    * the default backend (no ``backend=``, ``AL2PY_BACKEND`` unset or
+      ``auto``): a sweep of at most :data:`ONE_SHOT_POINTS` points of a
+      quantity of more than :data:`SMALL` intermediates (one that C would
+      compile: seconds of printing and compiling, against tenths of a
+      second for the tape);
+    * else never."""
+    if tape is None:
+        return False
+    if backend is not None:
+        return backend.strip().lower() == "numpy"
+    if os.environ.get("AL2PY_BACKEND", "auto").strip().lower() not in ("", "auto"):
+        return False
+    if points is None or points > ONE_SHOT_POINTS:
+        return False
+    return tape.kernel.tape.zs > SMALL  # type: ignore[attr-defined]
+
+
+def plan_quantity(
+    job: Job,
+    value: Any,
+    name: str,
+    free: frozenset[str],
+    keep: frozenset[Any],
+    backend: str | None = None,
+    *,
+    tape: CompiledQuantity | None = None,
+) -> CompiledQuantity:
+    """``value`` compiled, the cheapest way at hand: the function compiled
+    earlier for the same key (by any process, with this runtime) loaded
+    from disk in milliseconds, else compiled (:func:`compile_quantity`) and
+    kept on disk.  The key (:func:`disk_key`) is the digest of the
+    quantity's numpy tape ``tape`` (:func:`tape_quantity`), found without
+    printing anything; without a tape the quantity is compiled and not
+    kept."""
+    key = disk_key(tape, backend) if tape is not None else None
+    plan = load_plan(key) if key is not None else None
+    if plan is not None:
+        return plan
+    plan = compile_quantity(job, value, name, free, keep, backend)
+    if key is not None and plan.kernel.backend == _resolved(tape, backend):
+        store_plan(key, plan)
+    return plan
+
+
+def _resolved(tape: Any, backend: str | None) -> str:
+    """The backend :func:`build_kernel` takes for ``tape``'s quantity: C
+    for more than :data:`SMALL` intermediates when there is a compiler
+    (``auto``), else ``lambdify`` (also for ``llvm``)."""
+    name = backends.choose(backend)
+    if name == "auto":
+        big = tape.kernel.tape.zs > SMALL
+        return "c" if big and backends.available("c") else "lambdify"
+    return "c" if name == "c" else "lambdify"
+
+
+def tape_quantity(
+    job: Job, value: Any, name: str, free: frozenset[str], keep: frozenset[Any]
+) -> CompiledQuantity | None:
+    """``value`` as a numpy :class:`~.tape.Tape` (the expressions that
+    :func:`~.run.numeric_entries` makes, not renamed); None if it holds a
+    node the tape does not take."""
+    from ..intermediates import autoz
+    from .fingerprint import collector_paused
+    from .run import label_of, resolved_entries, t
+    from .tape import TapeKernel, build_tape
+
+    drop = [obj for key, (_kind, obj) in job.entries.items() if key in free]
+    if isinstance(value, sp.MatrixBase):
+        shape: tuple[int, ...] = tuple(value.shape)
+        entries = list(value)
+    else:
+        shape, entries = (), [value]
+    exprs = []
+    with collector_paused():
+        for e in resolved_entries(job, entries, [*drop, *keep]):
+            book = autoz.book_of(e)
+            exprs.append(book.rebase(e) if book is not None else e)
+    made = build_tape(exprs, t)
+    if made is None:
+        return None
+    tape, objs = made
+    labels = [label_of(obj, job.names) for obj in objs]
+    kinds = [_kind(job, o, label) for o, label in zip(objs, labels, strict=True)]
+    kernel = TapeKernel(tape, len(objs), len(exprs))
+    return CompiledQuantity(
+        name, shape, labels, kinds, kernel, origin="numpy"  # type: ignore[arg-type]
+    )
+
+
+# ------------------------------------------------------------- on disk
+
+#: a change of the sidecar's layout changes this
+SIDECAR = 1
+
+
+def disk_key(tape: CompiledQuantity, backend: str | None) -> str:
+    """The key of the compiled quantity on disk (:mod:`.fingerprint`): its
+    tape's digest, name, shape, parameters and their kinds, the runtime,
+    the backend chosen, and the compiler and its flags."""
+    from .fingerprint import quantity_key
+
+    compiler = backends.find_compiler() if backends.available("c") else None
+    extra = [
+        f"backend={_resolved(tape, backend)}",  # the default and "c" share C
+        f"small={SMALL}",
+        f"cc={compiler}",
+        f"flags={backends.C_FLAGS}",
+        f"sidecar={SIDECAR}",
+    ]
+    return quantity_key(
+        tape.kernel.tape,  # type: ignore[attr-defined]
+        normalize_name(tape.name),
+        tape.shape,
+        tape.params,
+        tape.kinds,
+        extra,
+    )
+
+
+def _disk() -> Path:
+    folder = backends.cache_folder() / "quantities"
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder
+
+
+def store_plan(key: str, plan: CompiledQuantity) -> None:
+    """Keep ``plan`` (compiled by C) on disk under ``key``: a JSON sidecar
+    with what the compiled quantity needs besides the library (shape,
+    parameter names in argument order, their kinds, the kernel's size and
+    key, the library's name), and the C units (read only when the kernel
+    is sent to an executor's workers).  Nothing is kept if the cache cannot
+    be written (it is only a cache)."""
+    kernel = plan.kernel
+    if not isinstance(kernel, Kernel) or kernel.backend != "c":
+        return  # lambdify builds in milliseconds, and writes nothing to disk
+    meta: dict[str, Any] = {
+        "sidecar": SIDECAR,
+        "key": key,
+        "name": plan.name,
+        "shape": list(plan.shape),
+        "params": list(plan.params),
+        "kinds": list(plan.kinds),
+        "backend": kernel.backend,
+        "n_params": kernel.n_params,
+        "n_out": kernel.n_out,
+        "kernel": kernel.key,
+    }
+    try:
+        if kernel.library is None:
+            return
+        folder = _disk()
+        meta["library"] = kernel.library.name
+        units = [[text, list(flags)] for text, flags in kernel.source]
+        _write(folder / f"{key}.units.json", json.dumps(units))
+        _write(folder / f"{key}.json", json.dumps(meta, indent=1))
+    except OSError:
+        return
+
+
+def _write(path: Path, text: str) -> None:
+    """``text`` into ``path`` atomically (a reader sees all or nothing)."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp_", suffix=path.suffix)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            handle.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def load_plan(key: str) -> CompiledQuantity | None:
+    """The plan kept on disk under ``key`` (:func:`store_plan`), its
+    library loaded; None if there is none, or it cannot be used (a
+    library removed, a sidecar unreadable): then it is compiled again."""
+    try:
+        folder = backends.cache_folder() / "quantities"
+        path = folder / f"{key}.json"
+        if not path.exists():
+            return None
+        meta = json.loads(path.read_text(encoding="utf-8"))
+        if meta.get("sidecar") != SIDECAR or meta.get("key") != key:
+            return None
+        n_params, n_out = int(meta["n_params"]), int(meta["n_out"])
+        if meta["backend"] != "c":
+            return None
+        library = backends.cache_folder() / meta["library"]
+        units = folder / f"{key}.units.json"
+        if not (library.exists() and units.exists()):
+            return None
+        call = _open_c(library, n_out)
+        with _KERNELS_LOCK:
+            kernel = _KERNELS.get(meta["kernel"])
+            if kernel is None:
+                kernel = Kernel("c", None, n_params, n_out, meta["kernel"], units)
+                _KERNELS[meta["kernel"]] = kernel
+        kernel.attach(call)
+        kernel.library = library
+        return CompiledQuantity(
+            meta["name"],
+            tuple(meta["shape"]),
+            list(meta["params"]),
+            list(meta["kinds"]),
+            kernel,
+            origin="disk",
+        )
+    except (OSError, ValueError, KeyError, TypeError, backends.BackendError):
+        return None
 
 
 def _kind(job: Job, obj: Any, label: str) -> str:

@@ -292,9 +292,8 @@ def numeric_entries(
     the objects in ``drop``) as expressions of argument dummies: every
     constant, variable, specified quantity and derivative left is a
     parameter (what ``evaluate()`` compiles; see :mod:`.quantities`)."""
-    table = _without(job.rhs, drop)
     slots = _Slots(job)
-    exprs = [slots.numeric(_resolve(sp.sympify(e), table), what) for e in entries]
+    exprs = [slots.numeric(e, what) for e in resolved_entries(job, entries, drop)]
     return NumericEntries(
         slots.time,
         list(slots.params),
@@ -302,6 +301,15 @@ def numeric_entries(
         exprs,
         list(slots.intermediates),
     )
+
+
+def resolved_entries(job: Job, entries: Iterable[Any], drop: Iterable[Any]) -> list:
+    """``entries`` with the job's right-hand sides substituted until none is
+    left (but those of the objects in ``drop``): what :func:`numeric_entries`
+    makes numeric, and what a quantity's numpy tape walks
+    (:func:`~.quantities.tape_quantity`)."""
+    table = _without(job.rhs, drop)
+    return [_resolve(sp.sympify(e), table) for e in entries]
 
 
 def label_of(obj: Any, names: Mapping[Any, str]) -> str:

@@ -56,6 +56,8 @@ from .records import NumericsError
 if TYPE_CHECKING:
     import numpy as np
 
+    from ..model.model import Model
+
 __all__ = ["Geometry", "Layout", "Scene", "layout", "scene"]
 
 t = dynamicsymbols._t
@@ -79,25 +81,21 @@ class Geometry:
     gravity: tuple[Vector, ...] = ()
 
     @classmethod
-    def of(cls, model: Any) -> Geometry:
+    def of(cls, model: Model) -> Geometry:
         """The geometry of ``model`` (a workspace's ``al.model``) now."""
         st = model.registry
         n = st.newtonian
         centers = {f: rec.point for f, rec in st.bodies.items()}
         seen: set[frozenset] = set()
         given = []
-        for p, targets in st.edges.items():
-            for q, v in targets.items():
+        for p in st.points.values():
+            for q in p._pos_dict:  # the positions given (sympy's set_pos)
                 pair = frozenset((p, q))
                 if pair not in seen:
                     seen.add(pair)
-                    given.append((p, q, v))
+                    given.append((p, q, q._pos_dict[p]))  # P_P_Q>
         rest = [p for p, f in st.fixed_in.items() if f is n]
-        rest += [
-            p
-            for (p, f), v in st.vel.items()
-            if f is n and isinstance(v, Vector) and not v.args  # ``0>``
-        ]
+        rest += [p for (p, f) in st.vel_given if f is n and not p.vel(f).args]  # ``0>``
         return cls(
             n,
             dict(st.frames),

@@ -15,12 +15,14 @@ process.  Work goes out in chunks (``chunksize`` points each; by default
 about four chunks per worker), and each worker builds the model once:
 
 * a quantity's chunk carries its :class:`~.quantities.Kernel` (the C or
-  Python source, built once per worker process) and the parameter rows;
+  Python source, built once per worker process) or its numpy
+  :class:`~.tape.Tape` (:func:`~.quantities.takes_tape`), and the
+  parameter rows;
 * a job's chunk carries the generated module's name and file, imported
   once per worker process, and the points' values.
 
-The results are the serial ones, bit for bit: the same compiled code runs
-on the same values.  A sweep of more than 2 s shows its progress on
+The results are the serial ones, bit for bit: the same compiled code (or
+tape) runs on the same values.  A sweep of more than 2 s shows its progress on
 standard error when that is a terminal (:class:`~..progress.Steps`).
 
 >>> import numpy as np
@@ -214,6 +216,11 @@ def sweep_quantity(
         notes.append(f"{', '.join(unused)} does not appear in {plan.name}")
     pool = resolve_executor(executor)
     size = len(points.times)
+    if getattr(plan.kernel, "vectorized", False) and pool is None:
+        # a numpy tape takes many points at once
+        from .tape import CHUNK
+
+        chunksize = chunksize or CHUNK
     ranges = _chunks(size, pool, chunksize)
     chunks = [
         (

@@ -4,7 +4,10 @@ One concept per module; :class:`al2py_runtime.model.model.Model` assembles them:
 
 * :mod:`.model` -- :class:`~.model.Model`, the parts below as one object
 * :mod:`.kinematics` -- pure vector and rotation helpers (no model state)
-* :mod:`.state` -- the model's registry (bodies, particles, positions...)
+* :mod:`.state` -- the model's registry: what sympy's objects lack (which
+  velocities are Autolev's, accelerations, bodies, loads, speeds)
+* :mod:`.script` -- :class:`~.script.ScriptNames`, what the model calls on
+  its script (the workspace), as a typed protocol
 * :mod:`.objects` -- declarations, mass and inertia, syntactical forms
 * :mod:`.points` -- positions, velocities, orientations, two-point formulas
 * :mod:`.vectors` -- Autolev's vector and dyadic commands

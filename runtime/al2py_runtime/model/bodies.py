@@ -17,12 +17,12 @@ from sympy.physics.vector import (
 )
 
 from . import kinematics as kin
-from .state import command
+from .state import ModelPart, command
 
 __all__ = ["MassAndLoads"]
 
 
-class MassAndLoads:
+class MassAndLoads(ModelPart):
     """Mass distribution (``Mass()``, ``CM``, inertia dyadics and the transfer theorem) and loads (``Force_P>``, ``Torque_B>``, ``Force(O/Q, v>)``, ``Gravity``)."""
 
     # ------------------------------------------------- mass distribution
@@ -31,17 +31,16 @@ class MassAndLoads:
         """The mass of a body (its frame) or particle (its point); one not
         declared is an error, or zero when ``strict`` is false."""
         st = self.registry
-        if isinstance(obj, ReferenceFrame) and obj in st.bodies:
-            m = st.bodies[obj].mass
-        elif isinstance(obj, Point) and obj in st.particles:
-            m = st.particles[obj]
-        else:
+        if not (
+            (isinstance(obj, ReferenceFrame) and obj in st.bodies)
+            or (isinstance(obj, Point) and obj in st.particles)
+        ):
             raise ValueError(f"{obj} is not a body or particle")
-        if m is None:
+        if obj not in st.mass_given:
             if strict:
                 raise ValueError(f"the mass of {obj} has not been declared")
             return sp.Integer(0)
-        return m
+        return st.sympy_bodies[obj].mass  # the RigidBody's or Particle's
 
     def massive_objects(self, objs: tuple) -> list:
         """``objs``, or when none are given every body and particle in

@@ -12,12 +12,12 @@ from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 from ..names.variables import time_function
 from . import kinematics as kin
-from .state import command, t
+from .state import ModelPart, command, t
 
 __all__ = ["Energy"]
 
 
-class Energy:
+class Energy(ModelPart):
     """``KE()``, ``Momentum``, ``Gyrostat``, power and ``NiCheck()``."""
 
     # ---------------------------------------------- energy and momentum
@@ -141,11 +141,11 @@ class Energy:
         forces and torques; it stays constant along exact solutions."""
         name = "NICHECK_WORK"
         k = 1
-        while name in self.ws.table.entries:
+        while name in self.table.entries:
             k += 1
             name = f"NICHECK_WORK{k}"
         work = time_function(name, real=True)
         self.registry.checks.append(work)
-        self.ws.table.declare(name, "variable", work, order=1)
-        self.ws.table.rhs[sp.Derivative(work, t)] = self.power()
+        self.table.declare(name, "variable", work, order=1)
+        self.table.rhs[sp.Derivative(work, t)] = self.power()
         return self.ke() - work

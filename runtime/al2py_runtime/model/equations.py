@@ -26,7 +26,7 @@ from .fastkane import (
     measure_split,
     named_measures,
 )
-from .state import command, query, t
+from .state import ModelPart, command, query, t
 
 __all__ = ["KaneEquations"]
 
@@ -35,7 +35,7 @@ def _same(expr: Any) -> Any:
     return expr
 
 
-class KaneEquations:
+class KaneEquations(ModelPart):
     """``Fr()``, ``FrStar()``, ``Constrain``, ``Kane()`` and the sympy ``KanesMethod`` of the model."""
 
     # -------------------------------------------------- Fr and Fr*
@@ -63,7 +63,7 @@ class KaneEquations:
         st = self.registry
         speeds = self.fix_fr_speeds("Fr()")
         rows = [sp.Integer(0)] * len(speeds)
-        book = self.ws.intermediates
+        book = self.script.intermediates
         loads = [(f, self.vel(p, n), n) for p, f in st.forces.items()]
         loads += [(tq, self.ang_vel(b, n), b) for b, tq in st.torques.items()]
         moved = False  # a loaded velocity depends on a speed
@@ -83,14 +83,14 @@ class KaneEquations:
                 )
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
-                keep = self.ws.specified_inputs([])
+                keep = self.script.specified_inputs([])
                 mf = named_measures(self.actual_value(f, keep), frame, book)
                 parts = self._zpartials(v, speeds, frame, book)
                 moved = moved or any(x != 0 for p in parts for x in p)
                 dots = active_rows([(parts, mf)], len(speeds), book.name)
             rows = [r + d for r, d in zip(rows, dots, strict=True)]
         if not moved and not self._moves_with(speeds):
-            names = ", ".join(self.ws.name_of(u) for u in speeds)
+            names = ", ".join(self.script.name_of(u) for u in speeds)
             one = len(speeds) == 1
             raise ValueError(
                 "Fr(): no velocity or angular velocity depends on the generalized"
@@ -266,7 +266,7 @@ class KaneEquations:
         accels = [sp.Derivative(u, t) for u in self.generalized_speeds()]
 
         # Both AutoZ settings derive over intermediates (issue 21).
-        book = self.ws.book
+        book = self.script.book
         rates = self._time_rates(book)
 
         index = {u: k for k, u in enumerate(self.generalized_speeds())}
@@ -338,8 +338,10 @@ class KaneEquations:
         on.  An auxiliary speed has no kinematical equation to forget: it is
         missing from the velocities that should carry it."""
         still = [u for u, m in zip(speeds, moved, strict=True) if not m]
-        aux = [self.ws.name_of(u) for u in still if u in self.registry.auxiliary]
-        other = [self.ws.name_of(u) for u in still if u not in self.registry.auxiliary]
+        aux = [self.script.name_of(u) for u in still if u in self.registry.auxiliary]
+        other = [
+            self.script.name_of(u) for u in still if u not in self.registry.auxiliary
+        ]
         head = "FrStar(): no velocity or angular velocity of a massive object"
         parts = []
         if other:
@@ -373,28 +375,28 @@ class KaneEquations:
         if which not in ("DEPENDENT", "AUXILIARY"):
             raise ValueError("Constrain takes DEPENDENT[...] or AUXILIARY[...]")
         st = self.registry
-        mat = self.ws.table.stored.get(which)
+        mat = self.table.stored.get(which)
         if not isinstance(mat, sp.MatrixBase):
             raise ValueError(f"Constrain: {which} has not been assigned")
         speeds = [sp.sympify(u) for u in speeds]
-        eqs = [self.ws.resolve(e, keep=self.generalized_speeds()) for e in mat]
-        book = self.ws.solver_book(len(speeds))
+        eqs = [self.script.resolve(e, keep=self.generalized_speeds()) for e in mat]
+        book = self.script.solver_book(len(speeds))
         if book is None:  # a closed form reads the equations' form
-            eqs = [self.ws.form(e) for e in eqs]
+            eqs = [self.script.form(e) for e in eqs]
         sols = solve_speeds(eqs, speeds, book, self.configuration_variables())
         gens = self.rates_and_speeds()
         out = []
         for u, s in zip(speeds, sols, strict=True):
-            out.append(self.ws.assign(self.ws.name_of(u), s, line=line))
+            out.append(self.script.assign(self.script.name_of(u), s, line=line))
         for u, s in zip(speeds, sols, strict=True):
             ds = self.resolved_dt(s, self.registry.newtonian)
             ds = kin.tidy(ds, gens)
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
-            name = self.ws.name_of(u)
+            name = self.script.name_of(u)
             base = name.rstrip("'")
-            if self.ws.table.entries[base].order > len(name) - len(base):
-                self.ws.assign(name + "'", ds, line=line)
+            if self.table.entries[base].order > len(name) - len(base):
+                self.script.assign(name + "'", ds, line=line)
         target = st.dependent if which == "DEPENDENT" else st.auxiliary
         for u in speeds:
             if u not in target:
@@ -414,12 +416,12 @@ class KaneEquations:
         derivatives (named quantities are kept)."""
         speeds = set(self.generalized_speeds())
         table = dict(self.registry.speed_dt)
-        for k, v in self.ws.table.rhs.items():
+        for k, v in self.table.rhs.items():
             if k in speeds:
                 table[k] = v
             elif isinstance(k, sp.Derivative):
-                name = self.ws.table.by_obj.get(k.expr)
-                if name is not None and self.ws.table.entries[name].kind == "variable":
+                name = self.table.by_obj.get(k.expr)
+                if name is not None and self.table.entries[name].kind == "variable":
                     table[k] = v
         for _ in range(50):
             new = expr.xreplace(table)
@@ -443,7 +445,7 @@ class KaneEquations:
         solution (so the constraint forces cancel), and, when force measure
         numbers are named, solved for them (assigned as their RHS)."""
         st = self.registry
-        zero = self.ws.table.stored.get("ZERO")
+        zero = self.table.stored.get("ZERO")
         if not isinstance(zero, sp.MatrixBase):
             raise ValueError("Kane: ZERO has not been assigned")
         speeds = st.fr_speeds if st.fr_speeds is not None else self.fr_speeds()
@@ -455,13 +457,17 @@ class KaneEquations:
         aux = [u for u in speeds if u in st.auxiliary]
         ind = [u for u in speeds if u not in st.auxiliary]
         z = dict(
-            zip(speeds, (self._speed_subs(self.ws.val(r)) for r in rows), strict=True)
+            zip(
+                speeds,
+                (self._speed_subs(self.script.val(r)) for r in rows),
+                strict=True,
+            )
         )
         combined = []
         for i in ind:
             row = z[i]
             for x in aux:
-                c = sp.diff(self.ws.resolve(self.ws.table.rhs.get(x, x)), i)
+                c = sp.diff(self.script.resolve(self.table.rhs.get(x, x)), i)
                 if c != 0:
                     row += c * z[x]
             combined.append(row)
@@ -476,7 +482,7 @@ class KaneEquations:
         accels = [sp.Derivative(u, t) for u in ind]
         gens = self.rates_and_speeds()
         arranged = sp.Matrix(arrange(cleaned, accels, gens))
-        self.ws.update("ZERO", arranged, line=line)
+        self.script.update("ZERO", arranged, line=line)
         sols = ()
         if forces:
             eqs = [z[x] for x in aux]
@@ -486,12 +492,12 @@ class KaneEquations:
                 )
             # Few forces: closed form, as before, whatever AutoZ says.
             many = len(forces) > SMALL
-            book = self.ws.solver_book(len(forces)) if many else None
+            book = self.script.solver_book(len(forces)) if many else None
             if book is None:
-                eqs = [self.ws.form(e) for e in eqs]
+                eqs = [self.script.form(e) for e in eqs]
             sols = solve_speeds(eqs, forces, book, self.configuration_variables())
             for f, s in zip(forces, sols, strict=True):
-                self.ws.assign(self.ws.name_of(f), kin.tidy(s, gens), line=line)
+                self.script.assign(self.script.name_of(f), kin.tidy(s, gens), line=line)
         st.kane = {
             "speeds": ind,
             "dependent": list(st.dependent),
@@ -512,7 +518,7 @@ class KaneEquations:
             q = dq.expr
             if q in checks or q in keep or dq in keep:
                 continue
-            rhs = self.actual_value(self.ws.table.rhs[dq], keep)
+            rhs = self.actual_value(self.table.rhs[dq], keep)
             if sp.sympify(rhs).has(*keep):
                 out.append((q, rhs))
         return out

@@ -223,12 +223,12 @@ def kane_inputs(model: Any) -> KaneInputs:
     for u in speeds:
         if isinstance(u, sp.Derivative):
             q = u.expr
-            new = dynamicsymbols(f"{model.ws.name_of(q)}_U", real=True)
+            new = dynamicsymbols(f"{model.script.name_of(q)}_U", real=True)
             swap[sp.Derivative(q, (t, 2))] = sp.Derivative(new, t)
             swap[u] = new
-            names[new] = model.ws.name_of(u)
+            names[new] = model.script.name_of(u)
         else:
-            names[u] = model.ws.name_of(u)
+            names[u] = model.script.name_of(u)
 
     # Constraint forces solved by Kane(F1, F2) stay unknowns: their
     # right-hand sides hold the accelerations.
@@ -236,7 +236,7 @@ def kane_inputs(model: Any) -> KaneInputs:
 
     # sympy's KanesMethod (and PyDy, Linearizer) take plain expressions: the
     # AutoZ intermediates are written out.
-    book = model.ws.book_if_made()
+    book = model.script.book_if_made()
     if book is not None:
         _plain_dcms(list(st.frames.values()) + [n], book)
 
@@ -249,7 +249,7 @@ def kane_inputs(model: Any) -> KaneInputs:
     # Autolev's AUXILIARY speeds that the constraints make zero are sympy's
     # auxiliary speeds; the others (tutor7c's U2, U3) are dependent speeds.
     zero_aux = [
-        u for u in st.auxiliary if model.ws.resolve(model.ws.table.rhs.get(u, u)) == 0
+        u for u in st.auxiliary if model.script.resolve(model.table.rhs.get(u, u)) == 0
     ]
     solved = [u for u in speeds if u in st.dependent or u in st.auxiliary]
     solved = [u for u in solved if u not in zero_aux]
@@ -264,7 +264,7 @@ def kane_inputs(model: Any) -> KaneInputs:
         if isinstance(u, sp.Derivative) and u.derivative_count == 1:
             q_ind.append(u.expr)
             kd_eqs.append(u - new)
-    constraints = [swap.get(u, u) - fix(model.ws.table.rhs[u]) for u in solved]
+    constraints = [swap.get(u, u) - fix(model.table.rhs[u]) for u in solved]
     bodies = []
     for o in st.massive:
         m = fix(model.body_mass(o, strict=False))

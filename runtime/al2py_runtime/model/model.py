@@ -5,11 +5,13 @@ commands (:data:`MODEL_COMMANDS`) as ``al.model.NAME(...)``.
 
 Objects.  A frame or body *is* its ``sympy.physics.vector.ReferenceFrame``
 (named with the Autolev name, ``A1>`` is ``A.x``); points, particles and mass
-centers *are* ``Point``s (``"O"``, ``"AO"``).  Masses, inertias, positions,
-velocities, accelerations, forces and torques live in a registry kept by the
-workspace (orientations and angular velocities are stored on the sympy frames
-themselves, so sympy's frame algebra -- ``dcm``, ``express``, ``dot`` --
-works).
+centers *are* ``Point``s (``"O"``, ``"AO"``).  Positions, velocities,
+orientations and angular velocities are stored on the sympy objects
+themselves (``set_pos``, ``set_vel``, ``orient_axis``,
+``set_ang_vel``), so sympy's algebra -- ``pos_from``, ``vel``, ``dcm``,
+``express``, ``dot`` -- works; the model's registry keeps what sympy lacks
+(which velocities are Autolev's, the accelerations Autolev forms, loads,
+speeds: :class:`~.state.ModelState`).
 
 Kinematic rules (as Autolev):
 
@@ -32,12 +34,15 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..names.settings import Settings
+from ..names.table import NameTable
 from ..safety import Statements
 from .bodies import MassAndLoads
 from .energy import Energy
 from .equations import KaneEquations
 from .objects import Objects
 from .points import Kinematics
+from .script import ScriptNames
 from .speeds import Speeds
 from .state import ModelState
 from .vectors import VectorCommands
@@ -51,20 +56,31 @@ class Model(
     """Frames, bodies, points, kinematics, mass, loads and Kane's method of
     one script: the workspace's ``model`` part.
 
-    ``ws`` is the script's name table (declarations, right-hand sides,
-    settings and responses); the model reads and writes names through it."""
+    It is given the small objects of the script it uses (see
+    :class:`~.state.ModelPart`): ``script``, the operations on Autolev names
+    it calls (:class:`~.script.ScriptNames`: evaluate, normalize, assign,
+    respond); ``table``, the script's names; ``settings``; ``statements``;
+    ``unit_norms``, the list of unit-norm quantities it adds to."""
 
-    def __init__(self, ws: Any) -> None:
-        self.ws = ws
+    def __init__(
+        self,
+        script: ScriptNames,
+        *,
+        table: NameTable,
+        settings: Settings,
+        statements: Statements,
+        unit_norms: list[tuple[Any, ...]],
+    ) -> None:
+        self.script = script
+        self.table = table
+        self.settings = settings
+        #: where the script's statement calls stand (errors of a module's
+        #: call name its ``.al`` line)
+        self.statements = statements
+        self.unit_norms = unit_norms
         #: The model's state: frames, points, bodies, loads, speeds (shared by
         #: the parts; read by :mod:`.kane` to build ``KanesMethod``'s inputs).
         self.registry = ModelState()
-
-    @property
-    def statements(self) -> Statements:
-        """Where the workspace's statement calls stand (errors of a
-        module's call name its ``.al`` line)."""
-        return self.ws.statements
 
 
 #: The commands a :class:`Model` answers (``al.model.simprot``,

@@ -18,12 +18,12 @@ from sympy.physics.vector import (
 
 from ..vocabulary import Decl, Form, match
 from . import kinematics as kin
-from .state import BodyRecord, command
+from .state import BodyRecord, ModelPart, command
 
 __all__ = ["Objects"]
 
 
-class Objects:
+class Objects(ModelPart):
     """Declarations of frames, bodies, particles and points; mass and inertia; Autolev's syntactical forms (``P_O_Q>``, ``V_P_N>``, ``N_A``...) read and assigned."""
 
     def _new_point(
@@ -32,8 +32,7 @@ class Objects:
         st = self.registry
         p = Point(name.upper()) if p is None else p
         st.points[name.upper()] = p
-        st.edges.setdefault(p, {})
-        self.ws.table.declare(name, kind, p)
+        self.table.declare(name, kind, p)
         return p
 
     def _new_frame(
@@ -42,7 +41,7 @@ class Objects:
         st = self.registry
         f = ReferenceFrame(name.upper()) if f is None else f
         st.frames[name.upper()] = f
-        self.ws.table.declare(name, kind, f)
+        self.table.declare(name, kind, f)
         origin = self._new_point(name.upper() + "O", Decl.POINT)
         st.fixed_in[origin] = f
         return f
@@ -89,7 +88,7 @@ class Objects:
         st = self.registry
         for body in particles:
             p = self._new_point(body.point.name, Decl.PARTICLE, body.point)
-            st.particles[p] = None
+            st.particles.add(p)
             st.massive.append(p)
             st.sympy_bodies[p] = body
 
@@ -119,7 +118,7 @@ class Objects:
         st = self.registry
         for n in names:
             p = self._new_point(n, Decl.PARTICLE)
-            st.particles[p] = None
+            st.particles.add(p)
             st.massive.append(p)
             st.sympy_bodies[p] = Particle(p.name, p, sp.S.Zero)
             out.append(p)
@@ -142,11 +141,10 @@ class Objects:
         return self.registry.sympy_bodies[point]
 
     def _sync_sympy_body(self, obj: Any) -> None:
-        """Give the module's ``RigidBody``/``Particle`` the declared mass and
-        central inertia."""
+        """Give the module's ``RigidBody`` the central inertia of the
+        inertia as declared (when its position and mass are known)."""
         st = self.registry
         body = st.sympy_bodies[obj]
-        body.mass = self.body_mass(obj, strict=False)
         if isinstance(obj, ReferenceFrame):
             try:
                 central = self.central_inertia(obj)
@@ -188,13 +186,14 @@ class Objects:
     def set_mass(self, obj: Any, value: Any) -> None:
         """``Mass A=12.5``: the mass of body ``A`` (frame) or particle (point)."""
         st = self.registry
-        value = self.ws.normalize(value)
-        if isinstance(obj, ReferenceFrame) and obj in st.bodies:
-            st.bodies[obj].mass = value
-        elif isinstance(obj, Point) and obj in st.particles:
-            st.particles[obj] = value
-        else:
+        value = self.script.normalize(value)
+        if not (
+            (isinstance(obj, ReferenceFrame) and obj in st.bodies)
+            or (isinstance(obj, Point) and obj in st.particles)
+        ):
             raise ValueError(f"{obj} is not a body or particle; it has no mass")
+        st.sympy_bodies[obj].mass = value  # the mass is the sympy body's
+        st.mass_given[obj] = None
         self._sync_sympy_body(obj)
 
     @command
@@ -217,7 +216,7 @@ class Objects:
         ``Inertia A(B), ...`` gives the scalars in frame ``basis``'s basis."""
         b = self.body_record(body)
         m = sp.Matrix([[i11, i12, i31], [i12, i22, i23], [i31, i23, i33]]).applyfunc(
-            self.ws.normalize
+            self.script.normalize
         )
         b.inertia = kin.frame_dyadic(basis if basis is not None else body, m)
         b.inertia_point = about if about is not None else b.point
@@ -293,30 +292,29 @@ class Objects:
         properties (``value`` already normalized) and respond with ``label``."""
         st = self.registry
         if isinstance(value, Vector | Dyadic):
-            value = kin.vmap(value, self.ws.normalize)
+            value = kin.vmap(value, self.script.normalize)
         if kind is Form.DCM:
             a, b = objs
             m = sp.Matrix(value)
             if m.shape != (3, 3):
                 raise ValueError(f"{label} must be a 3x3 matrix")
             b.orient_explicit(a, m)
-            self.ws.respond(label, m, line=line)
+            self.script.respond(label, m, line=line)
             return m
         if kind is Form.INERTIA:
             body, p = objs
             value = kin.as_dyadic(value)
             b = self.body_record(body)
             b.inertia, b.inertia_point = value, p
-            self.ws.respond(label, value, line=line)
+            self.script.respond(label, value, line=line)
             return value
         value = kin.as_vector(value)
         if kind is Form.POS:
             self.add_position(objs[0], objs[1], value)
         elif kind is Form.VEL:
-            st.vel[(objs[0], objs[1])] = value
-            objs[0].set_vel(objs[1], value)
+            self.keep_given("V", objs[0], objs[1], value)
         elif kind is Form.ACC:
-            st.acc[(objs[0], objs[1])] = value
+            self.keep_given("A", objs[0], objs[1], value)
         elif kind is Form.ANGVEL:
             objs[0].set_ang_vel(objs[1], value)
         elif kind is Form.ANGACC:
@@ -327,11 +325,11 @@ class Objects:
             _replace_loads(st.loads, objs[0], Force(objs[0], value))
         elif kind is Form.TORQUE:
             _replace_loads(st.loads, objs[0], Torque(objs[0], value))
-        self.ws.respond(label, value, line=line)
+        self.script.respond(label, value, line=line)
         return value
 
     def _set(self, kind: Form, objs: list, value: Any, line: Any) -> Any:
-        value = self.ws.normalize(value, rearrange=self.ws.settings.factoring)
+        value = self.script.normalize(value, rearrange=self.settings.factoring)
         label = kind.row.spell(*(o.name for o in objs))
         return self._set_form(kind, objs, value, label, line)
 

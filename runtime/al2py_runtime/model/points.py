@@ -19,27 +19,26 @@ from sympy.physics.vector import (
 
 from . import kinematics as kin
 from .arrange import solve_speeds
-from .state import command, t
+from .state import ModelPart, command, t
 
 __all__ = ["Kinematics"]
 
 
-class Kinematics:
+class Kinematics(ModelPart):
     """Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet)."""
 
     # --------------------------------------------------------- positions
 
     def add_position(self, p: Point, q: Point, v: Vector) -> None:
-        """Record ``P_P_Q> = v`` both ways (``P_Q_P>`` is ``-v``), as an edge
-        of the position chains :meth:`pos` follows."""
-        st = self.registry
-        st.edges.setdefault(p, {})[q] = v
-        st.edges.setdefault(q, {})[p] = -v
+        """Record ``P_P_Q> = v``: sympy's ``Q.set_pos(P, v)``, which keeps it
+        both ways (``P_Q_P>`` is ``-v``), as an edge of the position chains
+        :meth:`pos` follows."""
         q.set_pos(p, v)
 
     def _path(self, p: Point, q: Point) -> list[Point] | None:
-        """Shortest chain of given positions from p to q."""
-        edges = self.registry.edges
+        """Shortest chain of given positions from p to q (breadth first, in
+        the order the positions were given: see docs/semantics.md,
+        "Kinematics stored on the sympy objects")."""
         prev = {p: None}
         todo = deque([p])
         while todo:
@@ -49,7 +48,7 @@ class Kinematics:
                 while prev[path[-1]] is not None:
                     path.append(prev[path[-1]])
                 return path[::-1]
-            for s in edges.get(r, {}):
+            for s in r._pos_dict:
                 if s not in prev:
                     prev[s] = r
                     todo.append(s)
@@ -63,10 +62,9 @@ class Kinematics:
         path = self._path(p, q)
         if path is None:
             raise ValueError(f"P_{p.name}_{q.name}> is not defined")
-        edges = self.registry.edges
         out = Vector(0)
         for a, b in zip(path, path[1:], strict=False):
-            out += edges[a][b]
+            out += b._pos_dict[a]  # P_A_B>, as given
         return out
 
     # ------------------------------------------------------- resolution
@@ -74,15 +72,15 @@ class Kinematics:
     def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         keep = list(keep)
-        return kin.vmap(x, self.ws.resolver(keep))
+        return kin.vmap(x, self.script.resolver(keep))
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
         cosmetic, and large models are why AutoZ is on)."""
-        return v if self.ws.settings.autoz else kin.tidy_vector(v)
+        return v if self.settings.autoz else kin.tidy_vector(v)
 
     def _tidy(self, e: Any) -> Any:
-        return e if self.ws.settings.autoz else kin.tidy(e)
+        return e if self.settings.autoz else kin.tidy(e)
 
     def auxiliary_kept(self) -> list:
         """The auxiliary speeds and their derivatives: what formed quantities
@@ -100,7 +98,7 @@ class Kinematics:
         # one formed before it does (U1 is set to zero in the equations).
         keep = self.auxiliary_kept()
         v = self.actual_value(v, keep)
-        book = self.ws.book
+        book = self.script.book
         if isinstance(v, Dyadic):
             out = time_derivative(v, frame)
         elif isinstance(v, Vector):
@@ -118,8 +116,8 @@ class Kinematics:
 
     def _known_vel(self, p: Point, frame: ReferenceFrame) -> Vector | None:
         st = self.registry
-        if (p, frame) in st.vel:
-            return st.vel[(p, frame)]
+        if (p, frame) in st.vel_given:
+            return p.vel(frame)
         if (p, frame) in st.deferred_vel:
             return self._deferred("V", p, frame)
         if st.fixed_in.get(p) is frame:
@@ -133,12 +131,11 @@ class Kinematics:
         known = self._known_vel(p, frame)
         if known is not None:
             return known
-        edges = self.registry.edges
         seen = {p}
         todo = deque([p])
         while todo:
             r = todo.popleft()
-            for s in edges.get(r, {}):
+            for s in r._pos_dict:
                 if s in seen:
                     continue
                 seen.add(s)
@@ -219,7 +216,7 @@ class Kinematics:
         each entry named (the product along the tree of short matrices), in
         sympy's own cache, so that dot products, ``express`` and time
         derivatives work with short expressions."""
-        book = self.ws.book
+        book = self.script.book
         if len(b._dcm_dict) != 1:
             return
         (a,) = b._dcm_dict
@@ -246,7 +243,7 @@ class Kinematics:
 
         The axis may also be a vector (``Simprot(N, A, N1>, X)``, or any
         direction): B is rotated by ``angle`` about it, right-handed."""
-        axis = self.ws.val(axis)
+        axis = self.script.val(axis)
         if isinstance(axis, Vector):
             if axis == Vector(0):
                 raise ValueError("Simprot: the axis vector is zero")
@@ -263,7 +260,7 @@ class Kinematics:
             unit = (a.x, a.y, a.z)[abs(int(axis)) - 1]
             b.orient_axis(a, unit if int(axis) > 0 else -unit, angle)
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     @command
@@ -276,7 +273,7 @@ class Kinematics:
         ``A_B`` is recorded."""
         m = sp.Matrix(a.dcm(b))
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     @command
@@ -295,14 +292,14 @@ class Kinematics:
         else:
             self._orient(a, b, m)
         self._name_dcms(b)
-        self.ws.respond(f"{a.name}_{b.name}", m, line=line)
+        self.script.respond(f"{a.name}_{b.name}", m, line=line)
         return m
 
     def _note_unit_norm(self, kind: str, qs: tuple) -> None:
         """Euler parameters have unit norm (for ``al2py check``'s points)."""
         if kind.upper() == "EULER" and len(qs) == 4:
-            if tuple(qs) not in self.ws.unit_norms:
-                self.ws.unit_norms.append(tuple(qs))
+            if tuple(qs) not in self.unit_norms:
+                self.unit_norms.append(tuple(qs))
 
     def _dcm_angvel(self, a, b, kind, qs) -> list:
         """B measure numbers of the angular velocity implied by the
@@ -335,11 +332,11 @@ class Kinematics:
         ``Angvel(A, B)`` shows the angular velocity ``W_B_A>`` of B in A."""
         if kind is None:
             w = self.with_kindiffs(self.ang_vel(b, a))
-            self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+            self.script.respond(f"W_{b.name}_{a.name}>", w, line=line)
             return w
         w = self.with_kindiffs(kin.frame_vector(b, self._dcm_angvel(a, b, kind, qs)))
         b.set_ang_vel(a, w)
-        self.ws.respond(f"W_{b.name}_{a.name}>", w, line=line)
+        self.script.respond(f"W_{b.name}_{a.name}>", w, line=line)
         return w
 
     @command
@@ -372,8 +369,8 @@ class Kinematics:
             rates = solve_speeds(eqs, qdots)
         out = []
         for q, r in zip(qs, rates, strict=True):
-            r = r if self.ws.settings.autoz else kin.simplify_small(r)
-            out.append(self.ws.assign(self.ws.name_of(q) + "'", r, line=line))
+            r = r if self.settings.autoz else kin.simplify_small(r)
+            out.append(self.script.assign(self.script.name_of(q) + "'", r, line=line))
         return tuple(out)
 
     # ------------------------------------------------- velocity formulas
@@ -421,7 +418,11 @@ class Kinematics:
             st = self.registry
             table = st.deferred_vel if which == "V" else st.deferred_acc
             table[(p, n)] = (a, o)
-            (st.vel if which == "V" else st.acc).pop((p, n), None)
+            if which == "V":
+                st.vel_given.pop((p, n), None)
+                p._vel_dict.pop(n, None)  # sympy has no unset
+            else:
+                st.acc.pop((p, n), None)
             return None
         return self._set_formed(which, p, n, v, line)
 
@@ -442,7 +443,7 @@ class Kinematics:
     def v1pt(self, n, a, o, p, *, line=None) -> Vector:
         """``V1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         r = self.pos(o, p)
-        vpa = self.registry.vel.get((p, a))
+        vpa = p.vel(a) if (p, a) in self.registry.vel_given else None
         if vpa is None:
             vpa = self.resolved_dt(r, a)
         v = self.vel(o, n) + vpa + kin.cross(self.ang_vel(a, n), r)
@@ -453,7 +454,7 @@ class Kinematics:
         """``A1pt(N, A, O, P)``: O fixed on A, P moving on A."""
         st = self.registry
         r = self.pos(o, p)
-        vpa = st.vel.get((p, a))
+        vpa = p.vel(a) if (p, a) in st.vel_given else None
         if vpa is None:
             vpa = self.resolved_dt(r, a)
         apa = st.acc.get((p, a))
@@ -469,11 +470,20 @@ class Kinematics:
         )
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
-    def _set_formed(self, which, p, n, v, line) -> Vector:
-        v = self.with_kindiffs(v)
-        table = self.registry.vel if which == "V" else self.registry.acc
-        table[(p, n)] = v
+    def keep_given(self, which: str, p: Point, n: ReferenceFrame, v: Vector) -> None:
+        """``V_P_N> = v`` (``which`` is ``"V"``) or ``A_P_N> = v`` (``"A"``),
+        given or formed: a velocity is stored on the sympy point
+        (``P.set_vel(N, v)``) and marked as Autolev's own; an acceleration is
+        kept by the model (see :class:`~.state.ModelState`)."""
+        st = self.registry
         if which == "V":
             p.set_vel(n, v)
-        self.ws.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
+            st.vel_given[(p, n)] = None
+        else:
+            st.acc[(p, n)] = v
+
+    def _set_formed(self, which, p, n, v, line) -> Vector:
+        v = self.with_kindiffs(v)
+        self.keep_given(which, p, n, v)
+        self.script.respond(f"{which}_{p.name}_{n.name}>", v, line=line)
         return v

@@ -14,12 +14,12 @@ from sympy.physics.vector import (
 )
 
 from . import kinematics as kin
-from .state import SPEED_NAME, command, mentions, t
+from .state import SPEED_NAME, ModelPart, command, mentions, t
 
 __all__ = ["Speeds"]
 
 
-class Speeds:
+class Speeds(ModelPart):
     """Generalized speeds and coordinates as Autolev identifies them (docs/semantics.md, "Generalized speeds"), kinematical differential equations, partial velocities."""
 
     # ------------------------------------------------------- speeds
@@ -28,7 +28,7 @@ class Speeds:
     def motion_variables(self, *names: str, line: int | None = None) -> Any:
         """``MotionVariables' Q{2}'', U{2}'``: variables (as ``Variables``)
         that also describe the motion (see :meth:`generalized_speeds`)."""
-        out = self.ws.variables(*names, line=line)
+        out = self.script.variables(*names, line=line)
         objs = out if isinstance(out, tuple) else (out,)
         st = self.registry
         st.motion.extend(o for o in objs if o not in st.motion)
@@ -54,9 +54,9 @@ class Speeds:
         solved = set(st.dependent) | set(st.auxiliary)
         # Constrain gives their derivatives right-hand sides too
         solved |= {sp.Derivative(u, t) for u in solved}
-        rhs = self.ws.table.rhs
+        rhs = self.table.rhs
         found = []
-        for name, entry in self.ws.table.entries.items():
+        for name, entry in self.table.entries.items():
             m = SPEED_NAME.match(name)
             if m and entry.kind == "variable":
                 # ``U1 = Dot(W_A_N>, A1>)`` names an expression: not a speed
@@ -74,7 +74,7 @@ class Speeds:
                 continue
             if dq in rhs and dq not in solved:
                 continue
-            if self.ws.table.entries[self.ws.name_of(q)].order == 1 or any(
+            if self.table.entries[self.script.name_of(q)].order == 1 or any(
                 sp.sympify(e).has(q) for e in kin_eqs
             ):
                 out.append(q)
@@ -116,7 +116,7 @@ class Speeds:
         terms of the generalized speeds."""
         speeds = set(self.generalized_speeds())
         table = {
-            dq: self.ws.table.rhs[dq]
+            dq: self.table.rhs[dq]
             for dq in self.kinematical_equations()
             if dq.expr not in speeds and dq not in speeds
         }
@@ -129,10 +129,10 @@ class Speeds:
         not) that have a right-hand side while ``Q`` itself has none: the
         kinematical differential equations ``Q' = ...``, in declaration
         order."""
-        rhs = self.ws.table.rhs
+        rhs = self.table.rhs
         solved = set(self.registry.dependent) | set(self.registry.auxiliary)
         out = []
-        for entry in self.ws.table.entries.values():
+        for entry in self.table.entries.values():
             q = entry.obj
             if entry.kind != "variable" or q is t or q in rhs:
                 continue
@@ -191,7 +191,8 @@ class Speeds:
         vector; several give a tuple of vectors, in order."""
         speeds = list(speeds) or self.fr_speeds()
         out = [
-            kin.tidy_vector(x) for x in self.partial_velocities(self.ws.val(v), speeds)
+            kin.tidy_vector(x)
+            for x in self.partial_velocities(self.script.val(v), speeds)
         ]
         return out[0] if len(out) == 1 else tuple(out)
 
@@ -199,7 +200,7 @@ class Speeds:
     def remainder(self, v: Any) -> Vector:
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
         speeds = self.fr_speeds()
-        v = self.actual_value(self.ws.val(v), speeds)
+        v = self.actual_value(self.script.val(v), speeds)
         return kin.tidy_vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
         )

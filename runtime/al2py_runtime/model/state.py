@@ -5,12 +5,17 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector, dynamicsymbols
 
-from ..safety import statement
+from ..safety import Statements, statement
+
+if TYPE_CHECKING:
+    from ..names.settings import Settings
+    from ..names.table import NameTable
+    from .script import ScriptNames
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -21,9 +26,15 @@ SPEED_NAME = re.compile(r"U(\d+)$")
 
 @dataclass
 class BodyRecord:
+    """What Autolev keeps of a body beside its sympy ``RigidBody`` (whose
+    mass and central inertia are the body's): the inertia as the script
+    gave it, about any point (``Inertia B, ...`` or ``I_B_P>> = ...``),
+    whose central dyadic follows by the transfer theorem when it is used
+    (sympy's ``RigidBody.inertia`` forms it at once, which needs the
+    position and the mass then)."""
+
     frame: ReferenceFrame
     point: Point
-    mass: Any = None
     inertia: Any = None  # Dyadic about ``inertia_point`` (None: not given)
     inertia_point: Point | None = None
 
@@ -35,15 +46,31 @@ class ModelState:
     points: dict = field(default_factory=dict)  # name -> Point
     fixed_in: dict = field(default_factory=dict)  # Point -> frame (origins)
     bodies: dict = field(default_factory=dict)  # ReferenceFrame -> BodyRecord
-    particles: dict = field(default_factory=dict)  # Point -> mass or None
+    particles: set = field(default_factory=set)  # the particles' points
+    #: the bodies (frames) and particles (points) whose mass was declared, in
+    #: order (a dict used as an ordered set); the mass itself is the sympy
+    #: ``RigidBody``/``Particle``'s (``sympy_bodies``), Autolev's "not
+    #: declared" is the absence here
+    mass_given: dict = field(default_factory=dict)
     massive: list = field(default_factory=list)  # bodies' frames and particles
     sympy_bodies: dict = field(
         default_factory=dict
     )  # frame/Point -> RigidBody/Particle
-    edges: dict = field(default_factory=dict)  # Point -> {Point: P_from_to>}
-    vel: dict = field(default_factory=dict)  # (Point, frame) -> Vector
+    # Positions, velocities, orientations and angular velocities are stored
+    # once, on the sympy objects (``Q.set_pos(P, v)``, ``P.set_vel(N, v)``,
+    # ``B.orient_axis(...)``, ``B.set_ang_vel(A, w)``; Kinematics reads them
+    # back).  The model keeps only what sympy lacks (docs/semantics.md,
+    # "Kinematics stored on the sympy objects").
+    #: ``(P, N)`` whose velocity ``P.vel(N)`` the script gave or V2pts/V1pt
+    #: formed, in order (a dict used as an ordered set: every value is
+    #: None); Autolev forms any other velocity from positions when used
+    vel_given: dict = field(default_factory=dict)
+    #: ``(P, N) -> A_P_N>`` given or formed by A2pts/A1pt, and ``(B, A) ->
+    #: ALF_B_A>`` given (both ways): Autolev's accelerations, which are not
+    #: sympy's (their dependent speeds' derivatives are substituted, which
+    #: sympy's KanesMethod, reading ``P.acc(N)``, would count twice)
     acc: dict = field(default_factory=dict)
-    angacc: dict = field(default_factory=dict)  # (B, A) -> Vector
+    angacc: dict = field(default_factory=dict)
     #: ``ALF_B_A> = v`` as the script wrote it: B -> [(A, v)], in order
     angacc_given: dict = field(default_factory=dict)
     #: the loads, sympy ``Force``/``Torque`` objects (or ``(Point, Vector)``,
@@ -74,6 +101,26 @@ class ModelState:
     def torques(self) -> dict:
         """Frame -> the resultant of its torque loads, in order."""
         return _resultants(self.loads, ReferenceFrame)
+
+
+class ModelPart:
+    """What every part of :class:`~.model.Model` works with, given to its
+    constructor: the model's own state, and the small objects of the script
+    it uses (no reference to the workspace as a whole)."""
+
+    #: frames, points, bodies, loads, speeds (the parts' shared state)
+    registry: ModelState
+    #: the script's operations on Autolev names (:class:`~.script.ScriptNames`)
+    script: ScriptNames
+    #: the script's names: declarations, right-hand sides, stored values
+    table: NameTable
+    #: ``AutoZ``, ``Factoring``, ``Digits``...
+    settings: Settings
+    #: where the script's statement calls stand (errors name the .al line)
+    statements: Statements
+    #: quantities constrained to unit norm (Euler parameters), for
+    #: ``al2py check``'s random points
+    unit_norms: list[tuple[Any, ...]]
 
 
 def _resultants(loads: list, kind: type) -> dict:

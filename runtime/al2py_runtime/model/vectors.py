@@ -15,12 +15,12 @@ from sympy.physics.vector import (
 )
 
 from . import kinematics as kin
-from .state import command
+from .state import ModelPart, command
 
 __all__ = ["VectorCommands"]
 
 
-class VectorCommands:
+class VectorCommands(ModelPart):
     """Autolev's vector and dyadic commands: ``Express``, ``Represent``, ``Dot``, ``Cross``, ``Mag``, ``UnitVec``, ``1>>``, ``D`` and ``Dt`` of vectors."""
 
     # ------------------------------------------------ vector operations
@@ -43,7 +43,7 @@ class VectorCommands:
         """``Represent(x, A)``: a vector -> the row matrix of its A measure
         numbers, a dyadic -> the 3x3 matrix; and back: a 3-element matrix ->
         vector, a 3x3 matrix -> dyadic."""
-        x = self.ws.val(x)
+        x = self.script.val(x)
         if isinstance(x, Vector):
             return sp.Matrix(
                 [[kin.tidy(x.dot(e)) for e in (frame.x, frame.y, frame.z)]]
@@ -62,7 +62,7 @@ class VectorCommands:
     @command
     def matrix(self, frame: ReferenceFrame, x: Any) -> sp.Matrix:
         """``Matrix(A, v>)``: see :meth:`represent`."""
-        x = self.ws.val(x)
+        x = self.script.val(x)
         if not isinstance(x, Vector | Dyadic) and x != 0:
             raise TypeError("Matrix(A, x) needs a vector or dyadic")
         return self.represent(x, frame)
@@ -71,14 +71,14 @@ class VectorCommands:
     def vector(self, frame: ReferenceFrame, *m: Any) -> Vector:
         """``Vector(A, x, y, z)`` or ``Vector(A, M)``."""
         if len(m) == 1:
-            m = list(self.ws.val(m[0]))
+            m = list(self.script.val(m[0]))
         return kin.frame_vector(frame, m)
 
     @command
     def dyadic(self, frame: ReferenceFrame, *m: Any) -> Dyadic:
         """``Dyadic(A, M)`` (3x3), nine scalars (row by row) or three (diagonal)."""
         if len(m) == 1:
-            mat = sp.Matrix(self.ws.val(m[0]))
+            mat = sp.Matrix(self.script.val(m[0]))
         elif len(m) == 9:
             mat = sp.Matrix(3, 3, list(m))
         elif len(m) == 3:
@@ -91,32 +91,32 @@ class VectorCommands:
 
     @command
     def dot(self, a: Any, b: Any) -> Any:
-        a, b = self.ws.val(a), self.ws.val(b)
+        a, b = self.script.val(a), self.script.val(b)
         if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
             return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
         return kin.tidy(kin.vdot(a, b))
 
     @command
     def cross(self, a: Any, b: Any) -> Any:
-        return kin.vmap(kin.vcross(self.ws.val(a), self.ws.val(b)), kin.tidy)
+        return kin.vmap(kin.vcross(self.script.val(a), self.script.val(b)), kin.tidy)
 
     @command
     def magsq(self, v: Any) -> Any:
-        v = self.ws.val(v)
+        v = self.script.val(v)
         if isinstance(v, Vector):
             return kin.tidy(v.dot(v))
         return sp.sympify(v) ** 2
 
     @command
     def mag(self, v: Any) -> Any:
-        v = self.ws.val(v)
+        v = self.script.val(v)
         if isinstance(v, Vector):
             return sp.sqrt(self.magsq(v))
         return sp.Abs(sp.sympify(v))
 
     @command
     def unitvec(self, v: Any) -> Vector:
-        v = self.ws.val(v)
+        v = self.script.val(v)
         m = self.mag(v)
         if m == 0:
             raise ValueError("UnitVec of the zero vector")
@@ -136,13 +136,13 @@ class VectorCommands:
     def vector_matrix(self, rows: list) -> kin.VectorMatrix:
         """A matrix literal of vectors, ``[V1>; V2>]`` (an argument of Dot)."""
         return kin.VectorMatrix(
-            [[kin.as_vector(self.ws.val(e)) for e in r] for r in rows]
+            [[kin.as_vector(self.script.val(e)) for e in r] for r in rows]
         )
 
     @command
     def trace(self, y: Any) -> Any:
         """``Trace(A)`` of a matrix or a dyadic."""
-        y = self.ws.val(y)
+        y = self.script.val(y)
         if isinstance(y, Dyadic):
             if not y.args:
                 return sp.Integer(0)

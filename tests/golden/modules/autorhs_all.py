@@ -1,11 +1,9 @@
-"""Autolev script autorhs_all.al, converted to Python.
-
-Converted from autorhs_all.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
+"""Autolev script autorhs_all.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import autorhs_all`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python autorhs_all.py`` prints the transcript Autolev would print.
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python
+autorhs_all.py`` prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,13 +11,10 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python autorhs_all.py [-h] [--set NAME=VALUE] [--job STEM]
-                             [--tfinal TFINAL] [--outdir OUTDIR] [--plot]
-                             [--animate] [--backend {auto,c,llvm,lambdify}]
-                             [--zero-missing] [--emit-code DIR] [--no-run]
-                             [--max-seconds S] [--max-evals N]
+usage: python autorhs_all.py [-h] [options]
 
-Print the Autolev transcript of autorhs_all.al and perform its numerical CODE job.
+Print the Autolev transcript of autorhs_all.al and perform its numerical CODE
+job.
 
 options:
   -h, --help            show this help message and exit
@@ -61,54 +56,24 @@ else:  # imported only here, so that the --help above answers at once
 
 al = Workspace("autorhs_all.al", __file__)
 
-# al> AUTORHS ALL
-al.settings.set("Autorhs", "ALL")
-# al> Constants B
-B = symbols("B", real=True)
+al.settings.set("Autorhs", "ALL")  # al> AUTORHS ALL
+B = symbols("B", real=True)  # al> Constants B
 al.declare_constants(B, line=2)
-# al> A = 7
-A = al.assign("A", 7, line=3)
-# al> C = A + B
-C = al.assign("C", A + B, line=4)
-# al> D = C*SIN(C)
-D = al.assign("D", C * sin(C), line=5)
+A = al.assign("A", 7, line=3)  # al> A = 7
+C = al.assign("C", A + B, line=4)  # al> C = A + B
+D = al.assign("D", C * sin(C), line=5)  # al> D = C*SIN(C)
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

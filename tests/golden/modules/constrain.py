@@ -1,11 +1,9 @@
-"""Autolev script constrain.al, converted to Python.
+"""Autolev script constrain.al converted by al2py 0.2.0: edit the .al file
+instead.
 
-Converted from constrain.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import constrain`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python constrain.py`` prints the transcript Autolev would print.
+``import constrain`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python
+constrain.py`` prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,13 +11,10 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python constrain.py [-h] [--set NAME=VALUE] [--job STEM]
-                           [--tfinal TFINAL] [--outdir OUTDIR] [--plot]
-                           [--animate] [--backend {auto,c,llvm,lambdify}]
-                           [--zero-missing] [--emit-code DIR] [--no-run]
-                           [--max-seconds S] [--max-evals N]
+usage: python constrain.py [-h] [options]
 
-Print the Autolev transcript of constrain.al and perform its numerical CODE job.
+Print the Autolev transcript of constrain.al and perform its numerical CODE
+job.
 
 options:
   -h, --help            show this help message and exit
@@ -72,8 +67,7 @@ A_body, B_body, C_body = (
     al.model.rigid_body(B),
     al.model.rigid_body(C),
 )
-# al> Points         P                % Distal end of C
-P = Point("P")
+P = Point("P")  # al> Points         P                % Distal end of C
 al.model.declare_points(P)
 # al> Variables      U{3}            % Generalized speeds
 U1, U2, U3 = al.variables("U1", "U2", "U3", line=5)
@@ -84,65 +78,34 @@ LA, LB, LC = symbols("LA LB LC", real=True)
 al.declare_constants(LA, LB, LC, line=7)
 # al> Specified      Vx, Vy           % Specified motion of P
 Vx, Vy = al.specified("VX", "VY", line=8)
-# al> Simprot(N, A, 3, QA)
-A.orient_axis(N, N.z, Qa)
+A.orient_axis(N, N.z, Qa)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=9)
-# al> Simprot(N, B, 3, QB)
-B.orient_axis(N, N.z, Qb)
+B.orient_axis(N, N.z, Qb)  # al> Simprot(N, B, 3, QB)
 al.model.given_orientation(B, N, line=10)
-# al> Simprot(N, C, 3, QC)
-C.orient_axis(N, N.z, Qc)
+C.orient_axis(N, N.z, Qc)  # al> Simprot(N, C, 3, QC)
 al.model.given_orientation(C, N, line=11)
 # al> V_P_N> = LA*U1*A2> + LB*U2*B2> + LC*U3*C2>
 P.set_vel(N, LA * U1 * A.y + LB * U2 * B.y + LC * U3 * C.y)
 al.model.given_vel(P, N, line=12)
-# al> DEPENDENT[1] = DOT(V_P_N>,N1>) - Vx
-DEPENDENT = al.assign(
+DEPENDENT = al.assign(  # al> DEPENDENT[1] = DOT(V_P_N>,N1>) - Vx
     "DEPENDENT[1]", al.model.dot(al.model.vel(P, N), N.x) - Vx, line=13
 )
-# al> DEPENDENT[2] = DOT(V_P_N>,N2>) - Vy
-DEPENDENT = al.assign(
+DEPENDENT = al.assign(  # al> DEPENDENT[2] = DOT(V_P_N>,N2>) - Vy
     "DEPENDENT[2]", al.model.dot(al.model.vel(P, N), N.y) - Vy, line=14
 )
-# al> Constrain( DEPENDENT[U2,U3] )
-al.model.constrain("DEPENDENT", [U2, U3], line=15)
+al.model.constrain("DEPENDENT", [U2, U3], line=15)  # al> Constrain( DEPENDENT[U2,U3] )
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

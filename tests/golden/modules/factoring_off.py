@@ -1,11 +1,9 @@
-"""Autolev script factoring_off.al, converted to Python.
-
-Converted from factoring_off.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
+"""Autolev script factoring_off.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import factoring_off`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python factoring_off.py`` prints the transcript Autolev would print.
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python
+factoring_off.py`` prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,13 +11,10 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python factoring_off.py [-h] [--set NAME=VALUE] [--job STEM]
-                               [--tfinal TFINAL] [--outdir OUTDIR] [--plot]
-                               [--animate] [--backend {auto,c,llvm,lambdify}]
-                               [--zero-missing] [--emit-code DIR] [--no-run]
-                               [--max-seconds S] [--max-evals N]
+usage: python factoring_off.py [-h] [options]
 
-Print the Autolev transcript of factoring_off.al and perform its numerical CODE job.
+Print the Autolev transcript of factoring_off.al and perform its numerical CODE
+job.
 
 options:
   -h, --help            show this help message and exit
@@ -60,52 +55,23 @@ else:  # imported only here, so that the --help above answers at once
 
 al = Workspace("factoring_off.al", __file__)
 
-# al> FACTORING OFF
-al.settings.set("Factoring", "OFF")
-# al> Constants A,B,C
-A, B, C = symbols("A B C", real=True)
+al.settings.set("Factoring", "OFF")  # al> FACTORING OFF
+A, B, C = symbols("A B C", real=True)  # al> Constants A,B,C
 al.declare_constants(A, B, C, line=2)
-# al> X = A*B + A*C + A^2
-X = al.assign("X", A * B + A * C + A**2, line=3)
-# al> Y = A/C + B/C
-Y = al.assign("Y", A / C + B / C, line=4)
+X = al.assign("X", A * B + A * C + A**2, line=3)  # al> X = A*B + A*C + A^2
+Y = al.assign("Y", A / C + B / C, line=4)  # al> Y = A/C + B/C
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,11 +1,8 @@
-"""Autolev script inertia.al, converted to Python.
+"""Autolev script inertia.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from inertia.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import inertia`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python inertia.py`` prints the transcript Autolev would print.
+``import inertia`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python inertia.py``
+prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,11 +10,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python inertia.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                         [--outdir OUTDIR] [--plot] [--animate]
-                         [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                         [--emit-code DIR] [--no-run] [--max-seconds S]
-                         [--max-evals N]
+usage: python inertia.py [-h] [options]
 
 Print the Autolev transcript of inertia.al and perform its numerical CODE job.
 
@@ -61,66 +54,35 @@ else:  # imported only here, so that the --help above answers at once
 
 al = Workspace("inertia.al", __file__)
 
-# al> Points P
-P = Point("P")
+P = Point("P")  # al> Points P
 al.model.declare_points(P)
-# al> Bodies B
-B = al.model.bodies("B")
+B = al.model.bodies("B")  # al> Bodies B
 Bo = al.model.point("BO")
 B_body = al.model.rigid_body(B)
-# al> Mass B=MB
-MB = al.constants("MB+", line=3)
+MB = al.constants("MB+", line=3)  # al> Mass B=MB
 B_body.mass = MB
 al.model.given_masses(B_body, line=3)
-# al> Constants I,J,L
-I_, J, L = symbols("I J L", real=True)
+I_, J, L = symbols("I J L", real=True)  # al> Constants I,J,L
 al.declare_constants(I_, J, L, line=4)
-# al> P_Bo_P> = L*B1>
-P.set_pos(Bo, L * B.x)
+P.set_pos(Bo, L * B.x)  # al> P_Bo_P> = L*B1>
 al.model.given_pos(P, Bo, line=5)
-# al> I_B_P>> = I*B1>*B1> + I*B2>*B2> + J*B3>*B3>
-al.model.set_inertia_about(
+al.model.set_inertia_about(  # al> I_B_P>> = I*B1>*B1> + I*B2>*B2> + J*B3>*B3>
     B, P, outer(I_ * B.x, B.x) + outer(I_ * B.y, B.y) + outer(J * B.z, B.z), line=6
 )
 # al> I_B_BO>> = Inertia(Bo,B)
 al.model.set_inertia_about(B, Bo, al.model.inertia(Bo, B), line=7)
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

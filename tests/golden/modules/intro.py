@@ -1,11 +1,8 @@
-"""Autolev script intro.al, converted to Python.
+"""Autolev script intro.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from intro.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import intro`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python intro.py`` prints the transcript Autolev would print.
+``import intro`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python intro.py``
+prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,11 +10,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python intro.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                       [--outdir OUTDIR] [--plot] [--animate]
-                       [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                       [--emit-code DIR] [--no-run] [--max-seconds S]
-                       [--max-evals N]
+usage: python intro.py [-h] [options]
 
 Print the Autolev transcript of intro.al and perform its numerical CODE job.
 
@@ -60,48 +53,21 @@ else:  # imported only here, so that the --help above answers at once
 
 al = Workspace("intro.al", __file__)
 
-# al> Constants A, B
-A, B = symbols("A B", real=True)
+A, B = symbols("A B", real=True)  # al> Constants A, B
 al.declare_constants(A, B, line=1)
-# al> X = 4*(A+B) - 3*(a-b)
-X = al.assign("X", 4 * (A + B) - 3 * (A - B), line=2)
+X = al.assign("X", 4 * (A + B) - 3 * (A - B), line=2)  # al> X = 4*(A+B) - 3*(a-b)
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

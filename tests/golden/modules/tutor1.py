@@ -1,11 +1,8 @@
-"""Autolev script tutor1.al, converted to Python.
+"""Autolev script tutor1.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor1.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor1`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor1.py`` prints the transcript Autolev would print.
+``import tutor1`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor1.py``
+prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,11 +10,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor1.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor1.py [-h] [options]
 
 Print the Autolev transcript of tutor1.al and perform its numerical CODE job.
 
@@ -65,10 +58,8 @@ al = Workspace("tutor1.al", __file__)
 # al> % Problem: Examples of mathematical functions
 # al> %-----
 # al> % Mathematical declarations: variables, constants
-# al> Variables X', Y'
-X, Y = al.variables("X'", "Y'", line=5)
-# al> Constants A,B,C,D
-A, B, C, D = symbols("A B C D", real=True)
+X, Y = al.variables("X'", "Y'", line=5)  # al> Variables X', Y'
+A, B, C, D = symbols("A B C D", real=True)  # al> Constants A,B,C,D
 al.declare_constants(A, B, C, D, line=6)
 # al> %-----
 # al> % Create an expression and then rearrange (simplify) it
@@ -76,14 +67,12 @@ al.declare_constants(A, B, C, D, line=6)
 E = al.assign("E", (X + 2 * Y) ** 2 + 3 * (7 + X) * (X + Y), line=9)
 # al> Expand( E, 1:2 ) % Clear parentheses
 E = al.update("E", al.expand(E, (1, 2)), line=10)
-# al> Factor( E, X ) % Factor on X
-E = al.update("E", al.factor(E, X), line=11)
+E = al.update("E", al.factor(E, X), line=11)  # al> Factor( E, X ) % Factor on X
 # al> %-----
 # al> % Mathematical commands
 # al> Dy = D( E, Y ) % Partial derivative wrt. Y
 Dy = al.assign("DY", al.d(E, Y), line=14)
-# al> Dt = Dt( E ) % Total derivative wrt. t
-Dt = al.assign("DT", al.dt(E), line=15)
+Dt = al.assign("DT", al.dt(E), line=15)  # al> Dt = Dt( E ) % Total derivative wrt. t
 # al> TY = Taylor( X*COS(Y), 0:7, X=0,Y=0) % Multi-variable Taylor series
 TY = al.assign("TY", al.taylor(X * cos(Y), (0, 7), [(X, 0), (Y, 0)]), line=16)
 # al> F = Evaluate(TY, X=1, Y=0.5) % Symbolic/numerical evaluation
@@ -102,12 +91,10 @@ RowMatrix = al.assign("ROWMATRIX", Matrix([[1, 2, 3, 4]]), line=23)
 ColMatrix = al.assign("COLMATRIX", Matrix([1, 2, 3, 4]), line=24)
 # al> Zero[1] = A*X + B*Y - 1 % Assign elements of column matrix
 Zero = al.assign("ZERO[1]", A * X + B * Y - 1, line=25)
-# al> Zero[2] = C*X + D*Y - Pi
-Zero = al.assign("ZERO[2]", C * X + D * Y - pi, line=26)
+Zero = al.assign("ZERO[2]", C * X + D * Y - pi, line=26)  # al> Zero[2] = C*X + D*Y - Pi
 # al> %-----
 # al> % Solve a set of linear equations
-# al> Solve( Zero, X, Y )
-al.solve(Zero, [X, Y], line=29)
+al.solve(Zero, [X, Y], line=29)  # al> Solve( Zero, X, Y )
 # al> %-----
 # al> % Creating rectangular matrices
 # al> M0 = [A, B; C, 0] % Create a 2x2 matrix
@@ -118,14 +105,11 @@ M0 = al.assign("M0[2,2]", D, line=33)
 M1 = al.assign("M1", al.block([[M0, Matrix([[1, 2], [3, 4]])]]), line=34)
 # al> %-----
 # al> % Matrix commands
-# al> M2 = M0 + M0 % Matrix addition
-M2 = al.assign("M2", M0 + M0, line=37)
-# al> M3 = M0 * M0 % Matrix multiplication
-M3 = al.assign("M3", M0 * M0, line=38)
+M2 = al.assign("M2", M0 + M0, line=37)  # al> M2 = M0 + M0 % Matrix addition
+M3 = al.assign("M3", M0 * M0, line=38)  # al> M3 = M0 * M0 % Matrix multiplication
 # al> M4 = Transpose(M0) % Matrix transposition
 M4 = al.assign("M4", al.transpose(M0), line=39)
-# al> M5 = Inv(M0) % Matrix inversion
-M5 = al.assign("M5", al.inv(M0), line=40)
+M5 = al.assign("M5", al.inv(M0), line=40)  # al> M5 = Inv(M0) % Matrix inversion
 # al> M6 = Diagmat(3,1) % Makes 3x3 matrix with 1 along diagonal
 M6 = al.assign("M6", al.diagmat(3, 1), line=41)
 # al> M7 = Cols( M0, 1 ) % Returns column 1 of M0
@@ -145,42 +129,17 @@ EigValue, EigVec = al.assign_all(("EIGVALUE", "EIGVEC"), al.eig_vectors(M9), lin
 # al> %-----
 # al> % Record Autolev responses
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,13 +1,9 @@
-"""Autolev script tutor2.al, converted to Python.
+"""Autolev script tutor2.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor2.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor2`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor2.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor2`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor2.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor2.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor2.py [-h] [options]
 
 Print the Autolev transcript of tutor2.al and perform its numerical CODE job.
 
@@ -83,24 +75,19 @@ A_body, B_body, C_body = (
     al.model.rigid_body(B),
     al.model.rigid_body(C),
 )
-# al> Points O, P % Points on L
-O_, P = Point("O"), Point("P")
+O_, P = Point("O"), Point("P")  # al> Points O, P % Points on L
 al.model.declare_points(O_, P)
-# al> Points CM % Center of mass of system
-CM = Point("CM")
+CM = Point("CM")  # al> Points CM % Center of mass of system
 al.model.declare_points(CM)
 # al> %-----
 # al> % Mathematical declarations: variables, constants
-# al> Variables PHI % Angle between plates A and B
-PHI = al.variables("PHI", line=12)
-# al> Constants W=1 % Width of plate
-W = symbols("W", real=True)
+PHI = al.variables("PHI", line=12)  # al> Variables PHI % Angle between plates A and B
+W = symbols("W", real=True)  # al> Constants W=1 % Width of plate
 al.declare_constants(W, line=13)
 al.assign("W", 1, line=13)
 # al> %-----
 # al> % Mass and inertia
-# al> Mass A=M=12, B=M, C=M
-M = al.constants("M+", line=16)
+M = al.constants("M+", line=16)  # al> Mass A=M=12, B=M, C=M
 al.assign("M", 12, line=16)
 A_body.mass = M
 B_body.mass = M
@@ -117,15 +104,13 @@ C_body.central_inertia = inertia(C, M * W**2 / 12, M * W**2 / 6, M * W**2 / 12)
 al.model.given_inertia(C_body, line=19)
 # al> %-----
 # al> % Geometry relating unit vectors
-# al> Simprot(A, B, -2, PHI)
-B.orient_axis(A, -A.y, PHI)
+B.orient_axis(A, -A.y, PHI)  # al> Simprot(A, B, -2, PHI)
 al.model.given_orientation(B, A, line=22)
 # al> A_C = Diagmat(3,1) % 3x3 identity matrix
 al.model.set_dcm(A, C, al.diagmat(3, 1), line=23)
 # al> %-----
 # al> % Position vectors (Ao, Bo, Co are mass centers)
-# al> P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>
-Ao.set_pos(O_, -0.5 * W * A.x + 0.5 * W * A.y)
+Ao.set_pos(O_, -0.5 * W * A.x + 0.5 * W * A.y)  # al> P_O_Ao> = -0.5*W*A1> + 0.5*W*A2>
 al.model.given_pos(Ao, O_, line=26)
 # al> P_O_Bo> = -W*A1> + 0.5*W*A2> + 0.5*W*B1>
 Bo.set_pos(O_, -W * A.x + 0.5 * W * A.y + 0.5 * W * B.x)
@@ -133,13 +118,11 @@ al.model.given_pos(Bo, O_, line=27)
 # al> P_O_Co> = W*A2> - 0.5*W*C1> - 0.5*W*C3>
 Co.set_pos(O_, W * A.y - 0.5 * W * C.x - 0.5 * W * C.z)
 al.model.given_pos(Co, O_, line=28)
-# al> P_O_P> = W*A2> - W*C3>
-P.set_pos(O_, W * A.y - W * C.z)
+P.set_pos(O_, W * A.y - W * C.z)  # al> P_O_P> = W*A2> - W*C3>
 al.model.given_pos(P, O_, line=29)
 # al> %-----
 # al> % Center of mass of system
-# al> P_O_CM> = CM(O)
-CM.set_pos(O_, al.model.cm(O_))
+CM.set_pos(O_, al.model.cm(O_))  # al> P_O_CM> = CM(O)
 al.model.given_pos(CM, O_, line=32)
 # al> Distance = Mag( P_O_CM> )
 Distance = al.assign("DISTANCE", al.model.mag(al.model.pos(O_, CM)), line=33)
@@ -179,10 +162,8 @@ MTOTAL = al.assign("MTOTAL", al.model.mass_of(), line=48)
 GYRATION = al.assign("GYRATION", (IL / MTOTAL) ** 0.5, line=49)
 # al> %-----
 # al> % Output and units for use in program created by CODE command
-# al> UnitSystem kg, meter, sec
-al.numerics.unit_system("kg", "meter", "sec")
-# al> Output PHI degrees, DISTANCE meters, GYRATION meters
-al.numerics.output(
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg, meter, sec
+al.numerics.output(  # al> Output PHI degrees, DISTANCE meters, GYRATION meters
     [
         ("PHI", PHI, "degrees"),
         ("DISTANCE", Distance, "meters"),
@@ -196,80 +177,35 @@ al.numerics.output(
 al.numerics.code("ALGEBRAIC", sweep=(PHI, "deg", 0, 360, 1), file="tutor2.c", line=56)
 # al> %-----
 # al> % Record Autolev responses
-# al> Save tutor2.all
-al.save("tutor2.all", line=59)
+al.save("tutor2.all", line=59)  # al> Save tutor2.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

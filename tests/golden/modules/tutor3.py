@@ -1,13 +1,9 @@
-"""Autolev script tutor3.al, converted to Python.
+"""Autolev script tutor3.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor3.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor3`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor3.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor3`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor3.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor3.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor3.py [-h] [options]
 
 Print the Autolev transcript of tutor3.al and perform its numerical CODE job.
 
@@ -53,14 +45,8 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  LA = 1 m
-  LB = 2 m
-  LC = 2 m
-  LN = 1 m
-  QA = 30 deg
-  QB = 60 deg
-  QC = 20 deg
-  ABSERR = 1.0E-07
+  LA = 1 m          LB = 2 m          LC = 2 m          LN = 1 m
+  QA = 30 deg       QB = 60 deg       QC = 20 deg       ABSERR = 1.0E-07
   RELERR = 1.0E-07
 Jobs (--job STEM runs one; default: all, in script order):
   tutor3: CODE Nonlinear tutor3.for (line 35) -> tutor3.1, ...
@@ -78,8 +64,7 @@ al = Workspace("tutor3.al", __file__)
 # al> %      Problem:  Solving a set of nonlinear equations (4-bar linkage)
 # al> %-----
 # al> %      Physical declarations:  Frames and Points
-# al> Frames      A, B, C, N
-A, B, C, N = (
+A, B, C, N = (  # al> Frames      A, B, C, N
     ReferenceFrame("A"),
     ReferenceFrame("B"),
     ReferenceFrame("C"),
@@ -98,33 +83,25 @@ LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
 al.declare_constants(LA, LB, LC, LN, line=10)
 # al> %-----
 # al> %      Geometry relating unit vectors
-# al> Simprot(N, A, 3, QA)
-A.orient_axis(N, N.z, QA)
+A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=13)
-# al> Simprot(N, B, 3, QB)
-B.orient_axis(N, N.z, QB)
+B.orient_axis(N, N.z, QB)  # al> Simprot(N, B, 3, QB)
 al.model.given_orientation(B, N, line=14)
-# al> Simprot(N, C, 3, QC)
-C.orient_axis(N, N.z, QC)
+C.orient_axis(N, N.z, QC)  # al> Simprot(N, C, 3, QC)
 al.model.given_orientation(C, N, line=15)
 # al> %-----
 # al> %      Position vectors
-# al> P_O_P> = LA*A1>
-P.set_pos(O_, LA * A.x)
+P.set_pos(O_, LA * A.x)  # al> P_O_P> = LA*A1>
 al.model.given_pos(P, O_, line=18)
-# al> P_P_Q> = LB*B1>
-Q.set_pos(P, LB * B.x)
+Q.set_pos(P, LB * B.x)  # al> P_P_Q> = LB*B1>
 al.model.given_pos(Q, P, line=19)
-# al> P_R_Q> = LC*C1>
-Q.set_pos(R, LC * C.x)
+Q.set_pos(R, LC * C.x)  # al> P_R_Q> = LC*C1>
 al.model.given_pos(Q, R, line=20)
-# al> P_O_R> = LN*N2>
-R.set_pos(O_, LN * N.y)
+R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=21)
 # al> %-----
 # al> %      Configuration constraints
-# al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-LOOP_vec = al.assign(
+LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
     "LOOP>",
     al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
     line=24,
@@ -135,10 +112,8 @@ CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=25)
 CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=26)
 # al> %-----
 # al> %      Input constants, variables, etc. for Fortran code
-# al> UnitSystem kg, meter, sec
-al.numerics.unit_system("kg", "meter", "sec")
-# al> Input LA=1 m, LB=2 m, LC=2 m, LN=1 m, QA=30 deg
-al.numerics.input(
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg, meter, sec
+al.numerics.input(  # al> Input LA=1 m, LB=2 m, LC=2 m, LN=1 m, QA=30 deg
     {"LA": (1, "m"), "LB": (2, "m"), "LC": (2, "m"), "LN": (1, "m"), "QA": (30, "deg")},
     line=30,
 )
@@ -156,80 +131,35 @@ al.numerics.code("NONLINEAR", eqs=CONFIG, unknowns=[QB, QC], file="tutor3.for", 
 # al> %               provide a satisfactory answer, try another guess.
 # al> %-----
 # al> %      Record Autolev responses
-# al> Save tutor3.all
-al.save("tutor3.all", line=42)
+al.save("tutor3.all", line=42)  # al> Save tutor3.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

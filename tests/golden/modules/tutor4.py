@@ -1,13 +1,9 @@
-"""Autolev script tutor4.al, converted to Python.
+"""Autolev script tutor4.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor4.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor4`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor4.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor4`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor4.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor4.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor4.py [-h] [options]
 
 Print the Autolev transcript of tutor4.al and perform its numerical CODE job.
 
@@ -53,17 +45,9 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  G = 9.81 m/sec^2
-  LA = 1 m
-  LB = 2 m
-  LO = 1 m
-  K = 200 n/m
-  MP = 10 kg
-  MQ = 20 kg
-  QA = -30 deg
-  QB = 30 deg
-  ABSERR = 1.0E-07
-  RELERR = 1.0E-07
+  G = 9.81 m/sec^2  LA = 1 m          LB = 2 m          LO = 1 m
+  K = 200 n/m       MP = 10 kg        MQ = 20 kg        QA = -30 deg
+  QB = 30 deg       ABSERR = 1.0E-07  RELERR = 1.0E-07
 Jobs (--job STEM runs one; default: all, in script order):
   tutor4: CODE Nonlinear tutor4.c (line 58) -> tutor4.1, ...
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
@@ -81,23 +65,18 @@ al = Workspace("tutor4.al", __file__)
 # al> % Problem: Spring-Restrained Double Pendulum -- Equilibrium Configuration
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
-# al> Newtonian N
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian N
 al.model.declare_newtonian(N)
-# al> Frames A, B
-A, B = ReferenceFrame("A"), ReferenceFrame("B")
+A, B = ReferenceFrame("A"), ReferenceFrame("B")  # al> Frames A, B
 al.model.declare_frames(A, B)
-# al> Particles P, Q
-P, Q = Point("P"), Point("Q")
+P, Q = Point("P"), Point("Q")  # al> Particles P, Q
 P_particle, Q_particle = Particle("P", P, 0), Particle("Q", Q, 0)
 al.model.declare_particles(P_particle, Q_particle)
-# al> Points O
-O_ = Point("O")
+O_ = Point("O")  # al> Points O
 al.model.declare_points(O_)
 # al> %-----
 # al> % Mathematical declarations: variables, constants, mass
-# al> Variables U{2} % Generalized speeds
-U1, U2 = al.variables("U1", "U2", line=11)
+U1, U2 = al.variables("U1", "U2", line=11)  # al> Variables U{2} % Generalized speeds
 # al> Variables QA', QB' % Generalized coordinates; derivatives
 QA, QB = al.variables("QA'", "QB'", line=12)
 # al> Constants G, LA, LB % Gravitational acceleration, lengths of A, B
@@ -106,51 +85,40 @@ al.declare_constants(G, LA, LB, line=13)
 # al> Constants K, LO % Spring constant, natural length of spring
 K, LO = symbols("K LO", real=True)
 al.declare_constants(K, LO, line=14)
-# al> Mass P=MP, Q=MQ
-MP, MQ = al.constants("MP+", "MQ+", line=15)
+MP, MQ = al.constants("MP+", "MQ+", line=15)  # al> Mass P=MP, Q=MQ
 P_particle.mass = MP
 Q_particle.mass = MQ
 al.model.given_masses(P_particle, Q_particle, line=15)
 # al> %-----
 # al> % Geometry relating unit vectors
-# al> Simprot(N, A, 3, QA)
-A.orient_axis(N, N.z, QA)
+A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=18)
-# al> Simprot(N, B, 3, QB)
-B.orient_axis(N, N.z, QB)
+B.orient_axis(N, N.z, QB)  # al> Simprot(N, B, 3, QB)
 al.model.given_orientation(B, N, line=19)
 # al> %-----
 # al> % Position vectors
-# al> P_O_P> = LA*A1>
-P.set_pos(O_, LA * A.x)
+P.set_pos(O_, LA * A.x)  # al> P_O_P> = LA*A1>
 al.model.given_pos(P, O_, line=22)
-# al> P_P_Q> = LB*B1>
-Q.set_pos(P, LB * B.x)
+Q.set_pos(P, LB * B.x)  # al> P_P_Q> = LB*B1>
 al.model.given_pos(Q, P, line=23)
 # al> %-----
 # al> % Kinematical differential equations
 # al> QA' = U1/LA
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1 / LA), line=26))
-# al> QB' = U2/LB
-kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=27))
+kd_eqs.append(al.kd(Eq(QB.diff(t), U2 / LB), line=27))  # al> QB' = U2/LB
 # al> %-----
 # al> % Angular velocities
-# al> W_A_N> = QA'*A3>
-A.set_ang_vel(N, QA.diff(t) * A.z)
+A.set_ang_vel(N, QA.diff(t) * A.z)  # al> W_A_N> = QA'*A3>
 al.model.given_ang_vel(A, N, line=30)
-# al> W_B_N> = QB'*B3>
-B.set_ang_vel(N, QB.diff(t) * B.z)
+B.set_ang_vel(N, QB.diff(t) * B.z)  # al> W_B_N> = QB'*B3>
 al.model.given_ang_vel(B, N, line=31)
 # al> %-----
 # al> % Velocities
-# al> V_O_N> = 0>
-O_.set_vel(N, Vector(0))
+O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=34)
-# al> V2pts(N, A, O, P)
-al.model.v2pts(N, A, O_, P, line=35)
-# al> V2pts(N, B, P, Q)
-al.model.v2pts(N, B, P, Q, line=36)
+al.model.v2pts(N, A, O_, P, line=35)  # al> V2pts(N, A, O, P)
+al.model.v2pts(N, B, P, Q, line=36)  # al> V2pts(N, B, P, Q)
 # al> %-----
 # al> % Forces
 # al> Gravity( G*N1> )
@@ -166,14 +134,12 @@ UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=42)
 loads += [Force(O_, -(-K * STRETCH * UVEC_vec)), Force(Q, -K * STRETCH * UVEC_vec)]
 # al> %-----
 # al> % Equations of motion
-# al> Zero = Fr()
-Zero = al.assign("ZERO", al.model.fr(), line=46)
+Zero = al.assign("ZERO", al.model.fr(), line=46)  # al> Zero = Fr()
 # al> Factor(Zero, G) % Simplify slightly
 Zero = al.update("ZERO", al.factor(Zero, G), line=47)
 # al> %-----
 # al> % Units system for CODE input/output conversions
-# al> UnitSystem kg,meter,sec
-al.numerics.unit_system("kg", "meter", "sec")
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg,meter,sec
 # al> %-----
 # al> % Input constants, variables, etc. for CODE
 # al> Input G=9.81 m/sec^2, LA=1 m, LB=2 m, LO=1 m, K=200 n/m, MP=10 kg, MQ=20 kg
@@ -199,86 +165,40 @@ al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=55)
 al.numerics.code("NONLINEAR", eqs=Zero, unknowns=[QA, QB], file="tutor4.c", line=58)
 # al> %-----
 # al> % Record Autolev responses
-# al> Save tutor4.all
-al.save("tutor4.all", line=61)
+al.save("tutor4.all", line=61)  # al> Save tutor4.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

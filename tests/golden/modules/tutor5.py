@@ -1,13 +1,9 @@
-"""Autolev script tutor5.al, converted to Python.
+"""Autolev script tutor5.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor5.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor5`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor5.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor5`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor5.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor5.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor5.py [-h] [options]
 
 Print the Autolev transcript of tutor5.al and perform its numerical CODE job.
 
@@ -53,12 +45,8 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  H = 200 newton
-  QA = 30 deg
-  QB = 60 deg
-  QC = 30 deg
-  ABSERR = 1.0E-07
-  RELERR = 1.0E-07
+  H = 200 newton    QA = 30 deg       QB = 60 deg       QC = 30 deg
+  ABSERR = 1.0E-07  RELERR = 1.0E-07
 Jobs (--job STEM runs one; default: all, in script order):
   tutor5: CODE Nonlinear tutor5.m (line 83) -> tutor5.1, ...
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
@@ -76,11 +64,9 @@ al = Workspace("tutor5.al", __file__)
 # al> %      Problem:  Four-Bar Linkage -- Equilibrium Configuration
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
-# al> Newtonian      N
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian      N
 al.model.declare_newtonian(N)
-# al> Bodies        A, B, C
-A, B, C = al.model.bodies("A", "B", "C")
+A, B, C = al.model.bodies("A", "B", "C")  # al> Bodies        A, B, C
 Ao = al.model.point("AO")
 Bo = al.model.point("BO")
 Co = al.model.point("CO")
@@ -134,62 +120,46 @@ C_body.central_inertia = inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 al.model.given_inertia(C_body, line=20)
 # al> %-----
 # al> %      Geometry relating unit vectors
-# al> Simprot(N, A, 3, QA)
-A.orient_axis(N, N.z, QA)
+A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=23)
-# al> Simprot(N, B, 3, QB)
-B.orient_axis(N, N.z, QB)
+B.orient_axis(N, N.z, QB)  # al> Simprot(N, B, 3, QB)
 al.model.given_orientation(B, N, line=24)
-# al> Simprot(N, C, 3, QC)
-C.orient_axis(N, N.z, QC)
+C.orient_axis(N, N.z, QC)  # al> Simprot(N, C, 3, QC)
 al.model.given_orientation(C, N, line=25)
 # al> %-----
 # al> %      Position vectors
-# al> P_O_P> = LA*A1>
-P.set_pos(O_, LA * A.x)
+P.set_pos(O_, LA * A.x)  # al> P_O_P> = LA*A1>
 al.model.given_pos(P, O_, line=28)
-# al> P_P_Q> = LB*B1>
-Q.set_pos(P, LB * B.x)
+Q.set_pos(P, LB * B.x)  # al> P_P_Q> = LB*B1>
 al.model.given_pos(Q, P, line=29)
-# al> P_R_Q> = LC*C1>
-Q.set_pos(R, LC * C.x)
+Q.set_pos(R, LC * C.x)  # al> P_R_Q> = LC*C1>
 al.model.given_pos(Q, R, line=30)
-# al> P_O_R> = LN*N2>
-R.set_pos(O_, LN * N.y)
+R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=31)
-# al> P_O_Ao> = 0.5*P_O_P>
-Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))
+Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))  # al> P_O_Ao> = 0.5*P_O_P>
 al.model.given_pos(Ao, O_, line=32)
-# al> P_P_Bo> = 0.5*P_P_Q>
-Bo.set_pos(P, 0.5 * al.model.pos(P, Q))
+Bo.set_pos(P, 0.5 * al.model.pos(P, Q))  # al> P_P_Bo> = 0.5*P_P_Q>
 al.model.given_pos(Bo, P, line=33)
-# al> P_R_Co> = 0.5*P_R_Q>
-Co.set_pos(R, 0.5 * al.model.pos(R, Q))
+Co.set_pos(R, 0.5 * al.model.pos(R, Q))  # al> P_R_Co> = 0.5*P_R_Q>
 al.model.given_pos(Co, R, line=34)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=37))
-# al> QB' = U2
-kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=38))
-# al> QC' = U3
-kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))
+kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=38))  # al> QB' = U2
+kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=39))  # al> QC' = U3
 # al> %-----
 # al> %      Angular velocities
-# al> W_A_N> = QA'*A3>
-A.set_ang_vel(N, QA.diff(t) * A.z)
+A.set_ang_vel(N, QA.diff(t) * A.z)  # al> W_A_N> = QA'*A3>
 al.model.given_ang_vel(A, N, line=42)
-# al> W_B_N> = QB'*B3>
-B.set_ang_vel(N, QB.diff(t) * B.z)
+B.set_ang_vel(N, QB.diff(t) * B.z)  # al> W_B_N> = QB'*B3>
 al.model.given_ang_vel(B, N, line=43)
-# al> W_C_N> = QC'*C3>
-C.set_ang_vel(N, QC.diff(t) * C.z)
+C.set_ang_vel(N, QC.diff(t) * C.z)  # al> W_C_N> = QC'*C3>
 al.model.given_ang_vel(C, N, line=44)
 # al> %-----
 # al> %      Configuration Constraints
-# al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-LOOP_vec = al.assign(
+LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
     "LOOP>",
     al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
     line=47,
@@ -200,52 +170,38 @@ CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=48)
 CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=49)
 # al> %-----
 # al> %           Velocities
-# al> V_O_N> = 0>
-O_.set_vel(N, Vector(0))
+O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=52)
-# al> V2pts(N, A, O, Ao)
-al.model.v2pts(N, A, O_, Ao, line=53)
-# al> V2pts(N, A, O, P)
-al.model.v2pts(N, A, O_, P, line=54)
-# al> V2pts(N, B, P, Bo)
-al.model.v2pts(N, B, P, Bo, line=55)
-# al> V2pts(N, B, P, Q)
-al.model.v2pts(N, B, P, Q, line=56)
-# al> V2pts(N, C, Q, Co)
-al.model.v2pts(N, C, Q, Co, line=57)
-# al> V2pts(N, C, Q, R)
-al.model.v2pts(N, C, Q, R, line=58)
+al.model.v2pts(N, A, O_, Ao, line=53)  # al> V2pts(N, A, O, Ao)
+al.model.v2pts(N, A, O_, P, line=54)  # al> V2pts(N, A, O, P)
+al.model.v2pts(N, B, P, Bo, line=55)  # al> V2pts(N, B, P, Bo)
+al.model.v2pts(N, B, P, Q, line=56)  # al> V2pts(N, B, P, Q)
+al.model.v2pts(N, C, Q, Co, line=57)  # al> V2pts(N, C, Q, Co)
+al.model.v2pts(N, C, Q, R, line=58)  # al> V2pts(N, C, Q, R)
 # al> %-----
 # al> %           Motion constraints
 # al> DEPENDENT[1] = Dot(V_R_N>, N1>)
 DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(al.model.vel(R, N), N.x), line=61)
 # al> DEPENDENT[2] = Dot(V_R_N>, N2>)
 DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(al.model.vel(R, N), N.y), line=62)
-# al> Constrain( DEPENDENT[U2,U3] )
-al.model.constrain("DEPENDENT", [U2, U3], line=63)
+al.model.constrain("DEPENDENT", [U2, U3], line=63)  # al> Constrain( DEPENDENT[U2,U3] )
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
 loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.x)
-# al> Force_Q> = H*N2>
-al.model.set_force(Q, H * N.y, line=67)
+al.model.set_force(Q, H * N.y, line=67)  # al> Force_Q> = H*N2>
 # al> %-----
 # al> %           Equations of motion
-# al> Zero = Fr()
-Zero = al.assign("ZERO", al.model.fr(), line=70)
-# al> Zero[2] = CONFIG[1]
-Zero = al.assign("ZERO[2]", CONFIG[0], line=71)
-# al> Zero[3] = CONFIG[2]
-Zero = al.assign("ZERO[3]", CONFIG[1], line=72)
+Zero = al.assign("ZERO", al.model.fr(), line=70)  # al> Zero = Fr()
+Zero = al.assign("ZERO[2]", CONFIG[0], line=71)  # al> Zero[2] = CONFIG[1]
+Zero = al.assign("ZERO[3]", CONFIG[1], line=72)  # al> Zero[3] = CONFIG[2]
 # al> %-----
 # al> %           Units system for CODE input/output conversions
-# al> UnitSystem kg,meter,sec
-al.numerics.unit_system("kg", "meter", "sec")
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg,meter,sec
 # al> %-----
 # al> %           Input constants, variables, etc. for CODE
-# al> Input H=200 newton
-al.numerics.input({"H": (200, "newton")}, line=78)
+al.numerics.input({"H": (200, "newton")}, line=78)  # al> Input H=200 newton
 # al> Input QA=30 deg, QB=60 deg, QC=30 deg    % Guess
 al.numerics.input({"QA": (30, "deg"), "QB": (60, "deg"), "QC": (30, "deg")}, line=79)
 # al> Input absErr=1.0E-07, relErr=1.0E-07    % Error tolerances
@@ -256,86 +212,40 @@ al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=80)
 al.numerics.code("NONLINEAR", eqs=Zero, unknowns=[QA, QB, QC], file="tutor5.m", line=83)
 # al> %-----
 # al> %           Record Autolev responses
-# al> Save tutor5.all
-al.save("tutor5.all", line=86)
+al.save("tutor5.all", line=86)  # al> Save tutor5.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

@@ -1,13 +1,9 @@
-"""Autolev script tutor7c.al, converted to Python.
+"""Autolev script tutor7c.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor7c.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor7c`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor7c.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor7c`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor7c.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor7c.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                         [--outdir OUTDIR] [--plot] [--animate]
-                         [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                         [--emit-code DIR] [--no-run] [--max-seconds S]
-                         [--max-evals N]
+usage: python tutor7c.py [-h] [options]
 
 Print the Autolev transcript of tutor7c.al and perform its numerical CODE job.
 
@@ -53,15 +45,9 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  QA = 30 deg
-  QB = 74.47751219 deg
-  QC = 45.52248781 deg
-  TINITIAL = 0
-  TFINAL = 10
-  INTEGSTP = 0.1
-  PRINTINT = 1
-  ABSERR = 1.0E-07
-  RELERR = 1.0E-07
+  QA = 30 deg           QB = 74.47751219 deg  QC = 45.52248781 deg
+  TINITIAL = 0          TFINAL = 10           INTEGSTP = 0.1
+  PRINTINT = 1          ABSERR = 1.0E-07      RELERR = 1.0E-07
 Jobs (--job STEM runs one; default: all, in script order):
   tutor7c: CODE Dynamics tutor7c.for (line 110) -> tutor7c.1, ...
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
@@ -82,15 +68,12 @@ al = Workspace("tutor7c.al", __file__)
 # al> %      Default Settings
 # al> AutoZ      ON              % Program introduces Zees automatically
 al.settings.set("Autoz", "ON")
-# al> Digits     7              % Significant digits
-al.settings.set("Digits", 7)
+al.settings.set("Digits", 7)  # al> Digits     7              % Significant digits
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
-# al> Newtonian  N
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian  N
 al.model.declare_newtonian(N)
-# al> Bodies     A, B, C
-A, B, C = al.model.bodies("A", "B", "C")
+A, B, C = al.model.bodies("A", "B", "C")  # al> Bodies     A, B, C
 Ao = al.model.point("AO")
 Bo = al.model.point("BO")
 Co = al.model.point("CO")
@@ -110,8 +93,7 @@ U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=14)
 QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=15)
 # al> Variables  FA{2}, FC{2}  % Contact forces
 FA1, FA2, FC1, FC2 = al.variables("FA1", "FA2", "FC1", "FC2", line=16)
-# al> Constants  G=9.81        % Gravitational acceleration
-G = symbols("G", real=True)
+G = symbols("G", real=True)  # al> Constants  G=9.81        % Gravitational acceleration
 al.declare_constants(G, line=17)
 al.assign("G", 9.81, line=17)
 # al> Constants  LA=1, LB=2, LC=2, LN=1 % Lengths
@@ -145,76 +127,54 @@ C_body.central_inertia = inertia(C, 0, MC * LC**2 / 12, MC * LC**2 / 12)
 al.model.given_inertia(C_body, line=25)
 # al> %-----
 # al> %      Geometry relating unit vectors
-# al> Simprot(N, A, 3, QA)
-A.orient_axis(N, N.z, QA)
+A.orient_axis(N, N.z, QA)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=28)
-# al> Simprot(N, B, 3, QB)
-B.orient_axis(N, N.z, QB)
+B.orient_axis(N, N.z, QB)  # al> Simprot(N, B, 3, QB)
 al.model.given_orientation(B, N, line=29)
-# al> Simprot(N, C, 3, QC)
-C.orient_axis(N, N.z, QC)
+C.orient_axis(N, N.z, QC)  # al> Simprot(N, C, 3, QC)
 al.model.given_orientation(C, N, line=30)
 # al> %-----
 # al> %      Position vectors
-# al> P_O_P> = LA*A1>
-P.set_pos(O_, LA * A.x)
+P.set_pos(O_, LA * A.x)  # al> P_O_P> = LA*A1>
 al.model.given_pos(P, O_, line=33)
-# al> P_P_Q> = LB*B1>
-Q.set_pos(P, LB * B.x)
+Q.set_pos(P, LB * B.x)  # al> P_P_Q> = LB*B1>
 al.model.given_pos(Q, P, line=34)
-# al> P_R_Q> = LC*C1>
-Q.set_pos(R, LC * C.x)
+Q.set_pos(R, LC * C.x)  # al> P_R_Q> = LC*C1>
 al.model.given_pos(Q, R, line=35)
-# al> P_O_R> = LN*N2>
-R.set_pos(O_, LN * N.y)
+R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=36)
-# al> P_O_Ao> = 0.5*P_O_P>
-Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))
+Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))  # al> P_O_Ao> = 0.5*P_O_P>
 al.model.given_pos(Ao, O_, line=37)
-# al> P_P_Bo> = 0.5*P_P_Q>
-Bo.set_pos(P, 0.5 * al.model.pos(P, Q))
+Bo.set_pos(P, 0.5 * al.model.pos(P, Q))  # al> P_P_Bo> = 0.5*P_P_Q>
 al.model.given_pos(Bo, P, line=38)
-# al> P_R_Co> = 0.5*P_R_Q>
-Co.set_pos(R, 0.5 * al.model.pos(R, Q))
+Co.set_pos(R, 0.5 * al.model.pos(R, Q))  # al> P_R_Co> = 0.5*P_R_Q>
 al.model.given_pos(Co, R, line=39)
 # al> %-----
 # al> %      Kinematical differential equations
 # al> QA' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(QA.diff(t), U1), line=42))
-# al> QB' = U2
-kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=43))
-# al> QC' = U3
-kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=44))
+kd_eqs.append(al.kd(Eq(QB.diff(t), U2), line=43))  # al> QB' = U2
+kd_eqs.append(al.kd(Eq(QC.diff(t), U3), line=44))  # al> QC' = U3
 # al> %-----
 # al> %      Angular velocities
-# al> W_A_N> = QA'*A3>
-A.set_ang_vel(N, QA.diff(t) * A.z)
+A.set_ang_vel(N, QA.diff(t) * A.z)  # al> W_A_N> = QA'*A3>
 al.model.given_ang_vel(A, N, line=47)
-# al> W_B_N> = QB'*B3>
-B.set_ang_vel(N, QB.diff(t) * B.z)
+B.set_ang_vel(N, QB.diff(t) * B.z)  # al> W_B_N> = QB'*B3>
 al.model.given_ang_vel(B, N, line=48)
-# al> W_C_N> = QC'*C3>
-C.set_ang_vel(N, QC.diff(t) * C.z)
+C.set_ang_vel(N, QC.diff(t) * C.z)  # al> W_C_N> = QC'*C3>
 al.model.given_ang_vel(C, N, line=49)
 # al> %-----
 # al> %      Velocities
 # al> % V_O_N> = U4*N1>
-# al> V_O_N> = 0>
-O_.set_vel(N, Vector(0))
+O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=53)
-# al> V2pts(N, A, O, Ao)
-al.model.v2pts(N, A, O_, Ao, line=54)
-# al> V2pts(N, A, O, P)
-al.model.v2pts(N, A, O_, P, line=55)
-# al> V2pts(N, B, P, Bo)
-al.model.v2pts(N, B, P, Bo, line=56)
-# al> V2pts(N, B, P, Q)
-al.model.v2pts(N, B, P, Q, line=57)
-# al> V2pts(N, C, Q, Co)
-al.model.v2pts(N, C, Q, Co, line=58)
-# al> V2pts(N, C, Q, R)
-al.model.v2pts(N, C, Q, R, line=59)
+al.model.v2pts(N, A, O_, Ao, line=54)  # al> V2pts(N, A, O, Ao)
+al.model.v2pts(N, A, O_, P, line=55)  # al> V2pts(N, A, O, P)
+al.model.v2pts(N, B, P, Bo, line=56)  # al> V2pts(N, B, P, Bo)
+al.model.v2pts(N, B, P, Q, line=57)  # al> V2pts(N, B, P, Q)
+al.model.v2pts(N, C, Q, Co, line=58)  # al> V2pts(N, C, Q, Co)
+al.model.v2pts(N, C, Q, R, line=59)  # al> V2pts(N, C, Q, R)
 # al> %-----
 # al> %      Motion constraints
 # al> AUXILIARY[1] = Dot(V_R_N>, N1>)           % Dot(V_R_N>, N1>) = 0
@@ -227,30 +187,21 @@ al.model.constrain("AUXILIARY", [U2, U3], line=64)
 # al> % Constrain( AUXILIARY[U2,U3,U4] )       % Solve for U2,U3,U4
 # al> %-----
 # al> %           Angular accelerations
-# al> ALF_A_N> = DT(W_A_N>, N)
-A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))
+A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
 al.model.given_ang_acc(A, N, line=69)
-# al> ALF_B_N> = DT(W_B_N>, N)
-B.set_ang_acc(N, al.dt(al.model.ang_vel(B, N), N))
+B.set_ang_acc(N, al.dt(al.model.ang_vel(B, N), N))  # al> ALF_B_N> = DT(W_B_N>, N)
 al.model.given_ang_acc(B, N, line=70)
-# al> ALF_C_N> = DT(W_C_N>, N)
-C.set_ang_acc(N, al.dt(al.model.ang_vel(C, N), N))
+C.set_ang_acc(N, al.dt(al.model.ang_vel(C, N), N))  # al> ALF_C_N> = DT(W_C_N>, N)
 al.model.given_ang_acc(C, N, line=71)
 # al> %-----
 # al> %           Accelerations of particles and mass centers of bodies
-# al> A_O_N> = 0>
-O_.set_acc(N, Vector(0))
+O_.set_acc(N, Vector(0))  # al> A_O_N> = 0>
 al.model.given_acc(O_, N, line=74)
-# al> A2pts(N, A, O, Ao)
-al.model.a2pts(N, A, O_, Ao, line=75)
-# al> A2pts(N, A, O, P)
-al.model.a2pts(N, A, O_, P, line=76)
-# al> A2pts(N, B, P, Bo)
-al.model.a2pts(N, B, P, Bo, line=77)
-# al> A2pts(N, B, P, Q)
-al.model.a2pts(N, B, P, Q, line=78)
-# al> A2pts(N, C, Q, Co)
-al.model.a2pts(N, C, Q, Co, line=79)
+al.model.a2pts(N, A, O_, Ao, line=75)  # al> A2pts(N, A, O, Ao)
+al.model.a2pts(N, A, O_, P, line=76)  # al> A2pts(N, A, O, P)
+al.model.a2pts(N, B, P, Bo, line=77)  # al> A2pts(N, B, P, Bo)
+al.model.a2pts(N, B, P, Q, line=78)  # al> A2pts(N, B, P, Q)
+al.model.a2pts(N, C, Q, Co, line=79)  # al> A2pts(N, C, Q, Co)
 # al> %-----
 # al> %           Forces
 # al> Gravity( G*N1> )
@@ -264,12 +215,10 @@ al.model.set_force(R, FC1 * N.x + FC2 * N.y, line=84)
 # al> %           Equations of motion
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=87)
-# al> Kane( FC1, FC2 )
-Zero = al.model.kane(FC1, FC2, line=88)
+Zero = al.model.kane(FC1, FC2, line=88)  # al> Kane( FC1, FC2 )
 # al> %-----
 # al> %           Units system for CODE input/output conversions
-# al> UnitSystem kg,meter,sec
-al.numerics.unit_system("kg", "meter", "sec")
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg,meter,sec
 # al> %-----
 # al> %           Input constants, variables, etc. for CODE
 # al> Input  QA=30 deg, QB=74.47751219 deg, QC=45.52248781 deg % Initial values
@@ -284,8 +233,7 @@ al.numerics.input({"INTEGSTP": 0.1, "PRINTINT": 1}, line=96)
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=97)
 # al> %-----
 # al> %           Quantities to be output from CODE
-# al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-LOOP_vec = al.assign(
+LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
     "LOOP>",
     al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
     line=100,
@@ -296,12 +244,10 @@ CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=101)
 CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=102)
 # al> ECHECK = NICHECK() % Checking function
 ECHECK = al.assign("ECHECK", al.model.nicheck(), line=103)
-# al> Output T, QA deg, QB deg, QC deg
-al.numerics.output(
+al.numerics.output(  # al> Output T, QA deg, QB deg, QC deg
     [("T", t, None), ("QA", QA, "deg"), ("QB", QB, "deg"), ("QC", QC, "deg")], line=104
 )
-# al> Output T, CONFIG[1], CONFIG[2], ECHECK
-al.numerics.output(
+al.numerics.output(  # al> Output T, CONFIG[1], CONFIG[2], ECHECK
     [
         ("T", t, None),
         ("CONFIG[1]", CONFIG[0], None),
@@ -310,8 +256,7 @@ al.numerics.output(
     ],
     line=105,
 )
-# al> Output T, FC1 newtons, FC2 newtons
-al.numerics.output(
+al.numerics.output(  # al> Output T, FC1 newtons, FC2 newtons
     [("T", t, None), ("FC1", FC1, "newtons"), ("FC2", FC2, "newtons")], line=106
 )
 # al> % Output T, FA1 newtons
@@ -321,86 +266,40 @@ al.numerics.output(
 al.numerics.code("DYNAMICS", file="tutor7c.for", line=110)
 # al> %-----
 # al> %           Record Autolev responses
-# al> Save tutor7c.all
-al.save("tutor7c.all", line=113)
+al.save("tutor7c.all", line=113)  # al> Save tutor7c.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

@@ -1,13 +1,9 @@
-"""Autolev script tutor8.al, converted to Python.
+"""Autolev script tutor8.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor8.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor8`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor8.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor8`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor8.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor8.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor8.py [-h] [options]
 
 Print the Autolev transcript of tutor8.al and perform its numerical CODE job.
 
@@ -53,24 +45,11 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  K1 = 1
-  K2 = -244
-  K3 = 5.4
-  K4 = -59
-  X = 1 m
-  THETA = 20 deg
-  U1 = 0 m/sec
-  U2 = 0 rad/sec
-  DX = 1 m
-  DTHETA = 20 deg
-  DU1 = 0 m/sec
-  DU2 = 0 rad/sec
-  TINITIAL = 0
-  TFINAL = 20
-  INTEGSTP = 0.1
-  PRINTINT = 1
-  ABSERR = 1.0E-08
-  RELERR = 1.0E-08
+  K1 = 1            K2 = -244         K3 = 5.4          K4 = -59
+  X = 1 m           THETA = 20 deg    U1 = 0 m/sec      U2 = 0 rad/sec
+  DX = 1 m          DTHETA = 20 deg   DU1 = 0 m/sec     DU2 = 0 rad/sec
+  TINITIAL = 0      TFINAL = 20       INTEGSTP = 0.1    PRINTINT = 1
+  ABSERR = 1.0E-08  RELERR = 1.0E-08
 Jobs (--job STEM runs one; default: all, in script order):
   tutor8: CODE Dynamics tutor8.c (line 99) -> tutor8.1, ...
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
@@ -88,20 +67,16 @@ al = Workspace("tutor8.al", __file__)
 # al> % Problem: Dynamics of a Cart Carrying an Inverted Pendulum
 # al> %-----
 # al> % Default Settings
-# al> Digits      2          % Significant digits
-al.settings.set("Digits", 2)
+al.settings.set("Digits", 2)  # al> Digits      2          % Significant digits
 # al> %-----
 # al> % Newtonian, bodies, frames, particles, points
-# al> Newtonian   N          % Newtonian reference frame
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian   N          % Newtonian reference frame
 al.model.declare_newtonian(N)
-# al> Bodies      A, B       % Cart, inverted pendulum
-A, B = al.model.bodies("A", "B")
+A, B = al.model.bodies("A", "B")  # al> Bodies      A, B       % Cart, inverted pendulum
 Ao = al.model.point("AO")
 Bo = al.model.point("BO")
 A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
-# al> Points      O          % Point fixed in N
-O_ = Point("O")
+O_ = Point("O")  # al> Points      O          % Point fixed in N
 al.model.declare_points(O_)
 # al> %-----
 # al> % Variables, constants, and specified
@@ -109,79 +84,64 @@ al.model.declare_points(O_)
 U1, U2 = al.variables("U1'", "U2'", line=13)
 # al> Variables   X', THETA' % Generalized coordinates; derivatives
 X, THETA = al.variables("X'", "THETA'", line=14)
-# al> Constants   L          % Length of rod
-L = symbols("L", real=True)
+L = symbols("L", real=True)  # al> Constants   L          % Length of rod
 al.declare_constants(L, line=15)
-# al> Constants   G          % Gravitational acceleration
-G = symbols("G", real=True)
+G = symbols("G", real=True)  # al> Constants   G          % Gravitational acceleration
 al.declare_constants(G, line=16)
 # al> Constants   K{4}       % Control gains
 K1, K2, K3, K4 = symbols("K1 K2 K3 K4", real=True)
 al.declare_constants(K1, K2, K3, K4, line=17)
-# al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
-F = al.specified("F", line=18)
+F = al.specified("F", line=18)  # al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
 al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
 # al> %-----
 # al> % Mass and inertia
-# al> Mass        A=MA, B=MB
-MA, MB = al.constants("MA+", "MB+", line=21)
+MA, MB = al.constants("MA+", "MB+", line=21)  # al> Mass        A=MA, B=MB
 A_body.mass = MA
 B_body.mass = MB
 al.model.given_masses(A_body, B_body, line=21)
-# al> Inertia     B, IB=MB*L^2/12, 0, IB
-IB = al.constants("IB+", line=22)
+IB = al.constants("IB+", line=22)  # al> Inertia     B, IB=MB*L^2/12, 0, IB
 al.assign("IB", MB * L**2 / 12, line=22)
 B_body.central_inertia = inertia(B, IB, 0, IB)
 al.model.given_inertia(B_body, line=22)
 # al> %-----
 # al> % Geometry relating unit vectors
-# al> Simprot(N, B, 3, THETA)
-B.orient_axis(N, N.z, THETA)
+B.orient_axis(N, N.z, THETA)  # al> Simprot(N, B, 3, THETA)
 al.model.given_orientation(B, N, line=25)
 # al> %-----
 # al> % Position vectors
-# al> P_O_Ao> = X*N1>
-Ao.set_pos(O_, X * N.x)
+Ao.set_pos(O_, X * N.x)  # al> P_O_Ao> = X*N1>
 al.model.given_pos(Ao, O_, line=28)
-# al> P_Ao_Bo> = 0.5*L*B2>
-Bo.set_pos(Ao, 0.5 * L * B.y)
+Bo.set_pos(Ao, 0.5 * L * B.y)  # al> P_Ao_Bo> = 0.5*L*B2>
 al.model.given_pos(Bo, Ao, line=29)
 # al> %-----
 # al> % Kinematical differential equations
 # al> X' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(X.diff(t), U1), line=32))
-# al> THETA' = U2
-kd_eqs.append(al.kd(Eq(THETA.diff(t), U2), line=33))
+kd_eqs.append(al.kd(Eq(THETA.diff(t), U2), line=33))  # al> THETA' = U2
 # al> %-----
 # al> % Angular velocities
-# al> W_A_N> = 0>
-A.set_ang_vel(N, Vector(0))
+A.set_ang_vel(N, Vector(0))  # al> W_A_N> = 0>
 al.model.given_ang_vel(A, N, line=36)
-# al> W_B_N> = THETA'*B3>
-B.set_ang_vel(N, THETA.diff(t) * B.z)
+B.set_ang_vel(N, THETA.diff(t) * B.z)  # al> W_B_N> = THETA'*B3>
 al.model.given_ang_vel(B, N, line=37)
 # al> %-----
 # al> % Velocities
-# al> V_Ao_N> = DT(P_O_Ao>, N)
-Ao.set_vel(N, al.dt(al.model.pos(O_, Ao), N))
+Ao.set_vel(N, al.dt(al.model.pos(O_, Ao), N))  # al> V_Ao_N> = DT(P_O_Ao>, N)
 al.model.given_vel(Ao, N, line=40)
-# al> V2pts(N, B, Ao, Bo)
-al.model.v2pts(N, B, Ao, Bo, line=41)
+al.model.v2pts(N, B, Ao, Bo, line=41)  # al> V2pts(N, B, Ao, Bo)
 # al> %-----
 # al> % Forces
 # al> Gravity( -G*N2> )
 loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(-G * N.y)
-# al> Force_Ao> += F*N1>
-loads.append(Force(Ao, F * N.x))
+loads.append(Force(Ao, F * N.x))  # al> Force_Ao> += F*N1>
 al.model.given_force(Ao, line=45)
 # al> %-----
 # al> % Equations of motion
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=48)
-# al> Kane()
-Zero = al.model.kane(line=49)
+Zero = al.model.kane(line=49)  # al> Kane()
 # al> Zero := Evaluate( Zero, L=1, MA=10, MB=1, G=9.81 )
 Zero = al.assign("ZERO", al.evaluate(Zero, {L: 1, MA: 10, MB: 1, G: 9.81}), line=50)
 # al> %*****
@@ -194,8 +154,7 @@ dU1, dU2 = al.variables("DU1'", "DU2'", line=55)
 dX, dTHETA = al.variables("DX'", "DTHETA'", line=56)
 # al> %-----
 # al> %          Check whether X=THETA=U1=U2=U1'=U2'=0 is a solution
-# al> CHECK = Evaluate(Zero, X=0, THETA=0, U1=0, U2=0, U1'=0, U2'=0)
-CHECK = al.assign(
+CHECK = al.assign(  # al> CHECK = Evaluate(Zero, X=0, THETA=0, U1=0, U2=0, U1'=0, U2'=0)
     "CHECK",
     al.evaluate(Zero, {X: 0, THETA: 0, U1: 0, U2: 0, U1.diff(t): 0, U2.diff(t): 0}),
     line=59,
@@ -233,8 +192,7 @@ kd_eqs.append(
 # al> %-----
 # al> %          Linearize equations of motion about nominal solution
 # al> PERTURB = Taylor(Zero, 1, X=0:dX, THETA=0:dTHETA, U1=0:dU1, U2=0:dU2, &
-# al> U1'=0:dU1', U2'=0:dU2')
-PERTURB = al.assign(
+PERTURB = al.assign(  # al> U1'=0:dU1', U2'=0:dU2')
     "PERTURB",
     al.taylor(
         Zero,
@@ -250,47 +208,39 @@ PERTURB = al.assign(
     ),
     line=66,
 )
-# al> Solve( PERTURB, dU{1:2}' )
-al.solve(PERTURB, [dU1.diff(t), dU2.diff(t)], line=68)
+al.solve(PERTURB, [dU1.diff(t), dU2.diff(t)], line=68)  # al> Solve( PERTURB, dU{1:2}' )
 # al> %-----
 # al> %          Form matrix of perturbations and its time-derivative
 # al> Xm = [ dX , dTHETA , dU1 , dU2 ]    % Matrix of perturbations
 Xm = al.assign("XM", Matrix([[dX, dTHETA, dU1, dU2]]), line=71)
-# al> Xp = [ dX'; dTHETA'; dU1'; dU2' ]  % Time derivative of Xm
-Xp = al.assign(
+Xp = al.assign(  # al> Xp = [ dX'; dTHETA'; dU1'; dU2' ]  % Time derivative of Xm
     "XP", Matrix([dX.diff(t), dTHETA.diff(t), dU1.diff(t), dU2.diff(t)]), line=72
 )
 # al> %-----
 # al> %          Form matrix A such that Xm' = A * Xm
-# al> A = D( Xp, Xm )
-A_val = al.assign("A", al.d(Xp, Xm), line=75)
+A_val = al.assign("A", al.d(Xp, Xm), line=75)  # al> A = D( Xp, Xm )
 # al> %-----
 # al> %          Stability when F=0
-# al> ROOTS1 = Eig( evaluate(A, K1=0, K2=0, K3=0, K4=0) )
-ROOTS1 = al.assign(
+ROOTS1 = al.assign(  # al> ROOTS1 = Eig( evaluate(A, K1=0, K2=0, K3=0, K4=0) )
     "ROOTS1", al.eig(al.evaluate(A_val, {K1: 0, K2: 0, K3: 0, K4: 0})), line=78
 )
 # al> %-----
 # al> %          Stability when F = X - 244*THETA + 5.4*U1 - 59*U2
-# al> ROOTS2 = Eig( evaluate(A, K1=1, K2=-244, K3=5.4, K4=-59) )
-ROOTS2 = al.assign(
+ROOTS2 = al.assign(  # al> ROOTS2 = Eig( evaluate(A, K1=1, K2=-244, K3=5.4, K4=-59) )
     "ROOTS2", al.eig(al.evaluate(A_val, {K1: 1, K2: -244, K3: 5.4, K4: -59})), line=81
 )
 # al> %-----
 # al> %          Units system for CODE input/output conversions
-# al> UnitSystem kg,meter,sec
-al.numerics.unit_system("kg", "meter", "sec")
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg,meter,sec
 # al> %-----
 # al> %          Input constants, variables, etc. for CODE
 # al> Input K1=1, K2=-244, K3=5.4, K4=-59
 al.numerics.input({"K1": 1, "K2": -244, "K3": 5.4, "K4": -59}, line=87)
-# al> Input X=1 m, THETA=20 deg, U1=0 m/sec, U2=0 rad/sec
-al.numerics.input(
+al.numerics.input(  # al> Input X=1 m, THETA=20 deg, U1=0 m/sec, U2=0 rad/sec
     {"X": (1, "m"), "THETA": (20, "deg"), "U1": (0, "m/sec"), "U2": (0, "rad/sec")},
     line=88,
 )
-# al> Input dX=1 m, dTHETA=20 deg, dU1=0 m/sec, dU2=0 rad/sec
-al.numerics.input(
+al.numerics.input(  # al> Input dX=1 m, dTHETA=20 deg, dU1=0 m/sec, dU2=0 rad/sec
     {"DX": (1, "m"), "DTHETA": (20, "deg"), "DU1": (0, "m/sec"), "DU2": (0, "rad/sec")},
     line=89,
 )
@@ -318,90 +268,43 @@ al.numerics.output(
 # al> %          C code generation for numerical solution
 # al> Digits 5          % Significant digits in output files
 al.settings.set("Digits", 5)
-# al> CODE Dynamics() tutor8.c
-al.numerics.code("DYNAMICS", file="tutor8.c", line=99)
+al.numerics.code("DYNAMICS", file="tutor8.c", line=99)  # al> CODE Dynamics() tutor8.c
 # al> %-----
 # al> %          Record Autolev responses
-# al> Save tutor8.all
-al.save("tutor8.all", line=102)
+al.save("tutor8.all", line=102)  # al> Save tutor8.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

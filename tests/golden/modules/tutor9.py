@@ -1,13 +1,9 @@
-"""Autolev script tutor9.al, converted to Python.
+"""Autolev script tutor9.al converted by al2py 0.2.0: edit the .al file instead.
 
-Converted from tutor9.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
-
-``import tutor9`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python tutor9.py`` prints the transcript Autolev would print
-and runs the CODE job (``--help`` lists its options); ``run()`` runs it from
-Python.
+``import tutor9`` runs the symbolic part silently; ``AUTOLEV`` maps Autolev
+names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python tutor9.py``
+prints the transcript Autolev would print and runs the CODE job (``--help``
+lists its options); ``run()`` runs it from Python.
 """
 
 import sys
@@ -15,11 +11,7 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python tutor9.py [-h] [--set NAME=VALUE] [--job STEM] [--tfinal TFINAL]
-                        [--outdir OUTDIR] [--plot] [--animate]
-                        [--backend {auto,c,llvm,lambdify}] [--zero-missing]
-                        [--emit-code DIR] [--no-run] [--max-seconds S]
-                        [--max-evals N]
+usage: python tutor9.py [-h] [options]
 
 Print the Autolev transcript of tutor9.al and perform its numerical CODE job.
 
@@ -53,20 +45,10 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  TINITIAL = 0
-  TFINAL = 20
-  INTEGSTP = 0.1
-  PRINTINT = 1
-  ABSERR = 1.0E-07
-  RELERR = 1.0E-07
-  J = 0.07634
-  I1 = 1.25
-  I2 = 4.25
-  I3 = 5
-  OMEGA = -20.0
-  U1 = 0
-  U2 = 0.02
-  U3 = 1
+  TINITIAL = 0      TFINAL = 20       INTEGSTP = 0.1    PRINTINT = 1
+  ABSERR = 1.0E-07  RELERR = 1.0E-07  J = 0.07634       I1 = 1.25
+  I2 = 4.25         I3 = 5            OMEGA = -20.0     U1 = 0
+  U2 = 0.02         U3 = 1
 Jobs (--job STEM runs one; default: all, in script order):
   tutor9: CODE Dynamics tutor9.for (line 54) -> tutor9.1, ...
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
@@ -85,15 +67,12 @@ al = Workspace("tutor9.al", __file__)
 # al> %      Problem:  Spin stability of gyrostat
 # al> %-----
 # al> %      Newtonian, bodies, frames, particles, points
-# al> Newtonian      N              % Newtonian reference frame
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian      N              % Newtonian reference frame
 al.model.declare_newtonian(N)
-# al> Bodies         A              % Carrier
-A = al.model.bodies("A")
+A = al.model.bodies("A")  # al> Bodies         A              % Carrier
 Ao = al.model.point("AO")
 A_body = al.model.rigid_body(A)
-# al> Frames         B              % Rotor
-B = ReferenceFrame("B")
+B = ReferenceFrame("B")  # al> Frames         B              % Rotor
 al.model.declare_frames(B)
 # al> %-----
 # al> %      Variables, constants, and specified
@@ -120,52 +99,43 @@ al.model.given_inertia(A_body, line=16)
 # al> W_A_N> = U1*A1> + U2*A2> + U3*A3>
 A.set_ang_vel(N, U1 * A.x + U2 * A.y + U3 * A.z)
 al.model.given_ang_vel(A, N, line=19)
-# al> W_B_A> = OMEGA*A3>
-B.set_ang_vel(A, OMEGA * A.z)
+B.set_ang_vel(A, OMEGA * A.z)  # al> W_B_A> = OMEGA*A3>
 al.model.given_ang_vel(B, A, line=20)
 # al> %-----
 # al> %      Angular accelerations
-# al> ALF_A_N> = DT(W_A_N>, N)
-A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))
+A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
 al.model.given_ang_acc(A, N, line=23)
-# al> ALF_B_A> = DT(W_B_A>, A)
-B.set_ang_acc(A, al.dt(al.model.ang_vel(B, A), A))
+B.set_ang_acc(A, al.dt(al.model.ang_vel(B, A), A))  # al> ALF_B_A> = DT(W_B_A>, A)
 al.model.given_ang_acc(B, A, line=24)
 # al> %-----
 # al> %      Acceleration of mass center of G is 0>
-# al> A_Ao_N> = 0>
-Ao.set_acc(N, Vector(0))
+Ao.set_acc(N, Vector(0))  # al> A_Ao_N> = 0>
 al.model.given_acc(Ao, N, line=27)
 # al> %-----
 # al> %      Equations of motion
-# al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
-Zero = al.assign(
+Zero = al.assign(  # al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J)
     "ZERO",
     al.model.fr()
     + al.model.frstar()
     + al.model.gyrostat("FRSTAR", "CYLINDER", A, B, J),
     line=30,
 )
-# al> Kane()
-Zero = al.model.kane(line=31)
+Zero = al.model.kane(line=31)  # al> Kane()
 # al> %-----
 # al> %      Angular momentum of gyrostat
-# al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
-H_vec = al.assign(
+H_vec = al.assign(  # al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
     "H>",
     al.model.momentum("ANGULAR", Ao) + al.model.gyrostat("ANGMOM", "CYLINDER", A, B, J),
     line=34,
 )
-# al> H = Mag(H>)
-H = al.assign("H", al.model.mag(H_vec), line=35)
+H = al.assign("H", al.model.mag(H_vec), line=35)  # al> H = Mag(H>)
 # al> %-----
 # al> %      Angle between angular momentum vector and A3>
 # al> PHI = acos( Dot( UNITVEC(H>), A3> ) )
 PHI = al.assign("PHI", acos(al.model.dot(al.model.unitvec(H_vec), A.z)), line=38)
 # al> %-----
 # al> %      Units system for CODE input/output conversions
-# al> UnitSystem kg,meter,sec
-al.numerics.unit_system("kg", "meter", "sec")
+al.numerics.unit_system("kg", "meter", "sec")  # al> UnitSystem kg,meter,sec
 # al> %-----
 # al> %      Input constants, variables, etc. for CODE
 # al> Input      tInitial=0,      tFinal=20          % Begin/end times
@@ -208,8 +178,7 @@ CHECK = al.assign(
 # al> %-----
 # al> %      Linearize equations of motion about nominal solution
 # al> PETURB = Taylor(Zero, 1, U1=0:dU1, U1'=0:dU1', U2=0:dU2, U2'=0:dU2', &
-# al> U3=nU3:dU3, U3'=0:dU3')
-PETURB = al.assign(
+PETURB = al.assign(  # al> U3=nU3:dU3, U3'=0:dU3')
     "PETURB",
     al.taylor(
         Zero,
@@ -229,112 +198,61 @@ PETURB = al.assign(
 al.solve(PETURB, [dU1.diff(t), dU2.diff(t), dU3.diff(t)], line=68)
 # al> %-----
 # al> %      Form, x, x', and the A matrix in the equation x'=A*x
-# al> Xm = [ dU1,  dU2,  dU3 ]
-Xm = al.assign("XM", Matrix([[dU1, dU2, dU3]]), line=71)
+Xm = al.assign("XM", Matrix([[dU1, dU2, dU3]]), line=71)  # al> Xm = [ dU1,  dU2,  dU3 ]
 # al> Xp = [ dU1'; dU2'; dU3' ]
 Xp = al.assign("XP", Matrix([dU1.diff(t), dU2.diff(t), dU3.diff(t)]), line=72)
-# al> Am = D( Xp, Xm )
-Am = al.assign("AM", al.d(Xp, Xm), line=73)
+Am = al.assign("AM", al.d(Xp, Xm), line=73)  # al> Am = D( Xp, Xm )
 # al> %-----
 # al> %      To find eigenvalues of Am symbolically, find the roots of the
 # al> %      equation found by setting the determinant of LAMBDA*I-A = 0
-# al> Variables LAMBDA
-LAMBDA = al.variables("LAMBDA", line=77)
+LAMBDA = al.variables("LAMBDA", line=77)  # al> Variables LAMBDA
 # al> DET = Det( LAMBDA*DIAGMAT(3,1) - Am )
 DET = al.assign("DET", al.det(LAMBDA * al.diagmat(3, 1) - Am), line=78)
 # al> %-----
 # al> %      Inspection of DET shows that LAMBDA=0 is a root
-# al> DET /= LAMBDA
-DET = al.assign("DET", al.val(DET) / (LAMBDA), line=81)
+DET = al.assign("DET", al.val(DET) / (LAMBDA), line=81)  # al> DET /= LAMBDA
 # al> %-----
 # al> %      With J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1,
 # al> %      determine the values of OMEGA which result in LAMBDA > 0
-# al> DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)
-DET = al.assign(
+DET = al.assign(  # al> DET := Evaluate(DET, J=0.07634, I1=1.25, I2=4.25, I3=5, nU3=1)
     "DET", al.evaluate(DET, {J: 0.07634, I1: 1.25, I2: 4.25, I3: 5, nU3: 1}), line=85
 )
 # al> %-----
 # al> %      Record Autolev responses
-# al> Save tutor9.all
-al.save("tutor9.all", line=88)
+al.save("tutor9.all", line=88)  # al> Save tutor9.all
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
+@al.numerics.document_run  # its Inputs become keyword parameters
 def run(values=None, /, **overrides):
-    """Perform this script's CODE job; keyword arguments override Inputs.
-
-    Without ``job=`` it is the only job, else the only Dynamics/ODE job,
-    else an error listing the jobs (``job="NAME"`` or ``job=2`` picks one).
-
-    Values are in the Input's own units (``run(QA=30)`` with ``QA`` in deg).
-    ``result["NAME"]`` is a numpy array with one value per output row.
-    """
+    """Perform the CODE job; keyword arguments override Inputs (in their
+    units): ``run(QA=30)``, ``result["QA"]``; ``job=`` picks a job."""
     return al.numerics.run(values, **overrides)
 
 
-al.numerics.document_run(run)  # its Inputs become keyword parameters (tab completion)
-
-
 def ode_function(values=None, /, **overrides):
-    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``:
-    the only CODE Dynamics/ODE job's equations of motion (else ``job=``
-    names one) in internal units (SI, radians);
-    keyword arguments override Inputs as for ``run()``, which integrates
-    the same function."""
+    """``(f, y0, names)`` for ``scipy.integrate.solve_ivp(f, (t0, t1), y0)``."""
     return al.numerics.ode_function(values, **overrides)
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job, ``job=`` as for ``run()``) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity (or of the CODE job) over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def linearize(values=None, /, *, job=None, symbolic=False, **overrides):
-    """The CODE job's equations of motion linearized, ``x' = A x + B r``,
-    about the point its Inputs and ``overrides`` give (as for ``run()``).
-
-    ``lin = linearize(U6=-5 / 0.3)``: ``lin.A``, ``lin.B`` (SI units,
-    radians), ``lin.states``, ``lin.inputs`` (the Specified quantities with
-    no equation), ``lin.eigenvalues()``; ``A, B = linearize()`` unpacks.
-    ``symbolic=True`` keeps the constants as symbols (sympy matrices).
-    """
+    """The CODE job's ``x' = A x + B r`` about a point: ``lin.A``, ``lin.B``."""
     return al.numerics.linearize(values, job=job, symbolic=symbolic, **overrides)
 
 

@@ -1,11 +1,9 @@
-"""Autolev script whipple_benchmark.al, converted to Python.
-
-Converted from whipple_benchmark.al by al2py 0.2.0; edit the .al file and
-convert again rather than editing this module.
+"""Autolev script whipple_benchmark.al converted by al2py 0.2.0: edit the .al file
+instead.
 
 ``import whipple_benchmark`` runs the symbolic part silently; ``AUTOLEV`` maps
-Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.
-``python whipple_benchmark.py`` prints the transcript Autolev would print.
+Autolev names (``"ZERO[1]"``, ``"X'"``) to their current values.  ``python
+whipple_benchmark.py`` prints the transcript Autolev would print.
 """
 
 import sys
@@ -13,15 +11,10 @@ import sys
 if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
     # answered here, before sympy loads and the model is derived
     sys.stdout.write("""\
-usage: python whipple_benchmark.py [-h] [--set NAME=VALUE] [--job STEM]
-                                   [--tfinal TFINAL] [--outdir OUTDIR] [--plot]
-                                   [--animate]
-                                   [--backend {auto,c,llvm,lambdify}]
-                                   [--zero-missing] [--emit-code DIR]
-                                   [--no-run] [--max-seconds S] [--max-evals N]
+usage: python whipple_benchmark.py [-h] [options]
 
-Print the Autolev transcript of whipple_benchmark.al and perform its numerical CODE\
- job.
+Print the Autolev transcript of whipple_benchmark.al and perform its numerical
+CODE job.
 
 options:
   -h, --help            show this help message and exit
@@ -53,32 +46,15 @@ options:
                         (default 5e+06; or AL2PY_MAX_EVALS)
 
 Input values (change with --set NAME=VALUE, in these units):
-  W = 1.02
-  C = 0.08
-  LAM = 0.314159265358979
-  G = 9.81
-  RR = 0.3
-  RF = 0.35
-  MR = 2
-  MB = 85
-  MH = 4
-  MF = 3
-  XB = 0.3
-  ZB = -0.9
-  XH = 0.9
-  ZH = -0.7
-  IRXX = 0.0603
-  IRYY = 0.12
-  IFXX = 0.1405
-  IFYY = 0.28
-  IBXX = 9.2
-  IBYY = 11
-  IBZZ = 2.8
-  IBXZ = 2.4
-  IHXX = 0.05892
-  IHYY = 0.06
-  IHZZ = 0.00708
-  IHXZ = -0.00756
+  W = 1.02                 C = 0.08                 LAM = 0.314159265358979
+  G = 9.81                 RR = 0.3                 RF = 0.35
+  MR = 2                   MB = 85                  MH = 4
+  MF = 3                   XB = 0.3                 ZB = -0.9
+  XH = 0.9                 ZH = -0.7                IRXX = 0.0603
+  IRYY = 0.12              IFXX = 0.1405            IFYY = 0.28
+  IBXX = 9.2               IBYY = 11                IBZZ = 2.8
+  IBXZ = 2.4               IHXX = 0.05892           IHYY = 0.06
+  IHZZ = 0.00708           IHXZ = -0.00756
 This script has no CODE statement: it only prints its transcript.
 Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
@@ -100,14 +76,12 @@ al = Workspace("whipple_benchmark.al", __file__)
 # al> %-----
 # al> AutoZ ON                           % intermediates, as Autolev's Z's
 al.settings.set("Autoz", "ON")
-# al> Newtonian N
-N = ReferenceFrame("N")
+N = ReferenceFrame("N")  # al> Newtonian N
 al.model.declare_newtonian(N)
 # al> Frames    Y, L, E            % heading, lean (roll), steer axis
 Y, L, E = ReferenceFrame("Y"), ReferenceFrame("L"), ReferenceFrame("E")
 al.model.declare_frames(Y, L, E)
-# al> Bodies    R, B, H, F
-R, B, H, F = al.model.bodies("R", "B", "H", "F")
+R, B, H, F = al.model.bodies("R", "B", "H", "F")  # al> Bodies    R, B, H, F
 Ro = al.model.point("RO")
 Bo = al.model.point("BO")
 Ho = al.model.point("HO")
@@ -124,12 +98,10 @@ al.model.declare_points(P, S)
 # al> %-----
 # al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
 # al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
-# al> Variables Q{8}'
-Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = al.variables(
+Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = al.variables(  # al> Variables Q{8}'
     "Q1'", "Q2'", "Q3'", "Q4'", "Q5'", "Q6'", "Q7'", "Q8'", line=16
 )
-# al> Variables U{8}'
-U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(
+U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(  # al> Variables U{8}'
     "U1'", "U2'", "U3'", "U4'", "U5'", "U6'", "U7'", "U8'", line=17
 )
 # al> Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt, gravity
@@ -158,8 +130,7 @@ B_body.mass = MB
 H_body.mass = MH
 F_body.mass = MF
 al.model.given_masses(R_body, B_body, H_body, F_body, line=25)
-# al> Inertia R, IRXX, IRYY, IRXX
-R_body.central_inertia = inertia(R, IRXX, IRYY, IRXX)
+R_body.central_inertia = inertia(R, IRXX, IRYY, IRXX)  # al> Inertia R, IRXX, IRYY, IRXX
 al.model.given_inertia(R_body, line=26)
 # al> Inertia B, IBXX, IBYY, IBZZ, 0, 0, IBXZ
 B_body.central_inertia = inertia(B, IBXX, IBYY, IBZZ, 0, 0, IBXZ)
@@ -167,117 +138,82 @@ al.model.given_inertia(B_body, line=27)
 # al> Inertia H, IHXX, IHYY, IHZZ, 0, 0, IHXZ
 H_body.central_inertia = inertia(H, IHXX, IHYY, IHZZ, 0, 0, IHXZ)
 al.model.given_inertia(H_body, line=28)
-# al> Inertia F, IFXX, IFYY, IFXX
-F_body.central_inertia = inertia(F, IFXX, IFYY, IFXX)
+F_body.central_inertia = inertia(F, IFXX, IFYY, IFXX)  # al> Inertia F, IFXX, IFYY, IFXX
 al.model.given_inertia(F_body, line=29)
 # al> %-----
-# al> Simprot(N, Y, 3, Q3)
-Y.orient_axis(N, N.z, Q3)
+Y.orient_axis(N, N.z, Q3)  # al> Simprot(N, Y, 3, Q3)
 al.model.given_orientation(Y, N, line=31)
-# al> Simprot(Y, L, 1, Q4)
-L.orient_axis(Y, Y.x, Q4)
+L.orient_axis(Y, Y.x, Q4)  # al> Simprot(Y, L, 1, Q4)
 al.model.given_orientation(L, Y, line=32)
-# al> Simprot(L, B, 2, Q5)
-B.orient_axis(L, L.y, Q5)
+B.orient_axis(L, L.y, Q5)  # al> Simprot(L, B, 2, Q5)
 al.model.given_orientation(B, L, line=33)
-# al> Simprot(B, R, 2, Q6)
-R.orient_axis(B, B.y, Q6)
+R.orient_axis(B, B.y, Q6)  # al> Simprot(B, R, 2, Q6)
 al.model.given_orientation(R, B, line=34)
-# al> Simprot(B, E, 2, LAM)
-E.orient_axis(B, B.y, LAM)
+E.orient_axis(B, B.y, LAM)  # al> Simprot(B, E, 2, LAM)
 al.model.given_orientation(E, B, line=35)
 # al> % H's axes are parallel to B's when the steer angle is zero.
-# al> Dircos(E, H, BODY321, Q7, -LAM, 0)
-H.orient_body_fixed(E, (Q7, -LAM, 0), "321")
+H.orient_body_fixed(E, (Q7, -LAM, 0), "321")  # al> Dircos(E, H, BODY321, Q7, -LAM, 0)
 al.model.given_orientation(H, E, line=37)
-# al> Simprot(H, F, 2, Q8)
-F.orient_axis(H, H.y, Q8)
+F.orient_axis(H, H.y, Q8)  # al> Simprot(H, F, 2, Q8)
 al.model.given_orientation(F, H, line=38)
 # al> %-----
 # al> Q1' = U1
 kd_eqs = []  # kinematical differential equations, Eq(q', rhs)
 kd_eqs.append(al.kd(Eq(Q1.diff(t), U1), line=40))
-# al> Q2' = U2
-kd_eqs.append(al.kd(Eq(Q2.diff(t), U2), line=41))
-# al> Q3' = U3
-kd_eqs.append(al.kd(Eq(Q3.diff(t), U3), line=42))
-# al> Q4' = U4
-kd_eqs.append(al.kd(Eq(Q4.diff(t), U4), line=43))
-# al> Q5' = U5
-kd_eqs.append(al.kd(Eq(Q5.diff(t), U5), line=44))
-# al> Q6' = U6
-kd_eqs.append(al.kd(Eq(Q6.diff(t), U6), line=45))
-# al> Q7' = U7
-kd_eqs.append(al.kd(Eq(Q7.diff(t), U7), line=46))
-# al> Q8' = U8
-kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))
+kd_eqs.append(al.kd(Eq(Q2.diff(t), U2), line=41))  # al> Q2' = U2
+kd_eqs.append(al.kd(Eq(Q3.diff(t), U3), line=42))  # al> Q3' = U3
+kd_eqs.append(al.kd(Eq(Q4.diff(t), U4), line=43))  # al> Q4' = U4
+kd_eqs.append(al.kd(Eq(Q5.diff(t), U5), line=44))  # al> Q5' = U5
+kd_eqs.append(al.kd(Eq(Q6.diff(t), U6), line=45))  # al> Q6' = U6
+kd_eqs.append(al.kd(Eq(Q7.diff(t), U7), line=46))  # al> Q7' = U7
+kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))  # al> Q8' = U8
 # al> %-----
-# al> W_Y_N> = U3*N3>
-Y.set_ang_vel(N, U3 * N.z)
+Y.set_ang_vel(N, U3 * N.z)  # al> W_Y_N> = U3*N3>
 al.model.given_ang_vel(Y, N, line=49)
-# al> W_L_N> = W_Y_N> + U4*Y1>
-L.set_ang_vel(N, al.model.ang_vel(Y, N) + U4 * Y.x)
+L.set_ang_vel(N, al.model.ang_vel(Y, N) + U4 * Y.x)  # al> W_L_N> = W_Y_N> + U4*Y1>
 al.model.given_ang_vel(L, N, line=50)
-# al> W_B_N> = W_L_N> + U5*L2>
-B.set_ang_vel(N, al.model.ang_vel(L, N) + U5 * L.y)
+B.set_ang_vel(N, al.model.ang_vel(L, N) + U5 * L.y)  # al> W_B_N> = W_L_N> + U5*L2>
 al.model.given_ang_vel(B, N, line=51)
-# al> W_R_N> = W_B_N> + U6*B2>
-R.set_ang_vel(N, al.model.ang_vel(B, N) + U6 * B.y)
+R.set_ang_vel(N, al.model.ang_vel(B, N) + U6 * B.y)  # al> W_R_N> = W_B_N> + U6*B2>
 al.model.given_ang_vel(R, N, line=52)
-# al> W_E_N> = W_B_N>
-E.set_ang_vel(N, al.model.ang_vel(B, N))
+E.set_ang_vel(N, al.model.ang_vel(B, N))  # al> W_E_N> = W_B_N>
 al.model.given_ang_vel(E, N, line=53)
-# al> W_H_N> = W_B_N> + U7*E3>
-H.set_ang_vel(N, al.model.ang_vel(B, N) + U7 * E.z)
+H.set_ang_vel(N, al.model.ang_vel(B, N) + U7 * E.z)  # al> W_H_N> = W_B_N> + U7*E3>
 al.model.given_ang_vel(H, N, line=54)
-# al> W_F_N> = W_H_N> + U8*H2>
-F.set_ang_vel(N, al.model.ang_vel(H, N) + U8 * H.y)
+F.set_ang_vel(N, al.model.ang_vel(H, N) + U8 * H.y)  # al> W_F_N> = W_H_N> + U8*H2>
 al.model.given_ang_vel(F, N, line=55)
 # al> %-----
-# al> P_P_Ro> = -RR*L3>
-Ro.set_pos(P, -RR * L.z)
+Ro.set_pos(P, -RR * L.z)  # al> P_P_Ro> = -RR*L3>
 al.model.given_pos(Ro, P, line=57)
-# al> P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>
-Bo.set_pos(Ro, XB * B.x + (ZB + RR) * B.z)
+Bo.set_pos(Ro, XB * B.x + (ZB + RR) * B.z)  # al> P_Ro_Bo> = XB*B1> + (ZB + RR)*B3>
 al.model.given_pos(Bo, Ro, line=58)
 # al> % The steer axis meets the ground at distance W + C ahead of P.
-# al> P_Ro_S> = (W + C)*B1> + RR*B3>
-S.set_pos(Ro, (W + C) * B.x + RR * B.z)
+S.set_pos(Ro, (W + C) * B.x + RR * B.z)  # al> P_Ro_S> = (W + C)*B1> + RR*B3>
 al.model.given_pos(S, Ro, line=60)
-# al> P_S_Ho> = (XH - W - C)*H1> + ZH*H3>
-Ho.set_pos(S, (XH - W - C) * H.x + ZH * H.z)
+Ho.set_pos(S, (XH - W - C) * H.x + ZH * H.z)  # al> P_S_Ho> = (XH - W - C)*H1> + ZH*H3>
 al.model.given_pos(Ho, S, line=61)
-# al> P_S_Fo> = -C*H1> - RF*H3>
-Fo.set_pos(S, -C * H.x - RF * H.z)
+Fo.set_pos(S, -C * H.x - RF * H.z)  # al> P_S_Fo> = -C*H1> - RF*H3>
 al.model.given_pos(Fo, S, line=62)
 # al> DOWN> = Cross(H2>, Cross(N3>, H2>))
 DOWN_vec = al.assign("DOWN>", al.model.cross(H.y, al.model.cross(N.z, H.y)), line=63)
 # al> P_Fo_Q> = RF*UnitVec(DOWN>)
 P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.model.unitvec(DOWN_vec), line=64)
 # al> %-----
-# al> V_P_N> = U1*N1> + U2*N2>
-P.set_vel(N, U1 * N.x + U2 * N.y)
+P.set_vel(N, U1 * N.x + U2 * N.y)  # al> V_P_N> = U1*N1> + U2*N2>
 al.model.given_vel(P, N, line=66)
-# al> V2pts(N, L, P, Ro)
-al.model.v2pts(N, L, P, Ro, line=67)
-# al> V2pts(N, B, Ro, Bo)
-al.model.v2pts(N, B, Ro, Bo, line=68)
-# al> V2pts(N, B, Ro, S)
-al.model.v2pts(N, B, Ro, S, line=69)
-# al> V2pts(N, H, S, Ho)
-al.model.v2pts(N, H, S, Ho, line=70)
-# al> V2pts(N, H, S, Fo)
-al.model.v2pts(N, H, S, Fo, line=71)
+al.model.v2pts(N, L, P, Ro, line=67)  # al> V2pts(N, L, P, Ro)
+al.model.v2pts(N, B, Ro, Bo, line=68)  # al> V2pts(N, B, Ro, Bo)
+al.model.v2pts(N, B, Ro, S, line=69)  # al> V2pts(N, B, Ro, S)
+al.model.v2pts(N, H, S, Ho, line=70)  # al> V2pts(N, H, S, Ho)
+al.model.v2pts(N, H, S, Fo, line=71)  # al> V2pts(N, H, S, Fo)
 # al> %-----
 # al> % Rolling without slip: the wheels' material points at the contacts are at rest.
-# al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
-SLIPR_vec = al.assign(
+SLIPR_vec = al.assign(  # al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
     "SLIPR>",
     al.model.vel(Ro, N) + al.model.cross(al.model.ang_vel(R, N), -al.model.pos(P, Ro)),
     line=74,
 )
-# al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
-SLIPF_vec = al.assign(
+SLIPF_vec = al.assign(  # al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
     "SLIPF>",
     al.model.vel(Fo, N) + al.model.cross(al.model.ang_vel(F, N), P_Fo_Q_vec),
     line=75,
@@ -300,19 +236,15 @@ loads = al.model.loads  # sympy Force/Torque loads
 al.model.gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=84)
-# al> Kane()
-Zero = al.model.kane(line=85)
+Zero = al.model.kane(line=85)  # al> Kane()
 # al> % Linearized equations about the upright reference configuration: the
 # al> % accelerations of the independent speeds and their Jacobian by the lean
 # al> % and steer angles and rates (the forward speed is U6 = -v/RR).
 # al> Solve(Zero, U4', U6', U7')
 al.solve(Zero, [U4.diff(t), U6.diff(t), U7.diff(t)], line=89)
-# al> XD = [U4'; U7']
-XD = al.assign("XD", Matrix([U4.diff(t), U7.diff(t)]), line=90)
-# al> XS = [Q4; Q7; U4; U7]
-XS = al.assign("XS", Matrix([Q4, Q7, U4, U7]), line=91)
-# al> AL = D(XD, XS)
-AL = al.assign("AL", al.d(XD, XS), line=92)
+XD = al.assign("XD", Matrix([U4.diff(t), U7.diff(t)]), line=90)  # al> XD = [U4'; U7']
+XS = al.assign("XS", Matrix([Q4, Q7, U4, U7]), line=91)  # al> XS = [Q4; Q7; U4; U7]
+AL = al.assign("AL", al.d(XD, XS), line=92)  # al> AL = D(XD, XS)
 # al> %-----
 # al> % Benchmark parameters, Table 1 of the paper.
 # al> Input W=1.02, C=0.08, LAM=0.314159265358979, G=9.81
@@ -325,53 +257,26 @@ al.numerics.input({"XB": 0.3, "ZB": -0.9, "XH": 0.9, "ZH": -0.7}, line=97)
 al.numerics.input({"IRXX": 0.0603, "IRYY": 0.12, "IFXX": 0.1405, "IFYY": 0.28}, line=98)
 # al> Input IBXX=9.2, IBYY=11, IBZZ=2.8, IBXZ=2.4
 al.numerics.input({"IBXX": 9.2, "IBYY": 11, "IBZZ": 2.8, "IBXZ": 2.4}, line=99)
-# al> Input IHXX=0.05892, IHYY=0.06, IHZZ=0.00708, IHXZ=-0.00756
-al.numerics.input(
+al.numerics.input(  # al> Input IHXX=0.05892, IHYY=0.06, IHZZ=0.00708, IHXZ=-0.00756
     {"IHXX": 0.05892, "IHYY": 0.06, "IHZZ": 0.00708, "IHXZ": -0.00756}, line=100
 )
 
-AUTOLEV = al.names()
+AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more
 
 
 def kanes_method():
-    """``sympy.physics.mechanics.KanesMethod`` of this script's model, with
-    ``mass_matrix_full`` and ``forcing_full`` formed."""
+    """``sympy.physics.mechanics.KanesMethod`` of this script's model."""
     return al.model.kanes_method()
 
 
 def evaluate(name, values=None, /, **given):
-    """The named Autolev quantity as a number (a numpy array for a matrix).
-
-    Input values (in their own units), the values given here and every named
-    intermediate are substituted: ``evaluate("ZERO", QA=30)``.  The quantity
-    is compiled on the first call; later calls take microseconds.  Values may
-    be numpy arrays: the result has their shape in front
-    (``evaluate("AMAT", U6=speeds)``: one matrix per speed).  A Specified
-    quantity nobody gave is 0, as in ``run()``; a constant nobody gave stops,
-    unless ``zero_missing=True``.
-    """
+    """The named quantity as a number: ``evaluate("ZERO", QA=30)``."""
     return al.numerics.evaluate_name(name, values, **given)
 
 
-def sweep(name=None, values=None, /, *, executor=None, job=None, **given):
-    """A ``Sweep`` of the named quantity (or, without a name, of the CODE
-    job) over the grid that its 1-D array values span.
-
-    ``sweep("AMAT", U6=-speeds / 0.3)``: ``.values`` (one matrix per speed),
-    ``.eigenvalues()`` (branches followed across the grid), ``.to_pandas()``,
-    ``.plot()``.  Several arrays give their product; scalars are fixed.
-    ``executor``: any ``concurrent.futures.Executor`` (a process pool,
-    Dask's ``client.get_executor()``) or ``"dask"``; the results are the
-    serial ones.
-    """
-    return al.numerics.sweep(
-        name,
-        values,
-        executor=executor,
-        job=job,
-        origin=(__name__, globals().get("__file__")),
-        **given,
-    )
+def sweep(name=None, values=None, /, **given):
+    """A ``Sweep`` of the named quantity over a grid of values."""
+    return al.numerics.sweep(name, values, origin=(__name__, __file__), **given)
 
 
 def main(argv: list[str] | None = None) -> int:
