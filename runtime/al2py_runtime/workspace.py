@@ -1178,12 +1178,12 @@ def _named_for_display(book: Any, value: Any) -> Any:
 
 class _Partial:
     """``D(y, x)`` for the entries of one command: sympy's ``diff``, or with
-    AutoZ on, the book's walk (one memo per variable, shared by the
-    entries, which share subexpressions; no ``Derivative`` objects built)."""
+    AutoZ on, the book's walk (the book's memo of each variable, shared by
+    every ``D()`` of the script, whose arguments share subexpressions; no
+    ``Derivative`` objects built)."""
 
     def __init__(self, book: Any) -> None:
         self.book = book
-        self.memos: dict[Any, dict] = {}
 
     def __call__(self, y: Any, x: Any) -> Any:
         if not isinstance(y, sp.Basic):
@@ -1191,7 +1191,7 @@ class _Partial:
         book = self.book
         if book is None or x == t or not book.is_variable(x):
             return sp.diff(y, x)
-        return book.derivative(y, x, self.memos.setdefault(x, {}))
+        return book.derivative(y, x)
 
 
 class AutolevNames(Mapping):

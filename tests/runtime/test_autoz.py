@@ -179,3 +179,54 @@ def test_long_expressions_are_named_in_parts():
     for seed in range(3):
         _close(b.expand(z), big, seed)
         _close(b.expand(z.diff(q1)), big.diff(q1), seed)
+
+
+def _same_tree(a, b) -> bool:
+    """Equal and built alike (the printers see the arguments' order)."""
+    return a == b and sp.srepr(a) == sp.srepr(b)
+
+
+def test_minus_and_total_are_sympys_own():
+    """``minus`` and ``total`` give the objects sympy's ``-expr`` and
+    ``Add(*terms)`` give, also for terms with a sum among their factors
+    (kept as products: ``-(2*(a + b))`` is ``-2*(a + b)``), a term that
+    becomes a bare sum (``-(-(a + b))``, whose terms join the sum) and
+    like terms that collect."""
+    b = Intermediates()
+    z1 = b.name(sp.cos(q1) * sp.sin(q2) + L * sp.cos(q2))
+    z2 = b.name(z1**2 * M + sp.sin(q1))
+    s = L + M
+    neg = sp.Mul(-1, s, evaluate=False)
+    sums = [
+        z1 * s + 3 * z2,
+        2 * s * z1 - z2 * (L + sp.sin(q1)) + 4,
+        sp.Add(neg, z1, evaluate=False),
+        sp.Add(sp.Mul(2, s, evaluate=False), z2, evaluate=False),
+        -z1 * z2 * s - sp.Rational(1, 2) * M,
+    ]
+    for e in sums:
+        assert _same_tree(autoz.minus(e), -e), e
+    groups = [
+        [2 * z1 * L, 3 * z2, -z1 * M],
+        [2 * z1 * L, -2 * z1 * L, z2],  # cancel
+        [2 * z1 * L, z1 * L, z2 * s],  # collect
+        [sp.S(3), z1, -sp.S(3), 5 * z1 * z2 * s],
+        [sp.Mul(2, s, evaluate=False), z1],
+    ]
+    for terms in groups:
+        assert _same_tree(autoz.total(terms), sp.Add(*terms)), terms
+
+
+def test_partial_derivatives_share_one_memo_per_variable(book):
+    """Every ``D()`` by one variable reuses the book's memo: the same
+    results as fresh walks, and an intermediate's partial named once."""
+    b, z1, z2 = book
+    e = z2 * u1 + z2**2
+    first = b.derivative(e, q1)
+    assert b.derivative(e, q1) is first
+    count = len(b)
+    fresh = b.derivative(e, q1, {})
+    assert fresh == first and len(b) == count
+    assert b.derivative(e * L, q1) == L * first
+    for seed in range(3):
+        _close(b.expand(first), b.expand(e).diff(q1), seed)

@@ -597,8 +597,11 @@ def minus(expr: Any) -> Any:
     coefficient alone (sympy multiplies ``-1`` into each term with
     ``Mul.flatten`` and collects them again with ``Add.flatten``), then the
     terms sorted as ``Add.flatten`` sorts them (a number first, the rest
-    by ``Basic.compare``).  Terms that are themselves sums, or
-    non-commutative, go to sympy."""
+    by ``Basic.compare``).  A term with a sum among its factors stays a
+    product (``-(2*(a + b))`` is ``-2*(a + b)``, as sympy's ``Mul.__neg__``
+    makes it), unless the negation leaves the sum alone (``-(-(a + b))``:
+    sympy adds its terms to the sum); that case and non-commutative terms
+    go to sympy."""
     if not expr.is_Add:
         return -expr
     number, terms = sp.S.Zero, []
@@ -610,8 +613,10 @@ def minus(expr: Any) -> Any:
             c, rest = -term.args[0], term.args[1:]
         else:
             c, rest = sp.S.NegativeOne, term.args if term.is_Mul else (term,)
-        if not term.is_commutative or any(r.is_Add or r.is_Number for r in rest):
+        if not term.is_commutative or any(r.is_Number for r in rest):
             return -expr
+        if c is sp.S.One and len(rest) == 1 and rest[0].is_Add:
+            return -expr  # -(-(a + b)): sympy adds a + b's terms to the sum
         if c is sp.S.One:
             terms.append(rest[0] if len(rest) == 1 else _product(rest))
         else:
@@ -630,6 +635,9 @@ def total(terms: Sequence[Any]) -> Any:
         return sp.Add(*terms)
     number = sp.S.Zero
     collected: dict[Any, Any] = {}
+    #: key -> the term itself, while no other term has joined it (a product
+    #: of its coefficient and of the key's factors, kept as it is)
+    alone: dict[Any, Any] = {}
     seq = list(terms)
     for o in seq:  # a sum's terms join the end, as in Add.flatten
         if o.is_Add and o.is_commutative:
@@ -653,7 +661,12 @@ def total(terms: Sequence[Any]) -> Any:
         else:
             c, key = sp.S.One, o
         found = collected.get(key)
-        collected[key] = c if found is None else found + c
+        if found is None:
+            collected[key] = c
+            alone[key] = o
+        else:
+            collected[key] = found + c
+            alone.pop(key, None)
     out = []
     for key, c in collected.items():
         if c.is_zero:
@@ -661,7 +674,11 @@ def total(terms: Sequence[Any]) -> Any:
         if c is sp.S.One:
             out.append(key)
         elif key.is_Mul:
-            out.append(_product((c, *key.args)))
+            # _product((c, *key.args)): the term itself when it stood alone
+            o = alone.get(key)
+            out.append(o if o is not None else _product((c, *key.args)))
+        elif key.is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key, evaluate=False))
         else:
             out.append(sp.Mul(c, key))
     return _sum(number, out)
@@ -725,6 +742,11 @@ class Intermediates:
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
+        #: variable -> (expression -> partial derivative by it): the answer
+        #: depends only on the expression (the intermediates' partials are
+        #: named once, in :attr:`_partials`), so every ``D()`` of a script
+        #: and every intermediate's partial share one memo per variable
+        self._pd_memos: dict[Any, dict[Any, Any]] = {}
         self._real: dict[int, bool | None] = {}
         self._busy: set[int] = set()
         self._positions: dict[Any, dict[Any, int]] = {}
@@ -1192,7 +1214,8 @@ class Intermediates:
         found = self._partials.get(key)
         if found is None:
             x = self._vars[k][j]
-            found = self.name(self._pd(self._defs[k], x, {}))
+            memo = self._pd_memos.setdefault(x, {})
+            found = self.name(self._pd(self._defs[k], x, memo))
             self._partials[key] = found
         if not self._canonical(z):
             args = tuple(z.args[1:])
@@ -1219,9 +1242,12 @@ class Intermediates:
 
     def derivative(self, e: Any, x: Any, memo: dict | None = None) -> Any:
         """``D(e, x)``, the partial derivative by the variable ``x`` (the
-        intermediates' derivatives named); ``memo`` may be shared by
-        expressions differentiated by the same ``x``."""
-        return self._pd(sp.sympify(e), x, {} if memo is None else memo)
+        intermediates' derivatives named).  Without ``memo``, the book's
+        own memo of ``x`` (shared by every derivative by ``x``: each
+        distinct part is differentiated once per book)."""
+        if memo is None:
+            memo = self._pd_memos.setdefault(x, {})
+        return self._pd(sp.sympify(e), x, memo)
 
     def total_dt(self, e: Any) -> Any:
         """``de/dt``, as sympy's ``diff(e, t)`` gives it (each variable's
