@@ -380,3 +380,40 @@ def test_in_file_order_and_unspecified_quantities(tmp_path, capsys):
     result = load_module(code, tmp_path, "inorder_mod").run()
     theirs = np.column_stack([result[k] for k in ("T", "Q", "U", "Y")])
     np.testing.assert_allclose(ours, theirs, rtol=1e-5, atol=1e-8)
+
+
+@needs["f"]
+def test_long_fortran_routines_in_parts_run_the_same(tmp_path, capsys, monkeypatch):
+    """Routines over fortran.PART_LINES lines are written as subroutines
+    called in turn (issue 35: gfortran -O2 took 36 s on the bicycle's
+    7,700-line outputs routine); the program reads the same .in and writes
+    the same bytes, and compiles without a warning."""
+    from al2py_runtime.codegen import fortran
+
+    script = tmp_path / "pendulum3.al"
+    script.write_text(_pendulum_source(3))
+    _code(script, tmp_path / "whole", capsys, "--lang", "f")
+    monkeypatch.setattr(fortran, "PART_LINES", 2)
+    _code(script, tmp_path / "parts", capsys, "--lang", "f")
+    whole = (tmp_path / "whole" / "pendulum3.f").read_text()
+    parts = (tmp_path / "parts" / "pendulum3.f").read_text()
+    assert "subroutine aleq1" not in whole and "subroutine alout1" not in whole
+    for name in ("aleq1", "aleq2", "aleq3", "alout1", "alout2"):
+        assert f"      subroutine {name}(" in parts
+    # the solve of M ud = f sits in a part, which returns its code
+    assert "ierr)\n      if (ierr .ne. 0) return\n      call aleq" in parts
+    infile = (tmp_path / "whole" / "pendulum3.in").read_text()
+    assert (tmp_path / "parts" / "pendulum3.in").read_text() == infile
+    for folder in ("whole", "parts"):
+        _set_in(tmp_path / folder / "pendulum3.in", {"TFINAL": 2.0})
+        _run("f", tmp_path / folder, "pendulum3")
+    tables = sorted(p.name for p in (tmp_path / "whole").glob("pendulum3.[0-9]"))
+    assert tables == ["pendulum3.1"]
+    assert (
+        sorted(p.name for p in (tmp_path / "parts").glob("pendulum3.[0-9]")) == tables
+    )
+    a = (tmp_path / "whole" / "pendulum3.1").read_bytes()
+    assert (
+        len(a.splitlines()) > 20
+        and a == (tmp_path / "parts" / "pendulum3.1").read_bytes()
+    )

@@ -7,13 +7,17 @@ from __future__ import annotations
 import math
 import re
 import textwrap
+from dataclasses import dataclass
 from typing import Any
 
 import sympy as sp
+from sympy.core.mul import _keep_coeff
 from sympy.printing.fortran import FCodePrinter
+from sympy.printing.precedence import PRECEDENCE
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
+from .printers import Remembering
 from .program import Assign, Program, one_based_target
 
 __all__ = ["fortran_source"]
@@ -21,18 +25,92 @@ __all__ = ["fortran_source"]
 _W = 72  # last column of fixed source form
 
 
-class _Printer(FCodePrinter):
+class _Printer(Remembering, FCodePrinter):
+    """sympy's Fortran printer, the same text faster (see
+    :class:`.printers.Remembering`; and the names already used are a set,
+    where sympy searches a list for each new name)."""
+
     def __init__(self) -> None:
         super().__init__({"source_format": "fixed", "standard": 95, "strict": True})
+        self._used_names: set[str] = set()
 
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
 
-    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        if backends.without_re(expr):
-            return expr
-        return super()._handle_UnevaluatedExpr(expr)
+    def _print_Symbol(self, expr: Any) -> str:
+        # FCodePrinter._print_Symbol
+        if self._settings["name_mangling"] is True:
+            if expr not in self.mangled_symbols:
+                name = expr.name
+                while name.lower() in self._used_names:
+                    name += "_"
+                self.used_name.append(name.lower())
+                self._used_names.add(name.lower())
+                if name == expr.name:
+                    self.mangled_symbols[expr] = expr
+                else:
+                    self.mangled_symbols[expr] = sp.Symbol(name)
+            expr = expr.xreplace(self.mangled_symbols)
+        return super(FCodePrinter, self)._print_Symbol(expr)
+
+    def _print_Add(self, expr: Any) -> str:
+        # FCodePrinter._print_Add: complex numbers apart
+        number = self._number
+        for arg in expr.args:
+            if number(arg) and not arg.is_real and arg.is_imaginary:
+                return super()._print_Add(expr)
+        return self._print_str_add(expr)
+
+    def _print_Mul(self, expr: Any) -> str:
+        # FCodePrinter._print_Mul, then CodePrinter._print_Mul, with the
+        # number tests, precedences and sort keys remembered
+        if self._number(expr) and expr.is_imaginary:
+            return super()._print_Mul(expr)
+        prec = self._prec(expr)
+        c, e = expr.as_coeff_Mul()
+        if c < 0:
+            expr = _keep_coeff(-c, e)
+            sign = "-"
+        else:
+            sign = ""
+        a: list = []  # the numerator's factors
+        b: list = []  # the denominator's
+        pow_paren = []  # powers -1 of products of more than one factor
+        if self.order in ("old", "none"):
+            args = sp.Mul.make_args(expr)
+        else:
+            args = self._ordered_factors(expr)
+        for item in args:
+            if (
+                item.is_commutative
+                and item.is_Pow
+                and item.exp.is_Rational
+                and item.exp.is_negative
+            ):
+                if item.exp != -1:
+                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
+                else:
+                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
+                        pow_paren.append(item)
+                    b.append(sp.Pow(item.base, -item.exp))
+            else:
+                a.append(item)
+        a = a or [sp.S.One]
+        if len(a) == 1 and sign == "-":
+            level = 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"])
+            a_str = [self.parenthesize(a[0], level)]  # type: ignore[arg-type]
+        else:
+            a_str = [self.parenthesize(x, prec) for x in a]
+        b_str = [self.parenthesize(x, prec) for x in b]
+        for item in pow_paren:
+            if item.base in b:
+                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
+        if not b:
+            return sign + "*".join(a_str)
+        if len(b) == 1:
+            return sign + "*".join(a_str) + "/" + b_str[0]
+        return sign + "*".join(a_str) + "/({})".format("*".join(b_str))
 
 
 def _d(x: float) -> str:
@@ -88,31 +166,182 @@ def _decl(names: list[str], kind: str = "double precision") -> list[str]:
     return lines
 
 
-def _body(program: Program, block: list[Assign], printer: _Printer) -> list[str]:
+@dataclass
+class _Step:
+    """One statement of a routine: its lines, the names it defines and
+    those it uses, and its assignment (None for the solve)."""
+
+    lines: list[str]
+    defines: list[str]
+    uses: set[str]
+    assign: Assign | None
+
+
+def _steps(program: Program, block: list[Assign], printer: _Printer) -> list[_Step]:
+    """The statements of ``block`` (the solve at ``solve_at`` in eqns)."""
     n = program.nu
+    solve = [
+        f"      call alsolve({n}, mm, ud, ierr)",
+        "      if (ierr .ne. 0) return",
+    ]
+    steps = []
+    for k, a in enumerate(block):
+        kind = a.target[0]
+        if k == program.solve_at and n and block is program.eqns:
+            steps.append(_Step(list(solve), [], set(), None))
+        if kind == "ud":
+            line = f"      {a.target[2]} = ud({a.target[1] + 1})"
+            steps.append(_Step([line], [a.target[2]], set(), a))
+            continue
+        target = one_based_target(a)
+        uses = {s.name for s in backends.free_symbols_of(a.expr)}
+        defines = [a.target[1]] if kind == "tmp" else []
+        steps.append(_Step(_code(printer, a.expr, target), defines, uses, a))
+    if block is program.eqns and program.solve_at == len(block) and n:
+        steps.append(_Step(list(solve), [], set(), None))
+    return steps
+
+
+def _loads(program: Program, block: list[Assign]) -> list[str]:
+    """The constants and states ``block`` uses, from ``p`` and ``y``."""
     lines = []
     for i, e in program.params_used(block):
         lines.append(f"      {e.ident} = p({i + 1})")
     for i, e in program.states_used(block):
         lines.append(f"      {e.ident} = y({i + 1})")
-    for k, a in enumerate(block):
-        kind = a.target[0]
-        if k == program.solve_at and n and block is program.eqns:
-            lines += [
-                f"      call alsolve({n}, mm, ud, ierr)",
-                "      if (ierr .ne. 0) return",
-            ]
-        if kind == "ud":
-            lines.append(f"      {a.target[2]} = ud({a.target[1] + 1})")
-            continue
-        target = one_based_target(a)
-        lines += _code(printer, a.expr, target)
-    if block is program.eqns and program.solve_at == len(block) and n:
-        lines += [
-            f"      call alsolve({n}, mm, ud, ierr)",
-            "      if (ierr .ne. 0) return",
-        ]
     return lines
+
+
+def _body(program: Program, block: list[Assign], printer: _Printer) -> list[str]:
+    lines = _loads(program, block)
+    for step in _steps(program, block, printer):
+        lines += step.lines
+    return lines
+
+
+#: a routine of more printed lines is written in parts of about this many:
+#: gfortran's optimizer takes time growing faster than a routine's length
+#: (the bicycle's 7,700-line outputs routine took 36 s at -O2)
+PART_LINES = 1000
+
+
+@dataclass
+class _Routine:
+    """A routine's statements in parts (:func:`_parts`)."""
+
+    calls: list[str]  # the routine's statements: a call of each part
+    sources: list[str]  # the parts, each a subroutine
+    work: str  # the work array's name
+    size: int  # its size (0: none)
+    uses_t: bool = False
+    uses_y: bool = False
+    uses_p: bool = False
+
+
+def _parts(
+    program: Program, steps: list[_Step], prefix: str, arrays: dict[str, str]
+) -> _Routine:
+    """``steps`` as subroutines ``{prefix}1, {prefix}2, ...`` of about
+    :data:`PART_LINES` lines each, called in turn: the same statements in
+    the same order.  A value one part defines and a later one uses passes
+    through the routine's work array (stored after the statements that
+    define it, loaded before those that use it).  ``arrays``: the routine's
+    arrays that parts may use, with their declarations (``mm(6, 6)``)."""
+    groups: list[list[_Step]] = [[]]
+    size = 0
+    for step in steps:
+        if size and size + len(step.lines) > PART_LINES:
+            groups.append([])
+            size = 0
+        groups[-1].append(step)
+        size += len(step.lines)
+    taken = {e.ident.lower() for e in program.constants + program.initials}
+    taken |= {d.lower() for step in steps for d in step.defines}
+    taken |= {x.lower() for step in steps for x in step.uses}
+    work = _free_name("alw", taken)
+    names = [_free_name(f"{prefix}{k}", taken) for k in range(1, len(groups) + 1)]
+    later: list[set[str]] = []  # the names used after each group
+    seen: set[str] = set()
+    for group in reversed(groups):
+        later.append(set(seen))
+        for step in group:
+            seen |= step.uses
+    later.reverse()
+    slots: dict[str, int] = {}
+    defined: set[str] = set()
+    planned = []
+    for group, after in zip(groups, later, strict=True):
+        uses = set().union(*(step.uses for step in group))
+        loads = sorted(uses & defined, key=lambda x: slots[x])
+        own = [d for step in group for d in step.defines]
+        stores = [d for d in own if d in after]
+        for d in stores:
+            slots.setdefault(d, len(slots) + 1)
+        defined |= set(own)
+        planned.append((loads, own, stores, group))
+    out = _Routine([], [], work, len(slots))
+    ny, np_ = max(program.ny, 1), max(program.np, 1)
+    for name, (loads, own, stores, group) in zip(names, planned, strict=True):
+        assigns = [step.assign for step in group if step.assign is not None]
+        text = "\n".join(line for step in group for line in step.lines)
+        use_t = _uses(assigns, "T")
+        use_y = bool(program.states_used(assigns))
+        use_p = bool(program.params_used(assigns))
+        used_arrays = [a for a in arrays if re.search(rf"\b{a}\b", text)]
+        solve = any(step.assign is None for step in group)
+        args = [a for a, on in (("T", use_t), ("y", use_y), ("p", use_p)) if on]
+        args += used_arrays
+        if loads or stores:
+            args.append(work)
+        if solve:
+            args.append("ierr")
+        out.uses_t |= use_t
+        out.uses_y |= use_y
+        out.uses_p |= use_p
+        out.calls += _continued(f"      call {name}({', '.join(args)})")
+        if solve:
+            out.calls.append("      if (ierr .ne. 0) return")
+        lines = _continued(f"      subroutine {name}({', '.join(args)})")
+        lines.append("      implicit none")
+        decls = [x for x, on in (("T", use_t),) if on]
+        decls += [f"y({ny})"] if use_y else []
+        decls += [f"p({np_})"] if use_p else []
+        decls += [arrays[a] for a in used_arrays]
+        decls += [f"{work}({len(slots)})"] if loads or stores else []
+        lines += _decl(decls)
+        if solve:
+            lines.append("      integer ierr")
+        local = [e.ident for _i, e in program.params_used(assigns)]
+        local += [e.ident for _i, e in program.states_used(assigns)]
+        lines += _decl(local + loads + own)
+        lines += _loads(program, assigns)
+        lines += [f"      {x} = {work}({slots[x]})" for x in loads]
+        lines += [line for step in group for line in step.lines]
+        lines += [f"      {work}({slots[x]}) = {x}" for x in stores]
+        out.sources += [*lines, "      end", ""]
+    return out
+
+
+def _free_name(base: str, taken: set[str]) -> str:
+    """``base`` (``base_`` ... when a name of the program is ``base``)."""
+    name = base
+    while name.lower() in taken:
+        name += "_"
+    taken.add(name.lower())
+    return name
+
+
+def _continued(line: str) -> list[str]:
+    """A long statement of the program's own over continuation lines."""
+    if len(line) <= _W:
+        return [line]
+    out = []
+    rest = line
+    while len(rest) > _W:
+        cut = rest.rfind(", ", 0, _W - 1) + 1
+        out.append(rest[:cut])
+        rest = "     &  " + rest[cut:].lstrip()
+    return [*out, rest]
 
 
 def _locals(program: Program, block: list[Assign]) -> list[str]:
@@ -141,6 +370,8 @@ def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> lis
 
 
 def equations(program: Program) -> list[str]:
+    """The subroutines ``eqns`` and ``outputs`` (and their parts, when
+    longer than :data:`PART_LINES`), and ``alsolve``."""
     printer = _Printer()
     n, ny, np_, nout = program.nu, max(program.ny, 1), program.np, program.nout
     e = program.eqns
@@ -156,17 +387,32 @@ def equations(program: Program) -> list[str]:
     ]
     if n:
         lines.append(f"      double precision mm({n}, {n})")
-    lines += _decl(_locals(program, e))
+    steps = _steps(program, e, printer)
+    parts = None
+    if sum(len(step.lines) for step in steps) > PART_LINES * 3 // 2:
+        arrays = {"dy": f"dy({ny})", "ud": f"ud({max(n, 1)})"}
+        if n:
+            arrays["mm"] = f"mm({n}, {n})"
+        parts = _parts(program, steps, "aleq", arrays)
+        if parts.size:
+            lines += _decl([f"{parts.work}({parts.size})"])
+        used = {"T": parts.uses_t, "y": parts.uses_y, "p": parts.uses_p}
+    else:
+        lines += _decl(_locals(program, e))
+        used = {
+            "T": _uses(e, "T"),
+            "y": bool(program.states_used(e)),
+            "p": bool(program.params_used(e)),
+        }
     lines.append("      ierr = 0")
-    used = {
-        "T": _uses(e, "T"),
-        "y": bool(program.states_used(e)),
-        "p": bool(program.params_used(e)),
-    }
     lines += _guards(program, e, used)
     if not n:
         lines.append("      ud(1) = 0d0")
-    lines += _body(program, e, printer)
+    if parts is not None:
+        lines += parts.calls
+    else:
+        lines += _loads(program, e)
+        lines += [line for step in steps for line in step.lines]
     if program.ny:
         lines += [
             f"      do i = 1, {ny}",
@@ -178,6 +424,8 @@ def equations(program: Program) -> list[str]:
     else:
         lines.append("      dy(1) = 0d0")
     lines += ["      end", ""]
+    if parts is not None:
+        lines += parts.sources
     o = program.outputs
     lines += _comment("The output quantities at (T, y), all tables in order.")
     lines += [
@@ -187,15 +435,29 @@ def equations(program: Program) -> list[str]:
         f"      double precision dy({ny}), ud({max(n, 1)})",
         "      integer ierr",
     ]
-    lines += _decl(_locals(program, o))
+    steps = _steps(program, o, printer)
+    parts = None
+    if sum(len(step.lines) for step in steps) > PART_LINES * 3 // 2:
+        arrays = {"out": f"out({max(nout, 1)})", "ud": f"ud({max(n, 1)})"}
+        parts = _parts(program, steps, "alout", arrays)
+        if parts.size:
+            lines += _decl([f"{parts.work}({parts.size})"])
+    else:
+        lines += _decl(_locals(program, o))
     lines += [
         "      call eqns(T, y, p, dy, ud, ierr)",
         "      if (ierr .ne. 0) return",
     ]
     if not nout:
         lines.append("      out(1) = 0d0")
-    lines += _body(program, o, printer)
+    if parts is not None:
+        lines += parts.calls
+    else:
+        lines += _loads(program, o)
+        lines += [line for step in steps for line in step.lines]
     lines += ["      end", ""]
+    if parts is not None:
+        lines += parts.sources
     if n:
         lines += _SOLVE_F.splitlines()
     return lines
@@ -203,15 +465,20 @@ def equations(program: Program) -> list[str]:
 
 def _program_name(program: Program) -> str:
     stem = program.stem
-    if re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,30}", stem) and stem.lower() not in {
-        "eqns",
-        "outputs",
-        "kutta",
-        "alsolve",
-        "alrow",
-        "alread",
-        "alargs",
-    }:
+    if (
+        re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,30}", stem)
+        and stem.lower()
+        not in {
+            "eqns",
+            "outputs",
+            "kutta",
+            "alsolve",
+            "alrow",
+            "alread",
+            "alargs",
+        }
+        and not re.fullmatch(r"al((eq|out)\d+|w)_*", stem.lower())
+    ):
         return stem
     return "alprog"
 

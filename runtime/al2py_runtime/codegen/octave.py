@@ -9,10 +9,12 @@ import textwrap
 from typing import Any
 
 import sympy as sp
+from sympy.core.mul import _keep_coeff
+from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
 
-from ..jobs import backends
 from ..jobs.run import NumericsError
+from .printers import Remembering
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -26,20 +28,95 @@ def _str(text: str) -> str:
     return "'" + text.replace("'", "''") + "'"
 
 
-class _Printer(OctaveCodePrinter):
-    """sympy's MATLAB printer, with its precedences kept per class as the C
-    printer keeps them, and no rebuilding of expressions without ``re``."""
+class _Printer(Remembering, OctaveCodePrinter):
+    """sympy's MATLAB printer, the same text faster (see
+    :class:`.printers.Remembering`)."""
 
-    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
-        prec = backends.precedence_of(item)
-        if prec < level or (not strict and prec <= level):
-            return f"({self._print(item)})"
-        return self._print(item)
+    def _print_Add(self, expr: Any, order: Any = None) -> str:
+        return self._print_str_add(expr, order)
 
-    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        if backends.without_re(expr):
-            return expr
-        return super()._handle_UnevaluatedExpr(expr)
+    def _print_Mul(self, expr: Any) -> str:
+        # OctaveCodePrinter._print_Mul with the number tests, precedences
+        # and sort keys remembered
+        number = self._number
+        if (
+            number(expr)
+            and expr.is_imaginary
+            and (sp.S.ImaginaryUnit * expr).is_Integer
+        ):
+            return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
+        prec = self._prec(expr)
+        c, e = expr.as_coeff_Mul()
+        if c < 0:
+            expr = _keep_coeff(-c, e)
+            sign = "-"
+        else:
+            sign = ""
+        a: list = []  # the numerator's factors
+        b: list = []  # the denominator's
+        pow_paren = []  # powers -1 of products of more than one factor
+        if self.order in ("old", "none"):
+            args = sp.Mul.make_args(expr)
+        else:
+            args = self._ordered_factors(expr)
+        for item in args:
+            if (
+                item.is_commutative
+                and item.is_Pow
+                and item.exp.is_Rational
+                and item.exp.is_negative
+            ):
+                if item.exp != -1:
+                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
+                else:
+                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
+                        pow_paren.append(item)
+                    b.append(sp.Pow(item.base, -item.exp))
+            elif item.is_Rational and item is not sp.S.Infinity:
+                if item.p != 1:
+                    a.append(sp.Rational(item.p))
+                if item.q != 1:
+                    b.append(sp.Rational(item.q))
+            else:
+                a.append(item)
+        a = a or [sp.S.One]
+        a_str = [self.parenthesize(x, prec) for x in a]
+        b_str = [self.parenthesize(x, prec) for x in b]
+        for item in pow_paren:
+            if item.base in b:
+                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
+
+        def multjoin(a: list, a_str: list) -> str:
+            r = a_str[0]
+            for i in range(1, len(a)):
+                r = r + ("*" if number(a[i - 1]) else ".*") + a_str[i]
+            return r
+
+        if not b:
+            return sign + multjoin(a, a_str)
+        if len(b) == 1:
+            divsym = "/" if number(b[0]) else "./"
+            return sign + multjoin(a, a_str) + divsym + b_str[0]
+        divsym = "/" if all(number(bi) for bi in b) else "./"
+        return sign + multjoin(a, a_str) + divsym + f"({multjoin(b, b_str)})"
+
+    def _print_Pow(self, expr: Any) -> str:
+        # OctaveCodePrinter._print_Pow with the number tests and precedences
+        # remembered
+        number = self._number
+        powsymbol = "^" if all(number(x) for x in expr.args) else ".^"
+        prec = self._prec(expr)
+        if equal_valued(expr.exp, 0.5):
+            return f"sqrt({self._print(expr.base)})"
+        if expr.is_commutative:
+            if equal_valued(expr.exp, -0.5):
+                sym = "/" if number(expr.base) else "./"
+                return "1" + sym + f"sqrt({self._print(expr.base)})"
+            if equal_valued(expr.exp, -1):
+                sym = "/" if number(expr.base) else "./"
+                return "1" + sym + self.parenthesize(expr.base, prec)
+        base = self.parenthesize(expr.base, prec)
+        return f"{base}{powsymbol}{self.parenthesize(expr.exp, prec)}"
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:

@@ -53,8 +53,9 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
+from sympy.core.mul import _keep_coeff
 from sympy.printing.c import C99CodePrinter
-from sympy.printing.precedence import PRECEDENCE_FUNCTIONS, precedence
+from sympy.printing.precedence import PRECEDENCE, PRECEDENCE_FUNCTIONS, precedence
 
 from .. import progress
 from ..vocabulary import numeric_namespace
@@ -633,6 +634,74 @@ class CPrinter(C99CodePrinter):
             return f"({self._print(item)})"
         return self._print(item)
 
+    def _print_Add(self, expr: Any, order: Any = None) -> str:
+        # StrPrinter._print_Add (terms in their own order) with precedences
+        # kept per class: sympy's precedence() of a product forms its
+        # negative to compare (a third of printing a large model)
+        prec = _precedence(expr)
+        out = []
+        for term in expr.args:
+            t = self._print(term)
+            if t.startswith("-") and not term.is_Add:
+                sign = "-"
+                t = t[1:]
+            else:
+                sign = "+"
+            if _precedence(term) < prec or term.is_Add:
+                out.extend([sign, f"({t})"])
+            else:
+                out.extend([sign, t])
+        sign = out.pop(0)
+        if sign == "+":
+            sign = ""
+        return sign + " ".join(out)
+
+    def _print_Mul(self, expr: Any, **kwargs: Any) -> str:
+        # C89CodePrinter._print_Mul: CodePrinter._print_Mul (factors in
+        # their own order) with precedences kept per class
+        if expr in self.math_macros:
+            return super()._print_Mul(expr, **kwargs)
+        prec = _precedence(expr)
+        c, e = expr.as_coeff_Mul()
+        if c < 0:
+            expr = _keep_coeff(-c, e)
+            sign = "-"
+        else:
+            sign = ""
+        a: list = []  # the numerator's factors
+        b: list = []  # the denominator's
+        pow_paren = []  # powers -1 of products of more than one factor
+        for item in sp.Mul.make_args(expr):
+            if (
+                item.is_commutative
+                and item.is_Pow
+                and item.exp.is_Rational
+                and item.exp.is_negative
+            ):
+                if item.exp != -1:
+                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
+                else:
+                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
+                        pow_paren.append(item)
+                    b.append(sp.Pow(item.base, -item.exp))
+            else:
+                a.append(item)
+        a = a or [sp.S.One]
+        if len(a) == 1 and sign == "-":
+            level = 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"])
+            a_str = [self.parenthesize(a[0], level)]  # type: ignore[arg-type]
+        else:
+            a_str = [self.parenthesize(x, prec) for x in a]
+        b_str = [self.parenthesize(x, prec) for x in b]
+        for item in pow_paren:
+            if item.base in b:
+                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
+        if not b:
+            return sign + "*".join(a_str)
+        if len(b) == 1:
+            return sign + "*".join(a_str) + "/" + b_str[0]
+        return sign + "*".join(a_str) + "/({})".format("*".join(b_str))
+
     def _print_Pi(self, expr: Any) -> str:
         return repr(math.pi)
 
@@ -701,6 +770,8 @@ def _precedence(item: Any) -> int:
     alone (not for numbers, products and the like, whose sign matters)."""
     cls = type(item)
     found = _PRECEDENCE.get(cls)
+    if cls is sp.Mul:
+        return _precedence_mul(item)
     if found is None:
         found = precedence(item)
         if not hasattr(cls, "precedence") and not any(
@@ -708,6 +779,20 @@ def _precedence(item: Any) -> int:
         ):
             _PRECEDENCE[cls] = found
     return found
+
+
+def _precedence_mul(item: Any) -> int:
+    """sympy's ``precedence_Mul`` without forming ``-item``: its
+    ``could_extract_minus_sign`` asks ``item == -item`` (false whenever the
+    leading factor is a negative number, the only case it matters) and then
+    whether the leading factor is a negative number."""
+    mul = PRECEDENCE["Mul"]
+    for arg in item.args:
+        prec = getattr(arg, "precedence", None)
+        if prec is not None and isinstance(arg, sp.Function) and prec < mul:
+            return mul
+    c = item.args[0]
+    return PRECEDENCE["Add"] if c.is_Number and c.is_extended_negative else mul
 
 
 def without_re(expr: Any) -> bool:

@@ -43,7 +43,9 @@ __all__ = [
     "element_labels",
     "format_response",
     "format_number",
+    "is_number_in",
     "shared_keys",
+    "sort_key_in",
 ]
 
 _T = dynamicsymbols._t
@@ -439,6 +441,17 @@ def _sort_key(expr: Any, memo: dict) -> tuple:
 
 
 _EXPR_SORT_KEY = sp.Expr.sort_key
+
+
+def sort_key_in(expr: Any, memo: dict) -> tuple:
+    """``sp.default_sort_key(expr)``, each node's key formed once per
+    ``memo`` (a dict the caller keeps: the program printers use one)."""
+    return _sort_key(expr, memo)
+
+
+def is_number_in(expr: Any, memo: dict) -> bool:
+    """``expr.is_number``, each node's answer formed once per ``memo``."""
+    return _number_in(expr, memo)
 
 
 def _default_sort_key(expr: Any) -> tuple:

@@ -1,0 +1,166 @@
+"""What the MATLAB and Fortran printers share: sympy's printing, the same
+text, with what it asks again and again remembered.
+
+sympy's MATLAB and Fortran printers order a sum's terms by
+``as_ordered_terms`` (the monomials' exponents in generators sorted by
+``default_sort_key``) and a product's factors by ``as_ordered_factors``,
+and ask ``is_number`` and ``precedence`` at every node they visit: each walks
+the subtree again, and sympy's cache of sort keys (1,000 entries) is soon
+overrun by a large program, so the keys were formed again down to the
+leaves.  :class:`Remembering` forms each once per printer (one program).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..jobs import backends
+from ..names.printing import is_number_in, sort_key_in
+
+__all__ = ["Remembering"]
+
+
+class Remembering:
+    """A mixin for a sympy code printer (before it in the bases): sort keys,
+    number tests and precedences remembered; the order of terms and of
+    factors formed with them; sums printed as ``StrPrinter._print_Add``."""
+
+    def __init__(self, settings: dict | None = None) -> None:
+        super().__init__(settings)  # type: ignore[call-arg]
+        self._keys: dict = {}
+        self._numbers: dict = {}
+        self._precs: dict = {}
+
+    def _prec(self, item: Any) -> int:
+        found = self._precs.get(item)
+        if found is None:
+            found = self._precs[item] = backends.precedence_of(item)
+        return found
+
+    def _number(self, item: Any) -> bool:
+        return is_number_in(item, self._numbers)
+
+    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
+        prec = self._prec(item)
+        if prec < level or (not strict and prec <= level):
+            return f"({self._print(item)})"  # type: ignore[attr-defined]
+        return self._print(item)  # type: ignore[attr-defined]
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        if backends.without_re(expr):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
+
+    def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
+        if (order or self.order) is not None or not expr.is_Add:  # type: ignore
+            return super()._as_ordered_terms(expr, order)  # type: ignore[misc]
+        return _ordered_terms(expr, self._keys, self._numbers)
+
+    def _ordered_factors(self, expr: Any) -> list:
+        """``expr.as_ordered_factors()``."""
+        if not isinstance(expr, sp.Mul):
+            return expr.as_ordered_factors()
+        cpart, ncpart = expr.args_cnc()
+        keys = self._keys
+        cpart.sort(key=lambda x: sort_key_in(x, keys))
+        return cpart + ncpart
+
+    def _print_str_add(self, expr: Any, order: Any = None) -> str:
+        """``StrPrinter._print_Add``."""
+        terms = self._as_ordered_terms(expr, order=order)
+        prec = self._prec(expr)
+        out = []
+        for term in terms:
+            t = self._print(term)  # type: ignore[attr-defined]
+            if t.startswith("-") and not term.is_Add:
+                sign = "-"
+                t = t[1:]
+            else:
+                sign = "+"
+            if self._prec(term) < prec or term.is_Add:
+                out.extend([sign, f"({t})"])
+            else:
+                out.extend([sign, t])
+        sign = out.pop(0)
+        if sign == "+":
+            sign = ""
+        return sign + " ".join(out)
+
+
+def _complex(x: Any, memo: dict) -> complex:
+    """``complex(x)``, each number's formed once per ``memo`` (sympy goes
+    through ``evalf`` and ``as_real_imag`` each time)."""
+    key = ("complex", x)
+    found = memo.get(key)
+    if found is None:
+        found = memo[key] = complex(x)
+    return found
+
+
+def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
+    """``expr.as_ordered_terms()`` of a sum (sympy's lexicographic order of
+    monomials in the generators sorted by ``default_sort_key``), the same
+    list, with the sort keys and number tests remembered in ``keys`` and
+    ``numbers``."""
+    from sympy.core.exprtools import decompose_power
+
+    def plain(x: Any) -> bool:
+        return not isinstance(x, sp.Number | sp.NumberSymbol)
+
+    add_args = sorted(expr.args, key=plain)
+    if (
+        len(add_args) == 2
+        and isinstance(add_args[0], sp.Number | sp.NumberSymbol)
+        and isinstance(add_args[1], sp.Mul)
+    ):
+        mul_args = sorted(sp.Mul.make_args(add_args[1]), key=plain)
+        if (
+            len(mul_args) == 2
+            and isinstance(mul_args[0], sp.Number)
+            and add_args[0].is_positive
+            and mul_args[0].is_negative
+        ):
+            return add_args
+    key, reverse = expr._parse_order(None)
+    gens: set = set()
+    terms = []
+    for term in expr.args:
+        coeff, rest = term.as_coeff_Mul()
+        coeff = _complex(coeff, numbers)
+        cpart: dict = {}
+        ncpart = []
+        if rest is not sp.S.One:
+            for factor in sp.Mul.make_args(rest):
+                if is_number_in(factor, numbers):
+                    try:
+                        coeff *= _complex(factor, numbers)
+                    except (TypeError, ValueError):
+                        pass
+                    else:
+                        continue
+                if factor.is_commutative:
+                    base, exp = decompose_power(factor)
+                    cpart[base] = exp
+                    gens.add(base)
+                else:
+                    ncpart.append(factor)
+        terms.append((term, ((coeff.real, coeff.imag), cpart, tuple(ncpart))))
+    index = {
+        g: i for i, g in enumerate(sorted(gens, key=lambda g: sort_key_in(g, keys)))
+    }
+    k = len(index)
+    result = []
+    for term, (coeff, cpart, ncpart) in terms:
+        monom = [0] * k
+        for base, exp in cpart.items():
+            monom[index[base]] = exp
+        result.append((term, (coeff, tuple(monom), ncpart)))
+    if not any(term.is_Order for term, _ in result):
+        return [term for term, _ in sorted(result, key=key, reverse=reverse)]
+    plain_terms = [t for t in result if not t[0].is_Order]
+    orders = [t for t in result if t[0].is_Order]
+    ordered = sorted(plain_terms, key=key, reverse=True)
+    ordered += sorted(orders, key=key, reverse=True)
+    return [term for term, _ in ordered]
