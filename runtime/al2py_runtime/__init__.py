@@ -35,6 +35,7 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 
 from typing import Any
 
+from .names.variables import dynamicsymbols
 from .safety import AutolevRuntimeError, MissingValueWarning
 from .version import __version__
 from .workspace import Response, Settings, Workspace, t
@@ -47,6 +48,7 @@ __all__ = [
     "MissingValueWarning",
     "read_table",
     "t",
+    "dynamicsymbols",
     "__version__",
 ]
 

@@ -41,7 +41,7 @@ from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
 from .names.table import Entry, NameTable
-from .names.variables import time_function
+from .names.variables import TimeFunction, time_function
 from .progress import ImportWatch
 from .safety import Statements, statement
 from .safety import register as register_module
@@ -186,13 +186,61 @@ class Workspace(Mapping):
         the module's sympy symbols become the constants of those names.  They
         must carry Autolev's assumptions (real unless ``Complex ON``)."""
         for sym in symbols:
-            want = sp.Symbol(sym.name, **self._assumptions(None))
-            if sym != want:
+            for sign in (None, "+", "-"):  # ``A``, ``A+``, ``A-``
+                if sym == sp.Symbol(sym.name, **self._assumptions(sign)):
+                    break
+            else:
                 raise ValueError(
                     f"constant {sym.name} must be declared with"
                     f" {self._assumptions(None) or 'no assumptions'}"
+                    " (or nonnegative/nonpositive, for A+ and A-)"
                 )
-            self.table.declare(sym.name, "constant", sym, sign=None, line=line)
+            self.table.declare(sym.name, "constant", sym, sign=sign, line=line)
+
+    @statement
+    def declare_variables(
+        self, *functions: Any, primes: int | Sequence[int] = 0, line: int | None = None
+    ) -> None:
+        """After ``U1, U2 = dynamicsymbols("U1 U2", real=True)`` (``Variables
+        U{2}'``): the module's functions of time become the variables of those
+        names; ``primes`` is the order of the derivatives declared (one for
+        all, or one per function)."""
+        self._declare_time_functions(functions, "variable", primes, line)
+
+    @statement
+    def declare_specified(
+        self, *functions: Any, primes: int | Sequence[int] = 0, line: int | None = None
+    ) -> None:
+        """After ``PHI = dynamicsymbols("PHI", real=True)`` (``Specified PHI``):
+        as :meth:`declare_variables`, for specified quantities."""
+        self._declare_time_functions(functions, "specified", primes, line)
+
+    def _declare_time_functions(
+        self,
+        functions: Sequence[Any],
+        kind: str,
+        primes: int | Sequence[int],
+        line: int | None,
+    ) -> None:
+        orders = [primes] * len(functions) if isinstance(primes, int) else primes
+        if len(orders) != len(functions):
+            raise ValueError(f"{len(orders)} orders for {len(functions)} functions")
+        for func, order in zip(functions, orders, strict=True):
+            name = getattr(func, "name", None)
+            want = (
+                None if name is None else time_function(name, **self._assumptions(None))
+            )
+            if func != want:
+                raise ValueError(
+                    f"{name or func} must be dynamicsymbols({name!r},"
+                    f" {self._assumptions(None) or 'no assumptions'})"
+                )
+            # the module's own function when it keeps its hash (the runtime's
+            # dynamicsymbols), so that both are one object
+            own = isinstance(func.func, TimeFunction)
+            self.table.declare(
+                name, kind, func if own else want, order=order, line=line
+            )
 
     @statement
     def variables(self, *names: str, line: int | None = None) -> Any:
@@ -344,6 +392,42 @@ class Workspace(Mapping):
         Factoring) shape the stored value as in Autolev.
         """
         return self._store(target, value, line=line, rearrange=self.settings.factoring)
+
+    @statement
+    def assign_vector(self, *, line: int | None = None, **named: Any) -> Any:
+        """``UVEC> = v`` written ``UVEC_vec = al.assign_vector(UVEC=v, line=56)``:
+        one vector named by the keyword (the Autolev name without its ``>``);
+        stored and answered as :meth:`assign` does, and returned."""
+        return self._assign_named(named, ">", line)
+
+    @statement
+    def assign_dyadic(self, *, line: int | None = None, **named: Any) -> Any:
+        """``I>> = d`` written ``I_dyad = al.assign_dyadic(I=d, line=9)``: as
+        :meth:`assign_vector`, for a dyadic (``>>``)."""
+        return self._assign_named(named, ">>", line)
+
+    @statement
+    def update_vector(self, *, line: int | None = None, **named: Any) -> Any:
+        """``Express(V>, A)`` written ``V_vec = al.update_vector(V=..., line=9)``:
+        :meth:`update` of the vector named by the keyword."""
+        return self._assign_named(named, ">", line, self.update)
+
+    @statement
+    def update_dyadic(self, *, line: int | None = None, **named: Any) -> Any:
+        """As :meth:`update_vector`, for a dyadic (``>>``)."""
+        return self._assign_named(named, ">>", line, self.update)
+
+    def _assign_named(
+        self,
+        named: dict[str, Any],
+        suffix: str,
+        line: int | None,
+        store: Callable[..., Any] | None = None,
+    ) -> Any:
+        if len(named) != 1:
+            raise TypeError(f"give one name=value, not {len(named)}")
+        ((name, value),) = named.items()
+        return (store or self.assign)(name.upper() + suffix, value, line=line)
 
     @statement
     def kd(self, eq: sp.Eq, *, line: int | None = None) -> sp.Eq:

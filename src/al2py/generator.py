@@ -109,6 +109,21 @@ class Generator:
         self._loads_started = False  # ``loads = al.model.loads`` was emitted
         self._complex_set = False  # a Complex setting was seen
         self._echoed = 0  # lines of the .al echoed so far
+        # What is known at this point of the script, statically, for the
+        # statements written as sympy calls whose Autolev rule would
+        # otherwise differ (docs/semantics.md, "Sympy calls in the module"):
+        #: (point, frame) keys whose velocity sympy's Point holds
+        self._known_vel: set[tuple[str, str]] = set()
+        #: point key -> points joined to it by given positions
+        self._pos_edges: dict[str, set[str]] = defaultdict(set)
+        #: frame key -> frames joined to it by orientations or W_ assignments
+        self._frame_edges: dict[str, set[str]] = defaultdict(set)
+        #: bodies and particles in declaration order: (key, sympy body ident)
+        self._massive: list[tuple[str, str]] = []
+        #: keys of bodies and particles given a (nonzero) mass
+        self._has_mass: set[str] = set()
+        #: keys of bodies and particles whose mass may be zero
+        self._unsure_mass: set[str] = set()
 
     # ------------------------------------------------------------ driving
 
@@ -197,13 +212,30 @@ class Generator:
                 value = self.expr(item.values[0])
                 assigns.append(f"al.assign({sym.key!r}, {value}, line={self._line})")
         if method == "constants" and not self._complex_set:
-            if not any(spec.endswith(("+'", "-'")) for spec in specs):
-                # real symbols, as sympy writes them; the runtime declares them
-                make = self.imports.use("sympy", "symbols")
-                spelled = " ".join(spec[1:-1] for spec in specs)
+            # real symbols, as sympy writes them; the runtime declares them
+            keys = [spec[1:-1] for spec in specs]
+            return [
+                *self._symbols(names, keys),
+                f"al.declare_constants({', '.join(names)}, line={self._line})",
+                *assigns,
+            ]
+        if method in ("variables", "specified") and not self._complex_set:
+            # functions of time, as sympy writes them (``dynamicsymbols``)
+            keys = [spec[1:-1].rstrip("'") for spec in specs]
+            if all(re.fullmatch(r"\w+", k) for k in keys):
+                # sympy's dynamicsymbols, each function keeping its hash
+                make = self.imports.use(_RUNTIME, "dynamicsymbols")
+                orders = [
+                    len(spec[1:-1]) - len(k)
+                    for spec, k in zip(specs, keys, strict=True)
+                ]
+                primes = "" if not any(orders) else f", primes={orders[0]}"
+                if len(set(orders)) > 1:
+                    primes = f", primes=({', '.join(map(str, orders))})"
                 return [
-                    f"{', '.join(names)} = {make}({spelled!r}, real=True)",
-                    f"al.declare_constants({', '.join(names)}, line={self._line})",
+                    f"{', '.join(names)} = {make}({' '.join(keys)!r}, real=True)",
+                    f"al.declare_{method}({', '.join(names)}{primes},"
+                    f" line={self._line})",
                     *assigns,
                 ]
         call = f"al.{method}({', '.join(specs)}, line={self._line})"
@@ -217,22 +249,14 @@ class Generator:
         out = self._sympy_objects(stmt.keyword, syms)
         if not out:
             out = [f"{idents} = al.{stmt.keyword.lower()}({keys})"]
-        if Decl.of_keyword(stmt.keyword) in vocab.FRAME_DECLS:
+        if (
+            Decl.of_keyword(stmt.keyword) in vocab.FRAME_DECLS
+            and stmt.keyword != "BODIES"  # a body's mass center is its own
+        ):
             for s in syms:
                 point = self.facts.table.physical(s.key + "O")
                 if point is not None and point.key in self.facts.mentioned:
                     out.append(f"{point.ident} = al.point({point.key!r})")
-        # The module holds sympy's RigidBody/Particle objects (their mass and
-        # inertia follow the Mass and Inertia declarations).
-        sympy_class = {"BODIES": "rigid_body", "PARTICLES": "particle"}
-        if stmt.keyword in sympy_class and stmt.keyword != "PARTICLES":
-            method = sympy_class[stmt.keyword]
-            suffix = "_body" if method == "rigid_body" else "_particle"
-            lhs = [
-                self.facts.helper_ident(s.key + suffix, s.ident + suffix) for s in syms
-            ]
-            rhs = [f"al.{method}({s.ident})" for s in syms]
-            out.append(f"{', '.join(lhs)} = {', '.join(rhs)}")
         return out
 
     def _sympy_objects(self, keyword: str, syms: list) -> list[str]:
@@ -240,18 +264,22 @@ class Generator:
         the sympy objects (``N = ReferenceFrame("N")``, ``O_ = Point("O")``,
         ``P_particle = Particle("P", P, 0)``), then the runtime's record of
         them under their Autolev names; ``[]`` for other declarations."""
-        cls = {"NEWTONIAN": "ReferenceFrame", "FRAMES": "ReferenceFrame"}.get(
-            keyword, "Point" if keyword in ("POINTS", "PARTICLES") else None
-        )
+        frames = ("NEWTONIAN", "FRAMES", "BODIES")
+        cls = "ReferenceFrame" if keyword in frames else None
+        if keyword in ("POINTS", "PARTICLES"):
+            cls = "Point"
         if cls is None:
             return []
         make = self.imports.use(_VECTOR, cls)
         idents = ", ".join(s.ident for s in syms)
         news = ", ".join(f"{make}({s.key!r})" for s in syms)
         out = [f"{idents} = {news}"]
+        if keyword == "BODIES":
+            return out + self._rigid_bodies(syms)
         if keyword != "PARTICLES":
             out.append(f"al.declare_{keyword.lower()}({idents})")
             return out
+        self._massive += [(s.key, self._sympy_body(s) or "") for s in syms]
         particle = self.imports.use("sympy.physics.mechanics", "Particle")
         lhs = [
             self.facts.helper_ident(s.key + "_particle", s.ident + "_particle")
@@ -262,14 +290,63 @@ class Generator:
         out.append(f"al.declare_particles({', '.join(lhs)})")
         return out
 
+    def _symbols(self, idents: list[str], specs: list[str]) -> list[str]:
+        """``A, B = symbols("A B", real=True)`` for constants spelled ``A``,
+        ``B`` (``A+``: ``nonnegative=True``, ``A-``: ``nonpositive=True``)."""
+        assume = {"+": "nonnegative=True", "-": "nonpositive=True"}
+        parts = [
+            (spec.rstrip("+-"), assume.get(spec[-1:], "real=True")) for spec in specs
+        ]
+        make = self.imports.use("sympy", "symbols")
+        if len({a for _, a in parts}) == 1:
+            spelled = " ".join(k for k, _ in parts)
+            return [f"{', '.join(idents)} = {make}({spelled!r}, {parts[0][1]})"]
+        news = ", ".join(f"{make}({k!r}, {a})" for k, a in parts)
+        return [f"{', '.join(idents)} = {news}"]
+
+    def _rigid_bodies(self, syms: list[Symbol]) -> list[str]:
+        """``Bodies A``: after ``A = ReferenceFrame("A")``, its mass center
+        ``Ao = Point("AO")`` and ``A_body = RigidBody("A", Ao, A, 0,
+        (Dyadic(0), Ao))`` (``Mass`` and ``Inertia`` give the rest), then the
+        runtime's record of them."""
+        point = self.imports.use(_VECTOR, "Point")
+        dyadic = self.imports.use(_VECTOR, "Dyadic")
+        body = self.imports.use("sympy.physics.mechanics", "RigidBody")
+        centers = []
+        for s in syms:
+            center = self.facts.table.physical(s.key + "O")
+            centers.append(
+                center.ident
+                if center is not None
+                else self.facts.helper_ident(s.key + "O", s.ident + "o")
+            )
+        lhs = [self._sympy_body(s) or "" for s in syms]
+        self._massive += [(s.key, b) for s, b in zip(syms, lhs, strict=True)]
+        news = ", ".join(f"{point}({s.key + 'O'!r})" for s in syms)
+        rigid = [
+            f"{body}({s.key!r}, {c}, {s.ident}, 0, ({dyadic}(0), {c}))"
+            for s, c in zip(syms, centers, strict=True)
+        ]
+        return [
+            f"{', '.join(centers)} = {news}",
+            *(f"{b} = {r}" for b, r in zip(lhs, rigid, strict=True)),
+            f"al.declare_bodies({', '.join(lhs)})",
+        ]
+
     def _declare_new(self) -> list[str]:
-        """``constants(...)`` for names a Mass/Inertia declaration introduced."""
+        """The constants a Mass/Inertia declaration introduced (``MP+``: a
+        nonnegative symbol), declared as the Constants statement does."""
         new = self._facts.new_constants
         if not new:
             return []
-        idents = ", ".join(s.ident for s in new)
-        specs = ", ".join(repr(s.key + (s.sign or "")) for s in new)
-        return [f"{idents} = al.constants({specs}, line={self._line})"]
+        idents = [s.ident for s in new]
+        if self._complex_set:
+            specs = ", ".join(repr(s.key + (s.sign or "")) for s in new)
+            return [f"{', '.join(idents)} = al.constants({specs}, line={self._line})"]
+        return [
+            *self._symbols(idents, [s.key + (s.sign or "") for s in new]),
+            f"al.declare_constants({', '.join(idents)}, line={self._line})",
+        ]
 
     def _mass(self, stmt: ir.Declaration) -> list[str]:
         """``Mass P=MP``: the mass of the module's sympy ``Particle`` or
@@ -291,9 +368,25 @@ class Generator:
                 continue
             out.append(f"{body}.mass = {self.expr(first)}")
             bodies.append(body)
+            if self._nonzero_mass(first):
+                self._has_mass.add(obj.key)
+                self._unsure_mass.discard(obj.key)
+            else:  # perhaps zero: Gravity's rule is then the runtime's
+                self._has_mass.discard(obj.key)
+                self._unsure_mass.add(obj.key)
         if bodies:
             out.append(f"al.given_masses({', '.join(bodies)}, line={self._line})")
         return out
+
+    def _nonzero_mass(self, node: ir.Expr) -> bool:
+        """A mass that is surely not zero: a nonzero number, or a constant
+        with no right-hand side."""
+        if isinstance(node, ir.Number):
+            return node.value != 0
+        if not isinstance(node, ir.Name) or node.primes:
+            return False
+        sym = self.facts.table.quantity(node.name)
+        return sym is not None and sym.kind == Decl.CONSTANT and not sym.has_rhs
 
     def _sympy_body(self, obj: Symbol) -> str | None:
         """The module's name for the sympy ``RigidBody``/``Particle`` of a
@@ -348,6 +441,7 @@ class Generator:
                 op = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}[stmt.op]
                 value = f"{self.expr(target)} {op} ({value})"
             form = self._facts.form
+            self._note_form(form)
             setter = form.row.setter
             if setter is None or target.primes:
                 return [f"al.assign({target.key!r}, {value}, line={self._line})"]
@@ -395,12 +489,27 @@ class Generator:
         ):
             return self._kinematical(sym, value)
         label = self._label(target)
-        call = f"al.assign({label!r}, {value}, line={self._line})"
+        call = _named_call("assign", label, value, self._line)
         if isinstance(target, ir.Name) and (
             target.primes or sym.kind in vocab.QUANTITY_DECLS
         ):
             return [call]
         return [f"{sym.ident} = {call}"]
+
+    def _note_form(self, form: Match) -> None:
+        """What an assignment to ``P_O_P>``, ``V_P_N>``, ``W_A_N>`` or
+        ``N_A`` makes known (:meth:`_two_point`)."""
+        if form.kind not in (Form.POS, Form.VEL, Form.ANGVEL, Form.DCM):
+            return
+        keys = [self.facts.object(part).key for part in form.parts]
+        if form.kind is Form.POS:
+            self._pos_edges[keys[0]].add(keys[1])
+            self._pos_edges[keys[1]].add(keys[0])
+        elif form.kind is Form.VEL:
+            self._known_vel.add((keys[0], keys[1]))
+        elif form.kind in (Form.ANGVEL, Form.DCM):
+            self._frame_edges[keys[0]].add(keys[1])
+            self._frame_edges[keys[1]].add(keys[0])
 
     def _kinematical(self, sym: Symbol, value: str) -> list[str]:
         """``Q' = rhs``: a sympy equation the module keeps in ``kd_eqs``
@@ -457,16 +566,18 @@ class Generator:
         if isinstance(expr, ir.Call):
             b = BUILTINS.get(expr.key)
             if b is not None and b.statement:
+                self._note_orientation(expr, b)
                 return (
                     self._loads_call(expr, b)
                     or self._sympy_call(expr, b)
+                    or self._two_point(expr, b)
                     or [self._command(expr, b)]
                 )
             if b is not None and b.dual and self._facts.target is not None:
                 sym = self._facts.target
                 value = self.expr(expr)
                 bind = "" if sym.kind in vocab.QUANTITY_DECLS else f"{sym.ident} = "
-                return [f"{bind}al.update({sym.key!r}, {value}, line={self._line})"]
+                return [f"{bind}{_named_call('update', sym.key, value, self._line)}"]
             if b is not None and b.name == "EIG" and len(expr.args) >= 2:
                 return self._eig_outputs(expr)
             if b is not None and b.name == "SOLVE":
@@ -485,6 +596,18 @@ class Generator:
         self._loads_started = True
         return [f"{self._loads_ident()} = al.model.loads  # sympy Force/Torque loads"]
 
+    def _note_orientation(self, call: ir.Call, b: Builtin) -> None:
+        """Frames that a rotation command joins (their angular velocity
+        follows from it), for :meth:`_two_point`."""
+        if b.name in ("SIMPROT", "DIRCOS", "ANGVEL") and len(call.args) >= 2:
+            first, second = call.args[:2]
+            if isinstance(first, ir.Name) and isinstance(second, ir.Name):
+                a = self.facts.table.physical(first.name)
+                c = self.facts.table.physical(second.name)
+                if a is not None and c is not None:
+                    self._frame_edges[a.key].add(c.key)
+                    self._frame_edges[c.key].add(a.key)
+
     def _load(self, kind: Form, where: str, value: str) -> str:
         cls = "Force" if kind is Form.FORCE else "Torque"
         self.imports.use("sympy.physics.mechanics", cls)
@@ -494,9 +617,7 @@ class Generator:
         """``Force(P, v>)``, ``Force(O/Q, v>)`` (and ``Torque``) as sympy
         loads the module appends to its ``loads`` (``-v>`` on O, ``v>`` on Q)."""
         if b.name == "GRAVITY":
-            # Autolev's rule (every mass declared so far), kept by the runtime:
-            # it appends mass*g> on each to the same loads
-            return [*self._loads_start(), self._command(call, b)]
+            return [*self._loads_start(), *self._gravity(call, b)]
         if b.name not in ("FORCE", "TORQUE") or len(call.args) != 2:
             return []
         kind = Form.FORCE if b.name == "FORCE" else Form.TORQUE
@@ -515,6 +636,78 @@ class Generator:
             return []
         load = self._load(kind, self._object(where.name), value)
         return [*self._loads_start(), f"{loads}.append({load})"]
+
+    def _gravity(self, call: ir.Call, b: Builtin) -> list[str]:
+        """``Gravity(G*N1>)``: Autolev's rule is mass*g> on every body and
+        particle whose mass is declared so far (or on those listed), which
+        are known here: sympy's ``gravity(G*N.x, P_particle, ...)`` added to
+        the loads.  Where a mass may be zero, the runtime's rule."""
+        vec, *objs = call.args
+        if objs:
+            if not all(isinstance(o, ir.Name) for o in objs):
+                return [self._command(call, b)]
+            keys = [self.facts.object(o.name).key for o in objs]  # type: ignore[attr-defined]
+        else:
+            keys = [k for k, _ in self._massive]
+        bodies = dict(self._massive)
+        if any(k in self._unsure_mass or k not in bodies for k in keys):
+            return [self._command(call, b)]
+        with_mass = [bodies[k] for k in keys if k in self._has_mass]
+        if not with_mass:
+            return [self._command(call, b)]
+        value = self.expr(vec)
+        gravity = self.imports.use("sympy.physics.mechanics.loads", "gravity")
+        return [
+            f"{self._loads_ident()} += {gravity}({value}, {', '.join(with_mass)})",
+            f"al.given_gravity({value})",
+        ]
+
+    def _two_point(self, call: ir.Call, b: Builtin) -> list[str]:
+        """``V2pts(N, A, O, P)`` as sympy's ``P.v2pt_theory(O, N, A)`` where
+        ``V_O_N>``, ``P_O_P>`` (given directly) and ``W_A_N>`` are known here (Autolev
+        forms ``V_P_N>`` later, when it is used, if they are not: the
+        runtime's rule), then the runtime's record of it; ``[]`` else."""
+        args = call.args
+        if b.name not in _POINT_THEORIES or len(args) != 4:
+            return []
+        if not all(isinstance(a, ir.Name) for a in args):
+            return []
+        n, a, o, p = (self.facts.object(x.name) for x in args)  # type: ignore[attr-defined]
+        if b.name != "V2PTS":
+            # A2pts (sympy differentiates velocities its own way), V1pt and
+            # A1pt (P's motion in A): the runtime's rule; V1pt's result is
+            # known afterwards, the others may be formed later
+            if b.name == "V1PT":
+                self._known_vel.add((p.key, n.key))
+            return []
+        known = (
+            (o.key, n.key) in self._known_vel
+            and p.key in self._pos_edges[o.key]
+            and self._joined(self._frame_edges, a.key, n.key)
+        )
+        if not known:
+            self._known_vel.discard((p.key, n.key))  # perhaps formed later
+            return []
+        self._known_vel.add((p.key, n.key))
+        theory = _POINT_THEORIES[b.name]
+        return [
+            f"{p.ident}.{theory}({o.ident}, {n.ident}, {a.ident})",
+            f"al.formed_vel({p.ident}, {n.ident}, line={self._line})",
+        ]
+
+    @staticmethod
+    def _joined(edges: dict[str, set[str]], a: str, b: str) -> bool:
+        """Whether ``a`` and ``b`` are joined by a chain of ``edges``."""
+        seen, todo = {a}, [a]
+        while todo:
+            x = todo.pop()
+            if x == b:
+                return True
+            for y in edges.get(x, ()):
+                if y not in seen:
+                    seen.add(y)
+                    todo.append(y)
+        return False
 
     def _sympy_call(self, call: ir.Call, b: Builtin) -> list[str]:
         """A rotation command as sympy's own call (``A.orient_axis(N, N.z,
@@ -749,7 +942,31 @@ class Generator:
             frame = self._object(form.parts[0])
             return f"{frame}.{_UNIT_AXES[form.parts[1]]}"
         objs = [self._object(p) for p in form.parts]
+        sympy_getter = self._sympy_getter(form)
+        if sympy_getter is not None:
+            first, second = objs
+            if form.kind is Form.POS:  # P_O_Q> is Q.pos_from(O)
+                first, second = second, first
+            return f"{first}.{sympy_getter}({second})"
         return f"al.{form.row.getter}({', '.join(objs)})"
+
+    def _sympy_getter(self, form: Match) -> str | None:
+        """sympy's own getter for ``P_O_Q>``, ``W_A_N>`` and ``V_Q_N>``
+        where it gives what Autolev's rule gives: the chain of positions or
+        of orientations is known here, the velocity was given or formed (not
+        derived, nor formed later); else None (the runtime's rule).
+
+        A position is sympy's only where it was given directly: along a
+        chain Autolev adds the steps from ``O``, sympy's ``pos_from`` from
+        the far end, and the terms would print in another order."""
+        keys = [self.facts.object(part).key for part in form.parts]
+        if form.kind is Form.POS and keys[1] in self._pos_edges[keys[0]]:
+            return "pos_from"
+        if form.kind is Form.ANGVEL and self._joined(self._frame_edges, *keys):
+            return "ang_vel_in"
+        if form.kind is Form.VEL and tuple(keys) in self._known_vel:
+            return "vel"
+        return None
 
     def _object(self, name: str) -> str:
         return self.facts.object(name).ident
@@ -962,6 +1179,17 @@ class Generator:
         """``U_INDEPENDENT'`` -> ``al.speed_matrix("U_INDEPENDENT", 1)``."""
         primes = f", {node.primes}" if node.primes else ""
         return f'al.speed_matrix("{sym.key}"{primes})'
+
+
+def _named_call(method: str, label: str, value: str, line: int) -> str:
+    """``al.assign("X", v, line=3)``; for a vector or dyadic, named by a
+    keyword rather than Autolev's spelling: ``UVEC> = v`` is
+    ``al.assign_vector(UVEC=v, line=3)`` (``I>>``: ``assign_dyadic``)."""
+    bare = label.rstrip(">")
+    if label.endswith(">") and bare.isidentifier() and len(label) - len(bare) < 3:
+        what = "dyadic" if label.endswith(">>") else "vector"
+        return f"al.{method}_{what}({bare}={value}, line={line})"
+    return f"al.{method}({label!r}, {value}, line={line})"
 
 
 def _isort_key(name: str) -> tuple[int, str]:

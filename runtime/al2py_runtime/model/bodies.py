@@ -170,6 +170,13 @@ class MassAndLoads(ModelPart):
         self.add_torque(b, v)
 
     @command
+    def given_gravity(self, vec: Any) -> None:
+        """After ``loads += gravity(G*N.x, P_particle, Q_particle)``
+        (``Gravity(G*N1>)``, the bodies and particles with a mass so far):
+        the direction is kept for the animation's scene."""
+        self.registry.gravity.append(kin.as_vector(vec))
+
+    @command
     def gravity(self, vec: Any, *objs: Any, line: int | None = None) -> None:
         """``Gravity(G*N1>)``: adds mass*vec to every particle and mass center
         (those whose mass has been declared); ``Gravity(G*N1>, A, B)`` to the

@@ -36,13 +36,17 @@ class Objects(ModelPart):
         return p
 
     def _new_frame(
-        self, name: str, kind: Decl, f: ReferenceFrame | None = None
+        self,
+        name: str,
+        kind: Decl,
+        f: ReferenceFrame | None = None,
+        origin: Point | None = None,
     ) -> ReferenceFrame:
         st = self.registry
         f = ReferenceFrame(name.upper()) if f is None else f
         st.frames[name.upper()] = f
         self.table.declare(name, kind, f)
-        origin = self._new_point(name.upper() + "O", Decl.POINT)
+        origin = self._new_point(name.upper() + "O", Decl.POINT, origin)
         st.fixed_in[origin] = f
         return f
 
@@ -91,6 +95,20 @@ class Objects(ModelPart):
             st.particles.add(p)
             st.massive.append(p)
             st.sympy_bodies[p] = body
+
+    @command
+    def declare_bodies(self, *bodies: RigidBody) -> None:
+        """After ``A = ReferenceFrame("A")``, ``Ao = Point("AO")`` and
+        ``A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))`` (``Bodies A``):
+        the body A (its frame) with its mass center AO, whose mass and
+        inertia ``Mass`` and ``Inertia`` give."""
+        st = self.registry
+        for body in bodies:
+            f = body.frame
+            self._new_frame(f.name, Decl.BODY, f, origin=body.masscenter)
+            st.bodies[f] = BodyRecord(f, body.masscenter)
+            st.massive.append(f)
+            st.sympy_bodies[f] = body
 
     @command
     def bodies(self, *names: str) -> Any:

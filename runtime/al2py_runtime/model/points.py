@@ -470,6 +470,16 @@ class Kinematics(ModelPart):
         )
         return self._set_formed("A", p, n, self._tidyv(v), line)
 
+    @command
+    def formed_vel(self, p: Point, n: ReferenceFrame, *, line=None) -> Vector:
+        """After ``P.v2pt_theory(O, N, A)`` (``V2pts(N, A, O, P)``, with
+        ``V_O_N>``, ``W_A_N>`` and ``P_O_P>`` known): sympy's velocity as
+        Autolev keeps it (the kinematical differential equations applied,
+        lightly simplified) and its response."""
+        st = self.registry
+        st.deferred_vel.pop((p, n), None)
+        return self._set_formed("V", p, n, self._tidyv(p.vel(n)), line)
+
     def keep_given(self, which: str, p: Point, n: ReferenceFrame, v: Vector) -> None:
         """``V_P_N> = v`` (``which`` is ``"V"``) or ``A_P_N> = v`` (``"A"``),
         given or formed: a velocity is stored on the sympy point

@@ -21,12 +21,14 @@ False
 from __future__ import annotations
 
 import copyreg
+from functools import reduce
 from typing import Any
 
+import sympy as sp
 from sympy.core.function import UndefinedFunction
-from sympy.physics.vector import dynamicsymbols
+from sympy.physics.vector import dynamicsymbols as _sympy_dynamicsymbols
 
-__all__ = ["TimeFunction", "time_function"]
+__all__ = ["TimeFunction", "dynamicsymbols", "time_function"]
 
 
 class TimeFunction(UndefinedFunction):
@@ -67,4 +69,28 @@ copyreg.pickle(TimeFunction, lambda f: (_rebuild, (f.name, f._kwargs)))
 
 def time_function(name: str, **assumptions: Any) -> Any:
     """``dynamicsymbols(name, **assumptions)``: ``name(t)``."""
-    return TimeFunction(name, **assumptions)(dynamicsymbols._t)
+    return TimeFunction(name, **assumptions)(_sympy_dynamicsymbols._t)
+
+
+def dynamicsymbols(names: str, level: int = 0, **assumptions: Any) -> Any:
+    """sympy's ``dynamicsymbols``: the functions of time ``t`` that
+    ``names`` lists (``level`` times differentiated), equal to sympy's and
+    hashing as they do, each keeping its hash (:class:`TimeFunction`), as
+    the runtime's own variables do.  A module declares its variables with it
+    (``U1, U2 = dynamicsymbols("U1 U2", real=True)``).
+
+    >>> u1, u2 = dynamicsymbols("U1 U2", real=True)
+    >>> (u1, u2) == tuple(_sympy_dynamicsymbols("U1 U2", real=True))
+    True
+    >>> dynamicsymbols("Q", 1)
+    Derivative(Q(t), t)
+    """
+    t = _sympy_dynamicsymbols._t
+    funcs = sp.symbols(names, cls=TimeFunction, **assumptions)
+
+    def applied(f: Any) -> Any:
+        return reduce(sp.diff, [t] * level, f(t))
+
+    if isinstance(funcs, list | tuple):
+        return [applied(f) for f in funcs]
+    return applied(funcs)

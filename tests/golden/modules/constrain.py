@@ -50,9 +50,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from sympy import symbols
-    from sympy.physics.vector import Point, ReferenceFrame
+    from sympy.physics.mechanics import RigidBody
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("constrain.al", __file__)
 
@@ -61,23 +62,26 @@ al = Workspace("constrain.al", __file__)
 N = ReferenceFrame("N")
 al.model.declare_newtonian(N)
 # al> Bodies         A, B, C          % Links of pendulum
-A, B, C = al.model.bodies("A", "B", "C")
-A_body, B_body, C_body = (
-    al.model.rigid_body(A),
-    al.model.rigid_body(B),
-    al.model.rigid_body(C),
-)
+A, B, C = ReferenceFrame("A"), ReferenceFrame("B"), ReferenceFrame("C")
+Ao, Bo, Co = Point("AO"), Point("BO"), Point("CO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+C_body = RigidBody("C", Co, C, 0, (Dyadic(0), Co))
+al.model.declare_bodies(A_body, B_body, C_body)
 P = Point("P")  # al> Points         P                % Distal end of C
 al.model.declare_points(P)
 # al> Variables      U{3}            % Generalized speeds
-U1, U2, U3 = al.variables("U1", "U2", "U3", line=5)
+U1, U2, U3 = dynamicsymbols("U1 U2 U3", real=True)
+al.declare_variables(U1, U2, U3, line=5)
 # al> Variables      Qa, Qb, Qc       % Angles for A, B, C
-Qa, Qb, Qc = al.variables("QA", "QB", "QC", line=6)
+Qa, Qb, Qc = dynamicsymbols("QA QB QC", real=True)
+al.declare_variables(Qa, Qb, Qc, line=6)
 # al> Constants      LA, LB, LC       % Lengths of A, B, C
 LA, LB, LC = symbols("LA LB LC", real=True)
 al.declare_constants(LA, LB, LC, line=7)
 # al> Specified      Vx, Vy           % Specified motion of P
-Vx, Vy = al.specified("VX", "VY", line=8)
+Vx, Vy = dynamicsymbols("VX VY", real=True)
+al.declare_specified(Vx, Vy, line=8)
 A.orient_axis(N, N.z, Qa)  # al> Simprot(N, A, 3, QA)
 al.model.given_orientation(A, N, line=9)
 B.orient_axis(N, N.z, Qb)  # al> Simprot(N, B, 3, QB)
@@ -87,12 +91,10 @@ al.model.given_orientation(C, N, line=11)
 # al> V_P_N> = LA*U1*A2> + LB*U2*B2> + LC*U3*C2>
 P.set_vel(N, LA * U1 * A.y + LB * U2 * B.y + LC * U3 * C.y)
 al.model.given_vel(P, N, line=12)
-DEPENDENT = al.assign(  # al> DEPENDENT[1] = DOT(V_P_N>,N1>) - Vx
-    "DEPENDENT[1]", al.model.dot(al.model.vel(P, N), N.x) - Vx, line=13
-)
-DEPENDENT = al.assign(  # al> DEPENDENT[2] = DOT(V_P_N>,N2>) - Vy
-    "DEPENDENT[2]", al.model.dot(al.model.vel(P, N), N.y) - Vy, line=14
-)
+# al> DEPENDENT[1] = DOT(V_P_N>,N1>) - Vx
+DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(P.vel(N), N.x) - Vx, line=13)
+# al> DEPENDENT[2] = DOT(V_P_N>,N2>) - Vy
+DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(P.vel(N), N.y) - Vy, line=14)
 al.model.constrain("DEPENDENT", [U2, U3], line=15)  # al> Constrain( DEPENDENT[U2,U3] )
 
 AUTOLEV = al.names()  # the functions below call the runtime's, whose help tells more

@@ -50,16 +50,19 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
     from sympy import symbols
-    from sympy.physics.vector import Point, outer
+    from sympy.physics.mechanics import RigidBody
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, outer
 
 al = Workspace("inertia.al", __file__)
 
 P = Point("P")  # al> Points P
 al.model.declare_points(P)
-B = al.model.bodies("B")  # al> Bodies B
-Bo = al.model.point("BO")
-B_body = al.model.rigid_body(B)
-MB = al.constants("MB+", line=3)  # al> Mass B=MB
+B = ReferenceFrame("B")  # al> Bodies B
+Bo = Point("BO")
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+al.model.declare_bodies(B_body)
+MB = symbols("MB", nonnegative=True)  # al> Mass B=MB
+al.declare_constants(MB, line=3)
 B_body.mass = MB
 al.model.given_masses(B_body, line=3)
 I_, J, L = symbols("I J L", real=True)  # al> Constants I,J,L

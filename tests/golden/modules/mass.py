@@ -49,17 +49,22 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
     from al2py_runtime import Workspace
-    from sympy.physics.mechanics import Particle
-    from sympy.physics.vector import Point
+    from sympy import symbols
+    from sympy.physics.mechanics import Particle, RigidBody
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("mass.al", __file__)
 
-A, B = al.model.bodies("A", "B")  # al> Bodies      A,B
-A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
+A, B = ReferenceFrame("A"), ReferenceFrame("B")  # al> Bodies      A,B
+Ao, Bo = Point("AO"), Point("BO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+al.model.declare_bodies(A_body, B_body)
 C = Point("C")  # al> Particles   C
 C_particle = Particle("C", C, 0)
 al.model.declare_particles(C_particle)
-MB, MC = al.constants("MB+", "MC+", line=3)  # al> Mass        A=12.5, B=MB, C=MC=10
+MB, MC = symbols("MB MC", nonnegative=True)  # al> Mass        A=12.5, B=MB, C=MC=10
+al.declare_constants(MB, MC, line=3)
 A_body.mass = 12.5
 B_body.mass = MB
 al.assign("MC", 10, line=3)

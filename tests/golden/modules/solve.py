@@ -48,11 +48,12 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
 
 al = Workspace("solve.al", __file__)
 
-X, Y = al.variables("X", "Y", line=1)  # al> Variables X, Y
+X, Y = dynamicsymbols("X Y", real=True)  # al> Variables X, Y
+al.declare_variables(X, Y, line=1)
 # al> Zero[1] = -37 + 3*X + 4*Y
 Zero = al.assign("ZERO[1]", -37 + 3 * X + 4 * Y, line=2)
 Zero = al.assign("ZERO[2]", 2 + 4 * X - 2 * Y, line=3)  # al> Zero[2] = 2 + 4*X - 2*Y

@@ -48,7 +48,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from al2py_runtime.functions import cos
     from sympy import Matrix, pi, symbols
 
@@ -58,7 +58,8 @@ al = Workspace("tutor1.al", __file__)
 # al> % Problem: Examples of mathematical functions
 # al> %-----
 # al> % Mathematical declarations: variables, constants
-X, Y = al.variables("X'", "Y'", line=5)  # al> Variables X', Y'
+X, Y = dynamicsymbols("X Y", real=True)  # al> Variables X', Y'
+al.declare_variables(X, Y, primes=1, line=5)
 A, B, C, D = symbols("A B C D", real=True)  # al> Constants A,B,C,D
 al.declare_constants(A, B, C, D, line=6)
 # al> %-----

@@ -50,11 +50,11 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from al2py_runtime.functions import acos_deg
     from sympy import symbols
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Point
+    from sympy.physics.mechanics import RigidBody, inertia
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("tutor2.al", __file__)
 
@@ -66,28 +66,28 @@ al.settings.set("Degrees", "ON")
 # al> %-----
 # al> % Physical declarations: bodies, points
 # al> Bodies A, B, C % Right, middle, top plate
-A, B, C = al.model.bodies("A", "B", "C")
-Ao = al.model.point("AO")
-Bo = al.model.point("BO")
-Co = al.model.point("CO")
-A_body, B_body, C_body = (
-    al.model.rigid_body(A),
-    al.model.rigid_body(B),
-    al.model.rigid_body(C),
-)
+A, B, C = ReferenceFrame("A"), ReferenceFrame("B"), ReferenceFrame("C")
+Ao, Bo, Co = Point("AO"), Point("BO"), Point("CO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+C_body = RigidBody("C", Co, C, 0, (Dyadic(0), Co))
+al.model.declare_bodies(A_body, B_body, C_body)
 O_, P = Point("O"), Point("P")  # al> Points O, P % Points on L
 al.model.declare_points(O_, P)
 CM = Point("CM")  # al> Points CM % Center of mass of system
 al.model.declare_points(CM)
 # al> %-----
 # al> % Mathematical declarations: variables, constants
-PHI = al.variables("PHI", line=12)  # al> Variables PHI % Angle between plates A and B
+# al> Variables PHI % Angle between plates A and B
+PHI = dynamicsymbols("PHI", real=True)
+al.declare_variables(PHI, line=12)
 W = symbols("W", real=True)  # al> Constants W=1 % Width of plate
 al.declare_constants(W, line=13)
 al.assign("W", 1, line=13)
 # al> %-----
 # al> % Mass and inertia
-M = al.constants("M+", line=16)  # al> Mass A=M=12, B=M, C=M
+M = symbols("M", nonnegative=True)  # al> Mass A=M=12, B=M, C=M
+al.declare_constants(M, line=16)
 al.assign("M", 12, line=16)
 A_body.mass = M
 B_body.mass = M
@@ -125,11 +125,11 @@ al.model.given_pos(P, O_, line=29)
 CM.set_pos(O_, al.model.cm(O_))  # al> P_O_CM> = CM(O)
 al.model.given_pos(CM, O_, line=32)
 # al> Distance = Mag( P_O_CM> )
-Distance = al.assign("DISTANCE", al.model.mag(al.model.pos(O_, CM)), line=33)
+Distance = al.assign("DISTANCE", al.model.mag(CM.pos_from(O_)), line=33)
 # al> %-----
 # al> % Inertia dyadics of system about CM and O
 # al> I_SYSTEM_CM>> = Inertia(CM, A, B, C) % Central inertia dyadic
-I_SYSTEM_CM_dyad = al.assign("I_SYSTEM_CM>>", al.model.inertia(CM, A, B, C), line=36)
+I_SYSTEM_CM_dyad = al.assign_dyadic(I_SYSTEM_CM=al.model.inertia(CM, A, B, C), line=36)
 # al> I_SYSTEM_CM = Represent( I_SYSTEM_CM>>, A) % Central inertia matrix
 I_SYSTEM_CM = al.assign("I_SYSTEM_CM", al.model.represent(I_SYSTEM_CM_dyad, A), line=37)
 # al> Eig( Evaluate(I_SYSTEM_CM, PHI=90), LAMBDA, EIGENVECS )
@@ -141,19 +141,19 @@ LAMBDA, EIGENVECS = al.assign_all(
 # al> EVEC = Rows(EIGENVECS, 1) % Extract eigenvector
 EVEC = al.assign("EVEC", al.rows(EIGENVECS, 1), line=39)
 # al> EVEC> = Represent( EVEC, A ) % Corresponding unit vector
-EVEC_vec = al.assign("EVEC>", al.model.represent(EVEC, A), line=40)
+EVEC_vec = al.assign_vector(EVEC=al.model.represent(EVEC, A), line=40)
 # al> ANGLE = acos( DOT(EVEC>,A2>) ) % Angle between EVEC>, A2>
 ANGLE = al.assign("ANGLE", acos_deg(al.model.dot(EVEC_vec, A.y)), line=41)
 # al> %-----
 # al> % Moment of inertia of system about line joining O and P
 # al> I_SYSTEM_O>> = Inertia(O) % Inertia dyadic about point O
-I_SYSTEM_O_dyad = al.assign("I_SYSTEM_O>>", al.model.inertia(O_), line=44)
+I_SYSTEM_O_dyad = al.assign_dyadic(I_SYSTEM_O=al.model.inertia(O_), line=44)
 # al> Express(I_SYSTEM_O>>, A) % Express in terms of A1>, A2>, A3>
-I_SYSTEM_O_dyad = al.update(
-    "I_SYSTEM_O>>", al.model.express(I_SYSTEM_O_dyad, A), line=45
+I_SYSTEM_O_dyad = al.update_dyadic(
+    I_SYSTEM_O=al.model.express(I_SYSTEM_O_dyad, A), line=45
 )
 # al> L> = Unitvec( P_O_P> ) % Unit vector parallel to line L
-L_vec = al.assign("L>", al.model.unitvec(al.model.pos(O_, P)), line=46)
+L_vec = al.assign_vector(L=al.model.unitvec(P.pos_from(O_)), line=46)
 # al> IL = Dot(L>, DOT(I_SYSTEM_O>>, L>)) % Moment of inertia about L
 IL = al.assign("IL", al.model.dot(L_vec, al.model.dot(I_SYSTEM_O_dyad, L_vec)), line=47)
 # al> MTOTAL = Mass() % Mass of system

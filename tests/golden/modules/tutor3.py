@@ -54,7 +54,7 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace
+    from al2py_runtime import Workspace, dynamicsymbols
     from sympy import symbols
     from sympy.physics.vector import Point, ReferenceFrame
 
@@ -77,7 +77,8 @@ al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Mathematical declarations:  variables, constants
 # al> Variables   QA, QB, QC      % Configuration variables
-QA, QB, QC = al.variables("QA", "QB", "QC", line=9)
+QA, QB, QC = dynamicsymbols("QA QB QC", real=True)
+al.declare_variables(QA, QB, QC, line=9)
 # al> Constants   LA, LB, LC, LN  % Lengths
 LA, LB, LC, LN = symbols("LA LB LC LN", real=True)
 al.declare_constants(LA, LB, LC, LN, line=10)
@@ -101,10 +102,8 @@ R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=21)
 # al> %-----
 # al> %      Configuration constraints
-LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-    "LOOP>",
-    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
-    line=24,
+LOOP_vec = al.assign_vector(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
+    LOOP=P.pos_from(O_) + Q.pos_from(P) + R.pos_from(Q) + O_.pos_from(R), line=24
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>)
 CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=25)

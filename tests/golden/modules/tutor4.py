@@ -54,9 +54,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, symbols
     from sympy.physics.mechanics import Force, Particle
+    from sympy.physics.mechanics.loads import gravity
     from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor4.al", __file__)
@@ -76,16 +77,19 @@ O_ = Point("O")  # al> Points O
 al.model.declare_points(O_)
 # al> %-----
 # al> % Mathematical declarations: variables, constants, mass
-U1, U2 = al.variables("U1", "U2", line=11)  # al> Variables U{2} % Generalized speeds
+U1, U2 = dynamicsymbols("U1 U2", real=True)  # al> Variables U{2} % Generalized speeds
+al.declare_variables(U1, U2, line=11)
 # al> Variables QA', QB' % Generalized coordinates; derivatives
-QA, QB = al.variables("QA'", "QB'", line=12)
+QA, QB = dynamicsymbols("QA QB", real=True)
+al.declare_variables(QA, QB, primes=1, line=12)
 # al> Constants G, LA, LB % Gravitational acceleration, lengths of A, B
 G, LA, LB = symbols("G LA LB", real=True)
 al.declare_constants(G, LA, LB, line=13)
 # al> Constants K, LO % Spring constant, natural length of spring
 K, LO = symbols("K LO", real=True)
 al.declare_constants(K, LO, line=14)
-MP, MQ = al.constants("MP+", "MQ+", line=15)  # al> Mass P=MP, Q=MQ
+MP, MQ = symbols("MP MQ", nonnegative=True)  # al> Mass P=MP, Q=MQ
+al.declare_constants(MP, MQ, line=15)
 P_particle.mass = MP
 Q_particle.mass = MQ
 al.model.given_masses(P_particle, Q_particle, line=15)
@@ -117,19 +121,22 @@ al.model.given_ang_vel(B, N, line=31)
 # al> % Velocities
 O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=34)
-al.model.v2pts(N, A, O_, P, line=35)  # al> V2pts(N, A, O, P)
-al.model.v2pts(N, B, P, Q, line=36)  # al> V2pts(N, B, P, Q)
+P.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, P)
+al.model.formed_vel(P, N, line=35)
+Q.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Q)
+al.model.formed_vel(Q, N, line=36)
 # al> %-----
 # al> % Forces
 # al> Gravity( G*N1> )
 loads = al.model.loads  # sympy Force/Torque loads
-al.model.gravity(G * N.x)
+loads += gravity(G * N.x, P_particle, Q_particle)
+al.model.given_gravity(G * N.x)
 # al> LOQ = MAG(P_O_Q>) % Distance from O to Q
 LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=40)
 # al> STRETCH = LOQ - LO % Stretch of spring
 STRETCH = al.assign("STRETCH", LOQ - LO, line=41)
 # al> UVEC> = P_O_Q> / LOQ % Unit vector from O to Q
-UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=42)
+UVEC_vec = al.assign_vector(UVEC=al.model.pos(O_, Q) / LOQ, line=42)
 # al> Force(O/Q, -K*STRETCH*UVEC> ) % Spring force
 loads += [Force(O_, -(-K * STRETCH * UVEC_vec)), Force(Q, -K * STRETCH * UVEC_vec)]
 # al> %-----

@@ -53,10 +53,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, symbols
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Point, ReferenceFrame, Vector
+    from sympy.physics.mechanics import RigidBody, inertia
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector
 
 al = Workspace("tutor5.al", __file__)
 
@@ -66,24 +66,24 @@ al = Workspace("tutor5.al", __file__)
 # al> %      Newtonian, bodies, frames, particles, points
 N = ReferenceFrame("N")  # al> Newtonian      N
 al.model.declare_newtonian(N)
-A, B, C = al.model.bodies("A", "B", "C")  # al> Bodies        A, B, C
-Ao = al.model.point("AO")
-Bo = al.model.point("BO")
-Co = al.model.point("CO")
-A_body, B_body, C_body = (
-    al.model.rigid_body(A),
-    al.model.rigid_body(B),
-    al.model.rigid_body(C),
-)
+# al> Bodies        A, B, C
+A, B, C = ReferenceFrame("A"), ReferenceFrame("B"), ReferenceFrame("C")
+Ao, Bo, Co = Point("AO"), Point("BO"), Point("CO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+C_body = RigidBody("C", Co, C, 0, (Dyadic(0), Co))
+al.model.declare_bodies(A_body, B_body, C_body)
 # al> Points        O, P, Q, R
 O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
 al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}                % Generalized speeds
-U1, U2, U3 = al.variables("U1", "U2", "U3", line=10)
+U1, U2, U3 = dynamicsymbols("U1 U2 U3", real=True)
+al.declare_variables(U1, U2, U3, line=10)
 # al> Variables      QA', QB', QC'        % Generalized coordinates; derivatives
-QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=11)
+QA, QB, QC = dynamicsymbols("QA QB QC", real=True)
+al.declare_variables(QA, QB, QC, primes=1, line=11)
 # al> Constants      G=9.81                % Gravitational acceleration
 G = symbols("G", real=True)
 al.declare_constants(G, line=12)
@@ -101,7 +101,8 @@ al.declare_constants(H, line=14)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass          A=MA=10, B=MB=20, C=MC=20
-MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=17)
+MA, MB, MC = symbols("MA MB MC", nonnegative=True)
+al.declare_constants(MA, MB, MC, line=17)
 al.assign("MA", 10, line=17)
 A_body.mass = MA
 al.assign("MB", 20, line=17)
@@ -136,11 +137,11 @@ Q.set_pos(R, LC * C.x)  # al> P_R_Q> = LC*C1>
 al.model.given_pos(Q, R, line=30)
 R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=31)
-Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))  # al> P_O_Ao> = 0.5*P_O_P>
+Ao.set_pos(O_, 0.5 * P.pos_from(O_))  # al> P_O_Ao> = 0.5*P_O_P>
 al.model.given_pos(Ao, O_, line=32)
-Bo.set_pos(P, 0.5 * al.model.pos(P, Q))  # al> P_P_Bo> = 0.5*P_P_Q>
+Bo.set_pos(P, 0.5 * Q.pos_from(P))  # al> P_P_Bo> = 0.5*P_P_Q>
 al.model.given_pos(Bo, P, line=33)
-Co.set_pos(R, 0.5 * al.model.pos(R, Q))  # al> P_R_Co> = 0.5*P_R_Q>
+Co.set_pos(R, 0.5 * Q.pos_from(R))  # al> P_R_Co> = 0.5*P_R_Q>
 al.model.given_pos(Co, R, line=34)
 # al> %-----
 # al> %      Kinematical differential equations
@@ -159,10 +160,8 @@ C.set_ang_vel(N, QC.diff(t) * C.z)  # al> W_C_N> = QC'*C3>
 al.model.given_ang_vel(C, N, line=44)
 # al> %-----
 # al> %      Configuration Constraints
-LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-    "LOOP>",
-    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
-    line=47,
+LOOP_vec = al.assign_vector(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
+    LOOP=P.pos_from(O_) + Q.pos_from(P) + R.pos_from(Q) + O_.pos_from(R), line=47
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>)
 CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=48)
@@ -172,18 +171,23 @@ CONFIG = al.assign("CONFIG[2]", al.model.dot(LOOP_vec, N.y), line=49)
 # al> %           Velocities
 O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=52)
-al.model.v2pts(N, A, O_, Ao, line=53)  # al> V2pts(N, A, O, Ao)
-al.model.v2pts(N, A, O_, P, line=54)  # al> V2pts(N, A, O, P)
-al.model.v2pts(N, B, P, Bo, line=55)  # al> V2pts(N, B, P, Bo)
-al.model.v2pts(N, B, P, Q, line=56)  # al> V2pts(N, B, P, Q)
+Ao.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, Ao)
+al.model.formed_vel(Ao, N, line=53)
+P.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, P)
+al.model.formed_vel(P, N, line=54)
+Bo.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Bo)
+al.model.formed_vel(Bo, N, line=55)
+Q.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Q)
+al.model.formed_vel(Q, N, line=56)
 al.model.v2pts(N, C, Q, Co, line=57)  # al> V2pts(N, C, Q, Co)
-al.model.v2pts(N, C, Q, R, line=58)  # al> V2pts(N, C, Q, R)
+R.v2pt_theory(Q, N, C)  # al> V2pts(N, C, Q, R)
+al.model.formed_vel(R, N, line=58)
 # al> %-----
 # al> %           Motion constraints
 # al> DEPENDENT[1] = Dot(V_R_N>, N1>)
-DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(al.model.vel(R, N), N.x), line=61)
+DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(R.vel(N), N.x), line=61)
 # al> DEPENDENT[2] = Dot(V_R_N>, N2>)
-DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(al.model.vel(R, N), N.y), line=62)
+DEPENDENT = al.assign("DEPENDENT[2]", al.model.dot(R.vel(N), N.y), line=62)
 al.model.constrain("DEPENDENT", [U2, U3], line=63)  # al> Constrain( DEPENDENT[U2,U3] )
 # al> %-----
 # al> %           Forces

@@ -56,10 +56,11 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from al2py_runtime.functions import sin
     from sympy import Eq, symbols
     from sympy.physics.mechanics import Force, Particle
+    from sympy.physics.mechanics.loads import gravity
     from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 al = Workspace("tutor6.al", __file__)
@@ -81,11 +82,14 @@ al.model.declare_points(O_)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{2}'          % Generalized Speeds; derivatives
-U1, U2 = al.variables("U1'", "U2'", line=12)
+U1, U2 = dynamicsymbols("U1 U2", real=True)
+al.declare_variables(U1, U2, primes=1, line=12)
 # al> Variables      QA', QB'       % Generalized coordinates; derivatives
-QA, QB = al.variables("QA'", "QB'", line=13)
+QA, QB = dynamicsymbols("QA QB", real=True)
+al.declare_variables(QA, QB, primes=1, line=13)
 # al> Variables      F1, F2         % Contact forces
-F1, F2 = al.variables("F1", "F2", line=14)
+F1, F2 = dynamicsymbols("F1 F2", real=True)
+al.declare_variables(F1, F2, line=14)
 # al> Constants      G, LA, LB      % Gravitational acceleration, lengths of A, B
 G, LA, LB = symbols("G LA LB", real=True)
 al.declare_constants(G, LA, LB, line=15)
@@ -96,12 +100,15 @@ al.declare_constants(K, LO, line=16)
 C, D = symbols("C D", real=True)
 al.declare_constants(C, D, line=17)
 # al> Specified      STRETCH'       % Elongation of spring joining O and Q
-STRETCH = al.specified("STRETCH'", line=18)
-FP = al.specified("FP", line=19)  # al> Specified      FP = -D*QA'    % Force on P
+STRETCH = dynamicsymbols("STRETCH", real=True)
+al.declare_specified(STRETCH, primes=1, line=18)
+FP = dynamicsymbols("FP", real=True)  # al> Specified      FP = -D*QA'    % Force on P
+al.declare_specified(FP, line=19)
 al.assign("FP", -D * QA.diff(t), line=19)
 # al> %-----
 # al> %      Mass and inertia
-MP, MQ = al.constants("MP+", "MQ+", line=22)  # al> Mass           P=MP, Q=MQ
+MP, MQ = symbols("MP MQ", nonnegative=True)  # al> Mass           P=MP, Q=MQ
+al.declare_constants(MP, MQ, line=22)
 P_particle.mass = MP
 Q_particle.mass = MQ
 al.model.given_masses(P_particle, Q_particle, line=22)
@@ -134,8 +141,10 @@ al.model.given_ang_vel(B, N, line=38)
 # al> % V_O_N> = U3*N1> + U4*N2>          % Brings into evidence F1, F2
 O_.set_vel(N, Vector(0))  # al> V_O_N> = 0>
 al.model.given_vel(O_, N, line=42)
-al.model.v2pts(N, A, O_, P, line=43)  # al> V2pts(N, A, O, P)
-al.model.v2pts(N, B, P, Q, line=44)  # al> V2pts(N, B, P, Q)
+P.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, P)
+al.model.formed_vel(P, N, line=43)
+Q.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Q)
+al.model.formed_vel(Q, N, line=44)
 # al> %-----
 # al> %      Motion constraints
 # al> % AUXILIARY[1] = Dot(V_O_N>, N1>)    % Dot(V_O_N>,N1>) = 0
@@ -145,7 +154,8 @@ al.model.v2pts(N, B, P, Q, line=44)  # al> V2pts(N, B, P, Q)
 # al> %      Forces
 # al> Gravity( G*N1> )
 loads = al.model.loads  # sympy Force/Torque loads
-al.model.gravity(G * N.x)
+loads += gravity(G * N.x, P_particle, Q_particle)
+al.model.given_gravity(G * N.x)
 loads.append(Force(P, FP * A.y))  # al> Force_P> += Fp*A2>
 al.model.given_force(P, line=53)
 # al> LOQ = Mag(P_O_Q>)                        % Distance from O to Q
@@ -153,9 +163,9 @@ LOQ = al.assign("LOQ", al.model.mag(al.model.pos(O_, Q)), line=54)
 # al> STRETCH = LOQ - LO                       % Stretch of spring
 al.assign("STRETCH", LOQ - LO, line=55)
 # al> UVEC> = P_O_Q> / LOQ                     % Unit vector directed from O to Q
-UVEC_vec = al.assign("UVEC>", al.model.pos(O_, Q) / LOQ, line=56)
+UVEC_vec = al.assign_vector(UVEC=al.model.pos(O_, Q) / LOQ, line=56)
 # al> STRETCH' = Dot(V_Q_N>,UVEC>)            % Time rate of change of stretch
-al.assign("STRETCH'", al.model.dot(al.model.vel(Q, N), UVEC_vec), line=57)
+al.assign("STRETCH'", al.model.dot(Q.vel(N), UVEC_vec), line=57)
 loads += [  # al> Force(O/Q, (-K*STRETCH-C*STRETCH')*UVEC> )
     Force(O_, -((-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec)),
     Force(Q, (-K * STRETCH - C * STRETCH.diff(t)) * UVEC_vec),

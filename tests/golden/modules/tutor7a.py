@@ -54,10 +54,10 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, Matrix, symbols
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Point, ReferenceFrame, Vector
+    from sympy.physics.mechanics import RigidBody, inertia
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector
 
 al = Workspace("tutor7a.al", __file__)
 
@@ -73,26 +73,27 @@ al.settings.set("Digits", 7)  # al> Digits     7              % Significant digi
 # al> %      Newtonian, bodies, frames, particles, points
 N = ReferenceFrame("N")  # al> Newtonian  N
 al.model.declare_newtonian(N)
-A, B, C = al.model.bodies("A", "B", "C")  # al> Bodies     A, B, C
-Ao = al.model.point("AO")
-Bo = al.model.point("BO")
-Co = al.model.point("CO")
-A_body, B_body, C_body = (
-    al.model.rigid_body(A),
-    al.model.rigid_body(B),
-    al.model.rigid_body(C),
-)
+# al> Bodies     A, B, C
+A, B, C = ReferenceFrame("A"), ReferenceFrame("B"), ReferenceFrame("C")
+Ao, Bo, Co = Point("AO"), Point("BO"), Point("CO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+C_body = RigidBody("C", Co, C, 0, (Dyadic(0), Co))
+al.model.declare_bodies(A_body, B_body, C_body)
 # al> Points     O, P, Q, R
 O_, P, Q, R = Point("O"), Point("P"), Point("Q"), Point("R")
 al.model.declare_points(O_, P, Q, R)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables  U{4}'          % Generalized speeds; derivatives
-U1, U2, U3, U4 = al.variables("U1'", "U2'", "U3'", "U4'", line=14)
+U1, U2, U3, U4 = dynamicsymbols("U1 U2 U3 U4", real=True)
+al.declare_variables(U1, U2, U3, U4, primes=1, line=14)
 # al> Variables  QA', QB', QC' % Generalized coordinates; derivatives
-QA, QB, QC = al.variables("QA'", "QB'", "QC'", line=15)
+QA, QB, QC = dynamicsymbols("QA QB QC", real=True)
+al.declare_variables(QA, QB, QC, primes=1, line=15)
 # al> Variables  FA{2}, FC{2}  % Contact forces
-FA1, FA2, FC1, FC2 = al.variables("FA1", "FA2", "FC1", "FC2", line=16)
+FA1, FA2, FC1, FC2 = dynamicsymbols("FA1 FA2 FC1 FC2", real=True)
+al.declare_variables(FA1, FA2, FC1, FC2, line=16)
 G = symbols("G", real=True)  # al> Constants  G=9.81        % Gravitational acceleration
 al.declare_constants(G, line=17)
 al.assign("G", 9.81, line=17)
@@ -108,7 +109,8 @@ ZEE_NOT = al.assign("ZEE_NOT", Matrix([[FA1, FA2, FC1, FC2]]), line=19)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass       A=MA=10, B=MB=20, C=MC=20
-MA, MB, MC = al.constants("MA+", "MB+", "MC+", line=22)
+MA, MB, MC = symbols("MA MB MC", nonnegative=True)
+al.declare_constants(MA, MB, MC, line=22)
 al.assign("MA", 10, line=22)
 A_body.mass = MA
 al.assign("MB", 20, line=22)
@@ -143,11 +145,11 @@ Q.set_pos(R, LC * C.x)  # al> P_R_Q> = LC*C1>
 al.model.given_pos(Q, R, line=35)
 R.set_pos(O_, LN * N.y)  # al> P_O_R> = LN*N2>
 al.model.given_pos(R, O_, line=36)
-Ao.set_pos(O_, 0.5 * al.model.pos(O_, P))  # al> P_O_Ao> = 0.5*P_O_P>
+Ao.set_pos(O_, 0.5 * P.pos_from(O_))  # al> P_O_Ao> = 0.5*P_O_P>
 al.model.given_pos(Ao, O_, line=37)
-Bo.set_pos(P, 0.5 * al.model.pos(P, Q))  # al> P_P_Bo> = 0.5*P_P_Q>
+Bo.set_pos(P, 0.5 * Q.pos_from(P))  # al> P_P_Bo> = 0.5*P_P_Q>
 al.model.given_pos(Bo, P, line=38)
-Co.set_pos(R, 0.5 * al.model.pos(R, Q))  # al> P_R_Co> = 0.5*P_R_Q>
+Co.set_pos(R, 0.5 * Q.pos_from(R))  # al> P_R_Co> = 0.5*P_R_Q>
 al.model.given_pos(Co, R, line=39)
 # al> %-----
 # al> %      Kinematical differential equations
@@ -168,29 +170,34 @@ al.model.given_ang_vel(C, N, line=49)
 # al> %      Velocities
 O_.set_vel(N, U4 * N.x)  # al> V_O_N> = U4*N1>
 al.model.given_vel(O_, N, line=52)
-al.model.v2pts(N, A, O_, Ao, line=53)  # al> V2pts(N, A, O, Ao)
-al.model.v2pts(N, A, O_, P, line=54)  # al> V2pts(N, A, O, P)
-al.model.v2pts(N, B, P, Bo, line=55)  # al> V2pts(N, B, P, Bo)
-al.model.v2pts(N, B, P, Q, line=56)  # al> V2pts(N, B, P, Q)
+Ao.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, Ao)
+al.model.formed_vel(Ao, N, line=53)
+P.v2pt_theory(O_, N, A)  # al> V2pts(N, A, O, P)
+al.model.formed_vel(P, N, line=54)
+Bo.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Bo)
+al.model.formed_vel(Bo, N, line=55)
+Q.v2pt_theory(P, N, B)  # al> V2pts(N, B, P, Q)
+al.model.formed_vel(Q, N, line=56)
 al.model.v2pts(N, C, Q, Co, line=57)  # al> V2pts(N, C, Q, Co)
-al.model.v2pts(N, C, Q, R, line=58)  # al> V2pts(N, C, Q, R)
+R.v2pt_theory(Q, N, C)  # al> V2pts(N, C, Q, R)
+al.model.formed_vel(R, N, line=58)
 # al> %-----
 # al> %      Motion constraints
 # al> AUXILIARY[1] = Dot(V_R_N>, N1>)           % Dot(V_R_N>, N1>) = 0
-AUXILIARY = al.assign("AUXILIARY[1]", al.model.dot(al.model.vel(R, N), N.x), line=61)
+AUXILIARY = al.assign("AUXILIARY[1]", al.model.dot(R.vel(N), N.x), line=61)
 # al> AUXILIARY[2] = Dot(V_R_N>, N2>)           % Dot(V_R_N>, N2>) = 0
-AUXILIARY = al.assign("AUXILIARY[2]", al.model.dot(al.model.vel(R, N), N.y), line=62)
+AUXILIARY = al.assign("AUXILIARY[2]", al.model.dot(R.vel(N), N.y), line=62)
 # al> AUXILIARY[3] = Dot(V_O_N>, N1>)         % Dot(V_O_N>, N1>) = 0
-AUXILIARY = al.assign("AUXILIARY[3]", al.model.dot(al.model.vel(O_, N), N.x), line=63)
+AUXILIARY = al.assign("AUXILIARY[3]", al.model.dot(O_.vel(N), N.x), line=63)
 # al> Constrain( AUXILIARY[U2,U3,U4] )       % Solve for U2,U3,U4
 al.model.constrain("AUXILIARY", [U2, U3, U4], line=64)
 # al> %-----
 # al> %           Angular accelerations
-A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
+A.set_ang_acc(N, al.dt(A.ang_vel_in(N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
 al.model.given_ang_acc(A, N, line=67)
-B.set_ang_acc(N, al.dt(al.model.ang_vel(B, N), N))  # al> ALF_B_N> = DT(W_B_N>, N)
+B.set_ang_acc(N, al.dt(B.ang_vel_in(N), N))  # al> ALF_B_N> = DT(W_B_N>, N)
 al.model.given_ang_acc(B, N, line=68)
-C.set_ang_acc(N, al.dt(al.model.ang_vel(C, N), N))  # al> ALF_C_N> = DT(W_C_N>, N)
+C.set_ang_acc(N, al.dt(C.ang_vel_in(N), N))  # al> ALF_C_N> = DT(W_C_N>, N)
 al.model.given_ang_acc(C, N, line=69)
 # al> %-----
 # al> %           Accelerations of particles and mass centers of bodies
@@ -232,10 +239,8 @@ al.numerics.input({"INTEGSTP": 0.1, "PRINTINT": 1}, line=94)
 al.numerics.input({"ABSERR": 1.0e-07, "RELERR": 1.0e-07}, line=95)
 # al> %-----
 # al> %           Quantities to be output from CODE
-LOOP_vec = al.assign(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
-    "LOOP>",
-    al.model.pos(O_, P) + al.model.pos(P, Q) + al.model.pos(Q, R) + al.model.pos(R, O_),
-    line=98,
+LOOP_vec = al.assign_vector(  # al> LOOP> = P_O_P> + P_P_Q> + P_Q_R> + P_R_O>
+    LOOP=P.pos_from(O_) + Q.pos_from(P) + R.pos_from(Q) + O_.pos_from(R), line=98
 )
 # al> CONFIG[1] = Dot(LOOP>,N1>) % Should always equal 0
 CONFIG = al.assign("CONFIG[1]", al.model.dot(LOOP_vec, N.x), line=99)

@@ -56,10 +56,11 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, Matrix, symbols
-    from sympy.physics.mechanics import Force, inertia
-    from sympy.physics.vector import Point, ReferenceFrame, Vector
+    from sympy.physics.mechanics import Force, RigidBody, inertia
+    from sympy.physics.mechanics.loads import gravity
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector
 
 al = Workspace("tutor8.al", __file__)
 
@@ -72,18 +73,22 @@ al.settings.set("Digits", 2)  # al> Digits      2          % Significant digits
 # al> % Newtonian, bodies, frames, particles, points
 N = ReferenceFrame("N")  # al> Newtonian   N          % Newtonian reference frame
 al.model.declare_newtonian(N)
-A, B = al.model.bodies("A", "B")  # al> Bodies      A, B       % Cart, inverted pendulum
-Ao = al.model.point("AO")
-Bo = al.model.point("BO")
-A_body, B_body = al.model.rigid_body(A), al.model.rigid_body(B)
+# al> Bodies      A, B       % Cart, inverted pendulum
+A, B = ReferenceFrame("A"), ReferenceFrame("B")
+Ao, Bo = Point("AO"), Point("BO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+al.model.declare_bodies(A_body, B_body)
 O_ = Point("O")  # al> Points      O          % Point fixed in N
 al.model.declare_points(O_)
 # al> %-----
 # al> % Variables, constants, and specified
 # al> Variables   U{2}'      % Generalized speeds; derivatives
-U1, U2 = al.variables("U1'", "U2'", line=13)
+U1, U2 = dynamicsymbols("U1 U2", real=True)
+al.declare_variables(U1, U2, primes=1, line=13)
 # al> Variables   X', THETA' % Generalized coordinates; derivatives
-X, THETA = al.variables("X'", "THETA'", line=14)
+X, THETA = dynamicsymbols("X THETA", real=True)
+al.declare_variables(X, THETA, primes=1, line=14)
 L = symbols("L", real=True)  # al> Constants   L          % Length of rod
 al.declare_constants(L, line=15)
 G = symbols("G", real=True)  # al> Constants   G          % Gravitational acceleration
@@ -91,15 +96,19 @@ al.declare_constants(G, line=16)
 # al> Constants   K{4}       % Control gains
 K1, K2, K3, K4 = symbols("K1 K2 K3 K4", real=True)
 al.declare_constants(K1, K2, K3, K4, line=17)
-F = al.specified("F", line=18)  # al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
+# al> Specified   F = K1*X + K2*THETA + K3*U1 + K4*U2
+F = dynamicsymbols("F", real=True)
+al.declare_specified(F, line=18)
 al.assign("F", K1 * X + K2 * THETA + K3 * U1 + K4 * U2, line=18)
 # al> %-----
 # al> % Mass and inertia
-MA, MB = al.constants("MA+", "MB+", line=21)  # al> Mass        A=MA, B=MB
+MA, MB = symbols("MA MB", nonnegative=True)  # al> Mass        A=MA, B=MB
+al.declare_constants(MA, MB, line=21)
 A_body.mass = MA
 B_body.mass = MB
 al.model.given_masses(A_body, B_body, line=21)
-IB = al.constants("IB+", line=22)  # al> Inertia     B, IB=MB*L^2/12, 0, IB
+IB = symbols("IB", nonnegative=True)  # al> Inertia     B, IB=MB*L^2/12, 0, IB
+al.declare_constants(IB, line=22)
 al.assign("IB", MB * L**2 / 12, line=22)
 B_body.central_inertia = inertia(B, IB, 0, IB)
 al.model.given_inertia(B_body, line=22)
@@ -127,14 +136,16 @@ B.set_ang_vel(N, THETA.diff(t) * B.z)  # al> W_B_N> = THETA'*B3>
 al.model.given_ang_vel(B, N, line=37)
 # al> %-----
 # al> % Velocities
-Ao.set_vel(N, al.dt(al.model.pos(O_, Ao), N))  # al> V_Ao_N> = DT(P_O_Ao>, N)
+Ao.set_vel(N, al.dt(Ao.pos_from(O_), N))  # al> V_Ao_N> = DT(P_O_Ao>, N)
 al.model.given_vel(Ao, N, line=40)
-al.model.v2pts(N, B, Ao, Bo, line=41)  # al> V2pts(N, B, Ao, Bo)
+Bo.v2pt_theory(Ao, N, B)  # al> V2pts(N, B, Ao, Bo)
+al.model.formed_vel(Bo, N, line=41)
 # al> %-----
 # al> % Forces
 # al> Gravity( -G*N2> )
 loads = al.model.loads  # sympy Force/Torque loads
-al.model.gravity(-G * N.y)
+loads += gravity(-G * N.y, A_body, B_body)
+al.model.given_gravity(-G * N.y)
 loads.append(Force(Ao, F * N.x))  # al> Force_Ao> += F*N1>
 al.model.given_force(Ao, line=45)
 # al> %-----
@@ -149,9 +160,11 @@ Zero = al.assign("ZERO", al.evaluate(Zero, {L: 1, MA: 10, MB: 1, G: 9.81}), line
 # al> %*****
 # al> % Linearization: Perturbation variables
 # al> Variables   dU{2}'      % Perturbations of U1,U2,U1',U2'
-dU1, dU2 = al.variables("DU1'", "DU2'", line=55)
+dU1, dU2 = dynamicsymbols("DU1 DU2", real=True)
+al.declare_variables(dU1, dU2, primes=1, line=55)
 # al> Variables    dX', dTHETA'    % Perturbations of X,X', THETA,THETA'
-dX, dTHETA = al.variables("DX'", "DTHETA'", line=56)
+dX, dTHETA = dynamicsymbols("DX DTHETA", real=True)
+al.declare_variables(dX, dTHETA, primes=1, line=56)
 # al> %-----
 # al> %          Check whether X=THETA=U1=U2=U1'=U2'=0 is a solution
 CHECK = al.assign(  # al> CHECK = Evaluate(Zero, X=0, THETA=0, U1=0, U2=0, U1'=0, U2'=0)

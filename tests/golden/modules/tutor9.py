@@ -55,11 +55,11 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from al2py_runtime.functions import acos
     from sympy import Matrix, symbols
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import ReferenceFrame, Vector
+    from sympy.physics.mechanics import RigidBody, inertia
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame, Vector
 
 al = Workspace("tutor9.al", __file__)
 
@@ -69,15 +69,17 @@ al = Workspace("tutor9.al", __file__)
 # al> %      Newtonian, bodies, frames, particles, points
 N = ReferenceFrame("N")  # al> Newtonian      N              % Newtonian reference frame
 al.model.declare_newtonian(N)
-A = al.model.bodies("A")  # al> Bodies         A              % Carrier
-Ao = al.model.point("AO")
-A_body = al.model.rigid_body(A)
+A = ReferenceFrame("A")  # al> Bodies         A              % Carrier
+Ao = Point("AO")
+A_body = RigidBody("A", Ao, A, 0, (Dyadic(0), Ao))
+al.model.declare_bodies(A_body)
 B = ReferenceFrame("B")  # al> Frames         B              % Rotor
 al.model.declare_frames(B)
 # al> %-----
 # al> %      Variables, constants, and specified
 # al> Variables      U{3}'         % Generalized speeds; derivatives
-U1, U2, U3 = al.variables("U1'", "U2'", "U3'", line=10)
+U1, U2, U3 = dynamicsymbols("U1 U2 U3", real=True)
+al.declare_variables(U1, U2, U3, primes=1, line=10)
 # al> Constants      OMEGA         % Angular speed of B in A
 OMEGA = symbols("OMEGA", real=True)
 al.declare_constants(OMEGA, line=11)
@@ -87,11 +89,13 @@ al.declare_constants(J, line=12)
 # al> %-----
 # al> %      Mass and inertia
 # al> Mass           A=M           % Attribute mass of G to A
-M = al.constants("M+", line=15)
+M = symbols("M", nonnegative=True)
+al.declare_constants(M, line=15)
 A_body.mass = M
 al.model.given_masses(A_body, line=15)
 # al> Inertia        A, I1, I2, I3 % Attribute inertia of G to A
-I1, I2, I3 = al.constants("I1+", "I2+", "I3+", line=16)
+I1, I2, I3 = symbols("I1 I2 I3", nonnegative=True)
+al.declare_constants(I1, I2, I3, line=16)
 A_body.central_inertia = inertia(A, I1, I2, I3)
 al.model.given_inertia(A_body, line=16)
 # al> %-----
@@ -103,9 +107,9 @@ B.set_ang_vel(A, OMEGA * A.z)  # al> W_B_A> = OMEGA*A3>
 al.model.given_ang_vel(B, A, line=20)
 # al> %-----
 # al> %      Angular accelerations
-A.set_ang_acc(N, al.dt(al.model.ang_vel(A, N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
+A.set_ang_acc(N, al.dt(A.ang_vel_in(N), N))  # al> ALF_A_N> = DT(W_A_N>, N)
 al.model.given_ang_acc(A, N, line=23)
-B.set_ang_acc(A, al.dt(al.model.ang_vel(B, A), A))  # al> ALF_B_A> = DT(W_B_A>, A)
+B.set_ang_acc(A, al.dt(B.ang_vel_in(A), A))  # al> ALF_B_A> = DT(W_B_A>, A)
 al.model.given_ang_acc(B, A, line=24)
 # al> %-----
 # al> %      Acceleration of mass center of G is 0>
@@ -123,9 +127,10 @@ Zero = al.assign(  # al> Zero = Fr() + FrStar() + Gyrostat(FrStar,CYLINDER,A,B,J
 Zero = al.model.kane(line=31)  # al> Kane()
 # al> %-----
 # al> %      Angular momentum of gyrostat
-H_vec = al.assign(  # al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
-    "H>",
-    al.model.momentum("ANGULAR", Ao) + al.model.gyrostat("ANGMOM", "CYLINDER", A, B, J),
+# al> H> = Momentum(ANGULAR, Ao) + Gyrostat(ANGMOM,CYLINDER,A,B,J)
+H_vec = al.assign_vector(
+    H=al.model.momentum("ANGULAR", Ao)
+    + al.model.gyrostat("ANGMOM", "CYLINDER", A, B, J),
     line=34,
 )
 H = al.assign("H", al.model.mag(H_vec), line=35)  # al> H = Mag(H>)
@@ -161,7 +166,8 @@ al.numerics.code("DYNAMICS", file="tutor9.for", line=54)
 # al> %*****
 # al> %      Linearization: Perturbation vars + nominal solution parameters
 # al> Variables  dU{3}'          % Perturbations of U1, U2, U3
-dU1, dU2, dU3 = al.variables("DU1'", "DU2'", "DU3'", line=59)
+dU1, dU2, dU3 = dynamicsymbols("DU1 DU2 DU3", real=True)
+al.declare_variables(dU1, dU2, dU3, primes=1, line=59)
 # al> Constants  nU3             % Nominal solution for U3
 nU3 = symbols("NU3", real=True)
 al.declare_constants(nU3, line=60)
@@ -205,7 +211,8 @@ Am = al.assign("AM", al.d(Xp, Xm), line=73)  # al> Am = D( Xp, Xm )
 # al> %-----
 # al> %      To find eigenvalues of Am symbolically, find the roots of the
 # al> %      equation found by setting the determinant of LAMBDA*I-A = 0
-LAMBDA = al.variables("LAMBDA", line=77)  # al> Variables LAMBDA
+LAMBDA = dynamicsymbols("LAMBDA", real=True)  # al> Variables LAMBDA
+al.declare_variables(LAMBDA, line=77)
 # al> DET = Det( LAMBDA*DIAGMAT(3,1) - Am )
 DET = al.assign("DET", al.det(LAMBDA * al.diagmat(3, 1) - Am), line=78)
 # al> %-----

@@ -60,10 +60,11 @@ Integration parameters: TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR.
 """)
     raise SystemExit(0)
 else:  # imported only here, so that the --help above answers at once
-    from al2py_runtime import Workspace, t
+    from al2py_runtime import Workspace, dynamicsymbols, t
     from sympy import Eq, Matrix, symbols
-    from sympy.physics.mechanics import inertia
-    from sympy.physics.vector import Point, ReferenceFrame
+    from sympy.physics.mechanics import RigidBody, inertia
+    from sympy.physics.mechanics.loads import gravity
+    from sympy.physics.vector import Dyadic, Point, ReferenceFrame
 
 al = Workspace("whipple_benchmark.al", __file__)
 
@@ -81,29 +82,30 @@ al.model.declare_newtonian(N)
 # al> Frames    Y, L, E            % heading, lean (roll), steer axis
 Y, L, E = ReferenceFrame("Y"), ReferenceFrame("L"), ReferenceFrame("E")
 al.model.declare_frames(Y, L, E)
-R, B, H, F = al.model.bodies("R", "B", "H", "F")  # al> Bodies    R, B, H, F
-Ro = al.model.point("RO")
-Bo = al.model.point("BO")
-Ho = al.model.point("HO")
-Fo = al.model.point("FO")
-R_body, B_body, H_body, F_body = (
-    al.model.rigid_body(R),
-    al.model.rigid_body(B),
-    al.model.rigid_body(H),
-    al.model.rigid_body(F),
+R, B, H, F = (  # al> Bodies    R, B, H, F
+    ReferenceFrame("R"),
+    ReferenceFrame("B"),
+    ReferenceFrame("H"),
+    ReferenceFrame("F"),
 )
+Ro, Bo, Ho, Fo = Point("RO"), Point("BO"), Point("HO"), Point("FO")
+R_body = RigidBody("R", Ro, R, 0, (Dyadic(0), Ro))
+B_body = RigidBody("B", Bo, B, 0, (Dyadic(0), Bo))
+H_body = RigidBody("H", Ho, H, 0, (Dyadic(0), Ho))
+F_body = RigidBody("F", Fo, F, 0, (Dyadic(0), Fo))
+al.model.declare_bodies(R_body, B_body, H_body, F_body)
 # al> Points    P, S               % rear contact point, a point on the steer axis
 P, S = Point("P"), Point("S")
 al.model.declare_points(P, S)
 # al> %-----
 # al> % Q1, Q2: rear contact point; Q3 yaw; Q4 roll; Q5 rear frame pitch;
 # al> % Q6 rear wheel angle; Q7 steer angle; Q8 front wheel angle.
-Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = al.variables(  # al> Variables Q{8}'
-    "Q1'", "Q2'", "Q3'", "Q4'", "Q5'", "Q6'", "Q7'", "Q8'", line=16
-)
-U1, U2, U3, U4, U5, U6, U7, U8 = al.variables(  # al> Variables U{8}'
-    "U1'", "U2'", "U3'", "U4'", "U5'", "U6'", "U7'", "U8'", line=17
-)
+# al> Variables Q{8}'
+Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8 = dynamicsymbols("Q1 Q2 Q3 Q4 Q5 Q6 Q7 Q8", real=True)
+al.declare_variables(Q1, Q2, Q3, Q4, Q5, Q6, Q7, Q8, primes=1, line=16)
+# al> Variables U{8}'
+U1, U2, U3, U4, U5, U6, U7, U8 = dynamicsymbols("U1 U2 U3 U4 U5 U6 U7 U8", real=True)
+al.declare_variables(U1, U2, U3, U4, U5, U6, U7, U8, primes=1, line=17)
 # al> Constants W, C, LAM, G             % wheelbase, trail, steer axis tilt, gravity
 W, C, LAM, G = symbols("W C LAM G", real=True)
 al.declare_constants(W, C, LAM, G, line=18)
@@ -124,7 +126,8 @@ IHXX, IHYY, IHZZ, IHXZ = symbols("IHXX IHYY IHZZ IHXZ", real=True)
 al.declare_constants(IHXX, IHYY, IHZZ, IHXZ, line=23)
 # al> %-----
 # al> Mass    R=MR, B=MB, H=MH, F=MF
-MR, MB, MH, MF = al.constants("MR+", "MB+", "MH+", "MF+", line=25)
+MR, MB, MH, MF = symbols("MR MB MH MF", nonnegative=True)
+al.declare_constants(MR, MB, MH, MF, line=25)
 R_body.mass = MR
 B_body.mass = MB
 H_body.mass = MH
@@ -170,17 +173,17 @@ kd_eqs.append(al.kd(Eq(Q8.diff(t), U8), line=47))  # al> Q8' = U8
 # al> %-----
 Y.set_ang_vel(N, U3 * N.z)  # al> W_Y_N> = U3*N3>
 al.model.given_ang_vel(Y, N, line=49)
-L.set_ang_vel(N, al.model.ang_vel(Y, N) + U4 * Y.x)  # al> W_L_N> = W_Y_N> + U4*Y1>
+L.set_ang_vel(N, Y.ang_vel_in(N) + U4 * Y.x)  # al> W_L_N> = W_Y_N> + U4*Y1>
 al.model.given_ang_vel(L, N, line=50)
-B.set_ang_vel(N, al.model.ang_vel(L, N) + U5 * L.y)  # al> W_B_N> = W_L_N> + U5*L2>
+B.set_ang_vel(N, L.ang_vel_in(N) + U5 * L.y)  # al> W_B_N> = W_L_N> + U5*L2>
 al.model.given_ang_vel(B, N, line=51)
-R.set_ang_vel(N, al.model.ang_vel(B, N) + U6 * B.y)  # al> W_R_N> = W_B_N> + U6*B2>
+R.set_ang_vel(N, B.ang_vel_in(N) + U6 * B.y)  # al> W_R_N> = W_B_N> + U6*B2>
 al.model.given_ang_vel(R, N, line=52)
-E.set_ang_vel(N, al.model.ang_vel(B, N))  # al> W_E_N> = W_B_N>
+E.set_ang_vel(N, B.ang_vel_in(N))  # al> W_E_N> = W_B_N>
 al.model.given_ang_vel(E, N, line=53)
-H.set_ang_vel(N, al.model.ang_vel(B, N) + U7 * E.z)  # al> W_H_N> = W_B_N> + U7*E3>
+H.set_ang_vel(N, B.ang_vel_in(N) + U7 * E.z)  # al> W_H_N> = W_B_N> + U7*E3>
 al.model.given_ang_vel(H, N, line=54)
-F.set_ang_vel(N, al.model.ang_vel(H, N) + U8 * H.y)  # al> W_F_N> = W_H_N> + U8*H2>
+F.set_ang_vel(N, H.ang_vel_in(N) + U8 * H.y)  # al> W_F_N> = W_H_N> + U8*H2>
 al.model.given_ang_vel(F, N, line=55)
 # al> %-----
 Ro.set_pos(P, -RR * L.z)  # al> P_P_Ro> = -RR*L3>
@@ -195,28 +198,29 @@ al.model.given_pos(Ho, S, line=61)
 Fo.set_pos(S, -C * H.x - RF * H.z)  # al> P_S_Fo> = -C*H1> - RF*H3>
 al.model.given_pos(Fo, S, line=62)
 # al> DOWN> = Cross(H2>, Cross(N3>, H2>))
-DOWN_vec = al.assign("DOWN>", al.model.cross(H.y, al.model.cross(N.z, H.y)), line=63)
+DOWN_vec = al.assign_vector(DOWN=al.model.cross(H.y, al.model.cross(N.z, H.y)), line=63)
 # al> P_Fo_Q> = RF*UnitVec(DOWN>)
-P_Fo_Q_vec = al.assign("P_FO_Q>", RF * al.model.unitvec(DOWN_vec), line=64)
+P_Fo_Q_vec = al.assign_vector(P_FO_Q=RF * al.model.unitvec(DOWN_vec), line=64)
 # al> %-----
 P.set_vel(N, U1 * N.x + U2 * N.y)  # al> V_P_N> = U1*N1> + U2*N2>
 al.model.given_vel(P, N, line=66)
-al.model.v2pts(N, L, P, Ro, line=67)  # al> V2pts(N, L, P, Ro)
-al.model.v2pts(N, B, Ro, Bo, line=68)  # al> V2pts(N, B, Ro, Bo)
-al.model.v2pts(N, B, Ro, S, line=69)  # al> V2pts(N, B, Ro, S)
-al.model.v2pts(N, H, S, Ho, line=70)  # al> V2pts(N, H, S, Ho)
-al.model.v2pts(N, H, S, Fo, line=71)  # al> V2pts(N, H, S, Fo)
+Ro.v2pt_theory(P, N, L)  # al> V2pts(N, L, P, Ro)
+al.model.formed_vel(Ro, N, line=67)
+Bo.v2pt_theory(Ro, N, B)  # al> V2pts(N, B, Ro, Bo)
+al.model.formed_vel(Bo, N, line=68)
+S.v2pt_theory(Ro, N, B)  # al> V2pts(N, B, Ro, S)
+al.model.formed_vel(S, N, line=69)
+Ho.v2pt_theory(S, N, H)  # al> V2pts(N, H, S, Ho)
+al.model.formed_vel(Ho, N, line=70)
+Fo.v2pt_theory(S, N, H)  # al> V2pts(N, H, S, Fo)
+al.model.formed_vel(Fo, N, line=71)
 # al> %-----
 # al> % Rolling without slip: the wheels' material points at the contacts are at rest.
-SLIPR_vec = al.assign(  # al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
-    "SLIPR>",
-    al.model.vel(Ro, N) + al.model.cross(al.model.ang_vel(R, N), -al.model.pos(P, Ro)),
-    line=74,
+SLIPR_vec = al.assign_vector(  # al> SLIPR> = V_Ro_N> + Cross(W_R_N>, -P_P_Ro>)
+    SLIPR=Ro.vel(N) + al.model.cross(R.ang_vel_in(N), -Ro.pos_from(P)), line=74
 )
-SLIPF_vec = al.assign(  # al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
-    "SLIPF>",
-    al.model.vel(Fo, N) + al.model.cross(al.model.ang_vel(F, N), P_Fo_Q_vec),
-    line=75,
+SLIPF_vec = al.assign_vector(  # al> SLIPF> = V_Fo_N> + Cross(W_F_N>, P_Fo_Q>)
+    SLIPF=Fo.vel(N) + al.model.cross(F.ang_vel_in(N), P_Fo_Q_vec), line=75
 )
 # al> DEPENDENT[1] = Dot(SLIPR>, N1>)
 DEPENDENT = al.assign("DEPENDENT[1]", al.model.dot(SLIPR_vec, N.x), line=76)
@@ -233,7 +237,8 @@ al.model.constrain("DEPENDENT", [U1, U2, U3, U5, U8], line=81)
 # al> %-----
 # al> Gravity(G*N3>)
 loads = al.model.loads  # sympy Force/Torque loads
-al.model.gravity(G * N.z)
+loads += gravity(G * N.z, R_body, B_body, H_body, F_body)
+al.model.given_gravity(G * N.z)
 # al> Zero = Fr() + FrStar()
 Zero = al.assign("ZERO", al.model.fr() + al.model.frstar(), line=84)
 Zero = al.model.kane(line=85)  # al> Kane()
