@@ -238,13 +238,9 @@ _READY = object()
 
 
 def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
-    # Nodes are found by identity first (kept alive by ``seen``): sympy's
-    # structural ``==``, which a dict of nodes calls for equal nodes that
-    # are distinct objects, costs more than the walk.  Equal nodes share a
-    # slot all the same (``slots``).
+    # Nodes are keyed by themselves: a dict finds the same object by
+    # identity before it compares, and equal nodes share a slot.
     slots: dict[Any, int] = {}
-    by_id: dict[int, int] = {}
-    seen: list[Any] = []
     consts: list[tuple[int, float]] = []
     texts: list[str] = []
     leaves: list[int] = []
@@ -258,8 +254,7 @@ def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
         return count[0] - 1
 
     def put(e: Any, slot: int) -> None:
-        slots[e] = by_id[id(e)] = slot
-        seen.append(e)
+        slots[e] = slot
 
     def number(value: float, text: str) -> int:
         slot = new()
@@ -280,22 +275,17 @@ def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
         stack: list[tuple[Any, Any]] = [(root, None)]
         while stack:
             e, body = stack.pop()
-            if id(e) in by_id:
+            if e in slots:
                 continue
             if body is _READY:  # its arguments done
-                put(e, _operation(e, by_id, ops, names, new))
+                put(e, _operation(e, slots, ops, names, new))
                 continue
             if body is not None:  # an intermediate, its definition done
-                put(e, by_id[id(body)])
+                put(e, slots[body])
                 zs += 1
-                continue
-            found = slots.get(e)
-            if found is not None:
-                put(e, found)
                 continue
             if isinstance(e, Z):
                 body = e.book.definition(e)
-                seen.append(body)
                 stack.append((e, body))
                 stack.append((body, None))
                 continue
@@ -317,13 +307,13 @@ def _build(entries: list[Any], time: Any) -> tuple[Tape, list[Any]]:
             ):
                 leaf(e)
                 continue
-            missing = [(a, None) for a in args if id(a) not in by_id]
+            missing = [(a, None) for a in args if a not in slots]
             if missing:
                 stack.append((e, _READY))
                 stack.extend(missing)
                 continue
-            put(e, _operation(e, by_id, ops, names, new))
-        outs.append(by_id[id(root)])
+            put(e, _operation(e, slots, ops, names, new))
+        outs.append(slots[root])
     tape = Tape(count[0], consts, 0, leaves, ops, outs, names, texts, zs)
     return tape, params
 
@@ -337,12 +327,12 @@ def _text(e: Any) -> str:
     return f"{type(e).__name__}"  # pi, E, oo...
 
 
-def _operation(e: Any, by_id: dict, ops: list, names: list, new: Any) -> int:
-    """The operations of the node ``e``, whose arguments have slots (by
-    their ids); its result's slot."""
+def _operation(e: Any, slots: dict, ops: list, names: list, new: Any) -> int:
+    """The operations of the node ``e``, whose arguments have slots; its
+    result's slot."""
     if not isinstance(e, sp.Expr) or isinstance(e, sp.Derivative):
         raise Unsupported(type(e).__name__)
-    args = [by_id[id(a)] for a in e.args]
+    args = [slots[a] for a in e.args]
     if e.is_Add or e.is_Mul:
         # operator's functions: no Python frame per operation
         fn, name = (operator.add, "add") if e.is_Add else (operator.mul, "mul")
