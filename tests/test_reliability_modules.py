@@ -116,7 +116,7 @@ def test_run_outside_the_script_tree_is_a_located_error(tmp_path):
     assert "outside the script's folder and AUTOLEVPATH" in info.value.message
     # on AUTOLEVPATH it is allowed
     ok = convert(script.read_text(), str(script), autolevpath=str(tmp_path))
-    assert 'al.declare_constants(B, line=3)' in ok.code  # the RUN line
+    assert "al.declare_constants(B, line=3)" in ok.code  # the RUN line
 
 
 # ----------------------------- item 4: errors at conversion, never later

@@ -39,35 +39,35 @@ class _Printer(Remembering, FCodePrinter):
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
 
     def _print_Symbol(self, expr: Any) -> str:
-        # FCodePrinter._print_Symbol
-        if self._settings["name_mangling"] is True:
-            if expr not in self.mangled_symbols:
-                name = expr.name
-                while name.lower() in self._used_names:
-                    name += "_"
-                self.used_name.append(name.lower())
-                self._used_names.add(name.lower())
-                if name == expr.name:
-                    self.mangled_symbols[expr] = expr
-                else:
-                    self.mangled_symbols[expr] = sp.Symbol(name)
-            expr = expr.xreplace(self.mangled_symbols)
+        # FCodePrinter._print_Symbol, with its name_mangling setting on (the
+        # default, which this printer keeps)
+        if expr not in self.mangled_symbols:
+            name = expr.name
+            while name.lower() in self._used_names:
+                name += "_"
+            self.used_name.append(name.lower())
+            self._used_names.add(name.lower())
+            if name == expr.name:
+                self.mangled_symbols[expr] = expr
+            else:
+                self.mangled_symbols[expr] = sp.Symbol(name)
+        expr = expr.xreplace(self.mangled_symbols)
         return super(FCodePrinter, self)._print_Symbol(expr)
 
     def _print_Add(self, expr: Any) -> str:
         # FCodePrinter._print_Add: complex numbers apart
-        number = self._number
+        number = self.remembered_number
         for arg in expr.args:
             if number(arg) and not arg.is_real and arg.is_imaginary:
                 return super()._print_Add(expr)
-        return self._print_str_add(expr)
+        return self.print_ordered_add(expr)
 
     def _print_Mul(self, expr: Any) -> str:
         # FCodePrinter._print_Mul, then CodePrinter._print_Mul, with the
         # number tests, precedences and sort keys remembered
-        if self._number(expr) and expr.is_imaginary:
+        if self.remembered_number(expr) and expr.is_imaginary:
             return super()._print_Mul(expr)
-        prec = self._prec(expr)
+        prec = self.remembered_precedence(expr)
         c, e = expr.as_coeff_Mul()
         if c < 0:
             expr = _keep_coeff(-c, e)
@@ -80,7 +80,7 @@ class _Printer(Remembering, FCodePrinter):
         if self.order in ("old", "none"):
             args = sp.Mul.make_args(expr)
         else:
-            args = self._ordered_factors(expr)
+            args = self.remembered_factors(expr)
         for item in args:
             if (
                 item.is_commutative

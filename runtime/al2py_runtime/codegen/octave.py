@@ -33,19 +33,19 @@ class _Printer(Remembering, OctaveCodePrinter):
     :class:`.printers.Remembering`)."""
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
-        return self._print_str_add(expr, order)
+        return self.print_ordered_add(expr, order)
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
-        number = self._number
+        number = self.remembered_number
         if (
             number(expr)
             and expr.is_imaginary
             and (sp.S.ImaginaryUnit * expr).is_Integer
         ):
             return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
-        prec = self._prec(expr)
+        prec = self.remembered_precedence(expr)
         c, e = expr.as_coeff_Mul()
         if c < 0:
             expr = _keep_coeff(-c, e)
@@ -58,7 +58,7 @@ class _Printer(Remembering, OctaveCodePrinter):
         if self.order in ("old", "none"):
             args = sp.Mul.make_args(expr)
         else:
-            args = self._ordered_factors(expr)
+            args = self.remembered_factors(expr)
         for item in args:
             if (
                 item.is_commutative
@@ -103,9 +103,9 @@ class _Printer(Remembering, OctaveCodePrinter):
     def _print_Pow(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Pow with the number tests and precedences
         # remembered
-        number = self._number
+        number = self.remembered_number
         powsymbol = "^" if all(number(x) for x in expr.args) else ".^"
-        prec = self._prec(expr)
+        prec = self.remembered_precedence(expr)
         if equal_valued(expr.exp, 0.5):
             return f"sqrt({self._print(expr.base)})"
         if expr.is_commutative:

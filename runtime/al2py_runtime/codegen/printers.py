@@ -33,17 +33,17 @@ class Remembering:
         self._numbers: dict = {}
         self._precs: dict = {}
 
-    def _prec(self, item: Any) -> int:
+    def remembered_precedence(self, item: Any) -> int:
         found = self._precs.get(item)
         if found is None:
             found = self._precs[item] = backends.precedence_of(item)
         return found
 
-    def _number(self, item: Any) -> bool:
+    def remembered_number(self, item: Any) -> bool:
         return is_number_in(item, self._numbers)
 
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
-        prec = self._prec(item)
+        prec = self.remembered_precedence(item)
         if prec < level or (not strict and prec <= level):
             return f"({self._print(item)})"  # type: ignore[attr-defined]
         return self._print(item)  # type: ignore[attr-defined]
@@ -58,7 +58,7 @@ class Remembering:
             return super()._as_ordered_terms(expr, order)  # type: ignore[misc]
         return _ordered_terms(expr, self._keys, self._numbers)
 
-    def _ordered_factors(self, expr: Any) -> list:
+    def remembered_factors(self, expr: Any) -> list:
         """``expr.as_ordered_factors()``."""
         if not isinstance(expr, sp.Mul):
             return expr.as_ordered_factors()
@@ -67,10 +67,10 @@ class Remembering:
         cpart.sort(key=lambda x: sort_key_in(x, keys))
         return cpart + ncpart
 
-    def _print_str_add(self, expr: Any, order: Any = None) -> str:
+    def print_ordered_add(self, expr: Any, order: Any = None) -> str:
         """``StrPrinter._print_Add``."""
         terms = self._as_ordered_terms(expr, order=order)
-        prec = self._prec(expr)
+        prec = self.remembered_precedence(expr)
         out = []
         for term in terms:
             t = self._print(term)  # type: ignore[attr-defined]
@@ -79,7 +79,7 @@ class Remembering:
                 t = t[1:]
             else:
                 sign = "+"
-            if self._prec(term) < prec or term.is_Add:
+            if self.remembered_precedence(term) < prec or term.is_Add:
                 out.extend([sign, f"({t})"])
             else:
                 out.extend([sign, t])
