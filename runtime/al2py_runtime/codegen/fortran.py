@@ -11,9 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import sympy as sp
-from sympy.core.mul import _keep_coeff
 from sympy.printing.fortran import FCodePrinter
-from sympy.printing.precedence import PRECEDENCE
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
@@ -67,50 +65,14 @@ class _Printer(Remembering, FCodePrinter):
         # number tests, precedences and sort keys remembered
         if self.remembered_number(expr) and expr.is_imaginary:
             return super()._print_Mul(expr)
-        prec = self.remembered_precedence(expr)
-        c, e = expr.as_coeff_Mul()
-        if c < 0:
-            expr = _keep_coeff(-c, e)
-            sign = "-"
-        else:
-            sign = ""
-        a: list = []  # the numerator's factors
-        b: list = []  # the denominator's
-        pow_paren = []  # powers -1 of products of more than one factor
         if self.order in ("old", "none"):
-            args = sp.Mul.make_args(expr)
+            factors = sp.Mul.make_args
         else:
-            args = self.remembered_factors(expr)
-        for item in args:
-            if (
-                item.is_commutative
-                and item.is_Pow
-                and item.exp.is_Rational
-                and item.exp.is_negative
-            ):
-                if item.exp != -1:
-                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
-                else:
-                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
-                        pow_paren.append(item)
-                    b.append(sp.Pow(item.base, -item.exp))
-            else:
-                a.append(item)
-        a = a or [sp.S.One]
-        if len(a) == 1 and sign == "-":
-            level = 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"])
-            a_str = [self.parenthesize(a[0], level)]  # type: ignore[arg-type]
-        else:
-            a_str = [self.parenthesize(x, prec) for x in a]
-        b_str = [self.parenthesize(x, prec) for x in b]
-        for item in pow_paren:
-            if item.base in b:
-                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
-        if not b:
-            return sign + "*".join(a_str)
-        if len(b) == 1:
-            return sign + "*".join(a_str) + "/" + b_str[0]
-        return sign + "*".join(a_str) + "/({})".format("*".join(b_str))
+            factors = self.remembered_factors
+        sign, a_str, b_str = backends.product_parts(
+            self, expr, self.remembered_precedence(expr), factors
+        )[::2]
+        return backends.join_product(sign, a_str, b_str)
 
 
 def _d(x: float) -> str:

@@ -9,10 +9,10 @@ import textwrap
 from typing import Any
 
 import sympy as sp
-from sympy.core.mul import _keep_coeff
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
 
+from ..jobs import backends
 from ..jobs.run import NumericsError
 from .printers import Remembering
 from .program import Assign, Program, one_based_target
@@ -45,46 +45,18 @@ class _Printer(Remembering, OctaveCodePrinter):
             and (sp.S.ImaginaryUnit * expr).is_Integer
         ):
             return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
-        prec = self.remembered_precedence(expr)
-        c, e = expr.as_coeff_Mul()
-        if c < 0:
-            expr = _keep_coeff(-c, e)
-            sign = "-"
-        else:
-            sign = ""
-        a: list = []  # the numerator's factors
-        b: list = []  # the denominator's
-        pow_paren = []  # powers -1 of products of more than one factor
         if self.order in ("old", "none"):
-            args = sp.Mul.make_args(expr)
+            factors = sp.Mul.make_args
         else:
-            args = self.remembered_factors(expr)
-        for item in args:
-            if (
-                item.is_commutative
-                and item.is_Pow
-                and item.exp.is_Rational
-                and item.exp.is_negative
-            ):
-                if item.exp != -1:
-                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
-                else:
-                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
-                        pow_paren.append(item)
-                    b.append(sp.Pow(item.base, -item.exp))
-            elif item.is_Rational and item is not sp.S.Infinity:
-                if item.p != 1:
-                    a.append(sp.Rational(item.p))
-                if item.q != 1:
-                    b.append(sp.Rational(item.q))
-            else:
-                a.append(item)
-        a = a or [sp.S.One]
-        a_str = [self.parenthesize(x, prec) for x in a]
-        b_str = [self.parenthesize(x, prec) for x in b]
-        for item in pow_paren:
-            if item.base in b:
-                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
+            factors = self.remembered_factors
+        sign, a, a_str, b, b_str = backends.product_parts(
+            self,
+            expr,
+            self.remembered_precedence(expr),
+            factors,
+            rationals=True,
+            lone_minus=False,
+        )
 
         def multjoin(a: list, a_str: list) -> str:
             r = a_str[0]

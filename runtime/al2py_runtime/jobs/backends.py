@@ -661,46 +661,10 @@ class CPrinter(C99CodePrinter):
         # their own order) with precedences kept per class
         if expr in self.math_macros:
             return super()._print_Mul(expr, **kwargs)
-        prec = _precedence(expr)
-        c, e = expr.as_coeff_Mul()
-        if c < 0:
-            expr = _keep_coeff(-c, e)
-            sign = "-"
-        else:
-            sign = ""
-        a: list = []  # the numerator's factors
-        b: list = []  # the denominator's
-        pow_paren = []  # powers -1 of products of more than one factor
-        for item in sp.Mul.make_args(expr):
-            if (
-                item.is_commutative
-                and item.is_Pow
-                and item.exp.is_Rational
-                and item.exp.is_negative
-            ):
-                if item.exp != -1:
-                    b.append(sp.Pow(item.base, -item.exp, evaluate=False))
-                else:
-                    if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
-                        pow_paren.append(item)
-                    b.append(sp.Pow(item.base, -item.exp))
-            else:
-                a.append(item)
-        a = a or [sp.S.One]
-        if len(a) == 1 and sign == "-":
-            level = 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"])
-            a_str = [self.parenthesize(a[0], level)]  # type: ignore[arg-type]
-        else:
-            a_str = [self.parenthesize(x, prec) for x in a]
-        b_str = [self.parenthesize(x, prec) for x in b]
-        for item in pow_paren:
-            if item.base in b:
-                b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
-        if not b:
-            return sign + "*".join(a_str)
-        if len(b) == 1:
-            return sign + "*".join(a_str) + "/" + b_str[0]
-        return sign + "*".join(a_str) + "/({})".format("*".join(b_str))
+        sign, a_str, b_str = product_parts(
+            self, expr, _precedence(expr), sp.Mul.make_args
+        )[::2]
+        return join_product(sign, a_str, b_str)
 
     def _print_Pi(self, expr: Any) -> str:
         return repr(math.pi)
@@ -763,6 +727,74 @@ _PRECEDENCE: dict[type, int] = {}
 def precedence_of(item: Any) -> int:
     """sympy's ``precedence(item)``, kept per class where it can be."""
     return _precedence(item)
+
+
+def product_parts(
+    printer: Any,
+    expr: Any,
+    prec: int,
+    factors: Callable[[Any], Sequence[Any]],
+    *,
+    rationals: bool = False,
+    lone_minus: bool = True,
+) -> tuple[str, list, list, list, list]:
+    """``CodePrinter._print_Mul``'s split of a product, shared by the C,
+    Fortran and MATLAB printers: ``(sign, numerator factors, their texts,
+    denominator factors, their texts)``.
+
+    ``factors`` orders the factors of the product without its sign;
+    ``rationals`` puts a rational's denominator below the line (MATLAB);
+    ``lone_minus`` parenthesizes a single negated factor as a power's level
+    (C, Fortran)."""
+    c, e = expr.as_coeff_Mul()
+    if c < 0:
+        expr = _keep_coeff(-c, e)
+        sign = "-"
+    else:
+        sign = ""
+    a: list = []  # the numerator's factors
+    b: list = []  # the denominator's
+    pow_paren = []  # powers -1 of products of more than one factor
+    for item in factors(expr):
+        if (
+            item.is_commutative
+            and item.is_Pow
+            and item.exp.is_Rational
+            and item.exp.is_negative
+        ):
+            if item.exp != -1:
+                b.append(sp.Pow(item.base, -item.exp, evaluate=False))
+            else:
+                if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
+                    pow_paren.append(item)
+                b.append(sp.Pow(item.base, -item.exp))
+        elif rationals and item.is_Rational and item is not sp.S.Infinity:
+            if item.p != 1:
+                a.append(sp.Rational(item.p))
+            if item.q != 1:
+                b.append(sp.Rational(item.q))
+        else:
+            a.append(item)
+    a = a or [sp.S.One]
+    if lone_minus and len(a) == 1 and sign == "-":
+        level = 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"])
+        a_str = [printer.parenthesize(a[0], level)]
+    else:
+        a_str = [printer.parenthesize(x, prec) for x in a]
+    b_str = [printer.parenthesize(x, prec) for x in b]
+    for item in pow_paren:
+        if item.base in b:
+            b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
+    return sign, a, a_str, b, b_str
+
+
+def join_product(sign: str, a_str: list, b_str: list) -> str:
+    """A product's text from :func:`product_parts` (C and Fortran)."""
+    if not b_str:
+        return sign + "*".join(a_str)
+    if len(b_str) == 1:
+        return sign + "*".join(a_str) + "/" + b_str[0]
+    return sign + "*".join(a_str) + "/({})".format("*".join(b_str))
 
 
 def _precedence(item: Any) -> int:
