@@ -70,23 +70,9 @@ class Remembering:
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
         """``StrPrinter._print_Add``."""
         terms = self._as_ordered_terms(expr, order=order)
-        prec = self.remembered_precedence(expr)
-        out = []
-        for term in terms:
-            t = self._print(term)  # type: ignore[attr-defined]
-            if t.startswith("-") and not term.is_Add:
-                sign = "-"
-                t = t[1:]
-            else:
-                sign = "+"
-            if self.remembered_precedence(term) < prec or term.is_Add:
-                out.extend([sign, f"({t})"])
-            else:
-                out.extend([sign, t])
-        sign = out.pop(0)
-        if sign == "+":
-            sign = ""
-        return sign + " ".join(out)
+        return backends.join_sum(
+            self, terms, self.remembered_precedence(expr), self.remembered_precedence
+        )
 
 
 def _complex(x: Any, memo: dict) -> complex:

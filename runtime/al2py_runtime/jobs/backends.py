@@ -638,23 +638,7 @@ class CPrinter(C99CodePrinter):
         # StrPrinter._print_Add (terms in their own order) with precedences
         # kept per class: sympy's precedence() of a product forms its
         # negative to compare (a third of printing a large model)
-        prec = _precedence(expr)
-        out = []
-        for term in expr.args:
-            t = self._print(term)
-            if t.startswith("-") and not term.is_Add:
-                sign = "-"
-                t = t[1:]
-            else:
-                sign = "+"
-            if _precedence(term) < prec or term.is_Add:
-                out.extend([sign, f"({t})"])
-            else:
-                out.extend([sign, t])
-        sign = out.pop(0)
-        if sign == "+":
-            sign = ""
-        return sign + " ".join(out)
+        return join_sum(self, expr.args, _precedence(expr), _precedence)
 
     def _print_Mul(self, expr: Any, **kwargs: Any) -> str:
         # C89CodePrinter._print_Mul: CodePrinter._print_Mul (factors in
@@ -786,6 +770,30 @@ def product_parts(
         if item.base in b:
             b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
     return sign, a, a_str, b, b_str
+
+
+def join_sum(
+    printer: Any, terms: Iterable[Any], prec: int, precedence: Callable[[Any], int]
+) -> str:
+    """``StrPrinter._print_Add``'s text of a sum of ``terms`` in that order,
+    with ``precedence`` the printer's (shared by the C, Fortran and MATLAB
+    printers)."""
+    out = []
+    for term in terms:
+        t = printer._print(term)
+        if t.startswith("-") and not term.is_Add:
+            sign = "-"
+            t = t[1:]
+        else:
+            sign = "+"
+        if precedence(term) < prec or term.is_Add:
+            out.extend([sign, f"({t})"])
+        else:
+            out.extend([sign, t])
+    sign = out.pop(0)
+    if sign == "+":
+        sign = ""
+    return sign + " ".join(out)
 
 
 def join_product(sign: str, a_str: list, b_str: list) -> str:
