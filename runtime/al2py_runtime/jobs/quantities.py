@@ -310,6 +310,27 @@ def split_given(job: Job, given: Mapping[str, Any]) -> tuple[dict, dict]:
     return settable, free
 
 
+def _entries(
+    job: Job, value: Any, free: frozenset[str]
+) -> tuple[list, tuple[int, ...], list]:
+    """``(drop, shape, entries)`` of a quantity: the objects of the names
+    given directly (their right-hand sides are not substituted), its shape
+    (``()`` for a scalar) and its entries in order."""
+    drop = [obj for key, (_kind, obj) in job.entries.items() if key in free]
+    if isinstance(value, sp.MatrixBase):
+        return drop, tuple(value.shape), list(value)
+    return drop, (), [value]
+
+
+def _labelled(job: Job, params: Sequence[Any]) -> tuple[list, list]:
+    """``(labels, kinds)`` of a quantity's parameters, in order."""
+    from .run import label_of
+
+    labels = [label_of(obj, job.names) for obj in params]
+    kinds = [_kind(job, o, label) for o, label in zip(params, labels, strict=True)]
+    return labels, kinds
+
+
 def compile_quantity(
     job: Job,
     value: Any,
@@ -322,17 +343,11 @@ def compile_quantity(
     of its parameters.  The right-hand sides in force are substituted but
     those of the names in ``free`` (given directly) and of the constants in
     ``keep`` (whose Input replaces the value the script gave)."""
-    from .run import label_of, numeric_entries
+    from .run import numeric_entries
 
-    drop = [obj for key, (_kind, obj) in job.entries.items() if key in free]
-    if isinstance(value, sp.MatrixBase):
-        shape: tuple[int, ...] = tuple(value.shape)
-        entries = list(value)
-    else:
-        shape, entries = (), [value]
+    drop, shape, entries = _entries(job, value, free)
     made = numeric_entries(job, entries, [*drop, *keep], name)
-    labels = [label_of(obj, job.names) for obj in made.params]
-    kinds = [_kind(job, o, label) for o, label in zip(made.params, labels, strict=True)]
+    labels, kinds = _labelled(job, made.params)
     kernel = build_kernel(
         made.time, made.dummies, made.exprs, made.intermediates, backend
     )
@@ -418,15 +433,10 @@ def tape_quantity(
     node the tape does not take."""
     from ..intermediates import autoz
     from .fingerprint import collector_paused
-    from .run import label_of, resolved_entries, t
+    from .run import resolved_entries, t
     from .tape import TapeKernel, build_tape
 
-    drop = [obj for key, (_kind, obj) in job.entries.items() if key in free]
-    if isinstance(value, sp.MatrixBase):
-        shape: tuple[int, ...] = tuple(value.shape)
-        entries = list(value)
-    else:
-        shape, entries = (), [value]
+    drop, shape, entries = _entries(job, value, free)
     exprs = []
     with collector_paused():
         for e in resolved_entries(job, entries, [*drop, *keep]):
@@ -436,8 +446,7 @@ def tape_quantity(
     if made is None:
         return None
     tape, objs = made
-    labels = [label_of(obj, job.names) for obj in objs]
-    kinds = [_kind(job, o, label) for o, label in zip(objs, labels, strict=True)]
+    labels, kinds = _labelled(job, objs)
     kernel = TapeKernel(tape, len(objs), len(exprs))
     return CompiledQuantity(
         name, shape, labels, kinds, kernel, origin="numpy"  # type: ignore[arg-type]
