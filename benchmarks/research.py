@@ -268,30 +268,16 @@ def main() -> None:
     rows.append(("sweep eigenvalues vs Table 2 at 4, 5, 10 m/s", f"{worst:.1e}", ""))
 
     # ------------------------------------------- fresh processes (a user's)
-    empty = fresh_turns(
-        folder,
-        args.turns,
-        {
-            "new": NEW_SWEEP,
-            "old": OLD_SWEEP,
-            "new_e": NEW_EVALUATE,
-            "old_e": OLD_EVALUATE,
-        },
-        None,
-    )
+    timed = {
+        "new": NEW_SWEEP,
+        "old": OLD_SWEEP,
+        "new_e": NEW_EVALUATE,
+        "old_e": OLD_EVALUATE,
+    }
+    empty = fresh_turns(folder, args.turns, timed, None)
     warm_dir = Path(tempfile.mkdtemp(prefix="al2py_cache_"))
     in_fresh_process(folder, "whipple_linear", NEW_EVALUATE, warm_dir)  # warms
-    warm = fresh_turns(
-        folder,
-        args.turns,
-        {
-            "new": NEW_SWEEP,
-            "old": OLD_SWEEP,
-            "new_e": NEW_EVALUATE,
-            "old_e": OLD_EVALUATE,
-        },
-        warm_dir,
-    )
+    warm = fresh_turns(folder, args.turns, timed, warm_dir)
     for label, got in (("empty cache", empty), ("warm disk cache", warm)):
         rows.append(
             (
