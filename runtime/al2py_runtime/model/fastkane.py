@@ -34,6 +34,7 @@ substituted.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -169,6 +170,34 @@ def named_dcm(
     return out
 
 
+#: book -> ((expression, xs, book.rates, book.exclude) -> the expression's
+#: ``linear_terms`` in ``xs`` after :meth:`Intermediates.name_linear`).
+#: Naming is a function of the expression once the book has named it (an
+#: intermediate is never unnamed), given the book's ``rates`` and ``exclude``,
+#: so a measure number split again -- the same velocity for ``Fr()``'s
+#: partial velocities and ``FrStar()``'s linear forms, two loads at one
+#: point, a velocity formed again from the same terms -- is answered with
+#: the same result, and no intermediate is made again.
+_SPLITS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _split_named(
+    expr: Any, xs: tuple, book: Intermediates
+) -> tuple[list[Any], Any] | None:
+    """``linear_terms(book.name_linear(expr, xs), xs)``, once per book for
+    each expression (see :data:`_SPLITS`)."""
+    memo = _SPLITS.get(book)
+    if memo is None:
+        memo = _SPLITS[book] = {}
+    key = (expr, xs, book.rates, book.exclude)
+    try:
+        return memo[key]
+    except KeyError:
+        pass
+    found = memo[key] = linear_terms(book.name_linear(expr, xs), xs)
+    return found
+
+
 def measure_split(
     vec: Vector,
     frame: ReferenceFrame,
@@ -191,6 +220,7 @@ def measure_split(
     >>> measure_split(u * a.x + n.y, n, [u], Intermediates())
     [([cos(q(t))], 0), ([sin(q(t))], 1), ([0], 0)]
     """
+    xs = tuple(xs)
     terms: list[tuple[list[list[Any]], list[Any]]] = [
         ([[] for _ in xs], []) for _ in range(3)
     ]
@@ -199,7 +229,7 @@ def measure_split(
         for k in range(3):
             if comps[k] == 0:
                 continue
-            split = linear_terms(book.name_linear(comps[k], xs), xs)
+            split = _split_named(comps[k], xs, book)
             if split is None:
                 return None
             for i in range(3):

@@ -42,6 +42,7 @@ from .energy import Energy
 from .equations import KaneEquations
 from .objects import Objects
 from .points import Kinematics
+from .resolutions import Resolutions
 from .script import ScriptNames
 from .speeds import Speeds
 from .state import ModelState
@@ -81,6 +82,9 @@ class Model(
         #: The model's state: frames, points, bodies, loads, speeds (shared by
         #: the parts; read by :mod:`.kane` to build ``KanesMethod``'s inputs).
         self.registry = ModelState()
+        #: the right-hand sides' substitutions made so far (while the
+        #: right-hand sides stay the same)
+        self.resolutions = Resolutions(script, table)
 
 
 #: The commands a :class:`Model` answers (``al.model.simprot``,

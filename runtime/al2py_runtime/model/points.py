@@ -71,8 +71,7 @@ class Kinematics(ModelPart):
 
     def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
-        keep = list(keep)
-        return kin.vmap(x, self.script.resolver(keep))
+        return kin.vmap(x, self.resolutions.resolver(keep))
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is

@@ -15,6 +15,7 @@ from ..safety import Statements, statement
 if TYPE_CHECKING:
     from ..names.settings import Settings
     from ..names.table import NameTable
+    from .resolutions import Resolutions
     from .script import ScriptNames
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -121,6 +122,8 @@ class ModelPart:
     #: quantities constrained to unit norm (Euler parameters), for
     #: ``al2py check``'s random points
     unit_norms: list[tuple[Any, ...]]
+    #: the script's resolvers, remembered while its right-hand sides stay
+    resolutions: Resolutions
 
 
 def _resultants(loads: list, kind: type) -> dict:
