@@ -255,7 +255,7 @@ class Objects(ModelPart):
         ...``): the inertia as Autolev keeps it (about the mass center, in
         B's basis, each scalar normalized)."""
         frame = body.frame
-        m = body.central_inertia.to_matrix(frame)
+        m = kin.dyadic_matrix(body.central_inertia, frame)
         return self.set_inertia(
             frame, m[0, 0], m[1, 1], m[2, 2], m[0, 1], m[1, 2], m[2, 0]
         )
