@@ -179,6 +179,11 @@ def named_dcm(
 #: point, a velocity formed again from the same terms -- is answered with
 #: the same result, and no intermediate is made again.
 _SPLITS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+#: book -> (a vector's components with their direction cosines, xs,
+#: book.rates, book.exclude) -> :func:`measure_split`'s answer (the same
+#: rule: nothing is named again)
+_VECTORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_NONE = object()
 
 
 def _split_named(
@@ -221,6 +226,35 @@ def measure_split(
     [([cos(q(t))], 0), ([sin(q(t))], 1), ([0], 0)]
     """
     xs = tuple(xs)
+    if dcm is not _sympy_dcm:  # it may name (in turn with the components)
+        return _measure_split(vec, frame, xs, book, dcm)
+    # sympy's direction cosines name nothing: the same vector split again
+    # (Fr()'s partial velocities and FrStar()'s linear forms of one
+    # velocity) has the same answer, and nothing to name
+    try:
+        cosines = {f: frame.dcm(f) for _, f in vec.args}
+    except ValueError:  # frames not connected: raised in turn, as it is met
+        return _measure_split(vec, frame, xs, book, dcm)
+    memo = _VECTORS.get(book)
+    if memo is None:
+        memo = _VECTORS[book] = {}
+    key = (
+        tuple((tuple(comps), f, tuple(cosines[f])) for comps, f in vec.args),
+        xs,
+        book.rates,
+        book.exclude,
+    )
+    found = memo.get(key, _NONE)
+    if found is _NONE:
+        found = _measure_split(vec, frame, xs, book, lambda _, f: cosines[f])
+        memo[key] = found
+    return None if found is None else [(list(c), r) for c, r in found]
+
+
+def _measure_split(
+    vec: Vector, frame: ReferenceFrame, xs: tuple, book: Intermediates, dcm: Dcm
+) -> list[tuple[list[Any], Any]] | None:
+    """:func:`measure_split`, formed."""
     terms: list[tuple[list[list[Any]], list[Any]]] = [
         ([[] for _ in xs], []) for _ in range(3)
     ]
