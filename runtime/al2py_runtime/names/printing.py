@@ -118,6 +118,8 @@ class _AutolevPrinter:
         if not 1 <= digits <= 17:
             raise ValueError(f"digits must be between 1 and 17, not {digits}")
         self.digits = digits
+        #: printed forms already made, while :func:`shared_keys` is in force
+        self.shown = _SHOWN[-1].setdefault(digits, {}) if _SHOWN else None
 
     # ------------------------------------------------------------ dispatch
 
@@ -132,6 +134,17 @@ class _AutolevPrinter:
     def show(self, expr: Any, top: bool) -> tuple[str, int]:
         if isinstance(expr, sp.MatrixBase):
             return self.matrix(expr), _ATOM
+        memo = self.shown
+        if memo is not None and isinstance(expr, sp.Basic):
+            key = (expr, top)
+            found = memo.get(key)
+            if found is None:
+                found = memo[key] = self.form(expr, top)
+            return found
+        return self.form(expr, top)
+
+    def form(self, expr: Any, top: bool) -> tuple[str, int]:
+        """``show`` without the memo."""
         if not isinstance(expr, sp.Basic):
             try:
                 expr = sp.sympify(expr)
@@ -364,6 +377,8 @@ _KEYS: list[dict] = []
 #: and which subexpressions are numbers (sympy's ``is_number`` walks the
 #: whole subtree again at each node the printer visits)
 _NUMBERS: list[dict] = []
+#: and each subexpression's printed form, by number of digits
+_SHOWN: list[dict] = []
 
 
 @contextlib.contextmanager
@@ -374,11 +389,13 @@ def shared_keys() -> Iterator[None]:
     which subexpressions are numbers."""
     _KEYS.append({})
     _NUMBERS.append({})
+    _SHOWN.append({})
     try:
         yield
     finally:
         _KEYS.pop()
         _NUMBERS.pop()
+        _SHOWN.pop()
 
 
 _EXPR_IS_NUMBER = sp.Expr.is_number
@@ -407,37 +424,63 @@ def _number_in(expr: Any, memo: dict) -> bool:
 
 def _sort_key(expr: Any, memo: dict) -> tuple:
     """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
-    per ``memo`` (sympy's ``Expr.sort_key``, written with the memo)."""
+    per ``memo`` (sympy's ``Expr.sort_key``, written with the memo; a
+    product's key is read off its arguments, without forming the product
+    after its coefficient as sympy's ``as_coeff_Mul`` does)."""
     key = memo.get(expr)
     if key is not None:
         return key
     if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
         key = sp.default_sort_key(expr)
+        memo[expr] = key
+        return key
+    if expr.is_Mul:
+        args = expr.args
+        coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
+        if len(factors) > 1 and _plain_factors(factors):
+            keys = sorted([_sort_key(f, memo) for f in factors])
+            key = (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
+            memo[expr] = key
+            return key
+    coeff, rest = expr.as_coeff_Mul()
+    exp = sp.S.One
+    if rest.is_Pow:
+        base, exp = rest.as_base_exp()
+        if base is sp.S.Exp1:  # as sympy: E**x sorts as exp(x)
+            base, exp = sp.Function("exp")(exp), sp.S.One
+        rest = base
+    if rest.is_Dummy:
+        args = (rest.sort_key(),)
+    elif rest.is_Atom:
+        args = (str(rest),)
     else:
-        coeff, rest = expr.as_coeff_Mul()
-        exp = sp.S.One
-        if rest.is_Pow:
-            base, exp = rest.as_base_exp()
-            if base is sp.S.Exp1:  # as sympy: E**x sorts as exp(x)
-                base, exp = sp.Function("exp")(exp), sp.S.One
-            rest = base
-        if rest.is_Dummy:
-            args: tuple = (rest.sort_key(),)
-        elif rest.is_Atom:
-            args = (str(rest),)
+        if rest.is_Add:
+            parts = rest.as_ordered_terms()
+        elif rest.is_Mul:
+            cpart, ncpart = rest.args_cnc()
+            cpart.sort(key=lambda e: _sort_key(e, memo))
+            parts = cpart + ncpart
         else:
-            if rest.is_Add:
-                parts = rest.as_ordered_terms()
-            elif rest.is_Mul:
-                cpart, ncpart = rest.args_cnc()
-                cpart.sort(key=lambda e: _sort_key(e, memo))
-                parts = cpart + ncpart
-            else:
-                parts = rest.args
-            args = tuple([_sort_key(a, memo) for a in parts])
-        key = (rest.class_key(), (len(args), args), _sort_key(exp, memo), coeff)
+            parts = rest.args
+        args = tuple([_sort_key(a, memo) for a in parts])
+    key = (rest.class_key(), (len(args), args), _sort_key(exp, memo), coeff)
     memo[expr] = key
     return key
+
+
+def _plain_factors(factors: tuple) -> bool:
+    """No number among ``factors`` (a canonical product has at most one, its
+    first argument) and all commutative: the factors sympy's
+    ``args_cnc`` gives back as they are."""
+    for f in factors:
+        if f.is_Number or not f.is_commutative:
+            return False
+    return True
+
+
+_ONE = sp.S.One
+_ONE_KEY = sp.S.One.sort_key()
+_MUL_KEY = sp.Mul.class_key()
 
 
 _EXPR_SORT_KEY = sp.Expr.sort_key
@@ -477,13 +520,21 @@ def _term_key(term: sp.Expr) -> tuple:
         _, exp = factor.as_base_exp()
         power = int(exp) if exp.is_Integer else 0
         degree += power if power > 0 else 1
+    memo = _KEYS[-1] if _KEYS else {}
     if len(factors) == len(args):  # the term itself (no numbers to drop)
         rest = term if len(args) > 1 else factors[0]
     elif len(factors) < 2:
         rest = factors[0] if factors else sp.S.One
+    elif _plain_factors(factors):  # the key of their product, not formed
+        keys = sorted([_sort_key(f, memo) for f in factors])
+        return (
+            degree,
+            len(factors),
+            (_MUL_KEY, (len(keys), tuple(keys)), _ONE_KEY, _ONE),
+        )
     else:  # a canonical product's factors stay canonical without the numbers
         rest = sp.Mul._from_args(factors)
-    return (degree, len(factors), _default_sort_key(rest))
+    return (degree, len(factors), _sort_key(rest, memo))
 
 
 # ------------------------------------------------------- vectors, dyadics
