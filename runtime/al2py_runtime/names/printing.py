@@ -118,8 +118,16 @@ class _AutolevPrinter:
         if not 1 <= digits <= 17:
             raise ValueError(f"digits must be between 1 and 17, not {digits}")
         self.digits = digits
-        #: printed forms already made, while :func:`shared_keys` is in force
-        self.shown = _SHOWN[-1].setdefault(digits, {}) if _SHOWN else None
+        # what is already known of each subexpression: shared by every value
+        # printed while :func:`shared_keys` is in force, else this printer's
+        memos = _SHARED[-1] if _SHARED else _Memos()
+        self.keys = memos.keys
+        self.numbers = memos.numbers
+        #: printed forms, by ``(id(expr), top)``: ``(expr, (text, precedence))``
+        self.shown = memos.shown.setdefault(digits, {})
+        self.coefficients = memos.coefficients.setdefault(digits, {})
+        self.negative = memos.negative
+        self.negations = memos.negations
 
     # ------------------------------------------------------------ dispatch
 
@@ -132,16 +140,18 @@ class _AutolevPrinter:
         return f"({text})" if prec < level else text
 
     def show(self, expr: Any, top: bool) -> tuple[str, int]:
+        """``(text, precedence)`` of ``expr``, each subexpression's formed
+        once (the same object is found by identity; the reference kept
+        beside it keeps its ``id`` from being reused)."""
+        key = (id(expr), top)
+        found = self.shown.get(key)
+        if found is not None:
+            return found[1]
         if isinstance(expr, sp.MatrixBase):
             return self.matrix(expr), _ATOM
-        memo = self.shown
-        if memo is not None and isinstance(expr, sp.Basic):
-            key = (expr, top)
-            found = memo.get(key)
-            if found is None:
-                found = memo[key] = self.form(expr, top)
-            return found
-        return self.form(expr, top)
+        shown = self.form(expr, top)
+        self.shown[key] = (expr, shown)
+        return shown
 
     def form(self, expr: Any, top: bool) -> tuple[str, int]:
         """``show`` without the memo."""
@@ -152,7 +162,7 @@ class _AutolevPrinter:
                 return str(expr), _ATOM
         if (
             isinstance(expr, sp.Expr)
-            and _is_number(expr)
+            and self.is_number(expr)
             and not expr.has(AppliedUndef)
         ):
             return self.number(expr, top)
@@ -222,9 +232,13 @@ class _AutolevPrinter:
     # ---------------------------------------------------------------- sums
 
     def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
-        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
-        others = [a for a in expr.args if a not in numeric]
-        terms = sorted(others, key=_term_key)
+        numeric, others = [], []
+        for a in expr.args:
+            if self.is_number(a) and not a.has(AppliedUndef):
+                numeric.append(a)
+            else:
+                others.append(a)
+        terms = sorted(others, key=self.term_key)
         if numeric:
             const = sp.Add(*numeric)
             if const != 0:
@@ -246,23 +260,23 @@ class _AutolevPrinter:
     # ------------------------------------------------------------ products
 
     def mul(self, expr: sp.Mul) -> tuple[str, int]:
-        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
-        coeff = sp.Mul(*numeric)
-        num, den = [], []
+        numeric, num, den = [], [], []
         for factor in expr.args:
-            if factor in numeric:
+            if self.is_number(factor) and not factor.has(AppliedUndef):
+                numeric.append(factor)
                 continue
             base, exp = factor.as_base_exp()
             if exp.is_number and exp.is_extended_negative and not factor.is_Function:
                 den.append(sp.Pow(base, -exp))
             else:
                 num.append(factor)
+        coeff = numeric[0] if len(numeric) == 1 else sp.Mul(*numeric)
         num, flips = self.flip_signs(num)
         den, flips_den = self.flip_signs(den)
         if (flips + flips_den) % 2:
             coeff = -coeff
-        num.sort(key=_factor_key)
-        den.sort(key=_factor_key)
+        num.sort(key=self.factor_key)
+        den.sort(key=self.factor_key)
         sign, coeff_text = self.coefficient(coeff)
         parts = [self.paren(f, _MUL) for f in num]
         if coeff_text:
@@ -280,18 +294,25 @@ class _AutolevPrinter:
         """Negate sums that would print with a leading minus: ``-(B-D)/A``."""
         out, flips = [], 0
         for factor in factors:
-            if isinstance(factor, sp.Add) and _leading_negative(factor):
-                factor = sp.Add(*[-a for a in factor.args])
+            if isinstance(factor, sp.Add) and self.leading_negative(factor):
+                factor = self.negated(factor)
                 flips += 1
             out.append(factor)
         return out, flips
 
     def coefficient(self, coeff: sp.Expr) -> tuple[str, str]:
         """Split a numeric coefficient into its sign and magnitude text."""
-        if coeff == 1:
+        if coeff is _ONE or coeff == 1:
             return "", ""
-        if coeff == -1:
+        if coeff is _MINUS_ONE or coeff == -1:
             return "-", ""
+        found = self.coefficients.get(coeff)
+        if found is None:
+            found = self.coefficients[coeff] = self.split_coefficient(coeff)
+        return found
+
+    def split_coefficient(self, coeff: sp.Expr) -> tuple[str, str]:
+        """:meth:`coefficient` of a number other than 1 and -1."""
         value = coeff.evalf(self.digits + 10)
         re, im = value.as_real_imag()
         if im == 0 and re.is_number:
@@ -349,6 +370,74 @@ class _AutolevPrinter:
             return f"{label}({self.text(args[0])}, {self.function(head)})"
         return f"{label}({self.args(args)})"
 
+    # -------------------------------------------------------- what is known
+
+    def is_number(self, expr: Any) -> bool:
+        """``expr.is_number``, each subexpression's answer formed once."""
+        return _number_in(expr, self.numbers)
+
+    def leading_negative(self, expr: sp.Add) -> bool:
+        """Whether the sum prints with a leading minus (first term negative)."""
+        found = self.negative.get(id(expr))
+        if found is None:
+            found = self.negative[id(expr)] = (expr, self.first_negative(expr))
+        return found[1]
+
+    def negated(self, expr: sp.Add) -> sp.Add:
+        """The sum of the terms' negatives, formed once per sum."""
+        found = self.negations.get(id(expr))
+        if found is None:
+            negation = sp.Add(*[-a for a in expr.args])
+            found = self.negations[id(expr)] = (expr, negation)
+        return found[1]
+
+    def first_negative(self, expr: sp.Add) -> bool:
+        numeric = [a for a in expr.args if self.is_number(a)]
+        const = sp.Add(*numeric)
+        if const != 0:
+            first = const
+        else:
+            first = min(
+                (a for a in expr.args if not self.is_number(a)), key=self.term_key
+            )
+        coeff = first.as_coeff_Mul()[0] if not self.is_number(first) else first
+        re = (
+            coeff.evalf(5).as_real_imag()[0] if self.is_number(coeff) else sp.Integer(1)
+        )
+        return bool(re.is_negative)
+
+    def factor_key(self, factor: sp.Expr) -> tuple:
+        """Order factors of a product: names and functions first, sums last."""
+        base = factor.as_base_exp()[0]
+        return (isinstance(base, sp.Add), _sort_key(factor, self.keys))
+
+    def term_key(self, term: sp.Expr) -> tuple:
+        """Order terms of a sum roughly as Autolev does: by degree, then by
+        the number of factors (``4*X^2 + 7*X*Y``), then by name."""
+        degree = 0
+        args = term.args if term.is_Mul else (term,)
+        factors = []
+        numbers = self.numbers
+        for factor in args:
+            if _number_in(factor, numbers):
+                continue
+            factors.append(factor)
+            _, exp = factor.as_base_exp()
+            power = int(exp) if exp.is_Integer else 0
+            degree += power if power > 0 else 1
+        keys = self.keys
+        if len(factors) == len(args):  # the term itself (no numbers to drop)
+            rest = term if len(args) > 1 else factors[0]
+        elif len(factors) < 2:
+            rest = factors[0] if factors else _ONE
+        elif _plain_factors(factors):  # the key of their product, not formed
+            found = sorted([_sort_key(f, keys) for f in factors])
+            product = (_MUL_KEY, (len(found), tuple(found)), _ONE_KEY, _ONE)
+            return (degree, len(factors), product)
+        else:  # a canonical product's factors stay canonical without numbers
+            rest = sp.Mul._from_args(factors)
+        return (degree, len(factors), _sort_key(rest, keys))
+
     # ------------------------------------------------------------ matrices
 
     def matrix(self, m: sp.MatrixBase) -> str:
@@ -358,90 +447,98 @@ class _AutolevPrinter:
         return "[" + "; ".join(rows) + "]"
 
 
-def _leading_negative(expr: sp.Add) -> bool:
-    """Whether the sum prints with a leading minus (first term negative)."""
-    numeric = [a for a in expr.args if a.is_number]
-    const = sp.Add(*numeric)
-    if const != 0:
-        first = const
-    else:
-        first = min((a for a in expr.args if not a.is_number), key=_term_key)
-    coeff = first.as_coeff_Mul()[0] if not first.is_number else first
-    re = coeff.evalf(5).as_real_imag()[0] if coeff.is_number else sp.Integer(1)
-    return bool(re.is_negative)
+class _Known:
+    """What is known of subexpressions (a sort key, whether it is a number):
+    found by identity first (an ``int`` key, no comparison of trees), then
+    by equality (an equal tree formed elsewhere).  The object is kept beside
+    its ``id``, so the ``id`` cannot be reused while it is remembered."""
+
+    __slots__ = ("ids", "values")
+
+    def __init__(self) -> None:
+        self.ids: dict[int, tuple[Any, Any]] = {}
+        self.values: dict[Any, Any] = {}
 
 
-#: sort keys already formed, while :func:`shared_keys` is in force (a
-#: transcript's responses share most of their subexpressions)
-_KEYS: list[dict] = []
-#: and which subexpressions are numbers (sympy's ``is_number`` walks the
-#: whole subtree again at each node the printer visits)
-_NUMBERS: list[dict] = []
-#: and each subexpression's printed form, by number of digits
-_SHOWN: list[dict] = []
+class _Memos:
+    """Everything the printer remembers (see :func:`shared_keys`)."""
+
+    def __init__(self) -> None:
+        self.keys = _Known()
+        self.numbers = _Known()
+        #: printed forms and coefficients' texts, by number of digits
+        self.shown: dict[int, dict] = {}
+        self.coefficients: dict[int, dict] = {}
+        #: whether a sum prints with a leading minus, by ``id``
+        self.negative: dict[int, tuple[Any, bool]] = {}
+        #: and the sum of its terms' negatives
+        self.negations: dict[int, tuple[Any, Any]] = {}
+
+
+#: the memos in force (:func:`shared_keys`)
+_SHARED: list[_Memos] = []
 
 
 @contextlib.contextmanager
 def shared_keys() -> Iterator[None]:
     """Within this context every printed value shares one memo of sort keys
     (sympy's own cache holds 1000 and is soon overrun by a large model's
-    transcript, so each key was formed again, down to the leaves) and of
-    which subexpressions are numbers."""
-    _KEYS.append({})
-    _NUMBERS.append({})
-    _SHOWN.append({})
+    transcript, so each key was formed again, down to the leaves), of which
+    subexpressions are numbers, and of printed forms (a transcript's
+    responses share most of their subexpressions)."""
+    _SHARED.append(_Memos())
     try:
         yield
     finally:
-        _KEYS.pop()
-        _NUMBERS.pop()
-        _SHOWN.pop()
+        _SHARED.pop()
 
 
 _EXPR_IS_NUMBER = sp.Expr.is_number
 
 
-def _is_number(expr: Any) -> bool:
-    """``expr.is_number``, each node's answer formed once (see
-    :func:`shared_keys`): sympy's generic rule, all arguments numbers, is
-    followed here with the memo; a class with its own rule answers itself."""
-    memo = _NUMBERS[-1] if _NUMBERS else None
-    if memo is None:
-        return expr.is_number
-    return _number_in(expr, memo)
-
-
-def _number_in(expr: Any, memo: dict) -> bool:
-    found = memo.get(expr)
+def _number_in(expr: Any, known: _Known) -> bool:
+    """``expr.is_number``, each node's answer formed once per ``known``:
+    sympy's generic rule, all arguments numbers, is followed here with the
+    memo (sympy's walks the whole subtree again at each node); a class with
+    its own rule answers itself."""
+    hit = known.ids.get(id(expr))
+    if hit is not None:
+        return hit[1]
+    found = known.values.get(expr)
     if found is None:
         if type(expr).is_number is _EXPR_IS_NUMBER and expr.args:
-            found = all(_number_in(a, memo) for a in expr.args)
+            found = all(_number_in(a, known) for a in expr.args)
         else:
             found = bool(expr.is_number)
-        memo[expr] = found
+        known.values[expr] = found
+    known.ids[id(expr)] = (expr, found)
     return found
 
 
-def _sort_key(expr: Any, memo: dict) -> tuple:
+def _sort_key(expr: Any, known: _Known) -> tuple:
     """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
-    per ``memo`` (sympy's ``Expr.sort_key``, written with the memo; a
+    per ``known`` (sympy's ``Expr.sort_key``, written with the memo; a
     product's key is read off its arguments, without forming the product
     after its coefficient as sympy's ``as_coeff_Mul`` does)."""
-    key = memo.get(expr)
-    if key is not None:
-        return key
+    hit = known.ids.get(id(expr))
+    if hit is not None:
+        return hit[1]
+    key = known.values.get(expr)
+    if key is None:
+        key = known.values[expr] = _new_sort_key(expr, known)
+    known.ids[id(expr)] = (expr, key)
+    return key
+
+
+def _new_sort_key(expr: Any, known: _Known) -> tuple:
     if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
-        key = sp.default_sort_key(expr)
-        memo[expr] = key
-        return key
+        return sp.default_sort_key(expr)
     if expr.is_Mul:
         args = expr.args
         coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
         if len(factors) > 1 and _plain_factors(factors):
-            keys = sorted([_sort_key(f, memo) for f in factors])
-            key = (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
-            memo[expr] = key
-            return key
+            keys = sorted([_sort_key(f, known) for f in factors])
+            return (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
     coeff, rest = expr.as_coeff_Mul()
     exp = sp.S.One
     if rest.is_Pow:
@@ -458,17 +555,15 @@ def _sort_key(expr: Any, memo: dict) -> tuple:
             parts = rest.as_ordered_terms()
         elif rest.is_Mul:
             cpart, ncpart = rest.args_cnc()
-            cpart.sort(key=lambda e: _sort_key(e, memo))
+            cpart.sort(key=lambda e: _sort_key(e, known))
             parts = cpart + ncpart
         else:
             parts = rest.args
-        args = tuple([_sort_key(a, memo) for a in parts])
-    key = (rest.class_key(), (len(args), args), _sort_key(exp, memo), coeff)
-    memo[expr] = key
-    return key
+        args = tuple([_sort_key(a, known) for a in parts])
+    return (rest.class_key(), (len(args), args), _sort_key(exp, known), coeff)
 
 
-def _plain_factors(factors: tuple) -> bool:
+def _plain_factors(factors: tuple | list) -> bool:
     """No number among ``factors`` (a canonical product has at most one, its
     first argument) and all commutative: the factors sympy's
     ``args_cnc`` gives back as they are."""
@@ -479,62 +574,30 @@ def _plain_factors(factors: tuple) -> bool:
 
 
 _ONE = sp.S.One
+_MINUS_ONE = sp.S.NegativeOne
 _ONE_KEY = sp.S.One.sort_key()
 _MUL_KEY = sp.Mul.class_key()
-
-
 _EXPR_SORT_KEY = sp.Expr.sort_key
+#: where a caller's dict keeps its :class:`_Known` (:func:`sort_key_in`)
+_KNOWN = object()
+
+
+def _known_in(memo: dict) -> _Known:
+    known = memo.get(_KNOWN)
+    if known is None:
+        known = memo[_KNOWN] = _Known()
+    return known
 
 
 def sort_key_in(expr: Any, memo: dict) -> tuple:
     """``sp.default_sort_key(expr)``, each node's key formed once per
     ``memo`` (a dict the caller keeps: the program printers use one)."""
-    return _sort_key(expr, memo)
+    return _sort_key(expr, _known_in(memo))
 
 
 def is_number_in(expr: Any, memo: dict) -> bool:
     """``expr.is_number``, each node's answer formed once per ``memo``."""
-    return _number_in(expr, memo)
-
-
-def _default_sort_key(expr: Any) -> tuple:
-    return _sort_key(expr, _KEYS[-1] if _KEYS else {})
-
-
-def _factor_key(factor: sp.Expr) -> tuple:
-    """Order factors of a product: names and functions first, sums last."""
-    base = factor.as_base_exp()[0]
-    return (isinstance(base, sp.Add), _default_sort_key(factor))
-
-
-def _term_key(term: sp.Expr) -> tuple:
-    """Order terms of a sum roughly as Autolev does: by degree, then by the
-    number of factors (``4*X^2 + 7*X*Y``), then by name."""
-    degree = 0
-    args = sp.Mul.make_args(term)
-    factors = []
-    for factor in args:
-        if _is_number(factor):
-            continue
-        factors.append(factor)
-        _, exp = factor.as_base_exp()
-        power = int(exp) if exp.is_Integer else 0
-        degree += power if power > 0 else 1
-    memo = _KEYS[-1] if _KEYS else {}
-    if len(factors) == len(args):  # the term itself (no numbers to drop)
-        rest = term if len(args) > 1 else factors[0]
-    elif len(factors) < 2:
-        rest = factors[0] if factors else sp.S.One
-    elif _plain_factors(factors):  # the key of their product, not formed
-        keys = sorted([_sort_key(f, memo) for f in factors])
-        return (
-            degree,
-            len(factors),
-            (_MUL_KEY, (len(keys), tuple(keys)), _ONE_KEY, _ONE),
-        )
-    else:  # a canonical product's factors stay canonical without the numbers
-        rest = sp.Mul._from_args(factors)
-    return (degree, len(factors), _sort_key(rest, memo))
+    return _number_in(expr, _known_in(memo))
 
 
 # ------------------------------------------------------- vectors, dyadics
