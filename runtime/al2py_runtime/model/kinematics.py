@@ -226,7 +226,8 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
         return expr
     if not is_small(expr):
         return expr  # cosmetic only: large models stay fast
-    gens = [g for g in gens if expr.has(g)]
+    nodes = set(sp.preorder_traversal(expr))  # ``expr.has(g)``, one walk
+    gens = [g for g in gens if g in nodes]
     if len(gens) > SMALL_GENS:
         return expr
     if gens:

@@ -123,8 +123,10 @@ class _AutolevPrinter:
         memos = _SHARED[-1] if _SHARED else _Memos()
         self.keys = memos.keys
         self.numbers = memos.numbers
-        #: printed forms, by ``(id(expr), top)``: ``(expr, (text, precedence))``
-        self.shown = memos.shown.setdefault(digits, {})
+        #: printed forms by ``id(expr)``: ``(expr, (text, precedence))``,
+        #: nested and at the top level (sums spaced)
+        self.shown = memos.shown.setdefault((digits, False), {})
+        self.shown_top = memos.shown.setdefault((digits, True), {})
         self.coefficients = memos.coefficients.setdefault(digits, {})
         self.negative = memos.negative
         self.negations = memos.negations
@@ -143,14 +145,14 @@ class _AutolevPrinter:
         """``(text, precedence)`` of ``expr``, each subexpression's formed
         once (the same object is found by identity; the reference kept
         beside it keeps its ``id`` from being reused)."""
-        key = (id(expr), top)
-        found = self.shown.get(key)
+        memo = self.shown_top if top else self.shown
+        found = memo.get(id(expr))
         if found is not None:
             return found[1]
         if isinstance(expr, sp.MatrixBase):
             return self.matrix(expr), _ATOM
         shown = self.form(expr, top)
-        self.shown[key] = (expr, shown)
+        memo[id(expr)] = (expr, shown)
         return shown
 
     def form(self, expr: Any, top: bool) -> tuple[str, int]:
@@ -430,7 +432,7 @@ class _AutolevPrinter:
             rest = term if len(args) > 1 else factors[0]
         elif len(factors) < 2:
             rest = factors[0] if factors else _ONE
-        elif _plain_factors(factors):  # the key of their product, not formed
+        elif term.is_commutative:  # the key of their product, not formed
             found = sorted([_sort_key(f, keys) for f in factors])
             product = (_MUL_KEY, (len(found), tuple(found)), _ONE_KEY, _ONE)
             return (degree, len(factors), product)
@@ -466,8 +468,9 @@ class _Memos:
     def __init__(self) -> None:
         self.keys = _Known()
         self.numbers = _Known()
-        #: printed forms and coefficients' texts, by number of digits
-        self.shown: dict[int, dict] = {}
+        #: printed forms (by digits and level) and coefficients' texts (by
+        #: digits)
+        self.shown: dict[tuple[int, bool], dict] = {}
         self.coefficients: dict[int, dict] = {}
         #: whether a sum prints with a leading minus, by ``id``
         self.negative: dict[int, tuple[Any, bool]] = {}
@@ -536,7 +539,7 @@ def _new_sort_key(expr: Any, known: _Known) -> tuple:
     if expr.is_Mul:
         args = expr.args
         coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
-        if len(factors) > 1 and _plain_factors(factors):
+        if len(factors) > 1 and _plain_factors(expr, factors):
             keys = sorted([_sort_key(f, known) for f in factors])
             return (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
     coeff, rest = expr.as_coeff_Mul()
@@ -563,12 +566,14 @@ def _new_sort_key(expr: Any, known: _Known) -> tuple:
     return (rest.class_key(), (len(args), args), _sort_key(exp, known), coeff)
 
 
-def _plain_factors(factors: tuple | list) -> bool:
+def _plain_factors(product: sp.Mul, factors: tuple) -> bool:
     """No number among ``factors`` (a canonical product has at most one, its
     first argument) and all commutative: the factors sympy's
     ``args_cnc`` gives back as they are."""
+    if product.is_commutative is not True:
+        return False
     for f in factors:
-        if f.is_Number or not f.is_commutative:
+        if f.is_Number:
             return False
     return True
 
