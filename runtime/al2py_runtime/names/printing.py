@@ -123,6 +123,7 @@ class _AutolevPrinter:
         memos = _SHARED[-1] if _SHARED else _Memos()
         self.keys = memos.keys
         self.numbers = memos.numbers
+        self.number_ids = memos.numbers.ids
         #: printed forms by ``id(expr)``: ``(expr, (text, precedence))``,
         #: nested and at the top level (sums spaced)
         self.shown = memos.shown.setdefault((digits, False), {})
@@ -376,6 +377,9 @@ class _AutolevPrinter:
 
     def is_number(self, expr: Any) -> bool:
         """``expr.is_number``, each subexpression's answer formed once."""
+        hit = self.number_ids.get(id(expr))
+        if hit is not None:
+            return hit[1]
         return _number_in(expr, self.numbers)
 
     def leading_negative(self, expr: sp.Add) -> bool:
@@ -419,9 +423,9 @@ class _AutolevPrinter:
         degree = 0
         args = term.args if term.is_Mul else (term,)
         factors = []
-        numbers = self.numbers
+        is_number = self.is_number
         for factor in args:
-            if _number_in(factor, numbers):
+            if is_number(factor):
                 continue
             factors.append(factor)
             _, exp = factor.as_base_exp()
@@ -433,7 +437,7 @@ class _AutolevPrinter:
         elif len(factors) < 2:
             rest = factors[0] if factors else _ONE
         elif term.is_commutative:  # the key of their product, not formed
-            found = sorted([_sort_key(f, keys) for f in factors])
+            found = sorted([_key_of(f, keys) for f in factors])
             product = (_MUL_KEY, (len(found), tuple(found)), _ONE_KEY, _ONE)
             return (degree, len(factors), product)
         else:  # a canonical product's factors stay canonical without numbers
@@ -510,7 +514,11 @@ def _number_in(expr: Any, known: _Known) -> bool:
     found = known.values.get(expr)
     if found is None:
         if type(expr).is_number is _EXPR_IS_NUMBER and expr.args:
-            found = all(_number_in(a, known) for a in expr.args)
+            found = True
+            for a in expr.args:  # as ``all()``, stopping at the first no
+                if not _number_in(a, known):
+                    found = False
+                    break
         else:
             found = bool(expr.is_number)
         known.values[expr] = found
@@ -533,6 +541,12 @@ def _sort_key(expr: Any, known: _Known) -> tuple:
     return key
 
 
+def _key_of(expr: Any, known: _Known) -> tuple:
+    """:func:`_sort_key`, a key already found by identity without a call."""
+    hit = known.ids.get(id(expr))
+    return hit[1] if hit is not None else _sort_key(expr, known)
+
+
 def _new_sort_key(expr: Any, known: _Known) -> tuple:
     if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
         return sp.default_sort_key(expr)
@@ -540,7 +554,7 @@ def _new_sort_key(expr: Any, known: _Known) -> tuple:
         args = expr.args
         coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
         if len(factors) > 1 and _plain_factors(expr, factors):
-            keys = sorted([_sort_key(f, known) for f in factors])
+            keys = sorted([_key_of(f, known) for f in factors])
             return (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
     coeff, rest = expr.as_coeff_Mul()
     exp = sp.S.One
