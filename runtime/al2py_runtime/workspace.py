@@ -774,6 +774,9 @@ class Workspace(Mapping):
                 )
         finally:
             collector.restore()
+            # as after deriving: sympy's cache now holds the printing's
+            # passing expressions, freed here rather than at the exit
+            clear_cache()
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 
