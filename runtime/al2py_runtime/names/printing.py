@@ -123,9 +123,8 @@ class _AutolevPrinter:
         memos = _SHARED[-1] if _SHARED else _Memos()
         self.keys = memos.keys
         self.numbers = memos.numbers
-        self.number_ids = memos.numbers.ids
-        #: printed forms by ``id(expr)``: ``(expr, (text, precedence))``,
-        #: nested and at the top level (sums spaced)
+        #: printed forms ``(text, precedence)``, nested and at the top level
+        #: (sums spaced)
         self.shown = memos.shown.setdefault((digits, False), {})
         self.shown_top = memos.shown.setdefault((digits, True), {})
         self.coefficients = memos.coefficients.setdefault(digits, {})
@@ -144,17 +143,16 @@ class _AutolevPrinter:
 
     def show(self, expr: Any, top: bool) -> tuple[str, int]:
         """``(text, precedence)`` of ``expr``, each subexpression's formed
-        once (the same object is found by identity; the reference kept
-        beside it keeps its ``id`` from being reused)."""
-        memo = self.shown_top if top else self.shown
-        found = memo.get(id(expr))
-        if found is not None:
-            return found[1]
+        once (a dict finds the same object by identity before comparing)."""
         if isinstance(expr, sp.MatrixBase):
             return self.matrix(expr), _ATOM
-        shown = self.form(expr, top)
-        memo[id(expr)] = (expr, shown)
-        return shown
+        if not isinstance(expr, sp.Basic):
+            return self.form(expr, top)
+        memo = self.shown_top if top else self.shown
+        found = memo.get(expr)
+        if found is None:
+            found = memo[expr] = self.form(expr, top)
+        return found
 
     def form(self, expr: Any, top: bool) -> tuple[str, int]:
         """``show`` without the memo."""
@@ -377,25 +375,24 @@ class _AutolevPrinter:
 
     def is_number(self, expr: Any) -> bool:
         """``expr.is_number``, each subexpression's answer formed once."""
-        hit = self.number_ids.get(id(expr))
-        if hit is not None:
-            return hit[1]
+        found = self.numbers.get(expr)
+        if found is not None:
+            return found
         return _number_in(expr, self.numbers)
 
     def leading_negative(self, expr: sp.Add) -> bool:
         """Whether the sum prints with a leading minus (first term negative)."""
-        found = self.negative.get(id(expr))
+        found = self.negative.get(expr)
         if found is None:
-            found = self.negative[id(expr)] = (expr, self.first_negative(expr))
-        return found[1]
+            found = self.negative[expr] = self.first_negative(expr)
+        return found
 
     def negated(self, expr: sp.Add) -> sp.Add:
         """The sum of the terms' negatives, formed once per sum."""
-        found = self.negations.get(id(expr))
+        found = self.negations.get(expr)
         if found is None:
-            negation = sp.Add(*[-a for a in expr.args])
-            found = self.negations[id(expr)] = (expr, negation)
-        return found[1]
+            found = self.negations[expr] = sp.Add(*[-a for a in expr.args])
+        return found
 
     def first_negative(self, expr: sp.Add) -> bool:
         numeric = [a for a in expr.args if self.is_number(a)]
@@ -453,33 +450,22 @@ class _AutolevPrinter:
         return "[" + "; ".join(rows) + "]"
 
 
-class _Known:
-    """What is known of subexpressions (a sort key, whether it is a number):
-    found by identity first (an ``int`` key, no comparison of trees), then
-    by equality (an equal tree formed elsewhere).  The object is kept beside
-    its ``id``, so the ``id`` cannot be reused while it is remembered."""
-
-    __slots__ = ("ids", "values")
-
-    def __init__(self) -> None:
-        self.ids: dict[int, tuple[Any, Any]] = {}
-        self.values: dict[Any, Any] = {}
-
-
 class _Memos:
     """Everything the printer remembers (see :func:`shared_keys`)."""
 
     def __init__(self) -> None:
-        self.keys = _Known()
-        self.numbers = _Known()
+        #: sort keys and number tests (a dict finds the same object by
+        #: identity before comparing, and an equal tree formed elsewhere)
+        self.keys: dict[Any, tuple] = {}
+        self.numbers: dict[Any, bool] = {}
         #: printed forms (by digits and level) and coefficients' texts (by
         #: digits)
         self.shown: dict[tuple[int, bool], dict] = {}
         self.coefficients: dict[int, dict] = {}
-        #: whether a sum prints with a leading minus, by ``id``
-        self.negative: dict[int, tuple[Any, bool]] = {}
-        #: and the sum of its terms' negatives
-        self.negations: dict[int, tuple[Any, Any]] = {}
+        #: whether a sum prints with a leading minus, and the sum of its
+        #: terms' negatives
+        self.negative: dict[Any, bool] = {}
+        self.negations: dict[Any, Any] = {}
 
 
 #: the memos in force (:func:`shared_keys`)
@@ -503,15 +489,12 @@ def shared_keys() -> Iterator[None]:
 _EXPR_IS_NUMBER = sp.Expr.is_number
 
 
-def _number_in(expr: Any, known: _Known) -> bool:
+def _number_in(expr: Any, known: dict) -> bool:
     """``expr.is_number``, each node's answer formed once per ``known``:
     sympy's generic rule, all arguments numbers, is followed here with the
     memo (sympy's walks the whole subtree again at each node); a class with
     its own rule answers itself."""
-    hit = known.ids.get(id(expr))
-    if hit is not None:
-        return hit[1]
-    found = known.values.get(expr)
+    found = known.get(expr)
     if found is None:
         if type(expr).is_number is _EXPR_IS_NUMBER and expr.args:
             found = True
@@ -521,33 +504,28 @@ def _number_in(expr: Any, known: _Known) -> bool:
                     break
         else:
             found = bool(expr.is_number)
-        known.values[expr] = found
-    known.ids[id(expr)] = (expr, found)
+        known[expr] = found
     return found
 
 
-def _sort_key(expr: Any, known: _Known) -> tuple:
+def _sort_key(expr: Any, known: dict) -> tuple:
     """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
     per ``known`` (sympy's ``Expr.sort_key``, written with the memo; a
     product's key is read off its arguments, without forming the product
     after its coefficient as sympy's ``as_coeff_Mul`` does)."""
-    hit = known.ids.get(id(expr))
-    if hit is not None:
-        return hit[1]
-    key = known.values.get(expr)
+    key = known.get(expr)
     if key is None:
-        key = known.values[expr] = _new_sort_key(expr, known)
-    known.ids[id(expr)] = (expr, key)
+        key = known[expr] = _new_sort_key(expr, known)
     return key
 
 
-def _key_of(expr: Any, known: _Known) -> tuple:
-    """:func:`_sort_key`, a key already found by identity without a call."""
-    hit = known.ids.get(id(expr))
-    return hit[1] if hit is not None else _sort_key(expr, known)
+def _key_of(expr: Any, known: dict) -> tuple:
+    """:func:`_sort_key`, a key already found without a further call."""
+    key = known.get(expr)
+    return key if key is not None else _sort_key(expr, known)
 
 
-def _new_sort_key(expr: Any, known: _Known) -> tuple:
+def _new_sort_key(expr: Any, known: dict) -> tuple:
     if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
         return sp.default_sort_key(expr)
     if expr.is_Mul:
@@ -597,26 +575,17 @@ _MINUS_ONE = sp.S.NegativeOne
 _ONE_KEY = sp.S.One.sort_key()
 _MUL_KEY = sp.Mul.class_key()
 _EXPR_SORT_KEY = sp.Expr.sort_key
-#: where a caller's dict keeps its :class:`_Known` (:func:`sort_key_in`)
-_KNOWN = object()
-
-
-def _known_in(memo: dict) -> _Known:
-    known = memo.get(_KNOWN)
-    if known is None:
-        known = memo[_KNOWN] = _Known()
-    return known
 
 
 def sort_key_in(expr: Any, memo: dict) -> tuple:
     """``sp.default_sort_key(expr)``, each node's key formed once per
     ``memo`` (a dict the caller keeps: the program printers use one)."""
-    return _sort_key(expr, _known_in(memo))
+    return _sort_key(expr, memo)
 
 
 def is_number_in(expr: Any, memo: dict) -> bool:
     """``expr.is_number``, each node's answer formed once per ``memo``."""
-    return _number_in(expr, _known_in(memo))
+    return _number_in(expr, memo)
 
 
 # ------------------------------------------------------- vectors, dyadics
