@@ -253,7 +253,7 @@ def _collect(expr: sp.Expr, gens: list) -> dict:
     if not _plain_for(expr, set(gens)):
         return sp.collect(expr, gens, evaluate=False)
     reps = dict(zip(gens, [sp.Dummy(**assumptions(g)) for g in gens], strict=True))
-    parts = sp.collect(expr.xreplace(reps), list(reps.values()), evaluate=False)
+    parts = sp.collect(expr.xreplace(reps), [reps[g] for g in gens], evaluate=False)
     urep = {v: k for k, v in reps.items()}
     return {urep.get(k, k).xreplace(urep): v.xreplace(urep) for k, v in parts.items()}
 
