@@ -759,14 +759,24 @@ class Workspace(Mapping):
         memo = self.__dict__.get("_transcript")
         if memo is not None and memo[0] == key:
             return list(memo[1])
-        with progress.task("printing the transcript", unit="responses") as task:
-            task.doing("naming intermediates")
-            shown = self._with_intermediates(self.responses)
-            task.doing("")
-            task.update(0, len(shown))
-            out = transcript_lines(
-                lines, shown, self.model.displayed, tick=task.advance
-            )
+        # the printer's memos make many small objects that all stay: the
+        # garbage collector, run at its default pace, walks them again and
+        # again (a fifth of the printing) and finds nothing
+        collector = _DerivingCollector()
+        try:
+            with progress.task("printing the transcript", unit="responses") as task:
+                task.doing("naming intermediates")
+                shown = self._with_intermediates(self.responses)
+                task.doing("")
+                task.update(0, len(shown))
+                out = transcript_lines(
+                    lines, shown, self.model.displayed, tick=task.advance
+                )
+        finally:
+            collector.restore()
+            # as after deriving: sympy's cache now holds the printing's
+            # passing expressions, freed here rather than at the exit
+            clear_cache()
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 

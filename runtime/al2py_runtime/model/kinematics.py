@@ -18,6 +18,8 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 import sympy as sp
+from sympy.core.assumptions import assumptions
+from sympy.core.function import Application, AppliedUndef
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 
 from .. import walks
@@ -224,13 +226,69 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
         return expr
     if not is_small(expr):
         return expr  # cosmetic only: large models stay fast
-    gens = [g for g in gens if expr.has(g)]
+    nodes = set(sp.preorder_traversal(expr))  # ``expr.has(g)``, one walk
+    gens = [g for g in gens if g in nodes]
     if len(gens) > SMALL_GENS:
         return expr
     if gens:
-        parts = sp.collect(sp.expand(expr), gens, evaluate=False)
+        parts = _collect(sp.expand(expr), gens)
         return sp.Add(*[_tidy_one(c) * m for m, c in parts.items()])
     return _tidy_one(expr)
+
+
+def _collect(expr: sp.Expr, gens: list) -> dict:
+    """``sp.collect(expr, gens, evaluate=False)``, the same dictionary.
+
+    sympy first puts a dummy symbol for each generator that is not a symbol
+    (speeds ``U(t)`` and their derivatives) with ``subs``, which compares
+    every rebuilt argument with the old one, node by node.  When nothing in
+    ``expr`` gives a substitution of those generators a meaning of its own
+    (only sums, products, powers, numbers, symbols and functions such as
+    ``sin``; every derivative one of the generators), ``subs`` rebuilds the
+    same tree as ``xreplace`` does: that is used, with sympy's dummies made
+    the same way, in the same number, and the same rest of ``collect``.
+    """
+    if not all(isinstance(g, AppliedUndef | sp.Derivative) for g in gens):
+        return sp.collect(expr, gens, evaluate=False)
+    if not _plain_for(expr, set(gens)):
+        return sp.collect(expr, gens, evaluate=False)
+    reps = dict(zip(gens, [sp.Dummy(**assumptions(g)) for g in gens], strict=True))
+    parts = sp.collect(expr.xreplace(reps), [reps[g] for g in gens], evaluate=False)
+    urep = {v: k for k, v in reps.items()}
+    return {urep.get(k, k).xreplace(urep): v.xreplace(urep) for k, v in parts.items()}
+
+
+def _plain_for(expr: sp.Expr, gens: set) -> bool:
+    """Whether ``expr.subs`` of ``gens`` by symbols is ``xreplace``: no node
+    of ``expr`` outside ``gens`` is a derivative or has a rule of its own
+    for substituting a function (``Subs``, ``Piecewise``, ``Integral``...)."""
+    stack = [expr]
+    seen: set = set()
+    while stack:
+        e = stack.pop()
+        if e in gens or e in seen:
+            continue
+        seen.add(e)
+        if type(e)._eval_subs not in _PLAIN_SUBS or isinstance(e, sp.Derivative):
+            return False
+        stack.extend(e.args)
+    return True
+
+
+#: ``_eval_subs`` rules that leave a function replaced by a symbol to the
+#: generic rebuild (``Pow``'s replaces its base, as the rebuild does)
+_PLAIN_SUBS = frozenset(
+    {
+        sp.Basic._eval_subs,
+        sp.Add._eval_subs,
+        sp.Mul._eval_subs,
+        sp.Pow._eval_subs,
+        sp.Number._eval_subs,
+        sp.Symbol._eval_subs,
+        sp.exp._eval_subs,
+        Application._eval_subs,
+    }
+)
 
 
 def _tidy_one(expr: sp.Expr) -> sp.Expr:

@@ -118,6 +118,18 @@ class _AutolevPrinter:
         if not 1 <= digits <= 17:
             raise ValueError(f"digits must be between 1 and 17, not {digits}")
         self.digits = digits
+        # what is already known of each subexpression: shared by every value
+        # printed while :func:`shared_keys` is in force, else this printer's
+        memos = _SHARED[-1] if _SHARED else _Memos()
+        self.keys = memos.keys
+        self.numbers = memos.numbers
+        #: printed forms ``(text, precedence)``, nested and at the top level
+        #: (sums spaced)
+        self.shown = memos.shown.setdefault((digits, False), {})
+        self.shown_top = memos.shown.setdefault((digits, True), {})
+        self.coefficients = memos.coefficients.setdefault(digits, {})
+        self.negative = memos.negative
+        self.negations = memos.negations
 
     # ------------------------------------------------------------ dispatch
 
@@ -130,8 +142,20 @@ class _AutolevPrinter:
         return f"({text})" if prec < level else text
 
     def show(self, expr: Any, top: bool) -> tuple[str, int]:
+        """``(text, precedence)`` of ``expr``, each subexpression's formed
+        once (a dict finds the same object by identity before comparing)."""
         if isinstance(expr, sp.MatrixBase):
             return self.matrix(expr), _ATOM
+        if not isinstance(expr, sp.Basic):
+            return self.form(expr, top)
+        memo = self.shown_top if top else self.shown
+        found = memo.get(expr)
+        if found is None:
+            found = memo[expr] = self.form(expr, top)
+        return found
+
+    def form(self, expr: Any, top: bool) -> tuple[str, int]:
+        """``show`` without the memo."""
         if not isinstance(expr, sp.Basic):
             try:
                 expr = sp.sympify(expr)
@@ -139,7 +163,7 @@ class _AutolevPrinter:
                 return str(expr), _ATOM
         if (
             isinstance(expr, sp.Expr)
-            and _is_number(expr)
+            and self.is_number(expr)
             and not expr.has(AppliedUndef)
         ):
             return self.number(expr, top)
@@ -209,9 +233,13 @@ class _AutolevPrinter:
     # ---------------------------------------------------------------- sums
 
     def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
-        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
-        others = [a for a in expr.args if a not in numeric]
-        terms = sorted(others, key=_term_key)
+        numeric, others = [], []
+        for a in expr.args:
+            if self.is_number(a) and not a.has(AppliedUndef):
+                numeric.append(a)
+            else:
+                others.append(a)
+        terms = sorted(others, key=self.term_key)
         if numeric:
             const = sp.Add(*numeric)
             if const != 0:
@@ -233,23 +261,23 @@ class _AutolevPrinter:
     # ------------------------------------------------------------ products
 
     def mul(self, expr: sp.Mul) -> tuple[str, int]:
-        numeric = [a for a in expr.args if _is_number(a) and not a.has(AppliedUndef)]
-        coeff = sp.Mul(*numeric)
-        num, den = [], []
+        numeric, num, den = [], [], []
         for factor in expr.args:
-            if factor in numeric:
+            if self.is_number(factor) and not factor.has(AppliedUndef):
+                numeric.append(factor)
                 continue
             base, exp = factor.as_base_exp()
             if exp.is_number and exp.is_extended_negative and not factor.is_Function:
                 den.append(sp.Pow(base, -exp))
             else:
                 num.append(factor)
+        coeff = numeric[0] if len(numeric) == 1 else sp.Mul(*numeric)
         num, flips = self.flip_signs(num)
         den, flips_den = self.flip_signs(den)
         if (flips + flips_den) % 2:
             coeff = -coeff
-        num.sort(key=_factor_key)
-        den.sort(key=_factor_key)
+        num.sort(key=self.factor_key)
+        den.sort(key=self.factor_key)
         sign, coeff_text = self.coefficient(coeff)
         parts = [self.paren(f, _MUL) for f in num]
         if coeff_text:
@@ -267,18 +295,25 @@ class _AutolevPrinter:
         """Negate sums that would print with a leading minus: ``-(B-D)/A``."""
         out, flips = [], 0
         for factor in factors:
-            if isinstance(factor, sp.Add) and _leading_negative(factor):
-                factor = sp.Add(*[-a for a in factor.args])
+            if isinstance(factor, sp.Add) and self.leading_negative(factor):
+                factor = self.negated(factor)
                 flips += 1
             out.append(factor)
         return out, flips
 
     def coefficient(self, coeff: sp.Expr) -> tuple[str, str]:
         """Split a numeric coefficient into its sign and magnitude text."""
-        if coeff == 1:
+        if coeff is _ONE or coeff == 1:
             return "", ""
-        if coeff == -1:
+        if coeff is _MINUS_ONE or coeff == -1:
             return "-", ""
+        found = self.coefficients.get(coeff)
+        if found is None:
+            found = self.coefficients[coeff] = self.split_coefficient(coeff)
+        return found
+
+    def split_coefficient(self, coeff: sp.Expr) -> tuple[str, str]:
+        """:meth:`coefficient` of a number other than 1 and -1."""
         value = coeff.evalf(self.digits + 10)
         re, im = value.as_real_imag()
         if im == 0 and re.is_number:
@@ -336,6 +371,76 @@ class _AutolevPrinter:
             return f"{label}({self.text(args[0])}, {self.function(head)})"
         return f"{label}({self.args(args)})"
 
+    # -------------------------------------------------------- what is known
+
+    def is_number(self, expr: Any) -> bool:
+        """``expr.is_number``, each subexpression's answer formed once."""
+        found = self.numbers.get(expr)
+        if found is not None:
+            return found
+        return _number_in(expr, self.numbers)
+
+    def leading_negative(self, expr: sp.Add) -> bool:
+        """Whether the sum prints with a leading minus (first term negative)."""
+        found = self.negative.get(expr)
+        if found is None:
+            found = self.negative[expr] = self.first_negative(expr)
+        return found
+
+    def negated(self, expr: sp.Add) -> sp.Add:
+        """The sum of the terms' negatives, formed once per sum."""
+        found = self.negations.get(expr)
+        if found is None:
+            found = self.negations[expr] = sp.Add(*[-a for a in expr.args])
+        return found
+
+    def first_negative(self, expr: sp.Add) -> bool:
+        numeric = [a for a in expr.args if self.is_number(a)]
+        const = sp.Add(*numeric)
+        if const != 0:
+            first = const
+        else:
+            first = min(
+                (a for a in expr.args if not self.is_number(a)), key=self.term_key
+            )
+        coeff = first.as_coeff_Mul()[0] if not self.is_number(first) else first
+        re = (
+            coeff.evalf(5).as_real_imag()[0] if self.is_number(coeff) else sp.Integer(1)
+        )
+        return bool(re.is_negative)
+
+    def factor_key(self, factor: sp.Expr) -> tuple:
+        """Order factors of a product: names and functions first, sums last."""
+        base = factor.as_base_exp()[0]
+        return (isinstance(base, sp.Add), _sort_key(factor, self.keys))
+
+    def term_key(self, term: sp.Expr) -> tuple:
+        """Order terms of a sum roughly as Autolev does: by degree, then by
+        the number of factors (``4*X^2 + 7*X*Y``), then by name."""
+        degree = 0
+        args = term.args if term.is_Mul else (term,)
+        factors = []
+        is_number = self.is_number
+        for factor in args:
+            if is_number(factor):
+                continue
+            factors.append(factor)
+            _, exp = factor.as_base_exp()
+            power = int(exp) if exp.is_Integer else 0
+            degree += power if power > 0 else 1
+        keys = self.keys
+        if len(factors) == len(args):  # the term itself (no numbers to drop)
+            rest = term if len(args) > 1 else factors[0]
+        elif len(factors) < 2:
+            rest = factors[0] if factors else _ONE
+        elif term.is_commutative:  # the key of their product, not formed
+            found = sorted([_key_of(f, keys) for f in factors])
+            product = (_MUL_KEY, (len(found), tuple(found)), _ONE_KEY, _ONE)
+            return (degree, len(factors), product)
+        else:  # a canonical product's factors stay canonical without numbers
+            rest = sp.Mul._from_args(factors)
+        return (degree, len(factors), _sort_key(rest, keys))
+
     # ------------------------------------------------------------ matrices
 
     def matrix(self, m: sp.MatrixBase) -> str:
@@ -345,101 +450,130 @@ class _AutolevPrinter:
         return "[" + "; ".join(rows) + "]"
 
 
-def _leading_negative(expr: sp.Add) -> bool:
-    """Whether the sum prints with a leading minus (first term negative)."""
-    numeric = [a for a in expr.args if a.is_number]
-    const = sp.Add(*numeric)
-    if const != 0:
-        first = const
-    else:
-        first = min((a for a in expr.args if not a.is_number), key=_term_key)
-    coeff = first.as_coeff_Mul()[0] if not first.is_number else first
-    re = coeff.evalf(5).as_real_imag()[0] if coeff.is_number else sp.Integer(1)
-    return bool(re.is_negative)
+class _Memos:
+    """Everything the printer remembers (see :func:`shared_keys`)."""
+
+    def __init__(self) -> None:
+        #: sort keys and number tests (a dict finds the same object by
+        #: identity before comparing, and an equal tree formed elsewhere)
+        self.keys: dict[Any, tuple] = {}
+        self.numbers: dict[Any, bool] = {}
+        #: printed forms (by digits and level) and coefficients' texts (by
+        #: digits)
+        self.shown: dict[tuple[int, bool], dict] = {}
+        self.coefficients: dict[int, dict] = {}
+        #: whether a sum prints with a leading minus, and the sum of its
+        #: terms' negatives
+        self.negative: dict[Any, bool] = {}
+        self.negations: dict[Any, Any] = {}
 
 
-#: sort keys already formed, while :func:`shared_keys` is in force (a
-#: transcript's responses share most of their subexpressions)
-_KEYS: list[dict] = []
-#: and which subexpressions are numbers (sympy's ``is_number`` walks the
-#: whole subtree again at each node the printer visits)
-_NUMBERS: list[dict] = []
+#: the memos in force (:func:`shared_keys`)
+_SHARED: list[_Memos] = []
 
 
 @contextlib.contextmanager
 def shared_keys() -> Iterator[None]:
     """Within this context every printed value shares one memo of sort keys
     (sympy's own cache holds 1000 and is soon overrun by a large model's
-    transcript, so each key was formed again, down to the leaves) and of
-    which subexpressions are numbers."""
-    _KEYS.append({})
-    _NUMBERS.append({})
+    transcript, so each key was formed again, down to the leaves), of which
+    subexpressions are numbers, and of printed forms (a transcript's
+    responses share most of their subexpressions)."""
+    _SHARED.append(_Memos())
     try:
         yield
     finally:
-        _KEYS.pop()
-        _NUMBERS.pop()
+        _SHARED.pop()
 
 
 _EXPR_IS_NUMBER = sp.Expr.is_number
 
 
-def _is_number(expr: Any) -> bool:
-    """``expr.is_number``, each node's answer formed once (see
-    :func:`shared_keys`): sympy's generic rule, all arguments numbers, is
-    followed here with the memo; a class with its own rule answers itself."""
-    memo = _NUMBERS[-1] if _NUMBERS else None
-    if memo is None:
-        return expr.is_number
-    return _number_in(expr, memo)
-
-
-def _number_in(expr: Any, memo: dict) -> bool:
-    found = memo.get(expr)
+def _number_in(expr: Any, known: dict) -> bool:
+    """``expr.is_number``, each node's answer formed once per ``known``:
+    sympy's generic rule, all arguments numbers, is followed here with the
+    memo (sympy's walks the whole subtree again at each node); a class with
+    its own rule answers itself."""
+    found = known.get(expr)
     if found is None:
         if type(expr).is_number is _EXPR_IS_NUMBER and expr.args:
-            found = all(_number_in(a, memo) for a in expr.args)
+            found = True
+            for a in expr.args:  # as ``all()``, stopping at the first no
+                if not _number_in(a, known):
+                    found = False
+                    break
         else:
             found = bool(expr.is_number)
-        memo[expr] = found
+        known[expr] = found
     return found
 
 
-def _sort_key(expr: Any, memo: dict) -> tuple:
+def _sort_key(expr: Any, known: dict) -> tuple:
     """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
-    per ``memo`` (sympy's ``Expr.sort_key``, written with the memo)."""
-    key = memo.get(expr)
-    if key is not None:
-        return key
-    if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
-        key = sp.default_sort_key(expr)
-    else:
-        coeff, rest = expr.as_coeff_Mul()
-        exp = sp.S.One
-        if rest.is_Pow:
-            base, exp = rest.as_base_exp()
-            if base is sp.S.Exp1:  # as sympy: E**x sorts as exp(x)
-                base, exp = sp.Function("exp")(exp), sp.S.One
-            rest = base
-        if rest.is_Dummy:
-            args: tuple = (rest.sort_key(),)
-        elif rest.is_Atom:
-            args = (str(rest),)
-        else:
-            if rest.is_Add:
-                parts = rest.as_ordered_terms()
-            elif rest.is_Mul:
-                cpart, ncpart = rest.args_cnc()
-                cpart.sort(key=lambda e: _sort_key(e, memo))
-                parts = cpart + ncpart
-            else:
-                parts = rest.args
-            args = tuple([_sort_key(a, memo) for a in parts])
-        key = (rest.class_key(), (len(args), args), _sort_key(exp, memo), coeff)
-    memo[expr] = key
+    per ``known`` (sympy's ``Expr.sort_key``, written with the memo; a
+    product's key is read off its arguments, without forming the product
+    after its coefficient as sympy's ``as_coeff_Mul`` does)."""
+    key = known.get(expr)
+    if key is None:
+        key = known[expr] = _new_sort_key(expr, known)
     return key
 
 
+def _key_of(expr: Any, known: dict) -> tuple:
+    """:func:`_sort_key`, a key already found without a further call."""
+    key = known.get(expr)
+    return key if key is not None else _sort_key(expr, known)
+
+
+def _new_sort_key(expr: Any, known: dict) -> tuple:
+    if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
+        return sp.default_sort_key(expr)
+    if expr.is_Mul:
+        args = expr.args
+        coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
+        if len(factors) > 1 and _plain_factors(expr, factors):
+            keys = sorted([_key_of(f, known) for f in factors])
+            return (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
+    coeff, rest = expr.as_coeff_Mul()
+    exp = sp.S.One
+    if rest.is_Pow:
+        base, exp = rest.as_base_exp()
+        if base is sp.S.Exp1:  # as sympy: E**x sorts as exp(x)
+            base, exp = sp.Function("exp")(exp), sp.S.One
+        rest = base
+    if rest.is_Dummy:
+        args = (rest.sort_key(),)
+    elif rest.is_Atom:
+        args = (str(rest),)
+    else:
+        if rest.is_Add:
+            parts = rest.as_ordered_terms()
+        elif rest.is_Mul:
+            cpart, ncpart = rest.args_cnc()
+            cpart.sort(key=lambda e: _sort_key(e, known))
+            parts = cpart + ncpart
+        else:
+            parts = rest.args
+        args = tuple([_sort_key(a, known) for a in parts])
+    return (rest.class_key(), (len(args), args), _sort_key(exp, known), coeff)
+
+
+def _plain_factors(product: sp.Mul, factors: tuple) -> bool:
+    """No number among ``factors`` (a canonical product has at most one, its
+    first argument) and all commutative: the factors sympy's
+    ``args_cnc`` gives back as they are."""
+    if product.is_commutative is not True:
+        return False
+    for f in factors:
+        if f.is_Number:
+            return False
+    return True
+
+
+_ONE = sp.S.One
+_MINUS_ONE = sp.S.NegativeOne
+_ONE_KEY = sp.S.One.sort_key()
+_MUL_KEY = sp.Mul.class_key()
 _EXPR_SORT_KEY = sp.Expr.sort_key
 
 
@@ -452,38 +586,6 @@ def sort_key_in(expr: Any, memo: dict) -> tuple:
 def is_number_in(expr: Any, memo: dict) -> bool:
     """``expr.is_number``, each node's answer formed once per ``memo``."""
     return _number_in(expr, memo)
-
-
-def _default_sort_key(expr: Any) -> tuple:
-    return _sort_key(expr, _KEYS[-1] if _KEYS else {})
-
-
-def _factor_key(factor: sp.Expr) -> tuple:
-    """Order factors of a product: names and functions first, sums last."""
-    base = factor.as_base_exp()[0]
-    return (isinstance(base, sp.Add), _default_sort_key(factor))
-
-
-def _term_key(term: sp.Expr) -> tuple:
-    """Order terms of a sum roughly as Autolev does: by degree, then by the
-    number of factors (``4*X^2 + 7*X*Y``), then by name."""
-    degree = 0
-    args = sp.Mul.make_args(term)
-    factors = []
-    for factor in args:
-        if _is_number(factor):
-            continue
-        factors.append(factor)
-        _, exp = factor.as_base_exp()
-        power = int(exp) if exp.is_Integer else 0
-        degree += power if power > 0 else 1
-    if len(factors) == len(args):  # the term itself (no numbers to drop)
-        rest = term if len(args) > 1 else factors[0]
-    elif len(factors) < 2:
-        rest = factors[0] if factors else sp.S.One
-    else:  # a canonical product's factors stay canonical without the numbers
-        rest = sp.Mul._from_args(factors)
-    return (degree, len(factors), _default_sort_key(rest))
 
 
 # ------------------------------------------------------- vectors, dyadics

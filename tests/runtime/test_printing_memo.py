@@ -1,0 +1,111 @@
+"""The transcript printer's remembered work gives what sympy and the printer
+without memos give (issue 35: the same bytes, each subexpression formed once)."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+from al2py_runtime.model import kinematics as kin
+from al2py_runtime.names import printing
+from al2py_runtime.names.printing import autolev_str, shared_keys, sort_key_in
+from sympy.physics.mechanics import dynamicsymbols
+
+t = dynamicsymbols._t
+Q1, Q2, U1, U2, U3 = dynamicsymbols("Q1 Q2 U1 U2 U3")
+A, B, C = sp.symbols("A B C", real=True)
+ATOMS = [Q1, Q2, U1, U2, U3, A, B, C, U1.diff(t), U2.diff(t), Q1.diff(t)]
+NUMBERS = [sp.Integer(2), sp.Integer(-3), sp.Rational(1, 2), sp.Float(0.25), sp.pi]
+
+
+def random_expr(rng: random.Random, depth: int) -> sp.Expr:
+    if depth == 0 or rng.random() < 0.2:
+        return rng.choice(ATOMS + NUMBERS[:2])
+    kind = rng.randrange(6)
+    parts = [random_expr(rng, depth - 1) for _ in range(rng.randint(2, 4))]
+    if kind == 0:
+        return sp.Add(*parts)
+    if kind == 1:
+        return rng.choice(NUMBERS) * sp.Mul(*parts)
+    if kind == 2:
+        return sp.Mul(*parts)
+    if kind == 3:
+        return parts[0] ** rng.choice([2, 3, -1, sp.Rational(1, 2)])
+    if kind == 4:
+        return rng.choice([sp.sin, sp.cos])(parts[0])
+    return sp.Add(*[rng.choice(NUMBERS) * p for p in parts])
+
+
+def nodes(expr: sp.Basic) -> list:
+    return list(sp.preorder_traversal(expr))
+
+
+def test_sort_keys_are_sympys():
+    """Every node's key, products' read off their factors, is sympy's."""
+    rng = random.Random(35)
+    memo: dict = {}
+    for _ in range(150):
+        expr = random_expr(rng, 4)
+        for node in nodes(expr):
+            assert sort_key_in(node, memo) == sp.default_sort_key(node), node
+
+
+def test_shared_subexpressions_formed_once(monkeypatch):
+    """A sum whose terms share subtrees (as written-out intermediates do)
+    prints each subexpression once, and prints what the printer without
+    its memo prints."""
+    expr = A + B
+    for k in range(12):
+        expr = expr * (expr + C) + k * U1
+    formed: list = []
+    form = printing._AutolevPrinter.form
+
+    def counting(self, e, top):
+        formed.append(e)
+        return form(self, e, top)
+
+    monkeypatch.setattr(printing._AutolevPrinter, "form", counting)
+    with shared_keys():
+        text = autolev_str(expr)
+    distinct = set(nodes(expr))
+    assert len(formed) <= 2 * len(distinct) < 200  # not once per occurrence
+    assert text.count("A+B") == 2**12
+
+    small = A + B
+    for k in range(5):
+        small = small * (small + C) + k * U1
+    with shared_keys():
+        remembered = autolev_str(small)
+
+    def unremembered(self, e, top):
+        if isinstance(e, sp.MatrixBase):
+            return self.matrix(e), printing._ATOM
+        return form(self, e, top)
+
+    monkeypatch.setattr(printing._AutolevPrinter, "form", form)
+    monkeypatch.setattr(printing._AutolevPrinter, "show", unremembered)
+    assert autolev_str(small) == remembered
+
+
+def test_collect_of_speeds_is_sympys():
+    """tidy's collect on the speeds and their rates: sympy's dictionary, and
+    as many of sympy's dummies made (their numbers order later sums)."""
+    rng = random.Random(7)
+    gens = [U1.diff(t), U2.diff(t), U1, U2, U3]
+    fast = 0
+    for _ in range(200):
+        expr = sp.expand(random_expr(rng, 3))
+        present = [g for g in gens if expr.has(g)]
+        if not present:
+            continue
+        start = sp.Dummy._count
+        ours = kin._collect(expr, present)
+        made = sp.Dummy._count - start
+        start = sp.Dummy._count
+        theirs = sp.collect(expr, present, evaluate=False)
+        assert sp.Dummy._count - start == made
+        assert list(ours.items()) == list(theirs.items())
+        fast += kin._plain_for(expr, set(present))
+    assert fast > 50  # most take the xreplace path; Q1' inside takes sympy's
+    assert not kin._plain_for(sp.expand(U1 * Q1.diff(t)), {U1})
+    assert not kin._plain_for(sp.Subs(U1 * A, A, 2), {U1})
