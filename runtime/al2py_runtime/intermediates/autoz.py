@@ -308,6 +308,11 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
         return 2 * negative > len(args)
     if any(a.is_Number or a.is_NumberSymbol for a in args):
         return expr.could_extract_minus_sign()
+    first = _first_term(args, key or sp.default_sort_key)
+    if first is not None:
+        c = first.as_coeff_Mul()[0]
+        if c.is_Rational:
+            return c.p < 0
     terms, _ = _as_terms(expr, key or sp.default_sort_key)
     seen = set()
     for term, (_, monom, ncpart) in terms:
@@ -325,6 +330,54 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
         if mine != theirs:
             return bool(mine < theirs)
     return False
+
+
+def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
+    """The first of a sum's terms ``args`` in the order of
+    ``as_ordered_terms``, for :func:`minus_first`: the term with the
+    largest monomial, lexicographically, over the generators sorted by
+    ``key`` (:func:`_as_terms`).  That term is found without sorting the
+    generators: the first generator (by ``key``) whose exponent is not the
+    same in every remaining term decides between them, the largest
+    exponent staying.  None (ask :func:`_as_terms`) when a term is not
+    commutative or has a numeric factor besides its coefficient, or two
+    terms share a monomial."""
+    terms = []
+    seen = set()
+    for term in args:
+        if term.is_Order or not term.is_commutative:
+            return None
+        rest = term.as_coeff_Mul()[1]
+        cpart: dict = {}
+        if rest is not sp.S.One:
+            for factor in sp.Mul.make_args(rest):
+                if factor.is_number:
+                    return None
+                if factor.is_Pow or isinstance(factor, sp.exp):
+                    base, exp = decompose_power(factor)
+                    cpart[base] = exp
+                else:
+                    cpart[factor] = 1
+        monomial = frozenset(cpart.items())
+        if monomial in seen:
+            return None
+        seen.add(monomial)
+        terms.append((term, cpart))
+    while len(terms) > 1:
+        exponents: dict[Any, list] = {}
+        for _, cpart in terms:
+            for base, exp in cpart.items():
+                exponents.setdefault(base, []).append(exp)
+        n = len(terms)
+        varying = [
+            base
+            for base, found in exponents.items()
+            if len(found) < n or any(e != found[0] for e in found)
+        ]
+        base = min(varying, key=key)
+        top = max(cpart.get(base, 0) for _, cpart in terms)
+        terms = [t for t in terms if t[1].get(base, 0) == top]
+    return terms[0][0]
 
 
 def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
@@ -380,7 +433,8 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     gives ``Mul(a, c, b)`` for each coefficient ``c`` of ``f`` and
     ``Mul(a, r, b)`` for its rest ``r``, as both make them, and a sum the
     sums of its terms' (sympy's constructors do not depend on the order of
-    the arguments)."""
+    the arguments), each formed as :func:`product_with` and :func:`total`
+    form them."""
     wanted = set(xs)
     memo: dict[Any, Any] = {}
     nonlinear = False
@@ -411,14 +465,14 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
                 for x, c in p[0].items():
                     coefs.setdefault(x, []).append(c)
                 rest.append(p[1])
-            out = {x: sp.Add(*c) for x, c in coefs.items()}, sp.Add(*rest)
+            out = {x: total(c) for x, c in coefs.items()}, total(rest)
         elif e.is_Mul and len(held) == 1:
             i = held[0]
-            before, after = args[:i], args[i + 1 :]
             inner, r = parts[i]
+            factors = _Factors(args)
             out = (
-                {x: sp.Mul(*before, c, *after) for x, c in inner.items()},
-                sp.Mul(*before, r, *after),
+                {x: product_with(args, i, c, factors) for x, c in inner.items()},
+                product_with(args, i, r, factors),
             )
         else:
             nonlinear = True
@@ -433,6 +487,49 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
         return [sp.S.Zero] * len(xs), w
     coefs, rest = top
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
+
+
+def _substitute(expr: Any, rule: dict) -> Any:
+    """``expr.xreplace(rule)`` (:func:`al2py_runtime.walks.xreplace`) where
+    ``rule``'s values are plain symbols: a product in which one factor is
+    replaced is formed by :func:`product_with`, a sum by :func:`total`
+    (sympy's results, without sympy's general case), each distinct part
+    once."""
+    allow_deep_recursion()
+    memo: dict[Any, tuple[Any, bool]] = {}
+
+    def walk(e: Any) -> tuple[Any, bool]:
+        if e in rule:
+            return rule[e], True
+        if e.is_Atom:
+            return e, False
+        found = memo.get(e)
+        if found is not None:
+            return found
+        if isinstance(e, Intermediate) and rule.keys().isdisjoint(e.walk_parts()):
+            memo[e] = out = (e, False)
+            return out
+        args = e.args
+        new = []
+        changed = []
+        for i, a in enumerate(args):
+            b, c = walk(a)
+            new.append(b)
+            if c:
+                changed.append(i)
+        if not changed:
+            out = (e, False)
+        elif e.is_Mul and len(changed) == 1:
+            i = changed[0]
+            out = (product_with(args, i, new[i]), True)
+        elif e.is_Add:
+            out = (total(new), True)
+        else:
+            out = (e.func(*new), True)
+        memo[e] = out
+        return out
+
+    return walk(expr)[0] if rule else expr
 
 
 def _compare(a: Any, b: Any) -> int:
@@ -531,11 +628,35 @@ def _plain_base(a: Any) -> Any:
 _PLAIN = (Intermediate, AppliedUndef)
 
 
-def product_with(args: tuple, i: int, d: Any) -> Any:
+class _Factors:
+    """What :func:`product_with` needs of a product's arguments, found once
+    per product (the chain rule asks it once per factor that holds the
+    variable, and per variable): the rational coefficient and where the
+    other factors start, each factor's base (:func:`_plain_base`), the
+    factors with none, and whether the bases are distinct."""
+
+    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct")
+
+    def __init__(self, args: tuple) -> None:
+        first = args[0]
+        if first.is_Number:
+            self.coeff, self.start = first, 1
+        else:
+            self.coeff, self.start = sp.S.One, 0
+        self.bases = [_plain_base(a) for a in args[self.start :]]
+        self.odd = frozenset(
+            j + self.start for j, b in enumerate(self.bases) if b is None
+        )
+        self.plain = {b for b in self.bases if b is not None}
+        self.distinct = len(self.plain) + len(self.odd) == len(self.bases)
+
+
+def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -> Any:
     """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
     product's (canonical) arguments and ``d`` the derivative of factor
     ``i`` by the chain rule: a rational number, an intermediate, another
     plain factor (``sin(q)``), or a rational times plain factors.
+    ``factors``: ``_Factors(args)``, when the caller keeps it.
 
     sympy's ``Mul.flatten`` then only multiplies the rational coefficients
     and sorts the factors (by ``Basic.compare``), when no factor is a
@@ -558,31 +679,41 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         n, new_factors = sp.S.One, (d,)
     else:
         return sp.Mul(*args[:i], d, *args[i + 1 :])
-    others = args[:i] + args[i + 1 :]
-    if others and others[0].is_Number:
-        c, factors = others[0], others[1:]
-        if not c.is_Rational:
+    if factors is None:
+        factors = _Factors(args)
+    start = factors.start
+    c = factors.coeff
+    if i < start or not c.is_Rational or not factors.distinct:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    odd = factors.odd
+    if odd and (len(odd) > 1 or i not in odd):
+        return sp.Mul(*args[:i], d, *args[i + 1 :])  # another factor is not plain
+    own = factors.bases[i - start]  # factor i's base, no longer there
+    plain = factors.plain
+    if len(new_factors) == 1:
+        base = _plain_base(new_factors[0])
+        if base is None or (base in plain and base != own):
             return sp.Mul(*args[:i], d, *args[i + 1 :])
     else:
-        c, factors = sp.S.One, others
-    bases = set()
-    for a in (*factors, *new_factors):
-        base = _plain_base(a)
-        if base is None or base in bases:
-            return sp.Mul(*args[:i], d, *args[i + 1 :])
-        bases.add(base)
+        seen = set()
+        for a in new_factors:
+            base = _plain_base(a)
+            if base is None or base in seen or (base in plain and base != own):
+                return sp.Mul(*args[:i], d, *args[i + 1 :])
+            seen.add(base)
     coeff = c * n
     if coeff is sp.S.Zero:
         return sp.S.Zero
-    if len(factors) + len(new_factors) == 1 and (*factors, *new_factors)[0].is_Add:
+    rest = args[start:i] + args[i + 1 :]
+    if len(rest) + len(new_factors) == 1 and (*rest, *new_factors)[0].is_Add:
         if coeff is not sp.S.One:
             return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
     if len(new_factors) == 1:
         z = new_factors[0]
-        k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
-        new = [*factors[:k], z, *factors[k:]]
+        k = bisect.bisect_left(rest, _BY_COMPARE(z), key=_BY_COMPARE)
+        new = [*rest[:k], z, *rest[k:]]
     else:
-        new = sorted((*factors, *new_factors), key=_BY_COMPARE)
+        new = sorted((*rest, *new_factors), key=_BY_COMPARE)
     if coeff is not sp.S.One:
         new.insert(0, coeff)
     if not new:
@@ -630,36 +761,50 @@ def total(terms: Sequence[Any]) -> Any:
     sums (a number's power, an ``Order``, a non-commutative term or one that
     is not an ``Expr`` go to sympy).  Like terms are collected by their
     coefficients, zeros dropped, the rest sorted by ``Basic.compare`` with
-    the number first, as sympy does, without sympy's general case."""
+    the number first, as sympy does, without sympy's general case.
+
+    A term is collected under the tuple of its factors other than the
+    coefficient (``(x,)`` for a term that is not a product), which is
+    what sympy's key, that product, is made of: no product is formed
+    to be a key."""
     if not global_parameters.evaluate:
         return sp.Add(*terms)
+    if len(terms) < 2:  # sympy's Add of one term is the term
+        return terms[0] if terms else sp.S.Zero
     number = sp.S.Zero
-    collected: dict[Any, Any] = {}
-    #: key -> the term itself, while no other term has joined it (a product
-    #: of its coefficient and of the key's factors, kept as it is)
-    alone: dict[Any, Any] = {}
+    collected: dict[tuple, Any] = {}
+    #: key -> the term itself, while no other term has joined it
+    alone: dict[tuple, Any] = {}
     seq = list(terms)
     for o in seq:  # a sum's terms join the end, as in Add.flatten
-        if o.is_Add and o.is_commutative:
+        if o.is_Mul:
+            args = o.args
+            c = args[0]
+            if c.is_Number:
+                if not c.is_finite:
+                    return sp.Add(*terms)
+                key = args[1:]
+            else:
+                c, key = sp.S.One, args
+            if not o.is_commutative:
+                return sp.Add(*terms)
+        elif o.is_Add and o.is_commutative:
             seq.extend(o.args)
             continue
-        if o.is_Number:
+        elif o.is_Number:
             if not o.is_finite:
                 return sp.Add(*terms)
             number += o
             continue
-        if o.is_Order or not isinstance(o, sp.Expr) or not o.is_commutative:
-            return sp.Add(*terms)
-        if o.is_Mul and o.args[0].is_Number:
-            c = o.args[0]
-            if not c.is_finite:
-                return sp.Add(*terms)
-            rest = o.args[1:]
-            key = rest[0] if len(rest) == 1 else _product(rest)
-        elif o.is_Pow and o.base.is_Number:
+        elif (
+            o.is_Order
+            or not isinstance(o, sp.Expr)
+            or not o.is_commutative
+            or (o.is_Pow and o.base.is_Number)
+        ):
             return sp.Add(*terms)
         else:
-            c, key = sp.S.One, o
+            c, key = sp.S.One, (o,)
         found = collected.get(key)
         if found is None:
             collected[key] = c
@@ -669,19 +814,32 @@ def total(terms: Sequence[Any]) -> Any:
             alone.pop(key, None)
     out = []
     for key, c in collected.items():
-        if c.is_zero:
+        o = alone.get(key)
+        if o is not None:
+            # sympy's Add.flatten rebuilds it from its coefficient and key
+            # as it is (a product's arguments, a product with a sum, a
+            # plain factor times a number): the term itself
+            if c.is_zero:
+                continue
+            if c is sp.S.One or len(key) > 1 or isinstance(key[0], _SIMPLE):
+                out.append(o)
+                continue
+        elif c.is_zero:
             continue
         if c is sp.S.One:
-            out.append(key)
-        elif key.is_Mul:
-            # _product((c, *key.args)): the term itself when it stood alone
-            o = alone.get(key)
-            out.append(o if o is not None else _product((c, *key.args)))
-        elif key.is_Add:  # 2*(a + b) stays a product, as in Add.flatten
-            out.append(sp.Mul(c, key, evaluate=False))
+            out.append(key[0] if len(key) == 1 else _product(key))
+        elif len(key) > 1:
+            out.append(_product((c, *key)))
+        elif key[0].is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key[0], evaluate=False))
         else:
-            out.append(sp.Mul(c, key))
+            out.append(sp.Mul(c, key[0]))
     return _sum(number, out)
+
+
+#: factors ``f`` for which ``Mul(c, f)`` (``c`` a finite number, not 0 or
+#: 1) is the product of exactly these two arguments, ``c`` first
+_SIMPLE = (Intermediate, AppliedUndef, sp.Symbol, sp.Derivative, sp.sin, sp.cos)
 
 
 def _sum(number: Any, terms: list) -> Any:
@@ -763,6 +921,7 @@ class Intermediates:
         self._numbers: dict[Any, Any] = {}
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
+        self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1083,7 +1242,7 @@ class Intermediates:
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
         plain = [sp.Dummy() for _ in present]
-        w = xreplace(expr, dict(zip(present, plain, strict=True)))
+        w = _substitute(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
@@ -1325,14 +1484,25 @@ class Intermediates:
                     ]
                 )
         elif e.is_Add:
-            out = total([self._pd(a, x, memo, given, rate) for a in e.args])
+            out = total(
+                [
+                    d
+                    for a in e.args
+                    if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
+                ]
+            )
         elif e.is_Mul:
             args = e.args
             terms = []
+            factors = None
             for i, a in enumerate(args):
+                if a.is_Number:
+                    continue
                 d = self._pd(a, x, memo, given, rate)
                 if d is not _ZERO:
-                    terms.append(product_with(args, i, d))
+                    if factors is None:
+                        factors = self._factors_of(e)
+                    terms.append(product_with(args, i, d, factors))
             out = total(terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given, rate)
@@ -1357,6 +1527,14 @@ class Intermediates:
                 out = e.xreplace({x: s}).diff(s).xreplace({s: x})
         memo[e] = out
         return out
+
+    def _factors_of(self, e: Any) -> _Factors:
+        """``_Factors(e.args)`` of a product, found once per product (it is
+        differentiated by each of its variables)."""
+        found = self._factors.get(e)
+        if found is None:
+            found = self._factors[e] = _Factors(e.args)
+        return found
 
     def time_derivative(self, e: Any, rate: Callable[[Any], Any], memo: dict) -> Any:
         """``de/dt`` by the chain rule, where ``rate(x)`` is the derivative of
@@ -1386,14 +1564,25 @@ class Intermediates:
             d = self.time_derivative(e.book.definition(e), rate, memo)
             out = self.name(d)
         elif e.is_Add:
-            out = total([self.time_derivative(a, rate, memo) for a in e.args])
+            out = total(
+                [
+                    d
+                    for a in e.args
+                    if (d := self.time_derivative(a, rate, memo)) is not _ZERO
+                ]
+            )
         elif e.is_Mul:
             args = e.args
             terms = []
+            factors = None
             for i, a in enumerate(args):
+                if a.is_Number:
+                    continue
                 d = self.time_derivative(a, rate, memo)
                 if d is not _ZERO:
-                    terms.append(product_with(args, i, d))
+                    if factors is None:
+                        factors = self._factors_of(e)
+                    terms.append(product_with(args, i, d, factors))
             out = total(terms)
         elif e.is_Pow and not e.exp.has(_T):
             d = self.time_derivative(e.base, rate, memo)
