@@ -701,7 +701,7 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
             if base is None or base in seen or (base in plain and base != own):
                 return sp.Mul(*args[:i], d, *args[i + 1 :])
             seen.add(base)
-    coeff = c * n
+    coeff = c if n is sp.S.One else n if c is sp.S.One else c * n
     if coeff is sp.S.Zero:
         return sp.S.Zero
     rest = args[start:i] + args[i + 1 :]
@@ -922,6 +922,8 @@ class Intermediates:
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
         self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
+        #: a set of variables -> the sort keys of its variables, in order
+        self._var_keys: dict[frozenset, tuple] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1018,7 +1020,14 @@ class Intermediates:
         """``expr`` with each part larger than :attr:`LIMIT` nodes named
         (bottom-up), so that no definition is long."""
         Z = self.Z
-        if all(self._within(a, self.LIMIT) for a in expr.args):
+        for a in expr.args:
+            if not (
+                a.is_Atom
+                or isinstance(a, Z | AppliedUndef | sp.Derivative)
+                or self._within(a, self.LIMIT)
+            ):
+                break
+        else:
             return expr  # no part is larger: the walk below changes nothing
         memo: dict[Any, tuple[Any, int]] = {}
 
@@ -1155,12 +1164,19 @@ class Intermediates:
         if found is None:
             if isinstance(x, self.Z):
                 args = x.args
-                found = (
-                    x.class_key(),
-                    (len(args), tuple([self._sort_key(a) for a in args])),
-                    _ONE_KEY,
-                    sp.S.One,
-                )
+                if self._canonical(x):
+                    # its variables' keys, kept per set of variables (many
+                    # intermediates share one)
+                    varset = self._varsets[args[0].p]
+                    keys = self._var_keys.get(varset)
+                    if keys is None:
+                        keys = self._var_keys[varset] = tuple(
+                            [self._sort_key(a) for a in args[1:]]
+                        )
+                    keys = (self._sort_key(args[0]), *keys)
+                else:
+                    keys = tuple([self._sort_key(a) for a in args])
+                found = (x.class_key(), (len(args), keys), _ONE_KEY, sp.S.One)
             elif x.is_Add or x.is_Mul:
                 found = self._compound_key(x)
             else:
@@ -1484,13 +1500,14 @@ class Intermediates:
                     ]
                 )
         elif e.is_Add:
-            out = total(
-                [
-                    d
-                    for a in e.args
-                    if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
-                ]
-            )
+            terms = []
+            for a in e.args:
+                d = memo.get(a)  # most parts are shared: no call
+                if d is None:
+                    d = self._pd(a, x, memo, given, rate)
+                if d is not _ZERO:
+                    terms.append(d)
+            out = total(terms)
         elif e.is_Mul:
             args = e.args
             terms = []
@@ -1498,7 +1515,9 @@ class Intermediates:
             for i, a in enumerate(args):
                 if a.is_Number:
                     continue
-                d = self._pd(a, x, memo, given, rate)
+                d = memo.get(a)  # most factors are shared: no call
+                if d is None:
+                    d = self._pd(a, x, memo, given, rate)
                 if d is not _ZERO:
                     if factors is None:
                         factors = self._factors_of(e)
