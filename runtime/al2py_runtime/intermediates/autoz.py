@@ -33,7 +33,6 @@ Z1
 
 from __future__ import annotations
 
-import bisect
 import functools
 import itertools
 import math
@@ -710,8 +709,14 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
             return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
     if len(new_factors) == 1:
         z = new_factors[0]
-        k = bisect.bisect_left(rest, _BY_COMPARE(z), key=_BY_COMPARE)
-        new = [*rest[:k], z, *rest[k:]]
+        lo, hi = 0, len(rest)  # bisect_left by Basic.compare, without its keys
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if _compare(rest[mid], z) < 0:
+                lo = mid + 1
+            else:
+                hi = mid
+        new = [*rest[:lo], z, *rest[lo:]]
     else:
         new = sorted((*rest, *new_factors), key=_BY_COMPARE)
     if coeff is not sp.S.One:
