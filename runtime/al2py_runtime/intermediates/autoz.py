@@ -447,6 +447,13 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
             return None
         if e in memo:
             return memo[e]
+        if isinstance(e, Intermediate):
+            # its parts are kept (walk_parts): an x among them is inside a
+            # function (nonlinear), and without one it holds none
+            if wanted.isdisjoint(e.walk_parts()):
+                return None
+            nonlinear = True
+            return None
         args = e.args
         parts = [walk(a) for a in args]
         if nonlinear:
@@ -1109,16 +1116,18 @@ class Intermediates:
         derivatives: set = set()
         bad: list = []
         seen: set = set()
-        stack = [expr]
+        #: the sets of variables of the canonical intermediates met (many
+        #: share one, and each is kept as one object: their union is taken
+        #: once per set, not once per intermediate)
+        shared: set = set()
+        varsets = self._varsets
         Z = self.Z
+        stack = [expr]
         while stack:
             e = stack.pop()
             if isinstance(e, Z):
                 if self._canonical(e):  # kept per instance
-                    k = e.args[0].p
-                    variables |= self._varsets[k]  # hashes kept: no sympy call
-                    if self._dvars[k]:
-                        derivatives.update(self._dvars[k])
+                    shared.add(varsets[e.args[0].p])
                     continue
                 bad.append(e)
                 todo = e.args[1:]
@@ -1136,7 +1145,17 @@ class Intermediates:
             for a in todo:
                 if a not in seen:
                     seen.add(a)
-                    stack.append(a)
+                    if isinstance(a, Z) and self._canonical(a):
+                        shared.add(varsets[a.args[0].p])  # no need to stack it
+                    else:
+                        stack.append(a)
+        if shared:
+            variables.update(*shared)
+            orders = self._orders
+            for varset in shared:
+                found = orders[varset][2]  # the derivatives among them
+                if found:
+                    derivatives.update(found)
         return variables, derivatives, bad
 
     def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
@@ -1470,10 +1489,19 @@ class Intermediates:
         # ``e == x`` (x is a variable, so equal only with an equal type:
         # functions of time made twice are equal classes, not one, and only
         # a function of time's class compares equal to another), without
-        # sympy's ``__eq__`` on every node walked, nor the metaclass's.
+        # sympy's ``__eq__`` on every node walked, nor the metaclass's
+        # unless the classes hash alike (its test builds sympy's class keys
+        # of both, a tenth of a derivative's walk over the other functions
+        # of time; a function of time's class keeps its hash).
         if e is x or (
-            (type(e) is type(x) or isinstance(e, AppliedUndef))
-            and type(e) == type(x)  # noqa: E721
+            (
+                type(e) is type(x)
+                or (
+                    isinstance(e, AppliedUndef)
+                    and hash(type(e)) == hash(type(x))
+                    and type(e) == type(x)  # noqa: E721
+                )
+            )
             and e == x
         ):
             return sp.S.One
