@@ -53,7 +53,13 @@ from ..vocabulary import complex_functions
 from ..walks import allow_deep_recursion, appearing, atoms, xreplace
 from .elimination import eliminate
 
-__all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
+__all__ = [
+    "Intermediate",
+    "Intermediates",
+    "has_intermediates",
+    "substitute",
+    "trivial",
+]
 
 _T = dynamicsymbols._t
 _VARIABLE = (AppliedUndef, sp.Derivative)
@@ -495,14 +501,17 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
 
 
-def _substitute(expr: Any, rule: dict) -> Any:
-    """``expr.xreplace(rule)`` (:func:`al2py_runtime.walks.xreplace`) where
-    ``rule``'s values are plain symbols: a product in which one factor is
-    replaced is formed by :func:`product_with`, a sum by :func:`total`
-    (sympy's results, without sympy's general case), each distinct part
-    once."""
+def substitute(expr: Any, rule: dict, memo: dict | None = None) -> Any:
+    """``expr.xreplace(rule)``, as :func:`al2py_runtime.walks.xreplace`
+    gives it, each distinct part once, where a product in which one factor
+    is replaced is formed by :func:`product_with` and a sum by
+    :func:`total` (sympy's results, without sympy's general case when the
+    parts allow).  ``memo`` may be shared by calls with the same ``rule``."""
+    if not rule or not isinstance(expr, sp.Basic):
+        return expr
     allow_deep_recursion()
-    memo: dict[Any, tuple[Any, bool]] = {}
+    if memo is None:
+        memo = {}
 
     def walk(e: Any) -> tuple[Any, bool]:
         if e in rule:
@@ -535,7 +544,7 @@ def _substitute(expr: Any, rule: dict) -> Any:
         memo[e] = out
         return out
 
-    return walk(expr)[0] if rule else expr
+    return walk(expr)[0]
 
 
 def _compare(a: Any, b: Any) -> int:
@@ -1282,7 +1291,7 @@ class Intermediates:
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
         plain = [sp.Dummy() for _ in present]
-        w = _substitute(expr, dict(zip(present, plain, strict=True)))
+        w = substitute(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
