@@ -50,7 +50,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import allow_deep_recursion, appearing, atoms, xreplace
+from ..walks import allow_deep_recursion, appearing, atoms
 from .elimination import eliminate
 
 __all__ = [
@@ -1266,7 +1266,7 @@ class Intermediates:
             if found is None:
                 found = self._rebased[z] = self.name(self.definition(z))
             rule[z] = found
-        return xreplace(expr, rule)
+        return substitute(expr, rule)
 
     def _name_rates(self, expr: Any) -> Any:
         """:meth:`name`, and for an expression with derivatives that are not
@@ -1306,7 +1306,7 @@ class Intermediates:
                 if appearing(c, plain):
                     return expr  # not linear: keep it as it is (found early)
                 coefs.append(c)
-            rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
+            rest = substitute(w, dict.fromkeys(plain, sp.S.Zero))
             if appearing(rest, plain):
                 return expr
         return self.name(rest) + sp.Add(
@@ -1334,7 +1334,7 @@ class Intermediates:
         body = self._defs[k]
         if self._canonical(z):
             return body
-        return xreplace(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
+        return substitute(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
 
     def is_real(self, z: Intermediate) -> bool | None:
         k = _number(z)
