@@ -63,6 +63,9 @@ __all__ = [
 
 _T = dynamicsymbols._t
 _VARIABLE = (AppliedUndef, sp.Derivative)
+#: the functions whose argument ``trivial`` looks at (a tuple: ``isinstance``
+#: with ``a | b`` would build the union on every call)
+_TRIG = (sp.sin, sp.cos, sp.tan)
 #: sympy's zero is one object (``Integer(0) is S.Zero``): comparing by identity
 #: is the same test as ``== 0`` for sympy results, without sympy's ``__eq__``.
 _ZERO = sp.S.Zero
@@ -145,7 +148,7 @@ class Intermediate(sp.Function):
         for j, a in enumerate(args):
             if a == s:
                 return self.book.partial(self, j)
-        if s.is_Symbol or isinstance(s, AppliedUndef | sp.Derivative):
+        if s.is_Symbol or isinstance(s, _VARIABLE):
             return sp.S.Zero
         return super()._eval_derivative(s)
 
@@ -238,14 +241,19 @@ class Intermediate(sp.Function):
 _ONE_KEY = sp.S.One.sort_key()
 
 
+#: what is one node of a tree for naming: an intermediate, a function of time
+#: or a derivative
+_OWN_NODE = (Intermediate, AppliedUndef, sp.Derivative)
+
+
 def trivial(expr: Any) -> bool:
     """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
     intermediate."""
-    if expr.is_Atom or isinstance(expr, Intermediate | AppliedUndef | sp.Derivative):
+    if expr.is_Atom or isinstance(expr, _OWN_NODE):
         return True
     if expr.is_Mul and len(expr.args) == 2 and expr.args[0].is_Number:
         return trivial(expr.args[1]) and not expr.args[1].is_Mul
-    if isinstance(expr, sp.sin | sp.cos | sp.tan) and (
+    if isinstance(expr, _TRIG) and (
         expr.args[0].is_Atom or isinstance(expr.args[0], AppliedUndef)
     ):
         return True
@@ -943,6 +951,8 @@ class Intermediates:
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
         self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
+        #: one node of a tree for _split (a tuple, for isinstance)
+        self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
         self._var_keys: dict[frozenset, tuple] = {}
 
@@ -1041,19 +1051,16 @@ class Intermediates:
         """``expr`` with each part larger than :attr:`LIMIT` nodes named
         (bottom-up), so that no definition is long."""
         Z = self.Z
+        one = self._one_node
         for a in expr.args:
-            if not (
-                a.is_Atom
-                or isinstance(a, Z | AppliedUndef | sp.Derivative)
-                or self._within(a, self.LIMIT)
-            ):
+            if not (a.is_Atom or isinstance(a, one) or self._within(a, self.LIMIT)):
                 break
         else:
             return expr  # no part is larger: the walk below changes nothing
         memo: dict[Any, tuple[Any, int]] = {}
 
         def walk(e: Any, top: bool) -> tuple[Any, int]:
-            if e.is_Atom or isinstance(e, Z | AppliedUndef | sp.Derivative):
+            if e.is_Atom or isinstance(e, one):
                 return e, 1
             found = memo.get(e)
             if found is not None and not top:
@@ -1086,7 +1093,7 @@ class Intermediates:
         """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
         counts them (an intermediate, a function of time or a derivative is
         one node), counting no further than ``limit + 1``."""
-        Z = self.Z
+        one = self._one_node
         stack = [e]
         n = 0
         while stack:
@@ -1094,7 +1101,7 @@ class Intermediates:
             n += 1
             if n > limit:
                 return False
-            if not (x.is_Atom or isinstance(x, Z | AppliedUndef | sp.Derivative)):
+            if not (x.is_Atom or isinstance(x, one)):
                 stack.extend(x.args)
         return True
 
@@ -1372,7 +1379,7 @@ class Intermediates:
                 if not x.exp.is_Rational:
                     return False
                 stack.append(x.base)
-            elif isinstance(x, sp.sin | sp.cos | sp.tan):
+            elif isinstance(x, _TRIG):
                 stack.append(x.args[0])
             elif x.is_Number or x.is_Symbol or isinstance(x, AppliedUndef):
                 if x.is_real is not True:
@@ -2011,7 +2018,7 @@ def _num(e: Any, env: dict) -> complex:
 
         y, x = (_num(a, env) for a in e.args)
         return complex(math.atan2(y.real, x.real))
-    if e.is_Symbol or isinstance(e, AppliedUndef | sp.Derivative):
+    if e.is_Symbol or isinstance(e, _VARIABLE):
         raise ValueError(f"no value for {e}")
     if isinstance(e, Intermediate):
         return number(e, env)
