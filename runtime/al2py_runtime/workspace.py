@@ -1177,8 +1177,11 @@ def _xreplace(expr: Any, table: dict, memo: dict | None = None) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: _xreplace(e, table, memo))
     if isinstance(expr, sp.Basic):
-        # sympy's result, shared parts once
-        return walks.xreplace(expr, table, memo)
+        # sympy's result, shared parts once, the products and sums rebuilt
+        # without sympy's general case where their parts allow
+        from .intermediates.autoz import substitute
+
+        return substitute(expr, table, memo)
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr

@@ -217,6 +217,41 @@ def test_minus_and_total_are_sympys_own():
         assert _same_tree(autoz.total(terms), sp.Add(*terms)), terms
 
 
+def test_substitute_is_sympys_xreplace():
+    """``substitute`` (the workspace's right-hand sides, ``name_linear``'s
+    plain symbols) gives the objects sympy's ``xreplace`` gives: a product
+    with one factor replaced is formed by ``product_with``, a sum by
+    ``total``, and values that are numbers, sums, products, powers or
+    another factor of the same product go to sympy's own rules."""
+    b = Intermediates()
+    z1 = b.name(sp.cos(q1) * sp.sin(q2) + L * sp.cos(q2))
+    z2 = b.name(z1**2 * M + sp.sin(q1) * u1)
+    x, y = sp.symbols("x y")
+    exprs = [
+        2 * z1 * u1 + 3 * z2 * q1.diff() - L * u1 * M,
+        -u1 * z1 * sp.sin(q2) + (L + u1) * z2 + u1**2 * M + sp.S(4),
+        sp.Mul(3, L + u1, evaluate=False) + z1 * u1 * q1.diff(),
+    ]
+    rules = [
+        {u1: x},
+        {u1: x, q1.diff(): y},
+        {u1: sp.S.Zero},
+        {u1: sp.S(2)},
+        {u1: L + M},
+        {u1: -2 * L * z1},
+        {u1: L},  # combines with the product's own L
+        {u1: z1},  # combines with z1: a power
+        {u1: sp.sqrt(2)},
+        {L: M, u1: x * y},
+    ]
+    for e in exprs:
+        for rule in rules:
+            assert _same_tree(autoz.substitute(e, rule), e.xreplace(rule)), (e, rule)
+    memo: dict = {}
+    for e in exprs:  # a memo shared by calls with one rule
+        assert _same_tree(autoz.substitute(e, rules[1], memo), e.xreplace(rules[1]))
+
+
 def test_partial_derivatives_share_one_memo_per_variable(book):
     """Every ``D()`` by one variable reuses the book's memo: the same
     results as fresh walks, and an intermediate's partial named once."""

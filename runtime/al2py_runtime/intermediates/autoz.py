@@ -33,7 +33,6 @@ Z1
 
 from __future__ import annotations
 
-import bisect
 import functools
 import itertools
 import math
@@ -51,13 +50,22 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import allow_deep_recursion, appearing, atoms, xreplace
+from ..walks import allow_deep_recursion, appearing, atoms
 from .elimination import eliminate
 
-__all__ = ["Intermediate", "Intermediates", "has_intermediates", "trivial"]
+__all__ = [
+    "Intermediate",
+    "Intermediates",
+    "has_intermediates",
+    "substitute",
+    "trivial",
+]
 
 _T = dynamicsymbols._t
 _VARIABLE = (AppliedUndef, sp.Derivative)
+#: the functions whose argument ``trivial`` looks at (a tuple: ``isinstance``
+#: with ``a | b`` would build the union on every call)
+_TRIG = (sp.sin, sp.cos, sp.tan)
 #: sympy's zero is one object (``Integer(0) is S.Zero``): comparing by identity
 #: is the same test as ``== 0`` for sympy results, without sympy's ``__eq__``.
 _ZERO = sp.S.Zero
@@ -140,7 +148,7 @@ class Intermediate(sp.Function):
         for j, a in enumerate(args):
             if a == s:
                 return self.book.partial(self, j)
-        if s.is_Symbol or isinstance(s, AppliedUndef | sp.Derivative):
+        if s.is_Symbol or isinstance(s, _VARIABLE):
             return sp.S.Zero
         return super()._eval_derivative(s)
 
@@ -233,14 +241,19 @@ class Intermediate(sp.Function):
 _ONE_KEY = sp.S.One.sort_key()
 
 
+#: what is one node of a tree for naming: an intermediate, a function of time
+#: or a derivative
+_OWN_NODE = (Intermediate, AppliedUndef, sp.Derivative)
+
+
 def trivial(expr: Any) -> bool:
     """Not worth a name: numbers, symbols, ``-x``, ``2*x``, ``sin(q)``, an
     intermediate."""
-    if expr.is_Atom or isinstance(expr, Intermediate | AppliedUndef | sp.Derivative):
+    if expr.is_Atom or isinstance(expr, _OWN_NODE):
         return True
     if expr.is_Mul and len(expr.args) == 2 and expr.args[0].is_Number:
         return trivial(expr.args[1]) and not expr.args[1].is_Mul
-    if isinstance(expr, sp.sin | sp.cos | sp.tan) and (
+    if isinstance(expr, _TRIG) and (
         expr.args[0].is_Atom or isinstance(expr.args[0], AppliedUndef)
     ):
         return True
@@ -308,6 +321,11 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
         return 2 * negative > len(args)
     if any(a.is_Number or a.is_NumberSymbol for a in args):
         return expr.could_extract_minus_sign()
+    first = _first_term(args, key or sp.default_sort_key)
+    if first is not None:
+        c = first.as_coeff_Mul()[0]
+        if c.is_Rational:
+            return c.p < 0
     terms, _ = _as_terms(expr, key or sp.default_sort_key)
     seen = set()
     for term, (_, monom, ncpart) in terms:
@@ -325,6 +343,54 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
         if mine != theirs:
             return bool(mine < theirs)
     return False
+
+
+def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
+    """The first of a sum's terms ``args`` in the order of
+    ``as_ordered_terms``, for :func:`minus_first`: the term with the
+    largest monomial, lexicographically, over the generators sorted by
+    ``key`` (:func:`_as_terms`).  That term is found without sorting the
+    generators: the first generator (by ``key``) whose exponent is not the
+    same in every remaining term decides between them, the largest
+    exponent staying.  None (ask :func:`_as_terms`) when a term is not
+    commutative or has a numeric factor besides its coefficient, or two
+    terms share a monomial."""
+    terms = []
+    seen = set()
+    for term in args:
+        if term.is_Order or not term.is_commutative:
+            return None
+        rest = term.as_coeff_Mul()[1]
+        cpart: dict = {}
+        if rest is not sp.S.One:
+            for factor in sp.Mul.make_args(rest):
+                if factor.is_number:
+                    return None
+                if factor.is_Pow or isinstance(factor, sp.exp):
+                    base, exp = decompose_power(factor)
+                    cpart[base] = exp
+                else:
+                    cpart[factor] = 1
+        monomial = frozenset(cpart.items())
+        if monomial in seen:
+            return None
+        seen.add(monomial)
+        terms.append((term, cpart))
+    while len(terms) > 1:
+        exponents: dict[Any, list] = {}
+        for _, cpart in terms:
+            for base, exp in cpart.items():
+                exponents.setdefault(base, []).append(exp)
+        n = len(terms)
+        varying = [
+            base
+            for base, found in exponents.items()
+            if len(found) < n or any(e != found[0] for e in found)
+        ]
+        base = min(varying, key=key)
+        top = max(cpart.get(base, 0) for _, cpart in terms)
+        terms = [t for t in terms if t[1].get(base, 0) == top]
+    return terms[0][0]
 
 
 def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
@@ -380,7 +446,8 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
     gives ``Mul(a, c, b)`` for each coefficient ``c`` of ``f`` and
     ``Mul(a, r, b)`` for its rest ``r``, as both make them, and a sum the
     sums of its terms' (sympy's constructors do not depend on the order of
-    the arguments)."""
+    the arguments), each formed as :func:`product_with` and :func:`total`
+    form them."""
     wanted = set(xs)
     memo: dict[Any, Any] = {}
     nonlinear = False
@@ -394,6 +461,13 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
             return None
         if e in memo:
             return memo[e]
+        if isinstance(e, Intermediate):
+            # its parts are kept (walk_parts): an x among them is inside a
+            # function (nonlinear), and without one it holds none
+            if wanted.isdisjoint(e.walk_parts()):
+                return None
+            nonlinear = True
+            return None
         args = e.args
         parts = [walk(a) for a in args]
         if nonlinear:
@@ -411,14 +485,14 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
                 for x, c in p[0].items():
                     coefs.setdefault(x, []).append(c)
                 rest.append(p[1])
-            out = {x: sp.Add(*c) for x, c in coefs.items()}, sp.Add(*rest)
+            out = {x: total(c) for x, c in coefs.items()}, total(rest)
         elif e.is_Mul and len(held) == 1:
             i = held[0]
-            before, after = args[:i], args[i + 1 :]
             inner, r = parts[i]
+            factors = _Factors(args)
             out = (
-                {x: sp.Mul(*before, c, *after) for x, c in inner.items()},
-                sp.Mul(*before, r, *after),
+                {x: product_with(args, i, c, factors) for x, c in inner.items()},
+                product_with(args, i, r, factors),
             )
         else:
             nonlinear = True
@@ -433,6 +507,52 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
         return [sp.S.Zero] * len(xs), w
     coefs, rest = top
     return [coefs.get(x, sp.S.Zero) for x in xs], rest
+
+
+def substitute(expr: Any, rule: dict, memo: dict | None = None) -> Any:
+    """``expr.xreplace(rule)``, as :func:`al2py_runtime.walks.xreplace`
+    gives it, each distinct part once, where a product in which one factor
+    is replaced is formed by :func:`product_with` and a sum by
+    :func:`total` (sympy's results, without sympy's general case when the
+    parts allow).  ``memo`` may be shared by calls with the same ``rule``."""
+    if not rule or not isinstance(expr, sp.Basic):
+        return expr
+    allow_deep_recursion()
+    if memo is None:
+        memo = {}
+
+    def walk(e: Any) -> tuple[Any, bool]:
+        if e in rule:
+            return rule[e], True
+        if e.is_Atom:
+            return e, False
+        found = memo.get(e)
+        if found is not None:
+            return found
+        if isinstance(e, Intermediate) and rule.keys().isdisjoint(e.walk_parts()):
+            memo[e] = out = (e, False)
+            return out
+        args = e.args
+        new = []
+        changed = []
+        for i, a in enumerate(args):
+            b, c = walk(a)
+            new.append(b)
+            if c:
+                changed.append(i)
+        if not changed:
+            out = (e, False)
+        elif e.is_Mul and len(changed) == 1:
+            i = changed[0]
+            out = (product_with(args, i, new[i]), True)
+        elif e.is_Add:
+            out = (total(new), True)
+        else:
+            out = (e.func(*new), True)
+        memo[e] = out
+        return out
+
+    return walk(expr)[0]
 
 
 def _compare(a: Any, b: Any) -> int:
@@ -531,11 +651,35 @@ def _plain_base(a: Any) -> Any:
 _PLAIN = (Intermediate, AppliedUndef)
 
 
-def product_with(args: tuple, i: int, d: Any) -> Any:
+class _Factors:
+    """What :func:`product_with` needs of a product's arguments, found once
+    per product (the chain rule asks it once per factor that holds the
+    variable, and per variable): the rational coefficient and where the
+    other factors start, each factor's base (:func:`_plain_base`), the
+    factors with none, and whether the bases are distinct."""
+
+    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct")
+
+    def __init__(self, args: tuple) -> None:
+        first = args[0]
+        if first.is_Number:
+            self.coeff, self.start = first, 1
+        else:
+            self.coeff, self.start = sp.S.One, 0
+        self.bases = [_plain_base(a) for a in args[self.start :]]
+        self.odd = frozenset(
+            j + self.start for j, b in enumerate(self.bases) if b is None
+        )
+        self.plain = {b for b in self.bases if b is not None}
+        self.distinct = len(self.plain) + len(self.odd) == len(self.bases)
+
+
+def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -> Any:
     """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
     product's (canonical) arguments and ``d`` the derivative of factor
     ``i`` by the chain rule: a rational number, an intermediate, another
     plain factor (``sin(q)``), or a rational times plain factors.
+    ``factors``: ``_Factors(args)``, when the caller keeps it.
 
     sympy's ``Mul.flatten`` then only multiplies the rational coefficients
     and sorts the factors (by ``Basic.compare``), when no factor is a
@@ -558,31 +702,47 @@ def product_with(args: tuple, i: int, d: Any) -> Any:
         n, new_factors = sp.S.One, (d,)
     else:
         return sp.Mul(*args[:i], d, *args[i + 1 :])
-    others = args[:i] + args[i + 1 :]
-    if others and others[0].is_Number:
-        c, factors = others[0], others[1:]
-        if not c.is_Rational:
+    if factors is None:
+        factors = _Factors(args)
+    start = factors.start
+    c = factors.coeff
+    if i < start or not c.is_Rational or not factors.distinct:
+        return sp.Mul(*args[:i], d, *args[i + 1 :])
+    odd = factors.odd
+    if odd and (len(odd) > 1 or i not in odd):
+        return sp.Mul(*args[:i], d, *args[i + 1 :])  # another factor is not plain
+    own = factors.bases[i - start]  # factor i's base, no longer there
+    plain = factors.plain
+    if len(new_factors) == 1:
+        base = _plain_base(new_factors[0])
+        if base is None or (base in plain and base != own):
             return sp.Mul(*args[:i], d, *args[i + 1 :])
     else:
-        c, factors = sp.S.One, others
-    bases = set()
-    for a in (*factors, *new_factors):
-        base = _plain_base(a)
-        if base is None or base in bases:
-            return sp.Mul(*args[:i], d, *args[i + 1 :])
-        bases.add(base)
-    coeff = c * n
+        seen = set()
+        for a in new_factors:
+            base = _plain_base(a)
+            if base is None or base in seen or (base in plain and base != own):
+                return sp.Mul(*args[:i], d, *args[i + 1 :])
+            seen.add(base)
+    coeff = c if n is sp.S.One else n if c is sp.S.One else c * n
     if coeff is sp.S.Zero:
         return sp.S.Zero
-    if len(factors) + len(new_factors) == 1 and (*factors, *new_factors)[0].is_Add:
+    rest = args[start:i] + args[i + 1 :]
+    if len(rest) + len(new_factors) == 1 and (*rest, *new_factors)[0].is_Add:
         if coeff is not sp.S.One:
             return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
     if len(new_factors) == 1:
         z = new_factors[0]
-        k = bisect.bisect_left(factors, _BY_COMPARE(z), key=_BY_COMPARE)
-        new = [*factors[:k], z, *factors[k:]]
+        lo, hi = 0, len(rest)  # bisect_left by Basic.compare, without its keys
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if _compare(rest[mid], z) < 0:
+                lo = mid + 1
+            else:
+                hi = mid
+        new = [*rest[:lo], z, *rest[lo:]]
     else:
-        new = sorted((*factors, *new_factors), key=_BY_COMPARE)
+        new = sorted((*rest, *new_factors), key=_BY_COMPARE)
     if coeff is not sp.S.One:
         new.insert(0, coeff)
     if not new:
@@ -630,36 +790,50 @@ def total(terms: Sequence[Any]) -> Any:
     sums (a number's power, an ``Order``, a non-commutative term or one that
     is not an ``Expr`` go to sympy).  Like terms are collected by their
     coefficients, zeros dropped, the rest sorted by ``Basic.compare`` with
-    the number first, as sympy does, without sympy's general case."""
+    the number first, as sympy does, without sympy's general case.
+
+    A term is collected under the tuple of its factors other than the
+    coefficient (``(x,)`` for a term that is not a product), which is
+    what sympy's key, that product, is made of: no product is formed
+    to be a key."""
     if not global_parameters.evaluate:
         return sp.Add(*terms)
+    if len(terms) < 2:  # sympy's Add of one term is the term
+        return terms[0] if terms else sp.S.Zero
     number = sp.S.Zero
-    collected: dict[Any, Any] = {}
-    #: key -> the term itself, while no other term has joined it (a product
-    #: of its coefficient and of the key's factors, kept as it is)
-    alone: dict[Any, Any] = {}
+    collected: dict[tuple, Any] = {}
+    #: key -> the term itself, while no other term has joined it
+    alone: dict[tuple, Any] = {}
     seq = list(terms)
     for o in seq:  # a sum's terms join the end, as in Add.flatten
-        if o.is_Add and o.is_commutative:
+        if o.is_Mul:
+            args = o.args
+            c = args[0]
+            if c.is_Number:
+                if not c.is_finite:
+                    return sp.Add(*terms)
+                key = args[1:]
+            else:
+                c, key = sp.S.One, args
+            if not o.is_commutative:
+                return sp.Add(*terms)
+        elif o.is_Add and o.is_commutative:
             seq.extend(o.args)
             continue
-        if o.is_Number:
+        elif o.is_Number:
             if not o.is_finite:
                 return sp.Add(*terms)
             number += o
             continue
-        if o.is_Order or not isinstance(o, sp.Expr) or not o.is_commutative:
-            return sp.Add(*terms)
-        if o.is_Mul and o.args[0].is_Number:
-            c = o.args[0]
-            if not c.is_finite:
-                return sp.Add(*terms)
-            rest = o.args[1:]
-            key = rest[0] if len(rest) == 1 else _product(rest)
-        elif o.is_Pow and o.base.is_Number:
+        elif (
+            o.is_Order
+            or not isinstance(o, sp.Expr)
+            or not o.is_commutative
+            or (o.is_Pow and o.base.is_Number)
+        ):
             return sp.Add(*terms)
         else:
-            c, key = sp.S.One, o
+            c, key = sp.S.One, (o,)
         found = collected.get(key)
         if found is None:
             collected[key] = c
@@ -669,19 +843,32 @@ def total(terms: Sequence[Any]) -> Any:
             alone.pop(key, None)
     out = []
     for key, c in collected.items():
-        if c.is_zero:
+        o = alone.get(key)
+        if o is not None:
+            # sympy's Add.flatten rebuilds it from its coefficient and key
+            # as it is (a product's arguments, a product with a sum, a
+            # plain factor times a number): the term itself
+            if c.is_zero:
+                continue
+            if c is sp.S.One or len(key) > 1 or isinstance(key[0], _SIMPLE):
+                out.append(o)
+                continue
+        elif c.is_zero:
             continue
         if c is sp.S.One:
-            out.append(key)
-        elif key.is_Mul:
-            # _product((c, *key.args)): the term itself when it stood alone
-            o = alone.get(key)
-            out.append(o if o is not None else _product((c, *key.args)))
-        elif key.is_Add:  # 2*(a + b) stays a product, as in Add.flatten
-            out.append(sp.Mul(c, key, evaluate=False))
+            out.append(key[0] if len(key) == 1 else _product(key))
+        elif len(key) > 1:
+            out.append(_product((c, *key)))
+        elif key[0].is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key[0], evaluate=False))
         else:
-            out.append(sp.Mul(c, key))
+            out.append(sp.Mul(c, key[0]))
     return _sum(number, out)
+
+
+#: factors ``f`` for which ``Mul(c, f)`` (``c`` a finite number, not 0 or
+#: 1) is the product of exactly these two arguments, ``c`` first
+_SIMPLE = (Intermediate, AppliedUndef, sp.Symbol, sp.Derivative, sp.sin, sp.cos)
 
 
 def _sum(number: Any, terms: list) -> Any:
@@ -763,6 +950,11 @@ class Intermediates:
         self._numbers: dict[Any, Any] = {}
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
+        self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
+        #: one node of a tree for _split (a tuple, for isinstance)
+        self._one_node = (self.Z, AppliedUndef, sp.Derivative)
+        #: a set of variables -> the sort keys of its variables, in order
+        self._var_keys: dict[frozenset, tuple] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -859,12 +1051,16 @@ class Intermediates:
         """``expr`` with each part larger than :attr:`LIMIT` nodes named
         (bottom-up), so that no definition is long."""
         Z = self.Z
-        if all(self._within(a, self.LIMIT) for a in expr.args):
+        one = self._one_node
+        for a in expr.args:
+            if not (a.is_Atom or isinstance(a, one) or self._within(a, self.LIMIT)):
+                break
+        else:
             return expr  # no part is larger: the walk below changes nothing
         memo: dict[Any, tuple[Any, int]] = {}
 
         def walk(e: Any, top: bool) -> tuple[Any, int]:
-            if e.is_Atom or isinstance(e, Z | AppliedUndef | sp.Derivative):
+            if e.is_Atom or isinstance(e, one):
                 return e, 1
             found = memo.get(e)
             if found is not None and not top:
@@ -897,7 +1093,7 @@ class Intermediates:
         """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
         counts them (an intermediate, a function of time or a derivative is
         one node), counting no further than ``limit + 1``."""
-        Z = self.Z
+        one = self._one_node
         stack = [e]
         n = 0
         while stack:
@@ -905,7 +1101,7 @@ class Intermediates:
             n += 1
             if n > limit:
                 return False
-            if not (x.is_Atom or isinstance(x, Z | AppliedUndef | sp.Derivative)):
+            if not (x.is_Atom or isinstance(x, one)):
                 stack.extend(x.args)
         return True
 
@@ -936,16 +1132,18 @@ class Intermediates:
         derivatives: set = set()
         bad: list = []
         seen: set = set()
-        stack = [expr]
+        #: the sets of variables of the canonical intermediates met (many
+        #: share one, and each is kept as one object: their union is taken
+        #: once per set, not once per intermediate)
+        shared: set = set()
+        varsets = self._varsets
         Z = self.Z
+        stack = [expr]
         while stack:
             e = stack.pop()
             if isinstance(e, Z):
                 if self._canonical(e):  # kept per instance
-                    k = e.args[0].p
-                    variables |= self._varsets[k]  # hashes kept: no sympy call
-                    if self._dvars[k]:
-                        derivatives.update(self._dvars[k])
+                    shared.add(varsets[e.args[0].p])
                     continue
                 bad.append(e)
                 todo = e.args[1:]
@@ -963,7 +1161,17 @@ class Intermediates:
             for a in todo:
                 if a not in seen:
                     seen.add(a)
-                    stack.append(a)
+                    if isinstance(a, Z) and self._canonical(a):
+                        shared.add(varsets[a.args[0].p])  # no need to stack it
+                    else:
+                        stack.append(a)
+        if shared:
+            variables.update(*shared)
+            orders = self._orders
+            for varset in shared:
+                found = orders[varset][2]  # the derivatives among them
+                if found:
+                    derivatives.update(found)
         return variables, derivatives, bad
 
     def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
@@ -996,12 +1204,19 @@ class Intermediates:
         if found is None:
             if isinstance(x, self.Z):
                 args = x.args
-                found = (
-                    x.class_key(),
-                    (len(args), tuple([self._sort_key(a) for a in args])),
-                    _ONE_KEY,
-                    sp.S.One,
-                )
+                if self._canonical(x):
+                    # its variables' keys, kept per set of variables (many
+                    # intermediates share one)
+                    varset = self._varsets[args[0].p]
+                    keys = self._var_keys.get(varset)
+                    if keys is None:
+                        keys = self._var_keys[varset] = tuple(
+                            [self._sort_key(a) for a in args[1:]]
+                        )
+                    keys = (self._sort_key(args[0]), *keys)
+                else:
+                    keys = tuple([self._sort_key(a) for a in args])
+                found = (x.class_key(), (len(args), keys), _ONE_KEY, sp.S.One)
             elif x.is_Add or x.is_Mul:
                 found = self._compound_key(x)
             else:
@@ -1058,7 +1273,7 @@ class Intermediates:
             if found is None:
                 found = self._rebased[z] = self.name(self.definition(z))
             rule[z] = found
-        return xreplace(expr, rule)
+        return substitute(expr, rule)
 
     def _name_rates(self, expr: Any) -> Any:
         """:meth:`name`, and for an expression with derivatives that are not
@@ -1083,7 +1298,7 @@ class Intermediates:
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
         plain = [sp.Dummy() for _ in present]
-        w = xreplace(expr, dict(zip(present, plain, strict=True)))
+        w = substitute(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
@@ -1098,7 +1313,7 @@ class Intermediates:
                 if appearing(c, plain):
                     return expr  # not linear: keep it as it is (found early)
                 coefs.append(c)
-            rest = xreplace(w, dict.fromkeys(plain, sp.S.Zero))
+            rest = substitute(w, dict.fromkeys(plain, sp.S.Zero))
             if appearing(rest, plain):
                 return expr
         return self.name(rest) + sp.Add(
@@ -1126,7 +1341,7 @@ class Intermediates:
         body = self._defs[k]
         if self._canonical(z):
             return body
-        return xreplace(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
+        return substitute(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
 
     def is_real(self, z: Intermediate) -> bool | None:
         k = _number(z)
@@ -1164,7 +1379,7 @@ class Intermediates:
                 if not x.exp.is_Rational:
                     return False
                 stack.append(x.base)
-            elif isinstance(x, sp.sin | sp.cos | sp.tan):
+            elif isinstance(x, _TRIG):
                 stack.append(x.args[0])
             elif x.is_Number or x.is_Symbol or isinstance(x, AppliedUndef):
                 if x.is_real is not True:
@@ -1290,10 +1505,19 @@ class Intermediates:
         # ``e == x`` (x is a variable, so equal only with an equal type:
         # functions of time made twice are equal classes, not one, and only
         # a function of time's class compares equal to another), without
-        # sympy's ``__eq__`` on every node walked, nor the metaclass's.
+        # sympy's ``__eq__`` on every node walked, nor the metaclass's
+        # unless the classes hash alike (its test builds sympy's class keys
+        # of both, a tenth of a derivative's walk over the other functions
+        # of time; a function of time's class keeps its hash).
         if e is x or (
-            (type(e) is type(x) or isinstance(e, AppliedUndef))
-            and type(e) == type(x)  # noqa: E721
+            (
+                type(e) is type(x)
+                or (
+                    isinstance(e, AppliedUndef)
+                    and hash(type(e)) == hash(type(x))
+                    and type(e) == type(x)  # noqa: E721
+                )
+            )
             and e == x
         ):
             return sp.S.One
@@ -1325,14 +1549,28 @@ class Intermediates:
                     ]
                 )
         elif e.is_Add:
-            out = total([self._pd(a, x, memo, given, rate) for a in e.args])
+            terms = []
+            for a in e.args:
+                d = memo.get(a)  # most parts are shared: no call
+                if d is None:
+                    d = self._pd(a, x, memo, given, rate)
+                if d is not _ZERO:
+                    terms.append(d)
+            out = total(terms)
         elif e.is_Mul:
             args = e.args
             terms = []
+            factors = None
             for i, a in enumerate(args):
-                d = self._pd(a, x, memo, given, rate)
+                if a.is_Number:
+                    continue
+                d = memo.get(a)  # most factors are shared: no call
+                if d is None:
+                    d = self._pd(a, x, memo, given, rate)
                 if d is not _ZERO:
-                    terms.append(product_with(args, i, d))
+                    if factors is None:
+                        factors = self._factors_of(e)
+                    terms.append(product_with(args, i, d, factors))
             out = total(terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given, rate)
@@ -1357,6 +1595,14 @@ class Intermediates:
                 out = e.xreplace({x: s}).diff(s).xreplace({s: x})
         memo[e] = out
         return out
+
+    def _factors_of(self, e: Any) -> _Factors:
+        """``_Factors(e.args)`` of a product, found once per product (it is
+        differentiated by each of its variables)."""
+        found = self._factors.get(e)
+        if found is None:
+            found = self._factors[e] = _Factors(e.args)
+        return found
 
     def time_derivative(self, e: Any, rate: Callable[[Any], Any], memo: dict) -> Any:
         """``de/dt`` by the chain rule, where ``rate(x)`` is the derivative of
@@ -1386,14 +1632,25 @@ class Intermediates:
             d = self.time_derivative(e.book.definition(e), rate, memo)
             out = self.name(d)
         elif e.is_Add:
-            out = total([self.time_derivative(a, rate, memo) for a in e.args])
+            out = total(
+                [
+                    d
+                    for a in e.args
+                    if (d := self.time_derivative(a, rate, memo)) is not _ZERO
+                ]
+            )
         elif e.is_Mul:
             args = e.args
             terms = []
+            factors = None
             for i, a in enumerate(args):
+                if a.is_Number:
+                    continue
                 d = self.time_derivative(a, rate, memo)
                 if d is not _ZERO:
-                    terms.append(product_with(args, i, d))
+                    if factors is None:
+                        factors = self._factors_of(e)
+                    terms.append(product_with(args, i, d, factors))
             out = total(terms)
         elif e.is_Pow and not e.exp.has(_T):
             d = self.time_derivative(e.base, rate, memo)
@@ -1761,7 +2018,7 @@ def _num(e: Any, env: dict) -> complex:
 
         y, x = (_num(a, env) for a in e.args)
         return complex(math.atan2(y.real, x.real))
-    if e.is_Symbol or isinstance(e, AppliedUndef | sp.Derivative):
+    if e.is_Symbol or isinstance(e, _VARIABLE):
         raise ValueError(f"no value for {e}")
     if isinstance(e, Intermediate):
         return number(e, env)
