@@ -718,6 +718,14 @@ class Workspace(Mapping):
             # (its least recently used calls): freed here rather than kept
             # for the process's life, which also shortens its exit
             clear_cache()
+            # the derived model lives as long as its module: moved out of
+            # the collector's sight (``gc.freeze``), so that no later
+            # collection -- nor the several at the process's exit, a
+            # tenth of a bicycle's import -- walks its objects again.  A
+            # derivation leaves next to no cyclic garbage behind (a
+            # collection here finds a handful of objects), so nothing of
+            # note is kept that a collection would have freed.
+            gc.freeze()
         return AutolevNames(self)
 
     def name_of(self, obj: Any) -> str:
