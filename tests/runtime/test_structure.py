@@ -80,6 +80,9 @@ FOREIGN = {
     " (autoz.minus_first decides a sum's sign as could_extract_minus_sign)",
     "_hashable_content": "sympy Basic: what Basic.compare orders by"
     " (autoz._compare, tested equal to Basic.compare)",
+    "_eval_subs": "sympy Basic: a class's own rule for subs (model/kinematics.py"
+    " _collect substitutes by xreplace only where every node's rule is sympy's"
+    " generic rebuild, tested equal to sympy's collect)",
     "_keep_coeff": "sympy.core.mul: a coefficient times a term, undistributed, as"
     " sympy's printers' _print_Mul forms a product's magnitude (codegen/octave.py,"
     " codegen/fortran.py, jobs/backends.py print the same text faster)",
