@@ -93,11 +93,16 @@ class _Printer(Remembering, OctaveCodePrinter):
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:
+    found = printer.statements.get((expr, target))
+    if found is not None:
+        return found
     try:
-        return printer.doprint(sp.sympify(expr), assign_to=target)
+        text = printer.doprint(sp.sympify(expr), assign_to=target)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
         what = str(exc).split("\n")[0]
         raise NumericsError(f"MATLAB cannot print {expr}: {what}") from None
+    printer.statements[expr, target] = text
+    return text
 
 
 def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:

@@ -38,6 +38,9 @@ class Remembering:
         self._numbers: dict = {}
         self._precs: dict = {}
         self._plain_statement: Any = None
+        #: (expression, target) -> its printed statement: a program's
+        #: outputs routine assigns again the intermediates its equations have
+        self.statements: dict = {}
 
     def remembered_precedence(self, item: Any) -> int:
         found = self._precs.get(item)
