@@ -73,7 +73,9 @@ def main(argv: list[str]) -> int:
             f"al2py: error: cannot read {args.input}: {exc.strerror}", file=sys.stderr
         )
         return 2
-    code = convert(text, args.input).code
+    # the module is run, never shown: black's formatting (a third of the
+    # conversion) is left out, as for modules over transpile.BLACK_LIMIT
+    code = convert(text, args.input, formatted=False).code
     module = types.ModuleType(path.stem)
     module.__file__ = str(path.with_suffix(".py"))
     # the module's text, for the progress line and errors naming .al lines

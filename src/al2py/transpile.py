@@ -123,8 +123,11 @@ def convert(
     *,
     script_dir: Path | None = None,
     autolevpath: str | None = None,
+    formatted: bool = True,
 ) -> Conversion:
-    """Convert Autolev source ``text`` into the source of a Python module.
+    """Convert Autolev source ``text`` into the source of a Python module
+    (formatted by black unless ``formatted`` is false: ``al2py code`` runs
+    the module without showing it, as modules over :data:`BLACK_LIMIT` are).
 
     Raises :class:`al2py.errors.AutolevError` (with a source span) for input
     that is malformed or not supported.
@@ -178,7 +181,7 @@ def convert(
         has_kane=generator.has_kane,
     )
     try:
-        if len(code) <= BLACK_LIMIT:
+        if formatted and len(code) <= BLACK_LIMIT:
             code = black.format_str(code, mode=black.Mode())
         code = attach_echoes(code)  # after black: only lines that fit move
         # Python itself must load the module: an expression nested too deeply

@@ -27,11 +27,15 @@ def _double(x: float) -> str:
     return repr(float(x)) if math.isfinite(x) else "0.0"
 
 
-def _assign(a: Assign, printer: Any, n: int) -> str:
+def _assign(a: Assign, printer: Any, n: int, texts: dict) -> str:
+    """The C statement of ``a``; ``texts`` keeps each expression's text (the
+    outputs routine declares again the intermediates that ``eqns`` has)."""
     kind = a.target[0]
     if kind == "ud":
         return f"    const double {a.target[2]} = ud[{a.target[1]}];"
-    e = backends.c_expression(a.expr, printer)
+    e = texts.get(a.expr)
+    if e is None:
+        e = texts[a.expr] = backends.c_expression(a.expr, printer)
     if kind == "tmp":
         return f"    const double {a.target[1]} = {e};"
     if kind == "m":
@@ -56,6 +60,7 @@ def _unpack(program: Program, block: list[Assign]) -> list[str]:
 def equations(program: Program, api: str) -> list[str]:
     """``eqns`` and ``outputs`` (with ``al_solve`` when needed)."""
     printer = backends.CPrinter()
+    texts: dict = {}
     n = program.nu
     lines = [
         f"#define AL_NY {program.ny}  /* states */",
@@ -79,7 +84,7 @@ def equations(program: Program, api: str) -> list[str]:
     for k, a in enumerate(program.eqns):
         if k == program.solve_at and n:
             lines.append(f"    if (al_solve({n}, mm, ud)) return 1;")
-        lines.append(_assign(a, printer, n))
+        lines.append(_assign(a, printer, n, texts))
     if program.solve_at == len(program.eqns) and n:
         lines.append(f"    if (al_solve({n}, mm, ud)) return 1;")
     lines += [
@@ -97,7 +102,7 @@ def equations(program: Program, api: str) -> list[str]:
     ]
     lines += _unpack(program, program.outputs)
     lines.append("    (void)out;")
-    lines += [_assign(a, printer, n) for a in program.outputs]
+    lines += [_assign(a, printer, n, texts) for a in program.outputs]
     lines += ["    return 0;", "}", ""]
     del used
     return lines

@@ -81,13 +81,18 @@ def _d(x: float) -> str:
 
 
 def _code(printer: _Printer, expr: Any, target: str) -> list[str]:
+    found = printer.statements.get((expr, target))
+    if found is not None:
+        return list(found)
     to: Any = target if "(" in target else sp.Symbol(target, real=True)
     try:
         text = printer.doprint(sp.sympify(expr), assign_to=to)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
         what = str(exc).split("\n")[0]
         raise NumericsError(f"Fortran cannot print {expr}: {what}") from None
-    return [ln for ln in text.splitlines() if not ln.lstrip().startswith("!")]
+    lines = [ln for ln in text.splitlines() if not ln.lstrip().startswith("!")]
+    printer.statements[expr, target] = tuple(lines)
+    return lines
 
 
 def _comment(text: str) -> list[str]:

@@ -78,13 +78,14 @@ class _Printer(Remembering, OctaveCodePrinter):
         number = self.remembered_number
         powsymbol = "^" if all(number(x) for x in expr.args) else ".^"
         prec = self.remembered_precedence(expr)
-        if equal_valued(expr.exp, 0.5):
+        whole = expr.exp.is_Integer  # then only -1 can match below
+        if not whole and equal_valued(expr.exp, 0.5):
             return f"sqrt({self._print(expr.base)})"
         if expr.is_commutative:
-            if equal_valued(expr.exp, -0.5):
+            if not whole and equal_valued(expr.exp, -0.5):
                 sym = "/" if number(expr.base) else "./"
                 return "1" + sym + f"sqrt({self._print(expr.base)})"
-            if equal_valued(expr.exp, -1):
+            if expr.exp.p == -1 if whole else equal_valued(expr.exp, -1):
                 sym = "/" if number(expr.base) else "./"
                 return "1" + sym + self.parenthesize(expr.base, prec)
         base = self.parenthesize(expr.base, prec)
@@ -92,11 +93,16 @@ class _Printer(Remembering, OctaveCodePrinter):
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:
+    found = printer.statements.get((expr, target))
+    if found is not None:
+        return found
     try:
-        return printer.doprint(sp.sympify(expr), assign_to=target)
+        text = printer.doprint(sp.sympify(expr), assign_to=target)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
         what = str(exc).split("\n")[0]
         raise NumericsError(f"MATLAB cannot print {expr}: {what}") from None
+    printer.statements[expr, target] = text
+    return text
 
 
 def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:

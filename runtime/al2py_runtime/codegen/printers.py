@@ -15,11 +15,16 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.core.traversal import iterargs
+from sympy.tensor.indexed import IndexedBase
 
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
 __all__ = ["Remembering"]
+
+#: what doprint's statement is walked for (see Remembering)
+_WALKED_FOR = (sp.re, IndexedBase)
 
 
 class Remembering:
@@ -32,6 +37,10 @@ class Remembering:
         self._keys: dict = {}
         self._numbers: dict = {}
         self._precs: dict = {}
+        self._plain_statement: Any = None
+        #: (expression, target) -> its printed statement: a program's
+        #: outputs routine assigns again the intermediates its equations have
+        self.statements: dict = {}
 
     def remembered_precedence(self, item: Any) -> int:
         found = self._precs.get(item)
@@ -49,9 +58,31 @@ class Remembering:
         return self._print(item)  # type: ignore[attr-defined]
 
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        # doprint's statement (an Assignment) walked once for both ``re``
+        # (sympy's UnevaluatedExpr handling) and ``IndexedBase``
+        # (_print_Assignment's loops), instead of once for each
+        if isinstance(expr, sp.Basic) and not any(
+            isinstance(x, _WALKED_FOR) for x in iterargs(expr)
+        ):
+            self._plain_statement = expr
+            return expr
         if backends.without_re(expr):
             return expr
         return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
+
+    def _print_Assignment(self, expr: Any) -> str:  # noqa: N802 - sympy's
+        # sympy's last case (lhs = rhs) when the statement has no
+        # IndexedBase (walked above), the left side is a symbol and the
+        # right side is not a Piecewise
+        if (
+            expr is self._plain_statement
+            and isinstance(expr.lhs, sp.Symbol)
+            and not isinstance(expr.rhs, sp.Piecewise)
+        ):
+            lhs_code = self._print(expr.lhs)  # type: ignore[attr-defined]
+            rhs_code = self._print(expr.rhs)  # type: ignore[attr-defined]
+            return self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
+        return super()._print_Assignment(expr)  # type: ignore[misc]
 
     def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
         if (order or self.order) is not None or not expr.is_Add:  # type: ignore

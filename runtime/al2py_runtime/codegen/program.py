@@ -19,6 +19,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
+from sympy.core.basic import _args_sortkey
+from sympy.functions.elementary.exponential import ExpBase
 
 from ..jobs import backends
 from ..jobs.run import (
@@ -471,7 +473,7 @@ def describe(
     inter = named_intermediates(spec.intermediates, rename, taken)
 
     def sub(e: Any) -> Any:
-        return sp.sympify(e).xreplace(rename)
+        return renamed_evaluated(sp.sympify(e), rename)
 
     n = len(spec.accels)
     accel_syms = {rename[d] for d in spec.accels}
@@ -542,8 +544,103 @@ def named_intermediates(
     for d, body in intermediates:
         s = sp.Symbol(next(z_names), real=True)
         rename[d] = s
-        inter.append((s, sp.sympify(body).xreplace(rename)))
+        inter.append((s, renamed_evaluated(sp.sympify(body), rename)))
     return inter
+
+
+def renamed_evaluated(expr: Any, rule: dict[Any, Any]) -> Any:
+    """``expr.xreplace(rule)`` (the same expression, node for node) for a
+    ``rule`` that renames objects to distinct symbols.
+
+    ``xreplace`` rebuilds every sum and product that holds a renamed object
+    with sympy's evaluation (``Mul.flatten``, ``Add.flatten``), which is
+    most of the cost of writing a program's intermediates.  For a sum or
+    product whose terms or factors evaluation keeps as they are (distinct
+    bases or terms, at most one number, no nested sum or product, numeric
+    powers that evaluate to themselves: :func:`_kept_args`) evaluation only
+    sorts them, so they are sorted here with sympy's key; anything else
+    is rebuilt by sympy as ``xreplace`` does."""
+    return _renamed(expr, rule)
+
+
+def _renamed(expr: Any, rule: dict[Any, Any]) -> Any:
+    found = rule.get(expr)
+    if found is not None:
+        return found
+    old = expr.args
+    if not old:
+        return expr
+    args = [_renamed(a, rule) for a in old]
+    if all(a is b for a, b in zip(args, old, strict=True)):
+        return expr
+    cls = type(expr)
+    if cls is sp.Add or cls is sp.Mul:
+        kept = _kept_args(cls is sp.Mul, args)
+        if kept is not None:
+            return cls._from_args(kept, True)
+    return expr.func(*args)
+
+
+def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
+    """The arguments of ``Mul(*args)`` (``mul``) or ``Add(*args)`` when
+    sympy's evaluation only sorts ``args``, else None.
+
+    The conditions follow ``Mul.flatten`` and ``Add.flatten``: numbers
+    combine (and 1 or 0 goes), a product's equal bases and a sum's equal
+    terms (the same part beside the number) combine, nested products and
+    sums are flattened, a number times a sum is distributed, powers of
+    numbers combine, ``exp`` factors combine (their base is ``E``), a
+    product's powers (and a sum's term ``c*s`` of one factor) are
+    evaluated again.  With none of these, the result is ``args`` sorted by
+    sympy's key, the number first."""
+    number = None
+    rest = []
+    keys: set[Any] = set()
+    for a in args:
+        if a.is_Number:
+            if number is not None or not a.is_finite or a == 0 or (mul and a == 1):
+                return None
+            number = a
+            continue
+        if not a.is_commutative or not _plain_factor(a, mul):
+            return None
+        if mul:
+            key: Any = a.args[0] if a.is_Pow else a
+        elif a.is_Mul:
+            key = a.args[1:] if a.args[0].is_Number else a.args
+            if len(key) == 1 and not _plain_factor(key[0], True):
+                return None  # c*s: Mul(c, s) is evaluated again
+        elif a.is_Add:
+            return None
+        else:
+            key = (a,)
+        if key in keys:
+            return None
+        keys.add(key)
+        rest.append(a)
+    if mul and number is not None and len(rest) == 1 and rest[0].is_Add:
+        return None  # 2*(x + y) is distributed
+    rest.sort(key=_args_sortkey)
+    if number is not None:
+        rest.insert(0, number)
+    return rest
+
+
+def _plain_factor(a: Any, mul: bool) -> bool:
+    """Whether ``a`` (not a number) is kept as it is by ``Mul.flatten``
+    (``mul``) or ``Add.flatten`` among other arguments."""
+    if a.is_Symbol or a.is_Add:
+        return mul or not a.is_Add
+    if a.is_Pow:
+        base, e = a.args
+        if base.is_Atom and not base.is_Symbol:
+            return False  # a power of a number, of E or of I
+        if not mul:
+            return True
+        return (e.is_Number or e.is_Symbol) and sp.Pow(base, e) == a
+    if a.is_Mul:
+        return not mul
+    return isinstance(a, sp.Function) and not isinstance(a, ExpBase)
 
 
 def unpacked(

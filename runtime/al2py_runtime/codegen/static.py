@@ -48,6 +48,7 @@ from .program import (
     new_program,
     output_block,
     output_tables,
+    renamed_evaluated,
 )
 
 __all__ = ["describe_static"]
@@ -103,7 +104,7 @@ def describe_static(
     inter = named_intermediates(spec.intermediates, rename, taken)
 
     def sub(e: Any) -> Any:
-        return sp.sympify(e).xreplace(rename)
+        return renamed_evaluated(sp.sympify(e), rename)
 
     n = len(spec.xs)
     x_names = iter_names("x", taken)

@@ -731,7 +731,8 @@ def product_parts(
     ``lone_minus`` parenthesizes a single negated factor as a power's level
     (C, Fortran)."""
     c, e = expr.as_coeff_Mul()
-    if c < 0:
+    # a rational's sign without sympy's comparison (which sympifies the 0)
+    if c.is_extended_negative if c.is_Rational else c < 0:
         expr = _keep_coeff(-c, e)
         sign = "-"
     else:

@@ -267,9 +267,41 @@ def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
     args = [renamed(a, rule) for a in expr.args]
     if all(a is b for a, b in zip(args, expr.args, strict=True)):
         return expr
-    if isinstance(expr, sp.Add | sp.Mul | sp.Pow):
-        return expr.func(*args, evaluate=False)
+    cls = type(expr)
+    if cls is sp.Add or cls is sp.Mul or cls is sp.Pow:
+        return _unevaluated(cls, args)
     return expr.func(*args)
+
+
+def _unevaluated(cls: type, args: list[Any]) -> Any:
+    """``cls(*args, evaluate=False)`` of a sum, product or power: the same
+    object, without sympify and sympy's cache (``args`` are sympy objects
+    already); sympy's constructor postprocessors run only for arguments of
+    a class that has them (matrix expressions, vectors, ...)."""
+    if any(type(a) not in _PLAIN for a in args):
+        if not all(_plain(type(a)) for a in args):
+            return cls(*args, evaluate=False)
+    if cls is sp.Pow:
+        b, e = args
+        obj = sp.Expr.__new__(cls, b, e)
+        obj.is_commutative = b.is_commutative and e.is_commutative
+        return obj
+    return cls._from_args(args)
+
+
+#: Classes without constructor postprocessors (:func:`_plain`).
+_PLAIN: set[type] = set()
+
+
+def _plain(kind: type) -> bool:
+    """Whether sympy's constructor postprocessors leave a sum, product or
+    power with an argument of class ``kind`` as it is (no class in its
+    ``mro`` registered, as for every scalar expression)."""
+    mapping = sp.Basic._constructor_postprocessor_mapping
+    if any(c in mapping for c in kind.mro()):
+        return False
+    _PLAIN.add(kind)
+    return True
 
 
 @dataclass
