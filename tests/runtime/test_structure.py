@@ -80,6 +80,14 @@ FOREIGN = {
     " (autoz.minus_first decides a sum's sign as could_extract_minus_sign)",
     "_hashable_content": "sympy Basic: what Basic.compare orders by"
     " (autoz._compare, tested equal to Basic.compare)",
+    "_args_sortkey": "sympy.core.basic: the key sympy's sums and products sort"
+    " their arguments by (codegen/program.py renamed_evaluated builds a renamed"
+    " node in sympy's order, tested equal to xreplace)",
+    "_constructor_postprocessor_mapping": "sympy Basic: the classes whose"
+    " constructors post-process (jobs/run.py renamed builds plain nodes only"
+    " where none applies)",
+    "_get_statement": "sympy code printers: a statement's text with its"
+    " terminator (codegen/printers.py prints a plain assignment directly)",
     "_eval_subs": "sympy Basic: a class's own rule for subs (model/kinematics.py"
     " _collect substitutes by xreplace only where every node's rule is sympy's"
     " generic rebuild, tested equal to sympy's collect)",
