@@ -262,23 +262,6 @@ def trivial(expr: Any) -> bool:
     return False
 
 
-def _instances(expr: Any, cls: type) -> set[Any]:
-    """``expr.atoms(cls)``, walking the tree directly (sympy's generic
-    traversal is most of the cost of ordering a large model's intermediates)."""
-    found: set[Any] = set()
-    stack = [expr]
-    seen: set[Any] = set()  # a shared (or repeated) subtree is walked once
-    while stack:
-        e = stack.pop()
-        if isinstance(e, cls):
-            found.add(e)
-        args = e.args
-        if args and e not in seen:
-            seen.add(e)
-            stack.extend(args)
-    return found
-
-
 def _number(z: Intermediate) -> int:
     """An intermediate's number (its first argument)."""
     return z.args[0].p
@@ -1748,7 +1731,7 @@ class Intermediates:
         stack: list[tuple[Any, bool]] = []
         found: set[Any] = set()
         for e in exprs:
-            found |= _instances(sp.sympify(e), self.Z)
+            found |= self._intermediates_in(sp.sympify(e))
         # Sets iterate in hash order, which varies between processes: visit
         # in the order of the names, so every run writes the same sequence.
         for z in self._by_name(found, reverse=True):
@@ -1796,11 +1779,32 @@ class Intermediates:
         if tuple(z.args[1:]) != self._vars[k]:
             found = self._children.get(z)
             if found is None:
-                found = self._children[z] = _instances(self.definition(z), self.Z)
+                found = self._children[z] = self._intermediates_in(self.definition(z))
             return found
         found = self._children.get(k)
         if found is None:
-            found = self._children[k] = _instances(self._defs[k], self.Z)
+            found = self._children[k] = self._intermediates_in(self._defs[k])
+        return found
+
+    def _intermediates_in(self, expr: Any) -> set[Any]:
+        """The intermediates in ``expr`` (``expr.atoms(self.Z)``), walking
+        the tree directly (a shared subtree once) and not into a canonical
+        intermediate's arguments: they are its variables, which hold no
+        intermediate, and most of a definition's nodes."""
+        Z = self.Z
+        found: set[Any] = set()
+        stack = [expr]
+        seen: set[Any] = set()
+        while stack:
+            e = stack.pop()
+            if isinstance(e, Z):
+                found.add(e)
+                if self._canonical(e):
+                    continue
+            args = e.args
+            if args and e not in seen:
+                seen.add(e)
+                stack.extend(args)
         return found
 
     def expand(self, expr: Any) -> Any:
