@@ -30,10 +30,18 @@ def allow_deep_recursion() -> None:
         sys.setrecursionlimit(20000)
 
 
-def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
+def xreplace(
+    expr: Any,
+    rule: dict,
+    memo: dict | None = None,
+    rebuild: Callable[[Any, list, list[int]], Any] | None = None,
+) -> Any:
     """``expr.xreplace(rule)`` for a sympy object (anything else is
     returned as it is).  ``memo`` may be shared by calls with the same
-    ``rule`` (a part's answer depends on the part and the rule only)."""
+    ``rule`` (a part's answer depends on the part and the rule only).
+    ``rebuild(e, args, changed)`` forms a part from its new arguments (the
+    positions of those that changed given), where sympy's ``e.func(*args)``
+    would give the same object another way."""
     if not isinstance(expr, sp.Basic):
         return expr
     if not rule:
@@ -47,6 +55,8 @@ def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
         # rebuilt from its arguments when a replacement happened below.
         if e in rule:
             return rule[e], True
+        if e.is_Atom:
+            return e, False
         found = memo.get(e)
         if found is not None:
             return found
@@ -56,15 +66,21 @@ def xreplace(expr: Any, rule: dict, memo: dict | None = None) -> Any:
                 memo[e] = out = (e, False)
                 return out
         args = []
-        changed = False
-        for a in e.args:
+        changed = []
+        for i, a in enumerate(e.args):
             if isinstance(a, sp.Basic):
                 b, c = walk(a)
                 args.append(b)
-                changed |= c
+                if c:
+                    changed.append(i)
             else:  # pragma: no cover - sympy's arguments are Basic
                 args.append(a)
-        out = (e.func(*args), True) if changed else (e, False)
+        if not changed:
+            out = (e, False)
+        elif rebuild is None:
+            out = (e.func(*args), True)
+        else:
+            out = (rebuild(e, args, changed), True)
         memo[e] = out
         return out
 

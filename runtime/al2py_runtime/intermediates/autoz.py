@@ -50,7 +50,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..model.arrange import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import allow_deep_recursion, appearing, atoms
+from ..walks import allow_deep_recursion, appearing, atoms, xreplace
 from .elimination import eliminate
 
 __all__ = [
@@ -498,44 +498,17 @@ def substitute(expr: Any, rule: dict, memo: dict | None = None) -> Any:
     is replaced is formed by :func:`product_with` and a sum by
     :func:`total` (sympy's results, without sympy's general case when the
     parts allow).  ``memo`` may be shared by calls with the same ``rule``."""
-    if not rule or not isinstance(expr, sp.Basic):
-        return expr
-    allow_deep_recursion()
-    if memo is None:
-        memo = {}
+    return xreplace(expr, rule, memo, rebuild=_rebuilt)
 
-    def walk(e: Any) -> tuple[Any, bool]:
-        if e in rule:
-            return rule[e], True
-        if e.is_Atom:
-            return e, False
-        found = memo.get(e)
-        if found is not None:
-            return found
-        if isinstance(e, Intermediate) and rule.keys().isdisjoint(e.walk_parts()):
-            memo[e] = out = (e, False)
-            return out
-        args = e.args
-        new = []
-        changed = []
-        for i, a in enumerate(args):
-            b, c = walk(a)
-            new.append(b)
-            if c:
-                changed.append(i)
-        if not changed:
-            out = (e, False)
-        elif e.is_Mul and len(changed) == 1:
-            i = changed[0]
-            out = (product_with(args, i, new[i]), True)
-        elif e.is_Add:
-            out = (total(new), True)
-        else:
-            out = (e.func(*new), True)
-        memo[e] = out
-        return out
 
-    return walk(expr)[0]
+def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
+    """``e.func(*new)`` for :func:`substitute`."""
+    if e.is_Mul and len(changed) == 1:
+        i = changed[0]
+        return product_with(e.args, i, new[i])
+    if e.is_Add:
+        return total(new)
+    return e.func(*new)
 
 
 def _compare(a: Any, b: Any) -> int:
