@@ -18,6 +18,7 @@ import sympy as sp
 from sympy.core.traversal import iterargs
 from sympy.tensor.indexed import IndexedBase
 
+from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
@@ -121,7 +122,6 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
     monomials in the generators sorted by ``default_sort_key``), the same
     list, with the sort keys and number tests remembered in ``keys`` and
     ``numbers``."""
-    from sympy.core.exprtools import decompose_power
 
     def plain(x: Any) -> bool:
         return not isinstance(x, sp.Number | sp.NumberSymbol)
@@ -141,39 +141,13 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
         ):
             return add_args
     key, reverse = expr._parse_order(None)
-    gens: set = set()
-    terms = []
-    for term in expr.args:
-        coeff, rest = term.as_coeff_Mul()
-        coeff = _complex(coeff, numbers)
-        cpart: dict = {}
-        ncpart = []
-        if rest is not sp.S.One:
-            for factor in sp.Mul.make_args(rest):
-                if is_number_in(factor, numbers):
-                    try:
-                        coeff *= _complex(factor, numbers)
-                    except (TypeError, ValueError):
-                        pass
-                    else:
-                        continue
-                if factor.is_commutative:
-                    base, exp = decompose_power(factor)
-                    cpart[base] = exp
-                    gens.add(base)
-                else:
-                    ncpart.append(factor)
-        terms.append((term, ((coeff.real, coeff.imag), cpart, tuple(ncpart))))
-    index = {
-        g: i for i, g in enumerate(sorted(gens, key=lambda g: sort_key_in(g, keys)))
-    }
-    k = len(index)
-    result = []
-    for term, (coeff, cpart, ncpart) in terms:
-        monom = [0] * k
-        for base, exp in cpart.items():
-            monom[index[base]] = exp
-        result.append((term, (coeff, tuple(monom), ncpart)))
+    result, _ = as_terms(
+        expr,
+        lambda g: sort_key_in(g, keys),
+        coefficient=lambda c: _complex(c, numbers),
+        is_number=lambda f: is_number_in(f, numbers),
+        to_complex=lambda f: _complex(f, numbers),
+    )
     if not any(term.is_Order for term, _ in result):
         return [term for term, _ in sorted(result, key=key, reverse=reverse)]
     plain_terms = [t for t in result if not t[0].is_Order]

@@ -309,7 +309,7 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
         c = first.as_coeff_Mul()[0]
         if c.is_Rational:
             return c.p < 0
-    terms, _ = _as_terms(expr, key or sp.default_sort_key)
+    terms, _ = as_terms(expr, key or sp.default_sort_key)
     seen = set()
     for term, (_, monom, ncpart) in terms:
         found = (monom, tuple(ncpart))
@@ -332,10 +332,10 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
     """The first of a sum's terms ``args`` in the order of
     ``as_ordered_terms``, for :func:`minus_first`: the term with the
     largest monomial, lexicographically, over the generators sorted by
-    ``key`` (:func:`_as_terms`).  That term is found without sorting the
+    ``key`` (:func:`as_terms`).  That term is found without sorting the
     generators: the first generator (by ``key``) whose exponent is not the
     same in every remaining term decides between them, the largest
-    exponent staying.  None (ask :func:`_as_terms`) when a term is not
+    exponent staying.  None (ask :func:`as_terms`) when a term is not
     commutative or has a numeric factor besides its coefficient, or two
     terms share a monomial."""
     terms = []
@@ -376,24 +376,36 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
     return terms[0][0]
 
 
-def _as_terms(expr: Any, key: Callable[[Any], Any]) -> tuple[list, list]:
+def _rational_left_zero(coeff: Any) -> complex:
+    # The coefficient orders terms only after their monomials, which
+    # minus_first has made distinct: a rational one is not evaluated
+    # (sympy's complex() of it runs evalf).
+    return complex(0) if coeff.is_Rational else complex(coeff)
+
+
+def as_terms(
+    expr: Any,
+    key: Callable[[Any], Any],
+    coefficient: Callable[[Any], complex] = _rational_left_zero,
+    is_number: Callable[[Any], bool] = lambda factor: factor.is_number,
+    to_complex: Callable[[Any], complex] = complex,
+) -> tuple[list, list]:
     """sympy's ``Expr.as_terms`` (the same terms, monomials and generators),
     with the generators sorted by ``key``, which must order as
-    ``default_sort_key`` does, for :func:`minus_first` (rational
-    coefficients are left 0)."""
+    ``default_sort_key`` does.  ``coefficient`` evaluates a term's leading
+    number, ``is_number``/``to_complex`` test and evaluate its other
+    factors (sympy's own steps, or remembering ones); by default, for
+    :func:`minus_first`, a rational coefficient is left 0."""
     gens, terms = set(), []
     for term in sp.Add.make_args(expr):
-        coeff, rest = term.as_coeff_Mul()
-        # The coefficient orders terms only after their monomials, which
-        # minus_first has made distinct: a rational one is not evaluated
-        # (sympy's complex() of it runs evalf).
-        coeff = complex(0) if coeff.is_Rational else complex(coeff)
+        c, rest = term.as_coeff_Mul()
+        coeff = coefficient(c)
         cpart, ncpart = {}, []
         if rest is not sp.S.One:
             for factor in sp.Mul.make_args(rest):
-                if factor.is_number:
+                if is_number(factor):
                     try:
-                        coeff *= complex(factor)
+                        coeff *= to_complex(factor)
                     except (TypeError, ValueError):
                         pass
                     else:
@@ -1185,7 +1197,7 @@ class Intermediates:
         makes it, from its parts' kept keys (sympy's walks the whole tree
         each time: most of the cost of a sum's sign, :func:`minus_first`,
         when its factors are sums).  A sum's terms come in the order of
-        ``as_ordered_terms``, by their monomials (:func:`_as_terms`); sympy's
+        ``as_ordered_terms``, by their monomials (:func:`as_terms`); sympy's
         own key is taken where that order needs more (a number among the
         terms, two terms with one monomial, a non-commutative part), and for
         a product whose rest is a power, an atom or non-commutative."""
@@ -1196,7 +1208,7 @@ class Intermediates:
                 a.is_Number or a.is_NumberSymbol or a.is_Order for a in args
             ):
                 return sp.default_sort_key(x)
-            terms, _ = _as_terms(expr, self._sort_key)
+            terms, _ = as_terms(expr, self._sort_key)
             monomials = {monom for _, (_, monom, _) in terms}
             if len(monomials) != len(terms):
                 return sp.default_sort_key(x)
