@@ -38,6 +38,7 @@ from ..jobs.run import (
 )
 from ..jobs.tables import format_table
 from ..version import __version__
+from ..walks import xreplace
 
 __all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 
@@ -560,19 +561,12 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any]) -> Any:
     powers that evaluate to themselves: :func:`_kept_args`) evaluation only
     sorts them, so they are sorted here with sympy's key; anything else
     is rebuilt by sympy as ``xreplace`` does."""
-    return _renamed(expr, rule)
+    return xreplace(expr, rule, rebuild=_sorted_only)
 
 
-def _renamed(expr: Any, rule: dict[Any, Any]) -> Any:
-    found = rule.get(expr)
-    if found is not None:
-        return found
-    old = expr.args
-    if not old:
-        return expr
-    args = [_renamed(a, rule) for a in old]
-    if all(a is b for a, b in zip(args, old, strict=True)):
-        return expr
+def _sorted_only(expr: Any, args: list[Any], changed: list[int]) -> Any:
+    """``expr.func(*args)``, a sum or product that evaluation would only
+    sort formed from ``args`` sorted (:func:`renamed_evaluated`)."""
     cls = type(expr)
     if cls is sp.Add or cls is sp.Mul:
         kept = _kept_args(cls is sp.Mul, args)
