@@ -9,7 +9,6 @@ from dataclasses import dataclass
 from functools import cache, partial
 from pathlib import Path
 
-import black
 import jinja2
 from al2py_runtime.cli import help_text
 
@@ -182,7 +181,7 @@ def convert(
     )
     try:
         if formatted and len(code) <= BLACK_LIMIT:
-            code = black.format_str(code, mode=black.Mode())
+            code = _black(code)
         code = attach_echoes(code)  # after black: only lines that fit move
         # Python itself must load the module: an expression nested too deeply
         # for its parser (a 3,000-term power chain) is refused here, located,
@@ -194,9 +193,18 @@ def convert(
         if "nested" in str(exc.msg):  # "too many nested parentheses"
             raise static_checks.too_deep(filename, text) from None
         raise InternalError(f"generated code does not parse: {exc}") from None
+    return Conversion(code, module)
+
+
+def _black(code: str) -> str:
+    """``code`` formatted by black, imported only here: ``al2py code`` runs
+    its module unformatted and never loads black (a tenth of a second)."""
+    import black
+
+    try:
+        return black.format_str(code, mode=black.Mode())
     except black.InvalidInput as exc:  # invalid generated code
         raise InternalError(f"generated code does not parse: {exc}") from None
-    return Conversion(code, module)
 
 
 #: generated modules larger than this (characters) skip black, which needs
