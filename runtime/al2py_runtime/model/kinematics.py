@@ -14,13 +14,15 @@ Conventions (Kane & Levinson, as Autolev):
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import contextlib
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 import sympy as sp
 from sympy.core.assumptions import assumptions
 from sympy.core.function import Application, AppliedUndef
 from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
+from sympy.utilities.iterables import iterable
 
 from .. import walks
 
@@ -31,6 +33,7 @@ __all__ = [
     "as_dyadic",
     "as_vector",
     "tidy",
+    "tidy_memo",
     "tidy_vector",
     "vdot",
     "vcross",
@@ -209,10 +212,20 @@ SMALL_GENS = 6
 
 
 def is_small(expr: Any, limit: int = SMALL_NODES) -> bool:
-    """True if ``expr`` has at most ``limit`` nodes (stops counting early)."""
-    for count, _ in enumerate(sp.preorder_traversal(expr), start=1):
+    """True if ``expr`` has at most ``limit`` nodes (stops counting early):
+    the nodes ``sp.preorder_traversal(expr)`` yields, a shared subtree once
+    per use, counted without its generators."""
+    count = 0
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        count += 1
         if count > limit:
             return False
+        if isinstance(e, sp.Basic):
+            stack.extend(e.args)
+        elif iterable(e):
+            stack.extend(e)
     return True
 
 
@@ -224,9 +237,36 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
     """
     if not isinstance(expr, sp.Expr) or expr.is_number:
         return expr
+    if not _TIDIED:
+        return _tidy(expr, gens)
+    # within :func:`tidy_memo`: each expression's once
+    key = (expr, tuple(gens))
+    found = _TIDIED[-1].get(key)
+    if found is None:
+        found = _TIDIED[-1][key] = _tidy(expr, key[1])
+    return found
+
+
+#: tidy's results while :func:`tidy_memo` is in force
+_TIDIED: list[dict] = []
+
+
+@contextlib.contextmanager
+def tidy_memo() -> Iterator[None]:
+    """Within this context :func:`tidy` forms each expression's result once
+    (a transcript shows the same measure numbers in many responses)."""
+    _TIDIED.append({})
+    try:
+        yield
+    finally:
+        _TIDIED.pop()
+
+
+def _tidy(expr: sp.Expr, gens: Iterable[Any]) -> Any:
+    """:func:`tidy` of an expression that is no number."""
     if not is_small(expr):
         return expr  # cosmetic only: large models stay fast
-    nodes = set(sp.preorder_traversal(expr))  # ``expr.has(g)``, one walk
+    nodes = _nodes(expr)  # ``expr.has(g)``, one walk
     gens = [g for g in gens if g in nodes]
     if len(gens) > SMALL_GENS:
         return expr
@@ -234,6 +274,22 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
         parts = _collect(sp.expand(expr), gens)
         return sp.Add(*[_tidy_one(c) * m for m, c in parts.items()])
     return _tidy_one(expr)
+
+
+def _nodes(expr: sp.Expr) -> set:
+    """``set(sp.preorder_traversal(expr))``, a shared subtree walked once."""
+    nodes: set = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e in nodes:
+            continue
+        nodes.add(e)
+        if isinstance(e, sp.Basic):
+            stack.extend(e.args)
+        elif iterable(e):
+            stack.extend(e)
+    return nodes
 
 
 def _collect(expr: sp.Expr, gens: list) -> dict:

@@ -234,21 +234,28 @@ class _AutolevPrinter:
 
     def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
         numeric, others = [], []
+        numbers = self.numbers
         for a in expr.args:
-            if self.is_number(a) and not a.has(AppliedUndef):
+            found = numbers.get(a)
+            if found is None:
+                found = _number_in(a, numbers)
+            if found and not a.has(AppliedUndef):
                 numeric.append(a)
             else:
                 others.append(a)
-        terms = sorted(others, key=self.term_key)
+        terms = sorted(others, key=self.term_key) if len(others) > 1 else others
         if numeric:
             const = sp.Add(*numeric)
             if const != 0:
                 terms.insert(0, const)
         sep = " " if top else ""
+        memo = self.shown_top if top else self.shown
         out = ""
         for k, term in enumerate(terms):
-            text, prec = self.show(term, top)
-            if prec < _NEG and term is not terms[0]:
+            # :meth:`show`, its memo read here (a term is never a matrix)
+            found = memo.get(term)
+            text, prec = found if found is not None else self.show(term, top)
+            if prec < _NEG and k:
                 text = f"({text})"
             if k == 0:
                 out = text
@@ -262,26 +269,42 @@ class _AutolevPrinter:
 
     def mul(self, expr: sp.Mul) -> tuple[str, int]:
         numeric, num, den = [], [], []
+        numbers = self.numbers
+        sums = False
         for factor in expr.args:
-            if self.is_number(factor) and not factor.has(AppliedUndef):
+            found = numbers.get(factor)
+            if found is None:
+                found = _number_in(factor, numbers)
+            if found and not factor.has(AppliedUndef):
                 numeric.append(factor)
                 continue
             base, exp = factor.as_base_exp()
             if exp.is_number and exp.is_extended_negative and not factor.is_Function:
                 den.append(sp.Pow(base, -exp))
+                sums = True  # (flip_signs looks at each)
             else:
                 num.append(factor)
+                if isinstance(factor, sp.Add):
+                    sums = True
         coeff = numeric[0] if len(numeric) == 1 else sp.Mul(*numeric)
-        num, flips = self.flip_signs(num)
-        den, flips_den = self.flip_signs(den)
-        if (flips + flips_den) % 2:
-            coeff = -coeff
-        num.sort(key=self.factor_key)
-        den.sort(key=self.factor_key)
+        if sums:  # only a sum can have its sign flipped
+            num, flips = self.flip_signs(num)
+            den, flips_den = self.flip_signs(den)
+            if (flips + flips_den) % 2:
+                coeff = -coeff
+        if len(num) > 1:
+            num.sort(key=self.factor_key)
+        if len(den) > 1:
+            den.sort(key=self.factor_key)
         sign, coeff_text = self.coefficient(coeff)
-        parts = [self.paren(f, _MUL) for f in num]
-        if coeff_text:
-            parts.insert(0, coeff_text)
+        shown = self.shown
+        parts = [coeff_text] if coeff_text else []
+        for f in num:
+            # :meth:`paren` at ``_MUL``, the memo read here (a factor is
+            # never a matrix)
+            found = shown.get(f)
+            text, prec = found if found is not None else self.show(f, False)
+            parts.append(f"({text})" if prec < _MUL else text)
         text = "*".join(parts) if parts else "1"
         if den:
             dens = [self.paren(f, _POW if len(den) == 1 else _MUL) for f in den]
@@ -411,8 +434,14 @@ class _AutolevPrinter:
 
     def factor_key(self, factor: sp.Expr) -> tuple:
         """Order factors of a product: names and functions first, sums last."""
-        base = factor.as_base_exp()[0]
-        return (isinstance(base, sp.Add), _sort_key(factor, self.keys))
+        if type(factor).as_base_exp is _EXPR_AS_BASE_EXP:  # its own base
+            base = factor
+        else:
+            base = factor.as_base_exp()[0]
+        key = self.keys.get(factor)
+        if key is None:
+            key = _sort_key(factor, self.keys)
+        return (isinstance(base, sp.Add), key)
 
     def term_key(self, term: sp.Expr) -> tuple:
         """Order terms of a sum roughly as Autolev does: by degree, then by
@@ -420,11 +449,17 @@ class _AutolevPrinter:
         degree = 0
         args = term.args if term.is_Mul else (term,)
         factors = []
-        is_number = self.is_number
+        numbers = self.numbers
         for factor in args:
-            if is_number(factor):
+            found = numbers.get(factor)  # :meth:`is_number`
+            if found is None:
+                found = _number_in(factor, numbers)
+            if found:
                 continue
             factors.append(factor)
+            if type(factor).as_base_exp is _EXPR_AS_BASE_EXP:  # exponent 1
+                degree += 1
+                continue
             _, exp = factor.as_base_exp()
             power = int(exp) if exp.is_Integer else 0
             degree += power if power > 0 else 1
@@ -439,7 +474,10 @@ class _AutolevPrinter:
             return (degree, len(factors), product)
         else:  # a canonical product's factors stay canonical without numbers
             rest = sp.Mul._from_args(factors)
-        return (degree, len(factors), _sort_key(rest, keys))
+        key = keys.get(rest)
+        if key is None:
+            key = _sort_key(rest, keys)
+        return (degree, len(factors), key)
 
     # ------------------------------------------------------------ matrices
 
@@ -575,6 +613,7 @@ _MINUS_ONE = sp.S.NegativeOne
 _ONE_KEY = sp.S.One.sort_key()
 _MUL_KEY = sp.Mul.class_key()
 _EXPR_SORT_KEY = sp.Expr.sort_key
+_EXPR_AS_BASE_EXP = sp.Expr.as_base_exp
 
 
 def sort_key_in(expr: Any, memo: dict) -> tuple:

@@ -52,6 +52,7 @@ def transcript_lines(
     """The full transcript as text lines.  ``form(value)`` forms each value
     that is not verbatim just before it is printed; ``tick()`` after each
     response is printed (progress)."""
+    from ..model.kinematics import tidy_memo
     from .printing import format_response, shared_keys
 
     by_line: dict[int | None, list[Response]] = defaultdict(list)
@@ -66,7 +67,7 @@ def transcript_lines(
             tick()
         return lines
 
-    with shared_keys():
+    with shared_keys(), tidy_memo():
         _interleave(source, by_line, lines_of, out)
     return out
 
