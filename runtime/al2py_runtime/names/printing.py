@@ -293,9 +293,9 @@ class _AutolevPrinter:
             if (flips + flips_den) % 2:
                 coeff = -coeff
         if len(num) > 1:
-            num.sort(key=self.factor_key)
+            num = self.sorted_factors(num)
         if len(den) > 1:
-            den.sort(key=self.factor_key)
+            den = self.sorted_factors(den)
         sign, coeff_text = self.coefficient(coeff)
         shown = self.shown
         parts = [coeff_text] if coeff_text else []
@@ -443,6 +443,23 @@ class _AutolevPrinter:
             key = _sort_key(factor, self.keys)
         return (isinstance(base, sp.Add), key)
 
+    def sorted_factors(self, factors: list[sp.Expr]) -> list[sp.Expr]:
+        """``sorted(factors, key=self.factor_key)``: each factor's key formed
+        here, ties kept in their order by the factor's position."""
+        keys = self.keys
+        decorated = []
+        for k, factor in enumerate(factors):
+            if type(factor).as_base_exp is _EXPR_AS_BASE_EXP:  # its own base
+                in_sums = isinstance(factor, sp.Add)
+            else:
+                in_sums = isinstance(factor.as_base_exp()[0], sp.Add)
+            key = keys.get(factor)
+            if key is None:
+                key = _sort_key(factor, keys)
+            decorated.append((in_sums, key, k))
+        decorated.sort()
+        return [factors[k] for _, _, k in decorated]
+
     def term_key(self, term: sp.Expr) -> tuple:
         """Order terms of a sum roughly as Autolev does: by degree, then by
         the number of factors (``4*X^2 + 7*X*Y``), then by name."""
@@ -465,7 +482,23 @@ class _AutolevPrinter:
             degree += power if power > 0 else 1
         keys = self.keys
         if len(factors) == len(args):  # the term itself (no numbers to drop)
-            rest = term if len(args) > 1 else factors[0]
+            if len(args) == 1:
+                rest = factors[0]
+            elif type(term) is sp.Mul and term.is_commutative is True:
+                # :func:`_new_sort_key` of a product without numbers, read
+                # off its factors' keys here
+                key = keys.get(term)
+                if key is None:
+                    found = sorted([_key_of(f, keys) for f in args])
+                    key = keys[term] = (
+                        _MUL_KEY,
+                        (len(found), tuple(found)),
+                        _ONE_KEY,
+                        _ONE,
+                    )
+                return (degree, len(factors), key)
+            else:
+                rest = term
         elif len(factors) < 2:
             rest = factors[0] if factors else _ONE
         elif term.is_commutative:  # the key of their product, not formed
@@ -504,6 +537,8 @@ class _Memos:
         #: terms' negatives
         self.negative: dict[Any, bool] = {}
         self.negations: dict[Any, Any] = {}
+        #: the printers that share these memos, by digits
+        self.printers: dict[int, _AutolevPrinter] = {}
 
 
 #: the memos in force (:func:`shared_keys`)
@@ -547,7 +582,8 @@ def _number_in(expr: Any, known: dict) -> bool:
 
 
 def _sort_key(expr: Any, known: dict) -> tuple:
-    """``sp.default_sort_key(expr)``, the same tuple, each node's formed once
+    """``sp.default_sort_key(expr)``, an equal tuple (an integer's number a
+    Python int), each node's formed once
     per ``known`` (sympy's ``Expr.sort_key``, written with the memo; a
     product's key is read off its arguments, without forming the product
     after its coefficient as sympy's ``as_coeff_Mul`` does)."""
@@ -564,6 +600,11 @@ def _key_of(expr: Any, known: dict) -> tuple:
 
 
 def _new_sort_key(expr: Any, known: dict) -> tuple:
+    if type(expr) is sp.Integer:
+        # sympy's key with the integer as a Python int: it compares (and
+        # hashes) with every number as the Integer does, without calling
+        # sympy's comparisons (intermediates' keys differ in their numbers)
+        return (_NUMBER_KEY, (0, ()), (), expr.p)
     if not isinstance(expr, sp.Basic) or type(expr).sort_key is not _EXPR_SORT_KEY:
         return sp.default_sort_key(expr)
     if expr.is_Mul:
@@ -612,13 +653,15 @@ _ONE = sp.S.One
 _MINUS_ONE = sp.S.NegativeOne
 _ONE_KEY = sp.S.One.sort_key()
 _MUL_KEY = sp.Mul.class_key()
+_NUMBER_KEY = sp.Number.class_key()
 _EXPR_SORT_KEY = sp.Expr.sort_key
 _EXPR_AS_BASE_EXP = sp.Expr.as_base_exp
 
 
 def sort_key_in(expr: Any, memo: dict) -> tuple:
-    """``sp.default_sort_key(expr)``, each node's key formed once per
-    ``memo`` (a dict the caller keeps: the program printers use one)."""
+    """``sp.default_sort_key(expr)`` (an equal tuple, ordered alike), each
+    node's key formed once per ``memo`` (a dict the caller keeps: the
+    program printers use one)."""
     return _sort_key(expr, memo)
 
 
@@ -708,7 +751,9 @@ def autolev_str(value: Any, digits: int = 7) -> str:
     >>> autolev_str(sp.Matrix([-1.650629, -0.1746854 - 1.546869*sp.I]))
     '[-1.650629; -0.1746854 - 1.546869*i]'
     """
-    printer = _AutolevPrinter(digits)
+    printer = _printer(digits)
+    if isinstance(value, sp.Expr):  # none of the kinds below
+        return printer.text(value, True)
     if isinstance(value, VectorMatrix):  # ``[N1> + N3>, 3*N2>]``
         return (
             "["
@@ -728,6 +773,17 @@ def autolev_str(value: Any, digits: int = 7) -> str:
     if isinstance(value, bool):
         return "ON" if value else "OFF"
     return printer.text(value, True)
+
+
+def _printer(digits: int) -> _AutolevPrinter:
+    """A printer; within :func:`shared_keys` one per number of digits."""
+    if not _SHARED:
+        return _AutolevPrinter(digits)
+    printers = _SHARED[-1].printers
+    found = printers.get(digits)
+    if found is None:
+        found = printers[digits] = _AutolevPrinter(digits)
+    return found
 
 
 def format_response(
