@@ -1731,9 +1731,10 @@ class Intermediates:
                 continue
             seen.add(z)
             stack.append((z, True))
-            for inner in self._by_name(self._uses(z), reverse=True):
-                if inner not in seen and inner not in known:
-                    stack.append((inner, False))
+            # those still to visit, then ordered (most are visited already)
+            todo = [i for i in self._uses(z) if i not in seen and i not in known]
+            if todo:
+                stack += [(i, False) for i in self._by_name(todo, reverse=True)]
         return order
 
     def _by_name(self, zs: Iterable[Any], reverse: bool = False) -> list[Any]:
