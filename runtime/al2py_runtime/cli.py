@@ -24,7 +24,6 @@ from .jobs.records import (
     job_where,
     output_stems,
 )
-from .jobs.run import check_overrides, run_job
 from .progress import is_terminal
 from .safety import AutolevRuntimeError, describe
 
@@ -302,8 +301,11 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
                         f"--tfinal: {job.where} has no time (only Dynamics and "
                         "ODE jobs integrate)"
                     )
-        for job in jobs:
-            check_overrides(job, overrides)
+        if overrides:  # (the jobs' module, numpy and all, only when used)
+            from .jobs.run import check_overrides
+
+            for job in jobs:
+                check_overrides(job, overrides)
     except NumericsError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -335,6 +337,8 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
     if args.max_evals is not None:
         budget.LIMITS["evaluations"] = args.max_evals
     budget.PROGRESS = is_terminal(sys.stdout)
+    if jobs:
+        from .jobs.run import run_job
     for job in jobs:
         try:
             result = run_job(
