@@ -1221,7 +1221,48 @@ def _number_code(text: str) -> str:
 def _model_calls(lines: list[str]) -> list[str]:
     """``al.simprot(...)`` spelled ``al.model.simprot(...)`` for each command
     of the runtime's :class:`Model` (the class that owns it), in code only
-    (comments and strings are left as they are)."""
+    (comments and strings are left as they are).
+
+    One pass of :data:`_CODE_PARTS` over the text, which reads strings and
+    comments as Python's tokenizer does, finds each ``al.NAME`` of the code
+    (:func:`_model_calls_tokenized` is the tokenizer's reading, kept for the
+    tests that compare the two)."""
+    text = "\n".join(lines)
+    out: list[str] = []
+    done = 0
+    for m in _CODE_PARTS.finditer(text):
+        name = m.group("name")
+        if name in MODEL_COMMANDS and m.group("after") is None:
+            start = m.start("name")
+            out += (text[done:start], "model.")
+            done = start
+    if not out:
+        return list(lines)
+    out.append(text[done:])
+    return "".join(out).split("\n")
+
+
+#: a string (prefixed or not, in any of Python's quotes; escapes skipped),
+#: a comment, or the name ``al`` followed by ``.NAME`` (``after`` a dot: an
+#: attribute ``x.al``, left alone): the parts of generated code that
+#: :func:`_model_calls` tells apart, as Python's tokenizer reads them
+_STRINGS = [
+    r"'''(?:[^\\]|\\.)*?'''",  # triple-quoted, escapes skipped
+    r'"""(?:[^\\]|\\.)*?"""',
+    r"'(?:[^\\'\n]|\\.)*'",  # one line
+    r'"(?:[^\\"\n]|\\.)*"',
+]
+_CODE_PARTS = re.compile(
+    r"[A-Za-z]{0,3}(?:"  # a string's prefix (r, b, f, rb, ...)
+    + "|".join(_STRINGS)
+    + r")|#[^\n]*"
+    + r"|(?P<after>\.[ \t]*)?(?<!\w)al[ \t]*\.[ \t]*(?P<name>\w+)",
+    re.S,
+)
+
+
+def _model_calls_tokenized(lines: list[str]) -> list[str]:
+    """:func:`_model_calls` by Python's tokenizer (token by token)."""
     text = "\n".join(lines)
     try:
         tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
