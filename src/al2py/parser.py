@@ -26,8 +26,10 @@ from dataclasses import dataclass
 
 from al2py_runtime.vocabulary import LIST_COMMANDS
 from antlr4 import CommonTokenStream, InputStream, Token
+from antlr4.atn.ATNState import ATNState
 from antlr4.error.ErrorListener import ErrorListener
 from antlr4.error.Errors import InputMismatchException
+from antlr4.error.ErrorStrategy import DefaultErrorStrategy
 from antlr4.tree.Tree import TerminalNode
 
 from . import ir
@@ -162,6 +164,7 @@ def _parse(
     stream.fill()
     logical.relocate(stream.tokens)
     parser = AutolevParser(stream)
+    parser._errHandler = _ErrorStrategy()
     parser.removeErrorListeners()
     parser.addErrorListener(listener)
     parsed: list[tuple[AutolevParser.StatementContext | None, Token]] = []
@@ -314,6 +317,34 @@ def _describe(tok: Token) -> str:
     if len(text) > 20:
         text = text[:17] + "..."
     return repr(text)
+
+
+class _ErrorStrategy(DefaultErrorStrategy):
+    """ANTLR's default error strategy, whose ``sync`` (at every loop and
+    choice of the grammar, most of a parse's checks) first asks whether the
+    next token is one the state expects: here a set per state answers, not
+    ANTLR's list of ranges.  Every other case is ANTLR's own ``sync``."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        #: the tokens each ATN state expects next (within its rule)
+        self.expected: dict[int, frozenset[int]] = {}
+
+    def sync(self, recognizer: AutolevParser) -> None:
+        if self.inErrorRecoveryMode(recognizer):
+            return
+        state = recognizer.state
+        expected = self.expected.get(state)
+        if expected is None:
+            s = recognizer._interp.atn.states[state]
+            ranges = recognizer.atn.nextTokens(s).intervals or ()
+            expected = self.expected[state] = frozenset(t for r in ranges for t in r)
+        if recognizer.getTokenStream().LA(1) in expected:
+            # as ANTLR's sync does when the token is expected
+            self.nextTokensContext = None
+            self.nextTokenState = ATNState.INVALID_STATE_NUMBER
+            return
+        super().sync(recognizer)
 
 
 class _ErrorListener(ErrorListener):
