@@ -1225,8 +1225,7 @@ def _model_calls(lines: list[str]) -> list[str]:
 
     One pass of :data:`_CODE_PARTS` over the text, which reads strings and
     comments as Python's tokenizer does, finds each ``al.NAME`` of the code
-    (:func:`_model_calls_tokenized` is the tokenizer's reading, kept for the
-    tests that compare the two)."""
+    (``tests/test_model_calls.py`` compares it with the tokenizer's reading)."""
     text = "\n".join(lines)
     out: list[str] = []
     done = 0
@@ -1259,32 +1258,6 @@ _CODE_PARTS = re.compile(
     + r"|(?P<after>\.[ \t]*)?(?<!\w)al[ \t]*\.[ \t]*(?P<name>\w+)",
     re.S,
 )
-
-
-def _model_calls_tokenized(lines: list[str]) -> list[str]:
-    """:func:`_model_calls` by Python's tokenizer (token by token)."""
-    text = "\n".join(lines)
-    try:
-        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
-    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
-        raise InternalError("generated code does not tokenize") from None
-    edits: list[tuple[int, int]] = []  # (row, col) where ``model.`` goes
-    for k in range(len(tokens) - 2):
-        a, dot, name = tokens[k], tokens[k + 1], tokens[k + 2]
-        if (
-            a.type == tokenize.NAME
-            and a.string == "al"
-            and dot.string == "."
-            and name.type == tokenize.NAME
-            and name.string in MODEL_COMMANDS
-            and (k == 0 or tokens[k - 1].string != ".")
-        ):
-            edits.append(name.start)
-    out = text.split("\n")
-    for row, col in reversed(edits):
-        line = out[row - 1]
-        out[row - 1] = line[:col] + "model." + line[col:]
-    return out
 
 
 def attach_echoes(code: str, width: int = 88) -> str:
