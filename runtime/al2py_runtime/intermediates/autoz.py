@@ -1265,6 +1265,15 @@ class Intermediates:
         if any(x in self.exclude for x in present):
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
+        split = linear_terms(expr, present)
+        if split is not None:
+            # each term free of ``present`` or a product of one of them and
+            # factors free of them: the split over placeholders (below) is
+            # the same, term by term (the substitution is one to one)
+            coefs, rest = split
+            return self.name(rest) + sp.Add(
+                *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
+            )
         plain = [sp.Dummy() for _ in present]
         w = substitute(expr, dict(zip(present, plain, strict=True)))
         split = linear_terms(w, plain)
