@@ -114,3 +114,28 @@ def test_name_linear_names_the_parts():
     out = book.name_linear(e, SPEEDS)
     assert out.coeff(u1) != 0 and out.coeff(u2) != 0
     assert sp.expand(book.expand(out) - e) == 0
+
+
+def test_times_is_sympys_product():
+    """``fastkane.times``: the product sympy forms (``==``, ``srepr`` and the
+    arguments' order) for intermediates, numbers and other factors."""
+    from al2py_runtime.model.fastkane import times
+
+    rng = random.Random(3)
+    book = Intermediates()
+    zs = [
+        book.name(sp.sin(q1) * q2 * k + q3 * sp.cos(q2) + sp.Rational(k, 3))
+        for k in range(1, 40)
+    ]
+    other = [a, q1, sp.sin(q2), u1.diff(t), a + b, sp.Float(0.5), 2, -1]
+    numbers = [sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.Integer(3), sp.Rational(-2, 7)]
+    pool = zs + zs + other + numbers
+    cases = [(rng.choice(pool), rng.choice(pool)) for _ in range(3000)]
+    cases += [(z, z) for z in zs[:5]] + [(z, -z) for z in zs[:5]]
+    fast = 0
+    for x, y in cases:
+        got, want = times(x, y), sp.sympify(x) * sp.sympify(y)
+        assert got == want and sp.srepr(got) == sp.srepr(want), (x, y)
+        assert got.args == want.args
+        fast += isinstance(x, type(zs[0])) and isinstance(y, type(zs[0]))
+    assert fast > 500

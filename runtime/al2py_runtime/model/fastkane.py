@@ -41,6 +41,7 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.core.parameters import global_parameters
 from sympy.physics.mechanics import (
     Particle,
     Point,
@@ -51,7 +52,7 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
-from ..intermediates.autoz import Intermediates
+from ..intermediates.autoz import Intermediate, Intermediates
 from .arrange import linear_terms, split_linear_named
 
 __all__ = [
@@ -64,6 +65,7 @@ __all__ = [
     "measure_split",
     "named_dcm",
     "named_measures",
+    "times",
 ]
 
 _T = dynamicsymbols._t
@@ -109,9 +111,47 @@ class Motion:
     rest: Sequence[Any] = (0, 0, 0)
 
 
+def times(a: Any, b: Any) -> Any:
+    """``a * b`` as sympy forms it.  For two different intermediates, or a
+    rational number (not 0 or 1) and an intermediate -- most products of
+    named measure numbers -- ``Mul.flatten`` only puts the number first
+    and sorts the factors by ``Basic.compare`` (which
+    :meth:`Intermediate.compare` is): that is done directly, without
+    sympy's general case and its cache.
+
+    >>> book = Intermediates()
+    >>> q1, q2 = dynamicsymbols("q1 q2")
+    >>> z1, z2 = book.name(sp.sin(q1) * q2 + q1), book.name(sp.cos(q2) * q1 + q2)
+    >>> times(z2, z1) == z1 * z2, times(-2, z1) == -2 * z1
+    (True, True)
+    """
+    if isinstance(a, Intermediate):
+        if isinstance(b, Intermediate):
+            if a != b and global_parameters.evaluate:
+                if a.is_commutative and b.is_commutative:
+                    pair = (a, b) if a.compare(b) < 0 else (b, a)
+                    return sp.Mul._from_args(pair, is_commutative=True)
+        elif getattr(b, "is_Rational", False):
+            return _rational_times(b, a)
+    elif isinstance(b, Intermediate) and getattr(a, "is_Rational", False):
+        return _rational_times(a, b)
+    return a * b
+
+
+def _rational_times(c: Any, z: Any) -> Any:
+    """``c * z``: ``c`` rational, ``z`` an intermediate."""
+    if c is sp.S.Zero or c is sp.S.One or not global_parameters.evaluate:
+        return c * z
+    if not z.is_commutative:
+        return c * z
+    return sp.Mul._from_args((c, z), is_commutative=True)
+
+
 def dot3(a: Sequence[Any], b: Sequence[Any]) -> Any:
     """The dot product of two measure-number triples (zeros skipped)."""
-    return sp.Add(*[x * y for x, y in zip(a, b, strict=True) if x != 0 and y != 0])
+    return sp.Add(
+        *[times(x, y) for x, y in zip(a, b, strict=True) if x != 0 and y != 0]
+    )
 
 
 def cross3(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
@@ -274,9 +314,9 @@ def _measure_split(
                 coefs, rest = terms[i]
                 for j, x in enumerate(split[0]):
                     if x != 0:
-                        coefs[j].append(c * x)
+                        coefs[j].append(times(c, x))
                 if split[1] != 0:
-                    rest.append(c * split[1])
+                    rest.append(times(c, split[1]))
     return [
         ([book.name(sp.Add(*c)) for c in coefs], book.name(sp.Add(*rest)))
         for coefs, rest in terms
