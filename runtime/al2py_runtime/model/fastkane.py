@@ -112,7 +112,8 @@ class Motion:
 
 
 def times(a: Any, b: Any) -> Any:
-    """``a * b`` as sympy forms it.  For two different intermediates, or a
+    """``a * b`` as sympy forms it.  For an intermediate and a different
+    intermediate, a symbol, a function of time or a derivative, or a
     rational number (not 0 or 1) and an intermediate -- most products of
     named measure numbers -- ``Mul.flatten`` only puts the number first
     and sorts the factors by ``Basic.compare`` (which
@@ -126,16 +127,24 @@ def times(a: Any, b: Any) -> Any:
     (True, True)
     """
     if isinstance(a, Intermediate):
-        if isinstance(b, Intermediate):
+        if isinstance(b, _FACTOR):
             if a != b and global_parameters.evaluate:
                 if a.is_commutative and b.is_commutative:
                     pair = (a, b) if a.compare(b) < 0 else (b, a)
                     return sp.Mul._from_args(pair, is_commutative=True)
         elif getattr(b, "is_Rational", False):
             return _rational_times(b, a)
-    elif isinstance(b, Intermediate) and getattr(a, "is_Rational", False):
-        return _rational_times(a, b)
+    elif isinstance(b, Intermediate):
+        if isinstance(a, _FACTOR):
+            return times(b, a)
+        if getattr(a, "is_Rational", False):
+            return _rational_times(a, b)
     return a * b
+
+
+#: factors that are their own base and not numbers: a product of one of
+#: them and an intermediate is the two sorted
+_FACTOR = (Intermediate, AppliedUndef, sp.Derivative, sp.Symbol)
 
 
 def _rational_times(c: Any, z: Any) -> Any:
@@ -388,7 +397,7 @@ def form_rate(
         for col, u in zip(columns, speeds, strict=True):
             c = col[i]
             if c != 0:
-                terms.append(book.time_derivative(c, rate, memo) * u)
+                terms.append(times(book.time_derivative(c, rate, memo), u))
         out.append(sp.Add(*terms))
     return out
 
@@ -426,8 +435,8 @@ def inertia_rows(
                 continue
             for s, a in enumerate(mo.rates):
                 if a is not None:
-                    mm[r][s] += mass * name(dot3(vr, a))
-            non[r] += mass * name(dot3(vr, mo.rest))
+                    mm[r][s] += times(mass, name(dot3(vr, a)))
+            non[r] += times(mass, name(dot3(vr, mo.rest)))
     for imat, omega, mo in rotations:
         i_omega = [name(dot3(imat[i], omega)) for i in range(3)]
         torque = [
