@@ -129,8 +129,12 @@ def test_times_is_sympys_product():
     ]
     other = [a, q1, sp.sin(q2), u1.diff(t), a + b, sp.Float(0.5), 2, -1]
     numbers = [sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.Integer(3), sp.Rational(-2, 7)]
-    pool = zs + zs + other + numbers
-    cases = [(rng.choice(pool), rng.choice(pool)) for _ in range(3000)]
+    products = [-zs[0], 2 * zs[1] * zs[2], a * zs[3], zs[4] * sp.sin(q1), -zs[5] * u1]
+    products += [sp.Rational(1, 3) * zs[6] * zs[7] * q2, zs[8] * (a + b), -zs[9] ** 2]
+    pool = zs + zs + other + numbers + products
+    cases = [(rng.choice(pool), rng.choice(pool)) for _ in range(4000)]
+    cases += [(p, z) for p in products for z in zs[:12]]
+    cases += [(z, p) for p in products for z in zs[:12]]
     cases += [(z, z) for z in zs[:5]] + [(z, -z) for z in zs[:5]]
     fast = 0
     for x, y in cases:

@@ -52,7 +52,7 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
-from ..intermediates.autoz import Intermediate, Intermediates
+from ..intermediates.autoz import Intermediate, Intermediates, product_with
 from .arrange import linear_terms, split_linear_named
 
 __all__ = [
@@ -139,7 +139,27 @@ def times(a: Any, b: Any) -> Any:
             return times(b, a)
         if getattr(a, "is_Rational", False):
             return _rational_times(a, b)
+    if isinstance(b, _FACTOR) and getattr(a, "is_Mul", False):
+        return _product_times(a, b)
+    if isinstance(a, _FACTOR) and getattr(b, "is_Mul", False):
+        return _product_times(b, a)
     return a * b
+
+
+def _product_times(m: Any, x: Any) -> Any:
+    """``m * x``, ``m`` a product with an intermediate among its factors:
+    ``Mul(*args[:i], f * x, *args[i + 1:])`` for that factor ``f``
+    (:func:`~al2py_runtime.intermediates.autoz.product_with`, which forms
+    what sympy's ``Mul`` would, or asks it)."""
+    if not global_parameters.evaluate or not m.is_commutative:
+        return m * x
+    for i, f in enumerate(m.args):
+        if isinstance(f, Intermediate):
+            d = times(f, x)
+            if d.is_Mul or isinstance(d, _FACTOR):
+                return product_with(m.args, i, d)
+            break
+    return m * x
 
 
 #: factors that are their own base and not numbers: a product of one of
