@@ -3,7 +3,9 @@ directly equals the split over placeholders (each variable substituted by
 a symbol of its own), node for node, on many random expressions.
 
 The direct reading is what ``name_linear`` (``Fr()``, ``FrStar()``, the
-rates of a derivation) uses; the placeholder split is the one it replaces."""
+rates of a derivation) uses; the placeholder split is the one it replaces.
+Also ``fastkane.times``, the products of named measure numbers that
+``Fr()`` and ``FrStar()`` form, against sympy's own products."""
 
 from __future__ import annotations
 
