@@ -1265,13 +1265,43 @@ class Intermediates:
         if any(x in self.exclude for x in present):
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
-        plain = [sp.Dummy() for _ in present]
-        w = substitute(expr, dict(zip(present, plain, strict=True)))
+        split = self.linear_split(expr, present)
+        if split is None:
+            return expr  # not linear: keep it as it is
+        coefs, rest = split
+        return self.name(rest) + sp.Add(
+            *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
+        )
+
+    def linear_split(
+        self, expr: Any, xs: Sequence[Any], direct: bool = True
+    ) -> tuple[list[Any], Any] | None:
+        """``expr = rest + sum(c_k * x_k)`` as ``(coefficients, rest)``, none
+        of them holding an ``x`` (None when ``expr`` is not linear in
+        ``xs``): :meth:`name_linear`'s split, nothing named.
+
+        The split is read over placeholders (each ``x`` a symbol of its
+        own): term by term (:func:`linear_terms`), through sums and products
+        (:func:`_linear_parts`), or by differentiating.  Where each ``x``
+        occurs only as a term or a factor of sums and products (most
+        velocities), it is read from ``expr`` directly, with the same
+        answer and no substitution (``direct=False`` always substitutes):
+        the substitution is one to one and changes no other part, so the
+        same terms and factors are read, and sympy's sums and products of
+        them do not depend on their order."""
+        if direct:
+            split = linear_terms(expr, xs)
+            if split is None:
+                split = _linear_parts(expr, xs)
+            if split is not None:
+                return split
+        plain = [sp.Dummy() for _ in xs]
+        w = substitute(expr, dict(zip(xs, plain, strict=True)))
         split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
             if any(appearing(c, plain) for c in coefs) or appearing(rest, plain):
-                return expr  # not linear: keep it as it is
+                return None
         elif (split := _linear_parts(w, plain)) is not None:
             coefs, rest = split  # no x in the coefficients or the rest
         else:
@@ -1279,14 +1309,12 @@ class Intermediates:
             for p in plain:
                 c = self._pd(w, p, {})  # one memo per variable
                 if appearing(c, plain):
-                    return expr  # not linear: keep it as it is (found early)
+                    return None  # not linear (found early)
                 coefs.append(c)
             rest = substitute(w, dict.fromkeys(plain, sp.S.Zero))
             if appearing(rest, plain):
-                return expr
-        return self.name(rest) + sp.Add(
-            *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
-        )
+                return None
+        return coefs, rest
 
     def label(self, z: Intermediate) -> str:
         k = _number(z)

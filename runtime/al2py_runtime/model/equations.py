@@ -25,6 +25,7 @@ from .fastkane import (
     linear_form,
     measure_split,
     named_measures,
+    times,
 )
 from .state import ModelPart, command, query, t
 
@@ -154,7 +155,7 @@ class KaneEquations(ModelPart):
             sp.Add(
                 r,
                 *[
-                    col[i] * sp.Derivative(u, t)
+                    times(col[i], sp.Derivative(u, t))
                     for col, u in zip(columns, speeds, strict=True)
                     if col[i] != 0
                 ],

@@ -41,6 +41,7 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.core.parameters import global_parameters
 from sympy.physics.mechanics import (
     Particle,
     Point,
@@ -51,7 +52,7 @@ from sympy.physics.mechanics import (
 from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
-from ..intermediates.autoz import Intermediates
+from ..intermediates.autoz import Intermediate, Intermediates, product_with
 from .arrange import linear_terms, split_linear_named
 
 __all__ = [
@@ -64,6 +65,7 @@ __all__ = [
     "measure_split",
     "named_dcm",
     "named_measures",
+    "times",
 ]
 
 _T = dynamicsymbols._t
@@ -109,9 +111,76 @@ class Motion:
     rest: Sequence[Any] = (0, 0, 0)
 
 
+def times(a: Any, b: Any) -> Any:
+    """``a * b`` as sympy forms it.  For an intermediate and a different
+    intermediate, a symbol, a function of time or a derivative, or a
+    rational number (not 0 or 1) and an intermediate -- most products of
+    named measure numbers -- ``Mul.flatten`` only puts the number first
+    and sorts the factors by ``Basic.compare`` (which
+    :meth:`Intermediate.compare` is): that is done directly, without
+    sympy's general case and its cache.
+
+    >>> book = Intermediates()
+    >>> q1, q2 = dynamicsymbols("q1 q2")
+    >>> z1, z2 = book.name(sp.sin(q1) * q2 + q1), book.name(sp.cos(q2) * q1 + q2)
+    >>> times(z2, z1) == z1 * z2, times(-2, z1) == -2 * z1
+    (True, True)
+    """
+    if isinstance(a, Intermediate):
+        if isinstance(b, _FACTOR):
+            if a != b and global_parameters.evaluate:
+                if a.is_commutative and b.is_commutative:
+                    pair = (a, b) if a.compare(b) < 0 else (b, a)
+                    return sp.Mul._from_args(pair, is_commutative=True)
+        elif getattr(b, "is_Rational", False):
+            return _rational_times(b, a)
+    elif isinstance(b, Intermediate):
+        if isinstance(a, _FACTOR):
+            return times(b, a)
+        if getattr(a, "is_Rational", False):
+            return _rational_times(a, b)
+    if isinstance(b, _FACTOR) and getattr(a, "is_Mul", False):
+        return _product_times(a, b)
+    if isinstance(a, _FACTOR) and getattr(b, "is_Mul", False):
+        return _product_times(b, a)
+    return a * b
+
+
+def _product_times(m: Any, x: Any) -> Any:
+    """``m * x``, ``m`` a product with an intermediate among its factors:
+    ``Mul(*args[:i], f * x, *args[i + 1:])`` for that factor ``f``
+    (:func:`~al2py_runtime.intermediates.autoz.product_with`, which forms
+    what sympy's ``Mul`` would, or asks it)."""
+    if not global_parameters.evaluate or not m.is_commutative:
+        return m * x
+    for i, f in enumerate(m.args):
+        if isinstance(f, Intermediate):
+            d = times(f, x)
+            if d.is_Mul or isinstance(d, _FACTOR):
+                return product_with(m.args, i, d)
+            break
+    return m * x
+
+
+#: factors that are their own base and not numbers: a product of one of
+#: them and an intermediate is the two sorted
+_FACTOR = (Intermediate, AppliedUndef, sp.Derivative, sp.Symbol)
+
+
+def _rational_times(c: Any, z: Any) -> Any:
+    """``c * z``: ``c`` rational, ``z`` an intermediate."""
+    if c is sp.S.Zero or c is sp.S.One or not global_parameters.evaluate:
+        return c * z
+    if not z.is_commutative:
+        return c * z
+    return sp.Mul._from_args((c, z), is_commutative=True)
+
+
 def dot3(a: Sequence[Any], b: Sequence[Any]) -> Any:
     """The dot product of two measure-number triples (zeros skipped)."""
-    return sp.Add(*[x * y for x, y in zip(a, b, strict=True) if x != 0 and y != 0])
+    return sp.Add(
+        *[times(x, y) for x, y in zip(a, b, strict=True) if x != 0 and y != 0]
+    )
 
 
 def cross3(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
@@ -274,9 +343,9 @@ def _measure_split(
                 coefs, rest = terms[i]
                 for j, x in enumerate(split[0]):
                     if x != 0:
-                        coefs[j].append(c * x)
+                        coefs[j].append(times(c, x))
                 if split[1] != 0:
-                    rest.append(c * split[1])
+                    rest.append(times(c, split[1]))
     return [
         ([book.name(sp.Add(*c)) for c in coefs], book.name(sp.Add(*rest)))
         for coefs, rest in terms
@@ -348,7 +417,7 @@ def form_rate(
         for col, u in zip(columns, speeds, strict=True):
             c = col[i]
             if c != 0:
-                terms.append(book.time_derivative(c, rate, memo) * u)
+                terms.append(times(book.time_derivative(c, rate, memo), u))
         out.append(sp.Add(*terms))
     return out
 
@@ -386,8 +455,8 @@ def inertia_rows(
                 continue
             for s, a in enumerate(mo.rates):
                 if a is not None:
-                    mm[r][s] += mass * name(dot3(vr, a))
-            non[r] += mass * name(dot3(vr, mo.rest))
+                    mm[r][s] += times(mass, name(dot3(vr, a)))
+            non[r] += times(mass, name(dot3(vr, mo.rest)))
     for imat, omega, mo in rotations:
         i_omega = [name(dot3(imat[i], omega)) for i in range(3)]
         torque = [
