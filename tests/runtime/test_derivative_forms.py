@@ -92,13 +92,17 @@ def _sum_cases(pools, n: int = 600, seed: int = 2) -> list:
 
 
 def _product_mismatches(product_with, cases) -> list:
-    return [
-        (args, i, d)
-        for args, i, d in cases
-        if not _same_tree(
-            product_with(args, i, d), sp.Mul(*args[:i], d, *args[i + 1 :])
-        )
-    ]
+    """The cases where ``product_with`` differs from sympy's ``Mul``, asked
+    without and with the product's kept factor facts (as the chain rule
+    asks it)."""
+    out = []
+    for args, i, d in cases:
+        want = sp.Mul(*args[:i], d, *args[i + 1 :])
+        if not _same_tree(product_with(args, i, d), want):
+            out.append((args, i, d))
+        elif not _same_tree(product_with(args, i, d, autoz._Factors(args)), want):
+            out.append((args, i, d, "factors"))
+    return out
 
 
 def _sum_mismatches(total, cases) -> list:
@@ -119,7 +123,7 @@ def test_the_checks_find_a_wrong_product_and_sum(pools):
     """A product whose new factor is put last (not in sympy's order), and a
     sum that keeps its terms' order, are found."""
 
-    def last(args, i, d):
+    def last(args, i, d, factors=None):
         rest = [a for j, a in enumerate(args) if j != i]
         return (
             sp.Mul._from_args((*rest, d))

@@ -626,7 +626,7 @@ class _Factors:
     other factors start, each factor's base (:func:`_plain_base`), the
     factors with none, and whether the bases are distinct."""
 
-    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct")
+    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct", "simple")
 
     def __init__(self, args: tuple) -> None:
         first = args[0]
@@ -640,6 +640,15 @@ class _Factors:
         )
         self.plain = {b for b in self.bases if b is not None}
         self.distinct = len(self.plain) + len(self.odd) == len(self.bases)
+        #: every factor plain, with distinct bases, after a rational
+        #: coefficient other than 1 (or none): a factor replaced by an
+        #: intermediate of another base is only placed in order
+        self.simple = (
+            self.distinct
+            and not self.odd
+            and self.coeff.is_Rational
+            and not (self.start and self.coeff is sp.S.One)
+        )
 
 
 def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -> Any:
@@ -655,6 +664,26 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
     into a power), and the result is not a number times one sum (sympy
     distributes it): that is done here directly.  Otherwise (or for any
     other ``d``) sympy forms the product."""
+    if (
+        factors is not None
+        and factors.simple
+        and isinstance(d, Intermediate)
+        and i >= factors.start
+        and d.is_commutative
+        and (d not in factors.plain or d == factors.bases[i - factors.start])
+    ):
+        # the chain rule's common case (the steps below, for it): the
+        # coefficient stays first and the intermediate takes its place
+        # among the other factors, by a binary search on Basic.compare
+        rest = args[:i] + args[i + 1 :]
+        lo, hi = factors.start, len(rest)
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if _compare(rest[mid], d) < 0:
+                lo = mid + 1
+            else:
+                hi = mid
+        return _product((*rest[:lo], d, *rest[lo:]))
     if isinstance(d, Intermediate):
         n, new_factors = sp.S.One, (d,)
     elif d.is_Rational:
@@ -848,7 +877,11 @@ def _sum(number: Any, terms: list) -> Any:
     """The sum of a number and of commutative terms in sympy's canonical
     form, none a number and no two alike, as ``Add.flatten`` orders them:
     the number first, the rest by ``Basic.compare``."""
-    terms.sort(key=_BY_COMPARE)
+    if len(terms) == 2:  # the one comparison list.sort makes, without its keys
+        if _compare(terms[1], terms[0]) < 0:
+            terms.reverse()
+    else:
+        terms.sort(key=_BY_COMPARE)
     if number is not sp.S.Zero:
         terms.insert(0, number)
     if not terms:
