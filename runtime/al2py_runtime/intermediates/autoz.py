@@ -898,7 +898,9 @@ def _is_variable_x(e: Any, x: Any) -> bool:
     ``__eq__`` on every node walked, nor the metaclass's unless the classes
     hash alike (its test builds sympy's class keys of both, a tenth of a
     derivative's walk over the other functions of time; a function of
-    time's class keeps its hash)."""
+    time's class keeps its hash).  Two objects of one type are compared
+    only when they hash alike (sympy keeps each object's hash): another
+    derivative than ``x`` is told apart without comparing its parts."""
     return e is x or (
         (
             type(e) is type(x)
@@ -908,6 +910,7 @@ def _is_variable_x(e: Any, x: Any) -> bool:
                 and type(e) == type(x)  # noqa: E721
             )
         )
+        and hash(e) == hash(x)
         and e == x
     )
 
