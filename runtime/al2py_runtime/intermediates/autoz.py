@@ -626,7 +626,7 @@ class _Factors:
     other factors start, each factor's base (:func:`_plain_base`), the
     factors with none, and whether the bases are distinct."""
 
-    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct")
+    __slots__ = ("coeff", "start", "bases", "plain", "odd", "distinct", "simple")
 
     def __init__(self, args: tuple) -> None:
         first = args[0]
@@ -640,6 +640,15 @@ class _Factors:
         )
         self.plain = {b for b in self.bases if b is not None}
         self.distinct = len(self.plain) + len(self.odd) == len(self.bases)
+        #: every factor plain, with distinct bases, after a rational
+        #: coefficient other than 1 (or none): a factor replaced by an
+        #: intermediate of another base is only placed in order
+        self.simple = (
+            self.distinct
+            and not self.odd
+            and self.coeff.is_Rational
+            and not (self.start and self.coeff is sp.S.One)
+        )
 
 
 def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -> Any:
@@ -655,6 +664,26 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
     into a power), and the result is not a number times one sum (sympy
     distributes it): that is done here directly.  Otherwise (or for any
     other ``d``) sympy forms the product."""
+    if (
+        factors is not None
+        and factors.simple
+        and isinstance(d, Intermediate)
+        and i >= factors.start
+        and d.is_commutative
+        and (d not in factors.plain or d == factors.bases[i - factors.start])
+    ):
+        # the chain rule's common case (the steps below, for it): the
+        # coefficient stays first and the intermediate takes its place
+        # among the other factors, by a binary search on Basic.compare
+        rest = args[:i] + args[i + 1 :]
+        lo, hi = factors.start, len(rest)
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if _compare(rest[mid], d) < 0:
+                lo = mid + 1
+            else:
+                hi = mid
+        return _product((*rest[:lo], d, *rest[lo:]))
     if isinstance(d, Intermediate):
         n, new_factors = sp.S.One, (d,)
     elif d.is_Rational:
@@ -666,7 +695,9 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
             return sp.Mul(*args[:i], d, *args[i + 1 :])
         else:
             n, new_factors = sp.S.One, d.args
-    elif d.is_commutative and not d.is_Add and not d.is_Number:
+    elif d.is_commutative and not d.is_Number:
+        # a sum is a factor as any other (its base is itself); a number
+        # times one sum alone is distributed by sympy (below)
         n, new_factors = sp.S.One, (d,)
     else:
         return sp.Mul(*args[:i], d, *args[i + 1 :])
@@ -682,7 +713,11 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
     own = factors.bases[i - start]  # factor i's base, no longer there
     plain = factors.plain
     if len(new_factors) == 1:
-        base = _plain_base(new_factors[0])
+        z = new_factors[0]
+        if isinstance(z, Intermediate):  # _plain_base, without the call
+            base = z if z.is_commutative else None
+        else:
+            base = _plain_base(z)
         if base is None or (base in plain and base != own):
             return sp.Mul(*args[:i], d, *args[i + 1 :])
     else:
@@ -700,7 +735,6 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
         if coeff is not sp.S.One:
             return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
     if len(new_factors) == 1:
-        z = new_factors[0]
         lo, hi = 0, len(rest)  # bisect_left by Basic.compare, without its keys
         while lo < hi:
             mid = (lo + hi) // 2
@@ -769,16 +803,17 @@ def total(terms: Sequence[Any]) -> Any:
     if len(terms) < 2:  # sympy's Add of one term is the term
         return terms[0] if terms else sp.S.Zero
     number = sp.S.Zero
-    collected: dict[tuple, Any] = {}
-    #: key -> the term itself, while no other term has joined it
-    alone: dict[tuple, Any] = {}
+    #: key -> [its coefficient, the term itself while no other term has
+    #: joined it, else None] (one lookup per term: a key's hash is its
+    #: factors', not kept by the tuple)
+    collected: dict[tuple, list] = {}
     seq = list(terms)
     for o in seq:  # a sum's terms join the end, as in Add.flatten
         if o.is_Mul:
             args = o.args
             c = args[0]
             if c.is_Number:
-                if not c.is_finite:
+                if not c.is_Rational and not c.is_finite:
                     return sp.Add(*terms)
                 key = args[1:]
             else:
@@ -789,7 +824,7 @@ def total(terms: Sequence[Any]) -> Any:
             seq.extend(o.args)
             continue
         elif o.is_Number:
-            if not o.is_finite:
+            if not o.is_Rational and not o.is_finite:
                 return sp.Add(*terms)
             number += o
             continue
@@ -802,26 +837,25 @@ def total(terms: Sequence[Any]) -> Any:
             return sp.Add(*terms)
         else:
             c, key = sp.S.One, (o,)
-        found = collected.get(key)
-        if found is None:
-            collected[key] = c
-            alone[key] = o
-        else:
-            collected[key] = found + c
-            alone.pop(key, None)
+        entry = [c, o]
+        found = collected.setdefault(key, entry)
+        if found is not entry:
+            found[0] = found[0] + c
+            found[1] = None
     out = []
-    for key, c in collected.items():
-        o = alone.get(key)
+    for key, (c, o) in collected.items():
+        # a rational zero is sympy's one zero
+        zero = c is _ZERO if c.is_Rational else c.is_zero
         if o is not None:
             # sympy's Add.flatten rebuilds it from its coefficient and key
             # as it is (a product's arguments, a product with a sum, a
             # plain factor times a number): the term itself
-            if c.is_zero:
+            if zero:
                 continue
             if c is sp.S.One or len(key) > 1 or isinstance(key[0], _SIMPLE):
                 out.append(o)
                 continue
-        elif c.is_zero:
+        elif zero:
             continue
         if c is sp.S.One:
             out.append(key[0] if len(key) == 1 else _product(key))
@@ -843,7 +877,11 @@ def _sum(number: Any, terms: list) -> Any:
     """The sum of a number and of commutative terms in sympy's canonical
     form, none a number and no two alike, as ``Add.flatten`` orders them:
     the number first, the rest by ``Basic.compare``."""
-    terms.sort(key=_BY_COMPARE)
+    if len(terms) == 2:  # the one comparison list.sort makes, without its keys
+        if _compare(terms[1], terms[0]) < 0:
+            terms.reverse()
+    else:
+        terms.sort(key=_BY_COMPARE)
     if number is not sp.S.Zero:
         terms.insert(0, number)
     if not terms:
@@ -851,6 +889,41 @@ def _sum(number: Any, terms: list) -> Any:
     return (
         terms[0] if len(terms) == 1 else sp.Add._from_args(terms, is_commutative=True)
     )
+
+
+def _is_variable_x(e: Any, x: Any) -> bool:
+    """``e == x`` for the variable ``x`` (equal only with an equal type:
+    functions of time made twice are equal classes, not one, and only a
+    function of time's class compares equal to another), without sympy's
+    ``__eq__`` on every node walked, nor the metaclass's unless the classes
+    hash alike (its test builds sympy's class keys of both, a tenth of a
+    derivative's walk over the other functions of time; a function of
+    time's class keeps its hash).  Two objects of one type are compared
+    only when they hash alike (sympy keeps each object's hash): another
+    derivative than ``x`` is told apart without comparing its parts."""
+    return e is x or (
+        (
+            type(e) is type(x)
+            or (
+                isinstance(e, AppliedUndef)
+                and hash(type(e)) == hash(type(x))
+                and type(e) == type(x)  # noqa: E721
+            )
+        )
+        and hash(e) == hash(x)
+        and e == x
+    )
+
+
+def _variable_pd(e: Any, x: Any, rate: Callable[[Any], Any] | None) -> Any:
+    """``Intermediates._pd`` of an atom or a variable ``e``: 1 for ``x``,
+    else 0, or ``rate(e)`` of a variable when a total derivative is
+    taken."""
+    if _is_variable_x(e, x):
+        return sp.S.One
+    if rate is None or e.is_Atom:
+        return sp.S.Zero
+    return rate(e)
 
 
 def has_intermediates(expr: Any) -> bool:
@@ -1498,32 +1571,26 @@ class Intermediates:
         named.  With ``rate`` (``x`` is then ``t``), the total derivative:
         a variable's is ``rate(variable)``, and an intermediate's goes
         through all of its arguments."""
-        # ``e == x`` (x is a variable, so equal only with an equal type:
-        # functions of time made twice are equal classes, not one, and only
-        # a function of time's class compares equal to another), without
-        # sympy's ``__eq__`` on every node walked, nor the metaclass's
-        # unless the classes hash alike (its test builds sympy's class keys
-        # of both, a tenth of a derivative's walk over the other functions
-        # of time; a function of time's class keeps its hash).
-        if e is x or (
-            (
-                type(e) is type(x)
-                or (
-                    isinstance(e, AppliedUndef)
-                    and hash(type(e)) == hash(type(x))
-                    and type(e) == type(x)  # noqa: E721
-                )
-            )
-            and e == x
-        ):
-            return sp.S.One
-        if e.is_Atom:
-            return sp.S.Zero
-        if isinstance(e, _VARIABLE):
-            return sp.S.Zero if rate is None else rate(e)
+        if e.is_Atom or isinstance(e, _VARIABLE):
+            return _variable_pd(e, x, rate)
         found = memo.get(e)
         if found is not None:
             return found
+        return self._pd_new(e, x, memo, given, rate)
+
+    def _pd_new(
+        self,
+        e: Any,
+        x: Any,
+        memo: dict,
+        given: dict | None,
+        rate: Callable[[Any], Any] | None,
+    ) -> Any:
+        """:meth:`_pd` of ``e``, neither an atom nor a variable, not in
+        ``memo``: found and kept there.  The parts of a sum or product are
+        looked up in ``memo`` here, and an atom or variable among them is
+        decided here, without a call (most factors are intermediates met
+        before, functions of time or symbols)."""
         if isinstance(e, Intermediate):
             args = e.args[1:]
             if given is not None and e in given:
@@ -1544,29 +1611,34 @@ class Intermediates:
                         if (d := self._pd(a, x, memo, given, rate)) is not _ZERO
                     ]
                 )
-        elif e.is_Add:
-            terms = []
-            for a in e.args:
-                d = memo.get(a)  # most parts are shared: no call
-                if d is None:
-                    d = self._pd(a, x, memo, given, rate)
-                if d is not _ZERO:
-                    terms.append(d)
-            out = total(terms)
-        elif e.is_Mul:
+        elif e.is_Add or e.is_Mul:
             args = e.args
+            product = e.is_Mul
             terms = []
             factors = None
             for i, a in enumerate(args):
-                if a.is_Number:
-                    continue
-                d = memo.get(a)  # most factors are shared: no call
-                if d is None:
-                    d = self._pd(a, x, memo, given, rate)
+                if a.is_Atom or isinstance(a, _VARIABLE):
+                    # _variable_pd, without the call for a constant
+                    if a is x or (
+                        (type(a) is type(x) or isinstance(a, AppliedUndef))
+                        and _is_variable_x(a, x)
+                    ):
+                        d = sp.S.One
+                    elif rate is None or a.is_Atom:
+                        continue
+                    else:
+                        d = rate(a)
+                else:
+                    d = memo.get(a)  # most parts are shared
+                    if d is None:
+                        d = self._pd_new(a, x, memo, given, rate)
                 if d is not _ZERO:
-                    if factors is None:
-                        factors = self._factors_of(e)
-                    terms.append(product_with(args, i, d, factors))
+                    if product:
+                        if factors is None:
+                            factors = self._factors_of(e)
+                        terms.append(product_with(args, i, d, factors))
+                    else:
+                        terms.append(d)
             out = total(terms)
         elif e.is_Pow and not e.exp.has(x):
             d = self._pd(e.base, x, memo, given, rate)
