@@ -94,8 +94,6 @@ def test_direct_split_is_the_placeholder_split(seed):
         assert _same(one, other), (e, present, one, other)
         if one is not None:
             direct_used += 1
-            if any(x in present for x in SPEEDS) and e.has(*RATES):
-                continue  # a speed set to 0 inside its derivative (both paths)
             coefs, rest = one
             back = rest + sum(k * x for k, x in zip(coefs, present, strict=True))
             assert sp.expand(book.expand(back - e)) == 0
@@ -145,3 +143,27 @@ def test_times_is_sympys_product():
         assert got.args == want.args
         fast += isinstance(x, type(zs[0])) and isinstance(y, type(zs[0]))
     assert fast > 500
+
+
+def test_a_speeds_rate_is_kept_when_splitting_by_the_speed():
+    """Splitting by ``u1`` keeps ``u1'`` (and ``u1''``) a variable of its
+    own: a placeholder put for ``u1`` inside ``Derivative(u1, t)`` made it
+    zero and lost the term (``a*u1' + u1`` split to rest ``a*Derivative(0,
+    t)``)."""
+    book = Intermediates()
+    rate, second = u1.diff(t), u1.diff(t, 2)
+    cases = [
+        (a * rate + u1, [1], a * rate),
+        (sp.sin(rate) + a * u1, [a], sp.sin(rate)),
+        (u1 * rate**2 + a, [rate**2], a),
+        (u1 * sp.sin(rate) + second, [sp.sin(rate)], second),
+        (b * u1 + c * u2 + u2.diff(t) * u1, [b + u2.diff(t), c], sp.S.Zero),
+    ]
+    for e, coefs, rest in cases:
+        xs = [x for x in (u1, u2) if e.has(x)]
+        for direct in (True, False):
+            got = book.linear_split(e, xs, direct=direct)
+            assert got is not None, e
+            assert [sp.expand(book.expand(k)) for k in got[0]] == coefs, e
+            assert sp.expand(book.expand(got[1]) - rest) == 0, e
+            assert not got[1].has(sp.Derivative(sp.S.Zero, t)), e

@@ -1369,7 +1369,33 @@ class Intermediates:
             if split is not None:
                 return split
         plain = [sp.Dummy() for _ in xs]
+        held = self._held_derivatives(expr, xs)
+        if held:  # each a variable of its own while the xs are placeholders
+            expr = substitute(expr, held)
         w = substitute(expr, dict(zip(xs, plain, strict=True)))
+        split = self._placeholder_split(w, plain)
+        if split is None or not held:
+            return split
+        back = {h: d for d, h in held.items()}
+        coefs, rest = split
+        return [substitute(c, back) for c in coefs], substitute(rest, back)
+
+    def _held_derivatives(self, expr: Any, xs: Sequence[Any]) -> dict:
+        """A placeholder for each derivative in ``expr`` of one of ``xs``
+        that is not itself among them (``u1'`` when splitting by ``u1``):
+        putting a symbol for ``u1`` inside ``Derivative(u1, t)`` would make
+        it ``Derivative(p, t)``, zero, and lose the term (Kane's method
+        holds a speed and its rate as independent variables)."""
+        derivatives = self._scan(expr)[1]
+        if not derivatives:
+            return {}
+        xset = set(xs)
+        found = [d for d in derivatives if d not in xset and d.has(*xs)]
+        found.sort(key=self._sort_key)
+        return {d: sp.Dummy() for d in found}
+
+    def _placeholder_split(self, w: Any, plain: list) -> tuple | None:
+        """:meth:`linear_split` of ``w`` by the symbols ``plain``."""
         split = linear_terms(w, plain)
         if split is not None:
             coefs, rest = split
