@@ -560,9 +560,7 @@ def named_intermediates(
     return inter
 
 
-def renamed_evaluated(
-    expr: Any, rule: dict[Any, Any], memo: dict | None = None
-) -> Any:
+def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None) -> Any:
     """``expr.xreplace(rule)`` (the same expression, node for node) for a
     ``rule`` that renames objects to distinct symbols.
 
