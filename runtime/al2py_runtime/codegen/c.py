@@ -9,9 +9,19 @@ from typing import Any
 
 from ..jobs import backends
 from ..jobs.kutta import KUTTA_C
+from .printers import PrintedOnce
 from .program import Assign, Program
 
 __all__ = ["c_source"]
+
+
+class _Printer(PrintedOnce, backends.CPrinter):
+    """The C backend's printer, each part printed once per program (see
+    :class:`.printers.PrintedOnce`)."""
+
+    def __init__(self) -> None:
+        backends.CPrinter.__init__(self)
+        self._printed = {}
 
 
 def _string(text: str) -> str:
@@ -59,7 +69,7 @@ def _unpack(program: Program, block: list[Assign]) -> list[str]:
 
 def equations(program: Program, api: str) -> list[str]:
     """``eqns`` and ``outputs`` (with ``al_solve`` when needed)."""
-    printer = backends.CPrinter()
+    printer = _Printer()
     texts: dict = {}
     n = program.nu
     lines = [

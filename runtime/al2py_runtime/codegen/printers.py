@@ -22,13 +22,54 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["Remembering"]
+__all__ = ["PrintedOnce", "Remembering"]
 
 #: what doprint's statement is walked for (see Remembering)
 _WALKED_FOR = (sp.re, IndexedBase)
 
 
-class Remembering:
+class PrintedOnce:
+    """A mixin for a sympy code printer (before it in the bases): each part
+    printed once per printer (one program), its text remembered.
+
+    A program's statements share many parts (``sin(Q3)``, ``z12**2``, a
+    product of constants), which sympy prints again wherever they occur.
+    A part's text depends only on the part (sympy's ``==`` is structural)
+    and the printer's settings, with two exceptions that are kept out: the
+    part a statement's printing starts from (``_print_level`` 0 on entry;
+    a Float is printed with its zeros there, without them inside), and a
+    part whose printing records a number constant or an unsupported object
+    for the statement's declarations (``doprint`` forgets them after each
+    statement).  Calls with keyword arguments go to sympy as they are."""
+
+    def __init__(self, settings: dict | None = None) -> None:
+        super().__init__(settings)  # type: ignore[call-arg]
+        self._printed: dict = {}
+
+    def _print(self, expr: Any, **kwargs: Any) -> str:
+        if kwargs or self._print_level < 1:  # type: ignore[attr-defined]
+            return super()._print(expr, **kwargs)  # type: ignore[misc]
+        printed = self._printed
+        found = printed.get(expr)
+        if found is not None:
+            return found
+        marks = _marks(self)
+        text = super()._print(expr)  # type: ignore[misc]
+        if marks == _marks(self):
+            printed[expr] = text
+        return text
+
+
+def _marks(printer: Any) -> tuple[int, int]:
+    """How many number constants and unsupported objects ``doprint`` has
+    recorded for the statement it prints."""
+    return (
+        len(getattr(printer, "_number_symbols", ())),
+        len(getattr(printer, "_not_supported", ())),
+    )
+
+
+class Remembering(PrintedOnce):
     """A mixin for a sympy code printer (before it in the bases): sort keys,
     number tests and precedences remembered; the order of terms and of
     factors formed with them; sums printed as ``StrPrinter._print_Add``."""
