@@ -35,7 +35,8 @@ class PrintedOnce:
     A program's statements share many parts (``sin(Q3)``, ``z12**2``, a
     product of constants), which sympy prints again wherever they occur.
     A part's text depends only on the part (sympy's ``==`` is structural)
-    and the printer's settings, with two exceptions that are kept out: the
+    and the printer's settings (a number's also on its class), with two
+    exceptions that are kept out: the
     part a statement's printing starts from (``_print_level`` 0 on entry;
     a Float is printed with its zeros there, without them inside), and a
     part whose printing records a number constant or an unsupported object
@@ -47,26 +48,34 @@ class PrintedOnce:
         self._printed: dict = {}
 
     def _print(self, expr: Any, **kwargs: Any) -> str:
-        if kwargs or self._print_level < 1:  # type: ignore[attr-defined]
+        if (
+            kwargs
+            or self._print_level < 1  # type: ignore[attr-defined]
+            or not isinstance(expr, sp.Basic)
+        ):
             return super()._print(expr, **kwargs)  # type: ignore[misc]
+        # a number with its class: sympy's == holds between a Float and
+        # Fortran's literal_dp (printed 1.0d0 and 1d0)
+        key = (type(expr), expr) if expr.is_Number else expr
         printed = self._printed
-        found = printed.get(expr)
+        found = printed.get(key)
         if found is not None:
             return found
-        marks = _marks(self)
-        text = super()._print(expr)  # type: ignore[misc]
-        if marks == _marks(self):
-            printed[expr] = text
+        numbers = getattr(self, "_number_symbols", None)
+        unsupported = getattr(self, "_not_supported", None)
+        if numbers is None or unsupported is None:  # not within doprint
+            return super()._print(expr)  # type: ignore[misc]
+        # what this part records, apart (it may be recorded already)
+        self._number_symbols, self._not_supported = set(), set()
+        try:
+            text = super()._print(expr)  # type: ignore[misc]
+            if not self._number_symbols and not self._not_supported:
+                printed[key] = text
+        finally:
+            numbers |= self._number_symbols
+            unsupported |= self._not_supported
+            self._number_symbols, self._not_supported = numbers, unsupported
         return text
-
-
-def _marks(printer: Any) -> tuple[int, int]:
-    """How many number constants and unsupported objects ``doprint`` has
-    recorded for the statement it prints."""
-    return (
-        len(getattr(printer, "_number_symbols", ())),
-        len(getattr(printer, "_not_supported", ())),
-    )
 
 
 class Remembering(PrintedOnce):
