@@ -15,7 +15,6 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
-from sympy.core.traversal import iterargs
 from sympy.tensor.indexed import IndexedBase
 
 from ..intermediates.autoz import as_terms
@@ -89,6 +88,8 @@ class Remembering(PrintedOnce):
         self._numbers: dict = {}
         self._precs: dict = {}
         self._plain_statement: Any = None
+        #: part -> whether it holds a _WALKED_FOR object
+        self._walked: dict = {}
         #: (expression, target) -> its printed statement: a program's
         #: outputs routine assigns again the intermediates its equations have
         self.statements: dict = {}
@@ -112,14 +113,24 @@ class Remembering(PrintedOnce):
         # doprint's statement (an Assignment) walked once for both ``re``
         # (sympy's UnevaluatedExpr handling) and ``IndexedBase``
         # (_print_Assignment's loops), instead of once for each
-        if isinstance(expr, sp.Basic) and not any(
-            isinstance(x, _WALKED_FOR) for x in iterargs(expr)
-        ):
+        if isinstance(expr, sp.Basic) and not self._holds_walked_for(expr):
             self._plain_statement = expr
             return expr
         if backends.without_re(expr):
             return expr
         return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
+
+    def _holds_walked_for(self, expr: Any) -> bool:
+        """Whether ``expr`` or a part of it (``iterargs``) is a
+        ``_WALKED_FOR`` object; each part asked once per printer (the
+        statements share their parts)."""
+        found = self._walked.get(expr)
+        if found is None:
+            found = isinstance(expr, _WALKED_FOR) or any(
+                self._holds_walked_for(a) for a in expr.args
+            )
+            self._walked[expr] = found
+        return found
 
     def _print_Assignment(self, expr: Any) -> str:  # noqa: N802 - sympy's
         # sympy's last case (lhs = rhs) when the statement has no
