@@ -110,6 +110,8 @@ def _shared_parts() -> list[sp.Expr]:
     f = sp.Float(1.5)
     shared = [f, X + f, f, sp.GoldenRatio * X, Y + sp.GoldenRatio * X]
     shared += [sp.sin(X) * f, sp.sin(X) * f + Y, -sp.sin(X) * f]
+    # re(...) in a statement: sympy's own handling of the statement
+    shared += [sp.sin(X) + sp.re(A), sp.sin(X), sp.re(A) * Y, sp.re(A)]
     for e in EXPRS[:120]:
         shared += [e, *e.args, e + Y, e]
     return shared
@@ -132,8 +134,8 @@ def test_parts_printed_once_print_as_sympy(ours, theirs, settings):
     # printer afresh for each
     mine = ours(settings)
     for e in _shared_parts():
-        if e.has(sp.I) and theirs is FCodePrinter:
-            continue
+        if e.has(sp.I, sp.re) and theirs is FCodePrinter:
+            continue  # strict Fortran cannot print re (nor can sympy's)
         if e.has(sp.GoldenRatio) and theirs is OctaveCodePrinter:
             continue  # strict MATLAB cannot print it (nor can sympy's)
         want = theirs(settings).doprint(e, assign_to="r")
@@ -146,6 +148,15 @@ def test_parts_printed_once_print_as_sympy(ours, theirs, settings):
 def test_c_parts_printed_once_print_as_the_backends():
     mine = CProgramPrinter()
     for e in _shared_parts():
-        if e.has(sp.GoldenRatio):
-            continue  # strict C99 cannot print it
+        if e.has(sp.GoldenRatio, sp.re):
+            continue  # strict C99 cannot print them
         assert mine.doprint(e) == CPrinter().doprint(e), e
+
+
+def test_c_statements_with_re_handled_as_the_backends():
+    mine = CProgramPrinter()
+    u = sp.UnevaluatedExpr(X)
+    for e in [sp.sin(A) + sp.re(u), sp.sin(A), sp.re(u) * A, sp.re(A), X + A]:
+        assert mine._handle_UnevaluatedExpr(e) == CPrinter()._handle_UnevaluatedExpr(
+            e
+        ), e

@@ -7,9 +7,11 @@ import math
 import textwrap
 from typing import Any
 
+import sympy as sp
+
 from ..jobs import backends
 from ..jobs.kutta import KUTTA_C
-from .printers import PrintedOnce
+from .printers import PrintedOnce, holds_instance
 from .program import Assign, Program
 
 __all__ = ["c_source"]
@@ -22,6 +24,14 @@ class _Printer(PrintedOnce, backends.CPrinter):
     def __init__(self) -> None:
         backends.CPrinter.__init__(self)
         self._printed = {}
+        self._re: dict = {}  # part -> whether it holds an re(...)
+
+    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
+        # the backend's: nothing to do without re(...) (asked of each part
+        # once per program, not walked again in each statement)
+        if isinstance(expr, sp.Basic) and not holds_instance(expr, sp.re, self._re):
+            return expr
+        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _string(text: str) -> str:

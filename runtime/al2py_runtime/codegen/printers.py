@@ -21,7 +21,7 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["PrintedOnce", "Remembering"]
+__all__ = ["PrintedOnce", "Remembering", "holds_instance"]
 
 #: what doprint's statement is walked for (see Remembering)
 _WALKED_FOR = (sp.re, IndexedBase)
@@ -121,16 +121,7 @@ class Remembering(PrintedOnce):
         return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
 
     def _holds_walked_for(self, expr: Any) -> bool:
-        """Whether ``expr`` or a part of it (``iterargs``) is a
-        ``_WALKED_FOR`` object; each part asked once per printer (the
-        statements share their parts)."""
-        found = self._walked.get(expr)
-        if found is None:
-            found = isinstance(expr, _WALKED_FOR) or any(
-                self._holds_walked_for(a) for a in expr.args
-            )
-            self._walked[expr] = found
-        return found
+        return holds_instance(expr, _WALKED_FOR, self._walked)
 
     def _print_Assignment(self, expr: Any) -> str:  # noqa: N802 - sympy's
         # sympy's last case (lhs = rhs) when the statement has no
@@ -166,6 +157,20 @@ class Remembering(PrintedOnce):
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
+
+
+def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
+    """``any(isinstance(x, kinds) for x in iterargs(expr))`` (and so
+    ``expr.has(kind)`` of one class): each part asked once per ``memo``
+    (kept for one ``kinds``), where ``iterargs`` walks a part again
+    wherever it occurs."""
+    found = memo.get(expr)
+    if found is None:
+        found = isinstance(expr, kinds) or any(
+            holds_instance(a, kinds, memo) for a in expr.args
+        )
+        memo[expr] = found
+    return found
 
 
 def _complex(x: Any, memo: dict) -> complex:
