@@ -18,13 +18,61 @@ __all__ = ["c_source"]
 
 
 class _Printer(PrintedOnce, backends.CPrinter):
-    """The C backend's printer, each part printed once per program (see
-    :class:`.printers.PrintedOnce`)."""
+    """The C backend's printer (strict), each part printed once per program
+    (see :class:`.printers.PrintedOnce`)."""
 
     def __init__(self) -> None:
         backends.CPrinter.__init__(self)
-        self._printed = {}
+        self.start_remembering(strict=True)
         self._re: dict = {}  # part -> whether it holds an re(...)
+
+    # the backend's printing of sums, products, powers and calls, remembered
+    def _print_Add(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_Add, expr, *args, **kwargs)
+
+    def _print_Mul(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_Mul, expr, *args, **kwargs)
+
+    def _print_Pow(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_Pow, expr, *args, **kwargs)
+
+    def _print_Function(
+        self, expr: Any, *args: Any, **kwargs: Any
+    ) -> str:  # noqa: N802
+        return self.print_once(super()._print_Function, expr, *args, **kwargs)
+
+    def _print_Abs(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_Abs, expr, *args, **kwargs)
+
+    def _print_sign(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_sign, expr, *args, **kwargs)
+
+    def _print_sin(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_sin, expr, *args, **kwargs)
+
+    def _print_cos(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_cos, expr, *args, **kwargs)
+
+    def _print_tan(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_tan, expr, *args, **kwargs)
+
+    def _print_asin(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_asin, expr, *args, **kwargs)
+
+    def _print_acos(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_acos, expr, *args, **kwargs)
+
+    def _print_atan(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_atan, expr, *args, **kwargs)
+
+    def _print_atan2(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_atan2, expr, *args, **kwargs)
+
+    def _print_exp(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_exp, expr, *args, **kwargs)
+
+    def _print_log(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_log, expr, *args, **kwargs)
 
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
         # the backend's: nothing to do without re(...) (asked of each part

@@ -12,6 +12,7 @@ leaves.  :class:`Remembering` forms each once per printer (one program).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
@@ -21,60 +22,86 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["PrintedOnce", "Remembering", "holds_instance"]
+__all__ = ["PrintedOnce", "Remembering", "holds_instance", "printed_once"]
 
 #: what doprint's statement is walked for (see Remembering)
 _WALKED_FOR = (sp.re, IndexedBase)
 
 
 class PrintedOnce:
-    """A mixin for a sympy code printer (before it in the bases): each part
-    printed once per printer (one program), its text remembered.
+    """A mixin for a strict sympy code printer (before it in the bases):
+    the parts that its methods decorated with :func:`printed_once` (or
+    going through :meth:`print_once`) print -- sums, products, powers,
+    function calls -- printed once per printer (one program), their text
+    remembered.
 
     A program's statements share many parts (``sin(Q3)``, ``z12**2``, a
     product of constants), which sympy prints again wherever they occur.
-    A part's text depends only on the part (sympy's ``==`` is structural)
-    and the printer's settings (a number's also on its class), with two
-    exceptions that are kept out: the
-    part a statement's printing starts from (``_print_level`` 0 on entry;
-    a Float is printed with its zeros there, without them inside), and a
-    part whose printing records a number constant or an unsupported object
-    for the statement's declarations (``doprint`` forgets them after each
-    statement).  Calls with keyword arguments go to sympy as they are."""
+    A part's text depends only on the part (sympy's ``==`` is structural;
+    parts of different classes are never equal) and the printer's
+    settings, with these kept out: the part a statement's printing starts
+    from (``_print_level`` 1: sympy prints a Float alone with its zeros,
+    without them inside), a part holding a number constant (``pi``, ...,
+    which a printer may record for the statement's declarations, forgotten
+    after each statement) and calls with more arguments.  A strict printer
+    raises on an object it cannot print (a printer that is not strict
+    records it, and remembers nothing here)."""
 
     def __init__(self, settings: dict | None = None) -> None:
         super().__init__(settings)  # type: ignore[call-arg]
-        self._printed: dict = {}
+        self.start_remembering(bool(settings and settings.get("strict") is True))
 
-    def _print(self, expr: Any, **kwargs: Any) -> str:
+    def start_remembering(self, strict: bool) -> None:
+        """Nothing remembered yet; ``strict``: whether the printer is."""
+        self._printed: dict = {}
+        self._constants: dict = {}  # part -> whether it holds a NumberSymbol
+        self._remembers = strict
+
+    def remembered_text(self, expr: Any) -> str | None:
+        """The text of ``expr`` printed before as a part, or None."""
+        if self._print_level <= 1:  # type: ignore[attr-defined]
+            return None
+        return self._printed.get(expr)
+
+    def remember_text(self, expr: Any, text: str) -> None:
+        """Keep ``text`` as ``expr``'s, where it depends on ``expr`` alone."""
         if (
-            kwargs
-            or self._print_level < 1  # type: ignore[attr-defined]
-            or not isinstance(expr, sp.Basic)
+            self._remembers
+            and self._print_level > 1  # type: ignore[attr-defined]
+            and not holds_instance(expr, sp.NumberSymbol, self._constants)
         ):
-            return super()._print(expr, **kwargs)  # type: ignore[misc]
-        # a number with its class: sympy's == holds between a Float and
-        # Fortran's literal_dp (printed 1.0d0 and 1d0)
-        key = (type(expr), expr) if expr.is_Number else expr
-        printed = self._printed
-        found = printed.get(key)
-        if found is not None:
-            return found
-        numbers = getattr(self, "_number_symbols", None)
-        unsupported = getattr(self, "_not_supported", None)
-        if numbers is None or unsupported is None:  # not within doprint
-            return super()._print(expr)  # type: ignore[misc]
-        # what this part records, apart (it may be recorded already)
-        self._number_symbols, self._not_supported = set(), set()
-        try:
-            text = super()._print(expr)  # type: ignore[misc]
-            if not self._number_symbols and not self._not_supported:
-                printed[key] = text
-        finally:
-            numbers |= self._number_symbols
-            unsupported |= self._not_supported
-            self._number_symbols, self._not_supported = numbers, unsupported
-        return text
+            self._printed[expr] = text
+
+    def print_once(
+        self, method: Callable[..., str], expr: Any, *args: Any, **kwargs: Any
+    ) -> str:
+        """``method(expr, *args, **kwargs)`` (a bound printing method of this
+        printer, ``super()``'s), remembered (see :class:`PrintedOnce`)."""
+        if args or kwargs:
+            return method(expr, *args, **kwargs)
+        found = self.remembered_text(expr)
+        if found is None:
+            found = method(expr)
+            self.remember_text(expr, found)
+        return found
+
+
+def printed_once(method: Callable[..., str]) -> Callable[..., str]:
+    """A printing method of a :class:`PrintedOnce` printer whose text is
+    remembered (see there)."""
+
+    def printed(self: Any, expr: Any, *args: Any, **kwargs: Any) -> str:
+        if args or kwargs:
+            return method(self, expr, *args, **kwargs)
+        found = self.remembered_text(expr)
+        if found is None:
+            found = method(self, expr)
+            self.remember_text(expr, found)
+        return found
+
+    printed.__name__ = getattr(method, "__name__", "printed")
+    printed.__doc__ = getattr(method, "__doc__", None)
+    return printed
 
 
 class Remembering(PrintedOnce):
