@@ -192,11 +192,18 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     (kept for one ``kinds``), where ``iterargs`` walks a part again
     wherever it occurs."""
     found = memo.get(expr)
-    if found is None:
-        found = isinstance(expr, kinds) or any(
-            holds_instance(a, kinds, memo) for a in expr.args
-        )
-        memo[expr] = found
+    if found is not None:
+        return found
+    found = isinstance(expr, kinds)
+    if not found:
+        for a in expr.args:
+            held = memo.get(a)
+            if held is None:
+                held = holds_instance(a, kinds, memo)
+            if held:
+                found = True
+                break
+    memo[expr] = found
     return found
 
 
