@@ -15,7 +15,6 @@ line and the exit status is 2 (the other files are written).
 from __future__ import annotations
 
 import argparse
-import gc
 import linecache
 import sys
 import types
@@ -99,10 +98,6 @@ def main(argv: list[str]) -> int:
         return 2
     from al2py_runtime.codegen import write_programs
 
-    # The programs are the last thing this process does: the cyclic
-    # collector (paused while they are written) is not started again to
-    # scan the objects the writing made (0.2-0.3 s of Moore's Whipple).
-    gc.disable()
     ws = module.al
     if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
