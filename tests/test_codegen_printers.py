@@ -9,6 +9,7 @@ import random
 
 import pytest
 import sympy as sp
+from al2py_runtime.codegen.c import _Printer as CProgramPrinter
 from al2py_runtime.codegen.fortran import _Printer as FortranPrinter
 from al2py_runtime.codegen.octave import _Printer as OctavePrinter
 from al2py_runtime.jobs.backends import CPrinter, precedence_of
@@ -99,3 +100,63 @@ def test_c_prints_as_sympy_without_order():
         if e.has(sp.I) or e.has(sp.pi) or e.has(sp.Pow):
             continue  # CPrinter's own powers, functions and numbers
         assert mine.doprint(e) == theirs.doprint(e), e
+
+
+def _shared_parts() -> list[sp.Expr]:
+    """Statements sharing parts in different places: a Float alone (printed
+    with its zeros) and inside a sum (without), a number constant that
+    Fortran declares in front of each statement using it, the random
+    expressions and their parts again."""
+    f = sp.Float(1.5)
+    shared = [f, X + f, f, sp.GoldenRatio * X, Y + sp.GoldenRatio * X]
+    shared += [sp.sin(X) * f, sp.sin(X) * f + Y, -sp.sin(X) * f]
+    # re(...) in a statement: sympy's own handling of the statement
+    shared += [sp.sin(X) + sp.re(A), sp.sin(X), sp.re(A) * Y, sp.re(A)]
+    for e in EXPRS[:120]:
+        shared += [e, *e.args, e + Y, e]
+    return shared
+
+
+@pytest.mark.parametrize(
+    ("ours", "theirs", "settings"),
+    [
+        (OctavePrinter, OctaveCodePrinter, {"strict": True}),
+        (
+            lambda s: FortranPrinter(),
+            FCodePrinter,
+            {"source_format": "fixed", "standard": 95, "strict": True},
+        ),
+    ],
+    ids=["matlab", "fortran"],
+)
+def test_parts_printed_once_print_as_sympy(ours, theirs, settings):
+    # one printer for all statements (each part's text remembered), sympy's
+    # printer afresh for each
+    mine = ours(settings)
+    for e in _shared_parts():
+        if e.has(sp.I, sp.re) and theirs is FCodePrinter:
+            continue  # strict Fortran cannot print re (nor can sympy's)
+        if e.has(sp.GoldenRatio) and theirs is OctaveCodePrinter:
+            continue  # strict MATLAB cannot print it (nor can sympy's)
+        want = theirs(settings).doprint(e, assign_to="r")
+        assert mine.doprint(e, assign_to="r") == want, e
+        # without a target the statement's own part is printed first (a
+        # Float alone with its zeros)
+        assert mine.doprint(e) == theirs(settings).doprint(e), e
+
+
+def test_c_parts_printed_once_print_as_the_backends():
+    mine = CProgramPrinter()
+    for e in _shared_parts():
+        if e.has(sp.GoldenRatio, sp.re):
+            continue  # strict C99 cannot print them
+        assert mine.doprint(e) == CPrinter().doprint(e), e
+
+
+def test_c_statements_with_re_handled_as_the_backends():
+    mine = CProgramPrinter()
+    u = sp.UnevaluatedExpr(X)
+    for e in [sp.sin(A) + sp.re(u), sp.sin(A), sp.re(u) * A, sp.re(A), X + A]:
+        assert mine._handle_UnevaluatedExpr(e) == CPrinter()._handle_UnevaluatedExpr(
+            e
+        ), e

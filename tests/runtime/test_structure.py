@@ -67,6 +67,9 @@ FOREIGN = {
     "_vel_dict": "sympy Point: its velocities; a V2pts deferred by Autolev's"
     " rule withdraws a given one (sympy has no unset)",
     "_print": "sympy printers' dispatch (the printer extension protocol)",
+    "_print_level": "sympy Printer: how deep _print calls are (a Float alone is"
+    " printed with its zeros at depth 1; codegen/printers.py PrintedOnce"
+    " remembers only parts printed deeper)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",
     "_current_frames": "sys._current_frames: the statement a long import derives",

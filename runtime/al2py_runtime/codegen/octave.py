@@ -14,7 +14,7 @@ from sympy.printing.octave import OctaveCodePrinter
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering
+from .printers import Remembering, printed_once
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -32,9 +32,11 @@ class _Printer(Remembering, OctaveCodePrinter):
     """sympy's MATLAB printer, the same text faster (see
     :class:`.printers.Remembering`)."""
 
+    @printed_once
     def _print_Add(self, expr: Any, order: Any = None) -> str:
         return self.print_ordered_add(expr, order)
 
+    @printed_once
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
@@ -72,6 +74,7 @@ class _Printer(Remembering, OctaveCodePrinter):
         divsym = "/" if all(number(bi) for bi in b) else "./"
         return sign + multjoin(a, a_str) + divsym + f"({multjoin(b, b_str)})"
 
+    @printed_once
     def _print_Pow(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Pow with the number tests and precedences
         # remembered
@@ -90,6 +93,11 @@ class _Printer(Remembering, OctaveCodePrinter):
                 return "1" + sym + self.parenthesize(expr.base, prec)
         base = self.parenthesize(expr.base, prec)
         return f"{base}{powsymbol}{self.parenthesize(expr.exp, prec)}"
+
+    def _print_Function(
+        self, expr: Any, *args: Any, **kwargs: Any
+    ) -> str:  # noqa: N802
+        return self.print_once(super()._print_Function, expr, *args, **kwargs)
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:

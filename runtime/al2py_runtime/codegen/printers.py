@@ -12,23 +12,99 @@ leaves.  :class:`Remembering` forms each once per printer (one program).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
-from sympy.core.traversal import iterargs
 from sympy.tensor.indexed import IndexedBase
 
 from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["Remembering"]
+__all__ = ["PrintedOnce", "Remembering", "holds_instance", "printed_once"]
 
 #: what doprint's statement is walked for (see Remembering)
 _WALKED_FOR = (sp.re, IndexedBase)
 
 
-class Remembering:
+class PrintedOnce:
+    """A mixin for a strict sympy code printer (before it in the bases):
+    the parts that its methods decorated with :func:`printed_once` (or
+    going through :meth:`print_once`) print -- sums, products, powers,
+    function calls -- printed once per printer (one program), their text
+    remembered.
+
+    A program's statements share many parts (``sin(Q3)``, ``z12**2``, a
+    product of constants), which sympy prints again wherever they occur.
+    A part's text depends only on the part (sympy's ``==`` is structural;
+    parts of different classes are never equal) and the printer's
+    settings, with these kept out: the part a statement's printing starts
+    from (``_print_level`` 1: sympy prints a Float alone with its zeros,
+    without them inside), a part holding a number constant (``pi``, ...,
+    which a printer may record for the statement's declarations, forgotten
+    after each statement) and calls with more arguments.  A strict printer
+    raises on an object it cannot print (a printer that is not strict
+    records it, and remembers nothing here)."""
+
+    def __init__(self, settings: dict | None = None) -> None:
+        super().__init__(settings)  # type: ignore[call-arg]
+        self.start_remembering(bool(settings and settings.get("strict") is True))
+
+    def start_remembering(self, strict: bool) -> None:
+        """Nothing remembered yet; ``strict``: whether the printer is."""
+        self._printed: dict = {}
+        self._constants: dict = {}  # part -> whether it holds a NumberSymbol
+        self._remembers = strict
+
+    def remembered_text(self, expr: Any) -> str | None:
+        """The text of ``expr`` printed before as a part, or None."""
+        if self._print_level <= 1:  # type: ignore[attr-defined]
+            return None
+        return self._printed.get(expr)
+
+    def remember_text(self, expr: Any, text: str) -> None:
+        """Keep ``text`` as ``expr``'s, where it depends on ``expr`` alone."""
+        if (
+            self._remembers
+            and self._print_level > 1  # type: ignore[attr-defined]
+            and not holds_instance(expr, sp.NumberSymbol, self._constants)
+        ):
+            self._printed[expr] = text
+
+    def print_once(
+        self, method: Callable[..., str], expr: Any, *args: Any, **kwargs: Any
+    ) -> str:
+        """``method(expr, *args, **kwargs)`` (a bound printing method of this
+        printer, ``super()``'s), remembered (see :class:`PrintedOnce`)."""
+        if args or kwargs:
+            return method(expr, *args, **kwargs)
+        found = self.remembered_text(expr)
+        if found is None:
+            found = method(expr)
+            self.remember_text(expr, found)
+        return found
+
+
+def printed_once(method: Callable[..., str]) -> Callable[..., str]:
+    """A printing method of a :class:`PrintedOnce` printer whose text is
+    remembered (see there)."""
+
+    def printed(self: Any, expr: Any, *args: Any, **kwargs: Any) -> str:
+        if args or kwargs:
+            return method(self, expr, *args, **kwargs)
+        found = self.remembered_text(expr)
+        if found is None:
+            found = method(self, expr)
+            self.remember_text(expr, found)
+        return found
+
+    printed.__name__ = getattr(method, "__name__", "printed")
+    printed.__doc__ = getattr(method, "__doc__", None)
+    return printed
+
+
+class Remembering(PrintedOnce):
     """A mixin for a sympy code printer (before it in the bases): sort keys,
     number tests and precedences remembered; the order of terms and of
     factors formed with them; sums printed as ``StrPrinter._print_Add``."""
@@ -39,6 +115,8 @@ class Remembering:
         self._numbers: dict = {}
         self._precs: dict = {}
         self._plain_statement: Any = None
+        #: part -> whether it holds a _WALKED_FOR object
+        self._walked: dict = {}
         #: (expression, target) -> its printed statement: a program's
         #: outputs routine assigns again the intermediates its equations have
         self.statements: dict = {}
@@ -62,14 +140,15 @@ class Remembering:
         # doprint's statement (an Assignment) walked once for both ``re``
         # (sympy's UnevaluatedExpr handling) and ``IndexedBase``
         # (_print_Assignment's loops), instead of once for each
-        if isinstance(expr, sp.Basic) and not any(
-            isinstance(x, _WALKED_FOR) for x in iterargs(expr)
-        ):
+        if isinstance(expr, sp.Basic) and not self._holds_walked_for(expr):
             self._plain_statement = expr
             return expr
         if backends.without_re(expr):
             return expr
         return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
+
+    def _holds_walked_for(self, expr: Any) -> bool:
+        return holds_instance(expr, _WALKED_FOR, self._walked)
 
     def _print_Assignment(self, expr: Any) -> str:  # noqa: N802 - sympy's
         # sympy's last case (lhs = rhs) when the statement has no
@@ -105,6 +184,27 @@ class Remembering:
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
+
+
+def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
+    """``any(isinstance(x, kinds) for x in iterargs(expr))`` (and so
+    ``expr.has(kind)`` of one class): each part asked once per ``memo``
+    (kept for one ``kinds``), where ``iterargs`` walks a part again
+    wherever it occurs."""
+    found = memo.get(expr)
+    if found is not None:
+        return found
+    found = isinstance(expr, kinds)
+    if not found:
+        for a in expr.args:
+            held = memo.get(a)
+            if held is None:
+                held = holds_instance(a, kinds, memo)
+            if held:
+                found = True
+                break
+    memo[expr] = found
+    return found
 
 
 def _complex(x: Any, memo: dict) -> complex:

@@ -471,19 +471,27 @@ def describe(
     accel_names = [identifier(label_of(o, job.names), taken) for o in c.ud_objs]
     for d, name in zip(spec.accels, accel_names, strict=True):
         rename[d] = sp.Symbol(name, real=True)
-    inter = named_intermediates(spec.intermediates, rename, taken)
+    memo: dict = {}  # renamed parts, shared: ``rename`` only grows (see below)
+    inter = named_intermediates(spec.intermediates, rename, taken, memo)
 
     def sub(e: Any) -> Any:
-        return renamed_evaluated(sp.sympify(e), rename)
+        return renamed_evaluated(sp.sympify(e), rename, memo)
 
     n = len(spec.accels)
     accel_syms = {rename[d] for d in spec.accels}
     derivs = [sub(spec.derivs[i]) for i in states]
+    # an intermediate's symbol is never an acceleration's (their names are
+    # distinct), so the walk through the intermediates a derivative needs
+    # is taken only if one were
+    inter_accels = accel_syms & {s for s, _ in inter}
     late_ids = {
         i
         for i, e in enumerate(derivs)
         if e.free_symbols & accel_syms
-        or any(s.free_symbols & accel_syms for s, _ in backends.needed(inter, [e]))
+        or (
+            inter_accels
+            and any(s.free_symbols & accel_syms for s, _ in backends.needed(inter, [e]))
+        )
     }
     x_names = iter_names("x", taken)
     first = [sub(e) for e in [*spec.mass, *spec.forcing]]
@@ -537,19 +545,29 @@ def new_program(
 
 
 def named_intermediates(
-    intermediates: Iterable[tuple[Any, Any]], rename: dict[Any, Any], taken: set[str]
+    intermediates: Iterable[tuple[Any, Any]],
+    rename: dict[Any, Any],
+    taken: set[str],
+    memo: dict | None = None,
 ) -> list[tuple[Any, Any]]:
-    """The AutoZ intermediates as ``z1, z2, ...`` (``rename`` learns them)."""
+    """The AutoZ intermediates as ``z1, z2, ...`` (``rename`` learns them).
+
+    One ``memo`` of renamed parts serves every definition (and, given, the
+    caller's later renaming with the same ``rename``): a part's answer
+    depends on the part and the objects it holds, and each definition holds
+    only intermediates defined before it, so the ones ``rename`` learns
+    later are in no part already answered."""
     z_names = iter_names("z", taken)
+    memo = {} if memo is None else memo
     inter = []
     for d, body in intermediates:
         s = sp.Symbol(next(z_names), real=True)
         rename[d] = s
-        inter.append((s, renamed_evaluated(sp.sympify(body), rename)))
+        inter.append((s, renamed_evaluated(sp.sympify(body), rename, memo)))
     return inter
 
 
-def renamed_evaluated(expr: Any, rule: dict[Any, Any]) -> Any:
+def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None) -> Any:
     """``expr.xreplace(rule)`` (the same expression, node for node) for a
     ``rule`` that renames objects to distinct symbols.
 
@@ -560,8 +578,10 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any]) -> Any:
     bases or terms, at most one number, no nested sum or product, numeric
     powers that evaluate to themselves: :func:`_kept_args`) evaluation only
     sorts them, so they are sorted here with sympy's key; anything else
-    is rebuilt by sympy as ``xreplace`` does."""
-    return xreplace(expr, rule, rebuild=_sorted_only)
+    is rebuilt by sympy as ``xreplace`` does.  ``memo``: as
+    :func:`..walks.xreplace`'s (calls whose rules agree on the objects of
+    every part it holds)."""
+    return xreplace(expr, rule, memo, rebuild=_sorted_only)
 
 
 def _sorted_only(expr: Any, args: list[Any], changed: list[int]) -> Any:

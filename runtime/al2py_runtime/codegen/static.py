@@ -101,10 +101,11 @@ def describe_static(
             unpack.append(Assign(("ud", k, ident), 0))
         integration = []
     ranges = _ranges(job, constants[-1]) if sweep is not None else []
-    inter = named_intermediates(spec.intermediates, rename, taken)
+    memo: dict = {}  # renamed parts (program.named_intermediates)
+    inter = named_intermediates(spec.intermediates, rename, taken, memo)
 
     def sub(e: Any) -> Any:
-        return renamed_evaluated(sp.sympify(e), rename)
+        return renamed_evaluated(sp.sympify(e), rename, memo)
 
     n = len(spec.xs)
     x_names = iter_names("x", taken)

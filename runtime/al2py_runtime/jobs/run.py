@@ -130,6 +130,8 @@ class _Slots:
         self._dummies: set[sp.Dummy] = set()  # the values of known
         #: AutoZ intermediates, ``(dummy, numeric definition)`` in order
         self.intermediates: list[tuple[sp.Dummy, Any]] = []
+        #: parts of definitions renamed by :meth:`_definition` (see there)
+        self._renamed: dict[Any, Any] = {}
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -228,7 +230,12 @@ class _Slots:
             rule[sym] = self.known[sym]
         for obj in (*zs, *derivs, *funcs):
             rule[obj] = self.known[obj]
-        return renamed(body, rule)
+        # One memo for every definition: each rule maps an object as
+        # ``known`` does (or leaves a dummy, T, as it is), and a part that
+        # the renaming reaches holds its objects at the same level in any
+        # definition (not inside a function or a derivative, which are
+        # replaced whole), so its answer is the same under any rule.
+        return renamed(body, rule, self._renamed)
 
     def _derivative_param(self, obj: Any, what: str) -> None:
         """A derivative with no right-hand side: a parameter when it is the
@@ -254,23 +261,34 @@ class _Slots:
         return label_of(obj, self.job.names)
 
 
-def renamed(expr: Any, rule: Mapping[Any, Any]) -> Any:
+def renamed(expr: Any, rule: Mapping[Any, Any], memo: dict | None = None) -> Any:
     """``expr.xreplace(rule)`` for a rule that only renames (objects to
     distinct symbols): sums, products and powers are rebuilt as they are,
     without sympy's evaluation, which is most of the cost of substituting
-    into thousands of intermediates and cannot change anything here."""
+    into thousands of intermediates and cannot change anything here.
+    ``memo`` keeps the answer of each part for calls whose rules agree on
+    the objects of every part they reach."""
     found = rule.get(expr)
     if found is not None:
         return found
     if not expr.args:
         return expr
-    args = [renamed(a, rule) for a in expr.args]
+    if memo is None:
+        memo = {}
+    found = memo.get(expr)
+    if found is not None:
+        return found
+    args = [renamed(a, rule, memo) for a in expr.args]
     if all(a is b for a, b in zip(args, expr.args, strict=True)):
-        return expr
-    cls = type(expr)
-    if cls is sp.Add or cls is sp.Mul or cls is sp.Pow:
-        return _unevaluated(cls, args)
-    return expr.func(*args)
+        out = expr
+    else:
+        cls = type(expr)
+        if cls is sp.Add or cls is sp.Mul or cls is sp.Pow:
+            out = _unevaluated(cls, args)
+        else:
+            out = expr.func(*args)
+    memo[expr] = out
+    return out
 
 
 def _unevaluated(cls: type, args: list[Any]) -> Any:
