@@ -91,13 +91,7 @@ def printed_once(method: Callable[..., str]) -> Callable[..., str]:
     remembered (see there)."""
 
     def printed(self: Any, expr: Any, *args: Any, **kwargs: Any) -> str:
-        if args or kwargs:
-            return method(self, expr, *args, **kwargs)
-        found = self.remembered_text(expr)
-        if found is None:
-            found = method(self, expr)
-            self.remember_text(expr, found)
-        return found
+        return self.print_once(method.__get__(self), expr, *args, **kwargs)
 
     printed.__name__ = getattr(method, "__name__", "printed")
     printed.__doc__ = getattr(method, "__doc__", None)
