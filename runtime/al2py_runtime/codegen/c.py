@@ -33,14 +33,6 @@ class _Printer(PrintedOnce, backends.CPrinter):
     def _print_Mul(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
         return self.print_once(super()._print_Mul, expr, *args, **kwargs)
 
-    def _print_Pow(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Pow, expr, *args, **kwargs)
-
-    def _print_Function(
-        self, expr: Any, *args: Any, **kwargs: Any
-    ) -> str:  # noqa: N802
-        return self.print_once(super()._print_Function, expr, *args, **kwargs)
-
     def _print_Abs(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
         return self.print_once(super()._print_Abs, expr, *args, **kwargs)
 

@@ -76,14 +76,6 @@ class _Printer(Remembering, FCodePrinter):
         )[::2]
         return backends.join_product(sign, a_str, b_str)
 
-    def _print_Pow(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Pow, expr, *args, **kwargs)
-
-    def _print_Function(
-        self, expr: Any, *args: Any, **kwargs: Any
-    ) -> str:  # noqa: N802
-        return self.print_once(super()._print_Function, expr, *args, **kwargs)
-
 
 def _d(x: float) -> str:
     x = float(x) if math.isfinite(x) else 0.0

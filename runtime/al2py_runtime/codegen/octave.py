@@ -94,11 +94,6 @@ class _Printer(Remembering, OctaveCodePrinter):
         base = self.parenthesize(expr.base, prec)
         return f"{base}{powsymbol}{self.parenthesize(expr.exp, prec)}"
 
-    def _print_Function(
-        self, expr: Any, *args: Any, **kwargs: Any
-    ) -> str:  # noqa: N802
-        return self.print_once(super()._print_Function, expr, *args, **kwargs)
-
 
 def _code(printer: Any, expr: Any, target: str) -> str:
     found = printer.statements.get((expr, target))

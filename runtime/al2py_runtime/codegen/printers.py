@@ -85,6 +85,16 @@ class PrintedOnce:
             self.remember_text(expr, found)
         return found
 
+    # the sympy printer's powers and function calls, remembered (a printer
+    # with its own, MATLAB's powers, decorates it with printed_once)
+    def _print_Pow(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
+        return self.print_once(super()._print_Pow, expr, *args, **kwargs)  # type: ignore[misc]
+
+    def _print_Function(
+        self, expr: Any, *args: Any, **kwargs: Any
+    ) -> str:  # noqa: N802
+        return self.print_once(super()._print_Function, expr, *args, **kwargs)  # type: ignore[misc]
+
 
 def printed_once(method: Callable[..., str]) -> Callable[..., str]:
     """A printing method of a :class:`PrintedOnce` printer whose text is

@@ -651,6 +651,19 @@ class _Factors:
         )
 
 
+def _place(seq: Sequence[Any], x: Any, lo: int) -> int:
+    """Where ``x`` goes among ``seq[lo:]``, sorted by ``Basic.compare``:
+    ``bisect_left`` by :func:`_compare`, without sort keys."""
+    hi = len(seq)
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if _compare(seq[mid], x) < 0:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
 def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -> Any:
     """``sp.Mul(*args[:i], d, *args[i + 1:])`` where ``args`` are a
     product's (canonical) arguments and ``d`` the derivative of factor
@@ -676,13 +689,7 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
         # coefficient stays first and the intermediate takes its place
         # among the other factors, by a binary search on Basic.compare
         rest = args[:i] + args[i + 1 :]
-        lo, hi = factors.start, len(rest)
-        while lo < hi:
-            mid = (lo + hi) // 2
-            if _compare(rest[mid], d) < 0:
-                lo = mid + 1
-            else:
-                hi = mid
+        lo = _place(rest, d, factors.start)
         return _product((*rest[:lo], d, *rest[lo:]))
     if isinstance(d, Intermediate):
         n, new_factors = sp.S.One, (d,)
@@ -735,13 +742,7 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
         if coeff is not sp.S.One:
             return sp.Mul(*args[:i], d, *args[i + 1 :])  # sympy distributes it
     if len(new_factors) == 1:
-        lo, hi = 0, len(rest)  # bisect_left by Basic.compare, without its keys
-        while lo < hi:
-            mid = (lo + hi) // 2
-            if _compare(rest[mid], z) < 0:
-                lo = mid + 1
-            else:
-                hi = mid
+        lo = _place(rest, z, 0)
         new = [*rest[:lo], z, *rest[lo:]]
     else:
         new = sorted((*rest, *new_factors), key=_BY_COMPARE)
