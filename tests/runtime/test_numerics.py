@@ -712,3 +712,18 @@ def test_singular_mass_matrix():
     with pytest.raises(NumericsError, match="matrix of U' in ZERO is singular"):
         ws.numerics.run(zero_missing=True)
     assert ws.numerics.run(M=2).states["U"][-1] == pytest.approx(5)
+
+
+def test_expressions_reading_an_acceleration_through_intermediates():
+    """A derivative that reads an acceleration only through an intermediate
+    of an intermediate is computed after the solve, as one that reads it
+    itself (``backends.reading``; run()'s split and the programs' both)."""
+    import sympy as sp
+    from al2py_runtime.jobs import backends
+
+    ud, q, z1, z2, z3 = sp.symbols("ud q z1 z2 z3")
+    inter = [(z1, 2 * ud), (z2, z1 + q), (z3, sp.sin(q))]
+    exprs = [q + 1, z2 * q, z3, ud, z1]
+    assert backends.reading(inter, exprs, {ud}) == [1, 3, 4]
+    assert backends.reading(inter, exprs, set()) == []
+    assert backends.reading(inter[1:], exprs, {ud}) == [3]  # z1 unknown

@@ -480,19 +480,9 @@ def describe(
     n = len(spec.accels)
     accel_syms = {rename[d] for d in spec.accels}
     derivs = [sub(spec.derivs[i]) for i in states]
-    # an intermediate's symbol is never an acceleration's (their names are
-    # distinct), so the walk through the intermediates a derivative needs
-    # is taken only if one were
-    inter_accels = accel_syms & {s for s, _ in inter}
-    late_ids = {
-        i
-        for i, e in enumerate(derivs)
-        if e.free_symbols & accel_syms
-        or (
-            inter_accels
-            and any(s.free_symbols & accel_syms for s, _ in backends.needed(inter, [e]))
-        )
-    }
+    # a derivative that reads an acceleration, itself or through the
+    # intermediates it needs, is computed after the accelerations are solved
+    late_ids = set(backends.reading(inter, derivs, accel_syms))
     x_names = iter_names("x", taken)
     first = [sub(e) for e in [*spec.mass, *spec.forcing]]
     first_targets = [("m", i // n, i % n) for i in range(n * n)]

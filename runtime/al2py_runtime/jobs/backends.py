@@ -299,13 +299,21 @@ def _canonical(spec: DynamicsSpec) -> DynamicsSpec:
 
 def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
     """Indices of derivatives free of ``ud`` and of those that use it."""
-    uds = set(spec.accels)
-    inter_uses = {s for s, e in spec.intermediates if e.free_symbols & uds}
-    free, uses = [], []
-    for i, e in enumerate(spec.derivs):
-        syms = e.free_symbols
-        (uses if syms & uds or syms & inter_uses else free).append(i)
-    return free, uses
+    uses = reading(spec.intermediates, spec.derivs, set(spec.accels))
+    return [i for i in range(len(spec.derivs)) if i not in uses], uses
+
+
+def reading(
+    intermediates: Sequence[tuple[Any, Any]], exprs: Sequence[Any], symbols: set
+) -> list[int]:
+    """The indices of ``exprs`` that read one of ``symbols``, themselves or
+    through the intermediates they use (each defined before its uses, so
+    one pass finds the intermediates that read them at any depth)."""
+    reads = set(symbols)
+    for sym, expr in intermediates:
+        if free_symbols_of(expr) & reads:
+            reads.add(sym)
+    return [i for i, e in enumerate(exprs) if free_symbols_of(e) & reads]
 
 
 # ----------------------------------------------------------------- lambdify
