@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 import mpmath
@@ -234,12 +234,8 @@ class _AutolevPrinter:
 
     def add(self, expr: sp.Add, top: bool) -> tuple[str, int]:
         numeric, others = [], []
-        numbers = self.numbers
         for a in expr.args:
-            found = numbers.get(a)
-            if found is None:
-                found = _number_in(a, numbers)
-            if found and not a.has(AppliedUndef):
+            if self.is_constant(a):
                 numeric.append(a)
             else:
                 others.append(a)
@@ -269,13 +265,9 @@ class _AutolevPrinter:
 
     def mul(self, expr: sp.Mul) -> tuple[str, int]:
         numeric, num, den = [], [], []
-        numbers = self.numbers
         sums = False
         for factor in expr.args:
-            found = numbers.get(factor)
-            if found is None:
-                found = _number_in(factor, numbers)
-            if found and not factor.has(AppliedUndef):
+            if self.is_constant(factor):
                 numeric.append(factor)
                 continue
             base, exp = factor.as_base_exp()
@@ -398,10 +390,12 @@ class _AutolevPrinter:
 
     def is_number(self, expr: Any) -> bool:
         """``expr.is_number``, each subexpression's answer formed once."""
-        found = self.numbers.get(expr)
-        if found is not None:
-            return found
         return _number_in(expr, self.numbers)
+
+    def is_constant(self, expr: Any) -> bool:
+        """Whether ``expr`` is a number and holds no function of time: a
+        sum's or a product's constant part."""
+        return _number_in(expr, self.numbers) and not expr.has(AppliedUndef)
 
     def leading_negative(self, expr: sp.Add) -> bool:
         """Whether the sum prints with a leading minus (first term negative)."""
@@ -432,20 +426,10 @@ class _AutolevPrinter:
         )
         return bool(re.is_negative)
 
-    def factor_key(self, factor: sp.Expr) -> tuple:
-        """Order factors of a product: names and functions first, sums last."""
-        if type(factor).as_base_exp is _EXPR_AS_BASE_EXP:  # its own base
-            base = factor
-        else:
-            base = factor.as_base_exp()[0]
-        key = self.keys.get(factor)
-        if key is None:
-            key = _sort_key(factor, self.keys)
-        return (isinstance(base, sp.Add), key)
-
     def sorted_factors(self, factors: list[sp.Expr]) -> list[sp.Expr]:
-        """``sorted(factors, key=self.factor_key)``: each factor's key formed
-        here, ties kept in their order by the factor's position."""
+        """``factors`` ordered as a product prints them: names and functions
+        first, sums (and powers of sums) last, each group by sort key; ties
+        kept in their order by the factor's position."""
         keys = self.keys
         decorated = []
         for k, factor in enumerate(factors):
@@ -453,10 +437,7 @@ class _AutolevPrinter:
                 in_sums = isinstance(factor, sp.Add)
             else:
                 in_sums = isinstance(factor.as_base_exp()[0], sp.Add)
-            key = keys.get(factor)
-            if key is None:
-                key = _sort_key(factor, keys)
-            decorated.append((in_sums, key, k))
+            decorated.append((in_sums, _sort_key(factor, keys), k))
         decorated.sort()
         return [factors[k] for _, _, k in decorated]
 
@@ -468,10 +449,7 @@ class _AutolevPrinter:
         factors = []
         numbers = self.numbers
         for factor in args:
-            found = numbers.get(factor)  # :meth:`is_number`
-            if found is None:
-                found = _number_in(factor, numbers)
-            if found:
+            if _number_in(factor, numbers):  # :meth:`is_number`
                 continue
             factors.append(factor)
             if type(factor).as_base_exp is _EXPR_AS_BASE_EXP:  # exponent 1
@@ -489,28 +467,17 @@ class _AutolevPrinter:
                 # off its factors' keys here
                 key = keys.get(term)
                 if key is None:
-                    found = sorted([_key_of(f, keys) for f in args])
-                    key = keys[term] = (
-                        _MUL_KEY,
-                        (len(found), tuple(found)),
-                        _ONE_KEY,
-                        _ONE,
-                    )
+                    key = keys[term] = _product_key(args, keys, _ONE)
                 return (degree, len(factors), key)
             else:
                 rest = term
         elif len(factors) < 2:
             rest = factors[0] if factors else _ONE
         elif term.is_commutative:  # the key of their product, not formed
-            found = sorted([_key_of(f, keys) for f in factors])
-            product = (_MUL_KEY, (len(found), tuple(found)), _ONE_KEY, _ONE)
-            return (degree, len(factors), product)
+            return (degree, len(factors), _product_key(factors, keys, _ONE))
         else:  # a canonical product's factors stay canonical without numbers
             rest = sp.Mul._from_args(factors)
-        key = keys.get(rest)
-        if key is None:
-            key = _sort_key(rest, keys)
-        return (degree, len(factors), key)
+        return (degree, len(factors), _sort_key(rest, keys))
 
     # ------------------------------------------------------------ matrices
 
@@ -593,12 +560,6 @@ def _sort_key(expr: Any, known: dict) -> tuple:
     return key
 
 
-def _key_of(expr: Any, known: dict) -> tuple:
-    """:func:`_sort_key`, a key already found without a further call."""
-    key = known.get(expr)
-    return key if key is not None else _sort_key(expr, known)
-
-
 def _new_sort_key(expr: Any, known: dict) -> tuple:
     if type(expr) is sp.Integer:
         # sympy's key with the integer as a Python int: it compares (and
@@ -611,8 +572,7 @@ def _new_sort_key(expr: Any, known: dict) -> tuple:
         args = expr.args
         coeff, factors = (args[0], args[1:]) if args[0].is_Number else (_ONE, args)
         if len(factors) > 1 and _plain_factors(expr, factors):
-            keys = sorted([_key_of(f, known) for f in factors])
-            return (type(expr).class_key(), (len(keys), tuple(keys)), _ONE_KEY, coeff)
+            return _product_key(factors, known, coeff, type(expr).class_key())
     coeff, rest = expr.as_coeff_Mul()
     exp = sp.S.One
     if rest.is_Pow:
@@ -635,6 +595,16 @@ def _new_sort_key(expr: Any, known: dict) -> tuple:
             parts = rest.args
         args = tuple([_sort_key(a, known) for a in parts])
     return (rest.class_key(), (len(args), args), _sort_key(exp, known), coeff)
+
+
+def _product_key(
+    factors: Sequence[Any], known: dict, coeff: Any, head: tuple | None = None
+) -> tuple:
+    """sympy's sort key of ``coeff`` times the product of ``factors`` (none
+    a number, all commutative; ``head`` the product's class key, ``Mul``'s
+    by default), read off the factors' keys."""
+    keys = sorted([_sort_key(f, known) for f in factors])
+    return (head or _MUL_KEY, (len(keys), tuple(keys)), _ONE_KEY, coeff)
 
 
 def _plain_factors(product: sp.Mul, factors: tuple) -> bool:
