@@ -28,6 +28,7 @@ from sympy.core.function import AppliedUndef
 from ..intermediates import autoz
 from ..model.arrange import linear_terms
 from ..safety import MissingValueWarning
+from ..walks import xreplace
 from . import backends, budget
 from .kutta import KuttaMerson, StepError
 from .records import (
@@ -268,27 +269,15 @@ def renamed(expr: Any, rule: Mapping[Any, Any], memo: dict | None = None) -> Any
     into thousands of intermediates and cannot change anything here.
     ``memo`` keeps the answer of each part for calls whose rules agree on
     the objects of every part they reach."""
-    found = rule.get(expr)
-    if found is not None:
-        return found
-    if not expr.args:
-        return expr
-    if memo is None:
-        memo = {}
-    found = memo.get(expr)
-    if found is not None:
-        return found
-    args = [renamed(a, rule, memo) for a in expr.args]
-    if all(a is b for a, b in zip(args, expr.args, strict=True)):
-        out = expr
-    else:
-        cls = type(expr)
-        if cls is sp.Add or cls is sp.Mul or cls is sp.Pow:
-            out = _unevaluated(cls, args)
-        else:
-            out = expr.func(*args)
-    memo[expr] = out
-    return out
+    return xreplace(expr, rule, memo, rebuild=_renamed_part)
+
+
+def _renamed_part(expr: Any, args: list[Any], changed: list[int]) -> Any:
+    """``expr`` formed from its renamed ``args`` (:func:`renamed`)."""
+    cls = type(expr)
+    if cls is sp.Add or cls is sp.Mul or cls is sp.Pow:
+        return _unevaluated(cls, args)
+    return expr.func(*args)
 
 
 def _unevaluated(cls: type, args: list[Any]) -> Any:
