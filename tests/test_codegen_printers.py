@@ -71,7 +71,8 @@ def test_precedence_of_products_is_sympys():
         assert precedence_of(e) == precedence(e), e
 
 
-@pytest.mark.parametrize(
+#: our MATLAB and Fortran printers, sympy's, and the settings they share
+MATLAB_AND_FORTRAN = pytest.mark.parametrize(
     ("ours", "theirs", "settings"),
     [
         (OctavePrinter, OctaveCodePrinter, {"strict": True}),
@@ -83,6 +84,9 @@ def test_precedence_of_products_is_sympys():
     ],
     ids=["matlab", "fortran"],
 )
+
+
+@MATLAB_AND_FORTRAN
 def test_matlab_and_fortran_print_as_sympy(ours, theirs, settings):
     mine = ours(settings)
     for e in EXPRS:
@@ -117,18 +121,7 @@ def _shared_parts() -> list[sp.Expr]:
     return shared
 
 
-@pytest.mark.parametrize(
-    ("ours", "theirs", "settings"),
-    [
-        (OctavePrinter, OctaveCodePrinter, {"strict": True}),
-        (
-            lambda s: FortranPrinter(),
-            FCodePrinter,
-            {"source_format": "fixed", "standard": 95, "strict": True},
-        ),
-    ],
-    ids=["matlab", "fortran"],
-)
+@MATLAB_AND_FORTRAN
 def test_parts_printed_once_print_as_sympy(ours, theirs, settings):
     # one printer for all statements (each part's text remembered), sympy's
     # printer afresh for each
