@@ -143,7 +143,7 @@ def fresh_turns(
     times: dict[str, list[float]] = {k: [] for k in bodies}
     for _ in range(turns):
         for key, body in bodies.items():
-            cache = warm or Path(tempfile.mkdtemp(prefix="al2py_cache_"))
+            cache = warm or Path(tempfile.mkdtemp(prefix="cache_", dir=folder))
             times[key].append(in_fresh_process(folder, "whipple_linear", body, cache))
     return {k: statistics.median(v) for k, v in times.items()}
 
@@ -161,7 +161,14 @@ def main() -> None:
     parser.add_argument("--no-dask", action="store_true")
     parser.add_argument("--turns", type=int, default=3)
     args = parser.parse_args()
-    folder = Path(tempfile.mkdtemp(prefix="al2py_research_"))
+    # every file of the run (modules, caches) lives in one folder, removed
+    # at the end
+    with tempfile.TemporaryDirectory(prefix="al2py_research_") as tmp:
+        measure(args, Path(tmp))
+
+
+def measure(args: argparse.Namespace, folder: Path) -> None:
+    """Every figure of the benchmark, with its files in ``folder``."""
     # this process starts from an empty cache of its own (the figures
     # below do not depend on what an earlier run left)
     os.environ["AL2PY_CACHE_DIR"] = str(folder / "cache")
@@ -275,7 +282,7 @@ def main() -> None:
         "old_e": OLD_EVALUATE,
     }
     empty = fresh_turns(folder, args.turns, timed, None)
-    warm_dir = Path(tempfile.mkdtemp(prefix="al2py_cache_"))
+    warm_dir = Path(tempfile.mkdtemp(prefix="cache_", dir=folder))
     in_fresh_process(folder, "whipple_linear", NEW_EVALUATE, warm_dir)  # warms
     warm = fresh_turns(folder, args.turns, timed, warm_dir)
     for label, got in (("empty cache", empty), ("warm disk cache", warm)):
