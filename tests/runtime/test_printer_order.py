@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.model import kinematics as kin
 from al2py_runtime.names import printing
-from al2py_runtime.names.printing import shared_keys, sort_key_in
+from al2py_runtime.names.printing import Printing, sort_key_in
 from sympy.physics.mechanics import dynamicsymbols
 
 t = dynamicsymbols._t
@@ -130,8 +130,8 @@ def test_terms_and_factors_ordered_as_with_sympys_keys():
 def test_printed_as_with_sympys_keys():
     """The text, shared memos and all, is the text with sympy's keys."""
     exprs = expressions(11, 300)
-    with shared_keys():
-        ours = [printing.autolev_str(e) for e in exprs]
+    shared = Printing()
+    ours = [shared.autolev_str(e) for e in exprs]
     theirs = [_SympysKeys(7).text(e, True) for e in exprs]
     assert ours == theirs
 

@@ -8,7 +8,7 @@ import random
 import sympy as sp
 from al2py_runtime.model import kinematics as kin
 from al2py_runtime.names import printing
-from al2py_runtime.names.printing import autolev_str, shared_keys, sort_key_in
+from al2py_runtime.names.printing import Printing, autolev_str, sort_key_in
 from sympy.physics.mechanics import dynamicsymbols
 
 t = dynamicsymbols._t
@@ -65,8 +65,7 @@ def test_shared_subexpressions_formed_once(monkeypatch):
         return form(self, e, top)
 
     monkeypatch.setattr(printing._AutolevPrinter, "form", counting)
-    with shared_keys():
-        text = autolev_str(expr)
+    text = Printing().autolev_str(expr)
     distinct = set(nodes(expr))
     assert len(formed) <= 2 * len(distinct) < 200  # not once per occurrence
     assert text.count("A+B") == 2**12
@@ -74,8 +73,7 @@ def test_shared_subexpressions_formed_once(monkeypatch):
     small = A + B
     for k in range(5):
         small = small * (small + C) + k * U1
-    with shared_keys():
-        remembered = autolev_str(small)
+    remembered = Printing().autolev_str(small)
 
     def unremembered(self, e, top):
         if isinstance(e, sp.MatrixBase):

@@ -24,9 +24,8 @@ Conventions (see ``docs/semantics.md``):
 
 from __future__ import annotations
 
-import contextlib
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import mpmath
@@ -44,7 +43,7 @@ __all__ = [
     "format_response",
     "format_number",
     "is_number_in",
-    "shared_keys",
+    "Printing",
     "sort_key_in",
 ]
 
@@ -114,13 +113,14 @@ def _exponent_style(text: str) -> str:
 class _AutolevPrinter:
     """Recursive printer; each method returns ``(text, precedence)``."""
 
-    def __init__(self, digits: int) -> None:
+    def __init__(self, digits: int, memos: _Memos | None = None) -> None:
         if not 1 <= digits <= 17:
             raise ValueError(f"digits must be between 1 and 17, not {digits}")
         self.digits = digits
         # what is already known of each subexpression: shared by every value
-        # printed while :func:`shared_keys` is in force, else this printer's
-        memos = _SHARED[-1] if _SHARED else _Memos()
+        # a :class:`Printing` prints, else this printer's own
+        if memos is None:
+            memos = _Memos()
         self.keys = memos.keys
         self.numbers = memos.numbers
         #: printed forms ``(text, precedence)``, nested and at the top level
@@ -489,7 +489,7 @@ class _AutolevPrinter:
 
 
 class _Memos:
-    """Everything the printer remembers (see :func:`shared_keys`)."""
+    """Everything the printer remembers (see :class:`Printing`)."""
 
     def __init__(self) -> None:
         #: sort keys and number tests (a dict finds the same object by
@@ -506,24 +506,6 @@ class _Memos:
         self.negations: dict[Any, Any] = {}
         #: the printers that share these memos, by digits
         self.printers: dict[int, _AutolevPrinter] = {}
-
-
-#: the memos in force (:func:`shared_keys`)
-_SHARED: list[_Memos] = []
-
-
-@contextlib.contextmanager
-def shared_keys() -> Iterator[None]:
-    """Within this context every printed value shares one memo of sort keys
-    (sympy's own cache holds 1000 and is soon overrun by a large model's
-    transcript, so each key was formed again, down to the leaves), of which
-    subexpressions are numbers, and of printed forms (a transcript's
-    responses share most of their subexpressions)."""
-    _SHARED.append(_Memos())
-    try:
-        yield
-    finally:
-        _SHARED.pop()
 
 
 _EXPR_IS_NUMBER = sp.Expr.is_number
@@ -711,6 +693,80 @@ def _dyadic_str(printer: _AutolevPrinter, dyad: Any) -> str:
 # ------------------------------------------------------------------ API
 
 
+class Printing:
+    """Autolev's printed forms of values, one :class:`Printing` per
+    transcript: every value it prints shares one memo of sort keys (sympy's
+    own cache holds 1000 and is soon overrun by a large model's transcript,
+    so each key was formed again, down to the leaves), of which
+    subexpressions are numbers, and of printed forms (a transcript's
+    responses share most of their subexpressions).  The text is what
+    :func:`autolev_str` prints without the memos.
+
+    >>> import sympy as sp
+    >>> A, B = sp.symbols("A B")
+    >>> printing = Printing()
+    >>> printing.format_response("E", (A + B) ** 2)
+    ['E = (A+B)^2']
+    >>> printing.autolev_str(A + B)
+    'A + B'
+    """
+
+    def __init__(self) -> None:
+        self._memos = _Memos()
+
+    def _printer(self, digits: int) -> _AutolevPrinter:
+        """The printer of ``digits`` significant digits (one per number of
+        digits, over the shared memos)."""
+        printers = self._memos.printers
+        found = printers.get(digits)
+        if found is None:
+            found = printers[digits] = _AutolevPrinter(digits, self._memos)
+        return found
+
+    def autolev_str(self, value: Any, digits: int = 7) -> str:
+        """``value`` written in Autolev syntax (:func:`autolev_str`)."""
+        printer = self._printer(digits)
+        if isinstance(value, sp.Expr):  # none of the kinds below
+            return printer.text(value, True)
+        if isinstance(value, VectorMatrix):  # ``[N1> + N3>, 3*N2>]``
+            return (
+                "["
+                + "; ".join(
+                    ", ".join(_vector_str(printer, v) for v in row)
+                    for row in value.rows
+                )
+                + "]"
+            )
+        if _is_vector(value):
+            return _vector_str(printer, value)
+        if _is_dyadic(value):
+            return _dyadic_str(printer, value)
+        if isinstance(value, str):
+            return value
+        if not isinstance(value, sp.Basic | sp.MatrixBase) and hasattr(value, "name"):
+            return str(value.name).upper()
+        if isinstance(value, bool):
+            return "ON" if value else "OFF"
+        return printer.text(value, True)
+
+    def format_response(
+        self, label: str, value: Any, digits: int = 7, width: int = 80
+    ) -> list[str]:
+        """Lines of an Autolev response (:func:`format_response`)."""
+        if isinstance(value, sp.MatrixBase):
+            line = f"{label} = {self.autolev_str(value, digits)}"
+            if value.rows * value.cols > 1 and (
+                len(line) > width or _has_denominator(value)
+            ):
+                names = element_labels(label, value.rows, value.cols)
+                return [
+                    f"{name} = {self.autolev_str(element, digits)}"
+                    for name, element in zip(names, value, strict=True)
+                ]
+            return [line]
+        return [f"{label} = {self.autolev_str(value, digits)}"]
+
+
 def autolev_str(value: Any, digits: int = 7) -> str:
     """Return ``value`` written in Autolev syntax.
 
@@ -721,39 +777,7 @@ def autolev_str(value: Any, digits: int = 7) -> str:
     >>> autolev_str(sp.Matrix([-1.650629, -0.1746854 - 1.546869*sp.I]))
     '[-1.650629; -0.1746854 - 1.546869*i]'
     """
-    printer = _printer(digits)
-    if isinstance(value, sp.Expr):  # none of the kinds below
-        return printer.text(value, True)
-    if isinstance(value, VectorMatrix):  # ``[N1> + N3>, 3*N2>]``
-        return (
-            "["
-            + "; ".join(
-                ", ".join(_vector_str(printer, v) for v in row) for row in value.rows
-            )
-            + "]"
-        )
-    if _is_vector(value):
-        return _vector_str(printer, value)
-    if _is_dyadic(value):
-        return _dyadic_str(printer, value)
-    if isinstance(value, str):
-        return value
-    if not isinstance(value, sp.Basic | sp.MatrixBase) and hasattr(value, "name"):
-        return str(value.name).upper()
-    if isinstance(value, bool):
-        return "ON" if value else "OFF"
-    return printer.text(value, True)
-
-
-def _printer(digits: int) -> _AutolevPrinter:
-    """A printer; within :func:`shared_keys` one per number of digits."""
-    if not _SHARED:
-        return _AutolevPrinter(digits)
-    printers = _SHARED[-1].printers
-    found = printers.get(digits)
-    if found is None:
-        found = printers[digits] = _AutolevPrinter(digits)
-    return found
+    return Printing().autolev_str(value, digits)
 
 
 def format_response(
@@ -772,14 +796,7 @@ def format_response(
     >>> format_response("R", sp.Matrix([1/A, 2/B]))
     ['R[1] = 1/A', 'R[2] = 2/B']
     """
-    if isinstance(value, sp.MatrixBase):
-        line = f"{label} = {autolev_str(value, digits)}"
-        if value.rows * value.cols > 1 and (
-            len(line) > width or _has_denominator(value)
-        ):
-            return _element_lines(label, value, digits)
-        return [line]
-    return [f"{label} = {autolev_str(value, digits)}"]
+    return Printing().format_response(label, value, digits, width)
 
 
 def element_labels(label: str, rows: int, cols: int) -> list[str]:
@@ -789,14 +806,6 @@ def element_labels(label: str, rows: int, cols: int) -> list[str]:
     if rows == 1 or cols == 1:
         return [f"{label}[{k + 1}]" for k in range(rows * cols)]
     return [f"{label}[{i + 1},{j + 1}]" for i in range(rows) for j in range(cols)]
-
-
-def _element_lines(label: str, value: sp.MatrixBase, digits: int) -> list[str]:
-    names = element_labels(label, value.rows, value.cols)
-    return [
-        f"{name} = {autolev_str(element, digits)}"
-        for name, element in zip(names, value, strict=True)
-    ]
 
 
 def _has_denominator(value: sp.MatrixBase) -> bool:

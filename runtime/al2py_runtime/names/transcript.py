@@ -53,21 +53,22 @@ def transcript_lines(
     that is not verbatim just before it is printed; ``tick()`` after each
     response is printed (progress)."""
     from ..model.kinematics import tidy_memo
-    from .printing import format_response, shared_keys
+    from .printing import Printing
 
     by_line: dict[int | None, list[Response]] = defaultdict(list)
     for r in responses:
         by_line[r.line].append(r)
     out: list[str] = []
+    printing = Printing()
 
     def lines_of(r: Response) -> list[str]:
         value = r.value if form is None or r.verbatim else form(r.value)
-        lines = format_response(r.label, value, r.digits)
+        lines = printing.format_response(r.label, value, r.digits)
         if tick is not None:
             tick()
         return lines
 
-    with shared_keys(), tidy_memo():
+    with tidy_memo():
         _interleave(source, by_line, lines_of, out)
     return out
 
