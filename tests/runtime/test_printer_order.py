@@ -17,6 +17,7 @@ import sympy as sp
 from al2py_runtime.model import kinematics as kin
 from al2py_runtime.names import printing
 from al2py_runtime.names.printing import Printing, sort_key_in
+from random_exprs import ExpressionMaker
 from sympy.physics.mechanics import dynamicsymbols
 
 t = dynamicsymbols._t
@@ -38,29 +39,20 @@ NUMBERS = [
 ]
 
 
-def random_expr(rng: random.Random, depth: int) -> sp.Expr:
-    if depth == 0 or rng.random() < 0.25:
-        return rng.choice(ATOMS + NUMBERS[:3])
-    kind = rng.randrange(7)
-    parts = [random_expr(rng, depth - 1) for _ in range(rng.randint(2, 4))]
-    if kind == 0:
-        return sp.Add(*parts)
-    if kind == 1:
-        return rng.choice(NUMBERS[:6]) * sp.Mul(*parts)
-    if kind == 2:
-        return sp.Mul(*parts)
-    if kind == 3:
-        return parts[0] ** rng.choice([2, 3, -1, -2, sp.Rational(1, 2)])
-    if kind == 4:
-        return rng.choice([sp.sin, sp.cos])(parts[0])
-    if kind == 5:
-        return Z(sp.Integer(rng.choice([5, 711, 715])), *parts[:2])
-    return sp.Add(*[rng.choice(NUMBERS[:6]) * p for p in parts])
+MAKER = ExpressionMaker(
+    leaves=ATOMS + NUMBERS[:3],
+    coefficients=NUMBERS[:6],
+    exponents=[2, 3, -1, -2, sp.Rational(1, 2)],
+    leaf_chance=0.25,
+    intermediate=lambda rng, parts: Z(
+        sp.Integer(rng.choice([5, 711, 715])), *parts[:2]
+    ),
+)
 
 
 def expressions(seed: int, count: int, depth: int = 4) -> list[sp.Expr]:
     rng = random.Random(seed)
-    return [random_expr(rng, depth) for _ in range(count)]
+    return [MAKER.make(rng, depth) for _ in range(count)]
 
 
 def test_keys_equal_and_order_as_sympys():

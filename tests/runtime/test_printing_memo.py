@@ -9,6 +9,7 @@ import sympy as sp
 from al2py_runtime.model import kinematics as kin
 from al2py_runtime.names import printing
 from al2py_runtime.names.printing import Printing, autolev_str, sort_key_in
+from random_exprs import ExpressionMaker
 from sympy.physics.mechanics import dynamicsymbols
 
 t = dynamicsymbols._t
@@ -18,22 +19,12 @@ ATOMS = [Q1, Q2, U1, U2, U3, A, B, C, U1.diff(t), U2.diff(t), Q1.diff(t)]
 NUMBERS = [sp.Integer(2), sp.Integer(-3), sp.Rational(1, 2), sp.Float(0.25), sp.pi]
 
 
-def random_expr(rng: random.Random, depth: int) -> sp.Expr:
-    if depth == 0 or rng.random() < 0.2:
-        return rng.choice(ATOMS + NUMBERS[:2])
-    kind = rng.randrange(6)
-    parts = [random_expr(rng, depth - 1) for _ in range(rng.randint(2, 4))]
-    if kind == 0:
-        return sp.Add(*parts)
-    if kind == 1:
-        return rng.choice(NUMBERS) * sp.Mul(*parts)
-    if kind == 2:
-        return sp.Mul(*parts)
-    if kind == 3:
-        return parts[0] ** rng.choice([2, 3, -1, sp.Rational(1, 2)])
-    if kind == 4:
-        return rng.choice([sp.sin, sp.cos])(parts[0])
-    return sp.Add(*[rng.choice(NUMBERS) * p for p in parts])
+MAKER = ExpressionMaker(
+    leaves=ATOMS + NUMBERS[:2],
+    coefficients=NUMBERS,
+    exponents=[2, 3, -1, sp.Rational(1, 2)],
+    leaf_chance=0.2,
+)
 
 
 def nodes(expr: sp.Basic) -> list:
@@ -45,7 +36,7 @@ def test_sort_keys_are_sympys():
     rng = random.Random(35)
     memo: dict = {}
     for _ in range(150):
-        expr = random_expr(rng, 4)
+        expr = MAKER.make(rng, 4)
         for node in nodes(expr):
             assert sort_key_in(node, memo) == sp.default_sort_key(node), node
 
@@ -92,7 +83,7 @@ def test_collect_of_speeds_is_sympys():
     gens = [U1.diff(t), U2.diff(t), U1, U2, U3]
     fast = 0
     for _ in range(200):
-        expr = sp.expand(random_expr(rng, 3))
+        expr = sp.expand(MAKER.make(rng, 3))
         present = [g for g in gens if expr.has(g)]
         if not present:
             continue

@@ -1,0 +1,49 @@
+"""Random expressions for the printers' property tests: sums, products,
+powers, sines and cosines (and, if asked, intermediates' shape) over given
+leaves, so that an ordering or a memo is checked against sympy's on many
+trees rather than a few written by hand."""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class ExpressionMaker:
+    """Makes random expressions of a given depth.
+
+    ``leaves``: what a leaf is chosen from; ``coefficients``: the numbers
+    that multiply a product or each term of a weighted sum; ``exponents``:
+    a power's; ``leaf_chance``: the chance that a node above depth 0 is a
+    leaf; ``intermediate(rng, parts)``: a node of an intermediate's shape
+    (None: no such nodes)."""
+
+    leaves: Sequence[Any]
+    coefficients: Sequence[Any]
+    exponents: Sequence[Any]
+    leaf_chance: float
+    intermediate: Callable[[random.Random, list], sp.Expr] | None = None
+
+    def make(self, rng: random.Random, depth: int) -> sp.Expr:
+        if depth == 0 or rng.random() < self.leaf_chance:
+            return rng.choice(self.leaves)
+        kind = rng.randrange(6 if self.intermediate is None else 7)
+        parts = [self.make(rng, depth - 1) for _ in range(rng.randint(2, 4))]
+        if kind == 0:
+            return sp.Add(*parts)
+        if kind == 1:
+            return rng.choice(self.coefficients) * sp.Mul(*parts)
+        if kind == 2:
+            return sp.Mul(*parts)
+        if kind == 3:
+            return parts[0] ** rng.choice(self.exponents)
+        if kind == 4:
+            return rng.choice([sp.sin, sp.cos])(parts[0])
+        if kind == 5 and self.intermediate is not None:
+            return self.intermediate(rng, parts)
+        return sp.Add(*[rng.choice(self.coefficients) * p for p in parts])
