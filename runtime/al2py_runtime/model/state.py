@@ -91,6 +91,9 @@ class ModelState:
     speeds: list | None = None  # the speeds, fixed when Fr/FrStar are formed
     fr_speeds: list | None = None
     kane: dict | None = None
+    #: what :func:`~.fastkane.measure_split` formed with the script's book
+    #: (a :class:`~.fastkane.Splits`, made on first use)
+    splits: Any = None
 
     @property
     def forces(self) -> dict:
