@@ -264,7 +264,7 @@ class KaneEquations(ModelPart):
     @command
     def tstar(self, b: ReferenceFrame, n: ReferenceFrame | None = None) -> Vector:
         """``TStar(B, N)``: inertia torque of body B in N."""
-        return kin.tidy_vector(self._inertia_torque(b, n or self.newtonian_frame()))
+        return self.tidier.vector(self._inertia_torque(b, n or self.newtonian_frame()))
 
     @command
     def frstar(self) -> sp.Matrix:
@@ -406,7 +406,7 @@ class KaneEquations(ModelPart):
             out.append(self.script.assign(self.script.name_of(u), s, line=line))
         for u, s in zip(speeds, sols, strict=True):
             ds = self.resolved_dt(s, self.registry.newtonian)
-            ds = kin.tidy(ds, gens)
+            ds = self.tidier(ds, gens)
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
             name = self.script.name_of(u)
@@ -513,7 +513,9 @@ class KaneEquations(ModelPart):
                 eqs = [self.script.form(e) for e in eqs]
             sols = solve_speeds(eqs, forces, book, self.configuration_variables())
             for f, s in zip(forces, sols, strict=True):
-                self.script.assign(self.script.name_of(f), kin.tidy(s, gens), line=line)
+                self.script.assign(
+                    self.script.name_of(f), self.tidier(s, gens), line=line
+                )
         st.kane = {
             "speeds": ind,
             "dependent": list(st.dependent),

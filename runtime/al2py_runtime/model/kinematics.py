@@ -15,7 +15,7 @@ Conventions (Kane & Levinson, as Autolev):
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import sympy as sp
@@ -33,6 +33,7 @@ __all__ = [
     "as_dyadic",
     "as_vector",
     "tidy",
+    "Tidier",
     "tidy_memo",
     "tidy_vector",
     "vdot",
@@ -237,29 +238,41 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
     """
     if not isinstance(expr, sp.Expr) or expr.is_number:
         return expr
-    if not _TIDIED:
-        return _tidy(expr, gens)
-    # within :func:`tidy_memo`: each expression's once
-    key = (expr, tuple(gens))
-    found = _TIDIED[-1].get(key)
-    if found is None:
-        found = _TIDIED[-1][key] = _tidy(expr, key[1])
-    return found
+    return _tidy(expr, gens)
 
 
-#: tidy's results while :func:`tidy_memo` is in force
-_TIDIED: list[dict] = []
+class Tidier:
+    """:func:`tidy` that forms each expression's result once: the model's
+    (``model.tidier``), whose responses and results show the same measure
+    numbers many times, at import and again in the transcript.  A result is
+    a function of the expression and ``gens`` alone, so it is the same as
+    :func:`tidy`'s."""
+
+    __slots__ = ("_done",)
+
+    def __init__(self) -> None:
+        self._done: dict = {}
+
+    def __call__(self, expr: Any, gens: Iterable[Any] = ()) -> Any:
+        """``tidy(expr, gens)``, remembered."""
+        if not isinstance(expr, sp.Expr) or expr.is_number:
+            return expr
+        key = (expr, tuple(gens))
+        found = self._done.get(key)
+        if found is None:
+            found = self._done[key] = _tidy(expr, key[1])
+        return found
+
+    def vector(self, v: Any) -> Any:
+        """:func:`tidy_vector` of ``v``, each measure number remembered."""
+        return vmap(v, self)
 
 
-@contextlib.contextmanager
-def tidy_memo() -> Iterator[None]:
-    """Within this context :func:`tidy` forms each expression's result once
-    (a transcript shows the same measure numbers in many responses)."""
-    _TIDIED.append({})
-    try:
-        yield
-    finally:
-        _TIDIED.pop()
+def tidy_memo() -> contextlib.AbstractContextManager[None]:
+    """A context that changes nothing, kept for the transcript's printer
+    (``names/transcript.py`` enters it): the model's :class:`Tidier`
+    remembers each result for the model's whole life now."""
+    return contextlib.nullcontext()
 
 
 def _tidy(expr: sp.Expr, gens: Iterable[Any]) -> Any:

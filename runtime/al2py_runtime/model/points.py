@@ -76,10 +76,10 @@ class Kinematics(ModelPart):
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
         cosmetic, and large models are why AutoZ is on)."""
-        return v if self.settings.autoz else kin.tidy_vector(v)
+        return v if self.settings.autoz else self.tidier.vector(v)
 
     def _tidy(self, e: Any) -> Any:
-        return e if self.settings.autoz else kin.tidy(e)
+        return e if self.settings.autoz else self.tidier(e)
 
     def auxiliary_kept(self) -> list:
         """The auxiliary speeds and their derivatives: what formed quantities
@@ -202,7 +202,7 @@ class Kinematics(ModelPart):
             m = a.dcm(b)
         except ValueError:
             raise ValueError(f"{a.name}_{b.name} is not defined") from None
-        return sp.Matrix(m).applyfunc(kin.tidy)
+        return sp.Matrix(m).applyfunc(self.tidier)
 
     # --------------------------------------------------- rotation commands
 

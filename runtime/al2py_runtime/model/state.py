@@ -15,6 +15,7 @@ from ..safety import Statements, statement
 if TYPE_CHECKING:
     from ..names.settings import Settings
     from ..names.table import NameTable
+    from .kinematics import Tidier
     from .resolutions import Resolutions
     from .script import ScriptNames
 
@@ -127,6 +128,8 @@ class ModelPart:
     unit_norms: list[tuple[Any, ...]]
     #: the script's resolvers, remembered while its right-hand sides stay
     resolutions: Resolutions
+    #: :func:`~.kinematics.tidy`, each result formed once
+    tidier: Tidier
 
 
 def _resultants(loads: list, kind: type) -> dict:
