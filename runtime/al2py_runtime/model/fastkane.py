@@ -53,6 +53,7 @@ from sympy.printing.numpy import NumPyPrinter
 
 from ..intermediates.autoz import Intermediate, Intermediates, product_with
 from .arrange import linear_terms, split_linear_named
+from .kinematics import ang_vel_in
 
 __all__ = [
     "FastKane",
@@ -880,7 +881,7 @@ class FastKane:
                 form = self._form(where.vel(n_frame), n_frame)
                 frame = n_frame
             elif isinstance(where, ReferenceFrame):
-                form = self._form(where.ang_vel_in(n_frame), where)
+                form = self._form(ang_vel_in(where, n_frame), where)
                 frame = where
             else:
                 raise TypeError(
@@ -912,7 +913,7 @@ class FastKane:
             if any(sp.sympify(c).has(_T) for c, _, _ in inertia.args):
                 raise NotImplementedError("inertia dyadics that vary in time")
             imat = self._inertia_matrix(inertia, frame)
-            form = self._form(frame.ang_vel_in(n_frame), frame)
+            form = self._form(ang_vel_in(frame, n_frame), frame)
             columns, rest = form
             omega = [
                 book.name(

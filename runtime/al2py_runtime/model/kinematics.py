@@ -28,6 +28,7 @@ from .. import walks
 
 __all__ = [
     "vmap",
+    "ang_vel_in",
     "is_vector",
     "is_dyadic",
     "as_dyadic",
@@ -161,6 +162,60 @@ def cross(a: Vector, b: Vector) -> Vector:
     return Vector(out)
 
 
+def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
+    """``b.ang_vel_in(a)``, the same vector: the sum of the angular
+    velocities along the path of frames from ``b`` to ``a``, in order.
+
+    sympy finds that path (``_dict_list``) by listing every simple path
+    from ``b``, a search that grows with the square of the frames and
+    more.  Where the frames connected to ``b`` by angular velocities form a
+    tree (each pair given both ways, no cycle: frames oriented one from
+    another, as a model's are), the path is the one path of the tree, found
+    here by one walk; otherwise (or with no path) sympy's is used.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q1, q2 = dynamicsymbols("q1 q2")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q1, N.z])
+    >>> B = A.orientnew("B", "Axis", [q2, A.x])
+    >>> ang_vel_in(B, N) == B.ang_vel_in(N)
+    True
+    """
+    path = _tree_path(b, a)
+    if path is None:
+        return b.ang_vel_in(a)
+    out = Vector(0)
+    for x, y in zip(path, path[1:], strict=False):
+        out += x._ang_vel_dict[y]
+    return out
+
+
+def _tree_path(b: ReferenceFrame, a: ReferenceFrame) -> list | None:
+    """The frames from ``b`` to ``a`` along angular velocities, when those
+    connected to ``b`` form a tree (None otherwise, or when ``a`` is not
+    among them)."""
+    parent: dict = {b: None}
+    todo = [b]
+    edges = 0
+    while todo:
+        x = todo.pop()
+        near = x._ang_vel_dict
+        edges += len(near)
+        for y in near:
+            if y is x or x not in y._ang_vel_dict:
+                return None  # a loop, or given one way only: sympy's search
+            if y not in parent:
+                parent[y] = x
+                todo.append(y)
+    if edges != 2 * (len(parent) - 1) or a not in parent:
+        return None  # a cycle
+    path = [a]
+    while path[-1] is not b:
+        path.append(parent[path[-1]])
+    path.reverse()
+    return path
+
+
 def dyadic_matrix(d: Dyadic, frame: ReferenceFrame) -> sp.Matrix:
     """``d.to_matrix(frame)``: read off the components when every unit
     vector of ``d`` is ``frame``'s (an inertia dyadic in its body's frame),
@@ -202,7 +257,7 @@ def frame_dt(
     for m, f in v.args:
         out += Vector([(m.applyfunc(scalar_dt), f)])
         if f != frame:
-            out += cross(f.ang_vel_in(frame), Vector([(m, f)]))
+            out += cross(ang_vel_in(f, frame), Vector([(m, f)]))
     return out
 
 

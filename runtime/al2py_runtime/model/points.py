@@ -166,7 +166,7 @@ class Kinematics(ModelPart):
         if a is b:
             return Vector(0)
         try:
-            return b.ang_vel_in(a)
+            return kin.ang_vel_in(b, a)
         except ValueError:
             raise ValueError(f"W_{b.name}_{a.name}> is not defined") from None
 
@@ -349,7 +349,7 @@ class Kinematics(ModelPart):
         wq = self._dcm_angvel(a, b, kind, qs)
         given = None
         try:
-            given = self.actual_value(b.ang_vel_in(a))
+            given = self.actual_value(kin.ang_vel_in(b, a))
         except ValueError:
             pass
         qdots = [sp.Derivative(q, t) for q in qs]
