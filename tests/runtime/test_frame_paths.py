@@ -91,3 +91,24 @@ def test_time_derivative_in_a_tree_is_sympys():
         n = rng.choice(frames)
         mine = kin.frame_dt(v, n, lambda e: sp.diff(e, dynamicsymbols._t))
         assert (mine - v.dt(n)).simplify() == Vector(0)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_matrix_product_is_sympys_entry_for_entry(seed):
+    """``kinematics.matmul`` (direction cosines along a tree of frames)
+    forms sympy's ``a * b``, the same expressions node for node: sums,
+    rational coefficients, zeros and numbers among the entries."""
+    rng = random.Random(seed)
+    x, y, z = sp.symbols("x y z")
+    q = dynamicsymbols("q")
+    atoms = [0, 0, 1, -1, sp.Rational(1, 2), x, y, sp.cos(q), sp.sin(q), z * x]
+
+    def entry():
+        return sum(rng.choice([-2, 1, 3]) * rng.choice(atoms) for _ in range(2))
+
+    for _ in range(40):
+        a = sp.Matrix(3, 3, lambda i, j: entry())
+        b = sp.Matrix(3, rng.choice([1, 3]), lambda i, j: entry())
+        mine, theirs = kin.matmul(a, b), a * b
+        assert mine.shape == theirs.shape
+        assert [sp.srepr(e) for e in mine] == [sp.srepr(e) for e in theirs]
