@@ -93,22 +93,25 @@ def test_time_derivative_in_a_tree_is_sympys():
         assert (mine - v.dt(n)).simplify() == Vector(0)
 
 
-@pytest.mark.parametrize("seed", range(4))
-def test_matrix_product_is_sympys_entry_for_entry(seed):
-    """``kinematics.matmul`` (direction cosines along a tree of frames)
-    forms sympy's ``a * b``, the same expressions node for node: sums,
-    rational coefficients, zeros and numbers among the entries."""
+@pytest.mark.parametrize("seed", range(3))
+def test_dot_product_is_sympys_node_for_node(seed):
+    """``kinematics.dot`` of vectors with components in several frames of
+    a tree is sympy's ``a & b``, the same expression node for node."""
+    frames = _tree(seed, 6)
     rng = random.Random(seed)
-    x, y, z = sp.symbols("x y z")
-    q = dynamicsymbols("q")
-    atoms = [0, 0, 1, -1, sp.Rational(1, 2), x, y, sp.cos(q), sp.sin(q), z * x]
+    q = dynamicsymbols("q1:4")
+    coefs = [1, -2, sp.Rational(1, 3), *q, q[0] * q[1]]
 
-    def entry():
-        return sum(rng.choice([-2, 1, 3]) * rng.choice(atoms) for _ in range(2))
+    def vector():
+        return sum(
+            (
+                rng.choice(coefs) * rng.choice([f.x, f.y, f.z])
+                for f in rng.sample(frames, rng.choice([1, 2, 3]))
+            ),
+            Vector(0),
+        )
 
-    for _ in range(40):
-        a = sp.Matrix(3, 3, lambda i, j: entry())
-        b = sp.Matrix(3, rng.choice([1, 3]), lambda i, j: entry())
-        mine, theirs = kin.matmul(a, b), a * b
-        assert mine.shape == theirs.shape
-        assert [sp.srepr(e) for e in mine] == [sp.srepr(e) for e in theirs]
+    for _ in range(15):
+        a, b = vector(), vector()
+        assert sp.srepr(kin.dot(a, b)) == sp.srepr(a & b)
+    assert kin.dot(Vector(0), frames[1].x) == 0

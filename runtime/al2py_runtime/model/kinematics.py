@@ -29,7 +29,7 @@ from .. import walks
 __all__ = [
     "vmap",
     "ang_vel_in",
-    "matmul",
+    "dot",
     "is_vector",
     "is_dyadic",
     "as_dyadic",
@@ -121,25 +121,37 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
-def matmul(a: sp.MatrixBase, b: sp.MatrixBase) -> sp.Matrix:
-    """``a * b``, the same entries (each a sum of products, zero terms
-    left out, as sympy's own sums them), without sympy's conversion of both
-    matrices to a domain first (most of a 3x3 product's time).
+def _row_times(row: list, b: sp.MatrixBase) -> list:
+    """The entries of ``r * b`` for the row ``r`` of entries ``row``, as
+    sympy sums them (``Add`` of the nonzero products), without its test
+    for infinities."""
+    return [
+        sp.Add(*[x * b[k, j] for k, x in enumerate(row) if x != 0 and b[k, j] != 0])
+        for j in range(b.cols)
+    ]
 
-    >>> from sympy import Matrix, symbols, cos, sin
-    >>> x, y = symbols("x y")
-    >>> a = Matrix([[cos(x), -sin(x), 0], [sin(x), cos(x), 0], [0, 0, 1]])
-    >>> b = Matrix([[1, 0, 0], [0, cos(y), -sin(y)], [0, sin(y), cos(y)]])
-    >>> matmul(a, b) == a * b
+
+def dot(a: Vector, b: Vector) -> Any:
+    """``a & b`` of two vectors, as sympy forms it (for each component of
+    ``a`` and each of ``b``, the row of ``b``'s measure numbers times the
+    direction cosines times ``a``'s column, summed in turn), without
+    sympy's test of each product's entries for an infinity.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x + u * N.z
+    >>> dot(a, b) == a & b
     True
     """
-    return sp.Matrix(
-        a.rows,
-        b.cols,
-        lambda i, j: sp.Add(
-            *[a[i, k] * b[k, j] for k in range(a.cols) if a[i, k] != 0 and b[k, j] != 0]
-        ),
-    )
+    if Vector.simp:  # sympy then simplifies: its own
+        return a & b
+    out = sp.S.Zero
+    for m1, f1 in a.args:
+        for m2, f2 in b.args:
+            out += _row_times(_row_times(list(m2), f2.dcm(f1)), m1)[0]
+    return out
 
 
 def cross(a: Vector, b: Vector) -> Vector:
@@ -475,6 +487,8 @@ def tidy_vector(v: Any) -> Any:
 
 def vdot(a: Any, b: Any) -> Any:
     """Autolev ``Dot``: vectors, dyadics (either side) or plain scalars."""
+    if isinstance(a, Vector) and isinstance(b, Vector):
+        return dot(a, b)
     if isinstance(a, Vector | Dyadic) and isinstance(b, Vector | Dyadic):
         return a & b
     if isinstance(a, Vector | Dyadic):

@@ -229,7 +229,7 @@ class Kinematics(ModelPart):
                     continue
                 seen.add(g)
                 todo.append(g)
-                m = kin.matmul(g.dcm(a), step)  # sympy's product, faster
+                m = g.dcm(a) * step
                 m = m.applyfunc(book.name)
                 g._dcm_cache[b] = m
                 b._dcm_cache[g] = m.T

@@ -104,7 +104,7 @@ class VectorCommands(ModelPart):
     def magsq(self, v: Any) -> Any:
         v = self.script.val(v)
         if isinstance(v, Vector):
-            return self.tidier(v.dot(v))
+            return self.tidier(kin.dot(v, v))
         return sp.sympify(v) ** 2
 
     @command
