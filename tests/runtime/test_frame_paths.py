@@ -47,24 +47,35 @@ def test_angular_velocity_in_a_tree_of_frames_is_sympys(seed):
     rng = random.Random(100 + seed)
     for _ in range(30):
         b, a = rng.choice(frames), rng.choice(frames)
-        assert kin._tree_path(b, a) is not None  # the walk is used
+        assert kin.frame_path(b, a) == b._dict_list(a, 1)
         assert _same(kin.ang_vel_in(b, a), b.ang_vel_in(a))
 
 
-def test_a_cycle_or_a_one_way_velocity_is_left_to_sympy():
-    frames = _tree(7, 6)
-    u = dynamicsymbols("u")
-    # a cycle: two paths between F0 and F5 (sympy picks the shorter)
-    frames[5].set_ang_vel(frames[0], u * frames[0].z)
-    assert kin._tree_path(frames[5], frames[1]) is None
+@pytest.mark.parametrize("seed", range(8))
+def test_the_path_among_cycles_is_sympys(seed):
+    """Angular velocities given between distant frames (cycles, several
+    shortest paths, some given one way only): sympy's first shortest
+    path, and the same vector."""
+    rng = random.Random(seed)
+    frames = _tree(seed, 8)
+    u = dynamicsymbols("u1:20")
+    for k in range(rng.choice([2, 4, 7])):
+        b, a = rng.sample(frames, 2)
+        if rng.random() < 0.7:
+            b.set_ang_vel(a, u[k] * a.z)
+        else:
+            b._ang_vel_dict[a] = u[k] * a.y  # one way only
     for b in frames:
         for a in frames:
+            try:
+                theirs = b._dict_list(a, 1)
+            except ValueError:
+                assert kin.frame_path(b, a) is None
+                with pytest.raises(ValueError):
+                    kin.ang_vel_in(b, a)
+                continue
+            assert kin.frame_path(b, a) == theirs
             assert _same(kin.ang_vel_in(b, a), b.ang_vel_in(a))
-    # given one way only
-    c, d = ReferenceFrame("C"), ReferenceFrame("D")
-    c._ang_vel_dict[d] = u * d.x
-    assert kin._tree_path(c, d) is None
-    assert _same(kin.ang_vel_in(c, d), c.ang_vel_in(d))
 
 
 def test_no_path_is_sympys_error():

@@ -15,6 +15,7 @@ Conventions (Kane & Levinson, as Autolev):
 from __future__ import annotations
 
 import contextlib
+from collections import deque
 from collections.abc import Callable, Iterable
 from typing import Any
 
@@ -29,6 +30,7 @@ from .. import walks
 __all__ = [
     "vmap",
     "ang_vel_in",
+    "frame_path",
     "dot",
     "is_vector",
     "is_dyadic",
@@ -198,14 +200,13 @@ def cross(a: Vector, b: Vector) -> Vector:
 
 def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
     """``b.ang_vel_in(a)``, the same vector: the sum of the angular
-    velocities along the path of frames from ``b`` to ``a``, in order.
+    velocities along sympy's path of frames from ``b`` to ``a``, in order.
 
     sympy finds that path (``_dict_list``) by listing every simple path
-    from ``b``, a search that grows with the square of the frames and
-    more.  Where the frames connected to ``b`` by angular velocities form a
-    tree (each pair given both ways, no cycle: frames oriented one from
-    another, as a model's are), the path is the one path of the tree, found
-    here by one walk; otherwise (or with no path) sympy's is used.
+    from ``b`` (its time grows with their number: fast for a chain, slow
+    for a model's many frames with angular velocities given between
+    distant ones), and takes the first shortest.  :func:`frame_path` finds
+    the same path by one breadth-first walk.
 
     >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
     >>> q1, q2 = dynamicsymbols("q1 q2")
@@ -215,34 +216,36 @@ def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
     >>> ang_vel_in(B, N) == B.ang_vel_in(N)
     True
     """
-    path = _tree_path(b, a)
+    path = frame_path(b, a)
     if path is None:
-        return b.ang_vel_in(a)
+        return b.ang_vel_in(a)  # sympy's error: no path
     out = Vector(0)
     for x, y in zip(path, path[1:], strict=False):
         out += x._ang_vel_dict[y]
     return out
 
 
-def _tree_path(b: ReferenceFrame, a: ReferenceFrame) -> list | None:
-    """The frames from ``b`` to ``a`` along angular velocities, when those
-    connected to ``b`` form a tree (None otherwise, or when ``a`` is not
-    among them)."""
+def frame_path(b: ReferenceFrame, a: ReferenceFrame) -> list | None:
+    """``b._dict_list(a, 1)``: the frames from ``b`` to ``a`` along given
+    angular velocities, or None where there is no path.
+
+    sympy lists the simple paths from ``b`` breadth first (each path's
+    extensions in the order of its last frame's ``_ang_vel_dict``) and
+    takes the first of the shortest that end at ``a``.  The first path to
+    reach a frame in that list is the path of an ordinary breadth-first
+    walk, in the same order, that keeps the first frame to reach each
+    frame (a shortest path's beginning is a shortest path): so the first
+    to reach ``a`` is sympy's."""
     parent: dict = {b: None}
-    todo = [b]
-    edges = 0
-    while todo:
-        x = todo.pop()
-        near = x._ang_vel_dict
-        edges += len(near)
-        for y in near:
-            if y is x or x not in y._ang_vel_dict:
-                return None  # a loop, or given one way only: sympy's search
+    todo = deque([b])
+    while todo and a not in parent:
+        x = todo.popleft()
+        for y in x._ang_vel_dict:
             if y not in parent:
                 parent[y] = x
                 todo.append(y)
-    if edges != 2 * (len(parent) - 1) or a not in parent:
-        return None  # a cycle
+    if a not in parent:
+        return None
     path = [a]
     while path[-1] is not b:
         path.append(parent[path[-1]])
