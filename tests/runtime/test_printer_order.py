@@ -138,14 +138,15 @@ def test_tidy_walks_count_as_sympys():
 
 @pytest.mark.parametrize("seed", [1, 2])
 def test_tidy_remembered_is_tidy(seed):
-    """Within ``tidy_memo`` each result is formed once and is what tidy
-    forms without it."""
+    """The model's ``Tidier`` forms each result once, and it is what tidy
+    forms without it (the second time: from memory)."""
     gens = [U1.diff(t), U2.diff(t), U1, U2]
     exprs = [sp.expand(e) for e in expressions(seed, 60, depth=3)]
     plain = [kin.tidy(e, gens) for e in exprs]
-    with kin.tidy_memo():
-        remembered = [kin.tidy(e, gens) for e in exprs + exprs]
+    tidier = kin.Tidier()
+    remembered = [tidier(e, gens) for e in exprs + exprs]
     assert remembered == plain + plain
+    assert [tidier(e) for e in exprs] == [kin.tidy(e) for e in exprs]
 
 
 def test_products_ordered_as_with_sympys_keys():

@@ -57,6 +57,8 @@ FOREIGN = {
     "_dcm_dict": "sympy ReferenceFrame: the frames' direction cosine graph",
     "_dcm_cache": "sympy ReferenceFrame: cached direction cosines",
     "_dict_list": "sympy ReferenceFrame: the frames' angular velocity graphs",
+    "_ang_vel_dict": "sympy ReferenceFrame: the angular velocities given to it"
+    " (the edges kinematics.ang_vel_in walks, as sympy's ang_vel_in sums them)",
     "_dcm": "sympy ReferenceFrame: sets direction cosines (orient_explicit"
     " without differentiating them for an angular velocity set at once)",
     "_var_dict": "sympy ReferenceFrame: cached variable maps (reset on a new"

@@ -74,11 +74,11 @@ class MassAndLoads(ModelPart):
             r += m * self.pos(p, self.mass_center(o))
         if total == 0:
             raise ValueError("CM: the system has no mass")
-        return kin.vmap(r, lambda e: kin.tidy(e / total))
+        return kin.vmap(r, lambda e: self.tidier(e / total))
 
     def _transfer(self, r: Vector, frame: ReferenceFrame) -> Dyadic:
         one = (frame.x | frame.x) + (frame.y | frame.y) + (frame.z | frame.z)
-        return kin.tidy(r.dot(r)) * one - (r | r)
+        return self.tidier(r.dot(r)) * one - (r | r)
 
     @command
     def central_inertia(self, body: ReferenceFrame) -> Dyadic:
@@ -90,7 +90,7 @@ class MassAndLoads(ModelPart):
             return b.inertia
         m = self.body_mass(body)
         r = self.pos(b.inertia_point, b.point)
-        return kin.vmap(b.inertia - m * self._transfer(r, body), kin.tidy)
+        return self.tidier.vector(b.inertia - m * self._transfer(r, body))
 
     @command
     def inertia_dyadic(self, body: Any, p: Point) -> Dyadic:
@@ -105,7 +105,7 @@ class MassAndLoads(ModelPart):
             return central
         m = self.body_mass(body)
         r = self.pos(p, b.point)
-        return kin.vmap(central + m * self._transfer(r, body), kin.tidy)
+        return self.tidier.vector(central + m * self._transfer(r, body))
 
     @command
     def inertia(self, p: Point, *objs: Any) -> Dyadic:
@@ -124,7 +124,7 @@ class MassAndLoads(ModelPart):
                         r.args[0][1] if r.args else ReferenceFrame("_")
                     )
                     out += m * self._transfer(r, frame)
-        return kin.vmap(out, kin.tidy)
+        return self.tidier.vector(out)
 
     # --------------------------------------------------------- loads
 

@@ -11,7 +11,6 @@ import sympy as sp
 from sympy.physics.vector import Point, ReferenceFrame, Vector
 
 from ..names.variables import time_function
-from . import kinematics as kin
 from .state import ModelPart, command, t
 
 __all__ = ["Energy"]
@@ -40,7 +39,7 @@ class Energy(ModelPart):
             ):
                 w = self.actual_value(self.ang_vel(o, n))
                 total += w.dot(self.central_inertia(o) & w) / 2
-        return kin.tidy(total, self.rates_and_speeds())
+        return self.tidier(total, self.rates_and_speeds())
 
     @command
     def momentum(self, kind: str, *objs: Any) -> Any:
@@ -57,7 +56,7 @@ class Energy(ModelPart):
         massive = self.massive_objects(tuple(objs))
         if kind == "GENERALIZED":
             ke = self.ke(*objs)
-            return sp.Matrix([kin.tidy(sp.diff(ke, u)) for u in self.fr_speeds()])
+            return sp.Matrix([self.tidier(sp.diff(ke, u)) for u in self.fr_speeds()])
         if kind not in ("LINEAR", "ANGULAR"):
             raise ValueError("Momentum takes LINEAR, ANGULAR or GENERALIZED")
         out = Vector(0)
@@ -78,7 +77,7 @@ class Energy(ModelPart):
             ):
                 w = self.actual_value(self.ang_vel(o, n))
                 out += self.central_inertia(o) & w
-        return kin.tidy_vector(out)
+        return self.tidier.vector(out)
 
     def _from_cm(self, c: Point) -> Vector:
         return -self.cm(c)
@@ -100,9 +99,9 @@ class Energy(ModelPart):
         wba = self.actual_value(self.ang_vel(b, a))
         wa = self.actual_value(self.ang_vel(a, n))
         if option == "ANGMOM":
-            return kin.tidy_vector(j * wba)
+            return self.tidier.vector(j * wba)
         if option == "KE":
-            return kin.tidy(
+            return self.tidier(
                 j * wa.dot(wba) + j * wba.dot(wba) / 2, self.rates_and_speeds()
             )
         if option != "FRSTAR":
@@ -118,7 +117,7 @@ class Energy(ModelPart):
         for r_a, r_ba in zip(pa, pba, strict=True):
             rows.append(carrier.dot(r_a) - j * alf_b.dot(r_ba))
         gens = self.rates_and_speeds()
-        return sp.Matrix([kin.tidy(r, gens) for r in rows])
+        return sp.Matrix([self.tidier(r, gens) for r in rows])
 
     @command
     def power(self) -> Any:
@@ -132,7 +131,7 @@ class Energy(ModelPart):
         for b, tq in st.torques.items():
             if tq != Vector(0):
                 total += tq.dot(self.actual_value(self.ang_vel(b, n)))
-        return kin.tidy(total, self.rates_and_speeds())
+        return self.tidier(total, self.rates_and_speeds())
 
     @command
     def nicheck(self) -> Any:

@@ -19,6 +19,7 @@ from . import kinematics as kin
 from .arrange import arrange, solve_speeds
 from .fastkane import (
     Motion,
+    Splits,
     active_rows,
     form_rate,
     inertia_rows,
@@ -41,6 +42,14 @@ class KaneEquations(ModelPart):
 
     # -------------------------------------------------- Fr and Fr*
 
+    def _splits_of(self, book: Any) -> Splits:
+        """The model's :class:`~.fastkane.Splits` of ``book`` (the
+        script's): what :func:`~.fastkane.measure_split` formed with it."""
+        memo = self.registry.splits
+        if memo is None or memo.book is not book:
+            memo = self.registry.splits = Splits(book)
+        return memo
+
     def _zpartials(
         self, v: Vector, speeds: list, frame: ReferenceFrame, book: Any
     ) -> list[list[Any]]:
@@ -50,7 +59,7 @@ class KaneEquations(ModelPart):
         v = self.actual_value(v, keep)
         if v == Vector(0):
             return [[sp.S.Zero] * 3 for _ in speeds]
-        split = measure_split(v, frame, speeds, book)
+        split = measure_split(v, frame, speeds, book, memo=self._splits_of(book))
         if split is not None:
             return [[s[0][j] for s in split] for j in range(len(speeds))]
         measures = [book.name_linear(e, speeds) for e in v.to_matrix(frame)]
@@ -85,7 +94,9 @@ class KaneEquations(ModelPart):
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)
                 keep = self.script.specified_inputs([])
-                mf = named_measures(self.actual_value(f, keep), frame, book)
+                mf = named_measures(
+                    self.actual_value(f, keep), frame, book, memo=self._splits_of(book)
+                )
                 parts = self._zpartials(v, speeds, frame, book)
                 moved = moved or any(x != 0 for p in parts for x in p)
                 dots = active_rows([(parts, mf)], len(speeds), book.name)
@@ -140,7 +151,9 @@ class KaneEquations(ModelPart):
         kept) as the engine's :func:`~.fastkane.linear_form` in the
         generalized speeds."""
         v = self.actual_value(vec, self.auxiliary_kept())
-        return linear_form(v, frame, self.generalized_speeds(), book)
+        return linear_form(
+            v, frame, self.generalized_speeds(), book, memo=self._splits_of(book)
+        )
 
     def _rate(
         self, form: Any, frame: ReferenceFrame, book: Any, rates: tuple
@@ -251,7 +264,7 @@ class KaneEquations(ModelPart):
     @command
     def tstar(self, b: ReferenceFrame, n: ReferenceFrame | None = None) -> Vector:
         """``TStar(B, N)``: inertia torque of body B in N."""
-        return kin.tidy_vector(self._inertia_torque(b, n or self.newtonian_frame()))
+        return self.tidier.vector(self._inertia_torque(b, n or self.newtonian_frame()))
 
     @command
     def frstar(self) -> sp.Matrix:
@@ -273,7 +286,7 @@ class KaneEquations(ModelPart):
         index = {u: k for k, u in enumerate(self.generalized_speeds())}
 
         def motion(v: Vector, form: Any, acc: Vector, frame: ReferenceFrame) -> Motion:
-            split = measure_split(acc, frame, accels, book)
+            split = measure_split(acc, frame, accels, book, memo=self._splits_of(book))
             if split is None:  # pragma: no cover - linear in u'
                 raise ValueError("FrStar(): an acceleration is not linear in U'")
             columns = [[s[0][j] for s in split] for j in range(len(accels))]
@@ -312,7 +325,9 @@ class KaneEquations(ModelPart):
                 alf = self.actual_value(alf)
                 inertia = kin.dyadic_matrix(self.central_inertia(o), o)
                 imat = [[book.name(inertia[i, j]) for j in range(3)] for i in range(3)]
-                omega = named_measures(self.actual_value(w), o, book)
+                omega = named_measures(
+                    self.actual_value(w), o, book, memo=self._splits_of(book)
+                )
                 rotations.append((imat, omega, motion(w, form, alf, o)))
         moved = [
             any(mo.partials[k] is not None for _, mo in translations)
@@ -391,7 +406,7 @@ class KaneEquations(ModelPart):
             out.append(self.script.assign(self.script.name_of(u), s, line=line))
         for u, s in zip(speeds, sols, strict=True):
             ds = self.resolved_dt(s, self.registry.newtonian)
-            ds = kin.tidy(ds, gens)
+            ds = self.tidier(ds, gens)
             du = sp.Derivative(u, t)
             st.speed_dt[du] = ds
             name = self.script.name_of(u)
@@ -498,7 +513,9 @@ class KaneEquations(ModelPart):
                 eqs = [self.script.form(e) for e in eqs]
             sols = solve_speeds(eqs, forces, book, self.configuration_variables())
             for f, s in zip(forces, sols, strict=True):
-                self.script.assign(self.script.name_of(f), kin.tidy(s, gens), line=line)
+                self.script.assign(
+                    self.script.name_of(f), self.tidier(s, gens), line=line
+                )
         st.kane = {
             "speeds": ind,
             "dependent": list(st.dependent),

@@ -34,7 +34,6 @@ substituted.
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -54,10 +53,12 @@ from sympy.printing.numpy import NumPyPrinter
 
 from ..intermediates.autoz import Intermediate, Intermediates, product_with
 from .arrange import linear_terms, split_linear_named
+from .kinematics import ang_vel_in
 
 __all__ = [
     "FastKane",
     "Motion",
+    "Splits",
     "active_rows",
     "form_rate",
     "inertia_rows",
@@ -239,37 +240,55 @@ def named_dcm(
     return out
 
 
-#: book -> ((expression, xs, book.rates, book.exclude) -> the expression's
-#: ``linear_terms`` in ``xs`` after :meth:`Intermediates.name_linear`).
-#: Naming is a function of the expression once the book has named it (an
-#: intermediate is never unnamed), given the book's ``rates`` and ``exclude``,
-#: so a measure number split again -- the same velocity for ``Fr()``'s
-#: partial velocities and ``FrStar()``'s linear forms, two loads at one
-#: point, a velocity formed again from the same terms -- is answered with
-#: the same result, and no intermediate is made again.
-_SPLITS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-#: book -> (a vector's components with their direction cosines, xs,
-#: book.rates, book.exclude) -> :func:`measure_split`'s answer (the same
-#: rule: nothing is named again)
-_VECTORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+class Splits:
+    """What :func:`measure_split` has formed with one book, kept by the
+    book's owner (:class:`FastKane`, the script's model) and passed in.
+
+    ``exprs``: (expression, xs, book.rates, book.exclude) -> the expression's
+    ``linear_terms`` in ``xs`` after :meth:`Intermediates.name_linear`.
+    Naming is a function of the expression once the book has named it (an
+    intermediate is never unnamed), given the book's ``rates`` and
+    ``exclude``, so a measure number split again -- the same velocity for
+    ``Fr()``'s partial velocities and ``FrStar()``'s linear forms, two loads
+    at one point, a velocity formed again from the same terms -- is answered
+    with the same result, and no intermediate is made again.
+
+    ``vectors``: (a vector's components with their direction cosines, xs,
+    book.rates, book.exclude) -> :func:`measure_split`'s answer (the same
+    rule: nothing is named again)."""
+
+    __slots__ = ("book", "exprs", "vectors")
+
+    def __init__(self, book: Intermediates) -> None:
+        self.book = book
+        self.exprs: dict = {}
+        self.vectors: dict = {}
+
+
 _NONE = object()
 
 
 def _split_named(
-    expr: Any, xs: tuple, book: Intermediates
+    expr: Any, xs: tuple, book: Intermediates, memo: Splits
 ) -> tuple[list[Any], Any] | None:
-    """``linear_terms(book.name_linear(expr, xs), xs)``, once per book for
-    each expression (see :data:`_SPLITS`)."""
-    memo = _SPLITS.get(book)
-    if memo is None:
-        memo = _SPLITS[book] = {}
+    """``linear_terms(book.name_linear(expr, xs), xs)``, once in ``memo``
+    for each expression (see :class:`Splits`)."""
     key = (expr, xs, book.rates, book.exclude)
     try:
-        return memo[key]
+        return memo.exprs[key]
     except KeyError:
         pass
-    found = memo[key] = linear_terms(book.name_linear(expr, xs), xs)
+    found = memo.exprs[key] = linear_terms(book.name_linear(expr, xs), xs)
     return found
+
+
+def _memo_of(book: Intermediates, memo: Splits | None) -> Splits:
+    """``memo`` (the book's), or a new one for this call alone."""
+    if memo is None:
+        return Splits(book)
+    if memo.book is not book:
+        raise ValueError("a Splits memo is used with another book than its own")
+    return memo
 
 
 def measure_split(
@@ -278,6 +297,7 @@ def measure_split(
     xs: Sequence[Any],
     book: Intermediates,
     dcm: Dcm = _sympy_dcm,
+    memo: Splits | None = None,
 ) -> list[tuple[list[Any], Any]] | None:
     """``vec``'s measure numbers in ``frame`` as ``sum c_j x_j + rest``,
     each ``c_j`` and ``rest`` named: ``(coefficients, rest)`` per measure
@@ -285,7 +305,9 @@ def measure_split(
 
     Each component is split in its own frame, then rotated with the
     direction cosines ``dcm(frame, f)``, so no large expression (a vector
-    expressed in another frame) is formed and split.
+    expressed in another frame) is formed and split.  ``memo`` is the
+    book's :class:`Splits` (kept by the book's owner; without one, nothing
+    is remembered beyond this call).
 
     >>> from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
     >>> q, u = dynamicsymbols("q u")
@@ -295,33 +317,36 @@ def measure_split(
     [([cos(q(t))], 0), ([sin(q(t))], 1), ([0], 0)]
     """
     xs = tuple(xs)
+    memo = _memo_of(book, memo)
     if dcm is not _sympy_dcm:  # it may name (in turn with the components)
-        return _measure_split(vec, frame, xs, book, dcm)
+        return _measure_split(vec, frame, xs, book, dcm, memo)
     # sympy's direction cosines name nothing: the same vector split again
     # (Fr()'s partial velocities and FrStar()'s linear forms of one
     # velocity) has the same answer, and nothing to name
     try:
         cosines = {f: frame.dcm(f) for _, f in vec.args}
     except ValueError:  # frames not connected: raised in turn, as it is met
-        return _measure_split(vec, frame, xs, book, dcm)
-    memo = _VECTORS.get(book)
-    if memo is None:
-        memo = _VECTORS[book] = {}
+        return _measure_split(vec, frame, xs, book, dcm, memo)
     key = (
         tuple((tuple(comps), f, tuple(cosines[f])) for comps, f in vec.args),
         xs,
         book.rates,
         book.exclude,
     )
-    found = memo.get(key, _NONE)
+    found = memo.vectors.get(key, _NONE)
     if found is _NONE:
-        found = _measure_split(vec, frame, xs, book, lambda _, f: cosines[f])
-        memo[key] = found
+        found = _measure_split(vec, frame, xs, book, lambda _, f: cosines[f], memo)
+        memo.vectors[key] = found
     return None if found is None else [(list(c), r) for c, r in found]
 
 
 def _measure_split(
-    vec: Vector, frame: ReferenceFrame, xs: tuple, book: Intermediates, dcm: Dcm
+    vec: Vector,
+    frame: ReferenceFrame,
+    xs: tuple,
+    book: Intermediates,
+    dcm: Dcm,
+    memo: Splits,
 ) -> list[tuple[list[Any], Any]] | None:
     """:func:`measure_split`, formed."""
     terms: list[tuple[list[list[Any]], list[Any]]] = [
@@ -332,7 +357,7 @@ def _measure_split(
         for k in range(3):
             if comps[k] == 0:
                 continue
-            split = _split_named(comps[k], xs, book)
+            split = _split_named(comps[k], xs, book, memo)
             if split is None:
                 return None
             for i in range(3):
@@ -353,11 +378,15 @@ def _measure_split(
 
 
 def named_measures(
-    vec: Vector, frame: ReferenceFrame, book: Intermediates, dcm: Dcm = _sympy_dcm
+    vec: Vector,
+    frame: ReferenceFrame,
+    book: Intermediates,
+    dcm: Dcm = _sympy_dcm,
+    memo: Splits | None = None,
 ) -> list[Any]:
     """``vec``'s three measure numbers in ``frame``, named (formed
     component by component, as :func:`measure_split`)."""
-    split = measure_split(vec, frame, [], book, dcm)
+    split = measure_split(vec, frame, [], book, dcm, memo)
     assert split is not None  # nothing to be linear in
     return [rest for _, rest in split]
 
@@ -368,6 +397,7 @@ def linear_form(
     speeds: Sequence[Any],
     book: Intermediates,
     dcm: Dcm = _sympy_dcm,
+    memo: Splits | None = None,
 ) -> tuple[list[list[Any]], list[Any]] | None:
     """``vec`` (a velocity or an angular velocity) as ``(columns, rest)``:
     for each speed its three named measure numbers in ``frame`` (the
@@ -377,7 +407,7 @@ def linear_form(
     rest: list[Any] = [sp.S.Zero] * 3
     if vec == Vector(0):
         return columns, rest
-    split = measure_split(vec, frame, speeds, book, dcm)
+    split = measure_split(vec, frame, speeds, book, dcm, memo)
     if split is None:
         return None
     for i, (coefs, r) in enumerate(split):
@@ -609,6 +639,8 @@ class FastKane:
         }
         #: the intermediates (an ``Intermediates`` book, labels ``z1``, ...)
         self.book = Intermediates(prefix, taken)
+        #: what :func:`measure_split` formed with the book
+        self._splits = Splits(self.book)
         self._dcms: dict = {}
         self._forms: dict = {}
         self._memo: dict = {}  # time derivatives, for :meth:`_derivative_of`
@@ -801,7 +833,12 @@ class FastKane:
         if found is None:
             speeds = self._u + self._u_aux
             found = linear_form(
-                self._actual_vector(vec), frame, speeds, self.book, self._frame_dcm
+                self._actual_vector(vec),
+                frame,
+                speeds,
+                self.book,
+                self._frame_dcm,
+                self._splits,
             )
             if found is None:
                 raise ValueError("a velocity is not linear in the speeds")
@@ -844,14 +881,14 @@ class FastKane:
                 form = self._form(where.vel(n_frame), n_frame)
                 frame = n_frame
             elif isinstance(where, ReferenceFrame):
-                form = self._form(where.ang_vel_in(n_frame), where)
+                form = self._form(ang_vel_in(where, n_frame), where)
                 frame = where
             else:
                 raise TypeError(
                     f"a load acts on a Point or a ReferenceFrame, not {where!r}"
                 )
             force = named_measures(
-                self._actual_vector(what), frame, book, self._frame_dcm
+                self._actual_vector(what), frame, book, self._frame_dcm, self._splits
             )
             loads_in.append((_nonzero(form[0]), force))
         fr = active_rows(loads_in, rows, book.name)
@@ -876,7 +913,7 @@ class FastKane:
             if any(sp.sympify(c).has(_T) for c, _, _ in inertia.args):
                 raise NotImplementedError("inertia dyadics that vary in time")
             imat = self._inertia_matrix(inertia, frame)
-            form = self._form(frame.ang_vel_in(n_frame), frame)
+            form = self._form(ang_vel_in(frame, n_frame), frame)
             columns, rest = form
             omega = [
                 book.name(
@@ -914,8 +951,8 @@ class FastKane:
     def _inertia_matrix(self, dyadic: Any, frame: ReferenceFrame) -> list[list[Any]]:
         out = [[sp.S.Zero] * 3 for _ in range(3)]
         for coef, v1, v2 in dyadic.args:
-            c1 = named_measures(v1, frame, self.book, self._frame_dcm)
-            c2 = named_measures(v2, frame, self.book, self._frame_dcm)
+            c1 = named_measures(v1, frame, self.book, self._frame_dcm, self._splits)
+            c2 = named_measures(v2, frame, self.book, self._frame_dcm, self._splits)
             for i in range(3):
                 for j in range(3):
                     if c1[i] != 0 and c2[j] != 0:

@@ -15,7 +15,8 @@ Conventions (Kane & Levinson, as Autolev):
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterable, Iterator
+from collections import deque
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import sympy as sp
@@ -28,11 +29,15 @@ from .. import walks
 
 __all__ = [
     "vmap",
+    "ang_vel_in",
+    "frame_path",
+    "dot",
     "is_vector",
     "is_dyadic",
     "as_dyadic",
     "as_vector",
     "tidy",
+    "Tidier",
     "tidy_memo",
     "tidy_vector",
     "vdot",
@@ -118,6 +123,39 @@ def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     return f(x)
 
 
+def _row_times(row: list, b: sp.MatrixBase) -> list:
+    """The entries of ``r * b`` for the row ``r`` of entries ``row``, as
+    sympy sums them (``Add`` of the nonzero products), without its test
+    for infinities."""
+    return [
+        sp.Add(*[x * b[k, j] for k, x in enumerate(row) if x != 0 and b[k, j] != 0])
+        for j in range(b.cols)
+    ]
+
+
+def dot(a: Vector, b: Vector) -> Any:
+    """``a & b`` of two vectors, as sympy forms it (for each component of
+    ``a`` and each of ``b``, the row of ``b``'s measure numbers times the
+    direction cosines times ``a``'s column, summed in turn), without
+    sympy's test of each product's entries for an infinity.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x + u * N.z
+    >>> dot(a, b) == a & b
+    True
+    """
+    if Vector.simp:  # sympy then simplifies: its own
+        return a & b
+    out = sp.S.Zero
+    for m1, f1 in a.args:
+        for m2, f2 in b.args:
+            out += _row_times(_row_times(list(m2), f2.dcm(f1)), m1)[0]
+    return out
+
+
 def cross(a: Vector, b: Vector) -> Vector:
     """``a ^ b`` of two vectors, as sympy forms it (each component of ``b``
     in its frame ``F``: ``a``'s measure numbers along ``F`` by the direction
@@ -158,6 +196,61 @@ def cross(a: Vector, b: Vector) -> Vector:
             )
         )
     return Vector(out)
+
+
+def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
+    """``b.ang_vel_in(a)``, the same vector: the sum of the angular
+    velocities along sympy's path of frames from ``b`` to ``a``, in order.
+
+    sympy finds that path (``_dict_list``) by listing every simple path
+    from ``b`` (its time grows with their number: fast for a chain, slow
+    for a model's many frames with angular velocities given between
+    distant ones), and takes the first shortest.  :func:`frame_path` finds
+    the same path by one breadth-first walk.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q1, q2 = dynamicsymbols("q1 q2")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q1, N.z])
+    >>> B = A.orientnew("B", "Axis", [q2, A.x])
+    >>> ang_vel_in(B, N) == B.ang_vel_in(N)
+    True
+    """
+    path = frame_path(b, a)
+    if path is None:
+        return b.ang_vel_in(a)  # sympy's error: no path
+    out = Vector(0)
+    for x, y in zip(path, path[1:], strict=False):
+        out += x._ang_vel_dict[y]
+    return out
+
+
+def frame_path(b: ReferenceFrame, a: ReferenceFrame) -> list | None:
+    """``b._dict_list(a, 1)``: the frames from ``b`` to ``a`` along given
+    angular velocities, or None where there is no path.
+
+    sympy lists the simple paths from ``b`` breadth first (each path's
+    extensions in the order of its last frame's ``_ang_vel_dict``) and
+    takes the first of the shortest that end at ``a``.  The first path to
+    reach a frame in that list is the path of an ordinary breadth-first
+    walk, in the same order, that keeps the first frame to reach each
+    frame (a shortest path's beginning is a shortest path): so the first
+    to reach ``a`` is sympy's."""
+    parent: dict = {b: None}
+    todo = deque([b])
+    while todo and a not in parent:
+        x = todo.popleft()
+        for y in x._ang_vel_dict:
+            if y not in parent:
+                parent[y] = x
+                todo.append(y)
+    if a not in parent:
+        return None
+    path = [a]
+    while path[-1] is not b:
+        path.append(parent[path[-1]])
+    path.reverse()
+    return path
 
 
 def dyadic_matrix(d: Dyadic, frame: ReferenceFrame) -> sp.Matrix:
@@ -201,7 +294,7 @@ def frame_dt(
     for m, f in v.args:
         out += Vector([(m.applyfunc(scalar_dt), f)])
         if f != frame:
-            out += cross(f.ang_vel_in(frame), Vector([(m, f)]))
+            out += cross(ang_vel_in(f, frame), Vector([(m, f)]))
     return out
 
 
@@ -237,29 +330,41 @@ def tidy(expr: Any, gens: Iterable[Any] = ()) -> Any:
     """
     if not isinstance(expr, sp.Expr) or expr.is_number:
         return expr
-    if not _TIDIED:
-        return _tidy(expr, gens)
-    # within :func:`tidy_memo`: each expression's once
-    key = (expr, tuple(gens))
-    found = _TIDIED[-1].get(key)
-    if found is None:
-        found = _TIDIED[-1][key] = _tidy(expr, key[1])
-    return found
+    return _tidy(expr, gens)
 
 
-#: tidy's results while :func:`tidy_memo` is in force
-_TIDIED: list[dict] = []
+class Tidier:
+    """:func:`tidy` that forms each expression's result once: the model's
+    (``model.tidier``), whose responses and results show the same measure
+    numbers many times, at import and again in the transcript.  A result is
+    a function of the expression and ``gens`` alone, so it is the same as
+    :func:`tidy`'s."""
+
+    __slots__ = ("_done",)
+
+    def __init__(self) -> None:
+        self._done: dict = {}
+
+    def __call__(self, expr: Any, gens: Iterable[Any] = ()) -> Any:
+        """``tidy(expr, gens)``, remembered."""
+        if not isinstance(expr, sp.Expr) or expr.is_number:
+            return expr
+        key = (expr, tuple(gens))
+        found = self._done.get(key)
+        if found is None:
+            found = self._done[key] = _tidy(expr, key[1])
+        return found
+
+    def vector(self, v: Any) -> Any:
+        """:func:`tidy_vector` of ``v``, each measure number remembered."""
+        return vmap(v, self)
 
 
-@contextlib.contextmanager
-def tidy_memo() -> Iterator[None]:
-    """Within this context :func:`tidy` forms each expression's result once
-    (a transcript shows the same measure numbers in many responses)."""
-    _TIDIED.append({})
-    try:
-        yield
-    finally:
-        _TIDIED.pop()
+def tidy_memo() -> contextlib.AbstractContextManager[None]:
+    """A context that changes nothing, kept for the transcript's printer
+    (``names/transcript.py`` enters it): the model's :class:`Tidier`
+    remembers each result for the model's whole life now."""
+    return contextlib.nullcontext()
 
 
 def _tidy(expr: sp.Expr, gens: Iterable[Any]) -> Any:
@@ -385,6 +490,8 @@ def tidy_vector(v: Any) -> Any:
 
 def vdot(a: Any, b: Any) -> Any:
     """Autolev ``Dot``: vectors, dyadics (either side) or plain scalars."""
+    if isinstance(a, Vector) and isinstance(b, Vector):
+        return dot(a, b)
     if isinstance(a, Vector | Dyadic) and isinstance(b, Vector | Dyadic):
         return a & b
     if isinstance(a, Vector | Dyadic):

@@ -40,6 +40,7 @@ from ..safety import Statements
 from .bodies import MassAndLoads
 from .energy import Energy
 from .equations import KaneEquations
+from .kinematics import Tidier
 from .objects import Objects
 from .points import Kinematics
 from .resolutions import Resolutions
@@ -85,6 +86,9 @@ class Model(
         #: the right-hand sides' substitutions made so far (while the
         #: right-hand sides stay the same)
         self.resolutions = Resolutions(script, table)
+        #: tidy's results, each formed once (responses at import and in the
+        #: transcript show the same measure numbers many times)
+        self.tidier = Tidier()
 
 
 #: The commands a :class:`Model` answers (``al.model.simprot``,

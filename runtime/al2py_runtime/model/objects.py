@@ -436,7 +436,7 @@ class Objects(ModelPart):
     @command
     def given_ang_vel(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):
         """After ``B.set_ang_vel(A, w)`` (``W_B_A> = w``): Autolev's response."""
-        return self._set(Form.ANGVEL, [b, a], b.ang_vel_in(a), line)
+        return self._set(Form.ANGVEL, [b, a], kin.ang_vel_in(b, a), line)
 
     @command
     def given_ang_acc(self, b: ReferenceFrame, a: ReferenceFrame, *, line=None):

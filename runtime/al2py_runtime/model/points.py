@@ -76,10 +76,10 @@ class Kinematics(ModelPart):
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
         cosmetic, and large models are why AutoZ is on)."""
-        return v if self.settings.autoz else kin.tidy_vector(v)
+        return v if self.settings.autoz else self.tidier.vector(v)
 
     def _tidy(self, e: Any) -> Any:
-        return e if self.settings.autoz else kin.tidy(e)
+        return e if self.settings.autoz else self.tidier(e)
 
     def auxiliary_kept(self) -> list:
         """The auxiliary speeds and their derivatives: what formed quantities
@@ -166,7 +166,7 @@ class Kinematics(ModelPart):
         if a is b:
             return Vector(0)
         try:
-            return b.ang_vel_in(a)
+            return kin.ang_vel_in(b, a)
         except ValueError:
             raise ValueError(f"W_{b.name}_{a.name}> is not defined") from None
 
@@ -202,7 +202,7 @@ class Kinematics(ModelPart):
             m = a.dcm(b)
         except ValueError:
             raise ValueError(f"{a.name}_{b.name} is not defined") from None
-        return sp.Matrix(m).applyfunc(kin.tidy)
+        return sp.Matrix(m).applyfunc(self.tidier)
 
     # --------------------------------------------------- rotation commands
 
@@ -349,7 +349,7 @@ class Kinematics(ModelPart):
         wq = self._dcm_angvel(a, b, kind, qs)
         given = None
         try:
-            given = self.actual_value(b.ang_vel_in(a))
+            given = self.actual_value(kin.ang_vel_in(b, a))
         except ValueError:
             pass
         qdots = [sp.Derivative(q, t) for q in qs]

@@ -122,7 +122,7 @@ class Speeds(ModelPart):
         }
         if not table or not mentions(x, list(table)):
             return x
-        return kin.tidy_vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
+        return self.tidier.vector(kin.vmap(x, lambda e: sp.sympify(e).xreplace(table)))
 
     def kinematical_equations(self) -> list:
         """The derivatives ``Q'`` of declared variables (motion variables or
@@ -169,7 +169,7 @@ class Speeds(ModelPart):
         if not isinstance(value, sp.Basic | Vector | Dyadic | sp.MatrixBase):
             return value
         gens = self.rates_and_speeds()
-        return kin.vmap(value, lambda e: kin.tidy(e, gens))
+        return kin.vmap(value, lambda e: self.tidier(e, gens))
 
     def rates_and_speeds(self) -> list:
         """The generalized speeds' derivatives, then the speeds: what
@@ -191,7 +191,7 @@ class Speeds(ModelPart):
         vector; several give a tuple of vectors, in order."""
         speeds = list(speeds) or self.fr_speeds()
         out = [
-            kin.tidy_vector(x)
+            self.tidier.vector(x)
             for x in self.partial_velocities(self.script.val(v), speeds)
         ]
         return out[0] if len(out) == 1 else tuple(out)
@@ -201,6 +201,6 @@ class Speeds(ModelPart):
         """``Remainder(V_P_N>)``: the part of ``v>`` free of speeds."""
         speeds = self.fr_speeds()
         v = self.actual_value(self.script.val(v), speeds)
-        return kin.tidy_vector(
+        return self.tidier.vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
         )

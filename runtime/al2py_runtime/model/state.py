@@ -15,6 +15,7 @@ from ..safety import Statements, statement
 if TYPE_CHECKING:
     from ..names.settings import Settings
     from ..names.table import NameTable
+    from .kinematics import Tidier
     from .resolutions import Resolutions
     from .script import ScriptNames
 
@@ -91,6 +92,9 @@ class ModelState:
     speeds: list | None = None  # the speeds, fixed when Fr/FrStar are formed
     fr_speeds: list | None = None
     kane: dict | None = None
+    #: what :func:`~.fastkane.measure_split` formed with the script's book
+    #: (a :class:`~.fastkane.Splits`, made on first use)
+    splits: Any = None
 
     @property
     def forces(self) -> dict:
@@ -124,6 +128,8 @@ class ModelPart:
     unit_norms: list[tuple[Any, ...]]
     #: the script's resolvers, remembered while its right-hand sides stay
     resolutions: Resolutions
+    #: :func:`~.kinematics.tidy`, each result formed once
+    tidier: Tidier
 
 
 def _resultants(loads: list, kind: type) -> dict:

@@ -31,11 +31,11 @@ class VectorCommands(ModelPart):
         dyadic ``1>>`` is the identity in every frame, whether or not A is
         oriented relative to the frame it was written in."""
         if isinstance(v, Vector):
-            return kin.tidy_vector(v.express(frame))
+            return self.tidier.vector(v.express(frame))
         if isinstance(v, Dyadic):
             if kin.is_unit_dyadic(v):
                 return kin.unit_dyadic(frame)
-            return kin.vmap(v.express(frame, frame), kin.tidy)
+            return self.tidier.vector(v.express(frame, frame))
         return v
 
     @command
@@ -46,10 +46,10 @@ class VectorCommands(ModelPart):
         x = self.script.val(x)
         if isinstance(x, Vector):
             return sp.Matrix(
-                [[kin.tidy(x.dot(e)) for e in (frame.x, frame.y, frame.z)]]
+                [[self.tidier(x.dot(e)) for e in (frame.x, frame.y, frame.z)]]
             )
         if isinstance(x, Dyadic):
-            return x.to_matrix(frame).applyfunc(kin.tidy)
+            return x.to_matrix(frame).applyfunc(self.tidier)
         if isinstance(x, sp.MatrixBase):
             if x.shape == (3, 3):
                 return kin.frame_dyadic(frame, x)
@@ -93,18 +93,18 @@ class VectorCommands(ModelPart):
     def dot(self, a: Any, b: Any) -> Any:
         a, b = self.script.val(a), self.script.val(b)
         if isinstance(a, kin.VectorMatrix) or isinstance(b, kin.VectorMatrix):
-            return kin.vdot_matrix(a, b).applyfunc(kin.tidy)
-        return kin.tidy(kin.vdot(a, b))
+            return kin.vdot_matrix(a, b).applyfunc(self.tidier)
+        return self.tidier(kin.vdot(a, b))
 
     @command
     def cross(self, a: Any, b: Any) -> Any:
-        return kin.vmap(kin.vcross(self.script.val(a), self.script.val(b)), kin.tidy)
+        return self.tidier.vector(kin.vcross(self.script.val(a), self.script.val(b)))
 
     @command
     def magsq(self, v: Any) -> Any:
         v = self.script.val(v)
         if isinstance(v, Vector):
-            return kin.tidy(v.dot(v))
+            return self.tidier(kin.dot(v, v))
         return sp.sympify(v) ** 2
 
     @command
@@ -147,7 +147,7 @@ class VectorCommands(ModelPart):
             if not y.args:
                 return sp.Integer(0)
             frame = y.args[0][1].args[0][1]
-            return kin.tidy(y.to_matrix(frame).trace())
+            return self.tidier(y.to_matrix(frame).trace())
         from ..matrices import trace
 
         return trace(y)
@@ -164,7 +164,7 @@ class VectorCommands(ModelPart):
             return sp.diff(y, x)
         if frame is None:
             return kin.vmap(y, lambda e: sp.diff(e, x))
-        return kin.tidy_vector(y.diff(x, frame))
+        return self.tidier.vector(y.diff(x, frame))
 
     def vector_dt(self, y: Any, frame: Any) -> Any:
         """``Dt(v>, A)``: time derivative in frame A (default: Newtonian)."""
@@ -172,4 +172,4 @@ class VectorCommands(ModelPart):
             frame = self.newtonian_frame()
         if not isinstance(y, Vector | Dyadic):
             return self.resolved_dt(y, frame)
-        return kin.vmap(self.resolved_dt(y, frame), kin.tidy)
+        return self.tidier.vector(self.resolved_dt(y, frame))
