@@ -14,7 +14,6 @@ Conventions (Kane & Levinson, as Autolev):
 
 from __future__ import annotations
 
-import contextlib
 from collections import deque
 from collections.abc import Callable, Iterable
 from typing import Any
@@ -38,7 +37,6 @@ __all__ = [
     "as_vector",
     "tidy",
     "Tidier",
-    "tidy_memo",
     "tidy_vector",
     "vdot",
     "vcross",
@@ -358,13 +356,6 @@ class Tidier:
     def vector(self, v: Any) -> Any:
         """:func:`tidy_vector` of ``v``, each measure number remembered."""
         return vmap(v, self)
-
-
-def tidy_memo() -> contextlib.AbstractContextManager[None]:
-    """A context that changes nothing, kept for the transcript's printer
-    (``names/transcript.py`` enters it): the model's :class:`Tidier`
-    remembers each result for the model's whole life now."""
-    return contextlib.nullcontext()
 
 
 def _tidy(expr: sp.Expr, gens: Iterable[Any]) -> Any:

@@ -52,7 +52,6 @@ def transcript_lines(
     """The full transcript as text lines.  ``form(value)`` forms each value
     that is not verbatim just before it is printed; ``tick()`` after each
     response is printed (progress)."""
-    from ..model.kinematics import tidy_memo
     from .printing import Printing
 
     by_line: dict[int | None, list[Response]] = defaultdict(list)
@@ -68,8 +67,7 @@ def transcript_lines(
             tick()
         return lines
 
-    with tidy_memo():
-        _interleave(source, by_line, lines_of, out)
+    _interleave(source, by_line, lines_of, out)
     return out
 
 
