@@ -27,9 +27,10 @@ from dataclasses import dataclass
 from al2py_runtime.vocabulary import LIST_COMMANDS
 from antlr4 import CommonTokenStream, InputStream, Token
 from antlr4.atn.ATNState import ATNState
+from antlr4.atn.PredictionMode import PredictionMode
 from antlr4.error.ErrorListener import ErrorListener
-from antlr4.error.Errors import InputMismatchException
-from antlr4.error.ErrorStrategy import DefaultErrorStrategy
+from antlr4.error.Errors import InputMismatchException, ParseCancellationException
+from antlr4.error.ErrorStrategy import BailErrorStrategy, DefaultErrorStrategy
 from antlr4.tree.Tree import TerminalNode
 
 from . import ir
@@ -164,16 +165,22 @@ def _parse(
     stream.fill()
     logical.relocate(stream.tokens)
     parser = AutolevParser(stream)
-    parser._errHandler = _ErrorStrategy()
     parser.removeErrorListeners()
     parser.addErrorListener(listener)
+    careful = _ErrorStrategy()
     parsed: list[tuple[AutolevParser.StatementContext | None, Token]] = []
     for first, last in _statement_ranges(stream.tokens):
+        ctx = _quick_statement(parser, stream, first, last)
+        if ctx is not None:
+            parsed.append((ctx, stream.tokens[last]))
+            continue
         errors_before = listener.count
         stream.seek(first)
+        parser._errHandler = careful
+        parser._interp.predictionMode = PredictionMode.LL
         # A statement that ended in error recovery must not keep the parser in
         # recovery mode, where ANTLR reports no further errors.
-        parser._errHandler.reset(parser)
+        careful.reset(parser)
         ctx = parser.statement()
         if listener.count == errors_before and stream.index >= last:
             parsed.append((ctx, stream.tokens[last]))
@@ -182,6 +189,35 @@ def _parse(
     builder = _IRBuilder(filename, logical, lines, stream)
     script = builder.build(parsed)
     return script, listener.errors() + builder.errors
+
+
+class _Bail(BailErrorStrategy):
+    """The first stage of the two-stage parse: any syntax error stops the
+    statement's parse at once, unreported and without recovery."""
+
+    def reportError(self, recognizer, e):
+        pass
+
+
+def _quick_statement(
+    parser: AutolevParser, stream: CommonTokenStream, first: int, last: int
+) -> AutolevParser.StatementContext | None:
+    """The statement of tokens ``first`` .. ``last`` parsed the quick way
+    (ANTLR's SLL prediction, no error recovery), or None when that fails:
+    then the statement is parsed again with full LL prediction and the error
+    strategy that reports its errors (ANTLR's two-stage parse; when SLL
+    succeeds, LL would build the same tree)."""
+    stream.seek(first)
+    parser._errHandler = _BAIL
+    parser._interp.predictionMode = PredictionMode.SLL
+    try:
+        ctx = parser.statement()
+    except ParseCancellationException:
+        return None
+    return ctx if stream.index >= last else None
+
+
+_BAIL = _Bail()
 
 
 def _statement_ranges(tokens: list[Token]) -> Iterator[tuple[int, int]]:
