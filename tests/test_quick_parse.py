@@ -275,3 +275,32 @@ def test_unparsable_code_is_tokenized_whole():
         attach_echoes(code)
     code = "# al> A\nx = 1 +\n# al> B\ny = 1\n"  # tokenizes, does not parse
     assert attach_echoes(code) == "x = 1 +  # al> A\ny = 1  # al> B\n"
+
+
+def test_collector_paused_while_converting(monkeypatch):
+    """The cycle collector is off during a conversion and on again after it,
+    also when the conversion fails; one that was off stays off."""
+    import gc
+
+    from al2py import transpile
+    from al2py.errors import AutolevError
+
+    seen: list[bool] = []
+    parse = transpile.parse_partial
+
+    def watched(*args, **kwargs):
+        seen.append(gc.isenabled())
+        return parse(*args, **kwargs)
+
+    monkeypatch.setattr(transpile, "parse_partial", watched)
+    assert gc.isenabled()
+    transpile.convert("Constants a\nx = a + 1\n", "ok.al")
+    with pytest.raises(AutolevError):
+        transpile.convert("x = (\n", "bad.al")
+    assert seen == [False, False] and gc.isenabled()
+    gc.disable()
+    try:
+        transpile.convert("Constants a\n", "off.al")
+        assert not gc.isenabled()
+    finally:
+        gc.enable()
