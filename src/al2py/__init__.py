@@ -6,7 +6,8 @@
 True
 
 The transpiler (and sympy with it) is imported on first use of ``convert``,
-so ``al2py --version`` and ``--help`` start quickly.
+and the version read on first use of ``__version__``, so ``al2py --version``
+and ``--help`` start quickly.
 """
 
 from __future__ import annotations
@@ -26,8 +27,6 @@ def _version() -> str:
         return version("al2py-runtime")
 
 
-__version__ = _version()
-
 __all__ = ["convert", "Conversion", "AutolevError", "InternalError", "__version__"]
 
 _LAZY = {
@@ -39,6 +38,9 @@ _LAZY = {
 
 
 def __getattr__(name: str) -> Any:
+    if name == "__version__":  # read from the metadata when first asked for
+        globals()[name] = version = _version()
+        return version
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'al2py' has no attribute {name!r}")

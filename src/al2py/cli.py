@@ -21,10 +21,12 @@ import os  # part of the module interface (tests patch cli.os)
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from . import __version__, batch
-from .errors import AutolevError, InternalError
 from .lines import split_lines
+
+if TYPE_CHECKING:
+    from . import batch
 
 __all__ = ["main"]
 
@@ -50,8 +52,30 @@ def _parser() -> argparse.ArgumentParser:
         metavar="OUT.py",
         help="where to write the module ('-' or omitted: standard output)",
     )
-    p.add_argument("--version", action="version", version=f"al2py {__version__}")
+    p.add_argument("--version", action=_Version)
     return p
+
+
+class _Version(argparse.Action):
+    """``--version``, whose number is looked up only when it is asked for:
+    ``--help`` and every command start without reading the installed
+    distributions' metadata (al2py, like its imports below, loads what a
+    command needs when it needs it)."""
+
+    def __init__(self, option_strings: list[str], dest: str, **kwargs) -> None:
+        super().__init__(
+            option_strings,
+            dest,
+            nargs=0,
+            default=argparse.SUPPRESS,
+            help="show program's version number and exit",
+        )
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:
+        from . import __version__
+
+        print(f"al2py {__version__}")
+        parser.exit()
 
 
 def _jobs(text: str) -> int:
@@ -96,6 +120,12 @@ def _library_options(p: argparse.ArgumentParser) -> None:
     )
 
 
+def _default_timeout() -> float:
+    from .batch import DEFAULT_TIMEOUT
+
+    return DEFAULT_TIMEOUT
+
+
 def _check_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="al2py check",
@@ -116,7 +146,7 @@ def _check_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--timeout",
         type=_seconds,
-        default=batch.DEFAULT_TIMEOUT,
+        default=_default_timeout(),
         metavar="SECONDS",
         help="give up on a file after SECONDS (default %(default)g)",
     )
@@ -214,6 +244,8 @@ def _guarded(run) -> int:
 
 
 def _guarded_inner(run) -> int:
+    from .errors import AutolevError, InternalError
+
     try:
         return run()
     except KeyboardInterrupt:
@@ -307,6 +339,8 @@ def _echo(line: str) -> None:
 
 
 def _find(paths: list[str], exclude: list[str]) -> list[batch.Script] | None:
+    from . import batch
+
     try:
         scripts = batch.find_scripts(paths, exclude)
     except FileNotFoundError as exc:
@@ -322,6 +356,8 @@ def _find(paths: list[str], exclude: list[str]) -> list[batch.Script] | None:
 
 
 def _check(args: argparse.Namespace) -> int:
+    from . import batch
+
     scripts = _find(args.paths, args.exclude)
     if scripts is None:
         return EXIT_INPUT
@@ -369,6 +405,8 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _convert_library(args: argparse.Namespace) -> int:
+    from . import batch
+
     scripts = _find(args.paths, args.exclude)
     if scripts is None:
         return EXIT_INPUT
@@ -414,6 +452,7 @@ def _convert_file(source: str, output: str | None) -> int:
             )
             return EXIT_INPUT
         filename = source
+    from .errors import AutolevError
     from .static_checks import too_deep, too_large, with_source_line
     from .transpile import convert  # sympy: only when a command needs it
 
@@ -465,4 +504,7 @@ def _output_problem(out: Path) -> str:
     return ""
 
 
-_write_atomically = batch.write_atomically
+def _write_atomically(path: Path, text: str) -> None:
+    from .batch import write_atomically
+
+    write_atomically(path, text)

@@ -10,6 +10,8 @@ cannot inject code.
 
 from __future__ import annotations
 
+import ast
+import bisect
 import io
 import re
 import tokenize
@@ -1277,33 +1279,15 @@ def attach_echoes(code: str, width: int = 88) -> str:
     (ASCII, no tab, not continued by ``# al+``); others keep their line.
     """
     lines = code.split("\n")
-    try:
-        tokens = list(tokenize.generate_tokens(io.StringIO(code).readline))
-    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
-        raise InternalError("generated code does not tokenize") from None
-    #: first rows (1-based) of top-level statements that can take a comment
-    single: set[int] = set()
-    row = 0  # the first row of the statement being read (0: between them)
-    ok = False  # it starts at column 0 and its first row has no comment
-    last = ""  # the last token of its first row
-    more = False  # it goes on below its first row
-    skip = (tokenize.NL, tokenize.INDENT, tokenize.DEDENT, tokenize.ENCODING)
-    for tok in tokens:
-        if tok.type in skip or tok.type == tokenize.ENDMARKER:
-            continue
-        if tok.type == tokenize.NEWLINE:
-            if ok and (last in "([{" if more else last != ":"):  # ":" a block
-                single.add(row)
-            row = 0
-        elif row == 0:
-            if tok.type != tokenize.COMMENT:
-                row, ok, last, more = tok.start[0], tok.start[1] == 0, tok.string, False
-        elif tok.start[0] == row:
-            ok = ok and tok.type != tokenize.COMMENT
-            last = tok.string
-            more = more or tok.end[0] > row
-        else:
-            more = True
+    candidates = {
+        k + 2
+        for k, echo in enumerate(lines[:-1])
+        if echo.startswith(ECHO)
+        and echo.isascii()
+        and "\t" not in echo
+        and len(lines[k + 1]) + 2 + len(echo) <= width
+    }
+    single = _single_rows(code, lines, candidates)
     out: list[str] = []
     k = 0
     while k < len(lines):
@@ -1322,3 +1306,139 @@ def attach_echoes(code: str, width: int = 88) -> str:
         out.append(echo)
         k += 1
     return "\n".join(out)
+
+
+#: the statements that are never compound (no block, no decorator)
+_SIMPLE = (
+    ast.Expr,
+    ast.Assign,
+    ast.AugAssign,
+    ast.AnnAssign,
+    ast.Import,
+    ast.ImportFrom,
+    ast.Pass,
+    ast.Return,
+    ast.Delete,
+    ast.Raise,
+    ast.Global,
+    ast.Nonlocal,
+    ast.Assert,
+    ast.Break,
+    ast.Continue,
+)
+
+
+def _single_rows(code: str, lines: list[str], rows: set[int]) -> set[int]:
+    """Those of ``rows`` (1-based) that are the first row of a top-level
+    statement that can take a comment: it starts at column 0, its first row
+    has no comment, and that row is the whole statement or ends in an
+    opening bracket.
+
+    Python's tokenizer (pure Python before 3.12) decides this for every
+    statement of ``code``; here the syntax tree cuts the module into pieces
+    that each start a logical line at column 0 (so that their tokens are the
+    ones they have in the whole module), the simple statements whose first
+    row says it at once are read from the tree, and only the pieces that
+    hold the other rows are tokenized."""
+    try:
+        body = ast.parse(code).body
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return _tokenized_single_rows(code, 1) & rows
+    offsets = [0]  # offsets[k]: where row k + 1 starts in code
+    for line in lines:
+        offsets.append(offsets[-1] + len(line) + 1)
+    # pieces: (first row, the statements in it); the first from row 1
+    pieces: list[tuple[int, list[ast.stmt]]] = [(1, [])]
+    end = 0  # where the statement before ends in code
+    for stmt in body:
+        first = min([stmt.lineno] + [d.lineno for d in _decorators(stmt)])
+        start = offsets[first - 1]
+        gap = code[end:start]  # blanks and comments, or ";", "\\" (joined)
+        if start != end and _col(lines, stmt) == 0 and "\n" in gap:
+            if not any(c in gap for c in ";\\") and first > 1:
+                pieces.append((first, []))
+        pieces[-1][1].append(stmt)
+        end = offsets[stmt.end_lineno - 1] + _col(lines, stmt, end=True)
+    starts = [first for first, _ in pieces]
+    single: set[int] = set()
+    tokenized: set[int] = set()  # the pieces read by the tokenizer
+    for row in sorted(rows):
+        k = bisect.bisect_right(starts, row) - 1
+        first, stmts = pieces[k]
+        if (
+            len(stmts) == 1
+            and isinstance(stmts[0], _SIMPLE)
+            and first == stmts[0].lineno
+        ):
+            if row > first:  # its other rows, then blanks and comments
+                continue
+            if _plainly_single(stmts[0], lines[row - 1]):
+                single.add(row)
+                continue
+        if k not in tokenized:
+            tokenized.add(k)
+            last = starts[k + 1] - 1 if k + 1 < len(starts) else len(lines)
+            text = code[offsets[first - 1] : offsets[last]]
+            single |= _tokenized_single_rows(text, first)
+    return single & rows
+
+
+def _decorators(stmt: ast.stmt) -> list[ast.expr]:
+    return getattr(stmt, "decorator_list", [])
+
+
+def _col(lines: list[str], stmt: ast.stmt, end: bool = False) -> int:
+    """The column (in characters) where ``stmt`` starts, or ``end`` ends
+    (the tree counts UTF-8 bytes)."""
+    row, col = (
+        (stmt.end_lineno, stmt.end_col_offset)
+        if end
+        else (stmt.lineno, stmt.col_offset)
+    )
+    line = lines[row - 1]
+    return col if line.isascii() else len(line.encode()[:col].decode())
+
+
+def _plainly_single(stmt: ast.stmt, line: str) -> bool:
+    """Whether the simple statement ``stmt`` whose first row is ``line`` can
+    take a comment, as its syntax tree and that row show with no doubt (no
+    comment, string or backslash on the row); False when in doubt."""
+    if not isinstance(stmt, _SIMPLE) or stmt.col_offset != 0 or not line.isascii():
+        return False
+    if stmt.end_lineno == stmt.lineno:  # the row is the whole statement
+        return len(line) == stmt.end_col_offset
+    plain = not any(c in line for c in "#'\"\\")
+    return plain and line.rstrip()[-1:] in ("(", "[", "{")
+
+
+def _tokenized_single_rows(code: str, first: int) -> set[int]:
+    """The single rows of ``code``, whose first row is row ``first`` of the
+    module, read from its tokens."""
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(code).readline))
+    except (tokenize.TokenError, SyntaxError):  # pragma: no cover - our own code
+        raise InternalError("generated code does not tokenize") from None
+    #: first rows (1-based) of top-level statements that can take a comment
+    single: set[int] = set()
+    row = 0  # the first row of the statement being read (0: between them)
+    ok = False  # it starts at column 0 and its first row has no comment
+    last = ""  # the last token of its first row
+    more = False  # it goes on below its first row
+    skip = (tokenize.NL, tokenize.INDENT, tokenize.DEDENT, tokenize.ENCODING)
+    for tok in tokens:
+        if tok.type in skip or tok.type == tokenize.ENDMARKER:
+            continue
+        if tok.type == tokenize.NEWLINE:
+            if row and ok and (last in "([{" if more else last != ":"):  # ":" a block
+                single.add(row + first - 1)
+            row = 0
+        elif row == 0:
+            if tok.type != tokenize.COMMENT:
+                row, ok, last, more = tok.start[0], tok.start[1] == 0, tok.string, False
+        elif tok.start[0] == row:
+            ok = ok and tok.type != tokenize.COMMENT
+            last = tok.string
+            more = more or tok.end[0] > row
+        else:
+            more = True
+    return single
