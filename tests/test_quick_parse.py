@@ -4,8 +4,6 @@
   full LL with the reporting error strategy only for a statement where that
   fails) builds the same IR and reports the same errors as the LL parse alone,
   on every example and on broken copies of them.
-* The lexer made of regular expressions gives the tokens ANTLR's generated
-  lexer gives, on every example and on random text.
 * ``attach_echoes`` finds the rows that can take an echo from the syntax tree
   and tokenizes only the statements it cannot read there: the rows are those
   the tokenizer finds in the whole module.
@@ -63,41 +61,6 @@ def _broken(text: str, seed: int) -> str:
     return "\n".join(lines)
 
 
-def _antlr_tokens(text: str) -> list[tuple]:
-    lexer = parser.AutolevLexer(parser.InputStream(text))
-    lexer.removeErrorListeners()
-    stream = parser.CommonTokenStream(lexer)
-    stream.fill()
-    return [_fields(t) for t in stream.tokens]
-
-
-def _our_tokens(text: str) -> list[tuple]:
-    lexer = parser.AutolevLexer(parser.InputStream(text))
-    return [_fields(t) for t in parser._tokens(lexer, text)]
-
-
-def _fields(t) -> tuple:
-    assert t.getInputStream() is not None  # for the parser's hints
-    return (t.type, t.channel, t.start, t.stop, t.text, t.line, t.column, t.tokenIndex)
-
-
-#: pieces of random text: every kind of character the rules tell apart
-#: (letters of both cases and others that have cases, digits, the file-name
-#: characters, operators, line ends, blanks) and words near the rules' edges
-PIECES = [
-    *"aAzZeEsS019._~>\"'%&:=+-*/^()[]{},;\r\n \t\f\v\x00é\u017f\u212a\u0131#!@$?<",
-    *("constants", "Variables", "MotionVariableS", "body", "bodies", "Frames"),
-    *("units", "1>>", "0>>>", "1.5e+3", ".5E2", "2e", "tutor.all", "x.al", "w>>"),
-]
-
-
-def test_lexer_is_antlrs_on_random_text():
-    rnd = random.Random(35)
-    for _ in range(3000):
-        text = "".join(rnd.choice(PIECES) for _ in range(rnd.randrange(1, 30)))
-        assert _our_tokens(text) == _antlr_tokens(text), repr(text)
-
-
 def test_there_are_scripts():
     assert len(SCRIPTS) >= 40
 
@@ -105,7 +68,6 @@ def test_there_are_scripts():
 @pytest.mark.parametrize("path", SCRIPTS, ids=lambda p: p.name)
 def test_two_stage_parse_is_the_ll_parse(path, monkeypatch):
     text = path.read_text(encoding="utf-8", errors="replace")
-    assert _our_tokens(text) == _antlr_tokens(text)
     assert _parsed(text, True, monkeypatch) == _parsed(text, False, monkeypatch)
     for seed in range(3):
         broken = _broken(text, seed)

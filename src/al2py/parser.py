@@ -31,7 +31,6 @@ from antlr4.atn.PredictionMode import PredictionMode
 from antlr4.error.ErrorListener import ErrorListener
 from antlr4.error.Errors import InputMismatchException, ParseCancellationException
 from antlr4.error.ErrorStrategy import BailErrorStrategy, DefaultErrorStrategy
-from antlr4.Token import CommonToken
 from antlr4.tree.Tree import TerminalNode
 
 from . import ir
@@ -163,8 +162,7 @@ def _parse(
     listener = _ErrorListener(filename, lines, stream)
     lexer.removeErrorListeners()
     lexer.addErrorListener(listener)
-    stream.tokens = _tokens(lexer, logical.text)
-    stream.fetchedEOF = True
+    stream.fill()
     logical.relocate(stream.tokens)
     parser = AutolevParser(stream)
     parser.removeErrorListeners()
@@ -191,132 +189,6 @@ def _parse(
     builder = _IRBuilder(filename, logical, lines, stream)
     script = builder.build(parsed)
     return script, listener.errors() + builder.errors
-
-
-_L = AutolevLexer
-_WS = re.compile(r"[ \t\f\v]+")
-_ID = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:>(?:>>?)?)?")
-_FILENAME = re.compile(r"[A-Za-z0-9_.~]*\.[A-Za-z][A-Za-z0-9_]*")
-_NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
-_ZEROVEC = re.compile(r"0>>?>?")
-_STRING = re.compile(r'"[^"\r\n]*"?')  # STRING, or UNTERMINATED_STRING
-_COMMENT = re.compile(r"%[^\r\n]*")
-_KEYWORDS = {
-    **dict.fromkeys(("constant", "constants"), _L.CONSTANTS),
-    **dict.fromkeys(
-        ("variable", "variables", "motionvariable", "motionvariables"), _L.VARIABLES
-    ),
-    "specified": _L.SPECIFIED,
-    "imaginary": _L.IMAGINARY,
-    "newtonian": _L.NEWTONIAN,
-    **dict.fromkeys(("frame", "frames"), _L.FRAMES),
-    **dict.fromkeys(("body", "bodies"), _L.BODIES),
-    **dict.fromkeys(("particle", "particles"), _L.PARTICLES),
-    **dict.fromkeys(("point", "points"), _L.POINTS),
-    "mass": _L.MASS,
-    "inertia": _L.INERTIA,
-    **dict.fromkeys(("input", "inputs"), _L.INPUT),
-    **dict.fromkeys(("output", "outputs"), _L.OUTPUT),
-    "unitsystem": _L.UNITSYSTEM,
-    "code": _L.CODE,
-    "save": _L.SAVE,
-    "run": _L.RUN,
-}
-_OPERATORS = {
-    ":=": _L.COLONEQ,
-    "+=": _L.PLUSEQ,
-    "-=": _L.MINUSEQ,
-    "*=": _L.TIMESEQ,
-    "/=": _L.DIVEQ,
-    "^=": _L.POWEQ,
-    "=": _L.EQ,
-    "+": _L.PLUS,
-    "-": _L.MINUS,
-    "*": _L.TIMES,
-    "/": _L.DIV,
-    "^": _L.CARET,
-    "'": _L.PRIME,
-    "(": _L.LPAREN,
-    ")": _L.RPAREN,
-    "[": _L.LBRACK,
-    "]": _L.RBRACK,
-    "{": _L.LBRACE,
-    "}": _L.RBRACE,
-    ",": _L.COMMA,
-    ";": _L.SEMI,
-    ":": _L.COLON,
-    "&": _L.AMP,
-    "\n": _L.NEWLINE,
-    "\r\n": _L.NEWLINE,
-    "\r": _L.NEWLINE,
-}
-_LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
-_DIGITS = frozenset("0123456789")
-
-
-def _tokens(lexer: AutolevLexer, text: str) -> list[Token]:
-    """The tokens ANTLR's ``lexer`` makes of ``text``, made here at a tenth of
-    its cost: the rules of ``grammar/Autolev.g4`` as regular expressions, the
-    longest match winning and, between matches of one length, the rule
-    written first (ANTLR's rule); skipped blanks, the comment channel, token
-    indexes, lines and columns as ANTLR gives them."""
-    source = (lexer, lexer.inputStream)
-    out: list[Token] = []
-    line, line_start = 1, 0  # ANTLR's line, and where it starts
-    n = len(text)
-    i = 0
-    while i < n:
-        c = text[i]
-        channel = Token.DEFAULT_CHANNEL
-        if c in " \t\f\v":
-            i = _WS.match(text, i).end()  # type: ignore[union-attr]
-            continue
-        if c in _LETTERS:
-            end = _ID.match(text, i).end()  # type: ignore[union-attr]
-            kind = _KEYWORDS.get(text[i:end].lower(), _L.ID)
-            file = _FILENAME.match(text, i)
-            if file is not None and file.end() > end:
-                kind, end = _L.FILENAME, file.end()
-        elif c in _DIGITS or c in "._~":
-            zero = _ZEROVEC.match(text, i)
-            number = _NUMBER.match(text, i)
-            file = _FILENAME.match(text, i)
-            kind, end = _L.ERRCHAR, i  # the last rule, one character
-            for rule, stop in (  # in the grammar's order
-                (_L.ZEROVEC, zero.end() if zero else i),
-                (_L.UNITDYADIC, i + 3 if text.startswith("1>>", i) else i),
-                (_L.NUMBER, number.end() if number else i),
-                (_L.FILENAME, file.end() if file else i),
-            ):
-                if stop > end:
-                    kind, end = rule, stop
-            end = max(end, i + 1)
-        elif c == '"':
-            end = _STRING.match(text, i).end()  # type: ignore[union-attr]
-            closed = end - i > 1 and text[end - 1] == '"'
-            kind = _L.STRING if closed else _L.UNTERMINATED_STRING
-        elif c == "%":
-            end = _COMMENT.match(text, i).end()  # type: ignore[union-attr]
-            kind, channel = _L.COMMENT, _COMMENT_CHANNEL
-        else:
-            two = text[i : i + 2]
-            if two in _OPERATORS:
-                kind, end = _OPERATORS[two], i + len(two)
-            else:
-                kind, end = _OPERATORS.get(c, _L.ERRCHAR), i + 1
-        tok = CommonToken(source, kind, channel, i, end - 1)
-        tok.line, tok.column = line, i - line_start
-        tok.text = text[i:end]
-        tok.tokenIndex = len(out)
-        out.append(tok)
-        if kind == _L.NEWLINE and text[end - 1] == "\n":
-            line, line_start = line + 1, end
-        i = end
-    eof = CommonToken(source, Token.EOF, Token.DEFAULT_CHANNEL, n, n - 1)
-    eof.line, eof.column = line, n - line_start
-    eof.tokenIndex = len(out)
-    out.append(eof)
-    return out
 
 
 class _Bail(BailErrorStrategy):
