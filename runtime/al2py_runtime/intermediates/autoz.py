@@ -997,6 +997,9 @@ class Intermediates:
         self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
         self._var_keys: dict[frozenset, tuple] = {}
+        #: sets of variables of intermediates -> (their union, the
+        #: derivatives among them), for :meth:`_scan`
+        self._unions: dict[frozenset, tuple[frozenset, frozenset]] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1164,57 +1167,90 @@ class Intermediates:
             z.__dict__["_canonical"] = found
         return found
 
-    def _scan(self, expr: Any) -> tuple[set, set, list]:
+    def _scan(self, expr: Any) -> tuple[set | frozenset, set | frozenset, list]:
         """One walk over ``expr``: the variables it depends on (derivatives,
         functions of time and symbols, each outside the others; a canonical
         intermediate's are read off its arguments, not walked into), the
         derivatives among them, and the intermediates taken elsewhere than
-        at their own variables."""
+        at their own variables (in the order of a depth-first walk).
+
+        A part is classified when it is met as an argument: a variable or
+        an atom is only recorded (never stacked), a canonical intermediate
+        contributes its set of variables, and only sums, products,
+        functions and the other intermediates are walked into.  When every
+        variable found is among the canonical intermediates', the sets
+        returned are the book's own (frozen, shared) union of theirs
+        (:meth:`_union`): callers only read them."""
         variables: set = set()
         derivatives: set = set()
         bad: list = []
         seen: set = set()
         #: the sets of variables of the canonical intermediates met (many
         #: share one, and each is kept as one object: their union is taken
-        #: once per set, not once per intermediate)
+        #: once per combination of sets)
         shared: set = set()
         varsets = self._varsets
         Z = self.Z
-        stack = [expr]
-        while stack:
-            e = stack.pop()
-            if isinstance(e, Z):
-                if self._canonical(e):  # kept per instance
-                    shared.add(varsets[e.args[0].p])
-                    continue
-                bad.append(e)
-                todo = e.args[1:]
-            elif isinstance(e, sp.Derivative):
-                variables.add(e)
-                derivatives.add(e)
-                continue
-            elif isinstance(e, AppliedUndef) or e.is_Symbol:
-                variables.add(e)
-                continue
-            elif e.is_Atom:
-                continue
-            else:
-                todo = e.args
+        derivative = sp.Derivative
+        stack: list = []
+        todo: Any = (expr,)
+        while True:
             for a in todo:
+                if a.is_Atom:
+                    if a.is_Symbol:
+                        variables.add(a)
+                    continue
+                if isinstance(a, Z):
+                    canonical = a.__dict__.get("_canonical")  # _canonical, inline
+                    if canonical is None:
+                        canonical = self._canonical(a)
+                    if canonical:
+                        shared.add(varsets[a.args[0].p])
+                        continue
+                elif isinstance(a, AppliedUndef):
+                    variables.add(a)
+                    continue
+                elif isinstance(a, derivative):
+                    variables.add(a)
+                    derivatives.add(a)
+                    continue
                 if a not in seen:
                     seen.add(a)
-                    if isinstance(a, Z) and self._canonical(a):
-                        shared.add(varsets[a.args[0].p])  # no need to stack it
-                    else:
-                        stack.append(a)
-        if shared:
-            variables.update(*shared)
-            orders = self._orders
-            for varset in shared:
-                found = orders[varset][2]  # the derivatives among them
-                if found:
-                    derivatives.update(found)
+                    stack.append(a)
+            if not stack:
+                break
+            e = stack.pop()
+            if isinstance(e, Z):
+                bad.append(e)  # not canonical: only those are stacked
+                todo = e.args[1:]
+            else:
+                todo = e.args
+        if not shared:
+            return variables, derivatives, bad
+        union, among = self._union(shared)
+        if not variables or variables <= union:
+            return union, among, bad  # (the derivatives are among its own)
+        variables |= union
+        if among:
+            derivatives |= among
         return variables, derivatives, bad
+
+    def _union(self, shared: set) -> tuple[frozenset, frozenset]:
+        """The union of the sets of variables ``shared`` (each an
+        intermediate's, from :attr:`_varsets`) and the derivatives among
+        them: kept per combination of sets (the combination's hash is made
+        of its sets' hashes, which Python keeps)."""
+        key = frozenset(shared)
+        found = self._unions.get(key)
+        if found is None:
+            orders = self._orders
+            if len(key) == 1:
+                (union,) = key
+            else:
+                union = frozenset().union(*key)
+            among = frozenset().union(*[orders[varset][2] for varset in key])
+            found = self._unions[key] = (union, among)
+        return found
 
     def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
         """``variables`` sorted by ``default_sort_key``, as a set, and the

@@ -1,0 +1,145 @@
+"""The shortcuts of naming (``Intermediates._scan`` and its kept unions of
+the intermediates' variables) give exactly what a plain walk with sympy's
+own traversal finds, at random expressions over a book's intermediates
+(canonical ones, ones taken elsewhere than at their own variables, and
+their partial derivatives); and the check is shown to find a wrong set."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime.intermediates.autoz import Intermediates
+from sympy.core.function import AppliedUndef
+from sympy.physics.mechanics import dynamicsymbols
+
+q1, q2, q3, u1, u2 = dynamicsymbols("q1 q2 q3 u1 u2")
+L, M = sp.symbols("L M")
+t = dynamicsymbols._t
+VARIABLES = [q1, q2, q3, u1, u2, L, M, t, q1.diff(t), u2.diff(t)]
+
+
+def _variables(expr) -> set:
+    """sympy's traversal: symbols, functions of time and derivatives, each
+    outside the others (an intermediate's number is not one)."""
+    out = set()
+    walk = sp.preorder_traversal(expr)
+    for x in walk:
+        if isinstance(x, sp.Derivative | AppliedUndef) or x.is_Symbol:
+            out.add(x)
+            walk.skip()
+    return out
+
+
+def _stray(book, expr) -> list:
+    """The intermediates not at their own variables, in the order of a
+    depth-first walk that stacks each part's arguments in order and takes
+    the last first (each distinct part once), not entering a canonical one."""
+    found, seen, stack = [], set(), [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, book.Z):
+            if tuple(e.args[1:]) == book.canonical(e.args[0].p)[0]:
+                continue
+            found.append(e)
+            args = e.args[1:]
+        else:
+            args = e.args
+        for a in args:
+            if a not in seen and not a.is_Atom:
+                seen.add(a)
+                stack.append(a)
+    return found
+
+
+@pytest.fixture(scope="module")
+def pool():
+    rng = random.Random(5)
+    book = Intermediates()
+    book.rates = frozenset([q1.diff(t), u2.diff(t)])
+    parts = [sp.sin(q1), sp.cos(q2), q3, u1, L, M, t * u2, q1.diff(t), u2.diff(t)]
+    zs = []
+    for _ in range(60):
+        terms = [
+            sp.Rational(rng.choice([-3, -1, 1, 2]), rng.choice([1, 2]))
+            * sp.Mul(*rng.sample(parts, rng.randint(1, 3)))
+            for _ in range(rng.randint(2, 4))
+        ]
+        z = book.name(sp.Add(*terms))
+        if not isinstance(z, book.Z):
+            z = -z  # named with its sign taken out
+        if isinstance(z, book.Z):
+            zs.append(z)
+            parts.append(z)
+    # partial derivatives (named), and intermediates at other arguments
+    assert len(zs) > 30
+    for z in rng.sample(zs, 20):
+        for x in rng.sample(VARIABLES, 3):
+            d = book.derivative(z, x)
+            if isinstance(d, book.Z):
+                parts.append(d)
+    stray = [
+        z.xreplace({x: rng.choice([L * q2, sp.S(2), u1 + M, sp.sin(q3)])})
+        for z in rng.sample(zs, 10)
+        for x in [a for a in z.args[1:] if a != t and not a.is_Derivative][:1]
+    ]
+    return rng, book, parts, stray
+
+
+def _cases(pool, n=400):
+    rng, book, parts, stray = pool
+    out = []
+    for _ in range(n):
+        chosen = rng.sample(parts + stray, rng.randint(1, 6))
+        terms = [
+            sp.Mul(*rng.sample(chosen, rng.randint(1, len(chosen))))
+            for _ in range(rng.randint(1, 4))
+        ]
+        e = sp.Add(*terms)
+        if rng.random() < 0.3:
+            e = sp.cos(e) * rng.choice(VARIABLES) + rng.choice(chosen) ** 2
+        out.append(e)
+    return book, out
+
+
+def test_scan_finds_sympys_variables(pool):
+    book, cases = _cases(pool)
+    n_stray = 0
+    for e in cases:
+        variables, derivatives, bad = book._scan(e)
+        want = _variables(e)
+        assert set(variables) == want, e
+        assert set(derivatives) == {x for x in want if isinstance(x, sp.Derivative)}
+        assert bad == _stray(book, e), e
+        n_stray += bool(bad)
+    assert n_stray > 20  # the stray intermediates are met
+
+
+def test_scan_of_named_partials(pool):
+    """Each intermediate's variables (its arguments) are those of its
+    definition, as sympy finds them: also for the partial derivatives."""
+    _, book, _, _ = pool
+    for k in range(1, len(book) + 1):
+        variables, body = book.canonical(k)
+        assert set(variables) == _variables(body)
+        assert set(book._scan(body)[0]) == set(variables)
+
+
+def test_the_check_finds_a_wrong_set(pool):
+    """A walk that stops at every intermediate (reads no variables off the
+    canonical ones) is told apart."""
+    book, cases = _cases(pool, 50)
+
+    def shallow(e):
+        out = set()
+        walk = sp.preorder_traversal(e)
+        for x in walk:
+            if isinstance(x, book.Z):
+                walk.skip()
+            elif isinstance(x, sp.Derivative | AppliedUndef) or x.is_Symbol:
+                out.add(x)
+                walk.skip()
+        return out
+
+    assert any(shallow(e) != _variables(e) for e in cases)
