@@ -10,6 +10,7 @@ import random
 
 import pytest
 import sympy as sp
+from al2py_runtime.intermediates import autoz
 from al2py_runtime.intermediates.autoz import Intermediates
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
@@ -143,3 +144,78 @@ def test_the_check_finds_a_wrong_set(pool):
         return out
 
     assert any(shallow(e) != _variables(e) for e in cases)
+
+
+def _sums(pool, n=400):
+    """Sums of distinct monomials over intermediates, functions of time,
+    symbols, sines and sums, with powers (some terms differ in one
+    exponent only)."""
+    rng, book, parts, _ = pool
+    bases = [*parts[:40], q1, u1, L, M, sp.sin(q2), L + q3, q1.diff(t)]
+    out = []
+    while len(out) < n:
+        common = rng.sample(bases, rng.randint(0, 2))
+        terms = []
+        for _ in range(rng.randint(2, 5)):
+            own = rng.sample(bases, rng.randint(1, 3))
+            factors = [b ** rng.choice([1, 1, 2, 3, -1]) for b in own + common]
+            coeff = rng.choice([1, -1, 2, sp.Rational(-3, 2), sp.Rational(1, 3)])
+            terms.append(coeff * sp.Mul(*factors))
+        e = sp.Add(*terms)
+        if e.is_Add:
+            out.append(e)
+    return book, out
+
+
+def test_the_first_term_is_sympys(pool):
+    """``_first_term`` is the first of ``as_ordered_terms`` (the term that
+    decides the sign of a sum), with the book's kept sort keys and with
+    sympy's."""
+    book, sums = _sums(pool)
+    found = 0
+    for e in sums:
+        want = e.as_ordered_terms()[0]
+        for key in (book._sort_key, sp.default_sort_key):
+            got = autoz._first_term(e.args, key)
+            if got is not None:
+                assert got == want, e
+                found += 1
+    assert found > 500
+
+
+def test_the_check_finds_a_wrong_first_term(pool):
+    """Deciding by the last generator instead of the first is told apart."""
+    book, sums = _sums(pool, 100)
+
+    wrong = 0
+    for e in sums:
+        got = autoz._first_term(e.args, lambda x: _Reversed(book._sort_key(x)))
+        wrong += got is not None and got != e.as_ordered_terms()[0]
+    assert wrong > 10
+
+
+class _Reversed:
+    """A key ordered the other way round."""
+
+    def __init__(self, key):
+        self.key = key
+
+    def __lt__(self, other):
+        return other.key < self.key
+
+
+def test_an_intermediates_commutativity_is_sympys(pool):
+    """Whether a new intermediate commutes (kept per set of variables when
+    it is made) is sympy's answer from its arguments, also when one of them
+    does not commute."""
+    _, book, parts, stray = pool
+    sympys = sp.Basic.is_commutative.fget
+    A = sp.Symbol("A", commutative=False)
+    other = Intermediates()
+    made = [other.name(sp.cos(q1) * L + sp.sin(q2) * A + M * u1)]
+    made += [other.name(sp.cos(q1) * L + sp.sin(q2) * M + A)]
+    made += [other.name(sp.cos(q1) * L + sp.sin(q2) * M + q3)]
+    zs = [z for z in parts + stray + made if hasattr(z, "book")]
+    assert sum(1 for z in zs if not z.is_commutative) == 2
+    for z in zs:
+        assert z.is_commutative is sympys(z.func(*z.args)), z

@@ -343,17 +343,27 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
     for term in args:
         if term.is_Order or not term.is_commutative:
             return None
-        rest = term.as_coeff_Mul()[1]
+        # term.as_coeff_Mul()'s factors after the coefficient, without
+        # forming their product
+        if term.is_Mul:
+            factors = term.args
+            if factors[0].is_Number:
+                factors = factors[1:]
+        elif term.is_Number:
+            if not term:
+                return None  # (0's coefficient is 1, the factor 0 a number)
+            factors = ()
+        else:
+            factors = (term,)
         cpart: dict = {}
-        if rest is not sp.S.One:
-            for factor in sp.Mul.make_args(rest):
-                if factor.is_number:
-                    return None
-                if factor.is_Pow or isinstance(factor, sp.exp):
-                    base, exp = decompose_power(factor)
-                    cpart[base] = exp
-                else:
-                    cpart[factor] = 1
+        for factor in factors:
+            if factor.is_number:
+                return None
+            if factor.is_Pow or isinstance(factor, sp.exp):
+                base, exp = decompose_power(factor)
+                cpart[base] = exp
+            else:
+                cpart[factor] = 1
         monomial = frozenset(cpart.items())
         if monomial in seen:
             return None
@@ -370,7 +380,8 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
             for base, found in exponents.items()
             if len(found) < n or any(e != found[0] for e in found)
         ]
-        base = min(varying, key=key)
+        # (min calls key even for one: a sum's key is long to make)
+        base = varying[0] if len(varying) == 1 else min(varying, key=key)
         top = max(cpart.get(base, 0) for _, cpart in terms)
         terms = [t for t in terms if t[1].get(base, 0) == top]
     return terms[0][0]
@@ -997,6 +1008,8 @@ class Intermediates:
         self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
         self._var_keys: dict[frozenset, tuple] = {}
+        #: a set of variables -> whether each commutes (:meth:`_new_z`)
+        self._commutes: dict[frozenset, bool] = {}
         #: sets of variables of intermediates -> (their union, the
         #: derivatives among them), for :meth:`_scan`
         self._unions: dict[frozenset, tuple[frozenset, frozenset]] = {}
@@ -1082,7 +1095,7 @@ class Intermediates:
         self._dvars.append(derivatives)
         self._varsets.append(varset)
         self._labels.append(label)
-        z = self._new_z(k, variables)
+        z = self._new_z(k, variables, varset)
         self._named[expr] = z
         if original is not None:
             self._named[original] = z
@@ -1181,10 +1194,12 @@ class Intermediates:
         variable found is among the canonical intermediates', the sets
         returned are the book's own (frozen, shared) union of theirs
         (:meth:`_union`): callers only read them."""
-        variables: set = set()
-        derivatives: set = set()
+        #: the variables and derivatives met, by identity (``id`` is
+        #: Python's, a sympy object's hash a call): each object once
+        found: dict[int, Any] = {}
+        among: dict[int, Any] = {}
         bad: list = []
-        seen: set = set()
+        seen: set[int] = set()  # the parts stacked, by identity
         #: the sets of variables of the canonical intermediates met (many
         #: share one, and each is kept as one object: their union is taken
         #: once per combination of sets)
@@ -1198,7 +1213,7 @@ class Intermediates:
             for a in todo:
                 if a.is_Atom:
                     if a.is_Symbol:
-                        variables.add(a)
+                        found[id(a)] = a
                     continue
                 if isinstance(a, Z):
                     canonical = a.__dict__.get("_canonical")  # _canonical, inline
@@ -1208,14 +1223,14 @@ class Intermediates:
                         shared.add(varsets[a.args[0].p])
                         continue
                 elif isinstance(a, AppliedUndef):
-                    variables.add(a)
+                    found[id(a)] = a
                     continue
                 elif isinstance(a, derivative):
-                    variables.add(a)
-                    derivatives.add(a)
+                    found[id(a)] = among[id(a)] = a
                     continue
-                if a not in seen:
-                    seen.add(a)
+                i = id(a)
+                if i not in seen:
+                    seen.add(i)
                     stack.append(a)
             if not stack:
                 break
@@ -1225,15 +1240,46 @@ class Intermediates:
                 todo = e.args[1:]
             else:
                 todo = e.args
+        if bad:
+            # in the order of a walk that meets each distinct part once (an
+            # equal copy of a part, another object, is not walked again)
+            bad = self._stray(expr)
+        variables = set(found.values())
+        derivatives = set(among.values())
         if not shared:
             return variables, derivatives, bad
-        union, among = self._union(shared)
+        union, within = self._union(shared)
         if not variables or variables <= union:
-            return union, among, bad  # (the derivatives are among its own)
+            return union, within, bad  # (the derivatives are among its own)
         variables |= union
-        if among:
-            derivatives |= among
+        if within:
+            derivatives |= within
         return variables, derivatives, bad
+
+    def _stray(self, expr: Any) -> list:
+        """The intermediates in ``expr`` taken elsewhere than at their own
+        variables, in the order of a depth-first walk (each distinct part
+        once, equal parts being one), for :meth:`_scan`."""
+        bad: list = []
+        seen: set = set()
+        Z = self.Z
+        stack = [expr]
+        while stack:
+            e = stack.pop()
+            if isinstance(e, Z):
+                if self._canonical(e):
+                    continue
+                bad.append(e)
+                todo = e.args[1:]
+            elif e.is_Atom or isinstance(e, _VARIABLE):
+                continue
+            else:
+                todo = e.args
+            for a in todo:
+                if a not in seen:
+                    seen.add(a)
+                    stack.append(a)
+        return bad
 
     def _union(self, shared: set) -> tuple[frozenset, frozenset]:
         """The union of the sets of variables ``shared`` (each an
@@ -1264,7 +1310,7 @@ class Intermediates:
             found = self._orders[key] = (ordered, key, derivatives)
         return found
 
-    def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
+    def _new_z(self, k: int, variables: tuple[Any, ...], varset: frozenset) -> Any:
         """``self.Z(k, *variables)``, made as sympy's ``Application.__new__``
         makes it (``Intermediate.eval`` declines, no argument is a float, so
         nothing is evaluated), without the cache lookup: sympy's cache key
@@ -1272,6 +1318,14 @@ class Intermediates:
         which costs more than making the object."""
         z = sp.Basic.__new__(self.Z, sp.Integer(k), *variables)
         z.nargs = sp.S.Naturals0
+        z.__dict__["_canonical"] = True  # (:meth:`_canonical`: at its own)
+        # _is_commutative's search of the arguments, once per set of
+        # variables ``varset`` (the number commutes): many share one
+        commutes = self._commutes.get(varset)
+        if commutes is None:
+            commutes = self._commutes[varset] = all(a.is_commutative for a in variables)
+        if commutes:
+            z.__dict__["_commutative"] = True
         return z
 
     def _sort_key(self, x: Any) -> Any:
