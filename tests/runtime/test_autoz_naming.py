@@ -219,3 +219,58 @@ def test_an_intermediates_commutativity_is_sympys(pool):
     assert sum(1 for z in zs if not z.is_commutative) == 2
     for z in zs:
         assert z.is_commutative is sympys(z.func(*z.args)), z
+
+
+def _tree_size(book, expr) -> int:
+    """Tree nodes as ``_split`` counts them, by sympy's traversal: an
+    intermediate, a function of time or a derivative is one node."""
+    n = 0
+    walk = sp.preorder_traversal(expr)
+    for x in walk:
+        n += 1
+        if isinstance(x, book.Z | AppliedUndef | sp.Derivative):
+            walk.skip()
+    return n
+
+
+def test_the_size_read_by_the_scan_is_splits(pool):
+    """The size ``_walk`` reads on the way is the tree's, as ``_split``
+    counts it (more with a stray intermediate, whose arguments it walks;
+    unknown when a part repeats), and an expression of at most ``LIMIT + 1``
+    nodes is one that ``_split`` leaves alone (naming skips it)."""
+    book, cases = _cases(pool)
+    rng = random.Random(9)
+    small = [sp.Add(*rng.sample(cases, 2)) * q1 for _ in range(50)]
+    small += [sp.cos(q1) * L + sp.sin(q2) * M, (L + M) * (q1 + u1) + u1]
+    exact = short = 0
+    for e in cases + small:
+        size = book._walk(e)[3]
+        want = _tree_size(book, e)
+        if size == float("inf"):
+            continue
+        if book._scan(e)[2]:
+            assert size >= want, e
+        else:
+            assert size == want, e
+            exact += 1
+        if size <= book.LIMIT + 1:
+            assert book._split(e) is e
+            short += 1
+    assert exact > 200 and short > 50
+
+
+def test_no_part_of_a_definition_is_long():
+    """Naming splits every part longer than ``LIMIT`` nodes, also in an
+    expression only a little longer than that (which naming walks only
+    once, with its variables)."""
+    book = Intermediates()
+    rng = random.Random(4)
+    atoms = [q1, q2, q3, u1, u2, L, M]
+    for n in range(2, 40):
+        part = sp.Add(*[rng.choice(atoms) * rng.choice(atoms) for _ in range(n)])
+        book.name(sp.cos(q1) * part + rng.choice(atoms))
+        book.name(sp.sin(q2) * part * L + M * q1 * q2)
+    assert len(book) > 40
+    for k in range(1, len(book) + 1):
+        body = book.canonical(k)[1]
+        assert all(_tree_size(book, a) <= book.LIMIT for a in body.args), body

@@ -1038,7 +1038,7 @@ class Intermediates:
             return found
         if negated is not None:
             return self._new_name(expr, negated, None, split=True)
-        variables, derivatives, bad = self._scan(expr)
+        variables, derivatives, bad, size = self._walk(expr)
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1050,10 +1050,13 @@ class Intermediates:
             found = self._named.get(expr)
             if found is not None:
                 return found
-            variables = self._scan(expr)[0]
-        found, expr, original = self._in_parts(expr)
-        if found is not None:
-            return found
+            variables, _, _, size = self._walk(expr)
+        if size > self.LIMIT + 1:
+            found, expr, original = self._in_parts(expr)
+            if found is not None:
+                return found
+        else:
+            original = None  # no part is larger than LIMIT: _split keeps it
         if minus_first(expr, self._sort_key):
             return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
@@ -1182,6 +1185,15 @@ class Intermediates:
 
     def _scan(self, expr: Any) -> tuple[set | frozenset, set | frozenset, list]:
         """One walk over ``expr``: the variables it depends on (derivatives,
+        functions of time and symbols, each outside the others), the
+        derivatives among them, and the intermediates taken elsewhere than
+        at their own variables (:meth:`_walk`)."""
+        return self._walk(expr)[:3]
+
+    def _walk(
+        self, expr: Any
+    ) -> tuple[set | frozenset, set | frozenset, list, int | float]:
+        """One walk over ``expr``: the variables it depends on (derivatives,
         functions of time and symbols, each outside the others; a canonical
         intermediate's are read off its arguments, not walked into), the
         derivatives among them, and the intermediates taken elsewhere than
@@ -1193,7 +1205,12 @@ class Intermediates:
         functions and the other intermediates are walked into.  When every
         variable found is among the canonical intermediates', the sets
         returned are the book's own (frozen, shared) union of theirs
-        (:meth:`_union`): callers only read them."""
+        (:meth:`_union`): callers only read them.
+
+        Last, an upper bound of ``expr``'s size as :meth:`_split` counts it
+        (tree nodes, an intermediate, a function of time or a derivative
+        one), or infinity when a part was met twice (its second subtree is
+        not walked)."""
         #: the variables and derivatives met, by identity (``id`` is
         #: Python's, a sympy object's hash a call): each object once
         found: dict[int, Any] = {}
@@ -1209,7 +1226,9 @@ class Intermediates:
         derivative = sp.Derivative
         stack: list = []
         todo: Any = (expr,)
+        size: int | float = 0
         while True:
+            size += len(todo)
             for a in todo:
                 if a.is_Atom:
                     if a.is_Symbol:
@@ -1232,6 +1251,8 @@ class Intermediates:
                 if i not in seen:
                     seen.add(i)
                     stack.append(a)
+                else:
+                    size = math.inf  # (its subtree counted once)
             if not stack:
                 break
             e = stack.pop()
@@ -1247,14 +1268,15 @@ class Intermediates:
         variables = set(found.values())
         derivatives = set(among.values())
         if not shared:
-            return variables, derivatives, bad
+            return variables, derivatives, bad, size
         union, within = self._union(shared)
         if not variables or variables <= union:
-            return union, within, bad  # (the derivatives are among its own)
+            # (the derivatives are among its own)
+            return union, within, bad, size
         variables |= union
         if within:
             derivatives |= within
-        return variables, derivatives, bad
+        return variables, derivatives, bad, size
 
     def _stray(self, expr: Any) -> list:
         """The intermediates in ``expr`` taken elsewhere than at their own
