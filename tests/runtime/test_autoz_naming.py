@@ -6,6 +6,7 @@ their partial derivatives); and the check is shown to find a wrong set."""
 
 from __future__ import annotations
 
+import functools
 import random
 
 import pytest
@@ -274,3 +275,59 @@ def test_no_part_of_a_definition_is_long():
     for k in range(1, len(book) + 1):
         body = book.canonical(k)[1]
         assert all(_tree_size(book, a) <= book.LIMIT for a in body.args), body
+
+
+def _term_lists(pool, n=300):
+    """Lists of distinct terms, as sums sort them: products with and
+    without coefficients, intermediates, functions of time, symbols,
+    powers, sines, floats and sums."""
+    rng, book, parts, stray = pool
+    atoms = [q1, q2, u1, L, M, sp.sin(q2), L + q3, q1.diff(t), sp.Float(0.5) * L]
+    pieces = parts[:50] + stray[:5] + atoms
+    out = []
+    for _ in range(n):
+        terms = set()
+        for _ in range(rng.randint(2, 40)):
+            chosen = rng.sample(pieces, rng.randint(1, 3))
+            c = rng.choice([1, 1, -1, 2, sp.Rational(-3, 2), sp.Rational(1, 3)])
+            terms.add(c * sp.Mul(*[f ** rng.choice([1, 1, 2]) for f in chosen]))
+        terms.discard(sp.S.Zero)
+        out.append([x for x in terms if not x.is_Number])
+    return out
+
+
+def test_sorting_by_a_prefix_is_sorting_by_compare(pool):
+    """``_sort_by_compare`` orders as ``Basic.compare`` (sympy's order of a
+    sum's terms), and the prefixes decide most pairs."""
+    by_compare = functools.cmp_to_key(sp.Basic.compare)
+    decided = 0
+    for terms in _term_lists(pool):
+        want = sorted(terms, key=by_compare)
+        got = list(terms)
+        autoz._sort_by_compare(got)
+        assert got == want and all(a is b for a, b in zip(got, want, strict=True))
+        kinds: dict = {}
+        keys = [autoz._prefix(x, kinds) for x in terms]
+        decided += None not in keys and len(set(keys)) > len(keys) // 2
+    assert decided > 100
+
+
+def test_the_check_finds_a_wrong_prefix(pool, monkeypatch):
+    """A prefix that orders rationals the other way round is found."""
+
+    def wrong(x, kinds):
+        key = real(x, kinds)
+        if key is None:
+            return key
+        top, n, place, extra = key
+        return top, n, place, tuple(-v for v in extra)
+
+    real = autoz._prefix
+    monkeypatch.setattr(autoz, "_prefix", wrong)
+    by_compare = functools.cmp_to_key(sp.Basic.compare)
+    bad = 0
+    for terms in _term_lists(pool, 100):
+        got = list(terms)
+        autoz._sort_by_compare(got)
+        bad += got != sorted(terms, key=by_compare)
+    assert bad > 10
