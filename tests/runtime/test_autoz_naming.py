@@ -331,3 +331,28 @@ def test_the_check_finds_a_wrong_prefix(pool, monkeypatch):
         autoz._sort_by_compare(got)
         bad += got != sorted(terms, key=by_compare)
     assert bad > 10
+
+
+def test_the_least_intermediate_is_sympys(pool):
+    """``_least_intermediate`` picks the first by ``default_sort_key`` among
+    intermediates of one book (canonical, partial derivatives, taken at
+    other arguments), and declines where their numbers do not decide."""
+    rng, book, parts, stray = pool
+    zs = [z for z in parts + stray if isinstance(z, book.Z)]
+    other = Intermediates()
+    foreign = other.name(sp.cos(q1) * L + sp.sin(q2) * M)
+    decided = declined = 0
+    for _ in range(400):
+        bases = rng.sample(zs, rng.randint(2, 6))
+        if rng.random() < 0.2:
+            bases.append(rng.choice([foreign, q1, sp.sin(q2)]))
+        got = autoz._least_intermediate(bases)
+        if got is None:
+            declined += 1
+            pairs = [(len(b.args), b.args[0]) for b in bases]
+            assert len(set(map(type, bases))) > 1 or len(set(pairs)) < len(pairs)
+        else:
+            assert got == min(bases, key=sp.default_sort_key)
+            assert got == min(bases, key=book._sort_key)
+            decided += 1
+    assert decided > 200 and declined > 50

@@ -381,10 +381,39 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
             if len(found) < n or any(e != found[0] for e in found)
         ]
         # (min calls key even for one: a sum's key is long to make)
-        base = varying[0] if len(varying) == 1 else min(varying, key=key)
+        if len(varying) == 1:
+            base = varying[0]
+        else:
+            base = _least_intermediate(varying)
+            if base is None:
+                base = min(varying, key=key)
         top = max(cpart.get(base, 0) for _, cpart in terms)
         terms = [t for t in terms if t[1].get(base, 0) == top]
     return terms[0][0]
+
+
+def _least_intermediate(bases: list) -> Any:
+    """The first of ``bases`` by ``default_sort_key`` when all are
+    intermediates of one class (else None): their keys (``Expr.sort_key``:
+    the class's key, then the count of arguments and the arguments' keys,
+    the number's first) order them by their count of arguments, then by
+    their numbers, which decide when no two have the same pair."""
+    kind = type(bases[0])
+    if not issubclass(kind, Intermediate):
+        return None
+    least = None
+    seen = set()
+    for b in bases:
+        if type(b) is not kind:
+            return None
+        args = b.args
+        pair = (len(args), args[0].p)
+        if pair in seen:
+            return None
+        seen.add(pair)
+        if least is None or pair < least[0]:
+            least = (pair, b)
+    return least[1]
 
 
 def _rational_left_zero(coeff: Any) -> complex:
