@@ -1333,12 +1333,15 @@ class Intermediates:
                     if a.is_Symbol:
                         found[id(a)] = a
                     continue
-                if isinstance(a, Z):
-                    canonical = a.__dict__.get("_canonical")  # _canonical, inline
-                    if canonical is None:
-                        canonical = self._canonical(a)
-                    if canonical:
-                        shared.add(varsets[a.args[0].p])
+                if a.is_Mul or a.is_Add:
+                    pass  # (most parts: walked into)
+                elif isinstance(a, Z):
+                    # its set of variables, kept on a canonical instance
+                    varset = a.__dict__.get("_varset")
+                    if varset is None and self._canonical(a):
+                        varset = a.__dict__["_varset"] = varsets[a.args[0].p]
+                    if varset is not None:
+                        shared.add(varset)
                         continue
                 elif isinstance(a, AppliedUndef):
                     found[id(a)] = a
@@ -1440,6 +1443,7 @@ class Intermediates:
         z = sp.Basic.__new__(self.Z, sp.Integer(k), *variables)
         z.nargs = sp.S.Naturals0
         z.__dict__["_canonical"] = True  # (:meth:`_canonical`: at its own)
+        z.__dict__["_varset"] = varset  # (for :meth:`_walk`)
         # _is_commutative's search of the arguments, once per set of
         # variables ``varset`` (the number commutes): many share one
         commutes = self._commutes.get(varset)
