@@ -36,6 +36,7 @@ from __future__ import annotations
 import functools
 import itertools
 import math
+import operator
 import random
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
@@ -666,6 +667,10 @@ def _prefix(x: Any, kinds: dict) -> tuple | None:
     return top, len(hc), place, extra
 
 
+#: the key of a (key, item) pair
+_KEY = operator.itemgetter(0)
+
+
 def _sort_by_compare(items: list) -> None:
     """``items.sort(key=cmp_to_key(Basic.compare))`` for distinct items:
     sorted first by :func:`_prefix` (tuples, compared without calls), and
@@ -684,21 +689,14 @@ def _sort_by_compare(items: list) -> None:
             items.sort(key=_BY_COMPARE)
             return
         keyed.append((key, x))
-    keyed.sort(key=_FIRST)
+    keyed.sort(key=_KEY)
     out = []
-    for _, group in itertools.groupby(keyed, key=_FIRST):
+    for _, group in itertools.groupby(keyed, key=_KEY):
         group = [x for _, x in group]
         if len(group) > 1:
             group.sort(key=_BY_COMPARE)
         out += group
     items[:] = out
-
-
-def _first_of(pair: tuple) -> Any:
-    return pair[0]
-
-
-_FIRST = _first_of
 
 
 def _product(args: Sequence[Any]) -> Any:
