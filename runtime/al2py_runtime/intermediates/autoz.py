@@ -36,6 +36,7 @@ from __future__ import annotations
 import functools
 import itertools
 import math
+import operator
 import random
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
@@ -343,17 +344,27 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
     for term in args:
         if term.is_Order or not term.is_commutative:
             return None
-        rest = term.as_coeff_Mul()[1]
+        # term.as_coeff_Mul()'s factors after the coefficient, without
+        # forming their product
+        if term.is_Mul:
+            factors = term.args
+            if factors[0].is_Number:
+                factors = factors[1:]
+        elif term.is_Number:
+            if not term:
+                return None  # (0's coefficient is 1, the factor 0 a number)
+            factors = ()
+        else:
+            factors = (term,)
         cpart: dict = {}
-        if rest is not sp.S.One:
-            for factor in sp.Mul.make_args(rest):
-                if factor.is_number:
-                    return None
-                if factor.is_Pow or isinstance(factor, sp.exp):
-                    base, exp = decompose_power(factor)
-                    cpart[base] = exp
-                else:
-                    cpart[factor] = 1
+        for factor in factors:
+            if factor.is_number:
+                return None
+            if factor.is_Pow or isinstance(factor, sp.exp):
+                base, exp = decompose_power(factor)
+                cpart[base] = exp
+            else:
+                cpart[factor] = 1
         monomial = frozenset(cpart.items())
         if monomial in seen:
             return None
@@ -370,10 +381,40 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
             for base, found in exponents.items()
             if len(found) < n or any(e != found[0] for e in found)
         ]
-        base = min(varying, key=key)
+        # (min calls key even for one: a sum's key is long to make)
+        if len(varying) == 1:
+            base = varying[0]
+        else:
+            base = _least_intermediate(varying)
+            if base is None:
+                base = min(varying, key=key)
         top = max(cpart.get(base, 0) for _, cpart in terms)
         terms = [t for t in terms if t[1].get(base, 0) == top]
     return terms[0][0]
+
+
+def _least_intermediate(bases: list) -> Any:
+    """The first of ``bases`` by ``default_sort_key`` when all are
+    intermediates of one class (else None): their keys (``Expr.sort_key``:
+    the class's key, then the count of arguments and the arguments' keys,
+    the number's first) order them by their count of arguments, then by
+    their numbers, which decide when no two have the same pair."""
+    kind = type(bases[0])
+    if not issubclass(kind, Intermediate):
+        return None
+    least = None
+    seen = set()
+    for b in bases:
+        if type(b) is not kind:
+            return None
+        args = b.args
+        pair = (len(args), args[0].p)
+        if pair in seen:
+            return None
+        seen.add(pair)
+        if least is None or pair < least[0]:
+            least = (pair, b)
+    return least[1]
 
 
 def _rational_left_zero(coeff: Any) -> complex:
@@ -589,6 +630,73 @@ def _class_place(name: str) -> tuple[int, str]:
 #: the order of a product's factors and of a sum's terms (``Mul.flatten``
 #: and ``Add.flatten`` sort by it)
 _BY_COMPARE = functools.cmp_to_key(_compare)
+
+
+def _prefix(x: Any, kinds: dict) -> tuple | None:
+    """The start of :func:`_compare`'s decision about ``x``, as a tuple that
+    orders as :func:`_compare` does whenever two prefixes differ: the
+    class's place, the length of the hashable content, and its first part's
+    class place and number (an intermediate's count of arguments and
+    number, a rational's numerator and denominator).  ``kinds`` records
+    which form each class place takes; None when a class place took two
+    (an intermediate and another function of one name), or the first part
+    compares by a rule of its own."""
+    hc = x._hashable_content()
+    top = _class_place(type(x).__name__)
+    if not hc:
+        return top, 0, (), ()
+    first = hc[0]
+    if not isinstance(first, sp.Basic):
+        kind, place, extra = "other", (-1, ""), ()
+    else:
+        own = type(first).compare
+        place = _class_place(type(first).__name__)
+        if own is _Z_COMPARE:
+            args = first.args
+            kind, extra = "z", (len(args), args[0].p)
+        elif own is not _BASIC_COMPARE:
+            return None
+        elif first.is_Rational:
+            kind, extra = "q", (first.p, first.q)
+        else:
+            kind, extra = "basic", ()
+    if kinds.setdefault((top, len(hc)), kind == "other") != (kind == "other"):
+        return None  # a first part that is a sympy object here, not there
+    if kinds.setdefault(place, kind) != kind:
+        return None
+    return top, len(hc), place, extra
+
+
+#: the key of a (key, item) pair
+_KEY = operator.itemgetter(0)
+
+
+def _sort_by_compare(items: list) -> None:
+    """``items.sort(key=cmp_to_key(Basic.compare))`` for distinct items:
+    sorted first by :func:`_prefix` (tuples, compared without calls), and
+    only items of one prefix by :func:`_compare`.  Where prefixes differ,
+    they order as ``Basic.compare`` (a total order), so the result is the
+    same list; where a prefix cannot be formed, every item is compared.
+    (Forming the prefixes costs more than it saves below about 20 items.)"""
+    if len(items) < 20:
+        items.sort(key=_BY_COMPARE)
+        return
+    kinds: dict = {}
+    keyed = []
+    for x in items:
+        key = _prefix(x, kinds)
+        if key is None:
+            items.sort(key=_BY_COMPARE)
+            return
+        keyed.append((key, x))
+    keyed.sort(key=_KEY)
+    out = []
+    for _, group in itertools.groupby(keyed, key=_KEY):
+        group = [x for _, x in group]
+        if len(group) > 1:
+            group.sort(key=_BY_COMPARE)
+        out += group
+    items[:] = out
 
 
 def _product(args: Sequence[Any]) -> Any:
@@ -882,7 +990,7 @@ def _sum(number: Any, terms: list) -> Any:
         if _compare(terms[1], terms[0]) < 0:
             terms.reverse()
     else:
-        terms.sort(key=_BY_COMPARE)
+        _sort_by_compare(terms)
     if number is not sp.S.Zero:
         terms.insert(0, number)
     if not terms:
@@ -997,6 +1105,11 @@ class Intermediates:
         self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
         self._var_keys: dict[frozenset, tuple] = {}
+        #: a set of variables -> whether each commutes (:meth:`_new_z`)
+        self._commutes: dict[frozenset, bool] = {}
+        #: sets of variables of intermediates -> (their union, the
+        #: derivatives among them), for :meth:`_scan`
+        self._unions: dict[frozenset, tuple[frozenset, frozenset]] = {}
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1022,7 +1135,7 @@ class Intermediates:
             return found
         if negated is not None:
             return self._new_name(expr, negated, None, split=True)
-        variables, derivatives, bad = self._scan(expr)
+        variables, derivatives, bad, size = self._walk(expr)
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1034,10 +1147,13 @@ class Intermediates:
             found = self._named.get(expr)
             if found is not None:
                 return found
-            variables = self._scan(expr)[0]
-        found, expr, original = self._in_parts(expr)
-        if found is not None:
-            return found
+            variables, _, _, size = self._walk(expr)
+        if size > self.LIMIT + 1:
+            found, expr, original = self._in_parts(expr)
+            if found is not None:
+                return found
+        else:
+            original = None  # no part is larger than LIMIT: _split keeps it
         if minus_first(expr, self._sort_key):
             return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
@@ -1079,7 +1195,7 @@ class Intermediates:
         self._dvars.append(derivatives)
         self._varsets.append(varset)
         self._labels.append(label)
-        z = self._new_z(k, variables)
+        z = self._new_z(k, variables, varset)
         self._named[expr] = z
         if original is not None:
             self._named[original] = z
@@ -1164,57 +1280,145 @@ class Intermediates:
             z.__dict__["_canonical"] = found
         return found
 
-    def _scan(self, expr: Any) -> tuple[set, set, list]:
+    def _scan(self, expr: Any) -> tuple[set | frozenset, set | frozenset, list]:
+        """One walk over ``expr``: the variables it depends on (derivatives,
+        functions of time and symbols, each outside the others), the
+        derivatives among them, and the intermediates taken elsewhere than
+        at their own variables (:meth:`_walk`)."""
+        return self._walk(expr)[:3]
+
+    def _walk(
+        self, expr: Any
+    ) -> tuple[set | frozenset, set | frozenset, list, int | float]:
         """One walk over ``expr``: the variables it depends on (derivatives,
         functions of time and symbols, each outside the others; a canonical
         intermediate's are read off its arguments, not walked into), the
         derivatives among them, and the intermediates taken elsewhere than
-        at their own variables."""
-        variables: set = set()
-        derivatives: set = set()
+        at their own variables (in the order of a depth-first walk).
+
+        A part is classified when it is met as an argument: a variable or
+        an atom is only recorded (never stacked), a canonical intermediate
+        contributes its set of variables, and only sums, products,
+        functions and the other intermediates are walked into.  When every
+        variable found is among the canonical intermediates', the sets
+        returned are the book's own (frozen, shared) union of theirs
+        (:meth:`_union`): callers only read them.
+
+        Last, an upper bound of ``expr``'s size as :meth:`_split` counts it
+        (tree nodes, an intermediate, a function of time or a derivative
+        one), or infinity when a part was met twice (its second subtree is
+        not walked)."""
+        #: the variables and derivatives met, by identity (``id`` is
+        #: Python's, a sympy object's hash a call): each object once
+        found: dict[int, Any] = {}
+        among: dict[int, Any] = {}
         bad: list = []
-        seen: set = set()
+        seen: set[int] = set()  # the parts stacked, by identity
         #: the sets of variables of the canonical intermediates met (many
         #: share one, and each is kept as one object: their union is taken
-        #: once per set, not once per intermediate)
+        #: once per combination of sets)
         shared: set = set()
         varsets = self._varsets
+        Z = self.Z
+        derivative = sp.Derivative
+        stack: list = []
+        todo: Any = (expr,)
+        size: int | float = 0
+        while True:
+            size += len(todo)
+            for a in todo:
+                if a.is_Atom:
+                    if a.is_Symbol:
+                        found[id(a)] = a
+                    continue
+                if a.is_Mul or a.is_Add:
+                    pass  # (most parts: walked into)
+                elif isinstance(a, Z):
+                    # its set of variables, kept on a canonical instance
+                    varset = a.__dict__.get("_varset")
+                    if varset is None and self._canonical(a):
+                        varset = a.__dict__["_varset"] = varsets[a.args[0].p]
+                    if varset is not None:
+                        shared.add(varset)
+                        continue
+                elif isinstance(a, AppliedUndef):
+                    found[id(a)] = a
+                    continue
+                elif isinstance(a, derivative):
+                    found[id(a)] = among[id(a)] = a
+                    continue
+                i = id(a)
+                if i not in seen:
+                    seen.add(i)
+                    stack.append(a)
+                else:
+                    size = math.inf  # (its subtree counted once)
+            if not stack:
+                break
+            e = stack.pop()
+            if isinstance(e, Z):
+                bad.append(e)  # not canonical: only those are stacked
+                todo = e.args[1:]
+            else:
+                todo = e.args
+        if bad:
+            # in the order of a walk that meets each distinct part once (an
+            # equal copy of a part, another object, is not walked again)
+            bad = self._stray(expr)
+        variables = set(found.values())
+        derivatives = set(among.values())
+        if not shared:
+            return variables, derivatives, bad, size
+        union, within = self._union(shared)
+        if not variables or variables <= union:
+            # (the derivatives are among its own)
+            return union, within, bad, size
+        variables |= union
+        if within:
+            derivatives |= within
+        return variables, derivatives, bad, size
+
+    def _stray(self, expr: Any) -> list:
+        """The intermediates in ``expr`` taken elsewhere than at their own
+        variables, in the order of a depth-first walk (each distinct part
+        once, equal parts being one), for :meth:`_scan`."""
+        bad: list = []
+        seen: set = set()
         Z = self.Z
         stack = [expr]
         while stack:
             e = stack.pop()
             if isinstance(e, Z):
-                if self._canonical(e):  # kept per instance
-                    shared.add(varsets[e.args[0].p])
+                if self._canonical(e):
                     continue
                 bad.append(e)
                 todo = e.args[1:]
-            elif isinstance(e, sp.Derivative):
-                variables.add(e)
-                derivatives.add(e)
-                continue
-            elif isinstance(e, AppliedUndef) or e.is_Symbol:
-                variables.add(e)
-                continue
-            elif e.is_Atom:
+            elif e.is_Atom or isinstance(e, _VARIABLE):
                 continue
             else:
                 todo = e.args
             for a in todo:
                 if a not in seen:
                     seen.add(a)
-                    if isinstance(a, Z) and self._canonical(a):
-                        shared.add(varsets[a.args[0].p])  # no need to stack it
-                    else:
-                        stack.append(a)
-        if shared:
-            variables.update(*shared)
+                    stack.append(a)
+        return bad
+
+    def _union(self, shared: set) -> tuple[frozenset, frozenset]:
+        """The union of the sets of variables ``shared`` (each an
+        intermediate's, from :attr:`_varsets`) and the derivatives among
+        them: kept per combination of sets (the combination's hash is made
+        of its sets' hashes, which Python keeps)."""
+        key = frozenset(shared)
+        found = self._unions.get(key)
+        if found is None:
             orders = self._orders
-            for varset in shared:
-                found = orders[varset][2]  # the derivatives among them
-                if found:
-                    derivatives.update(found)
-        return variables, derivatives, bad
+            if len(key) == 1:
+                (union,) = key
+            else:
+                union = frozenset().union(*key)
+            among = frozenset().union(*[orders[varset][2] for varset in key])
+            found = self._unions[key] = (union, among)
+        return found
 
     def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
         """``variables`` sorted by ``default_sort_key``, as a set, and the
@@ -1228,7 +1432,7 @@ class Intermediates:
             found = self._orders[key] = (ordered, key, derivatives)
         return found
 
-    def _new_z(self, k: int, variables: tuple[Any, ...]) -> Any:
+    def _new_z(self, k: int, variables: tuple[Any, ...], varset: frozenset) -> Any:
         """``self.Z(k, *variables)``, made as sympy's ``Application.__new__``
         makes it (``Intermediate.eval`` declines, no argument is a float, so
         nothing is evaluated), without the cache lookup: sympy's cache key
@@ -1236,6 +1440,15 @@ class Intermediates:
         which costs more than making the object."""
         z = sp.Basic.__new__(self.Z, sp.Integer(k), *variables)
         z.nargs = sp.S.Naturals0
+        z.__dict__["_canonical"] = True  # (:meth:`_canonical`: at its own)
+        z.__dict__["_varset"] = varset  # (for :meth:`_walk`)
+        # _is_commutative's search of the arguments, once per set of
+        # variables ``varset`` (the number commutes): many share one
+        commutes = self._commutes.get(varset)
+        if commutes is None:
+            commutes = self._commutes[varset] = all(a.is_commutative for a in variables)
+        if commutes:
+            z.__dict__["_commutative"] = True
         return z
 
     def _sort_key(self, x: Any) -> Any:
