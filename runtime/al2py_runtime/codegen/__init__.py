@@ -21,8 +21,8 @@ from pathlib import Path, PurePath
 from typing import Any
 
 from .. import progress
+from ..collector import paused
 from ..jobs import backends
-from ..jobs.fingerprint import collector_paused
 from ..jobs.run import Job, NumericsError
 from .infile import in_text
 from .program import Program, describe
@@ -99,7 +99,7 @@ def write_programs(
     # Each program forms, renames and prints tens of thousands of small
     # objects: the cyclic collector, run as they are made, would scan the
     # whole model again and again (a tenth to a fifth of the writing).
-    with collector_paused(), progress.task("writing programs", len(jobs)) as task:
+    with paused(), progress.task("writing programs", len(jobs)) as task:
         for job in jobs:
             _write_one(job, lang, source, directory, written, errors, notes, made, task)
             task.advance()
