@@ -482,7 +482,8 @@ def describe(
     derivs = [sub(spec.derivs[i]) for i in states]
     # a derivative that reads an acceleration, itself or through the
     # intermediates it needs, is computed after the accelerations are solved
-    late_ids = set(backends.reading(inter, derivs, accel_syms))
+    # (only those intermediates asked: the outputs' may be most of them)
+    late_ids = set(backends.reading(backends.needed(inter, derivs), derivs, accel_syms))
     x_names = iter_names("x", taken)
     first = [sub(e) for e in [*spec.mass, *spec.forcing]]
     first_targets = [("m", i // n, i % n) for i in range(n * n)]
