@@ -47,3 +47,87 @@ def test_the_process_ends_with_main_s_status(tmp_path, capsys):
     assert done.returncode == 2
     assert done.stderr == said.replace(str(tmp_path / "none.al"), "none.al")
     assert "has no CODE statement" in done.stderr
+
+
+# ------------------------------------------- programs formed in processes
+
+# Five jobs: one with nothing to integrate yet (an error line), two naming
+# one file (the second is named apart), one with another Output, and an
+# Algebraic job.
+MANY_JOBS = """\
+Variables X'
+Constants A, B
+Input A=2, B=0.5, X=1, TFINAL=1
+Output T, X
+CODE ODE() early.c
+X' = -A*X + B
+CODE ODE() decay.c
+CODE ODE() decay.c
+Output T, X, A*X
+CODE ODE() decay.m
+Y = 2*X
+CODE Algebraic() decayalg.m
+"""
+
+
+def _written(folder, printed: str) -> dict:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())} | {
+        "printed": printed.replace(str(folder), "OUT")
+    }
+
+
+def test_processes_write_what_one_process_writes(tmp_path, capsys):
+    """``-j 3`` (jobs formed by forked copies, one of them named apart and
+    formed again here) and ``-j 1`` write the same bytes, lines, notes and
+    errors."""
+    script = tmp_path / "many.al"
+    script.write_text(MANY_JOBS)
+    seen = []
+    for workers in ("1", "3", "2"):
+        out = tmp_path / f"j{workers}"
+        status = al2py_main(["code", "-j", workers, str(script), "-o", str(out)])
+        captured = capsys.readouterr()
+        seen.append((status, _written(out, captured.out), captured.err))
+    assert seen[0][0] == 2  # early.c
+    assert "early.c (line 5): nothing to integrate" in seen[0][2]
+    assert "is written as decay_2.c" in seen[0][2]
+    assert sorted(seen[0][1]) == [
+        "decay.c",
+        "decay.in",
+        "decay.m",
+        "decay_2.c",
+        "decay_2.in",
+        "decayalg.in",
+        "decayalg.m",
+        "printed",
+    ]
+    assert seen[1] == seen[0]
+    assert seen[2] == seen[0]
+
+
+def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
+    from al2py_runtime import progress
+    from al2py_runtime.codegen import form, formed_apart
+
+    from al2py.transpile import convert
+
+    code = convert(MANY_JOBS, "many.al", formatted=False).code
+    namespace: dict = {"__name__": "many", "__file__": str(tmp_path / "many.py")}
+    exec(compile(code, str(tmp_path / "many.py"), "exec"), namespace)  # noqa: S102
+    jobs = namespace["al"].numerics.jobs
+    with progress.task("test", len(jobs)) as task:
+        apart = formed_apart(jobs, None, None, 2, task)
+    assert sorted(apart) == list(range(len(jobs)))
+    for i, job in enumerate(jobs):
+        here = form(job, None, None)
+        got = apart[i]
+        assert (got.name, got.text, got.infile, got.error) == (
+            here.name,
+            here.text,
+            here.infile,
+            here.error,
+        )
+        # the jobs of worker 1 were formed in the other process
+        if here.error is None:
+            assert (got.program is None) == (i % 2 == 1)
+    assert formed_apart(jobs, None, None, 1, task) == {}

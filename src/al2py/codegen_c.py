@@ -59,6 +59,15 @@ def parser() -> argparse.ArgumentParser:
         " f for Fortran) whatever the CODE statement's file extension says"
         " (tutor7's CODE names tutor7.for; --lang c writes tutor7.c)",
     )
+    p.add_argument(
+        "-j",
+        "--jobs",
+        type=int,
+        default=None,
+        metavar="N",
+        help="form the programs in N processes at once (default: one per"
+        " processor; 1: in this process alone); the files are the same",
+    )
     return p
 
 
@@ -97,14 +106,17 @@ def main(argv: list[str]) -> int:
             file=sys.stderr,
         )
         return 2
-    from al2py_runtime.codegen import write_programs
+    from al2py_runtime.codegen import available_workers, write_programs
 
     ws = module.al
     if not ws.numerics.jobs:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
     notes: list[str] = []
-    written, errors = write_programs(ws, args.outdir, lang=args.lang, notes=notes)
+    workers = available_workers() if args.jobs is None else max(1, args.jobs)
+    written, errors = write_programs(
+        ws, args.outdir, lang=args.lang, notes=notes, workers=workers
+    )
     for item in written:
         print(f"Wrote {item}")
     for note in notes:

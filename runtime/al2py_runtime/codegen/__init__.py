@@ -17,6 +17,11 @@ equations only (no driver).  One description of the program
 
 from __future__ import annotations
 
+import contextlib
+import os
+import pickle
+import signal
+from dataclasses import dataclass
 from pathlib import Path, PurePath
 from typing import Any
 
@@ -28,7 +33,18 @@ from .infile import in_text
 from .program import Program, describe
 from .static import describe_static
 
-__all__ = ["LANGUAGES", "in_text", "program_source", "target_file", "write_programs"]
+__all__ = [
+    "LANGUAGES",
+    "Formed",
+    "available_workers",
+    "form",
+    "formed_apart",
+    "in_text",
+    "program_source",
+    "target_file",
+    "write_one",
+    "write_programs",
+]
 
 #: File extensions of ``CODE`` and their language.
 LANGUAGES = {".c": "C", ".m": "MATLAB", ".f": "Fortran", ".for": "Fortran"}
@@ -76,6 +92,7 @@ def write_programs(
     jobs: list[Job] | None = None,
     source: str | None = None,
     notes: list[str] | None = None,
+    workers: int = 1,
 ) -> tuple[list[Path], list[str]]:
     """Write each ``CODE`` job's program (``lang``: all in one language) and
     its ``STEM.in`` into ``directory``.  Returns (files written, error
@@ -88,7 +105,13 @@ def write_programs(
     ``STEM_2`` (``_3``, ...) names its program, its ``.in`` file and the
     tables it writes.  Two programs of one stem that read the same values
     share one ``STEM.in`` (Autolev's programs did).  Each of these is said
-    in ``notes`` (``note:`` lines)."""
+    in ``notes`` (``note:`` lines).
+
+    ``workers`` > 1: the jobs' programs are formed by that many processes
+    at once (this one and ``workers - 1`` forked copies of it, see
+    :func:`formed_apart`), then named and written here in order: the same
+    files, byte for byte.  Where ``os.fork`` is not available, or a forked
+    process fails, this process forms them."""
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
@@ -100,14 +123,62 @@ def write_programs(
     # objects: the cyclic collector, run as they are made, would scan the
     # whole model again and again (a tenth to a fifth of the writing).
     with paused(), progress.task("writing programs", len(jobs)) as task:
-        for job in jobs:
-            _write_one(job, lang, source, directory, written, errors, notes, made, task)
-            task.advance()
+        ready = formed_apart(jobs, lang, source, workers, task)
+        for i, job in enumerate(jobs):
+            formed = ready.get(i)
+            if formed is None:  # formed here, in order
+                formed = form(job, lang, source, task)
+                task.advance()
+            write_one(
+                job, formed, lang, source, directory, written, errors, notes, made
+            )
     return written, errors
 
 
-def _write_one(
+@dataclass
+class Formed:
+    """One job's program formed under the name its ``CODE`` statement gives
+    (:func:`form`): the file's name, its text and its ``.in`` file's (None
+    with NOSUBS); or ``error``, the message of a job that cannot be
+    written.  ``program`` is None when another process formed it."""
+
+    name: str = ""
+    text: str = ""
+    infile: str | None = None
+    error: str | None = None
+    program: Program | None = None
+
+
+def form(
+    job: Job, lang: str | None, source: str | None, task: progress.Task | None = None
+) -> Formed:
+    """The program of ``job`` in ``lang`` (or its file's language), its
+    text and its ``.in`` file's, under the name its ``CODE`` statement
+    gives; ``task`` is told each step."""
+    try:
+        name = PurePath(target_file(job, lang)).name
+        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
+        if task is not None:
+            task.doing(f"{name} (forming the equations)")
+        program = (describe_static if static else describe)(job, source)
+        program.stem = PurePath(name).stem
+        if task is not None:
+            task.doing(f"{name} (printing)")
+        text = program_source(program, name)
+        infile = in_text(program) if not program.nosubs else None
+    except (NumericsError, backends.BackendError) as exc:
+        return Formed(error=_located(job, exc))
+    return Formed(name, text, infile, None, program)
+
+
+def _located(job: Job, exc: Exception) -> str:
+    message = str(exc)
+    return message if message.startswith(job.where) else f"{job.where}: {message}"
+
+
+def write_one(
     job: Job,
+    formed: Formed,
     lang: str | None,
     source: str | None,
     directory: Path,
@@ -115,28 +186,33 @@ def _write_one(
     errors: list[str],
     notes: list[str],
     made: dict[str, tuple[Job, str]],
-    task: progress.Task,
 ) -> None:
-    """Write one job's program and ``.in`` (see :func:`write_programs`);
-    ``made`` holds the files written so far, by lower-case name."""
+    """Write one job's program and ``.in`` as ``formed`` (see
+    :func:`write_programs`); ``made`` holds the files written so far, by
+    lower-case name."""
+    if formed.error is not None:
+        errors.append(formed.error)
+        return
+    name, text, infile = formed.name, formed.text, formed.infile
+    stem = PurePath(name).stem
     try:
-        name = PurePath(target_file(job, lang)).name
-        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
-        task.doing(f"{name} (forming the equations)")
-        program = (describe_static if static else describe)(job, source)
-        program.stem = PurePath(name).stem
-        task.doing(f"{name} (printing)")
-        text = program_source(program, name)
-        infile = in_text(program) if not program.nosubs else None
         clash = name.lower() in made or (
             infile is not None
-            and f"{program.stem}.in".lower() in made
-            and made[f"{program.stem}.in".lower()][1] != infile
+            and f"{stem}.in".lower() in made
+            and made[f"{stem}.in".lower()][1] != infile
         )
         if clash:
-            own = name if name.lower() in made else f"{program.stem}.in"
+            program = formed.program
+            if program is None:  # formed in another process: again here
+                again = form(job, lang, source)
+                if again.error is not None:
+                    errors.append(again.error)
+                    return
+                program = again.program
+                assert program is not None
+            own = name if name.lower() in made else f"{stem}.in"
             earlier = made[own.lower()][0]
-            stem, suffix = PurePath(name).stem, PurePath(name).suffix
+            suffix = PurePath(name).suffix
             k = 2
             while any(f"{stem}_{k}{x}".lower() in made for x in (suffix, ".in")):
                 k += 1
@@ -146,26 +222,24 @@ def _write_one(
                     f"{stem}.{t.number}", f"{program.stem}.{t.number}", 1
                 )
             name = f"{program.stem}{suffix}"
+            stem = program.stem
             text = program_source(program, name)
             infile = in_text(program) if not program.nosubs else None
             notes.append(
-                f"{job.where} is written as {name} (reading {program.stem}.in,"
-                f" writing {program.stem}.1, ...): {own} is {earlier.where}'s"
+                f"{job.where} is written as {name} (reading {stem}.in,"
+                f" writing {stem}.1, ...): {own} is {earlier.where}'s"
             )
     except (NumericsError, backends.BackendError) as exc:
-        message = str(exc)
-        if not message.startswith(job.where):
-            message = f"{job.where}: {message}"
-        errors.append(message)
+        errors.append(_located(job, exc))
         return
     files = [(name, text)]
     if infile is not None:
-        shared = made.get(f"{program.stem}.in".lower())
+        shared = made.get(f"{stem}.in".lower())
         if shared is None:
-            files.append((f"{program.stem}.in", infile))
+            files.append((f"{stem}.in", infile))
         else:
             notes.append(
-                f"{job.where} reads {program.stem}.in, written for"
+                f"{job.where} reads {stem}.in, written for"
                 f" {shared[0].where} with the same values"
             )
     try:
@@ -177,3 +251,125 @@ def _write_one(
             written.append(path)
     except OSError as exc:
         errors.append(f"{job.where}: cannot write {file}: {exc.strerror or exc}")
+
+
+def available_workers() -> int:
+    """The processors this process may run on (``al2py code``'s default
+    number of workers)."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    if affinity is not None:
+        with contextlib.suppress(OSError):
+            return max(1, len(affinity(0)))
+    return max(1, os.cpu_count() or 1)
+
+
+@dataclass
+class _Child:
+    """A forked process forming the jobs ``share`` (their indices); it
+    sends them pickled through the pipe ``fd``."""
+
+    pid: int
+    fd: int
+    share: list[int]
+
+
+def formed_apart(
+    jobs: list[Job],
+    lang: str | None,
+    source: str | None,
+    workers: int,
+    task: progress.Task,
+) -> dict[int, Formed]:
+    """The programs of ``jobs`` (by index) formed by ``workers`` processes
+    at once: job ``i`` by worker ``i % workers``, worker 0 being this
+    process; the others are forked copies of it, which form the same
+    programs (each job's forming depends on the job and the model alone,
+    never on what was formed before), send them back and exit.  Empty
+    with one worker or without ``os.fork``; a job whose process failed
+    is left out (the caller forms it)."""
+    workers = min(workers, len(jobs))
+    if workers < 2 or not hasattr(os, "fork"):
+        return {}
+    # the printers' modules imported once, before the copies are made
+    from . import c, fortran, octave  # noqa: F401
+
+    children: list[_Child] = []
+    ready: dict[int, Formed] = {}
+    try:
+        for w in range(1, workers):
+            child = _fork(
+                [i for i in range(len(jobs)) if i % workers == w], jobs, lang, source
+            )
+            if child is not None:
+                children.append(child)
+        for i in range(0, len(jobs), workers):
+            ready[i] = form(jobs[i], lang, source, task)
+            task.advance()
+        while children:
+            child = children.pop(0)
+            got = _collect(child)
+            ready.update(got)
+            task.advance(len(got))
+    finally:
+        for child in children:  # interrupted: the others stopped
+            _stop(child)
+    return ready
+
+
+def _fork(
+    share: list[int], jobs: list[Job], lang: str | None, source: str | None
+) -> _Child | None:
+    """A forked process forming the jobs ``share`` (None if none could be
+    made)."""
+    try:
+        read, write = os.pipe()
+    except OSError:
+        return None
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(read)
+        os.close(write)
+        return None
+    if pid:
+        os.close(write)
+        return _Child(pid, read, share)
+    # the copy: form, send, and end without the parent's exit work
+    code = 1
+    try:
+        os.close(read)
+        out = {}
+        for i in share:
+            try:
+                f = form(jobs[i], lang, source)
+            except Exception:  # noqa: BLE001, S112 - the parent forms it again
+                continue
+            out[i] = (f.name, f.text, f.infile, f.error)
+        with os.fdopen(write, "wb") as stream:
+            pickle.dump(out, stream, protocol=pickle.HIGHEST_PROTOCOL)
+        code = 0
+    finally:
+        os._exit(code)
+
+
+def _collect(child: _Child) -> dict[int, Formed]:
+    """What ``child`` formed (empty if it failed)."""
+    with os.fdopen(child.fd, "rb") as stream:
+        data = stream.read()
+    _pid, status = os.waitpid(child.pid, 0)
+    if status != 0:
+        return {}
+    try:
+        got = pickle.loads(data)  # noqa: S301 - our own process's
+    except Exception:  # noqa: BLE001 - formed here instead
+        return {}
+    return {i: Formed(*values) for i, values in got.items()}
+
+
+def _stop(child: _Child) -> None:
+    with contextlib.suppress(OSError):
+        os.kill(child.pid, signal.SIGKILL)
+    with contextlib.suppress(OSError):
+        os.close(child.fd)
+    with contextlib.suppress(OSError):
+        os.waitpid(child.pid, 0)
