@@ -118,6 +118,7 @@ def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
     with progress.task("test", len(jobs)) as task:
         apart = formed_apart(jobs, None, None, 2, task)
     assert sorted(apart) == list(range(len(jobs)))
+    formed_there = 0
     for i, job in enumerate(jobs):
         here = form(job, None, None)
         got = apart[i]
@@ -127,7 +128,6 @@ def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
             here.infile,
             here.error,
         )
-        # the jobs of worker 1 were formed in the other process
-        if here.error is None:
-            assert (got.program is None) == (i % 2 == 1)
+        formed_there += got.program is None and here.error is None
+    assert formed_there >= 1  # at least the last job: formed in the copy
     assert formed_apart(jobs, None, None, 1, task) == {}

@@ -18,9 +18,11 @@ equations only (no driver).  One description of the program
 from __future__ import annotations
 
 import contextlib
+import mmap
 import os
 import pickle
 import signal
+import struct
 from dataclasses import dataclass
 from pathlib import Path, PurePath
 from typing import Any
@@ -263,14 +265,48 @@ def available_workers() -> int:
     return max(1, os.cpu_count() or 1)
 
 
+class _Claims:
+    """The jobs not formed yet, ``front`` to ``back``, shared by the
+    processes forming them (an anonymous shared map, forked with them): this
+    process claims the first left, the others the last (a script's later
+    jobs tend to be larger), one at a time under a lock (a pipe holding
+    one byte)."""
+
+    def __init__(self, n: int) -> None:
+        self._map = mmap.mmap(-1, 16)
+        self._map[:] = struct.pack("qq", 0, n - 1)
+        self._lock = os.pipe()
+        os.write(self._lock[1], b"1")
+
+    def claim(self, front: bool) -> int | None:
+        """The index of the next job to form (None when none is left)."""
+        os.read(self._lock[0], 1)
+        try:
+            first, last = struct.unpack("qq", self._map[:])
+            if first > last:
+                return None
+            if front:
+                self._map[:] = struct.pack("qq", first + 1, last)
+                return first
+            self._map[:] = struct.pack("qq", first, last - 1)
+            return last
+        finally:
+            os.write(self._lock[1], b"1")
+
+    def close(self) -> None:
+        for fd in self._lock:
+            with contextlib.suppress(OSError):
+                os.close(fd)
+        self._map.close()
+
+
 @dataclass
 class _Child:
-    """A forked process forming the jobs ``share`` (their indices); it
-    sends them pickled through the pipe ``fd``."""
+    """A forked process forming jobs (:class:`_Claims`); it sends them
+    pickled through the pipe ``fd``."""
 
     pid: int
     fd: int
-    share: list[int]
 
 
 def formed_apart(
@@ -281,46 +317,49 @@ def formed_apart(
     task: progress.Task,
 ) -> dict[int, Formed]:
     """The programs of ``jobs`` (by index) formed by ``workers`` processes
-    at once: job ``i`` by worker ``i % workers``, worker 0 being this
-    process; the others are forked copies of it, which form the same
-    programs (each job's forming depends on the job and the model alone,
-    never on what was formed before), send them back and exit.  Empty
-    with one worker or without ``os.fork``; a job whose process failed
-    is left out (the caller forms it)."""
+    at once: this one, from the first job on, and ``workers - 1`` forked
+    copies of it, from the last job back (see :class:`_Claims`); each
+    job's program depends on the job and the model alone, never on what
+    was formed before or where, so the copies form the programs this
+    process would, send them back and exit.  Empty with one worker or
+    without ``os.fork``; a job whose process failed is left out (the
+    caller forms it)."""
     workers = min(workers, len(jobs))
     if workers < 2 or not hasattr(os, "fork"):
         return {}
     # the printers' modules imported once, before the copies are made
     from . import c, fortran, octave  # noqa: F401
 
+    try:
+        claims = _Claims(len(jobs))
+    except OSError:
+        return {}
     children: list[_Child] = []
     ready: dict[int, Formed] = {}
     try:
-        for w in range(1, workers):
-            child = _fork(
-                [i for i in range(len(jobs)) if i % workers == w], jobs, lang, source
-            )
+        for _ in range(1, workers):
+            child = _fork(claims, jobs, lang, source)
             if child is not None:
                 children.append(child)
-        for i in range(0, len(jobs), workers):
+        while (i := claims.claim(front=True)) is not None:
             ready[i] = form(jobs[i], lang, source, task)
             task.advance()
         while children:
-            child = children.pop(0)
-            got = _collect(child)
+            got = _collect(children.pop(0))
             ready.update(got)
             task.advance(len(got))
     finally:
         for child in children:  # interrupted: the others stopped
             _stop(child)
+        claims.close()
     return ready
 
 
 def _fork(
-    share: list[int], jobs: list[Job], lang: str | None, source: str | None
+    claims: _Claims, jobs: list[Job], lang: str | None, source: str | None
 ) -> _Child | None:
-    """A forked process forming the jobs ``share`` (None if none could be
-    made)."""
+    """A forked process forming the jobs it claims from the back (None if
+    none could be made)."""
     try:
         read, write = os.pipe()
     except OSError:
@@ -333,13 +372,13 @@ def _fork(
         return None
     if pid:
         os.close(write)
-        return _Child(pid, read, share)
+        return _Child(pid, read)
     # the copy: form, send, and end without the parent's exit work
     code = 1
     try:
         os.close(read)
         out = {}
-        for i in share:
+        while (i := claims.claim(front=False)) is not None:
             try:
                 f = form(jobs[i], lang, source)
             except Exception:  # noqa: BLE001, S112 - the parent forms it again
