@@ -58,7 +58,7 @@ def describe_static(
     job: Job, source: str | None = None, nosubs: bool | None = None
 ) -> Program:
     vals, keep = input_values(job, {})
-    spec = static_equations(job, frozenset(keep))
+    spec = static_equations(job, frozenset(keep), deferred=True)
     made = Entries(job, vals)
     taken = made.taken
     nonlinear = job.kind == "NONLINEAR"
