@@ -4,6 +4,7 @@ status as ``main`` called in-process, which returns."""
 
 from __future__ import annotations
 
+import gc
 import subprocess
 import sys
 
@@ -25,7 +26,9 @@ def _process(*args: str, cwd) -> subprocess.CompletedProcess:
 
 
 def test_the_process_writes_what_main_writes(tmp_path, capsys):
+    assert gc.isenabled()
     assert al2py_main(["code", str(TUTOR6), "-o", str(tmp_path / "a")]) == 0
+    assert gc.isenabled()  # in-process: the collector as it was
     inprocess = capsys.readouterr().out
     done = _process("code", str(TUTOR6), "-o", "b", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
@@ -37,6 +40,23 @@ def test_the_process_writes_what_main_writes(tmp_path, capsys):
         assert (tmp_path / "b" / name).read_bytes() == (
             tmp_path / "a" / name
         ).read_bytes()
+
+
+def test_run_alone_ends_the_process_without_the_collector(tmp_path):
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import gc\n"
+            "from al2py.codegen_c import run_alone\n"
+            "run_alone(lambda: print('collector', gc.isenabled()) or 3)\n"
+            "print('not reached')\n",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert (done.returncode, done.stdout) == (3, "collector False\n")
 
 
 def test_the_process_ends_with_main_s_status(tmp_path, capsys):
