@@ -433,6 +433,7 @@ def describe(
 ) -> Program:
     """The program of a Dynamics/ODE ``job`` with its Input values
     (:func:`.static.describe_static` describes Algebraic/Nonlinear ones)."""
+    backends.forget_free_symbols()
     vals, keep = input_values(job, {})
     c = dynamics_equations(job, frozenset(keep), deferred=True)
     y0 = initial_state(job, c, vals)
