@@ -38,6 +38,7 @@ from .static import describe_static
 __all__ = [
     "LANGUAGES",
     "Formed",
+    "Formers",
     "available_workers",
     "form",
     "formed_apart",
@@ -124,16 +125,31 @@ def write_programs(
     # Each program forms, renames and prints tens of thousands of small
     # objects: the cyclic collector, run as they are made, would scan the
     # whole model again and again (a tenth to a fifth of the writing).
-    with paused(), progress.task("writing programs", len(jobs)) as task:
-        ready = formed_apart(jobs, lang, source, workers, task)
-        for i, job in enumerate(jobs):
-            formed = ready.get(i)
-            if formed is None:  # formed here, in order
-                formed = form(job, lang, source, task)
-                task.advance()
-            write_one(
-                job, formed, lang, source, directory, written, errors, notes, made
-            )
+    with paused():
+        # the copies made before the progress line's thread starts (a
+        # process forked while another thread runs may deadlock)
+        formers = Formers(jobs, lang, source, workers)
+        try:
+            with progress.task("writing programs", len(jobs)) as task:
+                ready = formers.gather(task)
+                for i, job in enumerate(jobs):
+                    formed = ready.get(i)
+                    if formed is None:  # formed here, in order
+                        formed = form(job, lang, source, task)
+                        task.advance()
+                    write_one(
+                        job,
+                        formed,
+                        lang,
+                        source,
+                        directory,
+                        written,
+                        errors,
+                        notes,
+                        made,
+                    )
+        finally:
+            formers.stop()
     return written, errors
 
 
@@ -317,42 +333,66 @@ def formed_apart(
     task: progress.Task,
 ) -> dict[int, Formed]:
     """The programs of ``jobs`` (by index) formed by ``workers`` processes
-    at once: this one, from the first job on, and ``workers - 1`` forked
-    copies of it, from the last job back (see :class:`_Claims`); each
+    at once (:class:`Formers`)."""
+    formers = Formers(jobs, lang, source, workers)
+    try:
+        return formers.gather(task)
+    finally:
+        formers.stop()
+
+
+class Formers:
+    """The programs of ``jobs`` formed by ``workers`` processes at once:
+    this one, from the first job on, and ``workers - 1`` forked copies of
+    it, made here, from the last job back (see :class:`_Claims`); each
     job's program depends on the job and the model alone, never on what
     was formed before or where, so the copies form the programs this
-    process would, send them back and exit.  Empty with one worker or
-    without ``os.fork``; a job whose process failed is left out (the
-    caller forms it)."""
-    workers = min(workers, len(jobs))
-    if workers < 2 or not hasattr(os, "fork"):
-        return {}
-    # the printers' modules imported once, before the copies are made
-    from . import c, fortran, octave  # noqa: F401
+    process would, send them back and exit.  None are made with one
+    worker or without ``os.fork``."""
 
-    try:
-        claims = _Claims(len(jobs))
-    except OSError:
-        return {}
-    children: list[_Child] = []
-    ready: dict[int, Formed] = {}
-    try:
-        for _ in range(1, workers):
-            child = _fork(claims, jobs, lang, source)
+    def __init__(
+        self, jobs: list[Job], lang: str | None, source: str | None, workers: int
+    ) -> None:
+        self.jobs, self.lang, self.source = jobs, lang, source
+        self.children: list[_Child] = []
+        self.claims: _Claims | None = None
+        if min(workers, len(jobs)) < 2 or not hasattr(os, "fork"):
+            return
+        # the printers' modules imported once, before the copies are made
+        from . import c, fortran, octave  # noqa: F401
+
+        try:
+            self.claims = _Claims(len(jobs))
+        except OSError:
+            return
+        for _ in range(1, min(workers, len(jobs))):
+            child = _fork(self.claims, jobs, lang, source)
             if child is not None:
-                children.append(child)
-        while (i := claims.claim(front=True)) is not None:
-            ready[i] = form(jobs[i], lang, source, task)
+                self.children.append(child)
+
+    def gather(self, task: progress.Task) -> dict[int, Formed]:
+        """The programs formed (by job index): this process's, then the
+        copies'.  Empty without copies; a job whose process failed is left
+        out (the caller forms it)."""
+        ready: dict[int, Formed] = {}
+        if self.claims is None or not self.children:
+            return ready
+        while (i := self.claims.claim(front=True)) is not None:
+            ready[i] = form(self.jobs[i], self.lang, self.source, task)
             task.advance()
-        while children:
-            got = _collect(children.pop(0))
+        while self.children:
+            got = _collect(self.children.pop(0))
             ready.update(got)
             task.advance(len(got))
-    finally:
-        for child in children:  # interrupted: the others stopped
-            _stop(child)
-        claims.close()
-    return ready
+        return ready
+
+    def stop(self) -> None:
+        """The copies not gathered stopped (interrupted), the claims closed."""
+        while self.children:
+            _stop(self.children.pop())
+        if self.claims is not None:
+            self.claims.close()
+            self.claims = None
 
 
 def _fork(
