@@ -69,7 +69,7 @@ def xreplace(
         changed = []
         for i, a in enumerate(e.args):
             if isinstance(a, sp.Basic):
-                b, c = walk(a)
+                b, c = walk(a)  # noqa: F821 - deleted after the walk
                 args.append(b)
                 if c:
                     changed.append(i)
@@ -84,7 +84,10 @@ def xreplace(
         memo[e] = out
         return out
 
-    return walk(expr)[0]
+    try:
+        return walk(expr)[0]
+    finally:
+        del walk  # it refers to itself: freed now with its memo, not by a collection
 
 
 def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any]) -> Any:
@@ -105,7 +108,7 @@ def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any])
         if args is not None:
             done = False
             if args:
-                newargs = tuple([walk(a) for a in args])
+                newargs = tuple([walk(a) for a in args])  # noqa: F821 - as above
                 if args != newargs:
                     rv = rv.func(*newargs)
                     # sympy: a part that became one of its (changed)
@@ -123,7 +126,10 @@ def replace(expr: Any, query: Callable[[Any], Any], value: Callable[[Any], Any])
         memo[key] = rv
         return rv
 
-    return walk(expr)
+    try:
+        return walk(expr)
+    finally:
+        del walk  # as in xreplace
 
 
 def appearing(expr: Any, targets: Any) -> set:

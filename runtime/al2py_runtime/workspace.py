@@ -23,7 +23,6 @@ A + 7*B
 from __future__ import annotations
 
 import gc
-import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -34,7 +33,7 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
-from . import algebra, matrices, progress, walks
+from . import algebra, collector, matrices, progress, walks
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
 from .model.model import Model
@@ -75,7 +74,7 @@ class Workspace(Mapping):
         #: less often (sympy's expressions are trees: its passes over
         #: millions of new objects find nothing, and took a tenth of a
         #: bicycle's import); names() or the workspace's end restores it
-        self._collector = _DerivingCollector() if generated else None
+        self._collector = collector.Quiet() if generated else None
         self.settings = Settings(statements=self.statements)
         self.responses: list[Response] = []
         #: the script's names (:class:`~.names.table.NameTable`)
@@ -770,7 +769,7 @@ class Workspace(Mapping):
         # the printer's memos make many small objects that all stay: the
         # garbage collector, run at its default pace, walks them again and
         # again (a fifth of the printing) and finds nothing
-        collector = _DerivingCollector()
+        quiet = collector.Quiet()
         try:
             with progress.task("printing the transcript", unit="responses") as task:
                 task.doing("naming intermediates")
@@ -781,7 +780,7 @@ class Workspace(Mapping):
                     lines, shown, self.model.displayed, tick=task.advance
                 )
         finally:
-            collector.restore()
+            quiet.restore()
             # as after deriving: sympy's cache now holds the printing's
             # passing expressions, freed here rather than at the exit
             clear_cache()
@@ -1230,26 +1229,6 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
         return e
 
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
-
-
-class _DerivingCollector:
-    """The garbage collector's thresholds raised while a module derives
-    (``gc.set_threshold``), and put back by :meth:`restore`, or when the
-    workspace goes (an import that failed)."""
-
-    #: collect the youngest generation after this many new objects (700 by
-    #: default), the oldest hardly ever while deriving
-    THRESHOLDS = (100_000, 50, 1000)
-
-    def __init__(self) -> None:
-        self._saved = gc.get_threshold()
-        gc.set_threshold(
-            *(max(a, b) for a, b in zip(self._saved, self.THRESHOLDS, strict=True))
-        )
-        self._finalizer = weakref.finalize(self, gc.set_threshold, *self._saved)
-
-    def restore(self) -> None:
-        self._finalizer()  # runs once
 
 
 def _is_vectorial(value: Any) -> bool:

@@ -186,12 +186,19 @@ def _convert_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The ``al2py`` command; without ``argv`` (the ``al2py`` script,
+    ``python -m al2py``) the process's own command line, which ``al2py
+    code`` runs alone (see :func:`.codegen_c.run_alone`)."""
+    console = argv is None
     if argv is None:
         argv = sys.argv[1:]
     argv = list(argv)
     if argv and argv[0] == "code":  # C programs of CODE statements
         from .codegen_c import main as code_main
+        from .codegen_c import run_alone
 
+        if console:
+            return run_alone(lambda: _guarded(lambda: code_main(argv[1:])))
         return _guarded(lambda: code_main(argv[1:]))
     if argv and argv[0] in SUBCOMMANDS:
         command = argv[0]

@@ -109,3 +109,81 @@ def test_jobs_renaming_keeps_the_structure() -> None:
         got, want = renamed(e, rule), _old_renamed(e, rule)
         assert sp.srepr(got) == sp.srepr(want)
         assert got.is_commutative is want.is_commutative
+
+
+def test_one_walk_from_the_objects_is_the_two_walks_through_dummies() -> None:
+    """A definition renamed straight from its objects to the programs'
+    names (``jobs.run.Deferred``) is the one renamed to the jobs' dummies
+    and then to those names, node for node; equal parts formed from
+    either are one object."""
+    rng = random.Random(2)
+    q = sp.Function("q")(sp.Symbol("t"))
+    objs = [a, b, c, q]
+    dummies = [sp.Dummy(f"p{i}") for i in range(len(objs))]
+    to_dummies = dict(zip(objs, dummies, strict=True))
+    names = [Y, X, W, Z]  # another order than the objects'
+    to_names = dict(zip(dummies, names, strict=True))
+    straight = dict(zip(objs, names, strict=True))
+    atoms = [*objs, sp.Integer(3), sp.Rational(-1, 2), sp.pi]
+
+    def build(depth: int) -> sp.Basic:
+        if depth == 0:
+            return rng.choice(atoms)
+        parts = [build(depth - 1) for _ in range(rng.randint(2, 3))]
+        k = rng.randrange(4)
+        if k == 0:
+            return sp.Add(*parts)
+        if k == 1:
+            return sp.Mul(*parts)
+        if k == 2:
+            return sp.sin(parts[0]) ** parts[1]
+        return sp.Mul(*parts) - sp.cos(sp.Add(*parts))
+
+    memo: dict = {}
+    for _ in range(300):
+        e = build(rng.randint(1, 4))
+        two = renamed_evaluated(renamed(e, to_dummies), to_names)
+        one = renamed_evaluated(e, straight, memo)
+        assert sp.srepr(one) == sp.srepr(two), e
+        # one object for equal parts, whichever walk formed them
+        again = renamed_evaluated(renamed(e, to_dummies), to_names, memo)
+        assert again is one or not again.args
+
+
+def test_programs_from_deferred_definitions_are_the_same(tmp_path, monkeypatch):
+    """Programs formed with the intermediates' definitions deferred (one
+    renaming walk) and made numeric first (two walks): the same text."""
+    from pathlib import Path
+
+    from al2py_runtime.codegen import form, program, static
+    from al2py_runtime.jobs import run
+
+    from al2py.transpile import convert
+
+    root = Path(__file__).resolve().parents[2]
+    text = (root / "tests" / "models" / "rolling_disc.al").read_text()
+    text += "E1 = ZERO[1]\nE3 = ZERO[3]\nEncode E1, E3\nCODE Algebraic() outs.m\n"
+    module_file = str(tmp_path / "rolling_disc.py")
+    code = convert(text, "rolling_disc.al", formatted=False).code
+    namespace: dict = {"__name__": "rolling_disc", "__file__": module_file}
+    exec(compile(code, module_file, "exec"), namespace)  # noqa: S102
+    jobs = namespace["al"].numerics.jobs
+    assert [j.kind for j in jobs] == ["DYNAMICS", "ALGEBRAIC"]
+    deferred = [form(job, lang, None) for job in jobs for lang in ("c", "m")]
+    calls = []
+
+    def made_numeric(real):
+        def call(job, keep, deferred=False):
+            calls.append(deferred)
+            return real(job, keep, False)
+
+        return call
+
+    monkeypatch.setattr(
+        program, "dynamics_equations", made_numeric(run.dynamics_equations)
+    )
+    monkeypatch.setattr(static, "static_equations", made_numeric(run.static_equations))
+    numeric = [form(job, lang, None) for job in jobs for lang in ("c", "m")]
+    assert calls == [True] * 4  # both ask for deferred definitions
+    for x, y in zip(deferred, numeric, strict=True):
+        assert x.error is None and (x.name, x.text) == (y.name, y.text)

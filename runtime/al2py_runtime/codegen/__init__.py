@@ -17,18 +17,37 @@ equations only (no driver).  One description of the program
 
 from __future__ import annotations
 
+import contextlib
+import mmap
+import os
+import pickle
+import signal
+import struct
+from dataclasses import dataclass
 from pathlib import Path, PurePath
 from typing import Any
 
 from .. import progress
+from ..collector import paused
 from ..jobs import backends
-from ..jobs.fingerprint import collector_paused
 from ..jobs.run import Job, NumericsError
 from .infile import in_text
 from .program import Program, describe
 from .static import describe_static
 
-__all__ = ["LANGUAGES", "in_text", "program_source", "target_file", "write_programs"]
+__all__ = [
+    "LANGUAGES",
+    "Formed",
+    "Formers",
+    "available_workers",
+    "form",
+    "formed_apart",
+    "in_text",
+    "program_source",
+    "target_file",
+    "write_one",
+    "write_programs",
+]
 
 #: File extensions of ``CODE`` and their language.
 LANGUAGES = {".c": "C", ".m": "MATLAB", ".f": "Fortran", ".for": "Fortran"}
@@ -76,6 +95,7 @@ def write_programs(
     jobs: list[Job] | None = None,
     source: str | None = None,
     notes: list[str] | None = None,
+    workers: int = 1,
 ) -> tuple[list[Path], list[str]]:
     """Write each ``CODE`` job's program (``lang``: all in one language) and
     its ``STEM.in`` into ``directory``.  Returns (files written, error
@@ -88,7 +108,13 @@ def write_programs(
     ``STEM_2`` (``_3``, ...) names its program, its ``.in`` file and the
     tables it writes.  Two programs of one stem that read the same values
     share one ``STEM.in`` (Autolev's programs did).  Each of these is said
-    in ``notes`` (``note:`` lines)."""
+    in ``notes`` (``note:`` lines).
+
+    ``workers`` > 1: the jobs' programs are formed by that many processes
+    at once (this one and ``workers - 1`` forked copies of it, see
+    :func:`formed_apart`), then named and written here in order: the same
+    files, byte for byte.  Where ``os.fork`` is not available, or a forked
+    process fails, this process forms them."""
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
@@ -99,15 +125,78 @@ def write_programs(
     # Each program forms, renames and prints tens of thousands of small
     # objects: the cyclic collector, run as they are made, would scan the
     # whole model again and again (a tenth to a fifth of the writing).
-    with collector_paused(), progress.task("writing programs", len(jobs)) as task:
-        for job in jobs:
-            _write_one(job, lang, source, directory, written, errors, notes, made, task)
-            task.advance()
+    with paused():
+        # the copies made before the progress line's thread starts (a
+        # process forked while another thread runs may deadlock)
+        formers = Formers(jobs, lang, source, workers)
+        try:
+            with progress.task("writing programs", len(jobs)) as task:
+                ready = formers.gather(task)
+                for i, job in enumerate(jobs):
+                    formed = ready.get(i)
+                    if formed is None:  # formed here, in order
+                        formed = form(job, lang, source, task)
+                        task.advance()
+                    write_one(
+                        job,
+                        formed,
+                        lang,
+                        source,
+                        directory,
+                        written,
+                        errors,
+                        notes,
+                        made,
+                    )
+        finally:
+            formers.stop()
     return written, errors
 
 
-def _write_one(
+@dataclass
+class Formed:
+    """One job's program formed under the name its ``CODE`` statement gives
+    (:func:`form`): the file's name, its text and its ``.in`` file's (None
+    with NOSUBS); or ``error``, the message of a job that cannot be
+    written.  ``program`` is None when another process formed it."""
+
+    name: str = ""
+    text: str = ""
+    infile: str | None = None
+    error: str | None = None
+    program: Program | None = None
+
+
+def form(
+    job: Job, lang: str | None, source: str | None, task: progress.Task | None = None
+) -> Formed:
+    """The program of ``job`` in ``lang`` (or its file's language), its
+    text and its ``.in`` file's, under the name its ``CODE`` statement
+    gives; ``task`` is told each step."""
+    try:
+        name = PurePath(target_file(job, lang)).name
+        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
+        if task is not None:
+            task.doing(f"{name} (forming the equations)")
+        program = (describe_static if static else describe)(job, source)
+        program.stem = PurePath(name).stem
+        if task is not None:
+            task.doing(f"{name} (printing)")
+        text = program_source(program, name)
+        infile = in_text(program) if not program.nosubs else None
+    except (NumericsError, backends.BackendError) as exc:
+        return Formed(error=_located(job, exc))
+    return Formed(name, text, infile, None, program)
+
+
+def _located(job: Job, exc: Exception) -> str:
+    message = str(exc)
+    return message if message.startswith(job.where) else f"{job.where}: {message}"
+
+
+def write_one(
     job: Job,
+    formed: Formed,
     lang: str | None,
     source: str | None,
     directory: Path,
@@ -115,28 +204,33 @@ def _write_one(
     errors: list[str],
     notes: list[str],
     made: dict[str, tuple[Job, str]],
-    task: progress.Task,
 ) -> None:
-    """Write one job's program and ``.in`` (see :func:`write_programs`);
-    ``made`` holds the files written so far, by lower-case name."""
+    """Write one job's program and ``.in`` as ``formed`` (see
+    :func:`write_programs`); ``made`` holds the files written so far, by
+    lower-case name."""
+    if formed.error is not None:
+        errors.append(formed.error)
+        return
+    name, text, infile = formed.name, formed.text, formed.infile
+    stem = PurePath(name).stem
     try:
-        name = PurePath(target_file(job, lang)).name
-        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
-        task.doing(f"{name} (forming the equations)")
-        program = (describe_static if static else describe)(job, source)
-        program.stem = PurePath(name).stem
-        task.doing(f"{name} (printing)")
-        text = program_source(program, name)
-        infile = in_text(program) if not program.nosubs else None
         clash = name.lower() in made or (
             infile is not None
-            and f"{program.stem}.in".lower() in made
-            and made[f"{program.stem}.in".lower()][1] != infile
+            and f"{stem}.in".lower() in made
+            and made[f"{stem}.in".lower()][1] != infile
         )
         if clash:
-            own = name if name.lower() in made else f"{program.stem}.in"
+            program = formed.program
+            if program is None:  # formed in another process: again here
+                again = form(job, lang, source)
+                if again.error is not None:
+                    errors.append(again.error)
+                    return
+                program = again.program
+                assert program is not None
+            own = name if name.lower() in made else f"{stem}.in"
             earlier = made[own.lower()][0]
-            stem, suffix = PurePath(name).stem, PurePath(name).suffix
+            suffix = PurePath(name).suffix
             k = 2
             while any(f"{stem}_{k}{x}".lower() in made for x in (suffix, ".in")):
                 k += 1
@@ -146,26 +240,24 @@ def _write_one(
                     f"{stem}.{t.number}", f"{program.stem}.{t.number}", 1
                 )
             name = f"{program.stem}{suffix}"
+            stem = program.stem
             text = program_source(program, name)
             infile = in_text(program) if not program.nosubs else None
             notes.append(
-                f"{job.where} is written as {name} (reading {program.stem}.in,"
-                f" writing {program.stem}.1, ...): {own} is {earlier.where}'s"
+                f"{job.where} is written as {name} (reading {stem}.in,"
+                f" writing {stem}.1, ...): {own} is {earlier.where}'s"
             )
     except (NumericsError, backends.BackendError) as exc:
-        message = str(exc)
-        if not message.startswith(job.where):
-            message = f"{job.where}: {message}"
-        errors.append(message)
+        errors.append(_located(job, exc))
         return
     files = [(name, text)]
     if infile is not None:
-        shared = made.get(f"{program.stem}.in".lower())
+        shared = made.get(f"{stem}.in".lower())
         if shared is None:
-            files.append((f"{program.stem}.in", infile))
+            files.append((f"{stem}.in", infile))
         else:
             notes.append(
-                f"{job.where} reads {program.stem}.in, written for"
+                f"{job.where} reads {stem}.in, written for"
                 f" {shared[0].where} with the same values"
             )
     try:
@@ -177,3 +269,186 @@ def _write_one(
             written.append(path)
     except OSError as exc:
         errors.append(f"{job.where}: cannot write {file}: {exc.strerror or exc}")
+
+
+def available_workers() -> int:
+    """The processors this process may run on (``al2py code``'s default
+    number of workers)."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    if affinity is not None:
+        with contextlib.suppress(OSError):
+            return max(1, len(affinity(0)))
+    return max(1, os.cpu_count() or 1)
+
+
+class _Claims:
+    """The jobs not formed yet, ``front`` to ``back``, shared by the
+    processes forming them (an anonymous shared map, forked with them): this
+    process claims the first left, the others the last (a script's later
+    jobs tend to be larger), one at a time under a lock (a pipe holding
+    one byte)."""
+
+    def __init__(self, n: int) -> None:
+        self._map = mmap.mmap(-1, 16)
+        self._map[:] = struct.pack("qq", 0, n - 1)
+        self._lock = os.pipe()
+        os.write(self._lock[1], b"1")
+
+    def claim(self, front: bool) -> int | None:
+        """The index of the next job to form (None when none is left)."""
+        os.read(self._lock[0], 1)
+        try:
+            first, last = struct.unpack("qq", self._map[:])
+            if first > last:
+                return None
+            if front:
+                self._map[:] = struct.pack("qq", first + 1, last)
+                return first
+            self._map[:] = struct.pack("qq", first, last - 1)
+            return last
+        finally:
+            os.write(self._lock[1], b"1")
+
+    def close(self) -> None:
+        for fd in self._lock:
+            with contextlib.suppress(OSError):
+                os.close(fd)
+        self._map.close()
+
+
+@dataclass
+class _Child:
+    """A forked process forming jobs (:class:`_Claims`); it sends them
+    pickled through the pipe ``fd``."""
+
+    pid: int
+    fd: int
+
+
+def formed_apart(
+    jobs: list[Job],
+    lang: str | None,
+    source: str | None,
+    workers: int,
+    task: progress.Task,
+) -> dict[int, Formed]:
+    """The programs of ``jobs`` (by index) formed by ``workers`` processes
+    at once (:class:`Formers`)."""
+    formers = Formers(jobs, lang, source, workers)
+    try:
+        return formers.gather(task)
+    finally:
+        formers.stop()
+
+
+class Formers:
+    """The programs of ``jobs`` formed by ``workers`` processes at once:
+    this one, from the first job on, and ``workers - 1`` forked copies of
+    it, made here, from the last job back (see :class:`_Claims`); each
+    job's program depends on the job and the model alone, never on what
+    was formed before or where, so the copies form the programs this
+    process would, send them back and exit.  None are made with one
+    worker or without ``os.fork``."""
+
+    def __init__(
+        self, jobs: list[Job], lang: str | None, source: str | None, workers: int
+    ) -> None:
+        self.jobs, self.lang, self.source = jobs, lang, source
+        self.children: list[_Child] = []
+        self.claims: _Claims | None = None
+        if min(workers, len(jobs)) < 2 or not hasattr(os, "fork"):
+            return
+        # the printers' modules imported once, before the copies are made
+        from . import c, fortran, octave  # noqa: F401
+
+        try:
+            self.claims = _Claims(len(jobs))
+        except OSError:
+            return
+        for _ in range(1, min(workers, len(jobs))):
+            child = _fork(self.claims, jobs, lang, source)
+            if child is not None:
+                self.children.append(child)
+
+    def gather(self, task: progress.Task) -> dict[int, Formed]:
+        """The programs formed (by job index): this process's, then the
+        copies'.  Empty without copies; a job whose process failed is left
+        out (the caller forms it)."""
+        ready: dict[int, Formed] = {}
+        if self.claims is None or not self.children:
+            return ready
+        while (i := self.claims.claim(front=True)) is not None:
+            ready[i] = form(self.jobs[i], self.lang, self.source, task)
+            task.advance()
+        while self.children:
+            got = _collect(self.children.pop(0))
+            ready.update(got)
+            task.advance(len(got))
+        return ready
+
+    def stop(self) -> None:
+        """The copies not gathered stopped (interrupted), the claims closed."""
+        while self.children:
+            _stop(self.children.pop())
+        if self.claims is not None:
+            self.claims.close()
+            self.claims = None
+
+
+def _fork(
+    claims: _Claims, jobs: list[Job], lang: str | None, source: str | None
+) -> _Child | None:
+    """A forked process forming the jobs it claims from the back (None if
+    none could be made)."""
+    try:
+        read, write = os.pipe()
+    except OSError:
+        return None
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(read)
+        os.close(write)
+        return None
+    if pid:
+        os.close(write)
+        return _Child(pid, read)
+    # the copy: form, send, and end without the parent's exit work
+    code = 1
+    try:
+        os.close(read)
+        out = {}
+        while (i := claims.claim(front=False)) is not None:
+            try:
+                f = form(jobs[i], lang, source)
+            except Exception:  # noqa: BLE001, S112 - the parent forms it again
+                continue
+            out[i] = (f.name, f.text, f.infile, f.error)
+        with os.fdopen(write, "wb") as stream:
+            pickle.dump(out, stream, protocol=pickle.HIGHEST_PROTOCOL)
+        code = 0
+    finally:
+        os._exit(code)
+
+
+def _collect(child: _Child) -> dict[int, Formed]:
+    """What ``child`` formed (empty if it failed)."""
+    with os.fdopen(child.fd, "rb") as stream:
+        data = stream.read()
+    _pid, status = os.waitpid(child.pid, 0)
+    if status != 0:
+        return {}
+    try:
+        got = pickle.loads(data)  # noqa: S301 - our own process's
+    except Exception:  # noqa: BLE001 - formed here instead
+        return {}
+    return {i: Formed(*values) for i, values in got.items()}
+
+
+def _stop(child: _Child) -> None:
+    with contextlib.suppress(OSError):
+        os.kill(child.pid, signal.SIGKILL)
+    with contextlib.suppress(OSError):
+        os.close(child.fd)
+    with contextlib.suppress(OSError):
+        os.waitpid(child.pid, 0)

@@ -25,6 +25,7 @@ from sympy.functions.elementary.exponential import ExpBase
 from ..jobs import backends
 from ..jobs.run import (
     Column,
+    Deferred,
     Job,
     Table,
     dynamics_equations,
@@ -432,8 +433,9 @@ def describe(
 ) -> Program:
     """The program of a Dynamics/ODE ``job`` with its Input values
     (:func:`.static.describe_static` describes Algebraic/Nonlinear ones)."""
+    backends.forget_free_symbols()
     vals, keep = input_values(job, {})
-    c = dynamics_equations(job, frozenset(keep))
+    c = dynamics_equations(job, frozenset(keep), deferred=True)
     y0 = initial_state(job, c, vals)
     spec = c.spec
     made = Entries(job, vals)
@@ -482,7 +484,8 @@ def describe(
     derivs = [sub(spec.derivs[i]) for i in states]
     # a derivative that reads an acceleration, itself or through the
     # intermediates it needs, is computed after the accelerations are solved
-    late_ids = set(backends.reading(inter, derivs, accel_syms))
+    # (only those intermediates asked: the outputs' may be most of them)
+    late_ids = set(backends.reading(backends.needed(inter, derivs), derivs, accel_syms))
     x_names = iter_names("x", taken)
     first = [sub(e) for e in [*spec.mass, *spec.forcing]]
     first_targets = [("m", i // n, i % n) for i in range(n * n)]
@@ -550,9 +553,29 @@ def named_intermediates(
     z_names = iter_names("z", taken)
     memo = {} if memo is None else memo
     inter = []
+    #: a Deferred definition's objects -> their names, and the objects the
+    #: intermediates' dummies stand for, per table of names
+    straight: dict[int, tuple[dict, dict]] = {}
     for d, body in intermediates:
         s = sp.Symbol(next(z_names), real=True)
         rename[d] = s
+        if isinstance(body, Deferred):
+            # straight from the book's definition to the program's names:
+            # its objects -> their dummies -> rename, in one walk (its parts
+            # keyed apart from the dummies' in ``memo``: other objects)
+            rule, objects = straight.get(id(body.names), (None, None))
+            if rule is None:
+                rule = body.renaming(rename)
+                objects = {v: k for k, v in body.names.items()}
+                straight[id(body.names)] = (rule, objects)
+            assert objects is not None
+            inter.append((s, renamed_evaluated(body.body, rule, memo)))
+            if d in objects:
+                rule[objects[d]] = s
+            continue
+        for rule, objects in straight.values():
+            if d in objects:
+                rule[objects[d]] = s
         inter.append((s, renamed_evaluated(sp.sympify(body), rename, memo)))
     return inter
 
@@ -570,8 +593,24 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None)
     sorts them, so they are sorted here with sympy's key; anything else
     is rebuilt by sympy as ``xreplace`` does.  ``memo``: as
     :func:`..walks.xreplace`'s (calls whose rules agree on the objects of
-    every part it holds)."""
-    return xreplace(expr, rule, memo, rebuild=_sorted_only)
+    every part it holds); it also keeps one object for each part formed
+    (equal parts formed from different ones, say a definition's as the book
+    gives it and an output's made numeric, are one object: printing and
+    ``cse`` compare them at once)."""
+    memo = {} if memo is None else memo
+    same = memo.get(_SAME)
+    if same is None:
+        same = memo[_SAME] = {}
+
+    def rebuild(e: Any, args: list[Any], changed: list[int]) -> Any:
+        new = _sorted_only(e, args, changed)
+        return same.setdefault(new, new)
+
+    return xreplace(expr, rule, memo, rebuild=rebuild)
+
+
+#: the key in :func:`renamed_evaluated`'s memo of the parts formed
+_SAME = ("renamed_evaluated", "formed parts")
 
 
 def _sorted_only(expr: Any, args: list[Any], changed: list[int]) -> Any:
@@ -698,6 +737,8 @@ def in_order(name: str) -> tuple[int, str]:
 def _zeros(names: list[sp.Symbol], block: list[Assign]) -> list[Assign]:
     """``NAME = 0`` for the Specified quantities without a value that
     ``block`` uses (Autolev's "Quantities to be specified")."""
+    if not names:
+        return []
     used = _free([sp.sympify(a.expr) for a in block], [])
     return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
 

@@ -23,6 +23,7 @@ from typing import Any
 
 import sympy as sp
 
+from ..jobs import backends
 from ..jobs.records import normalize_name
 from ..jobs.run import (
     Column,
@@ -57,8 +58,9 @@ __all__ = ["describe_static"]
 def describe_static(
     job: Job, source: str | None = None, nosubs: bool | None = None
 ) -> Program:
+    backends.forget_free_symbols()
     vals, keep = input_values(job, {})
-    spec = static_equations(job, frozenset(keep))
+    spec = static_equations(job, frozenset(keep), deferred=True)
     made = Entries(job, vals)
     taken = made.taken
     nonlinear = job.kind == "NONLINEAR"

@@ -355,6 +355,17 @@ def _free_symbols(expr: Any) -> frozenset:
     return frozenset(expr.free_symbols)
 
 
+def forget_free_symbols() -> None:
+    """Forget what :func:`free_symbols_of` remembers: before a program is
+    formed, whose expressions equal those of the one before (a CODE
+    Dynamics job written in two languages) but are other objects, as are
+    its symbols (sympy keeps a thousand): each remembered answer found for
+    one would cost a comparison of the two, node by node, and hold the
+    other program's symbols, compared again wherever they meet this
+    program's."""
+    _free_symbols.cache_clear()
+
+
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
     """``lambdify``'s ``cse`` argument: the intermediates the expressions
     need, in order, then sympy's common subexpressions of the rest."""

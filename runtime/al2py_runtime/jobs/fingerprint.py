@@ -23,34 +23,18 @@ share it, which is right.
 
 from __future__ import annotations
 
-import contextlib
 import functools
-import gc
 import hashlib
 import platform
 import sys
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["FORMAT", "collector_paused", "quantity_key", "runtime_digest"]
+__all__ = ["FORMAT", "quantity_key", "runtime_digest"]
 
 #: a change of what a key holds changes this
 FORMAT = "al2py-quantity-1"
-
-
-@contextlib.contextmanager
-def collector_paused() -> Iterator[None]:
-    """Python's cyclic garbage collector paused: a walk that makes many
-    small objects would otherwise start collections that scan every object
-    of a large model (most of a walk's time)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 @functools.lru_cache(maxsize=1)

@@ -431,14 +431,14 @@ def tape_quantity(
     """``value`` as a numpy :class:`~.tape.Tape` (the expressions that
     :func:`~.run.numeric_entries` makes, not renamed); None if it holds a
     node the tape does not take."""
+    from ..collector import paused
     from ..intermediates import autoz
-    from .fingerprint import collector_paused
     from .run import resolved_entries, t
     from .tape import TapeKernel, build_tape
 
     drop, shape, entries = _entries(job, value, free)
     exprs = []
-    with collector_paused():
+    with paused():
         for e in resolved_entries(job, entries, [*drop, *keep]):
             book = autoz.book_of(e)
             exprs.append(book.rebase(e) if book is not None else e)

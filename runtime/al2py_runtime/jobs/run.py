@@ -118,11 +118,38 @@ def _base(obj: Any) -> tuple[Any, int]:
 lambdify_job = backends.lambdify_job  # one lambdify for CODE jobs and backends
 
 
-class _Slots:
-    """Sympy objects -> positional arguments of the numeric functions."""
+@dataclass(frozen=True)
+class Deferred:
+    """An intermediate's definition ``body`` as the book gives it, not made
+    numeric (``_Slots(deferred=True)``): its objects stand for the argument
+    dummies ``names`` gives them (shared by every definition of one job,
+    complete once the job's expressions are made numeric), the time
+    symbol ``t`` for ``time``.  A caller that renames the dummies again
+    (:func:`..codegen.program.named_intermediates`) renames ``body`` once,
+    straight to its own names."""
 
-    def __init__(self, job: Job) -> None:
+    body: Any
+    names: Mapping[Any, Any]
+    time: Any
+
+    def renaming(self, rename: Mapping[Any, Any]) -> dict[Any, Any]:
+        """What ``body``'s objects become when each dummy ``d`` becomes
+        ``rename[d]`` (those ``rename`` has)."""
+        rule = {obj: rename[d] for obj, d in self.names.items() if d in rename}
+        if self.time in rename:
+            rule[t] = rename[self.time]
+        return rule
+
+
+class _Slots:
+    """Sympy objects -> positional arguments of the numeric functions.
+
+    ``deferred``: the intermediates' definitions that one walk makes
+    numeric (:meth:`_definition`) are left :class:`Deferred`."""
+
+    def __init__(self, job: Job, deferred: bool = False) -> None:
         self.job = job
+        self.deferred = deferred
         self.time = sp.Dummy("T")
         self.known: dict[Any, sp.Dummy] = {}
         self.params: list[Any] = []  # objects, in argument order
@@ -236,6 +263,8 @@ class _Slots:
         # the renaming reaches holds its objects at the same level in any
         # definition (not inside a function or a derivative, which are
         # replaced whole), so its answer is the same under any rule.
+        if self.deferred:  # ``rule`` is ``known``'s (and T's) on its objects
+            return Deferred(body, self.known, self.time)
         return renamed(body, rule, self._renamed)
 
     def _derivative_param(self, obj: Any, what: str) -> None:
@@ -966,12 +995,13 @@ def dynamics_layout(job: Job, keep: frozenset) -> DynamicsLayout:
     return DynamicsLayout(table, layout, state_objs, ud_objs, zero)
 
 
-def dynamics_equations(job: Job, keep: frozenset) -> _Dynamics:
-    """The job's states, parameters and equations as sympy expressions."""
+def dynamics_equations(job: Job, keep: frozenset, deferred: bool = False) -> _Dynamics:
+    """The job's states, parameters and equations as sympy expressions;
+    ``deferred``: the intermediates' definitions may be :class:`Deferred`."""
     formed = dynamics_layout(job, keep)
     table, layout, zero = formed.table, formed.layout, formed.zero
     state_objs, ud_objs = formed.state_objs, formed.ud_objs
-    slots = _Slots(job)
+    slots = _Slots(job, deferred)
     ys = slots.add(state_objs, "y")
     uds = slots.add(ud_objs, "ud")
     derivs = []
@@ -1375,6 +1405,8 @@ def _inline_dependent(
 ) -> list[Any]:
     """``exprs`` with the intermediates that depend on ``xs`` substituted
     (each written out once, in order, then one substitution)."""
+    if not xs:  # none depends on no unknown: nothing to ask of them
+        return exprs
     full: dict[Any, Any] = {}
     for sym, expr in intermediates:
         if expr.has(*xs) or expr.free_symbols & full.keys():
@@ -1399,12 +1431,14 @@ class StaticSpec:
     outputs: list[list[Any]]
 
 
-def static_equations(job: Job, keep: frozenset) -> StaticSpec:
+def static_equations(job: Job, keep: frozenset, deferred: bool = False) -> StaticSpec:
     """The unknowns, parameters and equations of a Nonlinear/Algebraic job
-    (for Algebraic, checked to be linear in the unknowns)."""
+    (for Algebraic, checked to be linear in the unknowns); ``deferred``:
+    without unknowns, the intermediates' definitions may be
+    :class:`Deferred` (with unknowns, some are written out here)."""
     unknowns = list(job.unknowns)
     table = _without(job.rhs, set(keep) | set(unknowns))
-    slots = _Slots(job)
+    slots = _Slots(job, deferred and not unknowns)
     xs = slots.add(unknowns, "x")
     eqs = []
     if job.eqs is not None:

@@ -87,9 +87,9 @@ class Tape:
         """The entries at each row: ``times`` (N,), ``params`` (N, n);
         (N, entries).  Not finite where a value is not (numpy's warnings
         are silenced: the caller evaluates such points exactly)."""
-        from .fingerprint import collector_paused
+        from ..collector import paused
 
-        with collector_paused():
+        with paused():
             return self._run(times, params)
 
     def _run(self, times: np.ndarray, params: np.ndarray) -> np.ndarray:
@@ -224,10 +224,10 @@ def build_tape(entries: Iterable[Any], time: Any) -> tuple[Tape, list[Any]] | No
     constants, functions of time, their derivatives and intermediates) and
     its parameters (the objects, in argument order); None if a node is one
     the tape does not take."""
-    from .fingerprint import collector_paused
+    from ..collector import paused
 
     try:
-        with collector_paused():
+        with paused():
             return _build(list(entries), time)
     except Unsupported:
         return None

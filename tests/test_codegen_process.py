@@ -1,0 +1,153 @@
+"""``al2py code`` as its own process ends itself once its output is
+flushed (:func:`al2py.codegen_c.end_process`): the same files, lines and
+status as ``main`` called in-process, which returns."""
+
+from __future__ import annotations
+
+import gc
+import subprocess
+import sys
+
+from conftest import ROOT
+
+from al2py.cli import main as al2py_main
+
+TUTOR6 = ROOT / "examples" / "tutor6.al"
+
+
+def _process(*args: str, cwd) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "al2py", *args],
+        capture_output=True,  # pipes: the output is buffered until flushed
+        text=True,
+        cwd=cwd,
+        timeout=600,
+    )
+
+
+def test_the_process_writes_what_main_writes(tmp_path, capsys):
+    assert gc.isenabled()
+    assert al2py_main(["code", str(TUTOR6), "-o", str(tmp_path / "a")]) == 0
+    assert gc.isenabled()  # in-process: the collector as it was
+    inprocess = capsys.readouterr().out
+    done = _process("code", str(TUTOR6), "-o", "b", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == inprocess.replace(str(tmp_path / "a"), "b")
+    assert done.stdout.count("Wrote ") == 2
+    written = sorted(p.name for p in (tmp_path / "a").iterdir())
+    assert written == ["tutor6.c", "tutor6.in"]
+    for name in written:
+        assert (tmp_path / "b" / name).read_bytes() == (
+            tmp_path / "a" / name
+        ).read_bytes()
+
+
+def test_run_alone_ends_the_process_without_the_collector(tmp_path):
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import gc\n"
+            "from al2py.codegen_c import run_alone\n"
+            "run_alone(lambda: print('collector', gc.isenabled()) or 3)\n"
+            "print('not reached')\n",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert (done.returncode, done.stdout) == (3, "collector False\n")
+
+
+def test_the_process_ends_with_main_s_status(tmp_path, capsys):
+    (tmp_path / "none.al").write_text("constants a\nb = a + 1\n")
+    assert al2py_main(["code", str(tmp_path / "none.al")]) == 2
+    said = capsys.readouterr().err
+    done = _process("code", "none.al", cwd=tmp_path)
+    assert done.returncode == 2
+    assert done.stderr == said.replace(str(tmp_path / "none.al"), "none.al")
+    assert "has no CODE statement" in done.stderr
+
+
+# ------------------------------------------- programs formed in processes
+
+# Five jobs: one with nothing to integrate yet (an error line), two naming
+# one file (the second is named apart), one with another Output, and an
+# Algebraic job.
+MANY_JOBS = """\
+Variables X'
+Constants A, B
+Input A=2, B=0.5, X=1, TFINAL=1
+Output T, X
+CODE ODE() early.c
+X' = -A*X + B
+CODE ODE() decay.c
+CODE ODE() decay.c
+Output T, X, A*X
+CODE ODE() decay.m
+Y = 2*X
+CODE Algebraic() decayalg.m
+"""
+
+
+def _written(folder, printed: str) -> dict:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())} | {
+        "printed": printed.replace(str(folder), "OUT")
+    }
+
+
+def test_processes_write_what_one_process_writes(tmp_path, capsys):
+    """``-j 3`` (jobs formed by forked copies, one of them named apart and
+    formed again here) and ``-j 1`` write the same bytes, lines, notes and
+    errors."""
+    script = tmp_path / "many.al"
+    script.write_text(MANY_JOBS)
+    seen = []
+    for workers in ("1", "3", "2"):
+        out = tmp_path / f"j{workers}"
+        status = al2py_main(["code", "-j", workers, str(script), "-o", str(out)])
+        captured = capsys.readouterr()
+        seen.append((status, _written(out, captured.out), captured.err))
+    assert seen[0][0] == 2  # early.c
+    assert "early.c (line 5): nothing to integrate" in seen[0][2]
+    assert "is written as decay_2.c" in seen[0][2]
+    assert sorted(seen[0][1]) == [
+        "decay.c",
+        "decay.in",
+        "decay.m",
+        "decay_2.c",
+        "decay_2.in",
+        "decayalg.in",
+        "decayalg.m",
+        "printed",
+    ]
+    assert seen[1] == seen[0]
+    assert seen[2] == seen[0]
+
+
+def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
+    from al2py_runtime import progress
+    from al2py_runtime.codegen import form, formed_apart
+
+    from al2py.transpile import convert
+
+    code = convert(MANY_JOBS, "many.al", formatted=False).code
+    namespace: dict = {"__name__": "many", "__file__": str(tmp_path / "many.py")}
+    exec(compile(code, str(tmp_path / "many.py"), "exec"), namespace)  # noqa: S102
+    jobs = namespace["al"].numerics.jobs
+    with progress.task("test", len(jobs)) as task:
+        apart = formed_apart(jobs, None, None, 2, task)
+    assert sorted(apart) == list(range(len(jobs)))
+    formed_there = 0
+    for i, job in enumerate(jobs):
+        here = form(job, None, None)
+        got = apart[i]
+        assert (got.name, got.text, got.infile, got.error) == (
+            here.name,
+            here.text,
+            here.infile,
+            here.error,
+        )
+        formed_there += got.program is None and here.error is None
+    assert formed_there >= 1  # at least the last job: formed in the copy
+    assert formed_apart(jobs, None, None, 1, task) == {}
