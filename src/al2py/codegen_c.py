@@ -15,13 +15,14 @@ line and the exit status is 2 (the other files are written).
 from __future__ import annotations
 
 import argparse
-import gc
 import linecache
 import os
 import sys
 import types
 from collections.abc import Callable
 from pathlib import Path
+
+from al2py_runtime import collector
 
 from .transpile import convert
 
@@ -139,8 +140,9 @@ def run_alone(command: Callable[[], int]) -> int:
     when the process ends right after.  Only for the process's own command
     (``al2py``, ``python -m al2py``), never for a caller in the same
     process."""
-    gc.disable()
-    return end_process(command())
+    with collector.paused():
+        status = command()
+    return end_process(status)
 
 
 def end_process(status: int) -> int:

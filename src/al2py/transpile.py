@@ -2,17 +2,15 @@
 
 from __future__ import annotations
 
-import gc
 import re
 import sys
 import textwrap
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import cache, partial
 from pathlib import Path
 
 import jinja2
+from al2py_runtime import collector
 from al2py_runtime.cli import help_text
 
 from . import __version__, ir, static_checks
@@ -119,25 +117,6 @@ def _names_on_lines(script: ir.Script, errors: list[AutolevError]) -> set[str]:
     return names
 
 
-@contextmanager
-def _collector_paused() -> Iterator[None]:
-    """Python's cycle collector paused while a conversion runs.  Its full
-    collections walk every object of the process (sympy's, hundreds of
-    thousands, and the conversion's growing trees) again and again while the
-    parser and black make and drop theirs: a fifth of converting Moore's
-    Whipple, half of a 180 kB script.  The conversion's cyclic garbage (parse
-    trees, black's) waits for the next collection after it: a tenth more
-    memory at the peak.  Nothing is done when the collector is off."""
-    if not gc.isenabled():
-        yield
-        return
-    gc.disable()
-    try:
-        yield
-    finally:
-        gc.enable()
-
-
 def convert(
     text: str,
     filename: str = "<stdin>",
@@ -153,7 +132,13 @@ def convert(
     Raises :class:`al2py.errors.AutolevError` (with a source span) for input
     that is malformed or not supported.
     """
-    with _collector_paused():
+    # Python's cycle collector paused: its full collections walk every
+    # object of the process (sympy's, hundreds of thousands, and the
+    # conversion's growing trees) again and again while the parser and black
+    # make and drop theirs (a fifth of converting Moore's Whipple, half of a
+    # 180 kB script); the conversion's cyclic garbage waits for the next
+    # collection (a tenth more memory at the peak)
+    with collector.paused():
         return _convert(text, filename, script_dir, autolevpath, formatted)
 
 
