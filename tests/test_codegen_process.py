@@ -5,6 +5,7 @@ status as ``main`` called in-process, which returns."""
 from __future__ import annotations
 
 import gc
+import os
 import subprocess
 import sys
 
@@ -125,9 +126,8 @@ def test_processes_write_what_one_process_writes(tmp_path, capsys):
     assert seen[2] == seen[0]
 
 
-def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
-    from al2py_runtime import progress
-    from al2py_runtime.codegen import form, formed_apart
+def test_copies_form_each_job_as_this_process_does(tmp_path):
+    from al2py_runtime.codegen import Formers, form
 
     from al2py.transpile import convert
 
@@ -135,19 +135,40 @@ def test_formed_apart_forms_each_job_as_this_process_does(tmp_path):
     namespace: dict = {"__name__": "many", "__file__": str(tmp_path / "many.py")}
     exec(compile(code, str(tmp_path / "many.py"), "exec"), namespace)  # noqa: S102
     jobs = namespace["al"].numerics.jobs
-    with progress.task("test", len(jobs)) as task:
-        apart = formed_apart(jobs, None, None, 2, task)
-    assert sorted(apart) == list(range(len(jobs)))
-    formed_there = 0
+    pid = os.getpid()
+    formers = Formers(jobs, None, None, 2)
+    try:
+        apart = {i: formers.formed(i) for i in range(len(jobs))}
+    finally:
+        formers.stop()
     for i, job in enumerate(jobs):
         here = form(job, None, None)
         got = apart[i]
+        assert got is not None  # formed by a copy
+        assert got.program is None  # (a copy sends only the texts)
         assert (got.name, got.text, got.infile, got.error) == (
             here.name,
             here.text,
             here.infile,
             here.error,
         )
-        formed_there += got.program is None and here.error is None
-    assert formed_there >= 1  # at least the last job: formed in the copy
-    assert formed_apart(jobs, None, None, 1, task) == {}
+    assert os.getpid() == pid
+    assert Formers(jobs, None, None, 1).formed(0) is None  # one worker: no copies
+
+
+def test_copies_stopped_midway_leave_no_process(tmp_path):
+    """An error or an interrupt while copies still form: stop() ends them."""
+    import multiprocessing
+
+    from al2py_runtime.codegen import Formers
+
+    from al2py.transpile import convert
+
+    code = convert(MANY_JOBS, "many.al", formatted=False).code
+    namespace: dict = {"__name__": "many", "__file__": str(tmp_path / "many.py")}
+    exec(compile(code, str(tmp_path / "many.py"), "exec"), namespace)  # noqa: S102
+    jobs = namespace["al"].numerics.jobs
+    formers = Formers(jobs, None, None, 2)
+    assert multiprocessing.active_children()
+    formers.stop()
+    assert not multiprocessing.active_children()

@@ -18,11 +18,10 @@ equations only (no driver).  One description of the program
 from __future__ import annotations
 
 import contextlib
-import mmap
+import multiprocessing
 import os
-import pickle
 import signal
-import struct
+from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path, PurePath
 from typing import Any
@@ -41,7 +40,6 @@ __all__ = [
     "Formers",
     "available_workers",
     "form",
-    "formed_apart",
     "in_text",
     "program_source",
     "target_file",
@@ -110,11 +108,10 @@ def write_programs(
     share one ``STEM.in`` (Autolev's programs did).  Each of these is said
     in ``notes`` (``note:`` lines).
 
-    ``workers`` > 1: the jobs' programs are formed by that many processes
-    at once (this one and ``workers - 1`` forked copies of it, see
-    :func:`formed_apart`), then named and written here in order: the same
-    files, byte for byte.  Where ``os.fork`` is not available, or a forked
-    process fails, this process forms them."""
+    ``workers`` > 1: the jobs' programs are formed by that many forked
+    copies of this process at once (:class:`Formers`), then named and
+    written here in order: the same files, byte for byte.  Where ``fork``
+    is not available, or a copy fails, this process forms them."""
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
@@ -126,17 +123,16 @@ def write_programs(
     # objects: the cyclic collector, run as they are made, would scan the
     # whole model again and again (a tenth to a fifth of the writing).
     with paused():
-        # the copies made before the progress line's thread starts (a
-        # process forked while another thread runs may deadlock)
+        # the copies are forked here, before the progress line's thread
+        # starts (a process forked while another thread runs may deadlock)
         formers = Formers(jobs, lang, source, workers)
         try:
             with progress.task("writing programs", len(jobs)) as task:
-                ready = formers.gather(task)
                 for i, job in enumerate(jobs):
-                    formed = ready.get(i)
+                    formed = formers.formed(i)
                     if formed is None:  # formed here, in order
                         formed = form(job, lang, source, task)
-                        task.advance()
+                    task.advance()
                     write_one(
                         job,
                         formed,
@@ -281,174 +277,81 @@ def available_workers() -> int:
     return max(1, os.cpu_count() or 1)
 
 
-class _Claims:
-    """The jobs not formed yet, ``front`` to ``back``, shared by the
-    processes forming them (an anonymous shared map, forked with them): this
-    process claims the first left, the others the last (a script's later
-    jobs tend to be larger), one at a time under a lock (a pipe holding
-    one byte)."""
-
-    def __init__(self, n: int) -> None:
-        self._map = mmap.mmap(-1, 16)
-        self._map[:] = struct.pack("qq", 0, n - 1)
-        self._lock = os.pipe()
-        os.write(self._lock[1], b"1")
-
-    def claim(self, front: bool) -> int | None:
-        """The index of the next job to form (None when none is left)."""
-        os.read(self._lock[0], 1)
-        try:
-            first, last = struct.unpack("qq", self._map[:])
-            if first > last:
-                return None
-            if front:
-                self._map[:] = struct.pack("qq", first + 1, last)
-                return first
-            self._map[:] = struct.pack("qq", first, last - 1)
-            return last
-        finally:
-            os.write(self._lock[1], b"1")
-
-    def close(self) -> None:
-        for fd in self._lock:
-            with contextlib.suppress(OSError):
-                os.close(fd)
-        self._map.close()
-
-
-@dataclass
-class _Child:
-    """A forked process forming jobs (:class:`_Claims`); it sends them
-    pickled through the pipe ``fd``."""
-
-    pid: int
-    fd: int
-
-
-def formed_apart(
-    jobs: list[Job],
-    lang: str | None,
-    source: str | None,
-    workers: int,
-    task: progress.Task,
-) -> dict[int, Formed]:
-    """The programs of ``jobs`` (by index) formed by ``workers`` processes
-    at once (:class:`Formers`)."""
-    formers = Formers(jobs, lang, source, workers)
-    try:
-        return formers.gather(task)
-    finally:
-        formers.stop()
-
-
 class Formers:
-    """The programs of ``jobs`` formed by ``workers`` processes at once:
-    this one, from the first job on, and ``workers - 1`` forked copies of
-    it, made here, from the last job back (see :class:`_Claims`); each
-    job's program depends on the job and the model alone, never on what
-    was formed before or where, so the copies form the programs this
-    process would, send them back and exit.  None are made with one
-    worker or without ``os.fork``."""
+    """The programs of ``jobs`` formed at once by ``workers`` forked copies
+    of this process: a standard-library process pool
+    (:class:`~concurrent.futures.ProcessPoolExecutor` over ``fork``), whose
+    copies share the derived model with this process, so that only the
+    programs' texts travel back.  A job's program depends on the job and
+    the model alone, never on what was formed before or where, so a copy
+    forms what this process would.  No copies are made with one worker or
+    where ``fork`` is not available; a job whose copy failed (or whose pool
+    broke) is formed here (:meth:`formed` gives None)."""
 
     def __init__(
         self, jobs: list[Job], lang: str | None, source: str | None, workers: int
     ) -> None:
-        self.jobs, self.lang, self.source = jobs, lang, source
-        self.children: list[_Child] = []
-        self.claims: _Claims | None = None
-        if min(workers, len(jobs)) < 2 or not hasattr(os, "fork"):
+        self._futures: dict[int, Future] = {}
+        self._pool: ProcessPoolExecutor | None = None
+        n = min(workers, len(jobs))
+        if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
             return
         # the printers' modules imported once, before the copies are made
         from . import c, fortran, octave  # noqa: F401
 
         try:
-            self.claims = _Claims(len(jobs))
+            self._pool = ProcessPoolExecutor(
+                n,
+                mp_context=multiprocessing.get_context("fork"),
+                initializer=_copy_started,
+                initargs=(jobs, lang, source),
+            )
+            # the later jobs first (a script's later jobs tend to be the
+            # larger); the copies are forked at the first submit, before the
+            # pool's own thread starts
+            for i in reversed(range(len(jobs))):
+                self._futures[i] = self._pool.submit(_form_in_copy, i)
         except OSError:
-            return
-        for _ in range(1, min(workers, len(jobs))):
-            child = _fork(self.claims, jobs, lang, source)
-            if child is not None:
-                self.children.append(child)
+            self.stop()
 
-    def gather(self, task: progress.Task) -> dict[int, Formed]:
-        """The programs formed (by job index): this process's, then the
-        copies'.  Empty without copies; a job whose process failed is left
-        out (the caller forms it)."""
-        ready: dict[int, Formed] = {}
-        if self.claims is None or not self.children:
-            return ready
-        while (i := self.claims.claim(front=True)) is not None:
-            ready[i] = form(self.jobs[i], self.lang, self.source, task)
-            task.advance()
-        while self.children:
-            got = _collect(self.children.pop(0))
-            ready.update(got)
-            task.advance(len(got))
-        return ready
+    def formed(self, i: int) -> Formed | None:
+        """Job ``i``'s program as a copy formed it (waiting for it), or None:
+        no copy formed it, form it here."""
+        future = self._futures.pop(i, None)
+        if future is None:
+            return None
+        try:
+            return Formed(*future.result())
+        except Exception:  # noqa: BLE001 - the copy failed: formed here
+            return None
 
     def stop(self) -> None:
-        """The copies not gathered stopped (interrupted), the claims closed."""
-        while self.children:
-            _stop(self.children.pop())
-        if self.claims is not None:
-            self.claims.close()
-            self.claims = None
+        """The copies ended: at once when jobs are left (an error here, or
+        an interrupt), the pool shut down."""
+        pool, self._pool = self._pool, None
+        if pool is None:
+            return
+        if any(not f.done() for f in self._futures.values()):
+            for child in multiprocessing.active_children():
+                child.terminate()
+        self._futures.clear()
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
-def _fork(
-    claims: _Claims, jobs: list[Job], lang: str | None, source: str | None
-) -> _Child | None:
-    """A forked process forming the jobs it claims from the back (None if
-    none could be made)."""
-    try:
-        read, write = os.pipe()
-    except OSError:
-        return None
-    try:
-        pid = os.fork()
-    except OSError:
-        os.close(read)
-        os.close(write)
-        return None
-    if pid:
-        os.close(write)
-        return _Child(pid, read)
-    # the copy: form, send, and end without the parent's exit work
-    code = 1
-    try:
-        os.close(read)
-        out = {}
-        while (i := claims.claim(front=False)) is not None:
-            try:
-                f = form(jobs[i], lang, source)
-            except Exception:  # noqa: BLE001, S112 - the parent forms it again
-                continue
-            out[i] = (f.name, f.text, f.infile, f.error)
-        with os.fdopen(write, "wb") as stream:
-            pickle.dump(out, stream, protocol=pickle.HIGHEST_PROTOCOL)
-        code = 0
-    finally:
-        os._exit(code)
+#: a copy's jobs, language and source (:func:`_copy_started`): the state of
+#: a forked process of :class:`Formers`, never set in the process that forks
+_COPY: dict[str, Any] = {}
 
 
-def _collect(child: _Child) -> dict[int, Formed]:
-    """What ``child`` formed (empty if it failed)."""
-    with os.fdopen(child.fd, "rb") as stream:
-        data = stream.read()
-    _pid, status = os.waitpid(child.pid, 0)
-    if status != 0:
-        return {}
-    try:
-        got = pickle.loads(data)  # noqa: S301 - our own process's
-    except Exception:  # noqa: BLE001 - formed here instead
-        return {}
-    return {i: Formed(*values) for i, values in got.items()}
+def _copy_started(jobs: list[Job], lang: str | None, source: str | None) -> None:
+    """A copy of :class:`Formers` starts: it keeps the jobs (given to it
+    through ``fork``, not pickled) and leaves an interrupt to the process
+    that forked it (which ends its copies), so that no copy prints one."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _COPY.update(jobs=jobs, lang=lang, source=source)
 
 
-def _stop(child: _Child) -> None:
-    with contextlib.suppress(OSError):
-        os.kill(child.pid, signal.SIGKILL)
-    with contextlib.suppress(OSError):
-        os.close(child.fd)
-    with contextlib.suppress(OSError):
-        os.waitpid(child.pid, 0)
+def _form_in_copy(i: int) -> tuple[str, str, str | None, str | None]:
+    """In a copy: job ``i``'s program, as :class:`Formed`'s fields."""
+    f = form(_COPY["jobs"][i], _COPY["lang"], _COPY["source"])
+    return f.name, f.text, f.infile, f.error
