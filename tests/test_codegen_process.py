@@ -9,6 +9,7 @@ import os
 import subprocess
 import sys
 
+import pytest
 from conftest import ROOT
 
 from al2py.cli import main as al2py_main
@@ -172,3 +173,14 @@ def test_copies_stopped_midway_leave_no_process(tmp_path):
     assert multiprocessing.active_children()
     formers.stop()
     assert not multiprocessing.active_children()
+
+
+@pytest.mark.parametrize("value", ["0", "-2", "two", "1.5"])
+def test_jobs_must_be_a_whole_number_of_processes(tmp_path, capsys, value):
+    """``-j`` is never quietly taken as another number."""
+    with pytest.raises(SystemExit) as exit_:
+        al2py_main(["code", str(TUTOR6), "-o", str(tmp_path), "-j", value])
+    assert exit_.value.code == 2
+    err = capsys.readouterr().err
+    assert f"argument -j/--jobs: expected a whole number >= 1, not '{value}'" in err
+    assert not any(tmp_path.iterdir())

@@ -29,6 +29,17 @@ from .transpile import convert
 __all__ = ["end_process", "main", "parser", "run_alone"]
 
 
+def _positive(text: str) -> int:
+    """``-j``'s value: a whole number of processes, at least 1."""
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 1, not {text!r}")
+    return n
+
+
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="al2py code",
@@ -65,7 +76,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument(
         "-j",
         "--jobs",
-        type=int,
+        type=_positive,
         default=None,
         metavar="N",
         help="form the programs in N processes at once (default: one per"
@@ -116,7 +127,7 @@ def main(argv: list[str]) -> int:
         print(f"al2py: error: {args.input} has no CODE statement", file=sys.stderr)
         return 2
     notes: list[str] = []
-    workers = available_workers() if args.jobs is None else max(1, args.jobs)
+    workers = available_workers() if args.jobs is None else args.jobs
     written, errors = write_programs(
         ws, args.outdir, lang=args.lang, notes=notes, workers=workers
     )
