@@ -554,8 +554,9 @@ def named_intermediates(
     memo = {} if memo is None else memo
     inter = []
     #: a Deferred definition's objects -> their names, and the objects the
-    #: intermediates' dummies stand for, per table of names
-    straight: dict[int, tuple[dict, dict]] = {}
+    #: intermediates' dummies stand for, per table of names (keyed by the
+    #: table's time dummy: each job's table has its own)
+    straight: dict[Any, tuple[dict, dict]] = {}
     for d, body in intermediates:
         s = sp.Symbol(next(z_names), real=True)
         rename[d] = s
@@ -563,11 +564,11 @@ def named_intermediates(
             # straight from the book's definition to the program's names:
             # its objects -> their dummies -> rename, in one walk (its parts
             # keyed apart from the dummies' in ``memo``: other objects)
-            rule, objects = straight.get(id(body.names), (None, None))
+            rule, objects = straight.get(body.time, (None, None))
             if rule is None:
                 rule = body.renaming(rename)
                 objects = {v: k for k, v in body.names.items()}
-                straight[id(body.names)] = (rule, objects)
+                straight[body.time] = (rule, objects)
             assert objects is not None
             inter.append((s, renamed_evaluated(body.body, rule, memo)))
             if d in objects:

@@ -1308,12 +1308,11 @@ class Intermediates:
         (tree nodes, an intermediate, a function of time or a derivative
         one), or infinity when a part was met twice (its second subtree is
         not walked)."""
-        #: the variables and derivatives met, by identity (``id`` is
-        #: Python's, a sympy object's hash a call): each object once
-        found: dict[int, Any] = {}
-        among: dict[int, Any] = {}
+        #: the variables and derivatives met
+        found: set = set()
+        among: set = set()
         bad: list = []
-        seen: set[int] = set()  # the parts stacked, by identity
+        seen: set = set()  # the parts stacked (an equal part: walked once)
         #: the sets of variables of the canonical intermediates met (many
         #: share one, and each is kept as one object: their union is taken
         #: once per combination of sets)
@@ -1329,7 +1328,7 @@ class Intermediates:
             for a in todo:
                 if a.is_Atom:
                     if a.is_Symbol:
-                        found[id(a)] = a
+                        found.add(a)
                     continue
                 if a.is_Mul or a.is_Add:
                     pass  # (most parts: walked into)
@@ -1342,14 +1341,14 @@ class Intermediates:
                         shared.add(varset)
                         continue
                 elif isinstance(a, AppliedUndef):
-                    found[id(a)] = a
+                    found.add(a)
                     continue
                 elif isinstance(a, derivative):
-                    found[id(a)] = among[id(a)] = a
+                    found.add(a)
+                    among.add(a)
                     continue
-                i = id(a)
-                if i not in seen:
-                    seen.add(i)
+                if a not in seen:
+                    seen.add(a)
                     stack.append(a)
                 else:
                     size = math.inf  # (its subtree counted once)
@@ -1365,8 +1364,7 @@ class Intermediates:
             # in the order of a walk that meets each distinct part once (an
             # equal copy of a part, another object, is not walked again)
             bad = self._stray(expr)
-        variables = set(found.values())
-        derivatives = set(among.values())
+        variables, derivatives = found, among
         if not shared:
             return variables, derivatives, bad, size
         union, within = self._union(shared)
