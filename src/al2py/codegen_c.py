@@ -80,7 +80,8 @@ def parser() -> argparse.ArgumentParser:
         default=None,
         metavar="N",
         help="form the programs in N processes at once (default: one per"
-        " processor; 1: in this process alone); the files are the same",
+        " processor, at most 4; 1: in this process alone); the files are the"
+        " same",
     )
     return p
 

@@ -35,6 +35,7 @@ from .program import Program, describe
 from .static import describe_static
 
 __all__ = [
+    "DEFAULT_WORKERS",
     "LANGUAGES",
     "Formed",
     "Formers",
@@ -267,14 +268,22 @@ def write_one(
         errors.append(f"{job.where}: cannot write {file}: {exc.strerror or exc}")
 
 
+#: the most copies ``al2py code`` makes unless asked (``-j``): each copy
+#: of a large model's process soon holds much of its memory again
+DEFAULT_WORKERS = 4
+
+
 def available_workers() -> int:
-    """The processors this process may run on (``al2py code``'s default
-    number of workers)."""
+    """``al2py code``'s default number of workers: the processors this
+    process may run on, at most :data:`DEFAULT_WORKERS`."""
     affinity = getattr(os, "sched_getaffinity", None)
+    count = None
     if affinity is not None:
         with contextlib.suppress(OSError):
-            return max(1, len(affinity(0)))
-    return max(1, os.cpu_count() or 1)
+            count = len(affinity(0))
+    if count is None:
+        count = os.cpu_count() or 1
+    return max(1, min(count, DEFAULT_WORKERS))
 
 
 class Formers:
