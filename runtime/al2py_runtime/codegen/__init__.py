@@ -130,7 +130,7 @@ def write_programs(
         try:
             with progress.task("writing programs", len(jobs)) as task:
                 for i, job in enumerate(jobs):
-                    formed = formers.formed(i)
+                    formed = formers.formed(i, task)
                     if formed is None:  # formed here, in order
                         formed = form(job, lang, source, task)
                     task.advance()
@@ -302,7 +302,8 @@ class Formers:
     ) -> None:
         self._futures: dict[int, Future] = {}
         self._pool: ProcessPoolExecutor | None = None
-        n = min(workers, len(jobs))
+        self._wheres = [job.where for job in jobs]
+        n = self._workers = min(workers, len(jobs))
         if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
             return
         # the printers' modules imported once, before the copies are made
@@ -323,12 +324,14 @@ class Formers:
         except OSError:
             self.stop()
 
-    def formed(self, i: int) -> Formed | None:
-        """Job ``i``'s program as a copy formed it (waiting for it), or None:
-        no copy formed it, form it here."""
+    def formed(self, i: int, task: progress.Task | None = None) -> Formed | None:
+        """Job ``i``'s program as a copy formed it (waiting for it, which
+        ``task`` shows), or None: no copy formed it, form it here."""
         future = self._futures.pop(i, None)
         if future is None:
             return None
+        if task is not None:
+            task.doing(f"{self._wheres[i]} (in {self._workers} processes)")
         try:
             return Formed(*future.result())
         except Exception:  # noqa: BLE001 - the copy failed: formed here
