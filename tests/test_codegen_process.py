@@ -184,3 +184,12 @@ def test_jobs_must_be_a_whole_number_of_processes(tmp_path, capsys, value):
     err = capsys.readouterr().err
     assert f"argument -j/--jobs: expected a whole number >= 1, not '{value}'" in err
     assert not any(tmp_path.iterdir())
+
+
+def test_default_copies_are_the_processors_at_most_four(monkeypatch):
+    from al2py_runtime import codegen
+
+    monkeypatch.setattr(codegen.os, "sched_getaffinity", lambda pid: set(range(64)))
+    assert codegen.available_workers() == codegen.DEFAULT_WORKERS == 4
+    monkeypatch.setattr(codegen.os, "sched_getaffinity", lambda pid: {0, 1})
+    assert codegen.available_workers() == 2
