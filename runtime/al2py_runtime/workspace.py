@@ -769,9 +769,11 @@ class Workspace(Mapping):
         # the printer's memos make many small objects that all stay: the
         # garbage collector, run at its default pace, walks them again and
         # again (a fifth of the printing) and finds nothing
-        quiet = collector.Quiet()
         try:
-            with progress.task("printing the transcript", unit="responses") as task:
+            with (
+                collector.Quiet(),
+                progress.task("printing the transcript", unit="responses") as task,
+            ):
                 task.doing("naming intermediates")
                 shown = self._with_intermediates(self.responses)
                 task.doing("")
@@ -780,7 +782,6 @@ class Workspace(Mapping):
                     lines, shown, self.model.displayed, tick=task.advance
                 )
         finally:
-            quiet.restore()
             # as after deriving: sympy's cache now holds the printing's
             # passing expressions, freed here rather than at the exit
             clear_cache()
