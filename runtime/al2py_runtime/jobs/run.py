@@ -1405,7 +1405,7 @@ def _inline_dependent(
 ) -> list[Any]:
     """``exprs`` with the intermediates that depend on ``xs`` substituted
     (each written out once, in order, then one substitution)."""
-    if not xs:  # none depends on no unknown: nothing to ask of them
+    if not xs:  # no unknowns: no intermediate depends on one
         return exprs
     full: dict[Any, Any] = {}
     for sym, expr in intermediates:
