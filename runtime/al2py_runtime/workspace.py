@@ -510,7 +510,7 @@ class Workspace(Mapping):
                 value = value.xreplace({sym: old})
             elif isinstance(value, sp.Basic) and value.has(sym):
                 raise ValueError(f"{key.name} is defined in terms of itself")
-            self.table.rhs[sym] = value
+            self.table.set_rhs(sym, value)
             return sym
         if entry.kind in OBJECT_DECLS:
             raise ValueError(f"{key.name} is a {entry.kind}, not a scalar")
@@ -519,7 +519,7 @@ class Workspace(Mapping):
             value = value.xreplace({rkey: self.table.rhs[rkey]})
         if key.primes > entry.order:
             entry.order = key.primes
-        self.table.rhs[rkey] = value
+        self.table.set_rhs(rkey, value)
         return self.symbol(str(key))
 
     def _store_element(self, key: Key, value: Any) -> Any:

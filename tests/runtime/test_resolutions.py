@@ -73,3 +73,19 @@ def test_a_vector_split_again_names_nothing_and_gives_the_same_answer():
     for (coefs, rest), m in zip(other, vec.to_matrix(a), strict=True):
         formed = book.expand(rest + coefs[0] * u1 + coefs[1] * u2)
         assert sp.simplify(formed - m) == 0
+
+
+def test_resolvers_are_kept_until_a_right_hand_side_is_written():
+    al, n, a, q1, q2, u1, u2, c = _script()
+    t = dynamicsymbols._t
+    resolutions = al.model.resolutions
+    first = resolutions.resolver([u1])
+    assert resolutions.resolver([u1]) is first  # nothing written: kept
+    assert first(q2.diff(t)) == u2 + c
+    al.table.set_rhs(q2.diff(t), 3 * u2)  # the table's one writer
+    again = resolutions.resolver([u1])
+    assert again is not first
+    assert again(q2.diff(t)) == 3 * u2
+    # a right-hand side that may change in place is never remembered
+    al.table.set_rhs(c, sp.Matrix([1]))
+    assert resolutions.resolver([u1]) is not resolutions.resolver([u1])

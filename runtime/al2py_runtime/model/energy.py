@@ -146,5 +146,5 @@ class Energy(ModelPart):
         work = time_function(name, real=True)
         self.registry.checks.append(work)
         self.table.declare(name, "variable", work, order=1)
-        self.table.rhs[sp.Derivative(work, t)] = self.power()
+        self.table.set_rhs(sp.Derivative(work, t), self.power())
         return self.ke() - work

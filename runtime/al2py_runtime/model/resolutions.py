@@ -34,25 +34,28 @@ class Resolutions:
     def __init__(self, script: ScriptNames, table: NameTable) -> None:
         self._script = script
         self._table = table
-        #: the right-hand sides the remembered answers were made with
-        self._rhs: dict | None = None
+        #: the table's count of changes the remembered answers were made at
+        #: (None: nothing remembered yet)
+        self._changes: int | None = None
+        #: whether every right-hand side is a sympy object (a value that may
+        #: change in place, such as a mutable matrix, is never remembered)
+        self._immutable = True
         self._resolvers: dict[frozenset, Callable[[Any], Any]] = {}
 
     def resolver(self, keep: Iterable[Any] = ()) -> Callable[[Any], Any]:
         """``script.resolver(keep)``, answering an expression it has
         resolved before from memory."""
         rhs = self._table.rhs
-        if self._rhs != rhs:  # each value compared by identity first
+        if self._changes != self._table.rhs_changes:
             self._resolvers.clear()
-            self._rhs = dict(rhs)
-            if not all(isinstance(v, sp.Basic) for v in rhs.values()):
-                self._rhs = None  # a value that may change in place
+            self._changes = self._table.rhs_changes
+            self._immutable = all(isinstance(v, sp.Basic) for v in rhs.values())
         # a kept quantity without a right-hand side changes nothing
         kept = frozenset(k for k in (sp.sympify(x) for x in keep) if k in rhs)
         found = self._resolvers.get(kept)
         if found is None:
             found = self._remembering(self._script.resolver(kept))
-            if self._rhs is not None:
+            if self._immutable:
                 self._resolvers[kept] = found
         return found
 

@@ -47,8 +47,12 @@ class NameTable:
         #: declared and assigned scalar names -> :class:`Entry`
         self.entries: dict[str, Entry] = {}
         #: right-hand sides: a quantity's symbol or a variable's derivative
-        #: (``Derivative(X, t)``) -> its value
+        #: (``Derivative(X, t)``) -> its value; read here, written only by
+        #: :meth:`set_rhs`
         self.rhs: dict[sp.Basic, Any] = {}
+        #: how many times :attr:`rhs` has been written (what remembers
+        #: answers made with the right-hand sides compares this number)
+        self.rhs_changes = 0
         #: matrices, vectors and dyadics: name -> value
         self.stored: dict[str, Any] = {}
         #: sympy object -> the name it stands for
@@ -61,6 +65,12 @@ class NameTable:
         if isinstance(obj, sp.Basic):
             self.by_obj[obj] = key
         return obj
+
+    def set_rhs(self, key: Any, value: Any) -> None:
+        """Give ``key`` (a quantity or a variable's derivative) the right-hand
+        side ``value``."""
+        self.rhs[key] = value
+        self.rhs_changes += 1
 
     def rhs_key(self, name: str, primes: int = 0) -> Any:
         """The key of :attr:`rhs` for ``name`` or its ``primes``-th derivative."""
