@@ -10,13 +10,20 @@ program in the language its file extension names (C ``.c``, MATLAB/Octave
 ``.m``, Fortran ``.f``/``.for``; see :mod:`al2py_runtime.codegen`) with the
 ``.in`` file it reads.  A job that cannot be written gets one clear error
 line and the exit status is 2 (the other files are written).
+
+The conversion imports no sympy, the derivation does: where ``fork``
+exists, a copy of this process converts the script while this one imports
+the runtime (a third of a second or more each), and sends the module's
+text back through a pipe (:func:`converted`).
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import linecache
 import os
+import signal
 import sys
 import types
 from collections.abc import Callable
@@ -24,9 +31,15 @@ from pathlib import Path
 
 from al2py_runtime import collector
 
-from .transpile import convert
+__all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
-__all__ = ["end_process", "main", "parser", "run_alone"]
+#: What the derivation and the programs import (sympy among them): this
+#: process imports them while its copy converts the script (:func:`main`).
+RUNTIME_MODULES = (
+    "al2py_runtime.workspace",
+    "al2py_runtime.functions",
+    "al2py_runtime.codegen",
+)
 
 
 def _positive(text: str) -> int:
@@ -80,15 +93,17 @@ def parser() -> argparse.ArgumentParser:
         default=None,
         metavar="N",
         help="form the programs in N processes at once (default: one per"
-        " processor, at most 4; 1: in this process alone); the files are the"
-        " same",
+        " processor, at most 4; 1: in this process alone, the script converted"
+        " here too); the files are the same",
     )
     return p
 
 
-def main(argv: list[str]) -> int:
+def main(argv: list[str], *, overlap: bool = False) -> int:
     """Returns the exit status; errors in the script raise ``AutolevError``
-    (the caller prints them)."""
+    (the caller prints them).  With ``overlap`` (the process's own command,
+    see :func:`run_alone`) a copy of this process converts the script while
+    this one imports the runtime (:func:`converted`), unless ``-j 1``."""
     args = parser().parse_args(argv)
     path = Path(args.input)
     try:
@@ -98,9 +113,10 @@ def main(argv: list[str]) -> int:
             f"al2py: error: cannot read {args.input}: {exc.strerror}", file=sys.stderr
         )
         return 2
-    # the module is run, never shown: black's formatting (a third of the
-    # conversion) is left out, as for modules over transpile.BLACK_LIMIT
-    code = convert(text, args.input, formatted=False).code
+    if overlap and args.jobs != 1:
+        code = converted(text, args.input, prepare=_import_runtime)
+    else:
+        code = _convert(text, args.input)
     module = types.ModuleType(path.stem)
     module.__file__ = str(path.with_suffix(".py"))
     # the module's text, for the progress line and errors naming .al lines
@@ -139,6 +155,141 @@ def main(argv: list[str]) -> int:
     for message in errors:
         print(f"al2py: error: {message}", file=sys.stderr)
     return 2 if errors else 0
+
+
+def _convert(text: str, filename: str) -> str:
+    """The module of script ``text``, converted in this process (its errors
+    raised).  The module is run, never shown: black's formatting (a third of
+    the conversion) is left out, as for modules over
+    ``transpile.BLACK_LIMIT``."""
+    from .transpile import convert
+
+    return convert(text, filename, formatted=False).code
+
+
+def _import_runtime() -> None:
+    for name in RUNTIME_MODULES:
+        importlib.import_module(name)
+
+
+def converted(text: str, filename: str, prepare: Callable[[], object]) -> str:
+    """The module of script ``text`` (as :func:`_convert` gives it), while
+    ``prepare()`` runs in this process.
+
+    A copy of this process (``os.fork``, made before anything heavy is
+    imported) converts the script and writes the module's text into a pipe;
+    this process runs ``prepare`` (imports the runtime and sympy), then
+    reads the text.  The copy sends the text or nothing: when it fails (an
+    error in the script, or no ``fork``, no pipe, a copy killed), the
+    script is converted here, after ``prepare``, and its errors are raised
+    and reported as always; so every message and status is the one a
+    conversion in this process gives (a script with errors reports them a
+    little later: after the runtime's import).
+
+    The copy takes the default action of SIGINT, SIGTERM and SIGHUP (it
+    ends at once, silently); this process ends it whenever it leaves
+    early (an interrupt while importing).  The copy never returns into
+    its caller's code: it ends with ``os._exit``.  The derivation gets the
+    room for deep recursion the conversion made when both ran here."""
+    copy = _Copy.start(text, filename)
+    code = None
+    try:
+        prepare()
+        if copy is not None:
+            code = copy.text()
+    finally:
+        if copy is not None:
+            copy.end()
+    if code is None:
+        return _convert(text, filename)
+    from al2py_runtime.walks import allow_deep_recursion
+
+    allow_deep_recursion()  # as the conversion does
+    return code
+
+
+#: The signals that end the copy at once (:func:`converted`).
+_ENDING = tuple(
+    getattr(signal, name)
+    for name in ("SIGINT", "SIGTERM", "SIGHUP")
+    if hasattr(signal, name)
+)
+
+
+class _Copy:
+    """A forked copy of this process converting a script
+    (:func:`converted`): its process id and the reading end of its pipe."""
+
+    def __init__(self, pid: int, reader: int) -> None:
+        self.pid = pid
+        self.reader = reader
+        self.ended = False
+
+    @classmethod
+    def start(cls, text: str, filename: str) -> _Copy | None:
+        """A copy converting ``text``; None where ``fork`` is not available
+        or fails."""
+        if not hasattr(os, "fork"):
+            return None
+        try:
+            reader, writer = os.pipe()
+        except OSError:
+            return None
+        sys.stdout.flush()
+        sys.stderr.flush()
+        # the signals wait until the copy has its own actions for them: an
+        # interrupt now reaches this process (once forked) and, in the
+        # copy, the default action, never Python's handler
+        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, _ENDING)
+        try:
+            pid = os.fork()
+        except OSError:
+            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+            os.close(reader)
+            os.close(writer)
+            return None
+        if pid == 0:  # the copy: converts, and ends there
+            os.close(reader)
+            _convert_in_copy(text, filename, writer, blocked)
+        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+        os.close(writer)
+        return cls(pid, reader)
+
+    def text(self) -> str | None:
+        """The text the copy sent, once it ended well; else None."""
+        with open(self.reader, "rb", closefd=False) as pipe:
+            data = pipe.read()
+        _, status = os.waitpid(self.pid, 0)
+        self.ended = True
+        return data.decode("utf-8") if os.waitstatus_to_exitcode(status) == 0 else None
+
+    def end(self) -> None:
+        """The copy ended (killed if still running) and its pipe closed."""
+        if not self.ended:
+            try:
+                os.kill(self.pid, signal.SIGKILL)
+                os.waitpid(self.pid, 0)
+            except (ProcessLookupError, ChildProcessError):  # reaped just now
+                pass
+            self.ended = True
+        os.close(self.reader)
+
+
+def _convert_in_copy(text: str, filename: str, writer: int, blocked: object) -> None:
+    """The copy's whole work: the module's text into the pipe ``writer``,
+    then the end of the process (status 0 once all is sent, else 1; it
+    never returns to the caller's code)."""
+    status = 1
+    try:
+        for signum in _ENDING:
+            signal.signal(signum, signal.SIG_DFL)
+        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)  # type: ignore[arg-type]
+        code = _convert(text, filename).encode("utf-8")
+        with open(writer, "wb") as pipe:
+            pipe.write(code)
+        status = 0
+    finally:
+        os._exit(status)
 
 
 def run_alone(command: Callable[[], int]) -> int:
