@@ -244,12 +244,13 @@ def test_the_process_reports_what_main_reports(tmp_path, capsys, script, said):
 
 _COPY_PROBE = """\
 import sys
-from pathlib import Path
 from al2py.codegen_c import _convert, converted
 text = open(sys.argv[1]).read()
 seen = []
-code = converted(text, "tutor6.al", prepare=lambda: seen.append(sorted(
-    m for m in ("al2py.transpile", "sympy") if m in sys.modules)))
+def step():
+    seen.append([m for m in ("al2py.transpile", "sympy") if m in sys.modules])
+    import sympy
+code = converted(text, "tutor6.al", prepare=[step, step])
 print(seen, "al2py.transpile" in sys.modules)
 assert code == _convert(text, "tutor6.al")
 """
@@ -257,8 +258,8 @@ assert code == _convert(text, "tutor6.al")
 
 def test_a_copy_converts_while_this_process_prepares(tmp_path):
     """:func:`converted` gives the conversion's text, made by a copy: this
-    process had imported neither the converter nor sympy when ``prepare``
-    ran, nor the converter afterwards (until the check converts here)."""
+    process had not imported the converter when its steps ran, nor
+    afterwards (until the check converts here)."""
     done = subprocess.run(
         [sys.executable, "-c", _COPY_PROBE, str(TUTOR6)],
         capture_output=True,
@@ -266,7 +267,44 @@ def test_a_copy_converts_while_this_process_prepares(tmp_path):
         timeout=600,
     )
     assert done.returncode == 0, done.stderr
-    assert done.stdout == "[[]] False\n"
+    assert done.stdout == "[[], ['sympy']] False\n"
+
+
+def _copy_ended() -> None:
+    """Wait until this process's child (the copy) has ended (a zombie)."""
+    import time
+
+    children = Path(f"/proc/self/task/{os.getpid()}/children")
+    for _ in range(3000):
+        pids = children.read_text().split()
+        if pids and all(
+            Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] == "Z"
+            for pid in pids
+        ):
+            return
+        time.sleep(0.01)
+    raise AssertionError("the copy did not end")
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc")
+def test_a_failed_copy_skips_the_later_steps(tmp_path):
+    """A script with errors: the steps after the first are left out, and
+    the errors are those of a conversion here."""
+    from al2py import codegen_c
+    from al2py.errors import AutolevError
+
+    steps = []
+    with pytest.raises(AutolevError) as here:
+        codegen_c._convert(BAD, "bad.al")
+    with pytest.raises(AutolevError) as copied:
+        codegen_c.converted(
+            BAD,
+            "bad.al",
+            prepare=[lambda: steps.append(1) or _copy_ended(), lambda: steps.append(2)],
+        )
+    assert steps == [1]
+    assert copied.value.format() == here.value.format()
+    assert "3 errors" in copied.value.format()
 
 
 def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
@@ -275,7 +313,7 @@ def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
     monkeypatch.delattr(codegen_c.os, "fork")
     text = TUTOR6.read_text()
     calls = []
-    code = codegen_c.converted(text, "tutor6.al", prepare=lambda: calls.append(1))
+    code = codegen_c.converted(text, "tutor6.al", prepare=[lambda: calls.append(1)])
     assert calls == [1]
     assert code == codegen_c._convert(text, "tutor6.al")
 

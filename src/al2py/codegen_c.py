@@ -26,19 +26,21 @@ import os
 import signal
 import sys
 import types
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from functools import partial
 from pathlib import Path
 
 from al2py_runtime import collector
 
 __all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
-#: What the derivation and the programs import (sympy among them): this
-#: process imports them while its copy converts the script (:func:`main`).
+#: What this process imports while its copy converts the script
+#: (:func:`main`): what the derivation imports (sympy among them), then,
+#: unless the copy has failed already, what writing the programs imports
+#: (numpy among them), which a script with errors never needs.
 RUNTIME_MODULES = (
-    "al2py_runtime.workspace",
-    "al2py_runtime.functions",
-    "al2py_runtime.codegen",
+    ("al2py_runtime.workspace", "al2py_runtime.functions"),
+    ("al2py_runtime.codegen",),
 )
 
 
@@ -114,7 +116,8 @@ def main(argv: list[str], *, overlap: bool = False) -> int:
         )
         return 2
     if overlap and args.jobs != 1:
-        code = converted(text, args.input, prepare=_import_runtime)
+        steps = [partial(_import, names) for names in RUNTIME_MODULES]
+        code = converted(text, args.input, prepare=steps)
     else:
         code = _convert(text, args.input)
     module = types.ModuleType(path.stem)
@@ -167,24 +170,26 @@ def _convert(text: str, filename: str) -> str:
     return convert(text, filename, formatted=False).code
 
 
-def _import_runtime() -> None:
-    for name in RUNTIME_MODULES:
+def _import(names: Sequence[str]) -> None:
+    for name in names:
         importlib.import_module(name)
 
 
-def converted(text: str, filename: str, prepare: Callable[[], object]) -> str:
+def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]]) -> str:
     """The module of script ``text`` (as :func:`_convert` gives it), while
-    ``prepare()`` runs in this process.
+    the steps of ``prepare`` run in this process.
 
     A copy of this process (``os.fork``, made before anything heavy is
     imported) converts the script and writes the module's text into a pipe;
-    this process runs ``prepare`` (imports the runtime and sympy), then
-    reads the text.  The copy sends the text or nothing: when it fails (an
-    error in the script, or no ``fork``, no pipe, a copy killed), the
-    script is converted here, after ``prepare``, and its errors are raised
-    and reported as always; so every message and status is the one a
-    conversion in this process gives (a script with errors reports them a
-    little later: after the runtime's import).
+    this process runs the steps (imports the runtime and sympy), then reads
+    the text.  The copy sends the text or nothing: when it fails (an error
+    in the script, or no ``fork``, no pipe, a copy killed), the script is
+    converted here and its errors are raised and reported as always; so
+    every message and status is the one a conversion in this process gives.
+    A step after the first runs only while the copy has not failed: a
+    script with errors is converted again once the first step is done (as
+    soon as when it was converted here alone: the converter's import and
+    the runtime's follow each other either way).
 
     The copy takes the default action of SIGINT, SIGTERM and SIGHUP (it
     ends at once, silently); this process ends it whenever it leaves
@@ -194,7 +199,10 @@ def converted(text: str, filename: str, prepare: Callable[[], object]) -> str:
     copy = _Copy.start(text, filename)
     code = None
     try:
-        prepare()
+        for i, step in enumerate(prepare):
+            if i and copy is not None and copy.failed():
+                break
+            step()
         if copy is not None:
             code = copy.text()
     finally:
@@ -223,7 +231,8 @@ class _Copy:
     def __init__(self, pid: int, reader: int) -> None:
         self.pid = pid
         self.reader = reader
-        self.ended = False
+        #: its exit status once it ended (and was reaped), else None
+        self.status: int | None = None
 
     @classmethod
     def start(cls, text: str, filename: str) -> _Copy | None:
@@ -255,23 +264,34 @@ class _Copy:
         os.close(writer)
         return cls(pid, reader)
 
+    def _reaped(self, options: int) -> None:
+        pid, status = os.waitpid(self.pid, options)
+        if pid:
+            self.status = os.waitstatus_to_exitcode(status)
+
+    def failed(self) -> bool:
+        """Whether the copy has ended without sending its text (not
+        waiting for it)."""
+        if self.status is None:
+            self._reaped(os.WNOHANG)
+        return self.status not in (None, 0)
+
     def text(self) -> str | None:
         """The text the copy sent, once it ended well; else None."""
         with open(self.reader, "rb", closefd=False) as pipe:
             data = pipe.read()
-        _, status = os.waitpid(self.pid, 0)
-        self.ended = True
-        return data.decode("utf-8") if os.waitstatus_to_exitcode(status) == 0 else None
+        if self.status is None:
+            self._reaped(0)
+        return data.decode("utf-8") if self.status == 0 else None
 
     def end(self) -> None:
         """The copy ended (killed if still running) and its pipe closed."""
-        if not self.ended:
+        if self.status is None:
             try:
                 os.kill(self.pid, signal.SIGKILL)
-                os.waitpid(self.pid, 0)
+                self._reaped(0)
             except (ProcessLookupError, ChildProcessError):  # reaped just now
-                pass
-            self.ended = True
+                self.status = -signal.SIGKILL
         os.close(self.reader)
 
 
