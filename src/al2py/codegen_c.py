@@ -34,6 +34,15 @@ from al2py_runtime import collector
 
 __all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
+#: The runtime's tables that the conversion reads and the derivation uses
+#: too (no sympy): imported before the copy is made, once for both.
+SHARED_MODULES = (
+    "al2py_runtime.vocabulary",
+    "al2py_runtime.safety",
+    "al2py_runtime.progress",
+    "al2py_runtime.jobs.records",
+)
+
 #: What this process imports while its copy converts the script
 #: (:func:`main`): what the derivation imports (sympy among them), then,
 #: unless the copy has failed already, what writing the programs imports
@@ -116,6 +125,7 @@ def main(argv: list[str], *, overlap: bool = False) -> int:
         )
         return 2
     if overlap and args.jobs != 1:
+        _import(SHARED_MODULES)
         steps = [partial(_import, names) for names in RUNTIME_MODULES]
         code = converted(text, args.input, prepare=steps)
     else:
