@@ -20,13 +20,14 @@ text back through a pipe (:func:`converted`).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import linecache
 import os
 import signal
 import sys
 import types
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from functools import partial
 from pathlib import Path
 
@@ -197,9 +198,9 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
     converted here and its errors are raised and reported as always; so
     every message and status is the one a conversion in this process gives.
     A step after the first runs only while the copy has not failed: a
-    script with errors is converted again once the first step is done (as
-    soon as when it was converted here alone: the converter's import and
-    the runtime's follow each other either way).
+    script with errors is converted again once the first step is done (on
+    an idle machine about as soon as when it was converted here alone: the
+    runtime's import and the converter's follow each other either way).
 
     The copy takes the default action of SIGINT, SIGTERM and SIGHUP (it
     ends at once, silently); this process ends it whenever it leaves
@@ -270,12 +271,21 @@ class _Copy:
         if pid == 0:  # the copy: converts, and ends there
             os.close(reader)
             _convert_in_copy(text, filename, writer, blocked)
-        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
-        os.close(writer)
-        return cls(pid, reader)
+        copy = cls(pid, reader)
+        try:
+            os.close(writer)
+            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+        except BaseException:  # an interrupt that waited: end the copy too
+            copy.end()
+            raise
+        return copy
 
     def _reaped(self, options: int) -> None:
-        pid, status = os.waitpid(self.pid, options)
+        try:
+            pid, status = os.waitpid(self.pid, options)
+        except ChildProcessError:  # reaped by the system (SIGCHLD ignored)
+            self.status = -1  # how it ended is not known: as a failure
+            return
         if pid:
             self.status = os.waitstatus_to_exitcode(status)
 
@@ -297,15 +307,15 @@ class _Copy:
     def end(self) -> None:
         """The copy ended (killed if still running) and its pipe closed."""
         if self.status is None:
-            try:
+            with contextlib.suppress(ProcessLookupError):
                 os.kill(self.pid, signal.SIGKILL)
-                self._reaped(0)
-            except (ProcessLookupError, ChildProcessError):  # reaped just now
-                self.status = -signal.SIGKILL
+            self._reaped(0)
         os.close(self.reader)
 
 
-def _convert_in_copy(text: str, filename: str, writer: int, blocked: object) -> None:
+def _convert_in_copy(
+    text: str, filename: str, writer: int, blocked: Iterable[int]
+) -> None:
     """The copy's whole work: the module's text into the pipe ``writer``,
     then the end of the process (status 0 once all is sent, else 1; it
     never returns to the caller's code)."""
@@ -313,7 +323,7 @@ def _convert_in_copy(text: str, filename: str, writer: int, blocked: object) -> 
     try:
         for signum in _ENDING:
             signal.signal(signum, signal.SIG_DFL)
-        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)  # type: ignore[arg-type]
+        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
         code = _convert(text, filename).encode("utf-8")
         with open(writer, "wb") as pipe:
             pipe.write(code)
