@@ -270,29 +270,35 @@ def test_a_copy_converts_while_this_process_prepares(tmp_path):
     assert done.stdout == "[[], ['sympy']] False\n"
 
 
-def _copy_ended() -> None:
-    """Wait until this process's child (the copy) has ended (a zombie)."""
-    import time
+def test_a_failed_copy_skips_the_later_steps(monkeypatch):
+    """A copy that has failed (a script with errors): the steps after the
+    first are left out, and the errors are those of a conversion here."""
+    from concurrent.futures import Future
 
-    children = Path(f"/proc/self/task/{os.getpid()}/children")
-    for _ in range(3000):
-        pids = children.read_text().split()
-        if pids and all(
-            Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] == "Z"
-            for pid in pids
-        ):
-            return
-        time.sleep(0.01)
-    raise AssertionError("the copy did not end")
-
-
-@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc")
-def test_a_failed_copy_skips_the_later_steps(tmp_path):
-    """A script with errors: the steps after the first are left out, and
-    the errors are those of a conversion here."""
     from al2py import codegen_c
     from al2py.errors import AutolevError
 
+    class FailedCopy:
+        """A pool whose copy has failed by the time the first step ends."""
+
+        def __init__(self, *args: object, **kwargs: object) -> None:
+            self.future: Future = Future()
+
+        def submit(self, *args: object) -> Future:
+            return self.future
+
+        def fail(self) -> None:
+            self.future.set_exception(RuntimeError("the copy failed"))
+
+        def shutdown(self, **kwargs: object) -> None:
+            pass
+
+    pools: list[FailedCopy] = []
+    monkeypatch.setattr(
+        codegen_c,
+        "ProcessPoolExecutor",
+        lambda *a, **k: pools.append(FailedCopy()) or pools[-1],
+    )
     steps = []
     with pytest.raises(AutolevError) as here:
         codegen_c._convert(BAD, "bad.al")
@@ -300,7 +306,10 @@ def test_a_failed_copy_skips_the_later_steps(tmp_path):
         codegen_c.converted(
             BAD,
             "bad.al",
-            prepare=[lambda: steps.append(1) or _copy_ended(), lambda: steps.append(2)],
+            prepare=[
+                lambda: steps.append(1) or pools[0].fail(),
+                lambda: steps.append(2),
+            ],
         )
     assert steps == [1]
     assert copied.value.format() == here.value.format()
@@ -310,7 +319,9 @@ def test_a_failed_copy_skips_the_later_steps(tmp_path):
 def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
     from al2py import codegen_c
 
-    monkeypatch.delattr(codegen_c.os, "fork")
+    monkeypatch.setattr(
+        codegen_c.multiprocessing, "get_all_start_methods", lambda: ["spawn"]
+    )
     text = TUTOR6.read_text()
     calls = []
     code = codegen_c.converted(text, "tutor6.al", prepare=[lambda: calls.append(1)])

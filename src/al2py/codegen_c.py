@@ -12,9 +12,9 @@ program in the language its file extension names (C ``.c``, MATLAB/Octave
 line and the exit status is 2 (the other files are written).
 
 The conversion imports no sympy, the derivation does: where ``fork``
-exists, a copy of this process converts the script while this one imports
-the runtime (a third of a second or more each), and sends the module's
-text back through a pipe (:func:`converted`).
+exists, a forked copy of this process converts the script while this one
+imports the runtime (a third of a second or more each), and gives back the
+module's text (:func:`converted`).
 """
 
 from __future__ import annotations
@@ -23,11 +23,13 @@ import argparse
 import contextlib
 import importlib
 import linecache
+import multiprocessing
 import os
 import signal
 import sys
 import types
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
 from functools import partial
 from pathlib import Path
 
@@ -190,35 +192,44 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
     """The module of script ``text`` (as :func:`_convert` gives it), while
     the steps of ``prepare`` run in this process.
 
-    A copy of this process (``os.fork``, made before anything heavy is
-    imported) converts the script and writes the module's text into a pipe;
-    this process runs the steps (imports the runtime and sympy), then reads
-    the text.  The copy sends the text or nothing: when it fails (an error
-    in the script, or no ``fork``, no pipe, a copy killed), the script is
-    converted here and its errors are raised and reported as always; so
-    every message and status is the one a conversion in this process gives.
-    A step after the first runs only while the copy has not failed: a
-    script with errors is converted again once the first step is done (on
-    an idle machine about as soon as when it was converted here alone: the
-    runtime's import and the converter's follow each other either way).
+    A copy of this process converts the script: a standard-library process
+    pool of one (:class:`~concurrent.futures.ProcessPoolExecutor` over
+    ``fork``, made before anything heavy is imported), whose result is the
+    module's text.  Meanwhile this process runs the steps (imports the
+    runtime and sympy).  A step after the first runs only while the copy
+    has not failed.  When the copy gives no text (an error in the script,
+    no ``fork``, a copy that broke), the script is converted here and its
+    errors are raised and reported as always: every message and status is
+    the one a conversion in this process gives.
 
-    The copy takes the default action of SIGINT, SIGTERM and SIGHUP (it
-    ends at once, silently); this process ends it whenever it leaves
-    early (an interrupt while importing).  The copy never returns into
-    its caller's code: it ends with ``os._exit``.  The derivation gets the
-    room for deep recursion the conversion made when both ran here."""
-    copy = _Copy.start(text, filename)
+    The copy leaves an interrupt to this process, which ends the copy
+    whenever it leaves before the text has come (:func:`_copy_started`).
+    The derivation gets the room for deep recursion the conversion made
+    when both ran here."""
+    pool = future = None
+    if "fork" in multiprocessing.get_all_start_methods():
+        with contextlib.suppress(OSError):  # no process can be made: here
+            pool = ProcessPoolExecutor(
+                1,
+                mp_context=multiprocessing.get_context("fork"),
+                initializer=_copy_started,
+            )
+            future = pool.submit(_convert_in_copy, text, filename)
     code = None
     try:
         for i, step in enumerate(prepare):
-            if i and copy is not None and copy.failed():
+            if i and future is not None and _failed(future):
                 break
             step()
-        if copy is not None:
-            code = copy.text()
+        if future is not None and not _failed(future):
+            with contextlib.suppress(Exception):  # the pool broke: here
+                code = future.result()
     finally:
-        if copy is not None:
-            copy.end()
+        if pool is not None:
+            if future is not None and not future.done():  # leaving early
+                for child in multiprocessing.active_children():
+                    child.terminate()
+            pool.shutdown(wait=True, cancel_futures=True)
     if code is None:
         return _convert(text, filename)
     from al2py_runtime.walks import allow_deep_recursion
@@ -227,109 +238,31 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
     return code
 
 
-#: The signals that end the copy at once (:func:`converted`).
-_ENDING = tuple(
-    getattr(signal, name)
-    for name in ("SIGINT", "SIGTERM", "SIGHUP")
-    if hasattr(signal, name)
-)
+def _failed(future: Future) -> bool:
+    """Whether the copy has ended without the text (not waiting for it)."""
+    return future.done() and (future.exception() is not None or future.result() is None)
 
 
-class _Copy:
-    """A forked copy of this process converting a script
-    (:func:`converted`): its process id and the reading end of its pipe."""
+def _convert_in_copy(text: str, filename: str) -> str | None:
+    """In the copy: the module's text, or None where the script has errors
+    (they are found and reported again by the process, as always)."""
+    from .errors import AutolevError
 
-    def __init__(self, pid: int, reader: int) -> None:
-        self.pid = pid
-        self.reader = reader
-        #: its exit status once it ended (and was reaped), else None
-        self.status: int | None = None
-
-    @classmethod
-    def start(cls, text: str, filename: str) -> _Copy | None:
-        """A copy converting ``text``; None where ``fork`` is not available
-        or fails."""
-        if not hasattr(os, "fork"):
-            return None
-        try:
-            reader, writer = os.pipe()
-        except OSError:
-            return None
-        sys.stdout.flush()
-        sys.stderr.flush()
-        # the signals wait until the copy has its own actions for them: an
-        # interrupt now reaches this process (once forked) and, in the
-        # copy, the default action, never Python's handler
-        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, _ENDING)
-        try:
-            pid = os.fork()
-        except OSError:
-            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
-            os.close(reader)
-            os.close(writer)
-            return None
-        if pid == 0:  # the copy: converts, and ends there
-            os.close(reader)
-            _convert_in_copy(text, filename, writer, blocked)
-        copy = cls(pid, reader)
-        try:
-            os.close(writer)
-            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
-        except BaseException:  # an interrupt that waited: end the copy too
-            copy.end()
-            raise
-        return copy
-
-    def _reaped(self, options: int) -> None:
-        try:
-            pid, status = os.waitpid(self.pid, options)
-        except ChildProcessError:  # reaped by the system (SIGCHLD ignored)
-            self.status = -1  # how it ended is not known: as a failure
-            return
-        if pid:
-            self.status = os.waitstatus_to_exitcode(status)
-
-    def failed(self) -> bool:
-        """Whether the copy has ended without sending its text (not
-        waiting for it)."""
-        if self.status is None:
-            self._reaped(os.WNOHANG)
-        return self.status not in (None, 0)
-
-    def text(self) -> str | None:
-        """The text the copy sent, once it ended well; else None."""
-        with open(self.reader, "rb", closefd=False) as pipe:
-            data = pipe.read()
-        if self.status is None:
-            self._reaped(0)
-        return data.decode("utf-8") if self.status == 0 else None
-
-    def end(self) -> None:
-        """The copy ended (killed if still running) and its pipe closed."""
-        if self.status is None:
-            with contextlib.suppress(ProcessLookupError):
-                os.kill(self.pid, signal.SIGKILL)
-            self._reaped(0)
-        os.close(self.reader)
-
-
-def _convert_in_copy(
-    text: str, filename: str, writer: int, blocked: Iterable[int]
-) -> None:
-    """The copy's whole work: the module's text into the pipe ``writer``,
-    then the end of the process (status 0 once all is sent, else 1; it
-    never returns to the caller's code)."""
-    status = 1
     try:
-        for signum in _ENDING:
-            signal.signal(signum, signal.SIG_DFL)
-        signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
-        code = _convert(text, filename).encode("utf-8")
-        with open(writer, "wb") as pipe:
-            pipe.write(code)
-        status = 0
-    finally:
-        os._exit(status)
+        return _convert(text, filename)
+    except AutolevError:
+        return None
+
+
+def _copy_started() -> None:
+    """The copy starts: an interrupt is left to the process that forked it,
+    which ends the copy (SIGTERM, its default action: this process's own
+    handlers, which unwind the command, are not the copy's), so that the
+    copy prints nothing."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for name in ("SIGTERM", "SIGHUP"):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_DFL)
 
 
 def run_alone(command: Callable[[], int]) -> int:
