@@ -8,6 +8,7 @@ import gc
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from conftest import ROOT
@@ -193,3 +194,187 @@ def test_default_copies_are_the_processors_at_most_four(monkeypatch):
     assert codegen.available_workers() == codegen.DEFAULT_WORKERS == 4
     monkeypatch.setattr(codegen.os, "sched_getaffinity", lambda pid: {0, 1})
     assert codegen.available_workers() == 2
+
+
+# ------------------------- the script converted by a copy (issue 35)
+
+#: three errors of a script: all reported, in order, whoever converts
+BAD = """\
+Variables X'
+Constants A
+X' = -A*X + Q
+Y = 3 +* 2
+Z = foo(X
+CODE ODE() bad.c
+"""
+
+#: a script that converts but whose model cannot be formed
+SINGULAR = """\
+Variables X'
+Constants A
+X' = -A*X
+M = [1, 2; 2, 4]
+N = Inv(M)
+Input A=1, X=1
+Output X
+CODE ODE() x.c
+"""
+
+
+@pytest.mark.parametrize(
+    ("script", "said"),
+    [
+        (BAD, "3 errors"),
+        (SINGULAR, "the model cannot be formed"),
+    ],
+)
+def test_the_process_reports_what_main_reports(tmp_path, capsys, script, said):
+    """The process (its script converted by a copy) and ``main`` in-process
+    (converted here) print the same messages, with status 2, no file."""
+    (tmp_path / "s.al").write_text(script)
+    assert al2py_main(["code", str(tmp_path / "s.al"), "-o", str(tmp_path / "a")]) == 2
+    inprocess = capsys.readouterr()
+    done = _process("code", "s.al", "-o", "b", cwd=tmp_path)
+    assert done.returncode == 2
+    assert said in done.stderr
+    assert done.stderr == inprocess.err.replace(str(tmp_path / "s.al"), "s.al")
+    assert done.stdout == inprocess.out == ""
+    assert not (tmp_path / "b").exists() and not (tmp_path / "a").exists()
+
+
+_COPY_PROBE = """\
+import sys
+from al2py.codegen_c import _convert, converted
+text = open(sys.argv[1]).read()
+seen = []
+def step():
+    seen.append([m for m in ("al2py.transpile", "sympy") if m in sys.modules])
+    import sympy
+code = converted(text, "tutor6.al", prepare=[step, step])
+print(seen, "al2py.transpile" in sys.modules)
+assert code == _convert(text, "tutor6.al")
+"""
+
+
+def test_a_copy_converts_while_this_process_prepares(tmp_path):
+    """:func:`converted` gives the conversion's text, made by a copy: this
+    process had not imported the converter when its steps ran, nor
+    afterwards (until the check converts here)."""
+    done = subprocess.run(
+        [sys.executable, "-c", _COPY_PROBE, str(TUTOR6)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "[[], ['sympy']] False\n"
+
+
+def test_a_failed_copy_skips_the_later_steps(monkeypatch):
+    """A copy that has failed (a script with errors): the steps after the
+    first are left out, and the errors are those of a conversion here."""
+    from concurrent.futures import Future
+
+    from al2py import codegen_c
+    from al2py.errors import AutolevError
+
+    class FailedCopy:
+        """A pool whose copy has failed by the time the first step ends."""
+
+        def __init__(self, *args: object, **kwargs: object) -> None:
+            self.future: Future = Future()
+
+        def submit(self, *args: object) -> Future:
+            return self.future
+
+        def fail(self) -> None:
+            self.future.set_exception(RuntimeError("the copy failed"))
+
+        def shutdown(self, **kwargs: object) -> None:
+            pass
+
+    pools: list[FailedCopy] = []
+    monkeypatch.setattr(
+        codegen_c,
+        "ProcessPoolExecutor",
+        lambda *a, **k: pools.append(FailedCopy()) or pools[-1],
+    )
+    steps = []
+    with pytest.raises(AutolevError) as here:
+        codegen_c._convert(BAD, "bad.al")
+    with pytest.raises(AutolevError) as copied:
+        codegen_c.converted(
+            BAD,
+            "bad.al",
+            prepare=[
+                lambda: steps.append(1) or pools[0].fail(),
+                lambda: steps.append(2),
+            ],
+        )
+    assert steps == [1]
+    assert copied.value.format() == here.value.format()
+    assert "3 errors" in copied.value.format()
+
+
+def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
+    from al2py import codegen_c
+
+    monkeypatch.setattr(
+        codegen_c.multiprocessing, "get_all_start_methods", lambda: ["spawn"]
+    )
+    text = TUTOR6.read_text()
+    calls = []
+    code = codegen_c.converted(text, "tutor6.al", prepare=[lambda: calls.append(1)])
+    assert calls == [1]
+    assert code == codegen_c._convert(text, "tutor6.al")
+
+
+def _group(pgid: int) -> list[int]:
+    """The processes of process group ``pgid`` (Linux's /proc)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        try:
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if entry.name.isdigit() and int(fields[2]) == pgid:
+            found.append(int(entry.name))
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc")
+@pytest.mark.parametrize("when", ["converting", "deriving"])
+def test_an_interrupt_ends_every_process_at_once(tmp_path, when):
+    """Ctrl-C (SIGINT to the process group) while the copy converts, or
+    later while the model is derived: ``al2py: interrupted``, status 130,
+    no file written, no process left."""
+    import signal
+    import time
+
+    script = ROOT / "tests" / "models" / "whipple_benchmark.al"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "al2py", "code", str(script), "-o", "out"],
+        cwd=tmp_path,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        deadline = time.monotonic() + 120
+        while len(_group(proc.pid)) < 2:  # the copy is converting
+            assert proc.poll() is None and time.monotonic() < deadline
+            time.sleep(0.01)
+        if when == "deriving":
+            while len(_group(proc.pid)) > 1:  # the copy has sent its text
+                assert proc.poll() is None and time.monotonic() < deadline
+                time.sleep(0.01)
+        os.killpg(proc.pid, signal.SIGINT)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+    assert (proc.returncode, err, out) == (130, "al2py: interrupted\n", "")
+    assert not (tmp_path / "out").exists()
+    time.sleep(0.1)
+    assert _group(proc.pid) == []

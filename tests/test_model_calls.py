@@ -16,7 +16,7 @@ import tokenize
 from pathlib import Path
 
 import pytest
-from al2py_runtime.model.model import MODEL_COMMANDS
+from al2py_runtime.model.model import MODEL_COMMANDS, Model
 
 from al2py import generator
 
@@ -108,3 +108,16 @@ def test_random_mixtures():
         for _ in range(rng.randint(1, 8)):
             lines += rng.choice(SPELLINGS).split("\n")
         assert generator._model_calls(lines) == _model_calls_tokenized(lines), lines
+
+
+def test_the_model_commands_are_the_marked_methods():
+    """:data:`MODEL_COMMANDS`, written out without sympy for the
+    transpiler, lists exactly the :class:`Model` methods marked ``@command``
+    or ``@query``."""
+    marked = set()
+    for name in dir(Model):
+        attr = getattr(Model, name)
+        func = attr.fget if isinstance(attr, property) else attr
+        if getattr(func, "autolev_command", False):
+            marked.add(name)
+    assert len(marked) > 80 and marked == MODEL_COMMANDS

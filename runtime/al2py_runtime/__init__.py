@@ -33,12 +33,14 @@ Matrix([[-2*(G + Derivative(U(t), t))]])
 [0, 2]]), Matrix([[U(t), -2*G]]))
 """
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .names.variables import dynamicsymbols
-from .safety import AutolevRuntimeError, MissingValueWarning
 from .version import __version__
-from .workspace import Response, Settings, Workspace, t
+
+if TYPE_CHECKING:  # the names below, for type checkers and editors
+    from .names.variables import dynamicsymbols
+    from .safety import AutolevRuntimeError, MissingValueWarning
+    from .workspace import Response, Settings, Workspace, t
 
 __all__ = [
     "Workspace",
@@ -51,6 +53,36 @@ __all__ = [
     "dynamicsymbols",
     "__version__",
 ]
+
+#: Each exported name and the module that defines it.  They are imported on
+#: first use (PEP 562, as sympy and scipy do), so that a program reading only
+#: the runtime's tables (the transpiler reads :mod:`.vocabulary`,
+#: :mod:`.safety`...) does not import sympy: ``from al2py_runtime import
+#: Workspace`` imports the workspace, and sympy with it, then.
+_LAZY = {
+    "Workspace": "workspace",
+    "Settings": "workspace",
+    "Response": "workspace",
+    "t": "workspace",
+    "AutolevRuntimeError": "safety",
+    "MissingValueWarning": "safety",
+    "dynamicsymbols": "names.variables",
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'al2py_runtime' has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
 
 
 def read_table(path: Any) -> Any:

@@ -89,7 +89,7 @@ INTERACTIVE_WORDS = {
 def _runtime_names() -> frozenset[str]:
     library = [b for b in BUILTINS.values() if b.style is Style.FUNC]
     return frozenset(b.python for b in library) | frozenset(
-        b.degrees.__name__ for b in library if b.degrees is not None
+        b.degrees for b in library if b.degrees is not None
     )
 
 

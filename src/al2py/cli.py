@@ -198,7 +198,9 @@ def main(argv: list[str] | None = None) -> int:
         from .codegen_c import run_alone
 
         if console:
-            return run_alone(lambda: _guarded(lambda: code_main(argv[1:])))
+            return run_alone(
+                lambda: _guarded(lambda: code_main(argv[1:], overlap=True))
+            )
         return _guarded(lambda: code_main(argv[1:]))
     if argv and argv[0] in SUBCOMMANDS:
         command = argv[0]

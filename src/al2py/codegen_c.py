@@ -10,23 +10,50 @@ program in the language its file extension names (C ``.c``, MATLAB/Octave
 ``.m``, Fortran ``.f``/``.for``; see :mod:`al2py_runtime.codegen`) with the
 ``.in`` file it reads.  A job that cannot be written gets one clear error
 line and the exit status is 2 (the other files are written).
+
+The conversion imports no sympy, the derivation does: where ``fork``
+exists, a forked copy of this process converts the script while this one
+imports the runtime (a third of a second or more each), and gives back the
+module's text (:func:`converted`).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import importlib
 import linecache
+import multiprocessing
 import os
+import signal
 import sys
 import types
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
+from functools import partial
 from pathlib import Path
 
 from al2py_runtime import collector
 
-from .transpile import convert
+__all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
-__all__ = ["end_process", "main", "parser", "run_alone"]
+#: The runtime's tables that the conversion reads and the derivation uses
+#: too (no sympy): imported before the copy is made, once for both.
+SHARED_MODULES = (
+    "al2py_runtime.vocabulary",
+    "al2py_runtime.safety",
+    "al2py_runtime.progress",
+    "al2py_runtime.jobs.records",
+)
+
+#: What this process imports while its copy converts the script
+#: (:func:`main`): what the derivation imports (sympy among them), then,
+#: unless the copy has failed already, what writing the programs imports
+#: (numpy among them), which a script with errors never needs.
+RUNTIME_MODULES = (
+    ("al2py_runtime.workspace", "al2py_runtime.functions"),
+    ("al2py_runtime.codegen",),
+)
 
 
 def _positive(text: str) -> int:
@@ -80,15 +107,17 @@ def parser() -> argparse.ArgumentParser:
         default=None,
         metavar="N",
         help="form the programs in N processes at once (default: one per"
-        " processor, at most 4; 1: in this process alone); the files are the"
-        " same",
+        " processor, at most 4; 1: in this process alone, the script converted"
+        " here too); the files are the same",
     )
     return p
 
 
-def main(argv: list[str]) -> int:
+def main(argv: list[str], *, overlap: bool = False) -> int:
     """Returns the exit status; errors in the script raise ``AutolevError``
-    (the caller prints them)."""
+    (the caller prints them).  With ``overlap`` (the process's own command,
+    see :func:`run_alone`) a copy of this process converts the script while
+    this one imports the runtime (:func:`converted`), unless ``-j 1``."""
     args = parser().parse_args(argv)
     path = Path(args.input)
     try:
@@ -98,9 +127,12 @@ def main(argv: list[str]) -> int:
             f"al2py: error: cannot read {args.input}: {exc.strerror}", file=sys.stderr
         )
         return 2
-    # the module is run, never shown: black's formatting (a third of the
-    # conversion) is left out, as for modules over transpile.BLACK_LIMIT
-    code = convert(text, args.input, formatted=False).code
+    if overlap and args.jobs != 1:
+        _import(SHARED_MODULES)
+        steps = [partial(_import, names) for names in RUNTIME_MODULES]
+        code = converted(text, args.input, prepare=steps)
+    else:
+        code = _convert(text, args.input)
     module = types.ModuleType(path.stem)
     module.__file__ = str(path.with_suffix(".py"))
     # the module's text, for the progress line and errors naming .al lines
@@ -139,6 +171,98 @@ def main(argv: list[str]) -> int:
     for message in errors:
         print(f"al2py: error: {message}", file=sys.stderr)
     return 2 if errors else 0
+
+
+def _convert(text: str, filename: str) -> str:
+    """The module of script ``text``, converted in this process (its errors
+    raised).  The module is run, never shown: black's formatting (a third of
+    the conversion) is left out, as for modules over
+    ``transpile.BLACK_LIMIT``."""
+    from .transpile import convert
+
+    return convert(text, filename, formatted=False).code
+
+
+def _import(names: Sequence[str]) -> None:
+    for name in names:
+        importlib.import_module(name)
+
+
+def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]]) -> str:
+    """The module of script ``text`` (as :func:`_convert` gives it), while
+    the steps of ``prepare`` run in this process.
+
+    A copy of this process converts the script: a standard-library process
+    pool of one (:class:`~concurrent.futures.ProcessPoolExecutor` over
+    ``fork``, made before anything heavy is imported), whose result is the
+    module's text.  Meanwhile this process runs the steps (imports the
+    runtime and sympy).  A step after the first runs only while the copy
+    has not failed.  When the copy gives no text (an error in the script,
+    no ``fork``, a copy that broke), the script is converted here and its
+    errors are raised and reported as always: every message and status is
+    the one a conversion in this process gives.
+
+    The copy leaves an interrupt to this process, which ends the copy
+    whenever it leaves before the text has come (:func:`_copy_started`).
+    The derivation gets the room for deep recursion the conversion made
+    when both ran here."""
+    pool = future = None
+    if "fork" in multiprocessing.get_all_start_methods():
+        with contextlib.suppress(OSError):  # no process can be made: here
+            pool = ProcessPoolExecutor(
+                1,
+                mp_context=multiprocessing.get_context("fork"),
+                initializer=_copy_started,
+            )
+            future = pool.submit(_convert_in_copy, text, filename)
+    code = None
+    try:
+        for i, step in enumerate(prepare):
+            if i and future is not None and _failed(future):
+                break
+            step()
+        if future is not None and not _failed(future):
+            with contextlib.suppress(Exception):  # the pool broke: here
+                code = future.result()
+    finally:
+        if pool is not None:
+            if future is not None and not future.done():  # leaving early
+                for child in multiprocessing.active_children():
+                    child.terminate()
+            pool.shutdown(wait=True, cancel_futures=True)
+    if code is None:
+        return _convert(text, filename)
+    from al2py_runtime.walks import allow_deep_recursion
+
+    allow_deep_recursion()  # as the conversion does
+    return code
+
+
+def _failed(future: Future) -> bool:
+    """Whether the copy has ended without the text (not waiting for it)."""
+    return future.done() and (future.exception() is not None or future.result() is None)
+
+
+def _convert_in_copy(text: str, filename: str) -> str | None:
+    """In the copy: the module's text, or None where the script has errors
+    (they are found and reported again by the process, as always)."""
+    from .errors import AutolevError
+
+    try:
+        return _convert(text, filename)
+    except AutolevError:
+        return None
+
+
+def _copy_started() -> None:
+    """The copy starts: an interrupt is left to the process that forked it,
+    which ends the copy (SIGTERM, its default action: this process's own
+    handlers, which unwind the command, are not the copy's), so that the
+    copy prints nothing."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for name in ("SIGTERM", "SIGHUP"):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_DFL)
 
 
 def run_alone(command: Callable[[], int]) -> int:

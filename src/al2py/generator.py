@@ -18,7 +18,6 @@ import tokenize
 from collections import defaultdict
 
 from al2py_runtime import vocabulary as vocab
-from al2py_runtime.model.model import MODEL_COMMANDS
 from al2py_runtime.safety import ECHO, echo_lines
 from al2py_runtime.vocabulary import (
     BUILTINS,
@@ -29,6 +28,7 @@ from al2py_runtime.vocabulary import (
     Match,
     Style,
 )
+from al2py_runtime.vocabulary.calls import MODEL_COMMANDS
 
 from . import ir
 from .analysis import (
@@ -1057,7 +1057,7 @@ class Generator:
         if b.style is Style.FUNC:
             name = b.python
             if self._facts.degrees and b.degrees is not None:
-                name = b.degrees.__name__
+                name = b.degrees
             self.imports.use(_FUNCTIONS, name)
             return f"{name}({self._args(node.args)})", ATOM
         if b.style is Style.METHOD:

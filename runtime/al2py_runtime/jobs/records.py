@@ -8,12 +8,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from pathlib import PurePath
-from typing import Any
-
-import sympy as sp
+from typing import TYPE_CHECKING, Any
 
 from ..safety import AutolevRuntimeError
 from .units import UnitSystem
+
+if TYPE_CHECKING:  # annotations only: the transpiler reads KINDS without sympy
+    import sympy as sp
 
 __all__ = [
     "NumericsError",

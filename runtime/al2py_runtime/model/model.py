@@ -37,6 +37,7 @@ from typing import Any
 from ..names.settings import Settings
 from ..names.table import NameTable
 from ..safety import Statements
+from ..vocabulary.calls import MODEL_COMMANDS
 from .bodies import MassAndLoads
 from .energy import Energy
 from .equations import KaneEquations
@@ -89,19 +90,3 @@ class Model(
         #: tidy's results, each formed once (responses at import and in the
         #: transcript show the same measure numbers many times)
         self.tidier = Tidier()
-
-
-#: The commands a :class:`Model` answers (``al.model.simprot``,
-#: ``al.model.v2pts``, ``al.model.fr``...): its methods marked ``@command``.
-#: The generator writes these calls as ``al.model.NAME``.
-def _commands(cls: type) -> frozenset[str]:
-    out = set()
-    for name in dir(cls):
-        attr = getattr(cls, name)
-        func = attr.fget if isinstance(attr, property) else attr
-        if getattr(func, "autolev_command", False):
-            out.add(name)
-    return frozenset(out)
-
-
-MODEL_COMMANDS = _commands(Model)

@@ -14,12 +14,17 @@ function the numeric backends use.  The styles:
 * ``PENDING``: valid Autolev that al2py does not translate yet.
 
 >>> row = lookup("cos")
->>> row.style, row.python, row.arity_error(2), row.degrees.__name__
+>>> row.style, row.python, row.arity_error(2), row.degrees
 (<Style.FUNC: 'func'>, 'cos', 'Cos takes exactly 1 argument, not 2', 'cos_deg')
+>>> import sympy
 >>> printed_name(sympy.ceiling(sympy.Symbol("x"))), by_spelling("inverse").name
 ('CEIL', 'INV')
 
-A made-up function is one more row (:func:`registered` adds it for a while):
+The table names a library function's implementation (``python``, in
+:mod:`al2py_runtime.functions`) and looks it up there when first asked for
+(:attr:`Builtin.implementation`), so that reading the table -- as the
+transpiler does -- imports no sympy.  A made-up function is one more row,
+given its implementation (:func:`registered` adds it for a while):
 
 >>> class hav(sympy.Function):
 ...     '''A haversine that stays unevaluated.'''
@@ -40,12 +45,12 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from enum import Enum
 from functools import cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import sympy
-
-from .. import functions as fn
 from .kinds import Kind
+
+if TYPE_CHECKING:
+    import sympy
 
 __all__ = [
     "Style",
@@ -156,25 +161,48 @@ class Builtin:
     #: means the object there and the quantity elsewhere.
     objects: tuple[int, ...] = ()
     objects_from: int | None = None
-    #: FUNC: the function generated code calls (exported by
-    #: :mod:`al2py_runtime.functions` as ``python``).
-    implementation: Callable[..., Any] | None = None
-    #: FUNC: the variant used while ``Degrees ON`` is in force.
-    degrees: Callable[..., Any] | None = None
-    #: FUNC: the sympy function class its unevaluated values have (``MAX``
-    #: gives ``Max(...)``); by default the implementation, when a class.
-    head: type | None = None
+    #: FUNC: the name in :mod:`al2py_runtime.functions` of the variant used
+    #: while ``Degrees ON`` is in force (``"sin_deg"``).
+    degrees: str | None = None
+    #: FUNC: the name of the sympy function class its unevaluated values have
+    #: (``MAX`` gives ``Max(...)``); by default the implementation, when a
+    #: class.
+    head: str | None = None
     #: FUNC: the function on plain numbers (float or complex) the numeric
     #: backends call for ``head``; None when Python's ``math``/``cmath``
     #: spell it as sympy does.
     numeric: Callable[..., Any] | None = None
+    #: FUNC, a row made outside the table: its implementation and degree
+    #: variant, which :func:`register` adds to :mod:`al2py_runtime.functions`
+    #: as ``python`` and ``degrees``.
+    given: tuple[Callable[..., Any] | None, ...] = ()
+
+    @property
+    def implementation(self) -> Callable[..., Any] | None:
+        """FUNC: the function generated code calls, exported by
+        :mod:`al2py_runtime.functions` as ``python`` (imported, and sympy
+        with it, now)."""
+        return self._function(self.python) if self.style is Style.FUNC else None
+
+    @property
+    def degrees_variant(self) -> Callable[..., Any] | None:
+        """FUNC: the function ``degrees`` names, or None."""
+        return None if self.degrees is None else self._function(self.degrees)
 
     @property
     def sympy_head(self) -> type | None:
         if self.head is not None:
-            return self.head
+            import sympy
+
+            return getattr(sympy, self.head)
         impl = self.implementation
         return impl if isinstance(impl, type) else None
+
+    @staticmethod
+    def _function(name: str) -> Callable[..., Any]:
+        from .. import functions
+
+        return getattr(functions, name)
 
     def takes_object(self, i: int) -> bool:
         return i in self.objects or (
@@ -199,16 +227,25 @@ class Builtin:
 def library(
     name: str,
     python: str,
-    implementation: Callable[..., Any],
+    implementation: Callable[..., Any] | None = None,
     n: int = 1,
     hi: int | None = -1,
+    degrees: Callable[..., Any] | str | None = None,
     **more: Any,
 ) -> Builtin:
     """The row of a library function: ``n`` arguments (up to ``hi``; None
-    for no limit), the kind of its first argument."""
+    for no limit), the kind of its first argument.  The table's own rows
+    name their functions (``python``, ``degrees``) in
+    :mod:`al2py_runtime.functions`; a row made outside gives them
+    (``implementation`` and the ``degrees`` function), and :func:`register`
+    adds them there."""
     top = n if hi == -1 else hi
+    given: tuple[Callable[..., Any] | None, ...] = ()
+    if implementation is not None or callable(degrees):
+        given = (implementation, degrees if callable(degrees) else None)
+        degrees = getattr(degrees, "__name__", degrees)
     return Builtin(
-        name, Style.FUNC, python, n, top, _first, implementation=implementation, **more
+        name, Style.FUNC, python, n, top, _first, degrees=degrees, given=given, **more
     )
 
 
@@ -264,30 +301,30 @@ def _pending(name: str, issue: str, lo: int = 0, hi: int | None = None) -> Built
 
 _TABLE: list[Builtin] = [
     # -- library functions (tutorial Summary: operators and library functions)
-    library("ABS", "Abs", fn.Abs, numeric=abs),
-    library("SIN", "sin", fn.sin, degrees=fn.sin_deg),
-    library("COS", "cos", fn.cos, degrees=fn.cos_deg),
-    library("TAN", "tan", fn.tan, degrees=fn.tan_deg),
-    library("SINH", "sinh", fn.sinh),
-    library("COSH", "cosh", fn.cosh),
-    library("TANH", "tanh", fn.tanh),
-    library("ASIN", "asin", fn.asin, degrees=fn.asin_deg),
-    library("ACOS", "acos", fn.acos, degrees=fn.acos_deg),
-    library("ATAN", "atan", fn.atan, degrees=fn.atan_deg),
-    library("ATAN2", "atan2", fn.atan2, 2, degrees=fn.atan2_deg),
-    library("LOG", "log", fn.log),
-    library("LOG10", "log10", fn.log10),
-    library("EXP", "exp", fn.exp),
-    library("SQR", "sqr", fn.sqr),
-    library("SQRT", "sqrt", fn.sqrt),
-    library("FACTORIAL", "factorial", fn.factorial),
-    library("CEIL", "ceil", fn.ceil),
-    library("FLOOR", "floor", fn.floor),
-    library("INT", "trunc", fn.trunc, numeric=_trunc),
-    library("ROUND", "nint", fn.nint, numeric=_nint),
-    library("MAX", "maxof", fn.maxof, 2, None, head=sympy.Max),
-    library("MIN", "minof", fn.minof, 2, None, head=sympy.Min),
-    library("SIGN", "sign", fn.sign),
+    library("ABS", "Abs", numeric=abs),
+    library("SIN", "sin", degrees="sin_deg"),
+    library("COS", "cos", degrees="cos_deg"),
+    library("TAN", "tan", degrees="tan_deg"),
+    library("SINH", "sinh"),
+    library("COSH", "cosh"),
+    library("TANH", "tanh"),
+    library("ASIN", "asin", degrees="asin_deg"),
+    library("ACOS", "acos", degrees="acos_deg"),
+    library("ATAN", "atan", degrees="atan_deg"),
+    library("ATAN2", "atan2", n=2, degrees="atan2_deg"),
+    library("LOG", "log"),
+    library("LOG10", "log10"),
+    library("EXP", "exp"),
+    library("SQR", "sqr"),
+    library("SQRT", "sqrt"),
+    library("FACTORIAL", "factorial"),
+    library("CEIL", "ceil"),
+    library("FLOOR", "floor"),
+    library("INT", "trunc", numeric=_trunc),
+    library("ROUND", "nint", numeric=_nint),
+    library("MAX", "maxof", n=2, hi=None, head="Max"),
+    library("MIN", "minof", n=2, hi=None, head="Min"),
+    library("SIGN", "sign"),
     # -- mathematical commands
     Builtin("D", Style.METHOD, "d", 2, 3, _d, objects=(2,)),
     Builtin("DT", Style.METHOD, "dt", 1, 2, _first, objects=(1,)),
@@ -431,11 +468,12 @@ def register(row: Builtin) -> Builtin:
     """Add a built-in.  A library function's implementation (and degree
     variant) become names of :mod:`al2py_runtime.functions`, which generated
     modules import."""
+    from .. import functions as fn
+
     if row.name in BUILTINS:
         raise ValueError(f"{row.name} is already a built-in")
-    for impl in (row.implementation, row.degrees):
-        if row.style is Style.FUNC and impl is not None:
-            name = row.python if impl is row.implementation else impl.__name__
+    for name, impl in zip((row.python, row.degrees), row.given, strict=False):
+        if impl is not None:
             if getattr(fn, name, impl) is not impl:
                 raise ValueError(f"al2py_runtime.functions already has {name}")
             setattr(fn, name, impl)
@@ -446,11 +484,12 @@ def register(row: Builtin) -> Builtin:
 
 def unregister(name: str) -> None:
     """Remove the built-in ``name`` added by :func:`register`."""
+    from .. import functions as fn
+
     row = BUILTINS.pop(name.upper())
-    if row.style is Style.FUNC:
-        for attr in (row.python, getattr(row.degrees, "__name__", None)):
-            if attr is not None and hasattr(fn, attr):
-                delattr(fn, attr)
+    for attr, impl in zip((row.python, row.degrees), row.given, strict=False):
+        if impl is not None and attr is not None and hasattr(fn, attr):
+            delattr(fn, attr)
     _changed()
 
 

@@ -1,0 +1,92 @@
+"""The converter imports no sympy, numpy or scipy (issue 35).
+
+Converting a script reads the runtime's tables (the vocabulary, the CODE
+options, the settings...) but evaluates nothing, so ``al2py x.al -o x.py``,
+``al2py check``'s conversion and ``al2py code``'s conversion start without
+the 0.4 s that sympy takes to import.  Each check runs in a fresh
+interpreter, since this test process has imported sympy long ago.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+TUTOR6 = Path(__file__).parents[1] / "examples" / "tutor6.al"
+HEAVY = ("sympy", "numpy", "scipy", "mpmath")
+
+_REPORT = (
+    "import json, sys\n"
+    "print(json.dumps([m for m in {heavy!r} if m in sys.modules]))\n"
+)
+
+
+def _loaded(program: str, tmp_path: Path) -> list[str]:
+    """The heavy modules loaded once ``program`` has run, in a fresh
+    interpreter in ``tmp_path``."""
+    code = program + _REPORT.format(heavy=HEAVY)
+    proc = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=120,
+    )
+    assert proc.returncode == 0, proc.stderr
+    return json.loads(proc.stdout.splitlines()[-1])
+
+
+def test_convert_imports_no_sympy(tmp_path):
+    program = (
+        "from al2py import convert\n"
+        f"code = convert(open({str(TUTOR6)!r}).read(), 'tutor6.al').code\n"
+        "assert 'al.model.kane' in code or 'kanes_method' in code, code[:200]\n"
+    )
+    assert _loaded(program, tmp_path) == []
+
+
+@pytest.mark.parametrize("command", [["-o", "tutor6.py"], ["check"]])
+def test_the_command_line_converts_without_sympy(tmp_path, command):
+    """``al2py tutor6.al -o tutor6.py`` and ``al2py check tutor6.al`` (no
+    transcript beside it: conversion only)."""
+    (tmp_path / "tutor6.al").write_text(TUTOR6.read_text())
+    argv = ["check", "tutor6.al"] if command == ["check"] else ["tutor6.al", *command]
+    program = (
+        "import contextlib, io\n"
+        "from al2py.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    assert main({argv!r}) == 0\n"
+    )
+    assert _loaded(program, tmp_path) == []
+    if command != ["check"]:
+        assert "def " in (tmp_path / "tutor6.py").read_text()
+
+
+def test_the_runtime_exports_its_names_on_first_use(tmp_path):
+    """``import al2py_runtime`` alone loads no sympy; its exported names are
+    all there (``dir``, ``__all__``) and import the workspace when used."""
+    program = (
+        "import al2py_runtime\n"
+        "names = set(dir(al2py_runtime))\n"
+        "assert set(al2py_runtime.__all__) <= names, names\n"
+    )
+    assert _loaded(program, tmp_path) == []
+    program = (
+        "from al2py_runtime import Workspace, dynamicsymbols, t\n"
+        "import al2py_runtime, sympy\n"
+        "for name in al2py_runtime.__all__:\n"
+        "    getattr(al2py_runtime, name)\n"
+        "assert isinstance(t, sympy.Symbol) and Workspace.__name__ == 'Workspace'\n"
+        "assert dynamicsymbols('q').diff(t).has(t)\n"
+        "try:\n"
+        "    al2py_runtime.nothing\n"
+        "except AttributeError:\n"
+        "    pass\n"
+        "else:\n"
+        "    raise SystemExit('no AttributeError')\n"
+    )
+    assert "sympy" in _loaded(program, tmp_path)
