@@ -15,7 +15,7 @@ from sympy.printing.fortran import FCodePrinter
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering, printed_once
+from .printers import Remembering
 from .program import Assign, Program, one_based_target
 
 __all__ = ["fortran_source"]
@@ -52,7 +52,6 @@ class _Printer(Remembering, FCodePrinter):
         expr = expr.xreplace(self.mangled_symbols)
         return super(FCodePrinter, self)._print_Symbol(expr)
 
-    @printed_once
     def _print_Add(self, expr: Any) -> str:
         # FCodePrinter._print_Add: complex numbers apart
         number = self.remembered_number
@@ -61,7 +60,6 @@ class _Printer(Remembering, FCodePrinter):
                 return super()._print_Add(expr)
         return self.print_ordered_add(expr)
 
-    @printed_once
     def _print_Mul(self, expr: Any) -> str:
         # FCodePrinter._print_Mul, then CodePrinter._print_Mul, with the
         # number tests, precedences and sort keys remembered

@@ -645,13 +645,18 @@ class CPrinter(C99CodePrinter):
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
         return expr if without_re(expr) else super()._handle_UnevaluatedExpr(expr)
 
+    def print_part(self, expr: Any) -> str:
+        """The text of ``expr``, a part of the statement being printed (the
+        program printers remember it: :mod:`..codegen.printers`)."""
+        return self._print(expr)
+
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
         # sympy's (StrPrinter) computes the precedence twice, and finds a
         # symbol's by walking its class's bases: a fifth of printing time
         prec = _precedence(item)
         if prec < level or (not strict and prec <= level):
-            return f"({self._print(item)})"
-        return self._print(item)
+            return f"({self.print_part(item)})"
+        return self.print_part(item)
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
         # StrPrinter._print_Add (terms in their own order) with precedences
@@ -797,10 +802,10 @@ def join_sum(
 ) -> str:
     """``StrPrinter._print_Add``'s text of a sum of ``terms`` in that order,
     with ``precedence`` the printer's (shared by the C, Fortran and MATLAB
-    printers)."""
+    printers, each term printed by their ``print_part``)."""
     out = []
     for term in terms:
-        t = printer._print(term)
+        t = printer.print_part(term)
         if t.startswith("-") and not term.is_Add:
             sign = "-"
             t = t[1:]
