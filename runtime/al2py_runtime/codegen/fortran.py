@@ -65,12 +65,9 @@ class _Printer(Remembering, FCodePrinter):
         # number tests, precedences and sort keys remembered
         if self.remembered_number(expr) and expr.is_imaginary:
             return super()._print_Mul(expr)
-        if self.order in ("old", "none"):
-            factors = sp.Mul.make_args
-        else:
-            factors = self.remembered_factors
+        order = None if self.order in ("old", "none") else self.remembered_factors
         sign, a_str, b_str = backends.product_parts(
-            self, expr, self.remembered_precedence(expr), factors
+            self, expr, self.remembered_precedence(expr), order
         )[::2]
         return backends.join_product(sign, a_str, b_str)
 

@@ -45,15 +45,12 @@ class _Printer(Remembering, OctaveCodePrinter):
             and (sp.S.ImaginaryUnit * expr).is_Integer
         ):
             return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
-        if self.order in ("old", "none"):
-            factors = sp.Mul.make_args
-        else:
-            factors = self.remembered_factors
+        order = None if self.order in ("old", "none") else self.remembered_factors
         sign, a, a_str, b, b_str = backends.product_parts(
             self,
             expr,
             self.remembered_precedence(expr),
-            factors,
+            order,
             rationals=True,
             lone_minus=False,
         )

@@ -177,11 +177,23 @@ class Remembering(ProgramPrinter):
             return super()._as_ordered_terms(expr, order)  # type: ignore[misc]
         return _ordered_terms(expr, self._keys, self._numbers)
 
-    def remembered_factors(self, expr: Any) -> list:
-        """``expr.as_ordered_factors()``."""
-        if not isinstance(expr, sp.Mul):
-            return expr.as_ordered_factors()
-        cpart, ncpart = expr.args_cnc()
+    def remembered_factors(self, factors: list) -> list:
+        """``as_ordered_factors()`` of the product of ``factors`` (its
+        arguments): sympy's ``args_cnc``, the commutative ones sorted by
+        their keys."""
+        for i, f in enumerate(factors):
+            if not f.is_commutative:
+                cpart, ncpart = factors[:i], factors[i:]
+                break
+        else:
+            cpart, ncpart = list(factors), []
+        if (
+            cpart
+            and cpart[0].is_Number
+            and cpart[0].is_extended_negative
+            and cpart[0] is not sp.S.NegativeOne
+        ):
+            cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
         keys = self._keys
         cpart.sort(key=lambda x: sort_key_in(x, keys))
         return cpart + ncpart
@@ -248,6 +260,9 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
             and mul_args[0].is_negative
         ):
             return add_args
+    ordered = _ordered_symbol_terms(add_args)
+    if ordered is not None:
+        return ordered
     key, reverse = expr._parse_order(None)
     result, _ = as_terms(
         expr,
@@ -263,3 +278,68 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
     ordered = sorted(plain_terms, key=key, reverse=True)
     ordered += sorted(orders, key=key, reverse=True)
     return [term for term, _ in ordered]
+
+
+def _ordered_symbol_terms(terms: list) -> list | None:
+    """``terms`` (a sum's) in ``as_ordered_terms``'s order when each is a
+    number or a number times powers of symbols, with positive whole
+    exponents (almost every sum of a program), else None.
+
+    sympy orders the terms by their exponents in the generators (the
+    bases) sorted by ``default_sort_key``, the larger exponent first at the
+    first generator where two terms differ, then by their coefficients.
+    The key of a plain symbol is its name (then nothing that differs
+    between two symbols of one class and name), so that with no two bases
+    of one name, a term's monomial as ``(0, name, -exponent)`` of each of
+    its bases by name, then ``(1,)``, orders as sympy's: the first entry
+    where two terms differ is at the first base where their exponents do
+    (an exponent is positive: a base one term has and the other not puts
+    the one that has it first).  Two terms of one monomial (sympy then
+    compares their coefficients) are left to sympy's order (None)."""
+    keyed = []
+    named: dict = {}  # name -> the base of that name
+    for term in terms:
+        kind = type(term)
+        if kind is sp.Mul:
+            factors = term.args
+            if factors[0].is_Number:
+                factors = factors[1:]
+        elif kind is sp.Symbol or kind is sp.Pow:
+            factors = (term,)
+        elif term.is_Number:
+            factors = ()
+        else:
+            return None
+        entries = []
+        for f in factors:
+            kind = type(f)
+            if kind is sp.Symbol:
+                base, exp = f, 1
+            elif (
+                kind is sp.Pow
+                and type(f.base) is sp.Symbol
+                and f.exp.is_Integer
+                and f.exp.p > 0
+            ):
+                base, exp = f.base, f.exp.p
+            else:
+                return None
+            name = base.name
+            if named.setdefault(name, base) != base or not base.is_commutative:
+                return None
+            entries.append((0, name, -exp))
+        entries.sort()
+        for i in range(1, len(entries)):
+            if entries[i][1] == entries[i - 1][1]:
+                return None  # one base twice (sympy keeps the last)
+        entries.append((1,))
+        keyed.append((tuple(entries), term))
+    keyed.sort(key=_first)
+    for i in range(1, len(keyed)):
+        if keyed[i][0] == keyed[i - 1][0]:
+            return None
+    return [term for _, term in keyed]
+
+
+def _first(pair: tuple) -> Any:
+    return pair[0]
