@@ -32,6 +32,15 @@ class _Printer(Remembering, FCodePrinter):
         super().__init__({"source_format": "fixed", "standard": 95, "strict": True})
         self._used_names: set[str] = set()
 
+    def plain_lines(self, text: str) -> list[str]:
+        """sympy's fixed form: a line after six blanks (no block indents a
+        single line), wrapped when longer than 72 columns, a line beginning
+        with ``!`` a comment (by sympy's ``_format_code`` then)."""
+        line = "      " + text
+        if len(line) > _W or text[:1] in ("", " ", "\t", "!") or "\n" in text:
+            return self._format_code(text.splitlines())
+        return [line.rstrip()]
+
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
         return f"merge(0d0, sign(1d0, {x}), {x} == 0d0)"
@@ -317,9 +326,8 @@ def _locals(program: Program, block: list[Assign]) -> list[str]:
 
 
 def _uses(block: list[Assign], name: str) -> bool:
-    return any(
-        sp.Symbol(name, real=True) in sp.sympify(a.expr).free_symbols for a in block
-    )
+    symbol = sp.Symbol(name, real=True)
+    return any(symbol in backends.free_symbols_of(a.expr) for a in block)
 
 
 def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> list[str]:

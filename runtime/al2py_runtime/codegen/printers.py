@@ -23,6 +23,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.core.exprtools import decompose_power
 from sympy.tensor.indexed import IndexedBase
 
 from ..intermediates.autoz import as_terms
@@ -143,7 +144,16 @@ class ProgramPrinter:
                 text = self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
         finally:
             self._plain = False
-        return "\n".join(self._format_code(text.splitlines()))  # type: ignore
+        return "\n".join(self.plain_lines(text))
+
+    def plain_lines(self, text: str) -> list[str]:
+        """The lines of a plain statement's ``text``, formatted as sympy's
+        ``doprint`` formats them: one line that begins with no blank as it
+        is (C and MATLAB indent a line by the blocks opened on the lines
+        before it: none here), else by sympy's ``_format_code``."""
+        if not text or "\n" in text or text[0] in " \t":
+            return self._format_code(text.splitlines())  # type: ignore
+        return [text]
 
     def is_plain(self, expr: Any, assign_to: Any) -> bool:
         """Whether ``doprint(expr, assign_to)`` is printed here: a sum,
@@ -165,6 +175,7 @@ class Remembering(ProgramPrinter):
         super().__init__(settings)  # type: ignore[call-arg]
         self._keys: dict = {}
         self._numbers: dict = {}
+        self._powers: dict = {}  # factor -> its base and exponent in a term
         #: (expression, target) -> its printed statement: a program's
         #: outputs routine assigns again the intermediates its equations have
         self.statements: dict = {}
@@ -175,7 +186,7 @@ class Remembering(ProgramPrinter):
     def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
         if (order or self.order) is not None or not expr.is_Add:  # type: ignore
             return super()._as_ordered_terms(expr, order)  # type: ignore[misc]
-        return _ordered_terms(expr, self._keys, self._numbers)
+        return _ordered_terms(expr, self._keys, self._numbers, self._powers)
 
     def remembered_factors(self, factors: list) -> list:
         """``as_ordered_factors()`` of the product of ``factors`` (its
@@ -237,11 +248,12 @@ def _complex(x: Any, memo: dict) -> complex:
     return found
 
 
-def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
+def _ordered_terms(expr: Any, keys: dict, numbers: dict, powers: dict) -> list:
     """``expr.as_ordered_terms()`` of a sum (sympy's lexicographic order of
     monomials in the generators sorted by ``default_sort_key``), the same
-    list, with the sort keys and number tests remembered in ``keys`` and
-    ``numbers``."""
+    list, with the sort keys, number tests and factors' powers remembered
+    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_monomials`;
+    else sympy's ``as_terms``)."""
 
     def plain(x: Any) -> bool:
         return not isinstance(x, sp.Number | sp.NumberSymbol)
@@ -260,7 +272,7 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
             and mul_args[0].is_negative
         ):
             return add_args
-    ordered = _ordered_symbol_terms(add_args)
+    ordered = _ordered_by_monomials(add_args, keys, numbers, powers)
     if ordered is not None:
         return ordered
     key, reverse = expr._parse_order(None)
@@ -280,65 +292,73 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
     return [term for term, _ in ordered]
 
 
-def _ordered_symbol_terms(terms: list) -> list | None:
-    """``terms`` (a sum's) in ``as_ordered_terms``'s order when each is a
-    number or a number times powers of symbols, with positive whole
-    exponents (almost every sum of a program), else None.
+def _ordered_by_monomials(
+    terms: list, keys: dict, numbers: dict, powers: dict
+) -> list | None:
+    """``terms`` (a sum's) in ``as_ordered_terms``'s order, found from each
+    term's factors without sympy's ``as_terms``, or None where this does
+    not decide it: a term holding a number factor (sympy multiplies it into
+    the coefficient), a factor that does not commute, ``O(...)``, one base
+    twice in a term, or two terms of one monomial (sympy then compares
+    their coefficients).
 
-    sympy orders the terms by their exponents in the generators (the
-    bases) sorted by ``default_sort_key``, the larger exponent first at the
-    first generator where two terms differ, then by their coefficients.
-    The key of a plain symbol is its name (then nothing that differs
-    between two symbols of one class and name), so that with no two bases
-    of one name, a term's monomial as ``(0, name, -exponent)`` of each of
-    its bases by name, then ``(1,)``, orders as sympy's: the first entry
-    where two terms differ is at the first base where their exponents do
-    (an exponent is positive: a base one term has and the other not puts
-    the one that has it first).  Two terms of one monomial (sympy then
-    compares their coefficients) are left to sympy's order (None)."""
-    keyed = []
-    named: dict = {}  # name -> the base of that name
+    sympy's key of a term is its monomial: its exponents in the generators
+    (every term's bases, sorted by ``default_sort_key``), negated, the
+    coefficient's only after it.  Each factor's base and exponent (sympy's
+    ``decompose_power``) is found once per ``powers``, the sort keys once
+    per ``keys``, the number tests once per ``numbers``."""
+    found: list = []
+    gens = set()
     for term in terms:
-        kind = type(term)
-        if kind is sp.Mul:
+        if type(term) is sp.Mul:
             factors = term.args
             if factors[0].is_Number:
                 factors = factors[1:]
-        elif kind is sp.Symbol or kind is sp.Pow:
-            factors = (term,)
         elif term.is_Number:
             factors = ()
-        else:
+        elif term.is_Order:
             return None
-        entries = []
+        else:
+            factors = (term,)
+        monomial = []
         for f in factors:
-            kind = type(f)
-            if kind is sp.Symbol:
-                base, exp = f, 1
-            elif (
-                kind is sp.Pow
-                and type(f.base) is sp.Symbol
-                and f.exp.is_Integer
-                and f.exp.p > 0
-            ):
-                base, exp = f.base, f.exp.p
-            else:
+            power = powers.get(f)
+            if power is None:
+                power = powers[f] = _base_and_exponent(f, numbers)
+            if not power:
                 return None
-            name = base.name
-            if named.setdefault(name, base) != base or not base.is_commutative:
-                return None
-            entries.append((0, name, -exp))
-        entries.sort()
-        for i in range(1, len(entries)):
-            if entries[i][1] == entries[i - 1][1]:
+            monomial.append(power)
+            gens.add(power[0])
+        found.append(monomial)
+    rank = {
+        g: i for i, g in enumerate(sorted(gens, key=lambda g: sort_key_in(g, keys)))
+    }
+    size = len(rank)
+    keyed = []
+    for term, monomial in zip(terms, found, strict=True):
+        exponents = [0] * size
+        for base, exp in monomial:
+            i = rank[base]
+            if exponents[i]:
                 return None  # one base twice (sympy keeps the last)
-        entries.append((1,))
-        keyed.append((tuple(entries), term))
+            exponents[i] = -exp
+        keyed.append((tuple(exponents), term))
     keyed.sort(key=_first)
     for i in range(1, len(keyed)):
         if keyed[i][0] == keyed[i - 1][0]:
             return None
     return [term for _, term in keyed]
+
+
+def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
+    """sympy's ``decompose_power(factor)`` of a factor of a term that
+    ``as_terms`` puts in the monomial, else False (a number, or a factor
+    that does not commute)."""
+    if type(factor) is sp.Symbol:
+        return (factor, 1) if factor.is_commutative else False
+    if is_number_in(factor, numbers) or not factor.is_commutative:
+        return False
+    return decompose_power(factor)
 
 
 def _first(pair: tuple) -> Any:
