@@ -205,8 +205,14 @@ class Remembering(ProgramPrinter):
             and cpart[0] is not sp.S.NegativeOne
         ):
             cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
-        keys = self._keys
-        cpart.sort(key=lambda x: sort_key_in(x, keys))
+        first = 1 if cpart and cpart[0].is_Number else 0
+        if all(type(x) is sp.Symbol for x in cpart[first:]):
+            # a number's key comes before any other, a plain symbol's is
+            # its class's, then its name
+            cpart[first:] = sorted(cpart[first:], key=_name)
+        else:
+            keys = self._keys
+            cpart.sort(key=lambda x: sort_key_in(x, keys))
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -330,9 +336,17 @@ def _ordered_by_monomials(
             monomial.append(power)
             gens.add(power[0])
         found.append(monomial)
-    rank = {
-        g: i for i, g in enumerate(sorted(gens, key=lambda g: sort_key_in(g, keys)))
-    }
+    # a plain symbol's key is its class's, then its name
+    plain = all(type(g) is sp.Symbol for g in gens)
+    listed = list(gens)
+    marked = sorted(
+        [(g.name if plain else sort_key_in(g, keys), i) for i, g in enumerate(listed)]
+    )
+    for i in range(1, len(marked)):
+        if marked[i][0] == marked[i - 1][0]:
+            return None  # two keys alike: sympy's order of them is the set's
+    ordered = [listed[i] for _, i in marked]
+    rank = {g: i for i, g in enumerate(ordered)}
     size = len(rank)
     keyed = []
     for term, monomial in zip(terms, found, strict=True):
@@ -363,3 +377,7 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
 
 def _first(pair: tuple) -> Any:
     return pair[0]
+
+
+def _name(symbol: Any) -> str:
+    return symbol.name
