@@ -114,7 +114,11 @@ class ProgramPrinter:
         return text
 
     def remembered_precedence(self, item: Any) -> int:
-        """sympy's ``precedence(item)``, formed once per part."""
+        """sympy's ``precedence(item)``: a product's or a number's (which
+        depend on its sign) formed once per part, any other's kept per
+        class (:func:`~..jobs.backends.precedence_of`)."""
+        if type(item) is not sp.Mul and not item.is_Number:
+            return backends.precedence_of(item)
         found = self._precs.get(item)
         if found is None:
             found = self._precs[item] = backends.precedence_of(item)
@@ -181,7 +185,9 @@ class Remembering(ProgramPrinter):
         self.statements: dict = {}
 
     def remembered_number(self, item: Any) -> bool:
-        return is_number_in(item, self._numbers)
+        """``item.is_number``, each part's answer formed once (a plain
+        symbol's is False)."""
+        return type(item) is not sp.Symbol and is_number_in(item, self._numbers)
 
     def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
         if (order or self.order) is not None or not expr.is_Add:  # type: ignore
