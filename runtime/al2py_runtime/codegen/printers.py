@@ -240,9 +240,12 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
-            held = memo.get(a)
-            if held is None:
-                held = holds_instance(a, kinds, memo)
+            if isinstance(a, sp.Atom):
+                held = isinstance(a, kinds)  # (an atom's answer is not kept)
+            else:
+                held = memo.get(a)
+                if held is None:
+                    held = holds_instance(a, kinds, memo)
             if held:
                 found = True
                 break
