@@ -73,7 +73,7 @@ FOREIGN = {
     " rule withdraws a given one (sympy has no unset)",
     "_print": "sympy printers' dispatch (the printer extension protocol)",
     "_print_level": "sympy Printer: how deep _print calls are (a Float alone is"
-    " printed with its zeros at depth 1; codegen/printers.py PrintedOnce"
+    " printed with its zeros at depth 1; codegen/printers.py ProgramPrinter"
     " remembers only parts printed deeper)",
     "_module_format": "sympy code printers: a qualified function name",
     "_mpf_": "mpmath's raw value of a sympy Float",
@@ -96,6 +96,9 @@ FOREIGN = {
     " where none applies)",
     "_get_statement": "sympy code printers: a statement's text with its"
     " terminator (codegen/printers.py prints a plain assignment directly)",
+    "_format_code": "sympy code printers: a statement's lines indented (and"
+    " wrapped: Fortran) as doprint formats them (codegen/printers.py prints a"
+    " plain assignment directly)",
     "_eval_subs": "sympy Basic: a class's own rule for subs (model/kinematics.py"
     " _collect substitutes by xreplace only where every node's rule is sympy's"
     " generic rebuild, tested equal to sympy's collect)",

@@ -7,71 +7,21 @@ import math
 import textwrap
 from typing import Any
 
-import sympy as sp
-
 from ..jobs import backends
 from ..jobs.kutta import KUTTA_C
-from .printers import PrintedOnce, holds_instance
+from .printers import ProgramPrinter
 from .program import Assign, Program
 
 __all__ = ["c_source"]
 
 
-class _Printer(PrintedOnce, backends.CPrinter):
+class _Printer(ProgramPrinter, backends.CPrinter):
     """The C backend's printer (strict), each part printed once per program
-    (see :class:`.printers.PrintedOnce`)."""
+    (see :class:`.printers.ProgramPrinter`)."""
 
     def __init__(self) -> None:
         backends.CPrinter.__init__(self)
         self.start_remembering(strict=True)
-        self._re: dict = {}  # part -> whether it holds an re(...)
-
-    # the backend's printing of sums, products, powers and calls, remembered
-    def _print_Add(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Add, expr, *args, **kwargs)
-
-    def _print_Mul(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Mul, expr, *args, **kwargs)
-
-    def _print_Abs(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Abs, expr, *args, **kwargs)
-
-    def _print_sign(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_sign, expr, *args, **kwargs)
-
-    def _print_sin(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_sin, expr, *args, **kwargs)
-
-    def _print_cos(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_cos, expr, *args, **kwargs)
-
-    def _print_tan(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_tan, expr, *args, **kwargs)
-
-    def _print_asin(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_asin, expr, *args, **kwargs)
-
-    def _print_acos(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_acos, expr, *args, **kwargs)
-
-    def _print_atan(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_atan, expr, *args, **kwargs)
-
-    def _print_atan2(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_atan2, expr, *args, **kwargs)
-
-    def _print_exp(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_exp, expr, *args, **kwargs)
-
-    def _print_log(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_log, expr, *args, **kwargs)
-
-    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        # the backend's: nothing to do without re(...) (asked of each part
-        # once per program, not walked again in each statement)
-        if isinstance(expr, sp.Basic) and not holds_instance(expr, sp.re, self._re):
-            return expr
-        return super()._handle_UnevaluatedExpr(expr)
 
 
 def _string(text: str) -> str:

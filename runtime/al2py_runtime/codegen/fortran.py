@@ -15,7 +15,7 @@ from sympy.printing.fortran import FCodePrinter
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering, printed_once
+from .printers import Remembering
 from .program import Assign, Program, one_based_target
 
 __all__ = ["fortran_source"]
@@ -31,6 +31,15 @@ class _Printer(Remembering, FCodePrinter):
     def __init__(self) -> None:
         super().__init__({"source_format": "fixed", "standard": 95, "strict": True})
         self._used_names: set[str] = set()
+
+    def plain_lines(self, text: str) -> list[str]:
+        """sympy's fixed form: a line after six blanks (no block indents a
+        single line), wrapped when longer than 72 columns, a line beginning
+        with ``!`` a comment (by sympy's ``_format_code`` then)."""
+        line = "      " + text
+        if len(line) > _W or text[:1] in ("", " ", "\t", "!") or "\n" in text:
+            return self._format_code(text.splitlines())
+        return [line.rstrip()]
 
     def _print_sign(self, expr: Any) -> str:
         x = self._print(expr.args[0])
@@ -52,7 +61,6 @@ class _Printer(Remembering, FCodePrinter):
         expr = expr.xreplace(self.mangled_symbols)
         return super(FCodePrinter, self)._print_Symbol(expr)
 
-    @printed_once
     def _print_Add(self, expr: Any) -> str:
         # FCodePrinter._print_Add: complex numbers apart
         number = self.remembered_number
@@ -61,18 +69,14 @@ class _Printer(Remembering, FCodePrinter):
                 return super()._print_Add(expr)
         return self.print_ordered_add(expr)
 
-    @printed_once
     def _print_Mul(self, expr: Any) -> str:
         # FCodePrinter._print_Mul, then CodePrinter._print_Mul, with the
         # number tests, precedences and sort keys remembered
         if self.remembered_number(expr) and expr.is_imaginary:
             return super()._print_Mul(expr)
-        if self.order in ("old", "none"):
-            factors = sp.Mul.make_args
-        else:
-            factors = self.remembered_factors
+        order = None if self.order in ("old", "none") else self.remembered_factors
         sign, a_str, b_str = backends.product_parts(
-            self, expr, self.remembered_precedence(expr), factors
+            self, expr, self.remembered_precedence(expr), order
         )[::2]
         return backends.join_product(sign, a_str, b_str)
 
@@ -322,9 +326,8 @@ def _locals(program: Program, block: list[Assign]) -> list[str]:
 
 
 def _uses(block: list[Assign], name: str) -> bool:
-    return any(
-        sp.Symbol(name, real=True) in sp.sympify(a.expr).free_symbols for a in block
-    )
+    symbol = sp.Symbol(name, real=True)
+    return any(symbol in backends.free_symbols_of(a.expr) for a in block)
 
 
 def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> list[str]:

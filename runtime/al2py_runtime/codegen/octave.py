@@ -14,7 +14,7 @@ from sympy.printing.octave import OctaveCodePrinter
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering, printed_once
+from .printers import Remembering
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -32,11 +32,9 @@ class _Printer(Remembering, OctaveCodePrinter):
     """sympy's MATLAB printer, the same text faster (see
     :class:`.printers.Remembering`)."""
 
-    @printed_once
     def _print_Add(self, expr: Any, order: Any = None) -> str:
         return self.print_ordered_add(expr, order)
 
-    @printed_once
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
@@ -47,15 +45,12 @@ class _Printer(Remembering, OctaveCodePrinter):
             and (sp.S.ImaginaryUnit * expr).is_Integer
         ):
             return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
-        if self.order in ("old", "none"):
-            factors = sp.Mul.make_args
-        else:
-            factors = self.remembered_factors
+        order = None if self.order in ("old", "none") else self.remembered_factors
         sign, a, a_str, b, b_str = backends.product_parts(
             self,
             expr,
             self.remembered_precedence(expr),
-            factors,
+            order,
             rationals=True,
             lone_minus=False,
         )
@@ -74,7 +69,6 @@ class _Printer(Remembering, OctaveCodePrinter):
         divsym = "/" if all(number(bi) for bi in b) else "./"
         return sign + multjoin(a, a_str) + divsym + f"({multjoin(b, b_str)})"
 
-    @printed_once
     def _print_Pow(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Pow with the number tests and precedences
         # remembered
@@ -83,11 +77,11 @@ class _Printer(Remembering, OctaveCodePrinter):
         prec = self.remembered_precedence(expr)
         whole = expr.exp.is_Integer  # then only -1 can match below
         if not whole and equal_valued(expr.exp, 0.5):
-            return f"sqrt({self._print(expr.base)})"
+            return f"sqrt({self.print_part(expr.base)})"
         if expr.is_commutative:
             if not whole and equal_valued(expr.exp, -0.5):
                 sym = "/" if number(expr.base) else "./"
-                return "1" + sym + f"sqrt({self._print(expr.base)})"
+                return "1" + sym + f"sqrt({self.print_part(expr.base)})"
             if expr.exp.p == -1 if whole else equal_valued(expr.exp, -1):
                 sym = "/" if number(expr.base) else "./"
                 return "1" + sym + self.parenthesize(expr.base, prec)

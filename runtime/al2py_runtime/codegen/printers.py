@@ -1,51 +1,82 @@
-"""What the MATLAB and Fortran printers share: sympy's printing, the same
-text, with what it asks again and again remembered.
+"""The program printers' machinery, shared by the C, MATLAB and Fortran
+printers (:mod:`.c`, :mod:`.octave`, :mod:`.fortran`): sympy's printing,
+the same text, with what it does again and again done once.
 
-sympy's MATLAB and Fortran printers order a sum's terms by
-``as_ordered_terms`` (the monomials' exponents in generators sorted by
-``default_sort_key``) and a product's factors by ``as_ordered_factors``,
-and ask ``is_number`` and ``precedence`` at every node they visit: each walks
-the subtree again, and sympy's cache of sort keys (1,000 entries) is soon
-overrun by a large program, so the keys were formed again down to the
-leaves.  :class:`Remembering` forms each once per printer (one program).
+:class:`ProgramPrinter` (every dialect's) finds the printing method of a
+part's class once per printer (sympy's rule, walked again for every part
+by sympy's ``_print``), prints each part once per program (its text
+remembered), and prints a plain assignment -- what nearly every statement
+of a program is -- without ``doprint``'s walks and wrappers.
+
+:class:`Remembering` (MATLAB's and Fortran's): sympy's MATLAB and Fortran
+printers order a sum's terms by ``as_ordered_terms`` (the monomials'
+exponents in generators sorted by ``default_sort_key``) and a product's
+factors by ``as_ordered_factors``, and ask ``is_number`` and
+``precedence`` at every node they visit: each walks the subtree again, and
+sympy's cache of sort keys (1,000 entries) is soon overrun by a large
+program, so the keys were formed again down to the leaves.
+:class:`Remembering` forms each once per printer (one program).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
+from sympy.core.exprtools import decompose_power
 from sympy.tensor.indexed import IndexedBase
 
 from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["PrintedOnce", "Remembering", "holds_instance", "printed_once"]
+__all__ = ["ProgramPrinter", "Remembering", "holds_instance"]
 
-#: what doprint's statement is walked for (see Remembering)
-_WALKED_FOR = (sp.re, IndexedBase)
+#: what a statement holding one of is printed by sympy's ``doprint``, and
+#: a part holding one of is printed each time (see ProgramPrinter)
+_SPECIAL = (sp.re, IndexedBase, sp.NumberSymbol)
 
 
-class PrintedOnce:
-    """A mixin for a strict sympy code printer (before it in the bases):
-    the parts that its methods decorated with :func:`printed_once` (or
-    going through :meth:`print_once`) print -- sums, products, powers,
-    function calls -- printed once per printer (one program), their text
-    remembered.
+class ProgramPrinter:
+    """A mixin for a strict sympy code printer (before it in the bases) that
+    prints one program's statements: each part printed once, sums,
+    products and names through the printer's own method directly, a plain
+    assignment printed without ``doprint``'s walks and wrappers.
 
-    A program's statements share many parts (``sin(Q3)``, ``z12**2``, a
-    product of constants), which sympy prints again wherever they occur.
-    A part's text depends only on the part (sympy's ``==`` is structural;
-    parts of different classes are never equal) and the printer's
-    settings, with these kept out: the part a statement's printing starts
-    from (``_print_level`` 1: sympy prints a Float alone with its zeros,
-    without them inside), a part holding a number constant (``pi``, ...,
-    which a printer may record for the statement's declarations, forgotten
-    after each statement) and calls with more arguments.  A strict printer
-    raises on an object it cannot print (a printer that is not strict
-    records it, and remembers nothing here)."""
+    * **Parts.** The printer's own methods print a statement's parts with
+      :meth:`print_part`: a sum, product or name (:data:`OWN`, almost every
+      part of a program) with the method sympy's ``_print`` would find along
+      the class's bases, without looking for it; any other part with sympy's
+      ``_print``.
+    * **Each part printed once.** A program's statements share many parts
+      (``sin(Q3)``, ``z12**2``, a product of constants), which sympy prints
+      again wherever they occur.  A part's text depends only on the part
+      (sympy's ``==`` is structural; parts of different classes are never
+      equal, but numbers are: a number is kept with its class, Fortran's
+      ``literal_dp(1)`` prints ``1d0`` and ``Float(1.0)`` ``1.0d0``) and
+      the printer's settings, with these kept out: the part a statement's
+      printing starts from (``_print_level`` 1: sympy prints a Float alone
+      with its zeros, without them inside; :meth:`print_part` prints parts
+      within), a part holding a number constant (``pi``, ..., which a
+      printer may record for the statement's declarations, forgotten after
+      each statement) or what ``doprint`` rewrites (``re``,
+      ``IndexedBase``).  A strict printer raises on an object it cannot
+      print (a printer that is not strict records it, and remembers
+      nothing here).
+    * **Plain assignments.** ``doprint(expr, assign_to)`` builds an
+      ``Assignment``, walks the statement for ``re`` (and for
+      ``IndexedBase``: loops), then prints and formats its lines.  For a
+      sum, product or name holding none of those nor a number constant
+      (each part asked once per program), the same text is ``lhs = rhs``
+      with the language's terminator, formatted as ``doprint`` formats it:
+      the two sides printed as ``Assignment`` prints them, the left one
+      first (Fortran names a symbol when it first prints it), the right one
+      at one level less deep, which only a Float's text depends on."""
+
+    #: the classes whose parts :meth:`print_part` prints with the printer's
+    #: method for the class (``_print_Add``, ...), as sympy's ``_print``
+    #: finds it, directly: their text does not depend on how deep they are
+    OWN = (sp.Add, sp.Mul, sp.Symbol)
 
     def __init__(self, settings: dict | None = None) -> None:
         super().__init__(settings)  # type: ignore[call-arg]
@@ -53,62 +84,93 @@ class PrintedOnce:
 
     def start_remembering(self, strict: bool) -> None:
         """Nothing remembered yet; ``strict``: whether the printer is."""
-        self._printed: dict = {}
-        self._constants: dict = {}  # part -> whether it holds a NumberSymbol
+        self._texts: dict = {}
+        self._special: dict = {}  # part -> whether it holds one of _SPECIAL
+        self._precs: dict = {}
         self._remembers = strict
+        self._plain = False  # printing a plain statement: nothing special
+        self._own = {
+            kind: getattr(self, f"_print_{kind.__name__}") for kind in self.OWN
+        }
 
-    def remembered_text(self, expr: Any) -> str | None:
-        """The text of ``expr`` printed before as a part, or None."""
-        if self._print_level <= 1:  # type: ignore[attr-defined]
-            return None
-        return self._printed.get(expr)
-
-    def remember_text(self, expr: Any, text: str) -> None:
-        """Keep ``text`` as ``expr``'s, where it depends on ``expr`` alone."""
-        if (
-            self._remembers
-            and self._print_level > 1  # type: ignore[attr-defined]
-            and not holds_instance(expr, sp.NumberSymbol, self._constants)
+    def print_part(self, expr: Any) -> str:
+        """The text of ``expr``, a part within the statement being printed,
+        remembered (see :class:`ProgramPrinter`)."""
+        if not isinstance(expr, sp.Basic):
+            return self._print(expr)  # type: ignore[attr-defined]
+        key = (type(expr), expr) if expr.is_Number else expr
+        found = self._texts.get(key)
+        if found is not None:
+            return found
+        method = self._own.get(type(expr))
+        if method is None:
+            text = self._print(expr)  # type: ignore[attr-defined]
+        else:
+            text = method(expr)
+        if self._remembers and (
+            self._plain or not holds_instance(expr, _SPECIAL, self._special)
         ):
-            self._printed[expr] = text
+            self._texts[key] = text
+        return text
 
-    def print_once(
-        self, method: Callable[..., str], expr: Any, *args: Any, **kwargs: Any
-    ) -> str:
-        """``method(expr, *args, **kwargs)`` (a bound printing method of this
-        printer, ``super()``'s), remembered (see :class:`PrintedOnce`)."""
-        if args or kwargs:
-            return method(expr, *args, **kwargs)
-        found = self.remembered_text(expr)
+    def remembered_precedence(self, item: Any) -> int:
+        """sympy's ``precedence(item)``: a product's or a number's (which
+        depend on its sign) formed once per part, any other's kept per
+        class (:func:`~..jobs.backends.precedence_of`)."""
+        if type(item) is not sp.Mul and not item.is_Number:
+            return backends.precedence_of(item)
+        found = self._precs.get(item)
         if found is None:
-            found = method(expr)
-            self.remember_text(expr, found)
+            found = self._precs[item] = backends.precedence_of(item)
         return found
 
-    # the sympy printer's powers and function calls, remembered (a printer
-    # with its own, MATLAB's powers, decorates it with printed_once)
-    def _print_Pow(self, expr: Any, *args: Any, **kwargs: Any) -> str:  # noqa: N802
-        return self.print_once(super()._print_Pow, expr, *args, **kwargs)  # type: ignore[misc]
+    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
+        """sympy's ``parenthesize``: ``item``'s text, in parentheses when its
+        precedence is below ``level`` (or at it, when not ``strict``)."""
+        prec = self.remembered_precedence(item)
+        if prec < level or (not strict and prec <= level):
+            return f"({self.print_part(item)})"
+        return self.print_part(item)
 
-    def _print_Function(
-        self, expr: Any, *args: Any, **kwargs: Any
-    ) -> str:  # noqa: N802
-        return self.print_once(super()._print_Function, expr, *args, **kwargs)  # type: ignore[misc]
+    def doprint(self, expr: Any, assign_to: Any = None) -> str:
+        """sympy's ``CodePrinter.doprint``, the same text; a plain statement
+        printed here (see :class:`ProgramPrinter`)."""
+        if not self.is_plain(expr, assign_to):
+            return super().doprint(expr, assign_to)  # type: ignore[misc]
+        self._plain = True
+        try:
+            if assign_to is None:
+                text = self._print(expr)  # type: ignore[attr-defined]
+            else:
+                lhs = sp.Symbol(assign_to) if isinstance(assign_to, str) else assign_to
+                lhs_code = self._print(lhs)  # type: ignore[attr-defined]
+                rhs_code = self._print(expr)  # type: ignore[attr-defined]
+                text = self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
+        finally:
+            self._plain = False
+        return "\n".join(self.plain_lines(text))
+
+    def plain_lines(self, text: str) -> list[str]:
+        """The lines of a plain statement's ``text``, formatted as sympy's
+        ``doprint`` formats them: one line that begins with no blank as it
+        is (C and MATLAB indent a line by the blocks opened on the lines
+        before it: none here), else by sympy's ``_format_code``."""
+        if not text or "\n" in text or text[0] in " \t":
+            return self._format_code(text.splitlines())  # type: ignore
+        return [text]
+
+    def is_plain(self, expr: Any, assign_to: Any) -> bool:
+        """Whether ``doprint(expr, assign_to)`` is printed here: a sum,
+        product or name holding none of ``re``, ``IndexedBase`` and number
+        constants, assigned to nothing, a name or a symbol."""
+        return (
+            type(expr) in self._own
+            and (assign_to is None or isinstance(assign_to, str | sp.Symbol))
+            and not holds_instance(expr, _SPECIAL, self._special)
+        )
 
 
-def printed_once(method: Callable[..., str]) -> Callable[..., str]:
-    """A printing method of a :class:`PrintedOnce` printer whose text is
-    remembered (see there)."""
-
-    def printed(self: Any, expr: Any, *args: Any, **kwargs: Any) -> str:
-        return self.print_once(method.__get__(self), expr, *args, **kwargs)
-
-    printed.__name__ = getattr(method, "__name__", "printed")
-    printed.__doc__ = getattr(method, "__doc__", None)
-    return printed
-
-
-class Remembering(PrintedOnce):
+class Remembering(ProgramPrinter):
     """A mixin for a sympy code printer (before it in the bases): sort keys,
     number tests and precedences remembered; the order of terms and of
     factors formed with them; sums printed as ``StrPrinter._print_Add``."""
@@ -117,69 +179,46 @@ class Remembering(PrintedOnce):
         super().__init__(settings)  # type: ignore[call-arg]
         self._keys: dict = {}
         self._numbers: dict = {}
-        self._precs: dict = {}
-        self._plain_statement: Any = None
-        #: part -> whether it holds a _WALKED_FOR object
-        self._walked: dict = {}
+        self._powers: dict = {}  # factor -> its base and exponent in a term
         #: (expression, target) -> its printed statement: a program's
         #: outputs routine assigns again the intermediates its equations have
         self.statements: dict = {}
 
-    def remembered_precedence(self, item: Any) -> int:
-        found = self._precs.get(item)
-        if found is None:
-            found = self._precs[item] = backends.precedence_of(item)
-        return found
-
     def remembered_number(self, item: Any) -> bool:
-        return is_number_in(item, self._numbers)
-
-    def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
-        prec = self.remembered_precedence(item)
-        if prec < level or (not strict and prec <= level):
-            return f"({self._print(item)})"  # type: ignore[attr-defined]
-        return self._print(item)  # type: ignore[attr-defined]
-
-    def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
-        # doprint's statement (an Assignment) walked once for both ``re``
-        # (sympy's UnevaluatedExpr handling) and ``IndexedBase``
-        # (_print_Assignment's loops), instead of once for each
-        if isinstance(expr, sp.Basic) and not self._holds_walked_for(expr):
-            self._plain_statement = expr
-            return expr
-        if backends.without_re(expr):
-            return expr
-        return super()._handle_UnevaluatedExpr(expr)  # type: ignore[misc]
-
-    def _holds_walked_for(self, expr: Any) -> bool:
-        return holds_instance(expr, _WALKED_FOR, self._walked)
-
-    def _print_Assignment(self, expr: Any) -> str:  # noqa: N802 - sympy's
-        # sympy's last case (lhs = rhs) when the statement has no
-        # IndexedBase (walked above), the left side is a symbol and the
-        # right side is not a Piecewise
-        if (
-            expr is self._plain_statement
-            and isinstance(expr.lhs, sp.Symbol)
-            and not isinstance(expr.rhs, sp.Piecewise)
-        ):
-            lhs_code = self._print(expr.lhs)  # type: ignore[attr-defined]
-            rhs_code = self._print(expr.rhs)  # type: ignore[attr-defined]
-            return self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
-        return super()._print_Assignment(expr)  # type: ignore[misc]
+        """``item.is_number``, each part's answer formed once (a plain
+        symbol's is False)."""
+        return type(item) is not sp.Symbol and is_number_in(item, self._numbers)
 
     def _as_ordered_terms(self, expr: Any, order: Any = None) -> list:
         if (order or self.order) is not None or not expr.is_Add:  # type: ignore
             return super()._as_ordered_terms(expr, order)  # type: ignore[misc]
-        return _ordered_terms(expr, self._keys, self._numbers)
+        return _ordered_terms(expr, self._keys, self._numbers, self._powers)
 
-    def remembered_factors(self, expr: Any) -> list:
-        """``expr.as_ordered_factors()``."""
-        if not isinstance(expr, sp.Mul):
-            return expr.as_ordered_factors()
-        cpart, ncpart = expr.args_cnc()
-        keys = self._keys
-        cpart.sort(key=lambda x: sort_key_in(x, keys))
+    def remembered_factors(self, factors: list) -> list:
+        """``as_ordered_factors()`` of the product of ``factors`` (its
+        arguments): sympy's ``args_cnc``, the commutative ones sorted by
+        their keys."""
+        for i, f in enumerate(factors):
+            if not f.is_commutative:
+                cpart, ncpart = factors[:i], factors[i:]
+                break
+        else:
+            cpart, ncpart = list(factors), []
+        if (
+            cpart
+            and cpart[0].is_Number
+            and cpart[0].is_extended_negative
+            and cpart[0] is not sp.S.NegativeOne
+        ):
+            cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
+        first = 1 if cpart and cpart[0].is_Number else 0
+        if all(type(x) is sp.Symbol for x in cpart[first:]):
+            # a number's key comes before any other, a plain symbol's is
+            # its class's, then its name
+            cpart[first:] = sorted(cpart[first:], key=_name)
+        else:
+            keys = self._keys
+            cpart.sort(key=lambda x: sort_key_in(x, keys))
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -201,9 +240,12 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
-            held = memo.get(a)
-            if held is None:
-                held = holds_instance(a, kinds, memo)
+            if isinstance(a, sp.Atom):
+                held = isinstance(a, kinds)  # (an atom's answer is not kept)
+            else:
+                held = memo.get(a)
+                if held is None:
+                    held = holds_instance(a, kinds, memo)
             if held:
                 found = True
                 break
@@ -221,11 +263,12 @@ def _complex(x: Any, memo: dict) -> complex:
     return found
 
 
-def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
+def _ordered_terms(expr: Any, keys: dict, numbers: dict, powers: dict) -> list:
     """``expr.as_ordered_terms()`` of a sum (sympy's lexicographic order of
     monomials in the generators sorted by ``default_sort_key``), the same
-    list, with the sort keys and number tests remembered in ``keys`` and
-    ``numbers``."""
+    list, with the sort keys, number tests and factors' powers remembered
+    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_monomials`;
+    else sympy's ``as_terms``)."""
 
     def plain(x: Any) -> bool:
         return not isinstance(x, sp.Number | sp.NumberSymbol)
@@ -244,6 +287,9 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
             and mul_args[0].is_negative
         ):
             return add_args
+    ordered = _ordered_by_monomials(add_args, keys, numbers, powers)
+    if ordered is not None:
+        return ordered
     key, reverse = expr._parse_order(None)
     result, _ = as_terms(
         expr,
@@ -259,3 +305,88 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict) -> list:
     ordered = sorted(plain_terms, key=key, reverse=True)
     ordered += sorted(orders, key=key, reverse=True)
     return [term for term, _ in ordered]
+
+
+def _ordered_by_monomials(
+    terms: list, keys: dict, numbers: dict, powers: dict
+) -> list | None:
+    """``terms`` (a sum's) in ``as_ordered_terms``'s order, found from each
+    term's factors without sympy's ``as_terms``, or None where this does
+    not decide it: a term holding a number factor (sympy multiplies it into
+    the coefficient), a factor that does not commute, ``O(...)``, one base
+    twice in a term, or two terms of one monomial (sympy then compares
+    their coefficients).
+
+    sympy's key of a term is its monomial: its exponents in the generators
+    (every term's bases, sorted by ``default_sort_key``), negated, the
+    coefficient's only after it.  Each factor's base and exponent (sympy's
+    ``decompose_power``) is found once per ``powers``, the sort keys once
+    per ``keys``, the number tests once per ``numbers``."""
+    found: list = []
+    gens = set()
+    for term in terms:
+        if type(term) is sp.Mul:
+            factors = term.args
+            if factors[0].is_Number:
+                factors = factors[1:]
+        elif term.is_Number:
+            factors = ()
+        elif term.is_Order:
+            return None
+        else:
+            factors = (term,)
+        monomial = []
+        for f in factors:
+            power = powers.get(f)
+            if power is None:
+                power = powers[f] = _base_and_exponent(f, numbers)
+            if not power:
+                return None
+            monomial.append(power)
+            gens.add(power[0])
+        found.append(monomial)
+    # a plain symbol's key is its class's, then its name
+    plain = all(type(g) is sp.Symbol for g in gens)
+    listed = list(gens)
+    marked = sorted(
+        [(g.name if plain else sort_key_in(g, keys), i) for i, g in enumerate(listed)]
+    )
+    for i in range(1, len(marked)):
+        if marked[i][0] == marked[i - 1][0]:
+            return None  # two keys alike: sympy's order of them is the set's
+    ordered = [listed[i] for _, i in marked]
+    rank = {g: i for i, g in enumerate(ordered)}
+    size = len(rank)
+    keyed = []
+    for term, monomial in zip(terms, found, strict=True):
+        exponents = [0] * size
+        for base, exp in monomial:
+            i = rank[base]
+            if exponents[i]:
+                return None  # one base twice (sympy keeps the last)
+            exponents[i] = -exp
+        keyed.append((tuple(exponents), term))
+    keyed.sort(key=_first)
+    for i in range(1, len(keyed)):
+        if keyed[i][0] == keyed[i - 1][0]:
+            return None
+    return [term for _, term in keyed]
+
+
+def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
+    """sympy's ``decompose_power(factor)`` of a factor of a term that
+    ``as_terms`` puts in the monomial, else False (a number, or a factor
+    that does not commute)."""
+    if type(factor) is sp.Symbol:
+        return (factor, 1) if factor.is_commutative else False
+    if is_number_in(factor, numbers) or not factor.is_commutative:
+        return False
+    return decompose_power(factor)
+
+
+def _first(pair: tuple) -> Any:
+    return pair[0]
+
+
+def _name(symbol: Any) -> str:
+    return symbol.name

@@ -645,13 +645,18 @@ class CPrinter(C99CodePrinter):
     def _handle_UnevaluatedExpr(self, expr: Any) -> Any:  # noqa: N802 - sympy's
         return expr if without_re(expr) else super()._handle_UnevaluatedExpr(expr)
 
+    def print_part(self, expr: Any) -> str:
+        """The text of ``expr``, a part of the statement being printed (the
+        program printers remember it: :mod:`..codegen.printers`)."""
+        return self._print(expr)
+
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
         # sympy's (StrPrinter) computes the precedence twice, and finds a
         # symbol's by walking its class's bases: a fifth of printing time
         prec = _precedence(item)
         if prec < level or (not strict and prec <= level):
-            return f"({self._print(item)})"
-        return self._print(item)
+            return f"({self.print_part(item)})"
+        return self.print_part(item)
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
         # StrPrinter._print_Add (terms in their own order) with precedences
@@ -664,9 +669,7 @@ class CPrinter(C99CodePrinter):
         # their own order) with precedences kept per class
         if expr in self.math_macros:
             return super()._print_Mul(expr, **kwargs)
-        sign, a_str, b_str = product_parts(
-            self, expr, _precedence(expr), sp.Mul.make_args
-        )[::2]
+        sign, a_str, b_str = product_parts(self, expr, _precedence(expr))[::2]
         return join_product(sign, a_str, b_str)
 
     def _print_Pi(self, expr: Any) -> str:
@@ -736,7 +739,7 @@ def product_parts(
     printer: Any,
     expr: Any,
     prec: int,
-    factors: Callable[[Any], Sequence[Any]],
+    order: Callable[[list], list] | None = None,
     *,
     rationals: bool = False,
     lone_minus: bool = True,
@@ -745,24 +748,21 @@ def product_parts(
     Fortran and MATLAB printers: ``(sign, numerator factors, their texts,
     denominator factors, their texts)``.
 
-    ``factors`` orders the factors of the product without its sign;
-    ``rationals`` puts a rational's denominator below the line (MATLAB);
-    ``lone_minus`` parenthesizes a single negated factor as a power's level
-    (C, Fortran)."""
-    c, e = expr.as_coeff_Mul()
-    # a rational's sign without sympy's comparison (which sympifies the 0)
-    if c.is_extended_negative if c.is_Rational else c < 0:
-        expr = _keep_coeff(-c, e)
-        sign = "-"
-    else:
-        sign = ""
+    ``order`` orders the factors of the product without its sign (given as
+    :func:`magnitude_factors`; None: as they are); ``rationals`` puts a
+    rational's denominator below the line (MATLAB); ``lone_minus``
+    parenthesizes a single negated factor as a power's level (C,
+    Fortran)."""
+    sign, items = magnitude_factors(expr)
+    if order is not None:
+        items = order(items)
     a: list = []  # the numerator's factors
     b: list = []  # the denominator's
     pow_paren = []  # powers -1 of products of more than one factor
-    for item in factors(expr):
+    for item in items:
         if (
-            item.is_commutative
-            and item.is_Pow
+            item.is_Pow
+            and item.is_commutative
             and item.exp.is_Rational
             and item.exp.is_negative
         ):
@@ -792,15 +792,40 @@ def product_parts(
     return sign, a, a_str, b, b_str
 
 
+def magnitude_factors(expr: Any) -> tuple[str, list]:
+    """The sign of the product ``expr`` as ``CodePrinter._print_Mul`` prints
+    it (``"-"`` or ``""``) and the arguments of the product it prints after
+    the sign (``_keep_coeff(-c, e)`` of ``expr.as_coeff_Mul()`` when ``c``
+    is negative, else ``expr``), read off ``expr``'s arguments where sympy's
+    canonical product makes them those (a number first, at most one), and
+    formed as sympy forms them otherwise."""
+    args = expr.args
+    c = args[0] if args else sp.S.One
+    # a rational's sign without sympy's comparison (which sympifies the 0)
+    if not c.is_Number or not (c.is_extended_negative if c.is_Rational else c < 0):
+        return "", list(args)
+    rest = args[1:]
+    magnitude = -c
+    if len(rest) > 1 and not rest[0].is_Number:
+        # _keep_coeff: the product of the rest, or the magnitude put first
+        if magnitude is sp.S.One:
+            return "-", list(rest)
+        return "-", [magnitude, *rest]
+    if len(rest) == 1 and magnitude is sp.S.One:
+        return "-", list(sp.Mul.make_args(rest[0]))
+    c, e = expr.as_coeff_Mul()
+    return "-", list(sp.Mul.make_args(_keep_coeff(-c, e)))
+
+
 def join_sum(
     printer: Any, terms: Iterable[Any], prec: int, precedence: Callable[[Any], int]
 ) -> str:
     """``StrPrinter._print_Add``'s text of a sum of ``terms`` in that order,
     with ``precedence`` the printer's (shared by the C, Fortran and MATLAB
-    printers)."""
+    printers, each term printed by their ``print_part``)."""
     out = []
     for term in terms:
-        t = printer._print(term)
+        t = printer.print_part(term)
         if t.startswith("-") and not term.is_Add:
             sign = "-"
             t = t[1:]
