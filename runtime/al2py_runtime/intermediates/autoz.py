@@ -49,7 +49,7 @@ from sympy.core.function import AppliedUndef
 from sympy.core.parameters import global_parameters
 from sympy.physics.vector import dynamicsymbols
 
-from ..model.arrange import linear_terms
+from ..linear import linear_terms
 from ..vocabulary import complex_functions
 from ..walks import allow_deep_recursion, appearing, atoms, xreplace
 from .elimination import eliminate

@@ -26,7 +26,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..intermediates import autoz
-from ..model.arrange import linear_terms
+from ..linear import linear_terms
 from ..safety import MissingValueWarning
 from ..walks import xreplace
 from . import backends, budget

@@ -52,7 +52,8 @@ from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
 from ..intermediates.autoz import Intermediate, Intermediates, product_with
-from .arrange import linear_terms, split_linear_named
+from ..linear import linear_terms
+from .arrange import split_linear_named
 from .kinematics import ang_vel_in
 
 __all__ = [
