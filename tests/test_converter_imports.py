@@ -90,3 +90,30 @@ def test_the_runtime_exports_its_names_on_first_use(tmp_path):
         "    raise SystemExit('no AttributeError')\n"
     )
     assert "sympy" in _loaded(program, tmp_path)
+
+
+#: the runtime's parts a program may import first, each in a fresh interpreter
+#: (the package exports lazily, so no module may rely on another having been
+#: imported before it: ``codegen`` first once met a cycle through ``autoz``)
+FIRST_IMPORTS = [
+    "al2py_runtime.codegen",
+    "al2py_runtime.jobs.run",
+    "al2py_runtime.intermediates.autoz",
+    "al2py_runtime.model",
+    "al2py_runtime.linear",
+    "al2py_runtime.names.printing",
+    "al2py_runtime.matrices",
+    "al2py_runtime.workspace",
+]
+
+
+@pytest.mark.parametrize("module", FIRST_IMPORTS)
+def test_each_part_of_the_runtime_imports_first(module, tmp_path):
+    proc = subprocess.run(
+        [sys.executable, "-c", f"import {module}"],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=120,
+    )
+    assert proc.returncode == 0, proc.stderr
