@@ -36,7 +36,6 @@ back to ``lambdify``.  ``AL2PY_BACKEND`` sets the default for a process.
 from __future__ import annotations
 
 import ctypes
-import functools
 import hashlib
 import math
 import os
@@ -304,16 +303,20 @@ def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
 
 
 def reading(
-    intermediates: Sequence[tuple[Any, Any]], exprs: Sequence[Any], symbols: set
+    intermediates: Sequence[tuple[Any, Any]],
+    exprs: Sequence[Any],
+    symbols: set,
+    memo: dict | None = None,
 ) -> list[int]:
     """The indices of ``exprs`` that read one of ``symbols``, themselves or
     through the intermediates they use (each defined before its uses, so
-    one pass finds the intermediates that read them at any depth)."""
+    one pass finds the intermediates that read them at any depth);
+    ``memo``: :func:`free_symbols_of`'s."""
     reads = set(symbols)
     for sym, expr in intermediates:
-        if free_symbols_of(expr) & reads:
+        if free_symbols_of(expr, memo) & reads:
             reads.add(sym)
-    return [i for i, e in enumerate(exprs) if free_symbols_of(e) & reads]
+    return [i for i, e in enumerate(exprs) if free_symbols_of(e, memo) & reads]
 
 
 # ----------------------------------------------------------------- lambdify
@@ -327,43 +330,40 @@ def _inline(spec: DynamicsSpec, exprs: list[Any]) -> list[Any]:
 
 
 def needed(
-    intermediates: Sequence[tuple[Any, Any]], exprs: Iterable[Any]
+    intermediates: Sequence[tuple[Any, Any]],
+    exprs: Iterable[Any],
+    memo: dict | None = None,
 ) -> list[tuple[Any, Any]]:
-    """The intermediates that ``exprs`` use, in order."""
+    """The intermediates that ``exprs`` use, in order; ``memo``:
+    :func:`free_symbols_of`'s."""
     want: set[Any] = set()
     for e in exprs:
-        want |= free_symbols_of(e)
+        want |= free_symbols_of(e, memo)
     keep = []
     for sym, expr in reversed(list(intermediates)):
         if sym in want:
             keep.append((sym, expr))
-            want |= free_symbols_of(expr)
+            want |= free_symbols_of(expr, memo)
     return keep[::-1]
 
 
-def free_symbols_of(expr: Any) -> frozenset:
-    """``sympify(expr).free_symbols``, remembered: writing a program asks it
-    of the same intermediates and equations again and again (sympy walks the
-    whole expression each time)."""
+def free_symbols_of(expr: Any, memo: dict | None = None) -> frozenset:
+    """``sympify(expr).free_symbols``.  ``memo`` (a dict its owner keeps,
+    say the program being formed: :attr:`..codegen.program.Program.free`)
+    remembers each answer: forming and printing a program ask it of the
+    same intermediates and equations again and again, and sympy walks the
+    whole expression each time.  Its owner's expressions alone meet in it,
+    so it never holds another program's equal expressions (each found
+    would cost a comparison of the two, node by node) and goes with its
+    owner."""
     if not isinstance(expr, sp.Basic):
         return frozenset(sp.sympify(expr).free_symbols)
-    return _free_symbols(expr)
-
-
-@functools.lru_cache(maxsize=1 << 16)
-def _free_symbols(expr: Any) -> frozenset:
-    return frozenset(expr.free_symbols)
-
-
-def forget_free_symbols() -> None:
-    """Forget what :func:`free_symbols_of` remembers: before a program is
-    formed, whose expressions equal those of the one before (a CODE
-    Dynamics job written in two languages) but are other objects, as are
-    its symbols (sympy keeps a thousand): each remembered answer found for
-    one would cost a comparison of the two, node by node, and hold the
-    other program's symbols, compared again wherever they meet this
-    program's."""
-    _free_symbols.cache_clear()
+    if memo is None:
+        return frozenset(expr.free_symbols)
+    found = memo.get(expr)
+    if found is None:
+        found = memo[expr] = frozenset(expr.free_symbols)
+    return found
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
