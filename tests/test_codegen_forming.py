@@ -4,7 +4,6 @@ named apart is formed once, and the copies take the largest jobs first."""
 
 from __future__ import annotations
 
-import sympy as sp
 from conftest import ROOT
 
 from al2py.transpile import convert
