@@ -103,6 +103,9 @@ class DynamicsSpec:
     derivs: list[Any]
     outputs: list[list[Any]] = field(default_factory=list)
     intermediates: list[tuple[Any, Any]] = field(default_factory=list)
+    #: the free symbols of its expressions, remembered while it is compiled
+    #: (:func:`free_symbols_of`'s memo): its own
+    free: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         n = len(self.accels)
@@ -298,7 +301,7 @@ def _canonical(spec: DynamicsSpec) -> DynamicsSpec:
 
 def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
     """Indices of derivatives free of ``ud`` and of those that use it."""
-    uses = reading(spec.intermediates, spec.derivs, set(spec.accels))
+    uses = reading(spec.intermediates, spec.derivs, set(spec.accels), spec.free)
     return [i for i in range(len(spec.derivs)) if i not in uses], uses
 
 
@@ -1071,7 +1074,7 @@ def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     spec, names = _c_form(spec)
     printer = CPrinter(names=names)
     all_out = [e for row in spec.outputs for e in row]
-    zs = needed(spec.intermediates, all_out)
+    zs = needed(spec.intermediates, all_out, spec.free)
     if len(zs) <= SPLIT:
         yield (c_model_source(spec), ("-O2",))
         return
@@ -1123,7 +1126,7 @@ def _intermediates(
     """Declarations of the intermediates that ``exprs`` need, in order."""
     return [
         f"{indent}const double {c_expression(s, printer)} = {c_expression(e, printer)};"
-        for s, e in needed(spec.intermediates, exprs)
+        for s, e in needed(spec.intermediates, exprs, spec.free)
     ]
 
 
