@@ -62,3 +62,109 @@ def test_each_program_owns_its_memo_of_free_symbols(tmp_path):
     # printing asks the program's memo: the same text as a fresh program's
     assert program_source(first, "disc.c") == program_source(again, "disc.c")
     assert program_source(first, "disc.f") == program_source(again, "disc.f")
+
+
+# a small ODE, a larger one (its Output of 12 items) and two naming one file
+# and one stem: the fourth is named apart (bigger.c is the second's), the
+# third shares bigger.in with the second
+SEVERAL_JOBS = """\
+Variables X', Y'
+Constants A, B
+Input A=2, B=0.5, X=1, Y=0, TFINAL=1
+X' = -A*X + B*Y
+Y' = X - B*Y
+Output T, X
+CODE ODE() small.c
+Output T, X, Y, A*X, B*Y, X*Y, X^2, Y^2, X+Y, X-Y, A*Y, B*X
+CODE ODE() bigger.c
+CODE ODE() bigger.m
+Input B=0.25
+CODE ODE() bigger.c
+"""
+
+
+def test_a_job_named_apart_is_formed_once(tmp_path, monkeypatch, capsys):
+    """A job whose file an earlier job's takes is named before it is
+    printed, whichever process forms it: each program is described once
+    (before, a copy formed it under the CODE statement's name and this
+    process formed it again to rename it)."""
+    from al2py_runtime import codegen
+
+    from al2py.cli import main as al2py_main
+
+    script = tmp_path / "several.al"
+    script.write_text(SEVERAL_JOBS)
+    calls = tmp_path / "calls.txt"
+    real = codegen.describe
+
+    def counted(job, *args, **kwargs):
+        # appended by whichever process forms the job (the copies are forks)
+        with calls.open("a") as f:
+            f.write(f"{job.where}\n")
+        return real(job, *args, **kwargs)
+
+    monkeypatch.setattr(codegen, "describe", counted)
+    seen = []
+    for workers in ("1", "2", "3"):
+        calls.write_text("")
+        out = tmp_path / f"j{workers}"
+        status = al2py_main(["code", "-j", workers, str(script), "-o", str(out)])
+        captured = capsys.readouterr()
+        assert status == 0, captured.err
+        formed = calls.read_text().splitlines()
+        assert sorted(formed) == sorted(j.where for j in _jobs_of(script, tmp_path))
+        files = {p.name: p.read_bytes() for p in sorted(out.iterdir())}
+        seen.append((files, captured.out.replace(str(out), "OUT"), captured.err))
+    assert seen[1] == seen[0] and seen[2] == seen[0]
+    files, _printed, notes = seen[0]
+    assert sorted(files) == [
+        "bigger.c",
+        "bigger.in",
+        "bigger.m",
+        "bigger_2.c",
+        "bigger_2.in",
+        "small.c",
+        "small.in",
+    ]
+    assert "is written as bigger_2.c (reading bigger_2.in" in notes
+    assert "reads bigger.in, written for CODE Ode bigger.c (line 9)" in notes
+    assert b"bigger_2.in" in files["bigger_2.c"] and b"0.25" in files["bigger_2.in"]
+
+
+def _jobs_of(script, tmp_path) -> list:
+    return _jobs(script.read_text(), tmp_path, script.stem)
+
+
+def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
+    """The copies are given the independent jobs largest first
+    (``estimated_work``), and a job that meets an earlier one's files once
+    that one is written."""
+    import concurrent.futures
+
+    from al2py_runtime import codegen
+
+    jobs = _jobs(SEVERAL_JOBS, tmp_path, "several")
+    work = [codegen.estimated_work(job) for job in jobs]
+    assert work[0] < work[1] == work[2] == work[3]
+    assert codegen.meeting(jobs, None) == [None, None, 1, 2]
+    assert codegen.meeting(jobs, "m") == [None, None, 1, 2]
+    submitted: list[int] = []
+
+    class Recording(concurrent.futures.ProcessPoolExecutor):
+        def submit(self, fn, /, *args, **kwargs):
+            submitted.append(args[0])
+            return super().submit(fn, *args, **kwargs)
+
+    monkeypatch.setattr(codegen, "ProcessPoolExecutor", Recording)
+    formers = codegen.Formers(jobs, None, None, 2)
+    try:
+        assert submitted == [1, 0]  # the larger first, the others wait
+        made: dict = {}
+        for i, job in enumerate(jobs):
+            got = formers.formed(i)
+            assert got is not None and got.error is None
+            codegen.write_one(job, got, tmp_path / "out", [], [], [], made)
+            formers.written(i, made)
+    finally:
+        formers.stop()
+    assert submitted == [1, 0, 2, 3]
