@@ -168,3 +168,40 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
     finally:
         formers.stop()
     assert submitted == [1, 0, 2, 3]
+
+
+def test_remembered_free_symbols_are_sympy_s():
+    """``free_symbols_of`` with a memo (each part's remembered) gives
+    sympy's ``free_symbols``, also of parts that bind their symbols."""
+    import random
+
+    import sympy as sp
+    from al2py_runtime.jobs import backends
+
+    x, y, z, n = sp.symbols("x y z n", real=True)
+    f = sp.Function("f")
+    t = sp.Symbol("t")
+    leaves = [x, y, z, sp.Integer(3), sp.pi, sp.Dummy("d"), f(t), sp.Rational(1, 2)]
+    rng = random.Random(35)
+
+    def build(depth: int) -> sp.Basic:
+        if depth == 0:
+            return rng.choice(leaves)
+        a, b = build(depth - 1), build(depth - 1)
+        return rng.choice(
+            [
+                a + b,
+                a * b,
+                sp.sin(a) * b,
+                sp.Pow(a, 2) + b,
+                sp.Derivative(f(t) * a, t),
+                sp.Integral(a * x, (x, 0, n)),
+                sp.IndexedBase("F")[n] * a,
+            ]
+        )
+
+    memo: dict = {}
+    for _ in range(200):
+        e = build(rng.randint(1, 4))
+        assert backends.free_symbols_of(e, memo) == e.free_symbols, e
+        assert backends.free_symbols_of(e) == e.free_symbols

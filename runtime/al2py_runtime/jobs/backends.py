@@ -363,9 +363,31 @@ def free_symbols_of(expr: Any, memo: dict | None = None) -> frozenset:
         return frozenset(sp.sympify(expr).free_symbols)
     if memo is None:
         return frozenset(expr.free_symbols)
+    return _free_of_parts(expr, memo)
+
+
+#: ``Basic.free_symbols``: a class whose own is this one's unites its
+#: arguments' (the others bind symbols, or are symbols)
+_UNITED = sp.Basic.free_symbols
+
+
+def _free_of_parts(expr: Any, memo: dict) -> frozenset:
+    """:func:`free_symbols_of` with ``memo``: each part's, remembered (a
+    program's expressions share their parts: sin(q4), a product, ...)."""
     found = memo.get(expr)
-    if found is None:
-        found = memo[expr] = frozenset(expr.free_symbols)
+    if found is not None:
+        return found
+    if type(expr).free_symbols is not _UNITED or not expr.args:
+        found = frozenset(expr.free_symbols)
+    else:
+        out: set[Any] = set()
+        for a in expr.args:
+            if a.is_Symbol:
+                out.add(a)
+            elif a.args or type(a).free_symbols is not _UNITED:
+                out |= _free_of_parts(a, memo)
+        found = frozenset(out)
+    memo[expr] = found
     return found
 
 
