@@ -715,6 +715,8 @@ def unpacked(
 ) -> list[Assign]:
     """The ``("ud", k, name)`` unpackings ``exprs`` use (``memo``: the
     program's free symbols, :attr:`Program.free`)."""
+    if not unpack:  # (an Algebraic job without unknowns)
+        return []
     free = _free(exprs, inter, memo)
     return [a for a in unpack if sp.Symbol(a.target[2], real=True) in free]
 
