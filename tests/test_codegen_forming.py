@@ -137,8 +137,8 @@ def _jobs_of(script, tmp_path) -> list:
 
 def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
     """The copies are given the independent jobs largest first
-    (``estimated_work``), and a job that meets an earlier one's files once
-    that one is written."""
+    (``estimated_work``), and a job whose name an earlier one's may take
+    once that one is written."""
     import concurrent.futures
 
     from al2py_runtime import codegen
@@ -146,7 +146,9 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
     jobs = _jobs(SEVERAL_JOBS, tmp_path, "several")
     work = [codegen.estimated_work(job) for job in jobs]
     assert work[0] < work[1] == work[2] == work[3]
-    assert codegen.meeting(jobs, None) == [None, None, 1, 2]
+    # bigger.m may be named apart only if bigger.in differs: it does not
+    # wait; the second bigger.c waits for the last job of its stem
+    assert codegen.meeting(jobs, None) == [None, None, None, 2]
     assert codegen.meeting(jobs, "m") == [None, None, 1, 2]
     submitted: list[int] = []
 
@@ -158,7 +160,7 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
     monkeypatch.setattr(codegen, "ProcessPoolExecutor", Recording)
     formers = codegen.Formers(jobs, None, None, 2)
     try:
-        assert submitted == [1, 0]  # the larger first, the others wait
+        assert submitted == [2, 1, 0]  # the larger first, the other waits
         made: dict = {}
         for i, job in enumerate(jobs):
             got = formers.formed(i)
@@ -167,7 +169,7 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
             formers.written(i, made)
     finally:
         formers.stop()
-    assert submitted == [1, 0, 2, 3]
+    assert submitted == [2, 1, 0, 3]
 
 
 def test_remembered_free_symbols_are_sympy_s():
@@ -205,3 +207,43 @@ def test_remembered_free_symbols_are_sympy_s():
         e = build(rng.randint(1, 4))
         assert backends.free_symbols_of(e, memo) == e.free_symbols, e
         assert backends.free_symbols_of(e) == e.free_symbols
+
+
+# a program of bigger.c's stem in another language, whose bigger.in would
+# hold other values: named apart after all
+OTHER_VALUES = SEVERAL_JOBS.replace(
+    "CODE ODE() bigger.m\nInput B=0.25\n", "Input B=0.25\nCODE ODE() bigger.m\n"
+)
+
+
+def test_a_job_of_one_stem_in_another_language_is_named_apart(tmp_path, capsys):
+    """``bigger.m`` after ``bigger.c``, formed by a copy before ``bigger.c``
+    is written, reads other values: it is formed again here, named apart,
+    as one process forms it."""
+    from al2py.cli import main as al2py_main
+
+    assert OTHER_VALUES != SEVERAL_JOBS
+    script = tmp_path / "other.al"
+    script.write_text(OTHER_VALUES)
+    seen = []
+    for workers in ("1", "3"):
+        out = tmp_path / f"j{workers}"
+        status = al2py_main(["code", "-j", workers, str(script), "-o", str(out)])
+        captured = capsys.readouterr()
+        assert status == 0, captured.err
+        files = {p.name: p.read_bytes() for p in sorted(out.iterdir())}
+        seen.append((files, captured.out.replace(str(out), "OUT"), captured.err))
+    assert seen[1] == seen[0]
+    files, _printed, notes = seen[0]
+    assert "is written as bigger_2.m (reading bigger_2.in" in notes
+    assert "is written as bigger_3.c (reading bigger_3.in" in notes
+    assert sorted(files) == [
+        "bigger.c",
+        "bigger.in",
+        "bigger_2.in",
+        "bigger_2.m",
+        "bigger_3.c",
+        "bigger_3.in",
+        "small.c",
+        "small.in",
+    ]

@@ -136,9 +136,12 @@ def write_programs(
         try:
             with progress.task("writing programs", len(jobs)) as task:
                 for i, job in enumerate(jobs):
+                    files = written_files(made)
                     formed = formers.formed(i, task)
+                    if formed is not None and not _named_so(formed, files):
+                        formed = None  # its .in file differs from an earlier one's
                     if formed is None:  # formed here, in order
-                        formed = form(job, lang, source, task, written_files(made))
+                        formed = form(job, lang, source, task, files)
                     task.advance()
                     write_one(job, formed, directory, written, errors, notes, made)
                     formers.written(i, made)
@@ -195,6 +198,16 @@ def form(
     except (NumericsError, backends.BackendError) as exc:
         return Formed(error=_located(job, exc))
     return Formed(name, text, infile, None, program, apart)
+
+
+def _named_so(formed: Formed, written: Mapping[str, str | None]) -> bool:
+    """Whether ``formed``, a copy's, has the name :func:`placed` gives it
+    among the files ``written`` before it: a copy that formed it before
+    they were written (:func:`meeting`) named it as its ``CODE`` statement
+    does."""
+    if formed.error is not None or formed.apart is not None:
+        return True  # (named among those files)
+    return placed(formed.name, formed.infile, written)[1] is None
 
 
 def written_files(made: Mapping[str, tuple[Job, str]]) -> dict[str, str | None]:
@@ -317,10 +330,12 @@ class Formers:
 
     The largest jobs are formed first (:func:`estimated_work`), so that no
     copy is left with a large one when the others are done.  A job whose
-    files may meet an earlier job's (one stem: :func:`meeting`) waits until
+    program's name an earlier job's may take (:func:`meeting`) waits until
     that one is written (:meth:`written`): the copy that forms it then
     names it among the files written before it, as this process would
-    (:func:`placed`), and forms it once."""
+    (:func:`placed`), and forms it once.  The others are named as their
+    ``CODE`` statements do; :func:`write_programs` forms one again only
+    when an earlier ``.in`` file of its stem holds other values."""
 
     def __init__(
         self, jobs: list[Job], lang: str | None, source: str | None, workers: int
@@ -415,28 +430,40 @@ def estimated_work(job: Job) -> int:
 
 
 def meeting(jobs: list[Job], lang: str | None) -> list[int | None]:
-    """For each job, the last earlier job whose files its own may meet
-    (None: none), so that it is named (:func:`placed`) once that one is
-    written: one whose stem is its own, or its own with ``_2``, ``_3``,
-    ... (a name it may be given apart), or whose stem is its own so
-    extended.  Stems are compared without case, as :func:`placed` does."""
-    stems: list[str | None] = []
+    """For each job, the earlier job it waits for (None: none): when an
+    earlier job's program may take its program's name (the same extension,
+    and a stem its own, or its own with ``_2``, ``_3``, ... as it may be
+    named apart, or the other way round), the last earlier job of such a
+    stem, whatever its extension, so that the files written before that
+    one are all those its own may meet (:func:`placed`).  Stems are
+    compared without case, as :func:`placed` does.  A job of such a stem
+    but another extension (``WhippleDynamics.c`` after
+    ``WhippleDynamics.m``) does not wait: it is named apart only when its
+    ``.in`` file's values differ, which :func:`write_programs` checks."""
+    names: list[tuple[str, str] | None] = []
     for job in jobs:
         try:
-            stems.append(PurePath(target_file(job, lang)).stem.lower())
+            path = PurePath(target_file(job, lang))
         except NumericsError:
-            stems.append(None)  # no file: an error line
+            names.append(None)  # no file: an error line
+            continue
+        names.append((path.stem.lower(), path.suffix.lower()))
     after: list[int | None] = []
-    for i, a in enumerate(stems):
-        last = None
-        for j in range(i):
-            b = stems[j]
-            if a is None or b is None:
-                continue
-            if a == b or a.startswith(b + "_") or b.startswith(a + "_"):
-                last = j
-        after.append(last)
+    for i, this in enumerate(names):
+        related = [
+            j
+            for j, other in enumerate(names[:i])
+            if this is not None and other is not None and _related(this[0], other[0])
+        ]
+        same = this is not None and any(names[j][1] == this[1] for j in related)
+        after.append(related[-1] if same else None)
     return after
+
+
+def _related(a: str, b: str) -> bool:
+    """Whether the stems ``a`` and ``b`` (lower case) may name one file:
+    the same, or one the other with ``_2``, ``_3``, ..."""
+    return a == b or a.startswith(b + "_") or b.startswith(a + "_")
 
 
 #: a copy's jobs, language and source (:func:`_copy_started`): the state of
