@@ -129,7 +129,9 @@ def test_processes_write_what_one_process_writes(tmp_path, capsys):
 
 
 def test_copies_form_each_job_as_this_process_does(tmp_path):
-    from al2py_runtime.codegen import Formers, form
+    """Each job formed by a copy as here, named among the files written
+    before it (those that meet an earlier job's wait until it is written)."""
+    from al2py_runtime.codegen import Formers, form, write_one, written_files
 
     from al2py.transpile import convert
 
@@ -139,21 +141,30 @@ def test_copies_form_each_job_as_this_process_does(tmp_path):
     jobs = namespace["al"].numerics.jobs
     pid = os.getpid()
     formers = Formers(jobs, None, None, 2)
+    made: dict = {}
     try:
-        apart = {i: formers.formed(i) for i in range(len(jobs))}
+        for i, job in enumerate(jobs):
+            got = formers.formed(i)
+            here = form(job, None, None, None, written_files(made))
+            assert got is not None  # formed by a copy
+            assert got.program is None  # (a copy sends only the texts)
+            fields = ("name", "text", "infile", "error", "apart")
+            assert [getattr(got, f) for f in fields] == [
+                getattr(here, f) for f in fields
+            ]
+            write_one(job, got, tmp_path / "out", [], [], [], made)
+            formers.written(i, made)
     finally:
         formers.stop()
-    for i, job in enumerate(jobs):
-        here = form(job, None, None)
-        got = apart[i]
-        assert got is not None  # formed by a copy
-        assert got.program is None  # (a copy sends only the texts)
-        assert (got.name, got.text, got.infile, got.error) == (
-            here.name,
-            here.text,
-            here.infile,
-            here.error,
-        )
+    assert sorted(made) == [
+        "decay.c",
+        "decay.in",
+        "decay.m",
+        "decay_2.c",
+        "decay_2.in",
+        "decayalg.in",
+        "decayalg.m",
+    ]
     assert os.getpid() == pid
     assert Formers(jobs, None, None, 1).formed(0) is None  # one worker: no copies
 

@@ -21,6 +21,7 @@ import contextlib
 import multiprocessing
 import os
 import signal
+from collections.abc import Mapping
 from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path, PurePath
@@ -40,12 +41,17 @@ __all__ = [
     "Formed",
     "Formers",
     "available_workers",
+    "estimated_work",
     "form",
     "in_text",
+    "meeting",
+    "placed",
     "program_source",
+    "renamed_program",
     "target_file",
     "write_one",
     "write_programs",
+    "written_files",
 ]
 
 #: File extensions of ``CODE`` and their language.
@@ -110,9 +116,9 @@ def write_programs(
     in ``notes`` (``note:`` lines).
 
     ``workers`` > 1: the jobs' programs are formed by that many forked
-    copies of this process at once (:class:`Formers`), then named and
-    written here in order: the same files, byte for byte.  Where ``fork``
-    is not available, or a copy fails, this process forms them."""
+    copies of this process at once (:class:`Formers`), then written here
+    in order: the same files, byte for byte.  Where ``fork`` is not
+    available, or a copy fails, this process forms them."""
     directory = Path(directory)
     written: list[Path] = []
     errors: list[str] = []
@@ -130,21 +136,15 @@ def write_programs(
         try:
             with progress.task("writing programs", len(jobs)) as task:
                 for i, job in enumerate(jobs):
+                    files = written_files(made)
                     formed = formers.formed(i, task)
+                    if formed is not None and not _named_so(formed, files):
+                        formed = None  # its .in file differs from an earlier one's
                     if formed is None:  # formed here, in order
-                        formed = form(job, lang, source, task)
+                        formed = form(job, lang, source, task, files)
                     task.advance()
-                    write_one(
-                        job,
-                        formed,
-                        lang,
-                        source,
-                        directory,
-                        written,
-                        errors,
-                        notes,
-                        made,
-                    )
+                    write_one(job, formed, directory, written, errors, notes, made)
+                    formers.written(i, made)
         finally:
             formers.stop()
     return written, errors
@@ -152,24 +152,32 @@ def write_programs(
 
 @dataclass
 class Formed:
-    """One job's program formed under the name its ``CODE`` statement gives
-    (:func:`form`): the file's name, its text and its ``.in`` file's (None
-    with NOSUBS); or ``error``, the message of a job that cannot be
-    written.  ``program`` is None when another process formed it."""
+    """One job's program formed (:func:`form`): the file's name, its text
+    and its ``.in`` file's (None with NOSUBS); or ``error``, the message of
+    a job that cannot be written.  ``apart``: the earlier file whose name
+    the ``CODE`` statement's would take (:func:`placed`), None when the
+    program has that name.  ``program`` is None when another process
+    formed it."""
 
     name: str = ""
     text: str = ""
     infile: str | None = None
     error: str | None = None
     program: Program | None = None
+    apart: str | None = None
 
 
 def form(
-    job: Job, lang: str | None, source: str | None, task: progress.Task | None = None
+    job: Job,
+    lang: str | None,
+    source: str | None,
+    task: progress.Task | None = None,
+    written: Mapping[str, str | None] | None = None,
 ) -> Formed:
     """The program of ``job`` in ``lang`` (or its file's language), its
     text and its ``.in`` file's, under the name its ``CODE`` statement
-    gives; ``task`` is told each step."""
+    gives, or, among the files ``written`` before it (:func:`written_files`),
+    the name :func:`placed` gives it; ``task`` is told each step."""
     try:
         name = PurePath(target_file(job, lang)).name
         static = job.kind in ("ALGEBRAIC", "NONLINEAR")
@@ -177,13 +185,68 @@ def form(
             task.doing(f"{name} (forming the equations)")
         program = (describe_static if static else describe)(job, source)
         program.stem = PurePath(name).stem
+        infile = in_text(program) if not program.nosubs else None
+        apart = None
+        if written is not None:
+            name, apart = placed(name, infile, written)
+            if apart is not None:
+                renamed_program(program, PurePath(name).stem)
+                infile = in_text(program) if infile is not None else None
         if task is not None:
             task.doing(f"{name} (printing)")
         text = program_source(program, name)
-        infile = in_text(program) if not program.nosubs else None
     except (NumericsError, backends.BackendError) as exc:
         return Formed(error=_located(job, exc))
-    return Formed(name, text, infile, None, program)
+    return Formed(name, text, infile, None, program, apart)
+
+
+def _named_so(formed: Formed, written: Mapping[str, str | None]) -> bool:
+    """Whether ``formed``, a copy's, has the name :func:`placed` gives it
+    among the files ``written`` before it: a copy that formed it before
+    they were written (:func:`meeting`) named it as its ``CODE`` statement
+    does."""
+    if formed.error is not None or formed.apart is not None:
+        return True  # (named among those files)
+    return placed(formed.name, formed.infile, written)[1] is None
+
+
+def written_files(made: Mapping[str, tuple[Job, str]]) -> dict[str, str | None]:
+    """The files written so far (:func:`write_programs`'s ``made``) as
+    :func:`placed` reads them: by lower-case name, a ``.in`` file's text,
+    None for a program's."""
+    return {k: (v[1] if k.endswith(".in") else None) for k, v in made.items()}
+
+
+def placed(
+    name: str, infile: str | None, written: Mapping[str, str | None]
+) -> tuple[str, str | None]:
+    """The name of the program ``name`` (whose ``.in`` file's text under
+    that name is ``infile``) among the files ``written`` before it
+    (:func:`written_files`), and the earlier file it is named apart from
+    (None: none): ``STEM_2`` (``_3``, ...) when ``name`` is taken, or when
+    ``STEM.in`` is and holds other values (see :func:`write_programs`)."""
+    stem = PurePath(name).stem
+    own_in = f"{stem}.in"
+    if name.lower() in written:
+        own = name
+    elif infile is not None and written.get(own_in.lower(), infile) != infile:
+        own = own_in
+    else:
+        return name, None
+    suffix = PurePath(name).suffix
+    k = 2
+    while any(f"{stem}_{k}{x}".lower() in written for x in (suffix, ".in")):
+        k += 1
+    return f"{stem}_{k}{suffix}", own
+
+
+def renamed_program(program: Program, stem: str) -> None:
+    """``program`` named ``stem``: its ``.in`` file and its tables' too."""
+    for t in program.tables:  # "% FILE: STEM.1" in each header
+        t.header = t.header.replace(
+            f"{program.stem}.{t.number}", f"{stem}.{t.number}", 1
+        )
+    program.stem = stem
 
 
 def _located(job: Job, exc: Exception) -> str:
@@ -194,8 +257,6 @@ def _located(job: Job, exc: Exception) -> str:
 def write_one(
     job: Job,
     formed: Formed,
-    lang: str | None,
-    source: str | None,
     directory: Path,
     written: list[Path],
     errors: list[str],
@@ -203,50 +264,19 @@ def write_one(
     made: dict[str, tuple[Job, str]],
 ) -> None:
     """Write one job's program and ``.in`` as ``formed`` (see
-    :func:`write_programs`); ``made`` holds the files written so far, by
-    lower-case name."""
+    :func:`write_programs`), named among the files written before it
+    (``made``: by lower-case name, the job that wrote each and its text)."""
     if formed.error is not None:
         errors.append(formed.error)
         return
     name, text, infile = formed.name, formed.text, formed.infile
     stem = PurePath(name).stem
-    try:
-        clash = name.lower() in made or (
-            infile is not None
-            and f"{stem}.in".lower() in made
-            and made[f"{stem}.in".lower()][1] != infile
+    if formed.apart is not None:
+        earlier = made[formed.apart.lower()][0]
+        notes.append(
+            f"{job.where} is written as {name} (reading {stem}.in,"
+            f" writing {stem}.1, ...): {formed.apart} is {earlier.where}'s"
         )
-        if clash:
-            program = formed.program
-            if program is None:  # formed in another process: again here
-                again = form(job, lang, source)
-                if again.error is not None:
-                    errors.append(again.error)
-                    return
-                program = again.program
-                assert program is not None
-            own = name if name.lower() in made else f"{stem}.in"
-            earlier = made[own.lower()][0]
-            suffix = PurePath(name).suffix
-            k = 2
-            while any(f"{stem}_{k}{x}".lower() in made for x in (suffix, ".in")):
-                k += 1
-            program.stem = f"{stem}_{k}"
-            for t in program.tables:  # "% FILE: STEM.1" in each header
-                t.header = t.header.replace(
-                    f"{stem}.{t.number}", f"{program.stem}.{t.number}", 1
-                )
-            name = f"{program.stem}{suffix}"
-            stem = program.stem
-            text = program_source(program, name)
-            infile = in_text(program) if not program.nosubs else None
-            notes.append(
-                f"{job.where} is written as {name} (reading {stem}.in,"
-                f" writing {stem}.1, ...): {own} is {earlier.where}'s"
-            )
-    except (NumericsError, backends.BackendError) as exc:
-        errors.append(_located(job, exc))
-        return
     files = [(name, text)]
     if infile is not None:
         shared = made.get(f"{stem}.in".lower())
@@ -291,24 +321,45 @@ class Formers:
     of this process: a standard-library process pool
     (:class:`~concurrent.futures.ProcessPoolExecutor` over ``fork``), whose
     copies share the derived model with this process, so that only the
-    programs' texts travel back.  A job's program depends on the job and
-    the model alone, never on what was formed before or where, so a copy
-    forms what this process would.  No copies are made with one worker or
-    where ``fork`` is not available; a job whose copy failed (or whose pool
-    broke) is formed here (:meth:`formed` gives None)."""
+    programs' texts travel back.  A job's program depends on the job, the
+    model and the files written before it alone, never on where it was
+    formed, so a copy forms what this process would.  No copies are made
+    with one worker or where ``fork`` is not available; a job whose copy
+    failed (or whose pool broke) is formed here (:meth:`formed` gives
+    None).
+
+    The largest jobs are formed first (:func:`estimated_work`), so that no
+    copy is left with a large one when the others are done.  A job whose
+    program's name an earlier job's may take (:func:`meeting`) waits until
+    that one is written (:meth:`written`): the copy that forms it then
+    names it among the files written before it, as this process would
+    (:func:`placed`), and forms it once.  The others are named as their
+    ``CODE`` statements do; :func:`write_programs` forms one again only
+    when an earlier ``.in`` file of its stem holds other values."""
 
     def __init__(
         self, jobs: list[Job], lang: str | None, source: str | None, workers: int
     ) -> None:
         self._futures: dict[int, Future] = {}
         self._pool: ProcessPoolExecutor | None = None
-        self._wheres = [job.where for job in jobs]
+        self._jobs = jobs
+        #: the jobs waiting for each job to be written (see :meth:`written`)
+        self._waiting: dict[int, list[int]] = {}
         n = self._workers = min(workers, len(jobs))
         if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
             return
         # the printers' modules imported once, before the copies are made
         from . import c, fortran, octave  # noqa: F401
 
+        after = meeting(jobs, lang)
+        first = [i for i in range(len(jobs)) if after[i] is None]
+        for i, j in enumerate(after):
+            if j is not None:
+                self._waiting.setdefault(j, []).append(i)
+        work = [estimated_work(job) for job in jobs]
+        # the largest first (of equal ones, the later: a script's later
+        # jobs tend to be the larger)
+        first.sort(key=lambda i: (work[i], i), reverse=True)
         try:
             self._pool = ProcessPoolExecutor(
                 n,
@@ -316,11 +367,10 @@ class Formers:
                 initializer=_copy_started,
                 initargs=(jobs, lang, source),
             )
-            # the later jobs first (a script's later jobs tend to be the
-            # larger); the copies are forked at the first submit, before the
-            # pool's own thread starts
-            for i in reversed(range(len(jobs))):
-                self._futures[i] = self._pool.submit(_form_in_copy, i)
+            # the copies are forked at the first submit, before the pool's
+            # own thread starts
+            for i in first:
+                self._futures[i] = self._pool.submit(_form_in_copy, i, None)
         except OSError:
             self.stop()
 
@@ -331,11 +381,26 @@ class Formers:
         if future is None:
             return None
         if task is not None:
-            task.doing(f"{self._wheres[i]} (in {self._workers} processes)")
+            task.doing(f"{self._jobs[i].where} (in {self._workers} processes)")
         try:
             return Formed(*future.result())
         except Exception:  # noqa: BLE001 - the copy failed: formed here
             return None
+
+    def written(self, i: int, made: dict[str, tuple[Job, str]]) -> None:
+        """Job ``i``'s files are written (``made``: every file written so
+        far, see :func:`write_programs`): the jobs waiting for it are
+        formed now, named among those files."""
+        waiting = self._waiting.pop(i, [])
+        if self._pool is None or not waiting:
+            return
+        files = written_files(made)
+        waiting.sort(key=lambda k: (estimated_work(self._jobs[k]), k), reverse=True)
+        try:
+            for k in waiting:
+                self._futures[k] = self._pool.submit(_form_in_copy, k, files)
+        except (OSError, RuntimeError):  # the pool broke: formed here
+            pass
 
     def stop(self) -> None:
         """The copies ended: at once when jobs are left (an error here, or
@@ -348,6 +413,57 @@ class Formers:
                 child.terminate()
         self._futures.clear()
         pool.shutdown(wait=True, cancel_futures=True)
+
+
+def estimated_work(job: Job) -> int:
+    """A cheap measure of the work of forming ``job``'s program, to form
+    the largest first (:class:`Formers`): the scalar expressions it
+    evaluates (each Output's and Encode's items, each state's derivative,
+    the mass matrix and forcing of its implicit equations, the equations
+    of an Algebraic or Nonlinear job and their Jacobian)."""
+    count = sum(len(o.items) for o in job.outputs)
+    count += sum(max(order, 1) for _name, _obj, order in job.variables)
+    for eqs in (job.zero, job.eqs):
+        if eqs is not None:
+            count += len(eqs) * (len(eqs) + 1)
+    return count
+
+
+def meeting(jobs: list[Job], lang: str | None) -> list[int | None]:
+    """For each job, the earlier job it waits for (None: none): when an
+    earlier job's program may take its program's name (the same extension,
+    and a stem its own, or its own with ``_2``, ``_3``, ... as it may be
+    named apart, or the other way round), the last earlier job of such a
+    stem, whatever its extension, so that the files written before that
+    one are all those its own may meet (:func:`placed`).  Stems are
+    compared without case, as :func:`placed` does.  A job of such a stem
+    but another extension (``WhippleDynamics.c`` after
+    ``WhippleDynamics.m``) does not wait: it is named apart only when its
+    ``.in`` file's values differ, which :func:`write_programs` checks."""
+    names: list[tuple[str, str] | None] = []
+    for job in jobs:
+        try:
+            path = PurePath(target_file(job, lang))
+        except NumericsError:
+            names.append(None)  # no file: an error line
+            continue
+        names.append((path.stem.lower(), path.suffix.lower()))
+    after: list[int | None] = []
+    for i, this in enumerate(names):
+        related = [
+            j
+            for j, other in enumerate(names[:i])
+            if this is not None and other is not None and _related(this[0], other[0])
+        ]
+        same = this is not None and any(names[j][1] == this[1] for j in related)
+        after.append(related[-1] if same else None)
+    return after
+
+
+def _related(a: str, b: str) -> bool:
+    """Whether the stems ``a`` and ``b`` (lower case) may name one file:
+    the same, or one the other with ``_2``, ``_3``, ..."""
+    return a == b or a.startswith(b + "_") or b.startswith(a + "_")
 
 
 #: a copy's jobs, language and source (:func:`_copy_started`): the state of
@@ -363,7 +479,10 @@ def _copy_started(jobs: list[Job], lang: str | None, source: str | None) -> None
     _COPY.update(jobs=jobs, lang=lang, source=source)
 
 
-def _form_in_copy(i: int) -> tuple[str, str, str | None, str | None]:
-    """In a copy: job ``i``'s program, as :class:`Formed`'s fields."""
-    f = form(_COPY["jobs"][i], _COPY["lang"], _COPY["source"])
-    return f.name, f.text, f.infile, f.error
+def _form_in_copy(
+    i: int, written: dict[str, str | None] | None
+) -> tuple[str, str, str | None, str | None, None, str | None]:
+    """In a copy: job ``i``'s program (named among the files ``written``
+    before it, see :func:`form`), as :class:`Formed`'s fields."""
+    f = form(_COPY["jobs"][i], _COPY["lang"], _COPY["source"], None, written)
+    return f.name, f.text, f.infile, f.error, None, f.apart

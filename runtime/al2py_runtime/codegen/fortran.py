@@ -167,7 +167,7 @@ def _steps(program: Program, block: list[Assign], printer: _Printer) -> list[_St
             steps.append(_Step([line], [a.target[2]], set(), a))
             continue
         target = one_based_target(a)
-        uses = {s.name for s in backends.free_symbols_of(a.expr)}
+        uses = {s.name for s in program.free_symbols(a.expr)}
         defines = [a.target[1]] if kind == "tmp" else []
         steps.append(_Step(_code(printer, a.expr, target), defines, uses, a))
     if block is program.eqns and program.solve_at == len(block) and n:

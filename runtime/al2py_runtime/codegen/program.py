@@ -272,6 +272,9 @@ class Program:
     t0: float = 0.0  # the time of a Nonlinear/Algebraic job (TINITIAL)
     labels: list[str] = field(default_factory=list)  # the equations' names
     unknowns: list[str] = field(default_factory=list)  # the script's names
+    #: the free symbols of this program's expressions, remembered
+    #: (:func:`..jobs.backends.free_symbols_of`'s memo): the program's own
+    free: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def task(self) -> str:
@@ -350,10 +353,15 @@ class Program:
         return sum(t.columns for t in self.tables)
 
     def params_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
-        return _used(self.constants, block)
+        return _used(self.constants, block, self.free)
 
     def states_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
-        return _used(self.initials, block)
+        return _used(self.initials, block, self.free)
+
+    def free_symbols(self, expr: Any) -> frozenset:
+        """``expr.free_symbols`` of one of this program's expressions,
+        remembered (:attr:`free`)."""
+        return backends.free_symbols_of(expr, self.free)
 
 
 def one_based_target(a: Assign) -> str:
@@ -368,10 +376,12 @@ def one_based_target(a: Assign) -> str:
     return f"{kind}({a.target[1] + 1})"
 
 
-def _used(entries: list[Entry], block: Iterable[Assign]) -> list[tuple[int, Entry]]:
+def _used(
+    entries: list[Entry], block: Iterable[Assign], free: dict
+) -> list[tuple[int, Entry]]:
     names: set[str] = set()
     for a in block:
-        names |= {s.name for s in backends.free_symbols_of(a.expr)}
+        names |= {s.name for s in backends.free_symbols_of(a.expr, free)}
     return [(i, e) for i, e in enumerate(entries) if e.ident in names]
 
 
@@ -433,7 +443,7 @@ def describe(
 ) -> Program:
     """The program of a Dynamics/ODE ``job`` with its Input values
     (:func:`.static.describe_static` describes Algebraic/Nonlinear ones)."""
-    backends.forget_free_symbols()
+    free_memo: dict = {}  # the program's free symbols (Program.free)
     vals, keep = input_values(job, {})
     c = dynamics_equations(job, frozenset(keep), deferred=True)
     y0 = initial_state(job, c, vals)
@@ -485,7 +495,11 @@ def describe(
     # a derivative that reads an acceleration, itself or through the
     # intermediates it needs, is computed after the accelerations are solved
     # (only those intermediates asked: the outputs' may be most of them)
-    late_ids = set(backends.reading(backends.needed(inter, derivs), derivs, accel_syms))
+    late_ids = set(
+        backends.reading(
+            backends.needed(inter, derivs, free_memo), derivs, accel_syms, free_memo
+        )
+    )
     x_names = iter_names("x", taken)
     first = [sub(e) for e in [*spec.mass, *spec.forcing]]
     first_targets = [("m", i // n, i % n) for i in range(n * n)]
@@ -493,20 +507,25 @@ def describe(
     free = [i for i in range(len(derivs)) if i not in late_ids]
     first += [derivs[i] for i in free]
     first_targets += [("dy", i) for i in free]
-    eqns, defined = assignments(first, first_targets, inter, x_names, set())
-    eqns = _zeros(unspecified, eqns) + eqns
+    eqns, defined = assignments(first, first_targets, inter, x_names, set(), free_memo)
+    eqns = _zeros(unspecified, eqns, free_memo) + eqns
     solve_at = len(eqns)
     unpack = [Assign(("ud", k, name), 0) for k, name in enumerate(accel_names)]
     late = [derivs[i] for i in sorted(late_ids)]
     if late:
-        eqns += unpacked(unpack, late, inter)
+        eqns += unpacked(unpack, late, inter, free_memo)
         more, _ = assignments(
-            late, [("dy", i) for i in sorted(late_ids)], inter, x_names, defined
+            late,
+            [("dy", i) for i in sorted(late_ids)],
+            inter,
+            x_names,
+            defined,
+            free_memo,
         )
         eqns += more
     flat = [sub(e) for row in spec.outputs for e in row]
-    outputs = output_block(flat, unpack, inter, x_names)
-    outputs = _zeros(unspecified, outputs) + outputs
+    outputs = output_block(flat, unpack, inter, x_names, free_memo)
+    outputs = _zeros(unspecified, outputs, free_memo) + outputs
     return new_program(
         job,
         source,
@@ -515,6 +534,7 @@ def describe(
         (n, eqns, solve_at, outputs),
         output_tables(job, vals),
         notes=notes,
+        free=free_memo,
     )
 
 
@@ -688,21 +708,32 @@ def _plain_factor(a: Any, mul: bool) -> bool:
 
 
 def unpacked(
-    unpack: list[Assign], exprs: list[Any], inter: list[tuple[Any, Any]]
+    unpack: list[Assign],
+    exprs: list[Any],
+    inter: list[tuple[Any, Any]],
+    memo: dict | None = None,
 ) -> list[Assign]:
-    """The ``("ud", k, name)`` unpackings ``exprs`` use."""
-    free = _free(exprs, inter)
+    """The ``("ud", k, name)`` unpackings ``exprs`` use (``memo``: the
+    program's free symbols, :attr:`Program.free`)."""
+    if not unpack:  # (an Algebraic job without unknowns)
+        return []
+    free = _free(exprs, inter, memo)
     return [a for a in unpack if sp.Symbol(a.target[2], real=True) in free]
 
 
 def output_block(
-    flat: list[Any], unpack: list[Assign], inter: list[tuple[Any, Any]], names: Any
+    flat: list[Any],
+    unpack: list[Assign],
+    inter: list[tuple[Any, Any]],
+    names: Any,
+    memo: dict | None = None,
 ) -> list[Assign]:
-    """The outputs routine's body: unpackings, intermediates, ``out[k]``."""
+    """The outputs routine's body: unpackings, intermediates, ``out[k]``
+    (``memo``: the program's free symbols, :attr:`Program.free`)."""
     more, _ = assignments(
-        flat, [("out", k) for k in range(len(flat))], inter, names, set()
+        flat, [("out", k) for k in range(len(flat))], inter, names, set(), memo
     )
-    return unpacked(unpack, flat, inter) + more
+    return unpacked(unpack, flat, inter, memo) + more
 
 
 def output_tables(
@@ -735,12 +766,12 @@ def in_order(name: str) -> tuple[int, str]:
     return name.count("'"), name.lower()
 
 
-def _zeros(names: list[sp.Symbol], block: list[Assign]) -> list[Assign]:
+def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assign]:
     """``NAME = 0`` for the Specified quantities without a value that
     ``block`` uses (Autolev's "Quantities to be specified")."""
     if not names:
         return []
-    used = _free([sp.sympify(a.expr) for a in block], [])
+    used = _free([sp.sympify(a.expr) for a in block], [], memo)
     return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
 
 
@@ -754,12 +785,14 @@ def iter_names(prefix: str, taken: set[str]) -> Any:
             yield name
 
 
-def _free(exprs: list[Any], inter: list[tuple[Any, Any]]) -> set[Any]:
+def _free(
+    exprs: list[Any], inter: list[tuple[Any, Any]], memo: dict | None
+) -> set[Any]:
     out: set[Any] = set()
     for e in exprs:
-        out |= backends.free_symbols_of(e)
-    for _s, body in backends.needed(inter, exprs):
-        out |= backends.free_symbols_of(body)
+        out |= backends.free_symbols_of(e, memo)
+    for _s, body in backends.needed(inter, exprs, memo):
+        out |= backends.free_symbols_of(body, memo)
     return out
 
 
@@ -769,12 +802,14 @@ def assignments(
     inter: list[tuple[Any, Any]],
     names: Any,
     defined: set[Any],
+    memo: dict | None = None,
 ) -> tuple[list[Assign], set[Any]]:
     """The intermediates ``exprs`` need (those not ``defined`` yet), then
-    common subexpressions, then the targets."""
+    common subexpressions, then the targets (``memo``: the program's free
+    symbols, :attr:`Program.free`)."""
     out = []
     defined = set(defined)
-    for s, body in backends.needed(inter, exprs):
+    for s, body in backends.needed(inter, exprs, memo):
         if s not in defined:
             out.append(Assign(("tmp", s.name), body))
             defined.add(s)

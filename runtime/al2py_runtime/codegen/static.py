@@ -23,7 +23,6 @@ from typing import Any
 
 import sympy as sp
 
-from ..jobs import backends
 from ..jobs.records import normalize_name
 from ..jobs.run import (
     Column,
@@ -58,7 +57,7 @@ __all__ = ["describe_static"]
 def describe_static(
     job: Job, source: str | None = None, nosubs: bool | None = None
 ) -> Program:
-    backends.forget_free_symbols()
+    free: dict = {}  # the program's free symbols (Program.free)
     vals, keep = input_values(job, {})
     spec = static_equations(job, frozenset(keep), deferred=True)
     made = Entries(job, vals)
@@ -121,7 +120,7 @@ def describe_static(
         at0 = {rename[x]: 0 for x in spec.xs}
         first += [-e.xreplace(at0) for e in eqs]
         targets += [("f", i) for i in range(n)]
-    eqns, _ = assignments(first, targets, inter, x_names, set())
+    eqns, _ = assignments(first, targets, inter, x_names, set(), free)
     flat = [sub(e) for row in spec.outputs for e in row]
     columns = None
     if names and not any(not o.encoded for o in job.outputs):
@@ -135,7 +134,7 @@ def describe_static(
             cols.insert(0, Column(constants[-1].name, job.sweep[1]))
             flat.insert(0, sp.Symbol(constants[-1].ident, real=True))
         columns = [cols]
-    outputs = output_block(flat, unpack, inter, x_names)
+    outputs = output_block(flat, unpack, inter, x_names, free)
     try:
         tables = output_tables(job, vals, columns)
     except UnitError as exc:
@@ -152,6 +151,7 @@ def describe_static(
         t0=integration_parameters(vals)["TINITIAL"],
         labels=eq_labels(job),
         unknowns=names,
+        free=free,
     )
 
 

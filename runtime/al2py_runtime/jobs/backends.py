@@ -36,7 +36,6 @@ back to ``lambdify``.  ``AL2PY_BACKEND`` sets the default for a process.
 from __future__ import annotations
 
 import ctypes
-import functools
 import hashlib
 import math
 import os
@@ -104,6 +103,9 @@ class DynamicsSpec:
     derivs: list[Any]
     outputs: list[list[Any]] = field(default_factory=list)
     intermediates: list[tuple[Any, Any]] = field(default_factory=list)
+    #: the free symbols of its expressions, remembered while it is compiled
+    #: (:func:`free_symbols_of`'s memo): its own
+    free: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         n = len(self.accels)
@@ -299,21 +301,25 @@ def _canonical(spec: DynamicsSpec) -> DynamicsSpec:
 
 def _split_derivs(spec: DynamicsSpec) -> tuple[list[int], list[int]]:
     """Indices of derivatives free of ``ud`` and of those that use it."""
-    uses = reading(spec.intermediates, spec.derivs, set(spec.accels))
+    uses = reading(spec.intermediates, spec.derivs, set(spec.accels), spec.free)
     return [i for i in range(len(spec.derivs)) if i not in uses], uses
 
 
 def reading(
-    intermediates: Sequence[tuple[Any, Any]], exprs: Sequence[Any], symbols: set
+    intermediates: Sequence[tuple[Any, Any]],
+    exprs: Sequence[Any],
+    symbols: set,
+    memo: dict | None = None,
 ) -> list[int]:
     """The indices of ``exprs`` that read one of ``symbols``, themselves or
     through the intermediates they use (each defined before its uses, so
-    one pass finds the intermediates that read them at any depth)."""
+    one pass finds the intermediates that read them at any depth);
+    ``memo``: :func:`free_symbols_of`'s."""
     reads = set(symbols)
     for sym, expr in intermediates:
-        if free_symbols_of(expr) & reads:
+        if free_symbols_of(expr, memo) & reads:
             reads.add(sym)
-    return [i for i, e in enumerate(exprs) if free_symbols_of(e) & reads]
+    return [i for i, e in enumerate(exprs) if free_symbols_of(e, memo) & reads]
 
 
 # ----------------------------------------------------------------- lambdify
@@ -327,43 +333,62 @@ def _inline(spec: DynamicsSpec, exprs: list[Any]) -> list[Any]:
 
 
 def needed(
-    intermediates: Sequence[tuple[Any, Any]], exprs: Iterable[Any]
+    intermediates: Sequence[tuple[Any, Any]],
+    exprs: Iterable[Any],
+    memo: dict | None = None,
 ) -> list[tuple[Any, Any]]:
-    """The intermediates that ``exprs`` use, in order."""
+    """The intermediates that ``exprs`` use, in order; ``memo``:
+    :func:`free_symbols_of`'s."""
     want: set[Any] = set()
     for e in exprs:
-        want |= free_symbols_of(e)
+        want |= free_symbols_of(e, memo)
     keep = []
     for sym, expr in reversed(list(intermediates)):
         if sym in want:
             keep.append((sym, expr))
-            want |= free_symbols_of(expr)
+            want |= free_symbols_of(expr, memo)
     return keep[::-1]
 
 
-def free_symbols_of(expr: Any) -> frozenset:
-    """``sympify(expr).free_symbols``, remembered: writing a program asks it
-    of the same intermediates and equations again and again (sympy walks the
-    whole expression each time)."""
+def free_symbols_of(expr: Any, memo: dict | None = None) -> frozenset:
+    """``sympify(expr).free_symbols``.  ``memo`` (a dict its owner keeps,
+    say the program being formed: :attr:`..codegen.program.Program.free`)
+    remembers each answer: forming and printing a program ask it of the
+    same intermediates and equations again and again, and sympy walks the
+    whole expression each time.  Its owner's expressions alone meet in it,
+    so it never holds another program's equal expressions (each found
+    would cost a comparison of the two, node by node) and goes with its
+    owner."""
     if not isinstance(expr, sp.Basic):
         return frozenset(sp.sympify(expr).free_symbols)
-    return _free_symbols(expr)
+    if memo is None:
+        return frozenset(expr.free_symbols)
+    return _free_of_parts(expr, memo)
 
 
-@functools.lru_cache(maxsize=1 << 16)
-def _free_symbols(expr: Any) -> frozenset:
-    return frozenset(expr.free_symbols)
+#: ``Basic.free_symbols``: a class whose own is this one's unites its
+#: arguments' (the others bind symbols, or are symbols)
+_UNITED = sp.Basic.free_symbols
 
 
-def forget_free_symbols() -> None:
-    """Forget what :func:`free_symbols_of` remembers: before a program is
-    formed, whose expressions equal those of the one before (a CODE
-    Dynamics job written in two languages) but are other objects, as are
-    its symbols (sympy keeps a thousand): each remembered answer found for
-    one would cost a comparison of the two, node by node, and hold the
-    other program's symbols, compared again wherever they meet this
-    program's."""
-    _free_symbols.cache_clear()
+def _free_of_parts(expr: Any, memo: dict) -> frozenset:
+    """:func:`free_symbols_of` with ``memo``: each part's, remembered (a
+    program's expressions share their parts: sin(q4), a product, ...)."""
+    found = memo.get(expr)
+    if found is not None:
+        return found
+    if type(expr).free_symbols is not _UNITED or not expr.args:
+        found = frozenset(expr.free_symbols)
+    else:
+        out: set[Any] = set()
+        for a in expr.args:
+            if a.is_Symbol:
+                out.add(a)
+            elif a.args or type(a).free_symbols is not _UNITED:
+                out |= _free_of_parts(a, memo)
+        found = frozenset(out)
+    memo[expr] = found
+    return found
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
@@ -1096,7 +1121,7 @@ def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     spec, names = _c_form(spec)
     printer = CPrinter(names=names)
     all_out = [e for row in spec.outputs for e in row]
-    zs = needed(spec.intermediates, all_out)
+    zs = needed(spec.intermediates, all_out, spec.free)
     if len(zs) <= SPLIT:
         yield (c_model_source(spec), ("-O2",))
         return
@@ -1148,7 +1173,7 @@ def _intermediates(
     """Declarations of the intermediates that ``exprs`` need, in order."""
     return [
         f"{indent}const double {c_expression(s, printer)} = {c_expression(e, printer)};"
-        for s, e in needed(spec.intermediates, exprs)
+        for s, e in needed(spec.intermediates, exprs, spec.free)
     ]
 
 

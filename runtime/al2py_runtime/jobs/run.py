@@ -216,55 +216,69 @@ class _Slots:
         thousands) reduce to one; anything else takes the general path.
         Parameters are made in the general path's order."""
         zs, derivs, funcs, syms = [], [], [], []
-        stack = [(body, 0)]  # 0: plain, 1: inside a function, 2: a derivative
+        known = self.known
+        stack = [body]  # plain parts
+        inner = []  # parts inside a function's arguments
         while stack:
-            e, mode = stack.pop()
+            e = stack.pop()
             if isinstance(e, autoz.Intermediate):
-                if e not in self.known:
+                if e not in known:
                     return self.numeric(body, what)
                 zs.append(e)
             elif isinstance(e, sp.Derivative):
-                if mode:  # a derivative inside a function: the general path
-                    return self.numeric(body, what)
                 derivs.append(e)
             elif isinstance(e, AppliedUndef):
-                if mode == 2:
-                    stack.extend((a, 2) for a in e.args)
-                    continue
                 funcs.append(e)
-                stack.extend((a, 1) for a in e.args)
+                inner.extend(e.args)
             elif e.is_Symbol:
-                if mode == 0:
-                    syms.append(e)
+                syms.append(e)
             elif not e.is_Atom:
-                stack.extend((a, mode) for a in e.args)
+                stack.extend(e.args)
+        while inner:  # a function's arguments: its symbols go with it
+            e = inner.pop()
+            if isinstance(e, autoz.Intermediate):
+                if e not in known:
+                    return self.numeric(body, what)
+                zs.append(e)
+            elif isinstance(e, sp.Derivative):  # the general path
+                return self.numeric(body, what)
+            elif isinstance(e, AppliedUndef):
+                funcs.append(e)
+                inner.extend(e.args)
+            elif not e.is_Atom:
+                inner.extend(e.args)
         for obj in sorted(
-            {d for d in derivs if d not in self.known}, key=sp.default_sort_key
+            {d for d in derivs if d not in known}, key=sp.default_sort_key
         ):
             self._derivative_param(obj, what)
         for obj in sorted(
-            {f for f in funcs if f not in self.known}, key=sp.default_sort_key
+            {f for f in funcs if f not in known}, key=sp.default_sort_key
         ):
             self._param(obj)
-        rule = {}
-        for sym in sorted(set(syms), key=sp.default_sort_key):
-            if sym in self._dummies or sym is self.time:
-                continue
-            if sym == t:
-                rule[sym] = self.time
-                continue
-            if sym not in self.known:
+        # the new parameters among the symbols (the known ones, the dummies
+        # and T stay, t becomes T), in the general path's order
+        fresh = {
+            sym
+            for sym in syms
+            if sym not in known and sym not in self._dummies and sym is not self.time
+        }
+        for sym in sorted(fresh, key=sp.default_sort_key):
+            if sym != t:
                 self._param(sym)
-            rule[sym] = self.known[sym]
-        for obj in (*zs, *derivs, *funcs):
-            rule[obj] = self.known[obj]
         # One memo for every definition: each rule maps an object as
         # ``known`` does (or leaves a dummy, T, as it is), and a part that
         # the renaming reaches holds its objects at the same level in any
         # definition (not inside a function or a derivative, which are
         # replaced whole), so its answer is the same under any rule.
-        if self.deferred:  # ``rule`` is ``known``'s (and T's) on its objects
-            return Deferred(body, self.known, self.time)
+        if self.deferred:  # ``known``'s (and T's) rule on its objects
+            return Deferred(body, known, self.time)
+        rule = {}
+        for sym in set(syms):
+            if sym in self._dummies or sym is self.time:
+                continue
+            rule[sym] = self.time if sym == t else known[sym]
+        for obj in (*zs, *derivs, *funcs):
+            rule[obj] = known[obj]
         return renamed(body, rule, self._renamed)
 
     def _derivative_param(self, obj: Any, what: str) -> None:
