@@ -257,7 +257,7 @@ def _parts(
     for name, (loads, own, stores, group) in zip(names, planned, strict=True):
         assigns = [step.assign for step in group if step.assign is not None]
         text = "\n".join(line for step in group for line in step.lines)
-        use_t = _uses(assigns, "T")
+        use_t = _uses(program, assigns, "T")
         use_y = bool(program.states_used(assigns))
         use_p = bool(program.params_used(assigns))
         used_arrays = [a for a in arrays if re.search(rf"\b{a}\b", text)]
@@ -325,9 +325,10 @@ def _locals(program: Program, block: list[Assign]) -> list[str]:
     return names
 
 
-def _uses(block: list[Assign], name: str) -> bool:
+def _uses(program: Program, block: list[Assign], name: str) -> bool:
+    """Whether an equation of ``block`` uses the symbol ``name``."""
     symbol = sp.Symbol(name, real=True)
-    return any(symbol in backends.free_symbols_of(a.expr) for a in block)
+    return any(symbol in program.free_symbols(a.expr) for a in block)
 
 
 def _guards(program: Program, block: list[Assign], args: dict[str, bool]) -> list[str]:
@@ -372,7 +373,7 @@ def equations(program: Program) -> list[str]:
     else:
         lines += _decl(_locals(program, e))
         used = {
-            "T": _uses(e, "T"),
+            "T": _uses(program, e, "T"),
             "y": bool(program.states_used(e)),
             "p": bool(program.params_used(e)),
         }
