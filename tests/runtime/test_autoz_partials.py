@@ -84,6 +84,7 @@ def _checked(book: Intermediates) -> tuple[int, int]:
     ``_walk`` finds, by ``_walk``: (how many the shortcut formed, how many
     of them were sums)."""
     formed = sums = 0
+    signs = {True: 0, False: 0}
     for k in range(1, len(book) + 1):
         variables, body = book.canonical(k)
         for x in variables:
@@ -103,8 +104,12 @@ def _checked(book: Intermediates) -> tuple[int, int]:
                     set(derivatives),
                 )
                 assert walked[2] == bad == [] and walked[3] == size
+                if walked[4] is not None:
+                    assert walked[4] == autoz.minus_first(d), d
+                    signs[walked[4]] += 1
             else:
                 assert not d.is_Add
+    assert signs[True] > 10 and signs[False] > 10
     return formed, sums
 
 
@@ -155,7 +160,7 @@ def _without_shared(products_pd, met):
             return got
         d, walked = got
         symbols = {a for a in d.atoms(sp.Symbol)}
-        return d, (*met(self, symbols, set(), set()), [], walked[3])
+        return d, (*met(self, symbols, set(), set()), *walked[2:])
 
     return wrong
 

@@ -673,6 +673,40 @@ _KEY = operator.itemgetter(0)
 _MUL_PLACE = _class_place("Mul")
 
 
+def _minus_first_product(keyed: list) -> bool | None:
+    """:func:`minus_first` of a sum of :meth:`Intermediates._products_pd`'s
+    ``(key, args)`` terms, none a number: more negative coefficients than
+    positive ones, or on a tie the sign of the first term of
+    ``as_ordered_terms`` (:func:`_first_term`).  The terms' monomials are
+    their sets of factors, each to the power 1, and ``default_sort_key``
+    orders these generators as the tuples below (symbols first, by name;
+    then intermediates by their count of arguments and their number): the
+    first term is the one whose least generator that is not in every term
+    it is compared with is its own, the least of the sorted tuples with an
+    end mark after all.  None (ask :func:`minus_first`) when two symbols
+    share a name (their keys would tie)."""
+    signs = [args[0].is_Rational and args[0].p < 0 for _, args in keyed]
+    negative = sum(signs)
+    if 2 * negative != len(keyed):
+        return 2 * negative > len(keyed)
+    generators = []
+    symbols: dict[str, Any] = {}
+    for _, args in keyed:
+        keys = []
+        for f in args:
+            if f.is_Symbol:
+                if symbols.setdefault(f.name, f) != f:
+                    return None
+                keys.append((0, f.name))
+            elif not f.is_Rational:
+                keys.append((1, len(f.args), f.args[0].p))
+        keys.sort()
+        keys.append((2,))
+        generators.append(keys)
+    first = min(range(len(keyed)), key=generators.__getitem__)
+    return signs[first]
+
+
 def _plain_atom_key(a: Any) -> tuple:
     """A rational number's or a symbol's place in ``Basic.compare``'s
     order, as a tuple: its class's place, then its hashable content's
@@ -1156,9 +1190,11 @@ class Intermediates:
         derivatives: set | frozenset,
         bad: list,
         size: int | float,
+        negative: bool | None = None,
     ) -> Any:
         """:meth:`_name` of ``expr`` (not trivial, not named yet), given
-        what :meth:`_walk` finds in it."""
+        what :meth:`_walk` finds in it; ``negative``: ``minus_first(expr)``
+        when the caller knows it (it holds while no part is split off)."""
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1177,7 +1213,9 @@ class Intermediates:
                 return found
         else:
             original = None  # no part is larger than LIMIT: _split keeps it
-        if minus_first(expr, self._sort_key):
+        if negative is None or original is not None:
+            negative = minus_first(expr, self._sort_key)
+        if negative:
             return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
 
@@ -1890,7 +1928,8 @@ class Intermediates:
                     shared.add(varsets[f.args[0].p])
                 elif f.is_Symbol:
                     found.add(f)
-        return d, (*self._met(found, set(), shared), [], size)
+        negative = None if number is not _ZERO else _minus_first_product(keyed)
+        return d, (*self._met(found, set(), shared), [], size, negative)
 
     def _plain_key(self, f: Any) -> tuple | None:
         """For :meth:`_products_pd`: a tuple that orders as ``Basic.compare``
@@ -1900,8 +1939,8 @@ class Intermediates:
         and its variables' count decide, as :func:`_compare` finds), equal
         for equal factors; None for another factor."""
         if type(f) is self.Z:
-            if self._canonical(f) and f.is_commutative:
-                args = f.args
+            args = f.args
+            if len(args) > 1 and self._canonical(f) and f.is_commutative:
                 return self._z_place, len(args), args[0].p
             return None
         if type(f) is sp.Symbol and f.is_commutative:
