@@ -183,3 +183,38 @@ def test_coefficients_collect_and_cancel():
                 formed += 1
     assert formed >= 12
     assert book._products_pd(a * c + b * c, q1, {})[0] == 0  # cancelled
+
+
+def test_the_factors_tuples_order_as_compare():
+    """``_plain_key`` orders factors as ``Basic.compare`` (sympy's order of
+    a product's factors and of a sum's terms), and is equal exactly for
+    equal factors."""
+    import functools
+
+    book, _ = _build(3)
+    zs = [book.Z(k, *book.canonical(k)[0]) for k in range(1, len(book) + 1)]
+    f = sp.Function("f")
+    x = sp.Symbol("x", real=True)
+    plain = [L, M, K, P, x, sp.Symbol("x"), q1, q2, u1, f(t), f(L), q1.diff(t)]
+    plain += [q2.diff(t), u1.diff(t, 2), sp.sin(q1), sp.cos(q1), sp.sin(L)]
+    plain += [sp.cos(P), sp.sin(x), sp.cos(f(t)), *zs[:40]]
+    numbers = [sp.Integer(2), sp.Integer(-1), sp.Rational(1, 2), sp.Rational(-3, 4)]
+    keys = {e: book._plain_key(e) for e in plain}
+    assert None not in keys.values()
+    by_compare = functools.cmp_to_key(sp.Basic.compare)
+    rng = random.Random(8)
+    for _ in range(300):
+        chosen = rng.sample(plain, rng.randint(2, 8))
+        assert sorted(chosen, key=keys.__getitem__) == sorted(chosen, key=by_compare)
+        args = [rng.choice(numbers), *chosen]
+        key = autoz._plain_atom_key(args[0])
+        assert (key < keys[chosen[0]]) == (sp.Basic.compare(args[0], chosen[0]) < 0)
+    assert len(set(keys.values())) == len(plain)
+    for bad in [
+        sp.sin(q1 + L),
+        q1**2,
+        sp.exp(q1),
+        L + M,
+        sp.Symbol("A", commutative=False),
+    ]:
+        assert book._plain_key(bad) is None

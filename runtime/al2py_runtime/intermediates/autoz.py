@@ -673,7 +673,7 @@ _KEY = operator.itemgetter(0)
 _MUL_PLACE = _class_place("Mul")
 
 
-def _minus_first_product(keyed: list) -> bool | None:
+def _minus_first_product(keyed: list, z_type: type) -> bool | None:
     """:func:`minus_first` of a sum of :meth:`Intermediates._products_pd`'s
     ``(key, args)`` terms, none a number: more negative coefficients than
     positive ones, or on a tie the sign of the first term of
@@ -684,7 +684,7 @@ def _minus_first_product(keyed: list) -> bool | None:
     first term is the one whose least generator that is not in every term
     it is compared with is its own, the least of the sorted tuples with an
     end mark after all.  None (ask :func:`minus_first`) when two symbols
-    share a name (their keys would tie)."""
+    share a name (their keys would tie), or a factor is another."""
     signs = [args[0].is_Rational and args[0].p < 0 for _, args in keyed]
     negative = sum(signs)
     if 2 * negative != len(keyed):
@@ -698,13 +698,63 @@ def _minus_first_product(keyed: list) -> bool | None:
                 if symbols.setdefault(f.name, f) != f:
                     return None
                 keys.append((0, f.name))
-            elif not f.is_Rational:
+            elif type(f) is z_type:
                 keys.append((1, len(f.args), f.args[0].p))
+            elif not f.is_Rational:
+                return None
         keys.sort()
         keys.append((2,))
         generators.append(keys)
     first = min(range(len(keyed)), key=generators.__getitem__)
     return signs[first]
+
+
+#: the functions whose values :meth:`Intermediates._products_pd` takes as
+#: factors (of a variable)
+_SINE_COSINE = frozenset([sp.sin, sp.cos])
+
+
+def _plain_factor_key(f: Any) -> tuple | None:
+    """A tuple that orders as ``Basic.compare`` (:func:`_plain_atom_key`,
+    parts by their own tuples), for the factors that are their own base in
+    a product and commute: a symbol, a function of time, a variable's
+    derivative, the sine or cosine of a symbol or function of time; None
+    for another."""
+    if not f.is_commutative:
+        return None
+    if type(f) is sp.Symbol:
+        return _plain_atom_key(f)
+    if type(f) in _SINE_COSINE:
+        inner = f.args[0]
+        if inner.is_Symbol or isinstance(inner, AppliedUndef):
+            inner_key = _plain_factor_key(inner)
+            return None if inner_key is None else _nested_key(f, [inner_key])
+        return None
+    if isinstance(f, AppliedUndef):
+        if all(type(a) is sp.Symbol for a in f.args):
+            return _nested_key(f, [_plain_atom_key(a) for a in f.args])
+        return None
+    if type(f) is sp.Derivative and isinstance(f.expr, AppliedUndef):
+        expr_key = _plain_factor_key(f.expr)
+        counts = f.args[1:]
+        if expr_key is None or not all(
+            type(v) is sp.Symbol and n.is_Integer for v, n in counts
+        ):
+            return None
+        return _nested_key(
+            f,
+            [
+                expr_key,
+                *[_nested_key(c, [_plain_atom_key(a) for a in c.args]) for c in counts],
+            ],
+        )
+    return None
+
+
+def _nested_key(e: Any, arg_keys: list) -> tuple:
+    """The tuple of ``e``, whose hashable content is its arguments, from
+    their tuples ``arg_keys``."""
+    return (_class_place(type(e).__name__), len(arg_keys), *arg_keys)
 
 
 def _plain_atom_key(a: Any) -> tuple:
@@ -1147,6 +1197,8 @@ class Intermediates:
         self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
         #: where the intermediates' class goes in sympy's order of classes
         self._z_place = _class_place(self.Z.__name__)
+        #: factor -> its :func:`_plain_factor_key`
+        self._plain_keys: dict[Any, tuple | None] = {}
         #: one node of a tree for _split (a tuple, for isinstance)
         self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
@@ -1862,7 +1914,7 @@ class Intermediates:
             if None in keys:
                 return None
             for i, f in enumerate(factors):
-                if type(f) is z_type:
+                if type(f) is z_type or type(f) in _SINE_COSINE:
                     d = memo.get(f)
                     if d is None:
                         d = self._pd_new(f, x, memo, None, None)
@@ -1915,10 +1967,11 @@ class Intermediates:
             return (terms[0] if terms else _ZERO), ()
         d = sp.Add._from_args(terms, is_commutative=True)
         # :meth:`_walk`: each product's arguments are met once (the terms
-        # are distinct), symbols are variables, a canonical intermediate
-        # brings its set of variables
-        size = 1 + len(terms)
-        found, shared = set(), set()
+        # are distinct), and a sine's (its one argument, a variable) unless
+        # it was met before; variables are recorded, a canonical
+        # intermediate brings its set of variables
+        size: int | float = 1 + len(terms)
+        found, among, shared, seen = set(), set(), set(), set()
         varsets = self._varsets
         for _, args in keyed:
             if len(args) > 1:
@@ -1926,26 +1979,37 @@ class Intermediates:
             for f in args:
                 if type(f) is z_type:
                     shared.add(varsets[f.args[0].p])
-                elif f.is_Symbol:
+                elif type(f) in _SINE_COSINE:
+                    if f in seen:
+                        size = math.inf
+                    seen.add(f)
+                    size += 1
+                    found.add(f.args[0])
+                elif not f.is_Rational:
                     found.add(f)
-        negative = None if number is not _ZERO else _minus_first_product(keyed)
-        return d, (*self._met(found, set(), shared), [], size, negative)
+                    if type(f) is sp.Derivative:
+                        among.add(f)
+        negative = None
+        if number is _ZERO:
+            negative = _minus_first_product(keyed, z_type)
+        return d, (*self._met(found, among, shared), [], size, negative)
 
     def _plain_key(self, f: Any) -> tuple | None:
         """For :meth:`_products_pd`: a tuple that orders as ``Basic.compare``
-        among rational numbers, commutative symbols and this book's
-        canonical intermediates (the class's place in sympy's order, then
-        the hashable content's length and parts; an intermediate's number
-        and its variables' count decide, as :func:`_compare` finds), equal
-        for equal factors; None for another factor."""
+        among rational numbers and the factors :func:`_plain_factor_key`
+        takes, and this book's canonical intermediates (an intermediate's
+        number and its variables' count decide, as :func:`_compare` finds),
+        equal for equal factors; None for another factor (kept per factor
+        but an intermediate's)."""
         if type(f) is self.Z:
             args = f.args
             if len(args) > 1 and self._canonical(f) and f.is_commutative:
                 return self._z_place, len(args), args[0].p
             return None
-        if type(f) is sp.Symbol and f.is_commutative:
-            return _plain_atom_key(f)
-        return None
+        found = self._plain_keys.get(f)
+        if found is None and f not in self._plain_keys:
+            found = self._plain_keys[f] = _plain_factor_key(f)
+        return found
 
     def position(self, z: Intermediate, x: Any) -> int | None:
         """The first ``j`` with ``z.args[j + 1] == x`` (``None``: none), by a
