@@ -85,6 +85,7 @@ def _checked(book: Intermediates) -> tuple[int, int]:
     of them were sums)."""
     formed = sums = 0
     signs = {True: 0, False: 0}
+    short = 0
     for k in range(1, len(book) + 1):
         variables, body = book.canonical(k)
         for x in variables:
@@ -107,9 +108,12 @@ def _checked(book: Intermediates) -> tuple[int, int]:
                 if walked[4] is not None:
                     assert walked[4] == autoz.minus_first(d), d
                     signs[walked[4]] += 1
+                if walked[5]:
+                    assert book._split(d) is d
+                    short += 1
             else:
                 assert not d.is_Add
-    assert signs[True] > 10 and signs[False] > 10
+    assert signs[True] > 10 and signs[False] > 10 and short > 100
     return formed, sums
 
 

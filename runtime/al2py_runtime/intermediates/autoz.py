@@ -673,41 +673,10 @@ _KEY = operator.itemgetter(0)
 _MUL_PLACE = _class_place("Mul")
 
 
-def _minus_first_product(keyed: list, z_type: type) -> bool | None:
-    """:func:`minus_first` of a sum of :meth:`Intermediates._products_pd`'s
-    ``(key, args)`` terms, none a number: more negative coefficients than
-    positive ones, or on a tie the sign of the first term of
-    ``as_ordered_terms`` (:func:`_first_term`).  The terms' monomials are
-    their sets of factors, each to the power 1, and ``default_sort_key``
-    orders these generators as the tuples below (symbols first, by name;
-    then intermediates by their count of arguments and their number): the
-    first term is the one whose least generator that is not in every term
-    it is compared with is its own, the least of the sorted tuples with an
-    end mark after all.  None (ask :func:`minus_first`) when two symbols
-    share a name (their keys would tie), or a factor is another."""
-    signs = [args[0].is_Rational and args[0].p < 0 for _, args in keyed]
-    negative = sum(signs)
-    if 2 * negative != len(keyed):
-        return 2 * negative > len(keyed)
-    generators = []
-    symbols: dict[str, Any] = {}
-    for _, args in keyed:
-        keys = []
-        for f in args:
-            if f.is_Symbol:
-                if symbols.setdefault(f.name, f) != f:
-                    return None
-                keys.append((0, f.name))
-            elif type(f) is z_type:
-                keys.append((1, len(f.args), f.args[0].p))
-            elif not f.is_Rational:
-                return None
-        keys.sort()
-        keys.append((2,))
-        generators.append(keys)
-    first = min(range(len(keyed)), key=generators.__getitem__)
-    return signs[first]
-
+#: a symbol's class key (``default_sort_key``'s first part), and a mark
+#: after every class key
+_SYMBOL_CLASS = sp.Symbol.class_key()
+_END = ((math.inf,),)
 
 #: the functions whose values :meth:`Intermediates._products_pd` takes as
 #: factors (of a variable)
@@ -1243,10 +1212,13 @@ class Intermediates:
         bad: list,
         size: int | float,
         negative: bool | None = None,
+        short: bool = False,
     ) -> Any:
         """:meth:`_name` of ``expr`` (not trivial, not named yet), given
         what :meth:`_walk` finds in it; ``negative``: ``minus_first(expr)``
-        when the caller knows it (it holds while no part is split off)."""
+        when the caller knows it (it holds while no part is split off), and
+        ``short``: no part of ``expr`` has more than :attr:`LIMIT` nodes
+        (:meth:`_split` leaves it as it is)."""
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1259,7 +1231,7 @@ class Intermediates:
             if found is not None:
                 return found
             variables, _, _, size = self._walk(expr)
-        if size > self.LIMIT + 1:
+        if size > self.LIMIT + 1 and not short:
             found, expr, original = self._in_parts(expr)
             if found is not None:
                 return found
@@ -1989,10 +1961,64 @@ class Intermediates:
                     found.add(f)
                     if type(f) is sp.Derivative:
                         among.add(f)
-        negative = None
-        if number is _ZERO:
-            negative = _minus_first_product(keyed, z_type)
-        return d, (*self._met(found, among, shared), [], size, negative)
+        short = all(
+            len(args) + sum(type(f) in _SINE_COSINE for f in args) < self.LIMIT
+            for _, args in keyed
+        )
+        return d, (
+            *self._met(found, among, shared),
+            [],
+            size,
+            self._products_sign(keyed, number),
+            short,
+        )
+
+    def _products_sign(self, keyed: list, number: Any) -> bool | None:
+        """:func:`minus_first` of a sum of :meth:`_products_pd`'s
+        ``(key, args)`` terms and ``number``: more negative terms than
+        positive ones, or on a tie the sign of the first term of
+        ``as_ordered_terms`` (:func:`_first_term`).  The terms' monomials
+        are their sets of factors, each to the power 1, ordered by
+        ``default_sort_key``: the class's key, then for a symbol its name,
+        for an intermediate its count of arguments and its number, for
+        another factor its whole key.  The first term is the one whose
+        least generator that is not in every term it is compared with is
+        its own: the least of the terms' sorted generators, with an end
+        mark after all.  None (ask :func:`minus_first`) on a tie with a
+        number, or when two symbols share a name or another factor's class
+        key is the intermediates' (their keys would tie)."""
+        signs = [args[0].is_Rational and args[0].p < 0 for _, args in keyed]
+        negative = sum(signs)
+        n = len(keyed)
+        if number is not _ZERO:
+            negative += number.p < 0
+            n += 1
+        if 2 * negative != n:
+            return 2 * negative > n
+        if number is not _ZERO:
+            return None
+        z_type, z_class = self.Z, self.Z.class_key()
+        generators = []
+        symbols: dict[str, Any] = {}
+        for _, args in keyed:
+            keys = []
+            for f in args:
+                if type(f) is sp.Symbol:
+                    if symbols.setdefault(f.name, f) != f:
+                        return None
+                    keys.append((_SYMBOL_CLASS, f.name))
+                elif type(f) is z_type:
+                    keys.append((z_class, len(f.args), f.args[0].p))
+                elif not f.is_Rational:
+                    key = self._sort_key(f)
+                    if key[0] == z_class or key[0] == _SYMBOL_CLASS:
+                        return None
+                    keys.append((key[0], key))
+            keys.sort()
+            keys.append(_END)
+            generators.append(keys)
+        first = min(range(len(keyed)), key=generators.__getitem__)
+        return signs[first]
 
     def _plain_key(self, f: Any) -> tuple | None:
         """For :meth:`_products_pd`: a tuple that orders as ``Basic.compare``
