@@ -2028,10 +2028,14 @@ class Intermediates:
         equal for equal factors; None for another factor (kept per factor
         but an intermediate's)."""
         if type(f) is self.Z:
-            args = f.args
-            if len(args) > 1 and self._canonical(f) and f.is_commutative:
-                return self._z_place, len(args), args[0].p
-            return None
+            found = f.__dict__.get("_plain_key", _UNKNOWN)  # kept per instance
+            if found is _UNKNOWN:
+                args = f.args
+                found = None
+                if len(args) > 1 and self._canonical(f) and f.is_commutative:
+                    found = (self._z_place, len(args), args[0].p)
+                f.__dict__["_plain_key"] = found
+            return found
         found = self._plain_keys.get(f)
         if found is None and f not in self._plain_keys:
             found = self._plain_keys[f] = _plain_factor_key(f)
