@@ -1851,11 +1851,12 @@ class Intermediates:
         return found
 
     def _products_pd(self, e: Any, x: Any, memo: dict) -> tuple[Any, tuple] | None:
-        """:meth:`_pd` of ``e`` by ``x`` when ``e`` is a sum of products of
-        rational numbers, symbols and canonical intermediates (most
-        definitions are), with what :meth:`_walk` finds in the derivative
-        when it is a sum (else ``()``): ``(derivative, walked)``.  None
-        when ``e`` is not such a sum, or a factor's derivative is not a
+        """:meth:`_pd` of ``e`` by ``x`` when ``e`` is a sum of products (or
+        one product) of rational numbers and plain factors (:meth:`_plain_key`:
+        canonical intermediates, symbols, ...; most definitions are), with
+        what :meth:`_walk` finds in the derivative when it is a sum (else
+        ``()``): ``(derivative, walked)``.  None when ``e`` is not such a
+        sum, or a factor's derivative is not a
         rational number times one such factor, or would square a factor.
 
         The chain rule's products are written as their factors' tuples
@@ -1866,7 +1867,7 @@ class Intermediates:
         product, no comparison of sympy objects).  The factors' derivatives
         are taken in the order of :meth:`_pd`'s walk, so that the
         intermediates named on the way get the same numbers."""
-        if not e.is_Add or not global_parameters.evaluate:
+        if not (e.is_Add or e.is_Mul) or not global_parameters.evaluate:
             return None
         one = sp.S.One
         z_type = self.Z
@@ -1874,7 +1875,7 @@ class Intermediates:
         number = _ZERO
         #: the factors' keys -> [coefficient, factors]
         collected: dict[tuple, list] = {}
-        for term in e.args:
+        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
             if term.is_Rational:
                 continue
             c, factors = one, (term,)
