@@ -33,6 +33,7 @@ Z1
 
 from __future__ import annotations
 
+import bisect
 import functools
 import itertools
 import math
@@ -669,6 +670,68 @@ def _prefix(x: Any, kinds: dict) -> tuple | None:
 
 #: the key of a (key, item) pair
 _KEY = operator.itemgetter(0)
+_MUL_PLACE = _class_place("Mul")
+
+
+#: a symbol's class key (``default_sort_key``'s first part), and a mark
+#: after every class key
+_SYMBOL_CLASS = sp.Symbol.class_key()
+_END = ((math.inf,),)
+
+#: the functions whose values :meth:`Intermediates._products_pd` takes as
+#: factors (of a variable)
+_SINE_COSINE = frozenset([sp.sin, sp.cos])
+
+
+def _plain_factor_key(f: Any) -> tuple | None:
+    """A tuple that orders as ``Basic.compare`` (:func:`_plain_atom_key`,
+    parts by their own tuples), for the factors that are their own base in
+    a product and commute: a symbol, a function of time, a variable's
+    derivative, the sine or cosine of a symbol or function of time; None
+    for another."""
+    if not f.is_commutative:
+        return None
+    if type(f) is sp.Symbol:
+        return _plain_atom_key(f)
+    if type(f) in _SINE_COSINE:
+        inner = f.args[0]
+        if inner.is_Symbol or isinstance(inner, AppliedUndef):
+            inner_key = _plain_factor_key(inner)
+            return None if inner_key is None else _nested_key(f, [inner_key])
+        return None
+    if isinstance(f, AppliedUndef):
+        if all(type(a) is sp.Symbol for a in f.args):
+            return _nested_key(f, [_plain_atom_key(a) for a in f.args])
+        return None
+    if type(f) is sp.Derivative and isinstance(f.expr, AppliedUndef):
+        expr_key = _plain_factor_key(f.expr)
+        counts = f.args[1:]
+        if expr_key is None or not all(
+            type(v) is sp.Symbol and n.is_Integer for v, n in counts
+        ):
+            return None
+        return _nested_key(
+            f,
+            [
+                expr_key,
+                *[_nested_key(c, [_plain_atom_key(a) for a in c.args]) for c in counts],
+            ],
+        )
+    return None
+
+
+def _nested_key(e: Any, arg_keys: list) -> tuple:
+    """The tuple of ``e``, whose hashable content is its arguments, from
+    their tuples ``arg_keys``."""
+    return (_class_place(type(e).__name__), len(arg_keys), *arg_keys)
+
+
+def _plain_atom_key(a: Any) -> tuple:
+    """A rational number's or a symbol's place in ``Basic.compare``'s
+    order, as a tuple: its class's place, then its hashable content's
+    length and parts (:func:`_compare`'s steps)."""
+    content = a._hashable_content()
+    return (_class_place(type(a).__name__), len(content), *content)
 
 
 def _sort_by_compare(items: list) -> None:
@@ -1101,6 +1164,10 @@ class Intermediates:
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
         self._factors: dict[Any, _Factors] = {}  # product -> _Factors(its args)
+        #: where the intermediates' class goes in sympy's order of classes
+        self._z_place = _class_place(self.Z.__name__)
+        #: factor -> its :func:`_plain_factor_key`
+        self._plain_keys: dict[Any, tuple | None] = {}
         #: one node of a tree for _split (a tuple, for isinstance)
         self._one_node = (self.Z, AppliedUndef, sp.Derivative)
         #: a set of variables -> the sort keys of its variables, in order
@@ -1135,7 +1202,23 @@ class Intermediates:
             return found
         if negated is not None:
             return self._new_name(expr, negated, None, split=True)
-        variables, derivatives, bad, size = self._walk(expr)
+        return self._name_walked(expr, *self._walk(expr))
+
+    def _name_walked(
+        self,
+        expr: Any,
+        variables: set | frozenset,
+        derivatives: set | frozenset,
+        bad: list,
+        size: int | float,
+        negative: bool | None = None,
+        short: bool = False,
+    ) -> Any:
+        """:meth:`_name` of ``expr`` (not trivial, not named yet), given
+        what :meth:`_walk` finds in it; ``negative``: ``minus_first(expr)``
+        when the caller knows it (it holds while no part is split off), and
+        ``short``: no part of ``expr`` has more than :attr:`LIMIT` nodes
+        (:meth:`_split` leaves it as it is)."""
         if derivatives and not derivatives <= self.rates:
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1148,13 +1231,15 @@ class Intermediates:
             if found is not None:
                 return found
             variables, _, _, size = self._walk(expr)
-        if size > self.LIMIT + 1:
+        if size > self.LIMIT + 1 and not short:
             found, expr, original = self._in_parts(expr)
             if found is not None:
                 return found
         else:
             original = None  # no part is larger than LIMIT: _split keeps it
-        if minus_first(expr, self._sort_key):
+        if negative is None or original is not None:
+            negative = minus_first(expr, self._sort_key)
+        if negative:
             return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
 
@@ -1364,17 +1449,26 @@ class Intermediates:
             # in the order of a walk that meets each distinct part once (an
             # equal copy of a part, another object, is not walked again)
             bad = self._stray(expr)
+        return (*self._met(found, among, shared), bad, size)
+
+    def _met(
+        self, found: set, among: set, shared: set
+    ) -> tuple[set | frozenset, set | frozenset]:
+        """:meth:`_walk`'s variables and derivatives, from the variables
+        ``found`` outside the canonical intermediates (``among``: the
+        derivatives among them) and those intermediates' sets of variables
+        ``shared``."""
         variables, derivatives = found, among
         if not shared:
-            return variables, derivatives, bad, size
+            return variables, derivatives
         union, within = self._union(shared)
         if not variables or variables <= union:
             # (the derivatives are among its own)
-            return union, within, bad, size
+            return union, within
         variables |= union
         if within:
             derivatives |= within
-        return variables, derivatives, bad, size
+        return variables, derivatives
 
     def _stray(self, expr: Any) -> list:
         """The intermediates in ``expr`` taken elsewhere than at their own
@@ -1730,18 +1824,222 @@ class Intermediates:
     # -------------------------------------------------------- derivatives
 
     def partial(self, z: Intermediate, j: int) -> Any:
-        """``d z / d var_j`` (named), at ``z``'s own arguments."""
+        """``d z / d var_j`` (named), at ``z``'s own arguments.
+
+        Most definitions are sums of products of intermediates: their
+        derivative is formed, and named, by :meth:`_products_pd`."""
         k = _number(z)
         key = (k, j)
         found = self._partials.get(key)
         if found is None:
             x = self._vars[k][j]
             memo = self._pd_memos.setdefault(x, {})
-            found = self.name(self._pd(self._defs[k], x, memo))
+            body = self._defs[k]
+            formed = None if body in memo else self._products_pd(body, x, memo)
+            if formed is None:
+                found = self.name(self._pd(body, x, memo))
+            else:
+                d, walked = formed
+                memo[body] = d
+                found = self._named.get(d) if walked else None
+                if found is None:
+                    found = self._name_walked(d, *walked) if walked else self.name(d)
             self._partials[key] = found
         if not self._canonical(z):
             args = tuple(z.args[1:])
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
+        return found
+
+    def _products_pd(self, e: Any, x: Any, memo: dict) -> tuple[Any, tuple] | None:
+        """:meth:`_pd` of ``e`` by ``x`` when ``e`` is a sum of products (or
+        one product) of rational numbers and plain factors (:meth:`_plain_key`:
+        canonical intermediates, symbols, ...; most definitions are), with
+        what :meth:`_walk` finds in the derivative when it is a sum (else
+        ``()``): ``(derivative, walked)``.  None when ``e`` is not such a
+        sum, or a factor's derivative is not a
+        rational number times one such factor, or would square a factor.
+
+        The chain rule's products are written as their factors' tuples
+        (:meth:`_plain_key`: tuples that order as ``Basic.compare`` orders
+        these factors), like ones collected by them, and the terms ordered
+        by their tuples; each product and the sum are then formed once, as
+        :func:`product_with` and :func:`total` form them (no sum per
+        product, no comparison of sympy objects).  The factors' derivatives
+        are taken in the order of :meth:`_pd`'s walk, so that the
+        intermediates named on the way get the same numbers."""
+        if not (e.is_Add or e.is_Mul) or not global_parameters.evaluate:
+            return None
+        one = sp.S.One
+        z_type = self.Z
+        key_of = self._plain_key
+        number = _ZERO
+        #: the factors' keys -> [coefficient, factors]
+        collected: dict[tuple, list] = {}
+        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
+            if term.is_Rational:
+                continue
+            c, factors = one, (term,)
+            if term.is_Mul:
+                factors = term.args
+                if factors[0].is_Rational:
+                    c, factors = factors[0], factors[1:]
+            keys = [key_of(f) for f in factors]
+            if None in keys:
+                return None
+            for i, f in enumerate(factors):
+                if type(f) is z_type or type(f) in _SINE_COSINE:
+                    d = memo.get(f)
+                    if d is None:
+                        d = self._pd_new(f, x, memo, None, None)
+                    if d is _ZERO:
+                        continue
+                elif _is_variable_x(f, x):
+                    d = one
+                else:
+                    continue
+                n, new = d, None
+                if not d.is_Rational:
+                    n, new = one, d
+                    if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
+                        n, new = d.args
+                rest_keys = keys[:i] + keys[i + 1 :]
+                rest = factors[:i] + factors[i + 1 :]
+                if new is not None:
+                    new_key = key_of(new)
+                    if new_key is None:
+                        return None
+                    at = bisect.bisect_left(rest_keys, new_key)
+                    if at < len(rest_keys) and rest_keys[at] == new_key:
+                        return None  # sympy makes a power
+                    rest_keys.insert(at, new_key)
+                    rest = (*rest[:at], new, *rest[at:])
+                coeff = n if c is one else c if n is one else c * n
+                if not rest:
+                    number += coeff
+                    continue
+                entry = collected.setdefault(tuple(rest_keys), [coeff, rest])
+                if entry[1] is not rest:
+                    entry[0] += coeff
+        keyed = []
+        for fkeys, (coeff, rest) in collected.items():
+            if coeff is _ZERO:
+                continue
+            if coeff is one:
+                if len(rest) == 1:
+                    keyed.append((fkeys[0], rest))
+                    continue
+                args, akeys = rest, fkeys
+            else:
+                args, akeys = (coeff, *rest), (_plain_atom_key(coeff), *fkeys)
+            keyed.append(((_MUL_PLACE, len(args), *akeys), args))
+        keyed.sort(key=_KEY)
+        terms = [args[0] if len(args) == 1 else _product(args) for _, args in keyed]
+        if number is not _ZERO:
+            terms.insert(0, number)
+        if len(terms) < 2:
+            return (terms[0] if terms else _ZERO), ()
+        d = sp.Add._from_args(terms, is_commutative=True)
+        # :meth:`_walk`: each product's arguments are met once (the terms
+        # are distinct), and a sine's (its one argument, a variable) unless
+        # it was met before; variables are recorded, a canonical
+        # intermediate brings its set of variables
+        size: int | float = 1 + len(terms)
+        found, among, shared, seen = set(), set(), set(), set()
+        varsets = self._varsets
+        for _, args in keyed:
+            if len(args) > 1:
+                size += len(args)
+            for f in args:
+                if type(f) is z_type:
+                    shared.add(varsets[f.args[0].p])
+                elif type(f) in _SINE_COSINE:
+                    if f in seen:
+                        size = math.inf
+                    seen.add(f)
+                    size += 1
+                    found.add(f.args[0])
+                elif not f.is_Rational:
+                    found.add(f)
+                    if type(f) is sp.Derivative:
+                        among.add(f)
+        short = all(
+            len(args) + sum(type(f) in _SINE_COSINE for f in args) < self.LIMIT
+            for _, args in keyed
+        )
+        return d, (
+            *self._met(found, among, shared),
+            [],
+            size,
+            self._products_sign(keyed, number),
+            short,
+        )
+
+    def _products_sign(self, keyed: list, number: Any) -> bool | None:
+        """:func:`minus_first` of a sum of :meth:`_products_pd`'s
+        ``(key, args)`` terms and ``number``: more negative terms than
+        positive ones, or on a tie the sign of the first term of
+        ``as_ordered_terms`` (:func:`_first_term`).  The terms' monomials
+        are their sets of factors, each to the power 1, ordered by
+        ``default_sort_key``: the class's key, then for a symbol its name,
+        for an intermediate its count of arguments and its number, for
+        another factor its whole key.  The first term is the one whose
+        least generator that is not in every term it is compared with is
+        its own: the least of the terms' sorted generators, with an end
+        mark after all.  None (ask :func:`minus_first`) on a tie with a
+        number, or when two symbols share a name or another factor's class
+        key is the intermediates' (their keys would tie)."""
+        signs = [args[0].is_Rational and args[0].p < 0 for _, args in keyed]
+        negative = sum(signs)
+        n = len(keyed)
+        if number is not _ZERO:
+            negative += number.p < 0
+            n += 1
+        if 2 * negative != n:
+            return 2 * negative > n
+        if number is not _ZERO:
+            return None
+        z_type, z_class = self.Z, self.Z.class_key()
+        generators = []
+        symbols: dict[str, Any] = {}
+        for _, args in keyed:
+            keys = []
+            for f in args:
+                if type(f) is sp.Symbol:
+                    if symbols.setdefault(f.name, f) != f:
+                        return None
+                    keys.append((_SYMBOL_CLASS, f.name))
+                elif type(f) is z_type:
+                    keys.append((z_class, len(f.args), f.args[0].p))
+                elif not f.is_Rational:
+                    key = self._sort_key(f)
+                    if key[0] == z_class or key[0] == _SYMBOL_CLASS:
+                        return None
+                    keys.append((key[0], key))
+            keys.sort()
+            keys.append(_END)
+            generators.append(keys)
+        first = min(range(len(keyed)), key=generators.__getitem__)
+        return signs[first]
+
+    def _plain_key(self, f: Any) -> tuple | None:
+        """For :meth:`_products_pd`: a tuple that orders as ``Basic.compare``
+        among rational numbers and the factors :func:`_plain_factor_key`
+        takes, and this book's canonical intermediates (an intermediate's
+        number and its variables' count decide, as :func:`_compare` finds),
+        equal for equal factors; None for another factor (kept per factor
+        but an intermediate's)."""
+        if type(f) is self.Z:
+            found = f.__dict__.get("_plain_key", _UNKNOWN)  # kept per instance
+            if found is _UNKNOWN:
+                args = f.args
+                found = None
+                if len(args) > 1 and self._canonical(f) and f.is_commutative:
+                    found = (self._z_place, len(args), args[0].p)
+                f.__dict__["_plain_key"] = found
+            return found
+        found = self._plain_keys.get(f)
+        if found is None and f not in self._plain_keys:
+            found = self._plain_keys[f] = _plain_factor_key(f)
         return found
 
     def position(self, z: Intermediate, x: Any) -> int | None:

@@ -1,0 +1,239 @@
+"""The shortcuts of ``D()`` over intermediates give what the long way gives.
+
+A definition that is a sum of products of rational numbers, symbols and
+canonical intermediates has its partial derivative formed and named by
+``Intermediates._products_pd``; here random books are built twice, with and
+without it, and must agree on every intermediate (number, variables and
+definition) and every derivative; and the derivative it forms, and what it
+says ``_walk`` finds in it, are checked one by one against ``_pd`` and
+``_walk``.  Each check is shown to find a broken shortcut."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime.intermediates import autoz
+from al2py_runtime.intermediates.autoz import Intermediates
+from sympy.physics.mechanics import dynamicsymbols
+
+q1, q2, q3, u1 = dynamicsymbols("q1 q2 q3 u1")
+L, M, K = sp.symbols("L M K")
+P = sp.Symbol("P", positive=True)
+t = dynamicsymbols._t
+VARIABLES = [q1, q2, q3, u1, L, M, P, q1.diff(t)]
+COEFFICIENTS = [1, 1, 1, -1, -1, 2, sp.Rational(-3, 2), sp.Rational(1, 3)]
+
+
+def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
+    """A book of intermediates whose later definitions are sums of
+    products of earlier ones, symbols and numbers (some with a sine or a
+    square, which the shortcut declines), then the partial derivatives of
+    some by each variable: the book and the derivatives."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    book.rates = frozenset([q1.diff(t)])
+    if not shortcut:
+        book._products_pd = lambda e, x, memo: None  # the long way
+    leaves = [q1 * L, sp.sin(q2), sp.cos(q3) * M, u1, q1.diff(t) * P, q2 * q3]
+    zs: list = []
+    for _ in range(70):
+        if len(zs) < 8:
+            pieces = leaves
+        else:
+            pieces = zs[-25:] + [L, M, K, P] + (leaves if rng.random() < 0.1 else [])
+        terms = []
+        for _ in range(rng.randint(2, 7)):
+            factors = rng.sample(pieces, rng.randint(1, 3))
+            if rng.random() < 0.05:
+                factors[0] = factors[0] ** 2
+            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
+        if rng.random() < 0.1:
+            terms.append(sp.Integer(rng.choice([-2, 3])))
+        elif rng.random() < 0.15:
+            terms = [sp.Mul(*rng.sample(pieces, rng.randint(2, 4)))]  # a product
+        z = book.name(sp.Add(*terms))
+        if not isinstance(z, book.Z):
+            z = -z
+        if isinstance(z, book.Z):
+            zs.append(z)
+    found = [book.derivative(z, x) for z in zs[-30:] for x in VARIABLES]
+    return book, found
+
+
+def _tree(e) -> str:
+    """``e`` written out with its arguments in their order (sympy's
+    printers sort a sum's terms; the two books' intermediates are of
+    different classes, so they are compared by text)."""
+    if isinstance(e, tuple):
+        return f"({', '.join(map(_tree, e))})"
+    if not e.args:
+        return sp.srepr(e)
+    return f"{type(e).__name__}({', '.join(_tree(a) for a in e.args)})"
+
+
+def _record(book: Intermediates) -> list:
+    """Each intermediate's name, variables and definition."""
+    return [
+        (book.label_of(k), *map(_tree, book.canonical(k)))
+        for k in range(1, len(book) + 1)
+    ]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_shortcut_names_what_the_long_way_names(seed):
+    fast = _build(seed)
+    assert _written(fast) == _written(_build(seed, shortcut=False))
+    assert len(fast[0]) > 150
+
+
+def _checked(book: Intermediates) -> tuple[int, int]:
+    """Every definition's derivative by each of its variables, by the
+    shortcut (where it applies) and by ``_pd``; and what the shortcut says
+    ``_walk`` finds, by ``_walk``: (how many the shortcut formed, how many
+    of them were sums)."""
+    formed = sums = 0
+    signs = {True: 0, False: 0}
+    short = 0
+    for k in range(1, len(book) + 1):
+        variables, body = book.canonical(k)
+        for x in variables:
+            memo = book._pd_memos.setdefault(x, {})
+            got = book._products_pd(body, x, memo)
+            if got is None:
+                continue
+            formed += 1
+            d, walked = got
+            want = book._pd(body, x, {})
+            assert _tree(d) == _tree(want), (body, x)
+            if walked:
+                sums += 1
+                variables_, derivatives, bad, size = book._walk(d)
+                assert (set(walked[0]), set(walked[1])) == (
+                    set(variables_),
+                    set(derivatives),
+                )
+                assert walked[2] == bad == [] and walked[3] == size
+                if walked[4] is not None:
+                    assert walked[4] == autoz.minus_first(d), d
+                    signs[walked[4]] += 1
+                if walked[5]:
+                    assert book._split(d) is d
+                    short += 1
+            else:
+                assert not d.is_Add
+    assert signs[True] > 10 and signs[False] > 10 and short > 100
+    return formed, sums
+
+
+def test_the_shortcut_forms_pds_derivative_and_walk():
+    book, _ = _build(11)
+    formed, sums = _checked(book)
+    assert formed > 300 and sums > 150
+
+
+def test_the_check_finds_a_wrong_order(monkeypatch):
+    """Intermediates ordered by their numbers the other way round are
+    found, by both checks."""
+    real = Intermediates._plain_key
+
+    def wrong(self, f):
+        key = real(self, f)
+        if key is not None and type(f) is self.Z:
+            return (*key[:2], -key[2])
+        return key
+
+    monkeypatch.setattr(Intermediates, "_plain_key", wrong)
+    books = [_build(seed) for seed in range(1, 4)]
+    with pytest.raises(AssertionError):
+        _checked(books[0][0])
+    monkeypatch.undo()
+    slow = [_build(seed, shortcut=False) for seed in range(1, 4)]
+    assert any(_written(a) != _written(b) for a, b in zip(books, slow, strict=True))
+
+
+def _written(built: tuple[Intermediates, list]) -> tuple[list, list]:
+    book, found = built
+    return _record(book), [_tree(d) for d in found]
+
+
+def test_the_check_finds_wrong_variables(monkeypatch):
+    """Variables read off only the symbols (not the intermediates) are
+    found."""
+    real = Intermediates._met
+    monkeypatch.setattr(
+        Intermediates,
+        "_products_pd",
+        _without_shared(Intermediates._products_pd, real),
+    )
+    book, _ = _build(2)
+    with pytest.raises(AssertionError):
+        _checked(book)
+
+
+def _without_shared(products_pd, met):
+    def wrong(self, e, x, memo):
+        got = products_pd(self, e, x, memo)
+        if got is None or not got[1]:
+            return got
+        d, walked = got
+        symbols = {a for a in d.atoms(sp.Symbol)}
+        return d, (*met(self, symbols, set(), set()), *walked[2:])
+
+    return wrong
+
+
+def test_coefficients_collect_and_cancel():
+    """Like products collect (and cancel) as sympy's sum collects them."""
+    book = Intermediates()
+    a = book.name(sp.sin(q1) * sp.cos(q1) * L + M * q2 * q3)
+    b = book.name(-sp.sin(q1) * sp.cos(q1) * L + K * q2 * q3)
+    c = book.name(sp.cos(q2) * L + q2 * M * sp.sin(q3))
+    assert all(isinstance(z, book.Z) for z in (a, b, c))
+    formed = 0
+    for body in [a * c + b * c, a * c + b * c + 2 * a, a * c - K * b + b * c + 1]:
+        body = book.canonical(autoz._number(book.name(body)))[1]
+        for x in [q1, q2, q3, L, M, K]:
+            got = book._products_pd(body, x, {})
+            want = book._pd(body, x, {})
+            if got is not None:
+                assert got[0] == want, (body, x)
+                formed += 1
+    assert formed >= 12
+    assert book._products_pd(a * c + b * c, q1, {})[0] == 0  # cancelled
+
+
+def test_the_factors_tuples_order_as_compare():
+    """``_plain_key`` orders factors as ``Basic.compare`` (sympy's order of
+    a product's factors and of a sum's terms), and is equal exactly for
+    equal factors."""
+    import functools
+
+    book, _ = _build(3)
+    zs = [book.Z(k, *book.canonical(k)[0]) for k in range(1, len(book) + 1)]
+    f = sp.Function("f")
+    x = sp.Symbol("x", real=True)
+    plain = [L, M, K, P, x, sp.Symbol("x"), q1, q2, u1, f(t), f(L), q1.diff(t)]
+    plain += [q2.diff(t), u1.diff(t, 2), sp.sin(q1), sp.cos(q1), sp.sin(L)]
+    plain += [sp.cos(P), sp.sin(x), sp.cos(f(t)), *zs[:40]]
+    numbers = [sp.Integer(2), sp.Integer(-1), sp.Rational(1, 2), sp.Rational(-3, 4)]
+    keys = {e: book._plain_key(e) for e in plain}
+    assert None not in keys.values()
+    by_compare = functools.cmp_to_key(sp.Basic.compare)
+    rng = random.Random(8)
+    for _ in range(300):
+        chosen = rng.sample(plain, rng.randint(2, 8))
+        assert sorted(chosen, key=keys.__getitem__) == sorted(chosen, key=by_compare)
+        args = [rng.choice(numbers), *chosen]
+        key = autoz._plain_atom_key(args[0])
+        assert (key < keys[chosen[0]]) == (sp.Basic.compare(args[0], chosen[0]) < 0)
+    assert len(set(keys.values())) == len(plain)
+    for bad in [
+        sp.sin(q1 + L),
+        q1**2,
+        sp.exp(q1),
+        L + M,
+        sp.Symbol("A", commutative=False),
+    ]:
+        assert book._plain_key(bad) is None
