@@ -141,7 +141,7 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
     once that one is written."""
     import concurrent.futures
 
-    from al2py_runtime import codegen
+    from al2py_runtime import codegen, copies
 
     jobs = _jobs(SEVERAL_JOBS, tmp_path, "several")
     work = [codegen.estimated_work(job) for job in jobs]
@@ -157,7 +157,7 @@ def test_the_largest_jobs_are_formed_first(tmp_path, monkeypatch):
             submitted.append(args[0])
             return super().submit(fn, *args, **kwargs)
 
-    monkeypatch.setattr(codegen, "ProcessPoolExecutor", Recording)
+    monkeypatch.setattr(copies, "ProcessPoolExecutor", Recording)
     formers = codegen.Formers(jobs, None, None, 2)
     try:
         assert submitted == [2, 1, 0]  # the larger first, the other waits

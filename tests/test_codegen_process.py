@@ -306,8 +306,8 @@ def test_a_failed_copy_skips_the_later_steps(monkeypatch):
 
     pools: list[FailedCopy] = []
     monkeypatch.setattr(
-        codegen_c,
-        "ProcessPoolExecutor",
+        codegen_c.copies,
+        "fork_pool",
         lambda *a, **k: pools.append(FailedCopy()) or pools[-1],
     )
     steps = []
@@ -331,7 +331,7 @@ def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
     from al2py import codegen_c
 
     monkeypatch.setattr(
-        codegen_c.multiprocessing, "get_all_start_methods", lambda: ["spawn"]
+        codegen_c.copies.multiprocessing, "get_all_start_methods", lambda: ["spawn"]
     )
     text = TUTOR6.read_text()
     calls = []

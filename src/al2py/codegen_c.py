@@ -23,17 +23,15 @@ import argparse
 import contextlib
 import importlib
 import linecache
-import multiprocessing
 import os
-import signal
 import sys
 import types
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures import Future
 from functools import partial
 from pathlib import Path
 
-from al2py_runtime import collector
+from al2py_runtime import collector, copies
 
 __all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
@@ -203,17 +201,14 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
     the one a conversion in this process gives.
 
     The copy leaves an interrupt to this process, which ends the copy
-    whenever it leaves before the text has come (:func:`_copy_started`).
+    whenever it leaves before the text has come
+    (:mod:`al2py_runtime.copies`).
     The derivation gets the room for deep recursion the conversion made
     when both ran here."""
-    pool = future = None
-    if "fork" in multiprocessing.get_all_start_methods():
-        with contextlib.suppress(OSError):  # no process can be made: here
-            pool = ProcessPoolExecutor(
-                1,
-                mp_context=multiprocessing.get_context("fork"),
-                initializer=_copy_started,
-            )
+    pool = copies.fork_pool(1)
+    future = None
+    if pool is not None:
+        with contextlib.suppress(OSError), copies.forking():  # else: here
             future = pool.submit(_convert_in_copy, text, filename)
     code = None
     try:
@@ -225,11 +220,8 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
             with contextlib.suppress(Exception):  # the pool broke: here
                 code = future.result()
     finally:
-        if pool is not None:
-            if future is not None and not future.done():  # leaving early
-                for child in multiprocessing.active_children():
-                    child.terminate()
-            pool.shutdown(wait=True, cancel_futures=True)
+        if pool is not None:  # leaving early: the copy ended at once
+            copies.end_pool(pool, work_left=future is not None and not future.done())
     if code is None:
         return _convert(text, filename)
     from al2py_runtime.walks import allow_deep_recursion
@@ -252,17 +244,6 @@ def _convert_in_copy(text: str, filename: str) -> str | None:
         return _convert(text, filename)
     except AutolevError:
         return None
-
-
-def _copy_started() -> None:
-    """The copy starts: an interrupt is left to the process that forked it,
-    which ends the copy (SIGTERM, its default action: this process's own
-    handlers, which unwind the command, are not the copy's), so that the
-    copy prints nothing."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    for name in ("SIGTERM", "SIGHUP"):
-        if hasattr(signal, name):
-            signal.signal(getattr(signal, name), signal.SIG_DFL)
 
 
 def run_alone(command: Callable[[], int]) -> int:

@@ -18,16 +18,14 @@ equations only (no driver).  One description of the program
 from __future__ import annotations
 
 import contextlib
-import multiprocessing
 import os
-import signal
 from collections.abc import Mapping
 from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path, PurePath
 from typing import Any
 
-from .. import progress
+from .. import copies, progress
 from ..collector import paused
 from ..jobs import backends
 from ..jobs.run import Job, NumericsError
@@ -346,7 +344,7 @@ class Formers:
         #: the jobs waiting for each job to be written (see :meth:`written`)
         self._waiting: dict[int, list[int]] = {}
         n = self._workers = min(workers, len(jobs))
-        if n < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        if n < 2:
             return
         # the printers' modules imported once, before the copies are made
         from . import c, fortran, octave  # noqa: F401
@@ -360,17 +358,15 @@ class Formers:
         # the largest first (of equal ones, the later: a script's later
         # jobs tend to be the larger)
         first.sort(key=lambda i: (work[i], i), reverse=True)
+        self._pool = copies.fork_pool(n, _copy_started, (jobs, lang, source))
+        if self._pool is None:
+            return
         try:
-            self._pool = ProcessPoolExecutor(
-                n,
-                mp_context=multiprocessing.get_context("fork"),
-                initializer=_copy_started,
-                initargs=(jobs, lang, source),
-            )
             # the copies are forked at the first submit, before the pool's
             # own thread starts
-            for i in first:
-                self._futures[i] = self._pool.submit(_form_in_copy, i, None)
+            with copies.forking():
+                for i in first:
+                    self._futures[i] = self._pool.submit(_form_in_copy, i, None)
         except OSError:
             self.stop()
 
@@ -408,11 +404,9 @@ class Formers:
         pool, self._pool = self._pool, None
         if pool is None:
             return
-        if any(not f.done() for f in self._futures.values()):
-            for child in multiprocessing.active_children():
-                child.terminate()
+        left = any(not f.done() for f in self._futures.values())
         self._futures.clear()
-        pool.shutdown(wait=True, cancel_futures=True)
+        copies.end_pool(pool, work_left=left)
 
 
 def estimated_work(job: Job) -> int:
@@ -472,10 +466,8 @@ _COPY: dict[str, Any] = {}
 
 
 def _copy_started(jobs: list[Job], lang: str | None, source: str | None) -> None:
-    """A copy of :class:`Formers` starts: it keeps the jobs (given to it
-    through ``fork``, not pickled) and leaves an interrupt to the process
-    that forked it (which ends its copies), so that no copy prints one."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    """A copy of :class:`Formers` starts (after :func:`..copies.started`):
+    it keeps the jobs (given to it through ``fork``, not pickled)."""
     _COPY.update(jobs=jobs, lang=lang, source=source)
 
 
