@@ -144,10 +144,13 @@ def test_the_checks_find_a_wrong_product_and_sum(pools):
 def test_the_calls_of_a_models_derivatives_are_sympys(pools, monkeypatch):
     """Every ``product_with`` and ``total`` call that the partial derivatives
     of a chain of intermediates make (by each coordinate, speed, constant and
-    by time), against sympy's ``Mul`` and ``Add``."""
+    by time), against sympy's ``Mul`` and ``Add``.  Powers and sums among
+    the factors: the sums of plain products go by ``_products_pd``, held to
+    these calls in ``test_autoz_partials.py``."""
     b = Intermediates()
     rng = random.Random(3)
     pool = [q1, q2, q3, u1, u2, L, M, sp.sin(q1), sp.cos(q2), sp.sin(q3)]
+    pool += [q1**2, 1 / (L + q2), sp.sqrt(1 - sp.sin(q3) ** 2), u1 + L * u2]
     top = []
     for _ in range(40):
         terms = [
