@@ -99,6 +99,18 @@ def _written(folder, printed: str) -> dict:
     }
 
 
+#: the files MANY_JOBS's programs make (one job named apart as decay_2)
+MANY_JOBS_FILES = [
+    "decay.c",
+    "decay.in",
+    "decay.m",
+    "decay_2.c",
+    "decay_2.in",
+    "decayalg.in",
+    "decayalg.m",
+]
+
+
 def test_processes_write_what_one_process_writes(tmp_path, capsys):
     """``-j 3`` (jobs formed by forked copies, one of them named apart and
     formed again here) and ``-j 1`` write the same bytes, lines, notes and
@@ -114,16 +126,7 @@ def test_processes_write_what_one_process_writes(tmp_path, capsys):
     assert seen[0][0] == 2  # early.c
     assert "early.c (line 5): nothing to integrate" in seen[0][2]
     assert "is written as decay_2.c" in seen[0][2]
-    assert sorted(seen[0][1]) == [
-        "decay.c",
-        "decay.in",
-        "decay.m",
-        "decay_2.c",
-        "decay_2.in",
-        "decayalg.in",
-        "decayalg.m",
-        "printed",
-    ]
+    assert sorted(seen[0][1]) == sorted([*MANY_JOBS_FILES, "printed"])
     assert seen[1] == seen[0]
     assert seen[2] == seen[0]
 
@@ -156,15 +159,7 @@ def test_copies_form_each_job_as_this_process_does(tmp_path):
             formers.written(i, made)
     finally:
         formers.stop()
-    assert sorted(made) == [
-        "decay.c",
-        "decay.in",
-        "decay.m",
-        "decay_2.c",
-        "decay_2.in",
-        "decayalg.in",
-        "decayalg.m",
-    ]
+    assert sorted(made) == MANY_JOBS_FILES
     assert os.getpid() == pid
     assert Formers(jobs, None, None, 1).formed(0) is None  # one worker: no copies
 
