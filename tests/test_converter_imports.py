@@ -25,10 +25,9 @@ _REPORT = (
 )
 
 
-def _loaded(program: str, tmp_path: Path) -> list[str]:
-    """The heavy modules loaded once ``program`` has run, in a fresh
-    interpreter in ``tmp_path``."""
-    code = program + _REPORT.format(heavy=HEAVY)
+def _fresh(code: str, tmp_path: Path) -> str:
+    """What ``code`` prints, run in a fresh interpreter in ``tmp_path``
+    (it must succeed)."""
     proc = subprocess.run(
         [sys.executable, "-c", code],
         capture_output=True,
@@ -37,7 +36,14 @@ def _loaded(program: str, tmp_path: Path) -> list[str]:
         timeout=120,
     )
     assert proc.returncode == 0, proc.stderr
-    return json.loads(proc.stdout.splitlines()[-1])
+    return proc.stdout
+
+
+def _loaded(program: str, tmp_path: Path) -> list[str]:
+    """The heavy modules loaded once ``program`` has run, in a fresh
+    interpreter in ``tmp_path``."""
+    out = _fresh(program + _REPORT.format(heavy=HEAVY), tmp_path)
+    return json.loads(out.splitlines()[-1])
 
 
 def test_convert_imports_no_sympy(tmp_path):
@@ -109,11 +115,4 @@ FIRST_IMPORTS = [
 
 @pytest.mark.parametrize("module", FIRST_IMPORTS)
 def test_each_part_of_the_runtime_imports_first(module, tmp_path):
-    proc = subprocess.run(
-        [sys.executable, "-c", f"import {module}"],
-        capture_output=True,
-        text=True,
-        cwd=tmp_path,
-        timeout=120,
-    )
-    assert proc.returncode == 0, proc.stderr
+    _fresh(f"import {module}", tmp_path)
