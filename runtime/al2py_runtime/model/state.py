@@ -159,10 +159,6 @@ def query(method: F) -> F:
     return method
 
 
-def _undef(label: str) -> KeyError:
-    return KeyError(f"{label} is not defined")
-
-
 def mentions(x: Any, objs: list) -> bool:
     """Whether a vector (or scalar) contains any of ``objs``."""
     if isinstance(x, Vector):
