@@ -47,10 +47,17 @@ SHARED_MODULES = (
 #: What this process imports while its copy converts the script
 #: (:func:`main`): what the derivation imports (sympy among them), then,
 #: unless the copy has failed already, what writing the programs imports
-#: (numpy among them), which a script with errors never needs.
+#: (numpy among them, and the three languages' printers, which the copies
+#: that form the programs would otherwise wait for after the derivation),
+#: which a script with errors never needs.
 RUNTIME_MODULES = (
     ("al2py_runtime.workspace", "al2py_runtime.functions"),
-    ("al2py_runtime.codegen",),
+    (
+        "al2py_runtime.codegen",
+        "al2py_runtime.codegen.c",
+        "al2py_runtime.codegen.fortran",
+        "al2py_runtime.codegen.octave",
+    ),
 )
 
 

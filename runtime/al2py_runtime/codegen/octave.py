@@ -38,6 +38,13 @@ class _Printer(Remembering, OctaveCodePrinter):
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
+        order = None if self.order in ("old", "none") else self.remembered_factors
+        names = backends.signed_names(expr) if order is not None else None
+        if names is not None and all(a.is_commutative for a in names[1]):
+            # names alone, or -1 and names (most products): ordered by name
+            # (remembered_factors), each as it is, joined by .*
+            ordered = sorted(names[1], key=_name)
+            return names[0] + ".*".join([self.print_part(a) for a in ordered])
         number = self.remembered_number
         if (
             number(expr)
@@ -45,7 +52,6 @@ class _Printer(Remembering, OctaveCodePrinter):
             and (sp.S.ImaginaryUnit * expr).is_Integer
         ):
             return f"{self._print(-sp.S.ImaginaryUnit * expr)}i"
-        order = None if self.order in ("old", "none") else self.remembered_factors
         sign, a, a_str, b, b_str = backends.product_parts(
             self,
             expr,
@@ -87,6 +93,10 @@ class _Printer(Remembering, OctaveCodePrinter):
                 return "1" + sym + self.parenthesize(expr.base, prec)
         base = self.parenthesize(expr.base, prec)
         return f"{base}{powsymbol}{self.parenthesize(expr.exp, prec)}"
+
+
+def _name(symbol: Any) -> str:
+    return symbol.name
 
 
 def _code(printer: Any, expr: Any, target: str) -> str:

@@ -270,6 +270,10 @@ def _ordered_terms(expr: Any, keys: dict, numbers: dict, powers: dict) -> list:
     in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_monomials`;
     else sympy's ``as_terms``)."""
 
+    named = _ordered_by_names(expr.args)
+    if named is not None:
+        return named
+
     def plain(x: Any) -> bool:
         return not isinstance(x, sp.Number | sp.NumberSymbol)
 
@@ -366,6 +370,50 @@ def _ordered_by_monomials(
                 return None  # one base twice (sympy keeps the last)
             exponents[i] = -exp
         keyed.append((tuple(exponents), term))
+    keyed.sort(key=_first)
+    for i in range(1, len(keyed)):
+        if keyed[i][0] == keyed[i - 1][0]:
+            return None
+    return [term for _, term in keyed]
+
+
+def _ordered_by_names(terms: tuple) -> list | None:
+    """``terms`` (a sum's) in ``as_ordered_terms``'s order when each is a
+    name or a product of names (after a number), what most sums of a
+    program are, else None (:func:`_ordered_by_monomials` decides).
+
+    Every exponent is 1 and the generators are names, sorted by name: of
+    two terms, the one holding the first name (in that order) that the
+    other lacks comes first (its monomial's exponent there is the larger).
+    That is the order of the terms' sorted names, a term that runs out
+    coming after one that goes on: each name ``n`` is keyed ``(0, n)``, the
+    end ``(1, "")``.  None where :func:`_ordered_by_monomials` would give
+    None (two names alike, two terms of one monomial) or sympy sorts
+    otherwise (a number term, a power, a function, a name twice in a
+    term, a factor that does not commute)."""
+    seen: dict[str, Any] = {}
+    keyed = []
+    for term in terms:
+        if type(term) is sp.Symbol:
+            factors: tuple = (term,)
+        elif type(term) is sp.Mul:
+            factors = term.args
+            if factors[0].is_Number:
+                factors = factors[1:]
+        else:
+            return None
+        key = []
+        for f in factors:
+            if type(f) is not sp.Symbol or not f.is_commutative:
+                return None
+            if seen.setdefault(f.name, f) != f:
+                return None  # two names alike
+            key.append((0, f.name))
+        if not key or len(set(key)) != len(key):
+            return None
+        key.sort()
+        key.append((1, ""))
+        keyed.append((tuple(key), term))
     keyed.sort(key=_first)
     for i in range(1, len(keyed)):
         if keyed[i][0] == keyed[i - 1][0]:

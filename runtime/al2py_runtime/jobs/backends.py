@@ -694,6 +694,9 @@ class CPrinter(C99CodePrinter):
         # their own order) with precedences kept per class
         if expr in self.math_macros:
             return super()._print_Mul(expr, **kwargs)
+        names = signed_names(expr)
+        if names is not None:  # most products: each name as it is
+            return names[0] + "*".join([self.print_part(a) for a in names[1]])
         sign, a_str, b_str = product_parts(self, expr, _precedence(expr))[::2]
         return join_product(sign, a_str, b_str)
 
@@ -815,6 +818,20 @@ def product_parts(
         if item.base in b:
             b_str[b.index(item.base)] = f"({b_str[b.index(item.base)]})"
     return sign, a, a_str, b, b_str
+
+
+def signed_names(expr: Any) -> tuple[str, tuple] | None:
+    """A product of names alone, or of -1 and names (most of a program's
+    products): ``(sign, names)`` as :func:`product_parts` splits it (``"-"``
+    for -1, the names in their order, none of them parenthesized: a name's
+    precedence is an atom's), else None."""
+    args = expr.args
+    sign = ""
+    if args and args[0] is sp.S.NegativeOne:
+        sign, args = "-", args[1:]
+    if not args or any(type(a) is not sp.Symbol for a in args):
+        return None
+    return sign, args
 
 
 def magnitude_factors(expr: Any) -> tuple[str, list]:
