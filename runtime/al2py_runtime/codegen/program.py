@@ -379,9 +379,10 @@ def one_based_target(a: Assign) -> str:
 def _used(
     entries: list[Entry], block: Iterable[Assign], free: dict
 ) -> list[tuple[int, Entry]]:
-    names: set[str] = set()
+    symbols: set[Any] = set()
     for a in block:
-        names |= {s.name for s in backends.free_symbols_of(a.expr, free)}
+        symbols |= backends.free_symbols_of(a.expr, free)
+    names = {s.name for s in symbols}
     return [(i, e) for i, e in enumerate(entries) if e.ident in names]
 
 
