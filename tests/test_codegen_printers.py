@@ -153,3 +153,47 @@ def test_c_statements_with_re_handled_as_the_backends():
         assert mine._handle_UnevaluatedExpr(e) == CPrinter()._handle_UnevaluatedExpr(
             e
         ), e
+
+
+def _sums_of_names(n: int, seed: int, clashing: bool = True) -> list[sp.Expr]:
+    """Random products of names (after -1 or another number) and sums of
+    them, what most of a program's statements are: names that sort apart
+    by digits (``Q1 < Q10 < Q2``), terms of one monomial, a lone name, a
+    number term; ``clashing``: names alike without case (``ibxx``,
+    ``IBxx``) and a name twice with other assumptions (which Fortran's
+    printer names apart, in the order it first meets them)."""
+    rng = random.Random(seed)
+    names = [sp.Symbol(s, real=True) for s in ("Q1", "Q10", "Q2", "z1", "z12", "z2")]
+    names += [sp.Symbol("ibxx", real=True), A, B]
+    if clashing:
+        names += [sp.Symbol("IBxx", real=True), sp.Symbol("a", real=True)]
+
+    def term() -> sp.Expr:
+        coefficient = rng.choice([1, 1, 1, -1, -1, 2, sp.Rational(-1, 2)])
+        return sp.Mul(coefficient, *rng.sample(names, rng.randrange(1, 5)))
+
+    out = []
+    for _ in range(n):
+        e = sp.Add(*[term() for _ in range(rng.randrange(1, 7))])
+        out.append(e + rng.choice([0, 0, 0, 1, sp.Rational(3, 2)]))
+    return out
+
+
+@MATLAB_AND_FORTRAN
+def test_sums_of_products_of_names_print_as_sympy(ours, theirs, settings):
+    # the products of names (and -1) and the order of sums of them that
+    # the program printers form at once (printers._ordered_by_names)
+    mine = ours(settings)
+    for e in _sums_of_names(3000, 7, clashing=theirs is not FCodePrinter):
+        assert mine.doprint(e, assign_to="r") == theirs(settings).doprint(
+            e, assign_to="r"
+        ), e
+
+
+def test_c_products_of_names_print_as_sympy():
+    mine, program = CPrinter(), CProgramPrinter()
+    theirs = C99CodePrinter({"strict": True, "order": "none"})
+    for e in _sums_of_names(1000, 8):
+        for part in [e, *e.args]:
+            assert mine.doprint(part) == theirs.doprint(part), part
+            assert program.doprint(part) == theirs.doprint(part), part
