@@ -1,0 +1,126 @@
+"""Shortcuts of the model's derivation (issue 35, ``docs/kinematics-speed.md``):
+each gives sympy's (or the long path's) result, the same objects in the
+same order, checked on random expressions."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime.intermediates.autoz import Intermediates
+from al2py_runtime.model import kinematics as kin
+from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
+
+Q = dynamicsymbols("q1:5")
+C = sp.symbols("c1:4", real=True)
+
+
+def _entry(rng: random.Random, book: Intermediates) -> sp.Expr:
+    """A random entry: zero, a number, a trigonometric term, a sum, or an
+    intermediate (or its negative) naming one."""
+    kind = rng.randrange(7)
+    q = rng.choice(Q)
+    if kind == 0:
+        return sp.S.Zero
+    if kind == 1:
+        return sp.Integer(rng.choice([1, -1, 2]))
+    if kind == 2:
+        return rng.choice([sp.cos, sp.sin])(q)
+    if kind == 3:
+        return sp.cos(q) * rng.choice(C) - sp.sin(rng.choice(Q)) * rng.choice(C)
+    z = book.name(
+        sp.cos(q) * sp.sin(rng.choice(Q)) + rng.choice(C) * sp.cos(rng.choice(Q))
+    )
+    return -z if kind == 4 else z
+
+
+def _matrix(rng: random.Random, book: Intermediates) -> sp.Matrix:
+    m = sp.Matrix(3, 3, lambda i, j: _entry(rng, book))
+    # sympy's own sparse orders: a transpose and a product reorder the rows
+    if rng.random() < 0.3:
+        m = m.T
+    if rng.random() < 0.3:
+        m = m * sp.Matrix(3, 3, lambda i, j: _entry(rng, book))
+    if rng.random() < 0.4:  # sympy's frames keep both kinds
+        m = sp.ImmutableMatrix(m)
+    return m
+
+
+def _dok(m: sp.Matrix) -> list:
+    return [(ij, sp.srepr(v)) for ij, v in m.todok().items()]
+
+
+class _Recorder:
+    """``book.name``, recording the order of the calls."""
+
+    def __init__(self, book: Intermediates) -> None:
+        self.book, self.calls = book, []
+
+    def __call__(self, e):
+        self.calls.append(e)
+        return self.book.name(e)
+
+
+@pytest.mark.parametrize("seed", range(100))
+def test_named_product_is_sympys_product_named_in_its_order(seed):
+    rng = random.Random(seed)
+    books = Intermediates("Z"), Intermediates("Z")
+    mats = [[_matrix(random.Random(seed * 7 + k), b) for k in range(2)] for b in books]
+    long_name, short_name = _Recorder(books[0]), _Recorder(books[1])
+    want = (mats[0][0] * mats[0][1]).applyfunc(long_name)
+    got = kin.named_product(mats[1][0], mats[1][1], short_name)
+    assert type(got) is type(want)
+    # the same entries in sympy's sparse order (a later product reads it),
+    # written alike (two books: their intermediates are of two classes)
+    assert _dok(got) == _dok(want)
+    assert _dok(got.T) == _dok(want.T)
+    # named in the same order: the intermediates are numbered the same
+    assert [sp.srepr(e) for e in short_name.calls] == [
+        sp.srepr(e) for e in long_name.calls
+    ]
+    assert len(books[1]) > 0
+    assert [sp.srepr(books[1].canonical(k)) for k in range(1, len(books[1]) + 1)] == [
+        sp.srepr(books[0].canonical(k)) for k in range(1, len(books[0]) + 1)
+    ]
+    assert rng.random() >= 0  # (the seed drives the matrices above)
+
+
+def test_named_product_keeps_sympys_infinities():
+    """An infinite entry: sympy's product (``0 * oo`` is ``nan``)."""
+    book = Intermediates()
+    a = sp.Matrix([[sp.oo, 0, 0], [0, 1, 0], [0, 0, sp.cos(Q[0])]])
+    b = sp.Matrix([[0, 1, 0], [1, 0, 0], [0, 0, sp.sin(Q[1])]])
+    want = (a * b).applyfunc(book.name)
+    got = kin.named_product(a, b, book.name)
+    assert got.has(sp.nan) and want.has(sp.nan)
+    assert _dok(got) == _dok(want)
+
+
+def test_named_product_of_numbers_is_sympys():
+    book = Intermediates()
+    a = sp.Matrix([[0, 1, 0], [-1, 0, 0], [0, 0, 1]])
+    b = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])
+    got = kin.named_product(a, b, book.name)
+    assert _dok(got) == _dok(a * b)
+
+
+def test_named_dcms_of_a_chain_of_frames_are_sympys():
+    """A chain of simple rotations, each new frame's direction cosines to
+    the others formed as model/points.py ``_name_dcms`` forms them: equal
+    to sympy's."""
+    rng = random.Random(5)
+    frames = [ReferenceFrame("N")]
+    book = Intermediates()
+    for k in range(6):
+        a = frames[-1]
+        axis = getattr(a, rng.choice(["x", "y", "z"]))
+        f = a.orientnew(f"F{k}", "Axis", [Q[k % 4], axis])
+        step = a.dcm(f)
+        for g in frames[:-1]:
+            m = kin.named_product(g.dcm(a), step, book.name)
+            assert sp.simplify(book.expand(m) - g.dcm(f)) == sp.zeros(3, 3)
+            g._dcm_cache[f] = m
+            f._dcm_cache[g] = m.T
+        frames.append(f)
+    assert len(book) > 20
