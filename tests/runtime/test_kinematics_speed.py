@@ -48,7 +48,7 @@ def _matrix(rng: random.Random, book: Intermediates) -> sp.Matrix:
 
 
 def _dok(m: sp.Matrix) -> list:
-    return [(ij, sp.srepr(v)) for ij, v in m.todok().items()]
+    return [(ij, _tree(v)) for ij, v in m.todok().items()]
 
 
 class _Recorder:
@@ -76,13 +76,9 @@ def test_named_product_is_sympys_product_named_in_its_order(seed):
     assert _dok(got) == _dok(want)
     assert _dok(got.T) == _dok(want.T)
     # named in the same order: the intermediates are numbered the same
-    assert [sp.srepr(e) for e in short_name.calls] == [
-        sp.srepr(e) for e in long_name.calls
-    ]
+    assert [_tree(e) for e in short_name.calls] == [_tree(e) for e in long_name.calls]
     assert len(books[1]) > 0
-    assert [sp.srepr(books[1].canonical(k)) for k in range(1, len(books[1]) + 1)] == [
-        sp.srepr(books[0].canonical(k)) for k in range(1, len(books[0]) + 1)
-    ]
+    assert _definitions(books[1]) == _definitions(books[0])
     assert rng.random() >= 0  # (the seed drives the matrices above)
 
 
@@ -124,3 +120,55 @@ def test_named_dcms_of_a_chain_of_frames_are_sympys():
             f._dcm_cache[g] = m.T
         frames.append(f)
     assert len(book) > 20
+
+
+def _big(rng: random.Random, book: Intermediates, depth: int = 0) -> sp.Expr:
+    """A random expression large enough to be named in parts: sums of
+    products of intermediates, functions of time, symbols, numbers and
+    smaller sums."""
+    zs = [
+        book.name(sp.cos(q) * sp.sin(p) + c * sp.cos(p))
+        for q, p, c in zip(Q, Q[1:], C, strict=True)
+    ]
+    atoms = [*zs, *Q, *C, sp.sin(Q[0]), sp.cos(Q[2])]
+    terms = []
+    for _ in range(rng.randint(3, 7)):
+        factors = rng.sample(atoms, rng.randint(1, 4))
+        if depth < 2 and rng.random() < 0.4:
+            factors.append(_big(rng, book, depth + 1))
+        if rng.random() < 0.3:
+            factors.append(sp.Integer(rng.choice([-1, 2, -3])))
+        terms.append(sp.Mul(*factors))
+    return sp.Add(*terms)
+
+
+def _tree(e) -> str:
+    """``e`` written with every argument in its stored order (sympy's
+    printers, ``srepr`` too, sort a sum's terms)."""
+    if isinstance(e, tuple):
+        return "(" + ",".join(_tree(a) for a in e) + ")"
+    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
+        return type(e).__name__ + "(" + ",".join(_tree(a) for a in e.args) + ")"
+    return sp.srepr(e)
+
+
+def _definitions(book: Intermediates) -> list:
+    return [_tree(book.canonical(k)) for k in range(1, len(book) + 1)]
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_named_in_parts_as_sympy_rebuilds_them(seed, monkeypatch):
+    """``Intermediates._split`` rebuilds a part whose arguments were named
+    with ``substitute``'s constructors (``product_with``, ``total``): the
+    same expressions and intermediates as sympy's ``e.func(*args)``."""
+    from al2py_runtime.intermediates import autoz
+
+    fast = Intermediates()
+    got = [fast.name(_big(random.Random(seed * 11 + k), fast)) for k in range(4)]
+    with monkeypatch.context() as m:
+        m.setattr(autoz, "_rebuilt", lambda e, new, changed: e.func(*new))
+        slow = Intermediates()
+        want = [slow.name(_big(random.Random(seed * 11 + k), slow)) for k in range(4)]
+    assert [_tree(e) for e in got] == [_tree(e) for e in want]
+    assert _definitions(fast) == _definitions(slow)
+    assert len(fast) > 8  # named in parts

@@ -1308,13 +1308,15 @@ class Intermediates:
             found = memo.get(e)
             if found is not None and not top:
                 return found
-            args, size, changed = [], 1, False
-            for a in e.args:
+            args, size, changed = [], 1, []
+            for i, a in enumerate(e.args):
                 b, n = walk(a, False)
                 args.append(b)
                 size += n
-                changed = changed or b is not a
-            new = e.func(*args) if changed else e
+                if b is not a:
+                    changed.append(i)
+            # (sympy's e.func(*args), formed as substitute forms it)
+            new = _rebuilt(e, args, changed) if changed else e
             out = (new, size)
             if (
                 not top
