@@ -128,7 +128,7 @@ def _big(rng: random.Random, book: Intermediates, depth: int = 0) -> sp.Expr:
     smaller sums."""
     zs = [
         book.name(sp.cos(q) * sp.sin(p) + c * sp.cos(p))
-        for q, p, c in zip(Q, Q[1:], C, strict=True)
+        for q, p, c in zip(Q[:3], Q[1:], C, strict=True)
     ]
     atoms = [*zs, *Q, *C, sp.sin(Q[0]), sp.cos(Q[2])]
     terms = []
