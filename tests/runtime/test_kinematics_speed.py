@@ -172,3 +172,80 @@ def test_named_in_parts_as_sympy_rebuilds_them(seed, monkeypatch):
     assert [_tree(e) for e in got] == [_tree(e) for e in want]
     assert _definitions(fast) == _definitions(slow)
     assert len(fast) > 8  # named in parts
+
+
+U = dynamicsymbols("u1:4")
+
+
+def _linear(rng: random.Random, book: Intermediates) -> sp.Expr:
+    """A random expression in the speeds ``U`` and their derivatives:
+    mostly linear, with coefficients and a rest of every kind a velocity or
+    an acceleration has (sums, products, numbers, floats, a derivative of
+    a speed inside a coefficient, a product of two speeds)."""
+    xs = [*U, *(u.diff() for u in U)]
+    terms = []
+    for _ in range(rng.randint(1, 6)):
+        coef = _big(rng, book) if rng.random() < 0.5 else _entry(rng, book)
+        kind = rng.randrange(10)
+        if kind == 0:
+            coef = sp.Float(rng.choice([0.5, 2.0]))
+        elif kind == 1:
+            coef = coef * U[0].diff()  # an acceleration in a coefficient
+        elif kind == 2:
+            coef = sp.Integer(rng.choice([1, -1, 3]))
+        x = rng.choice(xs)
+        terms.append(coef * x * (rng.choice(U) if rng.random() < 0.05 else 1))
+    if rng.random() < 0.7:
+        terms.append(_big(rng, book) if rng.random() < 0.5 else _entry(rng, book))
+    return sp.Add(*terms)
+
+
+@pytest.mark.parametrize("seed", range(60))
+def test_name_linear_terms_is_linear_terms_of_name_linear(seed):
+    """The engine's split of a measure number (``fastkane._split_named``):
+    read off the named parts, the same coefficients, rest and
+    intermediates as splitting the named sum again."""
+    from al2py_runtime.linear import linear_terms
+
+    choices = [[*U], [*(u.diff() for u in U)], [*U, *(u.diff() for u in U)]]
+    fast, slow = Intermediates(), Intermediates()
+    if seed % 2:  # the speeds' derivatives are named (Q' as speeds)
+        fast.rates = slow.rates = frozenset(u.diff() for u in U)
+    for k in range(5):
+        rng = random.Random(seed * 13 + k)
+        xs = rng.choice(choices)
+        if k == 4:
+            xs = [*xs, xs[0]]  # a repeated x
+        got = fast.name_linear_terms(_linear(random.Random(seed * 13 + k), fast), xs)
+        e = _linear(random.Random(seed * 13 + k), slow)
+        want = linear_terms(slow.name_linear(e, xs), xs)
+        if want is None:
+            assert got is None
+            continue
+        assert got is not None
+        assert [_tree(c) for c in got[0]] == [_tree(c) for c in want[0]]
+        assert _tree(got[1]) == _tree(want[1])
+    assert _definitions(fast) == _definitions(slow)
+
+
+def test_name_linear_terms_keeps_zee_not_quantities_in_the_rest():
+    """``ZEE_NOT`` quantities are split off by ``name_linear`` but are not
+    among the ``xs``: the rest is the named sum's (the long path)."""
+    from al2py_runtime.linear import linear_terms
+
+    f = sp.Symbol("F")
+    fast, slow = Intermediates(), Intermediates()
+    for b in (fast, slow):
+        b.exclude = frozenset({f})
+    e = sp.cos(Q[0]) * sp.sin(Q[1]) * U[0] + f * U[1] * sp.cos(Q[2]) + sp.sin(Q[3]) * f
+    got = fast.name_linear_terms(e, [U[0], U[1]])
+    want = linear_terms(slow.name_linear(e, [U[0], U[1]]), [U[0], U[1]])
+    assert (
+        want is None
+        and got is None
+        or (
+            [_tree(c) for c in got[0]] == [_tree(c) for c in want[0]]
+            and _tree(got[1]) == _tree(want[1])
+        )
+    )
+    assert _definitions(fast) == _definitions(slow)
