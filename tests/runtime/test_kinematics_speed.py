@@ -249,3 +249,26 @@ def test_name_linear_terms_keeps_zee_not_quantities_in_the_rest():
         )
     )
     assert _definitions(fast) == _definitions(slow)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_doit_derivatives_is_sympys_replace(seed):
+    """``doit_derivatives`` (every resolution's last step): sympy's
+    ``replace`` of each derivative of an expression by its value, the
+    derivatives of functions of time kept; an expression with none to
+    evaluate is returned as it is, without the rebuilding walk."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    e = _big(rng, book) * U[0] + _entry(rng, book) * U[1].diff()
+    if seed % 2:
+        inner = rng.choice([sp.sin(Q[0]) * C[0], Q[1] ** 2, _entry(rng, book) + Q[2]])
+        e = e + sp.Derivative(inner, dynamicsymbols._t) * rng.choice(U)
+    want = e.replace(
+        lambda x: isinstance(x, sp.Derivative)
+        and not isinstance(x.expr, sp.core.function.AppliedUndef),
+        lambda x: x.doit(),
+    )
+    got = kin.doit_derivatives(e)
+    assert _tree(got) == _tree(want)
+    if not seed % 2:
+        assert got is e

@@ -62,14 +62,23 @@ def doit_derivatives(expr: Any) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(doit_derivatives)
     if isinstance(expr, sp.Basic):
-        # sympy's expr.replace(query, value), each shared part walked once
+        # sympy's expr.replace(query, value), each shared part walked once;
+        # without a derivative to evaluate, replace changes nothing and
+        # gives expr itself: found by a plain walk (most resolved values)
+        if all(_kept_derivative(d) for d in walks.atoms(expr, sp.Derivative)):
+            return expr
         return walks.replace(
             expr,
-            lambda e: isinstance(e, sp.Derivative)
-            and not isinstance(e.expr, sp.core.function.AppliedUndef),
+            lambda e: isinstance(e, sp.Derivative) and not _kept_derivative(e),
             lambda e: e.doit(),
         )
     return expr
+
+
+def _kept_derivative(d: sp.Derivative) -> bool:
+    """A derivative of a declared function of time (``U1'``), which
+    :func:`doit_derivatives` keeps."""
+    return isinstance(d.expr, AppliedUndef)
 
 
 def one_or_tuple(items: list[Any]) -> Any:
