@@ -272,3 +272,26 @@ def test_doit_derivatives_is_sympys_replace(seed):
     assert _tree(got) == _tree(want)
     if not seed % 2:
         assert got is e
+
+
+def test_autorhs_on_substitutes_the_current_numbers(tmp_path):
+    """AutoRHS ON's numeric right-hand sides are found once while the
+    right-hand sides do not change (``Workspace._simple_rhs``): a changed
+    or new one is substituted from then on, in scalars and matrices."""
+    from al2py_runtime import Workspace
+
+    al = Workspace("snip.al", str(tmp_path / "snip.py"))
+    al.settings.set("Autorhs", "ON")
+    b = sp.Symbol("B", real=True)
+    al.declare_constants(b, line=2)
+    a = al.assign("A", 7, line=3)
+    al.assign("C", a + b, line=4)
+    al.assign("M", sp.Matrix([a, a * b]), line=5)
+    assert al["C"] == 7 + b
+    assert list(al["M"]) == [7, 7 * b]
+    a = al.assign("A", 8, line=6)
+    al.assign("D", a + b, line=7)
+    e = al.assign("E", 5, line=8)
+    al.assign("N", sp.Matrix([a + e, b]), line=9)
+    assert al["D"] == 8 + b
+    assert list(al["N"]) == [13, b]
