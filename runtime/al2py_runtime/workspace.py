@@ -86,6 +86,10 @@ class Workspace(Mapping):
         #: ``al2py check`` draws its random points on that sphere.
         self.unit_norms: list[tuple[Any, ...]] = []
         self._autotaylor: tuple[tuple[int, int], list[tuple]] | None = None
+        #: AutoRHS ON's table of numeric right-hand sides, with the count of
+        #: the table's changes and the kept quantities it was made for
+        #: (:meth:`_simple_rhs`)
+        self._simple: tuple[int, frozenset, dict] | None = None
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(
             self,
@@ -603,16 +607,29 @@ class Workspace(Mapping):
         if mode == "ALL":
             value = self.resolve(value, kept)
         elif mode == "ON":
-            simple = {
-                k: v
-                for k, v in self.table.rhs.items()
-                if _is_simple(v) and k not in kept
-            }
+            simple = self._simple_rhs(kept)
             if simple:
                 value = _xreplace(value, simple)
         if rearrange and self.settings.factoring and value.is_Add and is_small(value):
             value = sp.factor_terms(value)
         return value
+
+    def _simple_rhs(self, kept: list) -> dict:
+        """The right-hand sides that are numbers (AutoRHS ON substitutes
+        them), but the ``kept`` quantities': made once while the table's
+        right-hand sides do not change (``NameTable.set_rhs`` counts every
+        change; a number is immutable), not for each value normalized (each
+        entry of a matrix, each measure number of a vector)."""
+        changes, keep = self.table.rhs_changes, frozenset(kept)
+        found = self._simple
+        if found is None or found[0] != changes or found[1] != keep:
+            table = {
+                k: v
+                for k, v in self.table.rhs.items()
+                if _is_simple(v) and k not in keep
+            }
+            found = self._simple = (changes, keep, table)
+        return found[2]
 
     def _numbers(self, value: sp.Expr) -> sp.Expr:
         floats = walks.atoms(value, sp.Float)

@@ -1308,13 +1308,15 @@ class Intermediates:
             found = memo.get(e)
             if found is not None and not top:
                 return found
-            args, size, changed = [], 1, False
-            for a in e.args:
+            args, size, changed = [], 1, []
+            for i, a in enumerate(e.args):
                 b, n = walk(a, False)
                 args.append(b)
                 size += n
-                changed = changed or b is not a
-            new = e.func(*args) if changed else e
+                if b is not a:
+                    changed.append(i)
+            # (sympy's e.func(*args), formed as substitute forms it)
+            new = _rebuilt(e, args, changed) if changed else e
             out = (new, size)
             if (
                 not top
@@ -1636,21 +1638,67 @@ class Intermediates:
         """``expr = rest + sum(c_k * x_k)`` with ``rest`` and each ``c_k``
         named, so that the terms in ``xs`` (speeds, their derivatives) stay
         visible; an expression not linear in ``xs`` is named whole."""
+        whole, present, coefs, rest = self._name_linear_parts(expr, xs)
+        if whole is not None:
+            return whole
+        return rest + sp.Add(*[c * x for c, x in zip(coefs, present, strict=True)])
+
+    def _name_linear_parts(self, expr: Any, xs: Sequence[Any]) -> tuple:
+        """:meth:`name_linear`'s naming: ``(whole, present, coefficients,
+        rest)``, ``whole`` the result when ``expr`` is named whole (or kept:
+        not linear), else None and the ``xs`` present in ``expr`` (in the
+        order of ``xs``, then the ``ZEE_NOT`` quantities), their named
+        coefficients and the named rest (named first, as ever)."""
         expr = sp.sympify(expr)
         found = appearing(expr, xs)
         present = [x for x in xs if x in found]
         if not present:
-            return self.name(expr)
+            return self.name(expr), None, None, None
         if any(x in self.exclude for x in present):
             more = appearing(expr, [x for x in self.exclude if x not in present])
             present += [x for x in self.exclude if x in more]
         split = self.linear_split(expr, present)
         if split is None:
-            return expr  # not linear: keep it as it is
+            return expr, None, None, None  # not linear: keep it as it is
         coefs, rest = split
-        return self.name(rest) + sp.Add(
-            *[self.name(c) * x for c, x in zip(coefs, present, strict=True)]
-        )
+        rest = self.name(rest)
+        return None, present, [self.name(c) for c in coefs], rest
+
+    def name_linear_terms(
+        self, expr: Any, xs: Sequence[Any]
+    ) -> tuple[list[Any], Any] | None:
+        """``linear_terms(self.name_linear(expr, xs), xs)``, the same
+        coefficients and rest (and the same intermediates, made in the same
+        order), read off the named parts without forming their sum where
+        that sum's terms are plainly ``rest`` and ``c_k * x_k``: the rest
+        and each coefficient a rational number, an intermediate or a
+        rational multiple of one, none holding an ``x`` (as :func:`linear_terms`
+        would find it), and the ``xs`` distinct."""
+        whole, present, coefs, rest = self._name_linear_parts(expr, xs)
+        if whole is not None:
+            return linear_terms(whole, xs)
+        wanted = frozenset(xs)
+        if (
+            len(wanted) == len(xs)
+            and wanted.issuperset(present)
+            and self._plain_named(rest, wanted)
+            and all(self._plain_named(c, wanted) for c in coefs)
+        ):
+            by_x = dict(zip(present, coefs, strict=True))
+            return [by_x.get(x, sp.S.Zero) for x in xs], rest
+        terms = [c * x for c, x in zip(coefs, present, strict=True)]
+        return linear_terms(rest + sp.Add(*terms), xs)
+
+    def _plain_named(self, e: Any, wanted: frozenset) -> bool:
+        """Whether ``e`` (a named part) is a rational number, an
+        intermediate or a rational times one, holding none of ``wanted``: a
+        term of its own in a sum (a coefficient, with its ``x``), which
+        :func:`linear_terms` reads back as it is."""
+        if e.is_Rational:
+            return True
+        if e.is_Mul and len(e.args) == 2 and e.args[0].is_Rational:
+            e = e.args[1]
+        return isinstance(e, self.Z) and wanted.isdisjoint(e.walk_parts())
 
     def linear_split(
         self, expr: Any, xs: Sequence[Any], direct: bool = True

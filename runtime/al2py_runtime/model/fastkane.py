@@ -52,7 +52,6 @@ from sympy.physics.vector import Vector
 from sympy.printing.numpy import NumPyPrinter
 
 from ..intermediates.autoz import Intermediate, Intermediates, product_with
-from ..linear import linear_terms
 from .arrange import split_linear_named
 from .kinematics import ang_vel_in
 
@@ -272,14 +271,15 @@ _NONE = object()
 def _split_named(
     expr: Any, xs: tuple, book: Intermediates, memo: Splits
 ) -> tuple[list[Any], Any] | None:
-    """``linear_terms(book.name_linear(expr, xs), xs)``, once in ``memo``
-    for each expression (see :class:`Splits`)."""
+    """``linear_terms(book.name_linear(expr, xs), xs)``
+    (:meth:`Intermediates.name_linear_terms`), once in ``memo`` for each
+    expression (see :class:`Splits`)."""
     key = (expr, xs, book.rates, book.exclude)
     try:
         return memo.exprs[key]
     except KeyError:
         pass
-    found = memo.exprs[key] = linear_terms(book.name_linear(expr, xs), xs)
+    found = memo.exprs[key] = book.name_linear_terms(expr, xs)
     return found
 
 

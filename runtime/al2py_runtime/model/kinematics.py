@@ -62,14 +62,23 @@ def doit_derivatives(expr: Any) -> Any:
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(doit_derivatives)
     if isinstance(expr, sp.Basic):
-        # sympy's expr.replace(query, value), each shared part walked once
+        # sympy's expr.replace(query, value), each shared part walked once;
+        # without a derivative to evaluate, replace changes nothing and
+        # gives expr itself: found by a plain walk (most resolved values)
+        if all(_kept_derivative(d) for d in walks.atoms(expr, sp.Derivative)):
+            return expr
         return walks.replace(
             expr,
-            lambda e: isinstance(e, sp.Derivative)
-            and not isinstance(e.expr, sp.core.function.AppliedUndef),
+            lambda e: isinstance(e, sp.Derivative) and not _kept_derivative(e),
             lambda e: e.doit(),
         )
     return expr
+
+
+def _kept_derivative(d: sp.Derivative) -> bool:
+    """A derivative of a declared function of time (``U1'``), which
+    :func:`doit_derivatives` keeps."""
+    return isinstance(d.expr, AppliedUndef)
 
 
 def one_or_tuple(items: list[Any]) -> Any:
@@ -129,6 +138,143 @@ def _row_times(row: list, b: sp.MatrixBase) -> list:
         sp.Add(*[x * b[k, j] for k, x in enumerate(row) if x != 0 and b[k, j] != 0])
         for j in range(b.cols)
     ]
+
+
+def _zero_times_is_zero(x: Any) -> bool:
+    """Whether ``0 * x`` is 0, as sympy's sparse product asks of each entry
+    (``0 * oo`` is ``nan``), answered without sympy's assumptions for a
+    commutative intermediate over variables, whose facts follow from
+    ``commutative`` and ``real`` alone (never ``finite=False``), or a
+    rational multiple of one."""
+    if x.is_Mul:
+        if all(f.is_Rational or _finite_intermediate(f) for f in x.args):
+            return True
+    elif _finite_intermediate(x):
+        return True
+    return sp.S.Zero * x == sp.S.Zero
+
+
+def _finite_intermediate(x: Any) -> bool:
+    """An intermediate whose assumptions come from ``commutative`` and
+    ``real`` only (:meth:`Intermediates.facts`): never known infinite."""
+    if not hasattr(x, "walk_parts"):  # (Intermediate's own method)
+        return False
+    args = x.args[1:]
+    return (
+        x.is_commutative is True
+        and all(a.is_commutative for a in args)
+        and not all(a.is_number for a in args)
+    )
+
+
+#: the matrix classes whose products :func:`named_product` forms
+_DENSE = frozenset({sp.MutableDenseMatrix, sp.ImmutableDenseMatrix})
+
+
+def finite_entries(m: sp.MatrixBase) -> bool:
+    """Whether ``0 * x`` is 0 for every entry ``x`` of ``m`` (no entry is
+    known infinite): what :func:`named_product` needs of both matrices."""
+    return all(_zero_times_is_zero(v) for v in m.todok().values())
+
+
+def _rows(dok: dict) -> dict:
+    """A dictionary of keys as rows (``{i: {j: entry}}``), each in the
+    dictionary's order: the order of sympy's sparse matrix."""
+    rows: dict = {}
+    for (i, j), v in dok.items():
+        rows.setdefault(i, {})[j] = v
+    return rows
+
+
+def _sparse_product(da: dict, db: dict) -> dict:
+    """The entries of the product, as sympy's ``sdm_matmul_exraw`` forms
+    and orders them (see :func:`named_product`), no entry infinite."""
+    rows_b = _rows(db)
+    dok: dict = {}
+    for i, ai in _rows(da).items():
+        terms: dict = {}
+        for k in sorted(ai.keys() & rows_b.keys()):
+            x = ai[k]
+            for j, y in rows_b[k].items():
+                terms.setdefault(j, []).append(x * y)
+        for j, products in terms.items():
+            entry = sp.Add(*products)
+            if entry:
+                dok[(i, j)] = entry
+    return dok
+
+
+def _entry_product(da: dict, db: dict, shape: tuple) -> dict:
+    """The entries of the product, as sympy's ``_eval_matrix_rmul`` forms
+    them (``sum`` of the row's products, a product with a zero factor
+    zero: no entry infinite), in row-major order."""
+    rows, inner, cols = shape
+    zero = sp.S.Zero
+    dok: dict = {}
+    for i in range(rows):
+        for j in range(cols):
+            products = []
+            for k in range(inner):
+                x, y = da.get((i, k), zero), db.get((k, j), zero)
+                products.append(zero if x is zero or y is zero else x * y)
+            entry = sum(products)
+            if entry != 0:
+                dok[(i, j)] = entry
+    return dok
+
+
+def named_product(
+    a: sp.MatrixBase, b: sp.MatrixBase, name: Callable, *, finite_b: bool = False
+) -> Any:
+    """``(a * b).applyfunc(name)``, the same matrix with each entry named
+    in the same order, without sympy's conversion of each product to a
+    domain and its test of every entry for an infinity by ``0 * x``
+    (which asks each new intermediate's assumptions).  ``finite_b``: the
+    caller found :func:`finite_entries` of ``b`` (a matrix multiplied many
+    times).
+
+    sympy's product of two matrices of expressions is the class of the
+    immutable one if either is (the other first rebuilt as one, from its
+    entries in row-major order).  ``a * b`` is then, when ``a`` is
+    immutable and ``b`` mutable, ``b.__rmul__(a)``, formed entry by entry
+    in row-major order (:func:`_entry_product`); else the sparse product
+    (``sdm_matmul_exraw``), which walks ``a``'s rows in its sparse order,
+    for each the ``k`` of ``a``'s nonzero entries with a nonzero row of
+    ``b`` ascending, and appends ``a[i, k] * b[k, j]`` to entry ``j`` in
+    the order of ``b``'s row: each entry the ``Add`` of its products, the
+    entries of a row in the order they were first met
+    (:func:`_sparse_product`).  ``applyfunc`` then names the entries in
+    that order (which numbers the intermediates), and the new matrix keeps
+    it.  Where an entry might be infinite, both matrices are of numbers
+    (sympy then multiplies in its integer or rational domain), or for other
+    classes of matrices, sympy's own product is used."""
+    kinds = (type(a), type(b))
+    if not set(kinds) <= _DENSE or a.cols != b.rows:
+        return (a * b).applyfunc(name)
+    da, db = a.todok(), b.todok()
+    if all(v.is_Rational for v in da.values()) and all(
+        v.is_Rational for v in db.values()
+    ):
+        return (a * b).applyfunc(name)
+    if not all(_zero_times_is_zero(v) for v in da.values()) or not (
+        finite_b or all(_zero_times_is_zero(v) for v in db.values())
+    ):
+        return (a * b).applyfunc(name)
+    cls = sp.ImmutableDenseMatrix if sp.ImmutableDenseMatrix in kinds else sp.Matrix
+    if kinds == (sp.ImmutableDenseMatrix, sp.MutableDenseMatrix):
+        dok = _entry_product(da, db, (a.rows, a.cols, b.cols))
+    else:
+        if type(a) is not cls:  # rebuilt in row-major order
+            da = dict(sorted(da.items()))
+        dok = _sparse_product(da, db)
+    named = {v: name(v) for v in dok.values()}
+    rows, cols = a.rows, b.cols
+    if len(dok) < rows * cols and (zero := name(sp.S.Zero)) is not sp.S.Zero:
+        flat = [zero] * (rows * cols)
+        for (i, j), v in dok.items():
+            flat[i * cols + j] = named[v]
+        return cls(rows, cols, flat)
+    return cls.from_dok(rows, cols, {ij: named[v] for ij, v in dok.items()})
 
 
 def dot(a: Vector, b: Vector) -> Any:

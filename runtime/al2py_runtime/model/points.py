@@ -220,6 +220,7 @@ class Kinematics(ModelPart):
             return
         (a,) = b._dcm_dict
         step = a._dcm_dict[b]  # a.dcm(b)
+        finite = kin.finite_entries(step)  # (asked once of each product)
         seen = {a, b}
         todo = [a]
         while todo:
@@ -229,8 +230,7 @@ class Kinematics(ModelPart):
                     continue
                 seen.add(g)
                 todo.append(g)
-                m = g.dcm(a) * step
-                m = m.applyfunc(book.name)
+                m = kin.named_product(g.dcm(a), step, book.name, finite_b=finite)
                 g._dcm_cache[b] = m
                 b._dcm_cache[g] = m.T
 
