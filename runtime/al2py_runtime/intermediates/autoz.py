@@ -682,6 +682,9 @@ _END = ((math.inf,),)
 #: factors (of a variable)
 _SINE_COSINE = frozenset([sp.sin, sp.cos])
 
+#: the kinds of factors of :meth:`Intermediates._products_plan`
+_PLAN_Z, _PLAN_SINE, _PLAN_OTHER = range(3)
+
 
 def _plain_factor_key(f: Any) -> tuple | None:
     """A tuple that orders as ``Basic.compare`` (:func:`_plain_atom_key`,
@@ -1141,6 +1144,8 @@ class Intermediates:
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
+        #: definition -> what :meth:`_products_pd` needs of it (or None)
+        self._plans: dict[Any, tuple | None] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
         #: variable -> (expression -> partial derivative by it): the answer
         #: depends only on the expression (the intermediates' partials are
@@ -1856,74 +1861,95 @@ class Intermediates:
         canonical intermediates, symbols, ...; most definitions are), with
         what :meth:`_walk` finds in the derivative when it is a sum (else
         ``()``): ``(derivative, walked)``.  None when ``e`` is not such a
-        sum, or a factor's derivative is not a
-        rational number times one such factor, or would square a factor.
+        sum, or a factor's derivative is not a rational number times one
+        such factor, or would square a factor.
 
         The chain rule's products are written as their factors' tuples
         (:meth:`_plain_key`: tuples that order as ``Basic.compare`` orders
         these factors), like ones collected by them, and the terms ordered
         by their tuples; each product and the sum are then formed once, as
         :func:`product_with` and :func:`total` form them (no sum per
-        product, no comparison of sympy objects).  The factors' derivatives
-        are taken in the order of :meth:`_pd`'s walk, so that the
-        intermediates named on the way get the same numbers."""
+        product, no comparison of sympy objects).  What does not depend on
+        ``x`` (the terms' factors and tuples, each factor's rest and what
+        :meth:`_walk` finds in it) is found once per definition
+        (:meth:`_products_plan`): a definition is differentiated by each of
+        its variables.  The factors' derivatives are taken in the order of
+        :meth:`_pd`'s walk (each distinct factor at its first place), so
+        that the intermediates named on the way get the same numbers; when
+        the shortcut then declines, :meth:`_pd` finds them in ``memo``."""
         if not (e.is_Add or e.is_Mul) or not global_parameters.evaluate:
             return None
+        plan = self._plans.get(e, _UNKNOWN)
+        if plan is _UNKNOWN:
+            plan = self._plans[e] = self._products_plan(e)
+        if plan is None:
+            return None
+        order, places, by_variable = plan
         one = sp.S.One
-        z_type = self.Z
         key_of = self._plain_key
+        z_type = self.Z
+        varsets = self._varsets
         number = _ZERO
-        #: the factors' keys -> [coefficient, factors]
+        #: the factors' keys -> [coefficient, factors, the rest's facts,
+        #: the new factor's facts]
         collected: dict[tuple, list] = {}
-        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
-            if term.is_Rational:
+        # only the factors that hold x (an intermediate over it, a sine of
+        # it, x itself): the others' derivatives are 0, and name nothing
+        for at_factor, j in by_variable.get(x, ()):
+            f, kind = order[at_factor]
+            if kind == _PLAN_Z:
+                d = memo.get(f)
+                if d is None:
+                    # _pd_new of a canonical intermediate of this book
+                    d = memo[f] = self.partial(f, j)
+            elif kind == _PLAN_SINE:
+                d = memo.get(f)
+                if d is None:
+                    d = self._pd_new(f, x, memo, None, None)
+            else:
+                d = one
+            if d is _ZERO:
                 continue
-            c, factors = one, (term,)
-            if term.is_Mul:
-                factors = term.args
-                if factors[0].is_Rational:
-                    c, factors = factors[0], factors[1:]
-            keys = [key_of(f) for f in factors]
-            if None in keys:
-                return None
-            for i, f in enumerate(factors):
-                if type(f) is z_type or type(f) in _SINE_COSINE:
-                    d = memo.get(f)
-                    if d is None:
-                        d = self._pd_new(f, x, memo, None, None)
-                    if d is _ZERO:
-                        continue
-                elif _is_variable_x(f, x):
-                    d = one
-                else:
-                    continue
+            if d.is_Rational:
                 n, new = d, None
-                if not d.is_Rational:
-                    n, new = one, d
-                    if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
-                        n, new = d.args
-                rest_keys = keys[:i] + keys[i + 1 :]
-                rest = factors[:i] + factors[i + 1 :]
+            else:
+                n, new = one, d
+                if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
+                    n, new = d.args
+                new_key = key_of(new)
+                if new_key is None:
+                    return None
+                if type(new) is z_type:
+                    facts = (varsets[new.args[0].p], None, None)
+                elif type(new) in _SINE_COSINE:
+                    facts = (None, new.args[0], new)
+                else:
+                    facts = (None, new, None)
+            for c, rest, rest_keys, rest_facts in places[at_factor]:
                 if new is not None:
-                    new_key = key_of(new)
-                    if new_key is None:
-                        return None
                     at = bisect.bisect_left(rest_keys, new_key)
                     if at < len(rest_keys) and rest_keys[at] == new_key:
                         return None  # sympy makes a power
-                    rest_keys.insert(at, new_key)
+                    rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
                     rest = (*rest[:at], new, *rest[at:])
-                coeff = n if c is one else c if n is one else c * n
+                    entry = [n if c is one else c if n is one else c * n]
+                    entry += (rest, rest_facts, facts)
+                else:
+                    entry = [n if c is one else c if n is one else c * n]
+                    entry += (rest, rest_facts, None)
                 if not rest:
-                    number += coeff
+                    number += entry[0]
                     continue
-                entry = collected.setdefault(tuple(rest_keys), [coeff, rest])
-                if entry[1] is not rest:
-                    entry[0] += coeff
+                found = collected.setdefault(rest_keys, entry)
+                if found is not entry:
+                    found[0] += entry[0]
         keyed = []
-        for fkeys, (coeff, rest) in collected.items():
+        kept = []
+        for fkeys, entry in collected.items():
+            coeff, rest = entry[0], entry[1]
             if coeff is _ZERO:
                 continue
+            kept.append(entry)
             if coeff is one:
                 if len(rest) == 1:
                     keyed.append((fkeys[0], rest))
@@ -1942,37 +1968,122 @@ class Intermediates:
         # :meth:`_walk`: each product's arguments are met once (the terms
         # are distinct), and a sine's (its one argument, a variable) unless
         # it was met before; variables are recorded, a canonical
-        # intermediate brings its set of variables
+        # intermediate brings its set of variables (read off each rest's
+        # facts and the new factor's)
         size: int | float = 1 + len(terms)
-        found, among, shared, seen = set(), set(), set(), set()
-        varsets = self._varsets
-        for _, args in keyed:
-            if len(args) > 1:
-                size += len(args)
-            for f in args:
-                if type(f) is z_type:
-                    shared.add(varsets[f.args[0].p])
-                elif type(f) in _SINE_COSINE:
-                    if f in seen:
-                        size = math.inf
-                    seen.add(f)
-                    size += 1
-                    found.add(f.args[0])
-                elif not f.is_Rational:
-                    found.add(f)
-                    if type(f) is sp.Derivative:
-                        among.add(f)
-        short = all(
-            len(args) + sum(type(f) in _SINE_COSINE for f in args) < self.LIMIT
-            for _, args in keyed
-        )
+        found_vars, among, shared, seen = set(), set(), set(), set()
+        short = True
+        limit = self.LIMIT
+        for coeff, rest, rest_facts, facts in kept:
+            r_shared, r_found, r_among, r_sines = rest_facts
+            shared |= r_shared
+            found_vars |= r_found
+            among |= r_among
+            sines = len(r_sines)
+            for f in r_sines:
+                if f in seen:
+                    size = math.inf
+                seen.add(f)
+            if facts is not None:
+                varset, variable, sine = facts
+                if varset is not None:
+                    shared.add(varset)
+                else:
+                    found_vars.add(variable)
+                    if sine is not None:
+                        sines += 1
+                        if sine in seen:
+                            size = math.inf
+                        seen.add(sine)
+                    elif type(variable) is sp.Derivative:
+                        among.add(variable)
+            n = len(rest) if coeff is one else len(rest) + 1  # its arguments
+            if n > 1:
+                size += n
+            size += sines
+            if n + sines >= limit:
+                short = False
         return d, (
-            *self._met(found, among, shared),
+            *self._met(found_vars, among, shared),
             [],
             size,
             self._products_sign(keyed, number),
             short,
         )
+
+    def _products_plan(self, e: Any) -> tuple[tuple, tuple] | None:
+        """What :meth:`_products_pd` needs of the sum of products ``e``
+        whatever the variable (kept per definition): ``(order, places,
+        by_variable)``.  ``order``: the distinct factors, in the order of
+        :meth:`_pd`'s walk, each with its kind (a canonical intermediate, a
+        sine or cosine, or another plain factor); ``places``: for each, its
+        places in the terms, as the term's rational coefficient, the other
+        factors and their tuples (:meth:`_plain_key`), and what
+        :meth:`_walk` finds in those (:meth:`_rest_facts`);
+        ``by_variable``: each variable -> the factors that hold it (their
+        indices in ``order``, ascending, each with the variable's place
+        among an intermediate's arguments, :meth:`position`): the others'
+        derivatives by it are 0.  None when a factor has no tuple."""
+        one = sp.S.One
+        key_of = self._plain_key
+        z_type = self.Z
+        index: dict[Any, int] = {}
+        order: list = []
+        places: list[list] = []
+        by_variable: dict[Any, list] = {}
+        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
+            if term.is_Rational:
+                continue
+            c, factors = one, (term,)
+            if term.is_Mul:
+                factors = term.args
+                if factors[0].is_Rational:
+                    c, factors = factors[0], factors[1:]
+            keys = tuple([key_of(f) for f in factors])
+            if None in keys:
+                return None
+            for i, f in enumerate(factors):
+                at = index.get(f)
+                if at is None:
+                    at = index[f] = len(order)
+                    places.append([])
+                    if type(f) is z_type:
+                        # (each variable at its first place: position)
+                        kind = _PLAN_Z
+                        for j, a in enumerate(f.args[1:]):
+                            held = by_variable.setdefault(a, [])
+                            if not held or held[-1][0] != at:
+                                held.append((at, j))
+                    else:
+                        kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
+                        a = f.args[0] if kind == _PLAN_SINE else f
+                        by_variable.setdefault(a, []).append((at, None))
+                    order.append((f, kind))
+                rest = factors[:i] + factors[i + 1 :]
+                rest_keys = keys[:i] + keys[i + 1 :]
+                places[at].append((c, rest, rest_keys, self._rest_facts(rest)))
+        return tuple(order), tuple(map(tuple, places)), by_variable
+
+    def _rest_facts(self, rest: tuple) -> tuple:
+        """What :meth:`_walk` finds in the plain factors ``rest`` (no
+        number among them), for :meth:`_products_plan`: the sets of
+        variables of the intermediates, the variables (a sine's or
+        cosine's argument), the derivatives among them, the sines and
+        cosines."""
+        z_type = self.Z
+        varsets = self._varsets
+        shared, found, among, sines = set(), set(), set(), []
+        for f in rest:
+            if type(f) is z_type:
+                shared.add(varsets[f.args[0].p])
+            elif type(f) in _SINE_COSINE:
+                sines.append(f)
+                found.add(f.args[0])
+            else:
+                found.add(f)
+                if type(f) is sp.Derivative:
+                    among.add(f)
+        return frozenset(shared), frozenset(found), frozenset(among), tuple(sines)
 
     def _products_sign(self, keyed: list, number: Any) -> bool | None:
         """:func:`minus_first` of a sum of :meth:`_products_pd`'s
