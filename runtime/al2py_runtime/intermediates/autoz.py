@@ -1146,6 +1146,10 @@ class Intermediates:
         self._partials: dict[tuple[int, int], Any] = {}
         #: definition -> what :meth:`_products_pd` needs of it (or None)
         self._plans: dict[Any, tuple | None] = {}
+        #: variable -> a number of its own, and an intermediate's set of
+        #: variables -> their places by their numbers (:meth:`_variable_places`)
+        self._ids: dict[Any, int] = {}
+        self._varset_ids: dict[frozenset, dict[int, int]] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
         #: variable -> (expression -> partial derivative by it): the answer
         #: depends only on the expression (the intermediates' partials are
@@ -1884,7 +1888,7 @@ class Intermediates:
             plan = self._plans[e] = self._products_plan(e)
         if plan is None:
             return None
-        order, places, by_variable = plan
+        order, places = plan
         one = sp.S.One
         key_of = self._plain_key
         z_type = self.Z
@@ -1895,8 +1899,11 @@ class Intermediates:
         collected: dict[tuple, list] = {}
         # only the factors that hold x (an intermediate over it, a sine of
         # it, x itself): the others' derivatives are 0, and name nothing
-        for at_factor, j in by_variable.get(x, ()):
-            f, kind = order[at_factor]
+        xi = self._ids.get(x)
+        for at_factor, (f, kind, held) in enumerate(order):
+            j = held.get(xi)
+            if j is None:
+                continue
             if kind == _PLAN_Z:
                 d = memo.get(f)
                 if d is None:
@@ -2013,24 +2020,24 @@ class Intermediates:
 
     def _products_plan(self, e: Any) -> tuple[tuple, tuple] | None:
         """What :meth:`_products_pd` needs of the sum of products ``e``
-        whatever the variable (kept per definition): ``(order, places,
-        by_variable)``.  ``order``: the distinct factors, in the order of
-        :meth:`_pd`'s walk, each with its kind (a canonical intermediate, a
-        sine or cosine, or another plain factor); ``places``: for each, its
-        places in the terms, as the term's rational coefficient, the other
-        factors and their tuples (:meth:`_plain_key`), and what
-        :meth:`_walk` finds in those (:meth:`_rest_facts`);
-        ``by_variable``: each variable -> the factors that hold it (their
-        indices in ``order``, ascending, each with the variable's place
-        among an intermediate's arguments, :meth:`position`): the others'
-        derivatives by it are 0.  None when a factor has no tuple."""
+        whatever the variable (kept per definition): ``(order, places)``.
+        ``order``: the distinct factors, in the order of :meth:`_pd`'s
+        walk, each with its kind (a canonical intermediate, a sine or
+        cosine, or another plain factor) and the numbers (:attr:`_ids`) of
+        the variables it holds, each with its place among an
+        intermediate's arguments (:meth:`position`; -1 for another
+        factor): its derivative by another variable is 0.  ``places``: for
+        each factor, its places in the terms, as the term's rational
+        coefficient, the other factors and their tuples
+        (:meth:`_plain_key`), and what :meth:`_walk` finds in those
+        (:meth:`_rest_facts`).  None when a factor has no tuple."""
         one = sp.S.One
         key_of = self._plain_key
         z_type = self.Z
+        ids = self._ids
         index: dict[Any, int] = {}
         order: list = []
         places: list[list] = []
-        by_variable: dict[Any, list] = {}
         for term in e.args if e.is_Add else (e,):  # (a product: its one term)
             if term.is_Rational:
                 continue
@@ -2048,21 +2055,29 @@ class Intermediates:
                     at = index[f] = len(order)
                     places.append([])
                     if type(f) is z_type:
-                        # (each variable at its first place: position)
-                        kind = _PLAN_Z
-                        for j, a in enumerate(f.args[1:]):
-                            held = by_variable.setdefault(a, [])
-                            if not held or held[-1][0] != at:
-                                held.append((at, j))
+                        kind, held = _PLAN_Z, self._variable_places(f)
                     else:
                         kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
                         a = f.args[0] if kind == _PLAN_SINE else f
-                        by_variable.setdefault(a, []).append((at, None))
-                    order.append((f, kind))
+                        held = {ids.setdefault(a, len(ids)): -1}
+                    order.append((f, kind, held))
                 rest = factors[:i] + factors[i + 1 :]
                 rest_keys = keys[:i] + keys[i + 1 :]
                 places[at].append((c, rest, rest_keys, self._rest_facts(rest)))
-        return tuple(order), tuple(map(tuple, places)), by_variable
+        return tuple(order), tuple(map(tuple, places))
+
+    def _variable_places(self, z: Intermediate) -> dict[int, int]:
+        """The places of the canonical intermediate ``z``'s variables among
+        its arguments (:meth:`position`), by the variables' numbers
+        (:attr:`_ids`): kept per set of variables (many intermediates share
+        one), so that a variable is looked up by its number."""
+        varset = self._varsets[z.args[0].p]
+        found = self._varset_ids.get(varset)
+        if found is None:
+            ids = self._ids
+            found = {ids.setdefault(a, len(ids)): j for j, a in enumerate(z.args[1:])}
+            self._varset_ids[varset] = found
+        return found
 
     def _rest_facts(self, rest: tuple) -> tuple:
         """What :meth:`_walk` finds in the plain factors ``rest`` (no
