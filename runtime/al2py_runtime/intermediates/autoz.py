@@ -386,12 +386,69 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
         if len(varying) == 1:
             base = varying[0]
         else:
-            base = _least_intermediate(varying)
-            if base is None:
-                base = min(varying, key=key)
+            base = _least_generator(varying, key)
         top = max(cpart.get(base, 0) for _, cpart in terms)
         terms = [t for t in terms if t[1].get(base, 0) == top]
     return terms[0][0]
+
+
+def _least_generator(varying: list, key: Callable[[Any], Any]) -> Any:
+    """``min(varying, key=key)`` for :func:`_first_term`'s generators, where
+    ``key`` orders as ``default_sort_key``.  That key starts with the
+    class's key (``Expr.sort_key``; a power's: its base's class), so the
+    class keys decide first, and only the generators of the least class
+    key are compared further (intermediates by their numbers,
+    :func:`_least_intermediate`, else by ``key``): a sum's key, long to
+    make, is made only against another sum.  The first of equal ones
+    stays first, as with ``min``."""
+    firsts = []
+    for b in varying:
+        first = _class_first(b)
+        if first is None:
+            found = _least_intermediate(varying)
+            return min(varying, key=key) if found is None else found
+        firsts.append(first)
+    least = min(firsts)
+    if firsts.count(least) == 1:
+        return varying[firsts.index(least)]
+    tied = [b for b, first in zip(varying, firsts, strict=True) if first == least]
+    found = _least_intermediate(tied)
+    return min(tied, key=key) if found is None else found
+
+
+#: the generators whose ``sort_key`` starts with their class's
+#: ``class_key`` (or, for a power of one, its base's)
+_CLASS_FIRST = (
+    sp.Add,
+    sp.Symbol,
+    Intermediate,
+    AppliedUndef,
+    sp.Derivative,
+    sp.sin,
+    sp.cos,
+)
+#: a class -> its class_key, for the classes above that are not functions
+#: of time (their class's hash is made of its key)
+_CLASS_KEYS: dict[type, Any] = {}
+
+
+def _class_first(b: Any) -> Any:
+    """The first part of ``default_sort_key(b)`` for a generator of
+    :func:`_first_term`: its class's key, a power's base's; None for a
+    generator of another kind."""
+    if b.is_Pow:
+        b = b.base
+        if b is sp.S.Exp1:
+            return None
+    if not isinstance(b, _CLASS_FIRST):
+        return None
+    kind = type(b)
+    if isinstance(b, AppliedUndef):
+        return kind.class_key()
+    found = _CLASS_KEYS.get(kind)
+    if found is None:
+        found = _CLASS_KEYS[kind] = kind.class_key()
+    return found
 
 
 def _least_intermediate(bases: list) -> Any:
