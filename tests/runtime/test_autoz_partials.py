@@ -237,3 +237,85 @@ def test_the_factors_tuples_order_as_compare():
         sp.Symbol("A", commutative=False),
     ]:
         assert book._plain_key(bad) is None
+
+
+def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
+    """A book as :func:`_build` makes, whose leaves also give partials that
+    the shortcut cannot place: ``q1*L**2`` (a power, by ``q1``) and
+    ``L*M*q3`` against a factor ``M`` (a square of ``M``, by ``L``); and
+    sums with factors that hold none of the variables asked (skipped)."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    if not shortcut:
+        book._products_pd = lambda e, x, memo: None  # the long way
+    sums = [q1 * L**2 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
+    leaves = [book.name(e) for e in sums] + [M * L, K]
+    zs: list = []
+    for _ in range(60):
+        pieces = leaves if len(zs) < 6 else zs[-20:] + [L, M, K, sp.cos(q1)]
+        terms = []
+        for _ in range(rng.randint(2, 6)):
+            factors = rng.sample(pieces, rng.randint(1, 3))
+            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
+        z = book.name(sp.Add(*terms))
+        if not isinstance(z, book.Z):
+            z = -z
+        if isinstance(z, book.Z):
+            zs.append(z)
+    found = [book.derivative(z, x) for z in zs[-25:] for x in [q1, q2, q3, L, M, K]]
+    return book, found
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_declined_shortcut_leaves_the_long_ways_numbers(seed):
+    """Where the shortcut declines after taking some factors' partials (a
+    derivative that is a power, or squares a factor), the long way takes
+    the rest in the same order: the same intermediates, the same numbers."""
+    declined = []
+    real = Intermediates._products_pd
+
+    def counted(self, e, x, memo):
+        got = real(self, e, x, memo)
+        if got is None and self._plans.get(e) is not None:
+            declined.append(e)
+        return got
+
+    Intermediates._products_pd = counted
+    try:
+        fast = _build_declining(seed)
+    finally:
+        Intermediates._products_pd = real
+    assert len(declined) > 5
+    assert _written(fast) == _written(_build_declining(seed, shortcut=False))
+
+
+def test_the_check_finds_partials_taken_in_another_order(monkeypatch):
+    """A plan whose factors' partials are taken in the reverse order (so
+    the intermediates named on the way get other numbers) is told apart."""
+    real = Intermediates._products_plan
+
+    def reversed_plan(self, e):
+        plan = real(self, e)
+        return None if plan is None else (plan[0][::-1], plan[1][::-1])
+
+    monkeypatch.setattr(Intermediates, "_products_plan", reversed_plan)
+    fast = [_build(seed) for seed in range(2)]
+    monkeypatch.undo()
+    slow = [_build(seed, shortcut=False) for seed in range(2)]
+    assert any(_written(a) != _written(b) for a, b in zip(fast, slow, strict=True))
+
+
+def test_the_check_finds_a_wrong_place_of_a_variable(monkeypatch):
+    """An intermediate's partial by the variable next to the one asked is
+    told apart (the places of the variables, :meth:`_variable_places`)."""
+    real = Intermediates._variable_places
+
+    def shifted(self, z):
+        places = real(self, z)
+        n = len(places)
+        return {v: (j + 1) % n for v, j in places.items()}
+
+    monkeypatch.setattr(Intermediates, "_variable_places", shifted)
+    fast = _build(1)
+    monkeypatch.undo()
+    assert _written(fast) != _written(_build(1, shortcut=False))
