@@ -348,3 +348,39 @@ def test_non_utf8_input_file_is_accepted(tmp_path, capsys, monkeypatch):
         compile((tmp_path / "lat.py").read_text(), "lat.py", "exec")
     else:
         assert ERROR_LINE.match(err)
+
+
+# ------------------------------------------------------------ interruption
+
+
+class _InterruptedImport:
+    """A finder that interrupts the import of one module, as a Ctrl-C does
+    while Python imports it."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def find_spec(self, fullname, path=None, target=None):
+        if fullname == self.name:
+            raise KeyboardInterrupt
+        return None
+
+
+@pytest.mark.parametrize(
+    "argv, module",
+    [
+        (["code", "tutor6.al"], "al2py.codegen_c"),
+        (["check", "models/"], "al2py.batch"),
+    ],
+)
+def test_an_interrupt_while_the_command_imports_ends_it_quietly(
+    argv, module, capsys, monkeypatch
+):
+    """Ctrl-C while the command's own modules load (before its work starts)
+    gives the same message and status as one during its work, never a
+    traceback."""
+    monkeypatch.delitem(sys.modules, module, raising=False)
+    monkeypatch.delattr(al2py, module.rsplit(".", 1)[1], raising=False)
+    monkeypatch.setattr(sys, "meta_path", [_InterruptedImport(module), *sys.meta_path])
+    status, out, err = run_main(argv, capsys, monkeypatch)
+    assert (status, out, err) == (130, "", "al2py: interrupted\n")

@@ -188,7 +188,19 @@ def _convert_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     """The ``al2py`` command; without ``argv`` (the ``al2py`` script,
     ``python -m al2py``) the process's own command line, which ``al2py
-    code`` runs alone (see :func:`.codegen_c.run_alone`)."""
+    code`` runs alone (see :func:`.codegen_c.run_alone`).
+
+    A Ctrl-C while the command's own modules are still being imported (or
+    its arguments read) ends it as one during its work does."""
+    try:
+        return _dispatch(argv)
+    except KeyboardInterrupt:
+        print("al2py: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _dispatch(argv: list[str] | None) -> int:
+    """:func:`main`, by subcommand."""
     console = argv is None
     if argv is None:
         argv = sys.argv[1:]
