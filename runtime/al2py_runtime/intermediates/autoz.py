@@ -740,7 +740,12 @@ _END = ((math.inf,),)
 _SINE_COSINE = frozenset([sp.sin, sp.cos])
 
 #: the kinds of factors of :meth:`Intermediates._products_plan`
-_PLAN_Z, _PLAN_SINE, _PLAN_OTHER = range(3)
+_PLAN_Z, _PLAN_SINE, _PLAN_OTHER, _PLAN_SUM = range(4)
+#: a sum's place in sympy's order of classes
+_ADD_PLACE = _class_place("Add")
+#: the walk facts of a sum (:meth:`Intermediates._products_pd` leaves its
+#: derivative to be walked when it is named)
+_SUM_FACTS = object()
 
 
 def _plain_factor_key(f: Any) -> tuple | None:
@@ -1923,7 +1928,11 @@ class Intermediates:
         what :meth:`_walk` finds in the derivative when it is a sum (else
         ``()``): ``(derivative, walked)``.  None when ``e`` is not such a
         sum, or a factor's derivative is not a rational number times one
-        such factor, or would square a factor.
+        such factor, or would square a factor, or leave a sum alone with a
+        number.  A factor may also be a sum of such products
+        (:meth:`_sum_key`; its derivative is taken by :meth:`_pd_new`):
+        a derivative with a sum among its factors comes with ``()``, to be
+        walked when it is named, as the long way names it.
 
         The chain rule's products are written as their factors' tuples
         (:meth:`_plain_key`: tuples that order as ``Basic.compare`` orders
@@ -1958,15 +1967,16 @@ class Intermediates:
         # it, x itself): the others' derivatives are 0, and name nothing
         xi = self._ids.get(x)
         for at_factor, (f, kind, held) in enumerate(order):
-            j = held.get(xi)
-            if j is None:
-                continue
+            if held is not None:
+                j = held.get(xi)
+                if j is None:
+                    continue
             if kind == _PLAN_Z:
                 d = memo.get(f)
                 if d is None:
                     # _pd_new of a canonical intermediate of this book
                     d = memo[f] = self.partial(f, j)
-            elif kind == _PLAN_SINE:
+            elif kind == _PLAN_SINE or kind == _PLAN_SUM:
                 d = memo.get(f)
                 if d is None:
                     d = self._pd_new(f, x, memo, None, None)
@@ -1987,6 +1997,8 @@ class Intermediates:
                     facts = (varsets[new.args[0].p], None, None)
                 elif type(new) in _SINE_COSINE:
                     facts = (None, new.args[0], new)
+                elif new.is_Add:
+                    facts = _SUM_FACTS
                 else:
                     facts = (None, new, None)
             for c, rest, rest_keys, rest_facts in places[at_factor]:
@@ -2004,6 +2016,10 @@ class Intermediates:
                 if not rest:
                     number += entry[0]
                     continue
+                if len(rest) == 1 and rest[0].is_Add:
+                    # a sum alone, times a number: sympy distributes it
+                    # (or adds its terms to the sum)
+                    return None
                 found = collected.setdefault(rest_keys, entry)
                 if found is not entry:
                     found[0] += entry[0]
@@ -2039,6 +2055,8 @@ class Intermediates:
         short = True
         limit = self.LIMIT
         for coeff, rest, rest_facts, facts in kept:
+            if rest_facts is None or facts is _SUM_FACTS:
+                return d, ()  # a sum among the factors: walked when named
             r_shared, r_found, r_among, r_sines = rest_facts
             shared |= r_shared
             found_vars |= r_found
@@ -2113,6 +2131,10 @@ class Intermediates:
                     places.append([])
                     if type(f) is z_type:
                         kind, held = _PLAN_Z, self._variable_places(f)
+                    elif f.is_Add:
+                        # (its derivative is taken by every variable: 0
+                        # when it holds none, naming nothing)
+                        kind, held = _PLAN_SUM, None
                     else:
                         kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
                         a = f.args[0] if kind == _PLAN_SINE else f
@@ -2136,16 +2158,19 @@ class Intermediates:
             self._varset_ids[varset] = found
         return found
 
-    def _rest_facts(self, rest: tuple) -> tuple:
+    def _rest_facts(self, rest: tuple) -> tuple | None:
         """What :meth:`_walk` finds in the plain factors ``rest`` (no
         number among them), for :meth:`_products_plan`: the sets of
         variables of the intermediates, the variables (a sine's or
         cosine's argument), the derivatives among them, the sines and
-        cosines."""
+        cosines; None when a sum is among them (a derivative with it is
+        walked when it is named)."""
         z_type = self.Z
         varsets = self._varsets
         shared, found, among, sines = set(), set(), set(), []
         for f in rest:
+            if f.is_Add:
+                return None  # (walked when the derivative is named)
             if type(f) is z_type:
                 shared.add(varsets[f.args[0].p])
             elif type(f) in _SINE_COSINE:
@@ -2222,8 +2247,41 @@ class Intermediates:
             return found
         found = self._plain_keys.get(f)
         if found is None and f not in self._plain_keys:
-            found = self._plain_keys[f] = _plain_factor_key(f)
+            if f.is_Add:
+                found = self._sum_key(f)
+            else:
+                found = _plain_factor_key(f)
+            self._plain_keys[f] = found
         return found
+
+    def _sum_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a sum: its class's place, its count of
+        terms and their tuples (a product's: the class's place, its count
+        of arguments and theirs, a rational coefficient's by
+        :func:`_plain_atom_key`), as :func:`_compare` decides between two
+        sums (their hashable content is their terms); None when a part
+        has no tuple."""
+        if not f.is_commutative:
+            return None
+        keys = []
+        for term in f.args:
+            if term.is_Rational:
+                keys.append(_plain_atom_key(term))
+                continue
+            if not term.is_Mul:
+                key = self._plain_key(term)
+                if key is None:
+                    return None
+                keys.append(key)
+                continue
+            factors = []
+            for a in term.args:
+                key = _plain_atom_key(a) if a.is_Rational else self._plain_key(a)
+                if key is None:
+                    return None
+                factors.append(key)
+            keys.append((_MUL_PLACE, len(factors), *factors))
+        return (_ADD_PLACE, len(keys), *keys)
 
     def position(self, z: Intermediate, x: Any) -> int | None:
         """The first ``j`` with ``z.args[j + 1] == x`` (``None``: none), by a
