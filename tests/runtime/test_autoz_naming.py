@@ -184,15 +184,37 @@ def test_the_first_term_is_sympys(pool):
     assert found > 500
 
 
-def test_the_check_finds_a_wrong_first_term(pool):
-    """Deciding by the last generator instead of the first is told apart."""
+def test_the_check_finds_a_wrong_first_term(pool, monkeypatch):
+    """Deciding by the last generator instead of the first is told apart
+    (the class keys, which decide first, and the sort keys reversed)."""
     book, sums = _sums(pool, 100)
+    real = autoz._class_first
+    monkeypatch.setattr(autoz, "_class_first", lambda b: _reversed(real(b)))
 
     wrong = 0
     for e in sums:
         got = autoz._first_term(e.args, lambda x: _Reversed(book._sort_key(x)))
         wrong += got is not None and got != e.as_ordered_terms()[0]
     assert wrong > 10
+
+
+def test_the_least_generator_is_mins(pool):
+    """``_least_generator`` (class keys first) picks what ``min`` by the
+    whole sort key picks, the first of equal ones included."""
+    rng, book, parts, _ = pool
+    D = sp.Dummy("L")
+    bases = [*parts[:30], q1, u1, L, M, D, sp.Symbol("L", positive=True), L + M]
+    bases += [sp.sin(q2), sp.cos(q1), L + q3, parts[3] + parts[4], q1.diff(t)]
+    bases += [sp.sqrt(L + M), sp.sqrt(parts[5]), parts[6] ** sp.Rational(1, 3)]
+    bases += [sp.exp(q1), u1 ** sp.Rational(1, 2)]
+    for _ in range(3000):
+        varying = rng.sample(bases, rng.randint(2, 7))
+        for key in (book._sort_key, sp.default_sort_key):
+            assert autoz._least_generator(varying, key) is min(varying, key=key)
+
+
+def _reversed(key):
+    return None if key is None else _Reversed(key)
 
 
 class _Reversed:
@@ -203,6 +225,11 @@ class _Reversed:
 
     def __lt__(self, other):
         return other.key < self.key
+
+    def __eq__(self, other):
+        return isinstance(other, _Reversed) and other.key == self.key
+
+    __hash__ = None
 
 
 def test_an_intermediates_commutativity_is_sympys(pool):

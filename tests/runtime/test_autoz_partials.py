@@ -121,8 +121,10 @@ def _checked(book: Intermediates) -> tuple[int, int]:
                 if walked[5]:
                     assert book._split(d) is d
                     short += 1
-            else:
-                assert not d.is_Add
+            elif d.is_Add:  # a sum among its factors: walked when named
+                assert any(
+                    f.is_Add for term in d.args for f in sp.Mul.make_args(term)
+                ), d
     assert signs[True] > 10 and signs[False] > 10 and short > 100
     return formed, sums
 
@@ -217,6 +219,10 @@ def test_the_factors_tuples_order_as_compare():
     plain = [L, M, K, P, x, sp.Symbol("x"), q1, q2, u1, f(t), f(L), q1.diff(t)]
     plain += [q2.diff(t), u1.diff(t, 2), sp.sin(q1), sp.cos(q1), sp.sin(L)]
     plain += [sp.cos(P), sp.sin(x), sp.cos(f(t)), *zs[:40]]
+    # sums of such factors and of products of them (a factor of a product)
+    plain += [L + M, L - M, q1 + L, 2 * L + M * q1, zs[0] + zs[1], zs[1] + zs[2]]
+    plain += [zs[2] * L - 3 * zs[5], zs[2] * L - 3 * zs[6], zs[3] + 1, zs[3] - 1]
+    plain += [sp.sin(q1) + zs[7] * zs[8] * M, sp.Rational(1, 2) * zs[4] + K + q2]
     numbers = [sp.Integer(2), sp.Integer(-1), sp.Rational(1, 2), sp.Rational(-3, 4)]
     keys = {e: book._plain_key(e) for e in plain}
     assert None not in keys.values()
@@ -233,7 +239,168 @@ def test_the_factors_tuples_order_as_compare():
         sp.sin(q1 + L),
         q1**2,
         sp.exp(q1),
-        L + M,
+        L**2 + M,
+        zs[0] * sp.cos(q1 + L) + 1,
         sp.Symbol("A", commutative=False),
     ]:
         assert book._plain_key(bad) is None
+
+
+def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
+    """A book as :func:`_build` makes, whose leaves also give partials that
+    the shortcut cannot place: ``q1*L**2`` (a power, by ``q1``) and
+    ``L*M*q3`` against a factor ``M`` (a square of ``M``, by ``L``); and
+    sums with factors that hold none of the variables asked (skipped)."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    if not shortcut:
+        book._products_pd = lambda e, x, memo: None  # the long way
+    sums = [q1 * L**2 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
+    leaves = [book.name(e) for e in sums] + [M * L, K]
+    zs: list = []
+    for _ in range(60):
+        pieces = leaves if len(zs) < 6 else zs[-20:] + [L, M, K, sp.cos(q1)]
+        terms = []
+        for _ in range(rng.randint(2, 6)):
+            factors = rng.sample(pieces, rng.randint(1, 3))
+            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
+        z = book.name(sp.Add(*terms))
+        if not isinstance(z, book.Z):
+            z = -z
+        if isinstance(z, book.Z):
+            zs.append(z)
+    found = [book.derivative(z, x) for z in zs[-25:] for x in [q1, q2, q3, L, M, K]]
+    return book, found
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_declined_shortcut_leaves_the_long_ways_numbers(seed):
+    """Where the shortcut declines after taking some factors' partials (a
+    derivative that is a power, or squares a factor), the long way takes
+    the rest in the same order: the same intermediates, the same numbers."""
+    declined = []
+    real = Intermediates._products_pd
+
+    def counted(self, e, x, memo):
+        got = real(self, e, x, memo)
+        if got is None and self._plans.get(e) is not None:
+            declined.append(e)
+        return got
+
+    Intermediates._products_pd = counted
+    try:
+        fast = _build_declining(seed)
+    finally:
+        Intermediates._products_pd = real
+    assert len(declined) > 5
+    assert _written(fast) == _written(_build_declining(seed, shortcut=False))
+
+
+def test_the_check_finds_partials_taken_in_another_order(monkeypatch):
+    """A plan whose factors' partials are taken in the reverse order (so
+    the intermediates named on the way get other numbers) is told apart."""
+    real = Intermediates._products_plan
+
+    def reversed_plan(self, e):
+        plan = real(self, e)
+        return None if plan is None else (plan[0][::-1], plan[1][::-1])
+
+    monkeypatch.setattr(Intermediates, "_products_plan", reversed_plan)
+    fast = [_build(seed) for seed in range(2)]
+    monkeypatch.undo()
+    slow = [_build(seed, shortcut=False) for seed in range(2)]
+    assert any(_written(a) != _written(b) for a, b in zip(fast, slow, strict=True))
+
+
+def test_the_check_finds_a_wrong_place_of_a_variable(monkeypatch):
+    """An intermediate's partial by the variable next to the one asked is
+    told apart (the places of the variables, :meth:`_variable_places`)."""
+    real = Intermediates._variable_places
+
+    def shifted(self, z):
+        places = real(self, z)
+        n = len(places)
+        return {v: (j + 1) % n for v, j in places.items()}
+
+    monkeypatch.setattr(Intermediates, "_variable_places", shifted)
+    fast = _build(1)
+    monkeypatch.undo()
+    assert _written(fast) != _written(_build(1, shortcut=False))
+
+
+def _build_sums(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
+    """A book as :func:`_build` makes, whose products also have sums among
+    their factors (of intermediates, symbols and products of them), some
+    alone with a number (which sympy distributes)."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    if not shortcut:
+        book._products_pd = lambda e, x, memo: None  # the long way
+    leaves = [q1 * L + u1, sp.sin(q2) * K + q3, sp.cos(q3) * M + q1 * q2, u1 * P]
+    zs: list = []
+    for _ in range(45):
+        pieces = leaves if len(zs) < 6 else zs[-20:] + [L, M, K, sp.sin(q1)]
+        terms = []
+        for _ in range(rng.randint(2, 5)):
+            factors = rng.sample(pieces, rng.randint(1, 3))
+            if rng.random() < 0.4 and len(zs) > 6:
+                a, b = rng.sample(pieces, 2)
+                factors.append(a + rng.choice(COEFFICIENTS) * b)
+            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
+        z = book.name(sp.Add(*terms))
+        if not isinstance(z, book.Z):
+            z = -z
+        if isinstance(z, book.Z):
+            zs.append(z)
+    found = [book.derivative(z, x) for z in zs[-12:] for x in VARIABLES]
+    return book, found
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_sums_among_the_factors_name_what_the_long_way_names(seed):
+    """Products with sums among their factors, by the shortcut and the
+    long way: the same intermediates, numbers and derivatives; and each
+    derivative the shortcut forms is ``_pd``'s."""
+    with_sums = []
+    real = Intermediates._products_pd
+
+    def counted(self, e, x, memo):
+        got = real(self, e, x, memo)
+        if got is not None and got[0].is_Add and not got[1]:
+            with_sums.append(e)
+        return got
+
+    Intermediates._products_pd = counted
+    try:
+        fast = _build_sums(seed)
+    finally:
+        Intermediates._products_pd = real
+    assert len(with_sums) > 20
+    assert _written(fast) == _written(_build_sums(seed, shortcut=False))
+    book = fast[0]
+    mine: dict = {}
+    theirs: dict = {}
+    for k in range(1, len(book) + 1):
+        variables, body = book.canonical(k)
+        for x in variables:
+            got = book._products_pd(body, x, mine.setdefault(x, {}))
+            if got is not None:
+                want = book._pd(body, x, theirs.setdefault(x, {}))
+                # (one book: == compares the arguments in their order)
+                assert got[0] == want, (body, x)
+
+
+def test_the_check_finds_a_wrong_order_among_sums(monkeypatch):
+    """Sums placed before the other factors of a product (sympy places them
+    after) are told apart (a sum's tuple, :meth:`_sum_key`)."""
+    real = Intermediates._sum_key
+
+    def wrong(self, f):
+        key = real(self, f)
+        return None if key is None else ((-key[0][0], ""), *key[1:])
+
+    monkeypatch.setattr(Intermediates, "_sum_key", wrong)
+    fast = [_build_sums(seed) for seed in range(3)]
+    monkeypatch.undo()
+    slow = [_build_sums(seed, shortcut=False) for seed in range(3)]
+    assert any(_written(a) != _written(b) for a, b in zip(fast, slow, strict=True))

@@ -386,12 +386,69 @@ def _first_term(args: Sequence[Any], key: Callable[[Any], Any]) -> Any:
         if len(varying) == 1:
             base = varying[0]
         else:
-            base = _least_intermediate(varying)
-            if base is None:
-                base = min(varying, key=key)
+            base = _least_generator(varying, key)
         top = max(cpart.get(base, 0) for _, cpart in terms)
         terms = [t for t in terms if t[1].get(base, 0) == top]
     return terms[0][0]
+
+
+def _least_generator(varying: list, key: Callable[[Any], Any]) -> Any:
+    """``min(varying, key=key)`` for :func:`_first_term`'s generators, where
+    ``key`` orders as ``default_sort_key``.  That key starts with the
+    class's key (``Expr.sort_key``; a power's: its base's class), so the
+    class keys decide first, and only the generators of the least class
+    key are compared further (intermediates by their numbers,
+    :func:`_least_intermediate`, else by ``key``): a sum's key, long to
+    make, is made only against another sum.  The first of equal ones
+    stays first, as with ``min``."""
+    firsts = []
+    for b in varying:
+        first = _class_first(b)
+        if first is None:
+            found = _least_intermediate(varying)
+            return min(varying, key=key) if found is None else found
+        firsts.append(first)
+    least = min(firsts)
+    if firsts.count(least) == 1:
+        return varying[firsts.index(least)]
+    tied = [b for b, first in zip(varying, firsts, strict=True) if first == least]
+    found = _least_intermediate(tied)
+    return min(tied, key=key) if found is None else found
+
+
+#: the generators whose ``sort_key`` starts with their class's
+#: ``class_key`` (or, for a power of one, its base's)
+_CLASS_FIRST = (
+    sp.Add,
+    sp.Symbol,
+    Intermediate,
+    AppliedUndef,
+    sp.Derivative,
+    sp.sin,
+    sp.cos,
+)
+#: a class -> its class_key, for the classes above that are not functions
+#: of time (their class's hash is made of its key)
+_CLASS_KEYS: dict[type, Any] = {}
+
+
+def _class_first(b: Any) -> Any:
+    """The first part of ``default_sort_key(b)`` for a generator of
+    :func:`_first_term`: its class's key, a power's base's; None for a
+    generator of another kind."""
+    if b.is_Pow:
+        b = b.base
+        if b is sp.S.Exp1:
+            return None
+    if not isinstance(b, _CLASS_FIRST):
+        return None
+    kind = type(b)
+    if isinstance(b, AppliedUndef):
+        return kind.class_key()
+    found = _CLASS_KEYS.get(kind)
+    if found is None:
+        found = _CLASS_KEYS[kind] = kind.class_key()
+    return found
 
 
 def _least_intermediate(bases: list) -> Any:
@@ -681,6 +738,14 @@ _END = ((math.inf,),)
 #: the functions whose values :meth:`Intermediates._products_pd` takes as
 #: factors (of a variable)
 _SINE_COSINE = frozenset([sp.sin, sp.cos])
+
+#: the kinds of factors of :meth:`Intermediates._products_plan`
+_PLAN_Z, _PLAN_SINE, _PLAN_OTHER, _PLAN_SUM = range(4)
+#: a sum's place in sympy's order of classes
+_ADD_PLACE = _class_place("Add")
+#: the walk facts of a sum (:meth:`Intermediates._products_pd` leaves its
+#: derivative to be walked when it is named)
+_SUM_FACTS = object()
 
 
 def _plain_factor_key(f: Any) -> tuple | None:
@@ -1141,6 +1206,12 @@ class Intermediates:
         self._labels: list[str] = [""]
         self._named: dict[Any, Any] = {}
         self._partials: dict[tuple[int, int], Any] = {}
+        #: definition -> what :meth:`_products_pd` needs of it (or None)
+        self._plans: dict[Any, tuple | None] = {}
+        #: variable -> a number of its own, and an intermediate's set of
+        #: variables -> their places by their numbers (:meth:`_variable_places`)
+        self._ids: dict[Any, int] = {}
+        self._varset_ids: dict[frozenset, dict[int, int]] = {}
         self._dt_memo: dict[Any, Any] = {}  # expression -> total_dt
         #: variable -> (expression -> partial derivative by it): the answer
         #: depends only on the expression (the intermediates' partials are
@@ -1904,74 +1975,109 @@ class Intermediates:
         canonical intermediates, symbols, ...; most definitions are), with
         what :meth:`_walk` finds in the derivative when it is a sum (else
         ``()``): ``(derivative, walked)``.  None when ``e`` is not such a
-        sum, or a factor's derivative is not a
-        rational number times one such factor, or would square a factor.
+        sum, or a factor's derivative is not a rational number times one
+        such factor, or would square a factor, or leave a sum alone with a
+        number.  A factor may also be a sum of such products
+        (:meth:`_sum_key`; its derivative is taken by :meth:`_pd_new`):
+        a derivative with a sum among its factors comes with ``()``, to be
+        walked when it is named, as the long way names it.
 
         The chain rule's products are written as their factors' tuples
         (:meth:`_plain_key`: tuples that order as ``Basic.compare`` orders
         these factors), like ones collected by them, and the terms ordered
         by their tuples; each product and the sum are then formed once, as
         :func:`product_with` and :func:`total` form them (no sum per
-        product, no comparison of sympy objects).  The factors' derivatives
-        are taken in the order of :meth:`_pd`'s walk, so that the
-        intermediates named on the way get the same numbers."""
+        product, no comparison of sympy objects).  What does not depend on
+        ``x`` (the terms' factors and tuples, each factor's rest and what
+        :meth:`_walk` finds in it) is found once per definition
+        (:meth:`_products_plan`): a definition is differentiated by each of
+        its variables.  The factors' derivatives are taken in the order of
+        :meth:`_pd`'s walk (each distinct factor at its first place), so
+        that the intermediates named on the way get the same numbers; when
+        the shortcut then declines, :meth:`_pd` finds them in ``memo``."""
         if not (e.is_Add or e.is_Mul) or not global_parameters.evaluate:
             return None
+        plan = self._plans.get(e, _UNKNOWN)
+        if plan is _UNKNOWN:
+            plan = self._plans[e] = self._products_plan(e)
+        if plan is None:
+            return None
+        order, places = plan
         one = sp.S.One
-        z_type = self.Z
         key_of = self._plain_key
+        z_type = self.Z
+        varsets = self._varsets
         number = _ZERO
-        #: the factors' keys -> [coefficient, factors]
+        #: the factors' keys -> [coefficient, factors, the rest's facts,
+        #: the new factor's facts]
         collected: dict[tuple, list] = {}
-        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
-            if term.is_Rational:
-                continue
-            c, factors = one, (term,)
-            if term.is_Mul:
-                factors = term.args
-                if factors[0].is_Rational:
-                    c, factors = factors[0], factors[1:]
-            keys = [key_of(f) for f in factors]
-            if None in keys:
-                return None
-            for i, f in enumerate(factors):
-                if type(f) is z_type or type(f) in _SINE_COSINE:
-                    d = memo.get(f)
-                    if d is None:
-                        d = self._pd_new(f, x, memo, None, None)
-                    if d is _ZERO:
-                        continue
-                elif _is_variable_x(f, x):
-                    d = one
-                else:
+        # only the factors that hold x (an intermediate over it, a sine of
+        # it, x itself): the others' derivatives are 0, and name nothing
+        xi = self._ids.get(x)
+        for at_factor, (f, kind, held) in enumerate(order):
+            if held is not None:
+                j = held.get(xi)
+                if j is None:
                     continue
+            if kind == _PLAN_Z:
+                d = memo.get(f)
+                if d is None:
+                    # _pd_new of a canonical intermediate of this book
+                    d = memo[f] = self.partial(f, j)
+            elif kind == _PLAN_SINE or kind == _PLAN_SUM:
+                d = memo.get(f)
+                if d is None:
+                    d = self._pd_new(f, x, memo, None, None)
+            else:
+                d = one
+            if d is _ZERO:
+                continue
+            if d.is_Rational:
                 n, new = d, None
-                if not d.is_Rational:
-                    n, new = one, d
-                    if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
-                        n, new = d.args
-                rest_keys = keys[:i] + keys[i + 1 :]
-                rest = factors[:i] + factors[i + 1 :]
+            else:
+                n, new = one, d
+                if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
+                    n, new = d.args
+                new_key = key_of(new)
+                if new_key is None:
+                    return None
+                if type(new) is z_type:
+                    facts = (varsets[new.args[0].p], None, None)
+                elif type(new) in _SINE_COSINE:
+                    facts = (None, new.args[0], new)
+                elif new.is_Add:
+                    facts = _SUM_FACTS
+                else:
+                    facts = (None, new, None)
+            for c, rest, rest_keys, rest_facts in places[at_factor]:
                 if new is not None:
-                    new_key = key_of(new)
-                    if new_key is None:
-                        return None
                     at = bisect.bisect_left(rest_keys, new_key)
                     if at < len(rest_keys) and rest_keys[at] == new_key:
                         return None  # sympy makes a power
-                    rest_keys.insert(at, new_key)
+                    rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
                     rest = (*rest[:at], new, *rest[at:])
-                coeff = n if c is one else c if n is one else c * n
+                    entry = [n if c is one else c if n is one else c * n]
+                    entry += (rest, rest_facts, facts)
+                else:
+                    entry = [n if c is one else c if n is one else c * n]
+                    entry += (rest, rest_facts, None)
                 if not rest:
-                    number += coeff
+                    number += entry[0]
                     continue
-                entry = collected.setdefault(tuple(rest_keys), [coeff, rest])
-                if entry[1] is not rest:
-                    entry[0] += coeff
+                if len(rest) == 1 and rest[0].is_Add:
+                    # a sum alone, times a number: sympy distributes it
+                    # (or adds its terms to the sum)
+                    return None
+                found = collected.setdefault(rest_keys, entry)
+                if found is not entry:
+                    found[0] += entry[0]
         keyed = []
-        for fkeys, (coeff, rest) in collected.items():
+        kept = []
+        for fkeys, entry in collected.items():
+            coeff, rest = entry[0], entry[1]
             if coeff is _ZERO:
                 continue
+            kept.append(entry)
             if coeff is one:
                 if len(rest) == 1:
                     keyed.append((fkeys[0], rest))
@@ -1990,37 +2096,139 @@ class Intermediates:
         # :meth:`_walk`: each product's arguments are met once (the terms
         # are distinct), and a sine's (its one argument, a variable) unless
         # it was met before; variables are recorded, a canonical
-        # intermediate brings its set of variables
+        # intermediate brings its set of variables (read off each rest's
+        # facts and the new factor's)
         size: int | float = 1 + len(terms)
-        found, among, shared, seen = set(), set(), set(), set()
-        varsets = self._varsets
-        for _, args in keyed:
-            if len(args) > 1:
-                size += len(args)
-            for f in args:
-                if type(f) is z_type:
-                    shared.add(varsets[f.args[0].p])
-                elif type(f) in _SINE_COSINE:
-                    if f in seen:
-                        size = math.inf
-                    seen.add(f)
-                    size += 1
-                    found.add(f.args[0])
-                elif not f.is_Rational:
-                    found.add(f)
-                    if type(f) is sp.Derivative:
-                        among.add(f)
-        short = all(
-            len(args) + sum(type(f) in _SINE_COSINE for f in args) < self.LIMIT
-            for _, args in keyed
-        )
+        found_vars, among, shared, seen = set(), set(), set(), set()
+        short = True
+        limit = self.LIMIT
+        for coeff, rest, rest_facts, facts in kept:
+            if rest_facts is None or facts is _SUM_FACTS:
+                return d, ()  # a sum among the factors: walked when named
+            r_shared, r_found, r_among, r_sines = rest_facts
+            shared |= r_shared
+            found_vars |= r_found
+            among |= r_among
+            sines = len(r_sines)
+            for f in r_sines:
+                if f in seen:
+                    size = math.inf
+                seen.add(f)
+            if facts is not None:
+                varset, variable, sine = facts
+                if varset is not None:
+                    shared.add(varset)
+                else:
+                    found_vars.add(variable)
+                    if sine is not None:
+                        sines += 1
+                        if sine in seen:
+                            size = math.inf
+                        seen.add(sine)
+                    elif type(variable) is sp.Derivative:
+                        among.add(variable)
+            n = len(rest) if coeff is one else len(rest) + 1  # its arguments
+            if n > 1:
+                size += n
+            size += sines
+            if n + sines >= limit:
+                short = False
         return d, (
-            *self._met(found, among, shared),
+            *self._met(found_vars, among, shared),
             [],
             size,
             self._products_sign(keyed, number),
             short,
         )
+
+    def _products_plan(self, e: Any) -> tuple[tuple, tuple] | None:
+        """What :meth:`_products_pd` needs of the sum of products ``e``
+        whatever the variable (kept per definition): ``(order, places)``.
+        ``order``: the distinct factors, in the order of :meth:`_pd`'s
+        walk, each with its kind (a canonical intermediate, a sine or
+        cosine, or another plain factor) and the numbers (:attr:`_ids`) of
+        the variables it holds, each with its place among an
+        intermediate's arguments (:meth:`position`; -1 for another
+        factor): its derivative by another variable is 0.  ``places``: for
+        each factor, its places in the terms, as the term's rational
+        coefficient, the other factors and their tuples
+        (:meth:`_plain_key`), and what :meth:`_walk` finds in those
+        (:meth:`_rest_facts`).  None when a factor has no tuple."""
+        one = sp.S.One
+        key_of = self._plain_key
+        z_type = self.Z
+        ids = self._ids
+        index: dict[Any, int] = {}
+        order: list = []
+        places: list[list] = []
+        for term in e.args if e.is_Add else (e,):  # (a product: its one term)
+            if term.is_Rational:
+                continue
+            c, factors = one, (term,)
+            if term.is_Mul:
+                factors = term.args
+                if factors[0].is_Rational:
+                    c, factors = factors[0], factors[1:]
+            keys = tuple([key_of(f) for f in factors])
+            if None in keys:
+                return None
+            for i, f in enumerate(factors):
+                at = index.get(f)
+                if at is None:
+                    at = index[f] = len(order)
+                    places.append([])
+                    if type(f) is z_type:
+                        kind, held = _PLAN_Z, self._variable_places(f)
+                    elif f.is_Add:
+                        # (its derivative is taken by every variable: 0
+                        # when it holds none, naming nothing)
+                        kind, held = _PLAN_SUM, None
+                    else:
+                        kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
+                        a = f.args[0] if kind == _PLAN_SINE else f
+                        held = {ids.setdefault(a, len(ids)): -1}
+                    order.append((f, kind, held))
+                rest = factors[:i] + factors[i + 1 :]
+                rest_keys = keys[:i] + keys[i + 1 :]
+                places[at].append((c, rest, rest_keys, self._rest_facts(rest)))
+        return tuple(order), tuple(map(tuple, places))
+
+    def _variable_places(self, z: Intermediate) -> dict[int, int]:
+        """The places of the canonical intermediate ``z``'s variables among
+        its arguments (:meth:`position`), by the variables' numbers
+        (:attr:`_ids`): kept per set of variables (many intermediates share
+        one), so that a variable is looked up by its number."""
+        varset = self._varsets[z.args[0].p]
+        found = self._varset_ids.get(varset)
+        if found is None:
+            ids = self._ids
+            found = {ids.setdefault(a, len(ids)): j for j, a in enumerate(z.args[1:])}
+            self._varset_ids[varset] = found
+        return found
+
+    def _rest_facts(self, rest: tuple) -> tuple | None:
+        """What :meth:`_walk` finds in the plain factors ``rest`` (no
+        number among them), for :meth:`_products_plan`: the sets of
+        variables of the intermediates, the variables (a sine's or
+        cosine's argument), the derivatives among them, the sines and
+        cosines; None when a sum is among them (a derivative with it is
+        walked when it is named)."""
+        z_type = self.Z
+        varsets = self._varsets
+        shared, found, among, sines = set(), set(), set(), []
+        for f in rest:
+            if f.is_Add:
+                return None  # (walked when the derivative is named)
+            if type(f) is z_type:
+                shared.add(varsets[f.args[0].p])
+            elif type(f) in _SINE_COSINE:
+                sines.append(f)
+                found.add(f.args[0])
+            else:
+                found.add(f)
+                if type(f) is sp.Derivative:
+                    among.add(f)
+        return frozenset(shared), frozenset(found), frozenset(among), tuple(sines)
 
     def _products_sign(self, keyed: list, number: Any) -> bool | None:
         """:func:`minus_first` of a sum of :meth:`_products_pd`'s
@@ -2087,8 +2295,41 @@ class Intermediates:
             return found
         found = self._plain_keys.get(f)
         if found is None and f not in self._plain_keys:
-            found = self._plain_keys[f] = _plain_factor_key(f)
+            if f.is_Add:
+                found = self._sum_key(f)
+            else:
+                found = _plain_factor_key(f)
+            self._plain_keys[f] = found
         return found
+
+    def _sum_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a sum: its class's place, its count of
+        terms and their tuples (a product's: the class's place, its count
+        of arguments and theirs, a rational coefficient's by
+        :func:`_plain_atom_key`), as :func:`_compare` decides between two
+        sums (their hashable content is their terms); None when a part
+        has no tuple."""
+        if not f.is_commutative:
+            return None
+        keys = []
+        for term in f.args:
+            if term.is_Rational:
+                keys.append(_plain_atom_key(term))
+                continue
+            if not term.is_Mul:
+                key = self._plain_key(term)
+                if key is None:
+                    return None
+                keys.append(key)
+                continue
+            factors = []
+            for a in term.args:
+                key = _plain_atom_key(a) if a.is_Rational else self._plain_key(a)
+                if key is None:
+                    return None
+                factors.append(key)
+            keys.append((_MUL_PLACE, len(factors), *factors))
+        return (_ADD_PLACE, len(keys), *keys)
 
     def position(self, z: Intermediate, x: Any) -> int | None:
         """The first ``j`` with ``z.args[j + 1] == x`` (``None``: none), by a
