@@ -383,3 +383,23 @@ def test_the_least_intermediate_is_sympys(pool):
             assert got == min(bases, key=book._sort_key)
             decided += 1
     assert decided > 200 and declined > 50
+
+
+def test_ordering_keeps_no_book_alive():
+    """The order's class keys are not kept per book's class of
+    intermediates (each book has its own): a book dropped is freed (once
+    sympy's own cache, bounded, lets go of its expressions)."""
+    import gc
+    import weakref
+
+    book = Intermediates()
+    z = book.name(sp.sin(q1) * u1 + sp.cos(q2) * u2 + L * q1 * u1)
+    assert autoz._class_first(z) == type(z).class_key()
+    assert autoz._least_generator([z, q1 + L], sp.default_sort_key) is min(
+        [z, q1 + L], key=sp.default_sort_key
+    )
+    gone = weakref.ref(book)
+    del book, z
+    sp.core.cache.clear_cache()
+    gc.collect()
+    assert gone() is None

@@ -427,9 +427,14 @@ _CLASS_FIRST = (
     sp.sin,
     sp.cos,
 )
-#: a class -> its class_key, for the classes above that are not functions
-#: of time (their class's hash is made of its key)
-_CLASS_KEYS: dict[type, Any] = {}
+#: the class_key of sympy's classes among those above (each a constant);
+#: an intermediate's class (one per book) keeps its own
+#: (:meth:`Intermediate.class_key`), and a function of time's is made of
+#: its name
+_CLASS_KEYS: dict[type, Any] = {
+    kind: kind.class_key()
+    for kind in (sp.Add, sp.Symbol, sp.Derivative, sp.sin, sp.cos)
+}
 
 
 def _class_first(b: Any) -> Any:
@@ -443,12 +448,8 @@ def _class_first(b: Any) -> Any:
     if not isinstance(b, _CLASS_FIRST):
         return None
     kind = type(b)
-    if isinstance(b, AppliedUndef):
-        return kind.class_key()
     found = _CLASS_KEYS.get(kind)
-    if found is None:
-        found = _CLASS_KEYS[kind] = kind.class_key()
-    return found
+    return kind.class_key() if found is None else found
 
 
 def _least_intermediate(bases: list) -> Any:
