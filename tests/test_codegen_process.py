@@ -182,6 +182,48 @@ def test_copies_stopped_midway_leave_no_process(tmp_path):
     assert not multiprocessing.active_children()
 
 
+def _interrupted_forking(monkeypatch):
+    """``copies.forking`` whose held-back signals bring an interrupt as
+    they come through, once the copies are made (a Ctrl-C while forking)."""
+    import contextlib
+
+    from al2py_runtime import copies
+
+    real = copies.forking
+
+    @contextlib.contextmanager
+    def forking():
+        with real():
+            yield
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(copies, "forking", forking)
+
+
+def test_an_interrupt_as_the_copies_are_forked_leaves_no_process(tmp_path, monkeypatch):
+    """A Ctrl-C held back while the copies are forked, which comes through
+    once they are made: it leaves the command with no copy left behind
+    (the copy of the conversion and the copies that form programs)."""
+    import multiprocessing
+
+    from al2py_runtime.codegen import Formers
+
+    from al2py import codegen_c
+    from al2py.transpile import convert
+
+    code = convert(MANY_JOBS, "many.al", formatted=False).code
+    namespace: dict = {"__name__": "many", "__file__": str(tmp_path / "many.py")}
+    exec(compile(code, str(tmp_path / "many.py"), "exec"), namespace)  # noqa: S102
+    jobs = namespace["al"].numerics.jobs
+    _interrupted_forking(monkeypatch)
+    with pytest.raises(KeyboardInterrupt):
+        Formers(jobs, None, None, 2)
+    assert not multiprocessing.active_children()
+    with pytest.raises(KeyboardInterrupt):
+        codegen_c.converted(TUTOR6.read_text(), "tutor6.al", prepare=[])
+    assert not multiprocessing.active_children()
+
+
 @pytest.mark.parametrize("value", ["0", "-2", "two", "1.5"])
 def test_jobs_must_be_a_whole_number_of_processes(tmp_path, capsys, value):
     """``-j`` is never quietly taken as another number."""

@@ -214,11 +214,13 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
     when both ran here."""
     pool = copies.fork_pool(1)
     future = None
-    if pool is not None:
-        with contextlib.suppress(OSError), copies.forking():  # else: here
-            future = pool.submit(_convert_in_copy, text, filename)
     code = None
     try:
+        if pool is not None:
+            # (an interrupt held back while the copy is forked is raised
+            # as the signals come through, leaving with the copy made)
+            with contextlib.suppress(OSError), copies.forking():  # else: here
+                future = pool.submit(_convert_in_copy, text, filename)
         for i, step in enumerate(prepare):
             if i and future is not None and _failed(future):
                 break
@@ -228,7 +230,7 @@ def converted(text: str, filename: str, prepare: Sequence[Callable[[], object]])
                 code = future.result()
     finally:
         if pool is not None:  # leaving early: the copy ended at once
-            copies.end_pool(pool, work_left=future is not None and not future.done())
+            copies.end_pool(pool, work_left=future is None or not future.done())
     if code is None:
         return _convert(text, filename)
     from al2py_runtime.walks import allow_deep_recursion

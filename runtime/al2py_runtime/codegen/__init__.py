@@ -369,6 +369,11 @@ class Formers:
                     self._futures[i] = self._pool.submit(_form_in_copy, i, None)
         except OSError:
             self.stop()
+        except BaseException:
+            # an interrupt held back while the copies were forked comes
+            # through once they are made: they are ended before it leaves
+            self.stop()
+            raise
 
     def formed(self, i: int, task: progress.Task | None = None) -> Formed | None:
         """Job ``i``'s program as a copy formed it (waiting for it, which
