@@ -273,25 +273,32 @@ def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, l
     return book, found
 
 
-@pytest.mark.parametrize("seed", range(4))
-def test_a_declined_shortcut_leaves_the_long_ways_numbers(seed):
-    """Where the shortcut declines after taking some factors' partials (a
-    derivative that is a power, or squares a factor), the long way takes
-    the rest in the same order: the same intermediates, the same numbers."""
-    declined = []
+def _shortcut_calls(monkeypatch, kept) -> list:
+    """The definitions whose ``_products_pd`` call ``kept(book, e, got)``
+    holds of, while ``monkeypatch`` wraps it (until ``monkeypatch.undo``)."""
+    calls: list = []
     real = Intermediates._products_pd
 
     def counted(self, e, x, memo):
         got = real(self, e, x, memo)
-        if got is None and self._plans.get(e) is not None:
-            declined.append(e)
+        if kept(self, e, got):
+            calls.append(e)
         return got
 
-    Intermediates._products_pd = counted
-    try:
-        fast = _build_declining(seed)
-    finally:
-        Intermediates._products_pd = real
+    monkeypatch.setattr(Intermediates, "_products_pd", counted)
+    return calls
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_declined_shortcut_leaves_the_long_ways_numbers(seed, monkeypatch):
+    """Where the shortcut declines after taking some factors' partials (a
+    derivative that is a power, or squares a factor), the long way takes
+    the rest in the same order: the same intermediates, the same numbers."""
+    declined = _shortcut_calls(
+        monkeypatch, lambda book, e, got: got is None and book._plans.get(e)
+    )
+    fast = _build_declining(seed)
+    monkeypatch.undo()
     assert len(declined) > 5
     assert _written(fast) == _written(_build_declining(seed, shortcut=False))
 
@@ -357,24 +364,15 @@ def _build_sums(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
 
 
 @pytest.mark.parametrize("seed", range(3))
-def test_sums_among_the_factors_name_what_the_long_way_names(seed):
+def test_sums_among_the_factors_name_what_the_long_way_names(seed, monkeypatch):
     """Products with sums among their factors, by the shortcut and the
     long way: the same intermediates, numbers and derivatives; and each
     derivative the shortcut forms is ``_pd``'s."""
-    with_sums = []
-    real = Intermediates._products_pd
-
-    def counted(self, e, x, memo):
-        got = real(self, e, x, memo)
-        if got is not None and got[0].is_Add and not got[1]:
-            with_sums.append(e)
-        return got
-
-    Intermediates._products_pd = counted
-    try:
-        fast = _build_sums(seed)
-    finally:
-        Intermediates._products_pd = real
+    with_sums = _shortcut_calls(
+        monkeypatch, lambda book, e, got: got and got[0].is_Add and not got[1]
+    )
+    fast = _build_sums(seed)
+    monkeypatch.undo()
     assert len(with_sums) > 20
     assert _written(fast) == _written(_build_sums(seed, shortcut=False))
     book = fast[0]
