@@ -26,16 +26,33 @@ VARIABLES = [q1, q2, q3, u1, L, M, P, q1.diff(t)]
 COEFFICIENTS = [1, 1, 1, -1, -1, 2, sp.Rational(-3, 2), sp.Rational(1, 3)]
 
 
+def _new_book(shortcut: bool) -> Intermediates:
+    """An empty book, which takes every partial the long way unless
+    ``shortcut``."""
+    book = Intermediates()
+    if not shortcut:
+        book._products_pd = lambda e, x, memo: None  # the long way
+    return book
+
+
+def _keep_named(book: Intermediates, zs: list, terms: list) -> None:
+    """Name the sum of ``terms``, keeping it in ``zs`` when it is an
+    intermediate or minus one."""
+    z = book.name(sp.Add(*terms))
+    if not isinstance(z, book.Z):
+        z = -z
+    if isinstance(z, book.Z):
+        zs.append(z)
+
+
 def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     """A book of intermediates whose later definitions are sums of
     products of earlier ones, symbols and numbers (some with a sine or a
     square, which the shortcut declines), then the partial derivatives of
     some by each variable: the book and the derivatives."""
     rng = random.Random(seed)
-    book = Intermediates()
+    book = _new_book(shortcut)
     book.rates = frozenset([q1.diff(t)])
-    if not shortcut:
-        book._products_pd = lambda e, x, memo: None  # the long way
     leaves = [q1 * L, sp.sin(q2), sp.cos(q3) * M, u1, q1.diff(t) * P, q2 * q3]
     zs: list = []
     for _ in range(70):
@@ -53,11 +70,7 @@ def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
             terms.append(sp.Integer(rng.choice([-2, 3])))
         elif rng.random() < 0.15:
             terms = [sp.Mul(*rng.sample(pieces, rng.randint(2, 4)))]  # a product
-        z = book.name(sp.Add(*terms))
-        if not isinstance(z, book.Z):
-            z = -z
-        if isinstance(z, book.Z):
-            zs.append(z)
+        _keep_named(book, zs, terms)
     found = [book.derivative(z, x) for z in zs[-30:] for x in VARIABLES]
     return book, found
 
@@ -252,9 +265,7 @@ def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, l
     ``L*M*q3`` against a factor ``M`` (a square of ``M``, by ``L``); and
     sums with factors that hold none of the variables asked (skipped)."""
     rng = random.Random(seed)
-    book = Intermediates()
-    if not shortcut:
-        book._products_pd = lambda e, x, memo: None  # the long way
+    book = _new_book(shortcut)
     sums = [q1 * L**2 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
     leaves = [book.name(e) for e in sums] + [M * L, K]
     zs: list = []
@@ -264,11 +275,7 @@ def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, l
         for _ in range(rng.randint(2, 6)):
             factors = rng.sample(pieces, rng.randint(1, 3))
             terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
-        z = book.name(sp.Add(*terms))
-        if not isinstance(z, book.Z):
-            z = -z
-        if isinstance(z, book.Z):
-            zs.append(z)
+        _keep_named(book, zs, terms)
     found = [book.derivative(z, x) for z in zs[-25:] for x in [q1, q2, q3, L, M, K]]
     return book, found
 
@@ -340,9 +347,7 @@ def _build_sums(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     their factors (of intermediates, symbols and products of them), some
     alone with a number (which sympy distributes)."""
     rng = random.Random(seed)
-    book = Intermediates()
-    if not shortcut:
-        book._products_pd = lambda e, x, memo: None  # the long way
+    book = _new_book(shortcut)
     leaves = [q1 * L + u1, sp.sin(q2) * K + q3, sp.cos(q3) * M + q1 * q2, u1 * P]
     zs: list = []
     for _ in range(45):
@@ -354,11 +359,7 @@ def _build_sums(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
                 a, b = rng.sample(pieces, 2)
                 factors.append(a + rng.choice(COEFFICIENTS) * b)
             terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
-        z = book.name(sp.Add(*terms))
-        if not isinstance(z, book.Z):
-            z = -z
-        if isinstance(z, book.Z):
-            zs.append(z)
+        _keep_named(book, zs, terms)
     found = [book.derivative(z, x) for z in zs[-12:] for x in VARIABLES]
     return book, found
 
