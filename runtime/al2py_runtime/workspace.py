@@ -35,7 +35,7 @@ from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, collector, matrices, progress, walks
 from .jobs.numerics import Numerics
-from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
+from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
@@ -574,9 +574,7 @@ class Workspace(Mapping):
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
         if _is_vectorial(value):
-            from .model.kinematics import vmap
-
-            return vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
+            return walks.vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
         if isinstance(value, list | tuple):
             if any(_is_vectorial(v) for v in value):
                 return tuple(self.normalize(v, rearrange=rearrange) for v in value)
@@ -1275,7 +1273,7 @@ def _named_for_display(book: Any, value: Any) -> Any:
 
     if not isinstance(value, sp.Basic | sp.MatrixBase | Vector | Dyadic):
         return value
-    return vmap(value, one)
+    return walks.vmap(value, one)
 
 
 class _Partial:
