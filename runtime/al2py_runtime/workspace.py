@@ -28,7 +28,6 @@ from dataclasses import replace
 from typing import Any
 
 import sympy as sp
-from sympy.core.cache import clear_cache
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
@@ -728,10 +727,6 @@ class Workspace(Mapping):
         self._watch.stop()
         if self._collector is not None:
             self._collector.restore()
-            # sympy's cache now holds the derivation's passing expressions
-            # (its least recently used calls): freed here rather than kept
-            # for the process's life, which also shortens its exit
-            clear_cache()
             # the derived model lives as long as its module: moved out of
             # the collector's sight (``gc.freeze``), so that no later
             # collection -- nor the several at the process's exit, a
@@ -784,22 +779,17 @@ class Workspace(Mapping):
         # the printer's memos make many small objects that all stay: the
         # garbage collector, run at its default pace, walks them again and
         # again (a fifth of the printing) and finds nothing
-        try:
-            with (
-                collector.Quiet(),
-                progress.task("printing the transcript", unit="responses") as task,
-            ):
-                task.doing("naming intermediates")
-                shown = self._with_intermediates(self.responses)
-                task.doing("")
-                task.update(0, len(shown))
-                out = transcript_lines(
-                    lines, shown, self.model.displayed, tick=task.advance
-                )
-        finally:
-            # as after deriving: sympy's cache now holds the printing's
-            # passing expressions, freed here rather than at the exit
-            clear_cache()
+        with (
+            collector.Quiet(),
+            progress.task("printing the transcript", unit="responses") as task,
+        ):
+            task.doing("naming intermediates")
+            shown = self._with_intermediates(self.responses)
+            task.doing("")
+            task.update(0, len(shown))
+            out = transcript_lines(
+                lines, shown, self.model.displayed, tick=task.advance
+            )
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 
