@@ -658,7 +658,11 @@ def _compare(a: Any, b: Any) -> int:
         if na != nb:
             if not isinstance(b, sp.Basic):
                 return -1
-            return 1 if _class_place(na) > _class_place(nb) else -1
+            # (_class_place, without the calls once both are known)
+            pa, pb = _PLACES.get(na), _PLACES.get(nb)
+            if pa is None or pb is None:
+                pa, pb = _class_place(na), _class_place(nb)
+            return 1 if pa > pb else -1
     elif ta.compare is _Z_COMPARE:
         x, y = a.args, b.args
         if len(x) != len(y):
@@ -850,7 +854,11 @@ def _sort_by_compare(items: list) -> None:
 def _product(args: Sequence[Any]) -> Any:
     """A product of commutative arguments already in sympy's canonical form
     and order (``Mul._from_args``, told they commute)."""
-    return sp.Mul._from_args(args, is_commutative=True)
+    return _MUL_FROM_ARGS(args, True)
+
+
+#: ``Mul._from_args``, looked up once (called for every product formed)
+_MUL_FROM_ARGS = sp.Mul._from_args
 
 
 def _plain_base(a: Any) -> Any:
@@ -1454,15 +1462,20 @@ class Intermediates:
         counts them (an intermediate, a function of time or a derivative is
         one node), counting no further than ``limit + 1``."""
         one = self._one_node
+        if e.is_Atom or isinstance(e, one):
+            return limit >= 1
+        # a node's arguments are counted when it is met, and only those
+        # with arguments of their own are stacked (most are leaves)
         stack = [e]
-        n = 0
+        n = 1
         while stack:
-            x = stack.pop()
-            n += 1
+            args = stack.pop().args
+            n += len(args)
             if n > limit:
                 return False
-            if not (x.is_Atom or isinstance(x, one)):
-                stack.extend(x.args)
+            for a in args:
+                if not (a.is_Atom or isinstance(a, one)):
+                    stack.append(a)
         return True
 
     def time_rate(self, x: Any) -> Any:
@@ -1597,9 +1610,10 @@ class Intermediates:
             # (the derivatives are among its own)
             return union, within
         # kept per combination (the union is one object per combination
-        # of sets, :meth:`_union`): the sets returned are then one object
-        # for one set, which :meth:`_shared_variables` finds by identity
-        key = (frozenset(found), frozenset(among), union)
+        # of sets, :meth:`_union`; ``among`` is the derivatives in
+        # ``found``): the sets returned are then one object for one set,
+        # which :meth:`_shared_variables` finds by identity
+        key = (frozenset(found), union)
         met = self._mets.get(key)
         if met is None:
             variables = self._one_set(union | found)
