@@ -456,7 +456,7 @@ def test_the_check_finds_a_wrong_hash(pool, monkeypatch):
     zs = [book.Z(k, *book.canonical(k)[0]) for k in range(1, len(book) + 1)]
     for z in zs:
         hash(z)
-    monkeypatch.setattr(Intermediates, "_own_varset", lambda self, z: None)
+    monkeypatch.setattr(Intermediates, "own_variables", lambda self, z: None)
     assert _hash_mismatches(book, zs) > 20
 
 

@@ -192,10 +192,10 @@ class Intermediate(sp.Function):
         if h is None:
             varset = self.__dict__.get("_varset")
             if varset is None:
-                varset = self.book._own_varset(self)
+                varset = self.book.own_variables(self)
             if varset is None:
                 return super().__hash__()
-            h = self._mhash = hash((type(self).__name__, self._args[0].p, varset))
+            h = self._mhash = hash((type(self).__name__, self.args[0].p, varset))
         return h
 
     # sympy's assumption properties, answered from the book's one table of
@@ -1486,12 +1486,13 @@ class Intermediates:
             found = self._time_rates[x] = x.diff(_T) if x.has(_T) else None
         return found
 
-    def _own_varset(self, z: Intermediate) -> frozenset | None:
+    def own_variables(self, z: Intermediate) -> frozenset | None:
         """The set of variables of ``z``'s intermediate if ``z`` is taken at
         its own variables (kept on the instance), else None (for
         :meth:`Intermediate.__hash__`: also for an instance whose first
         argument is not the number of one of the book's intermediates)."""
-        first = z._args[0] if z._args else None
+        args = z.args
+        first = args[0] if args else None
         if not (
             first is not None and first.is_Integer and 0 < first.p < len(self._defs)
         ):
