@@ -1278,8 +1278,8 @@ class Intermediates:
         self._unions: dict[frozenset, tuple[frozenset, frozenset]] = {}
         #: a set of variables -> the one object kept for it (:meth:`_one_set`)
         self._sets: dict[frozenset, frozenset] = {}
-        #: (variables outside intermediates, the derivatives among them,
-        #: the intermediates' union) -> :meth:`_met`'s answer
+        #: (variables outside intermediates, the intermediates' union) ->
+        #: :meth:`_met`'s answer
         self._mets: dict[tuple, tuple[frozenset, frozenset]] = {}
         #: a set of derivatives -> whether all are :attr:`rates` (for the
         #: rates :attr:`_rated_for`; reset when they change)
