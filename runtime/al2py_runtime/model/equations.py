@@ -89,7 +89,10 @@ class KaneEquations(ModelPart):
                 ]
                 moved = moved or any(p is not None for p in parts)
                 dots = active_rows(
-                    [(parts, f)], len(speeds), _same, dot=lambda p, g: g.dot(p)
+                    [(parts, f)],
+                    len(speeds),
+                    _same,
+                    dot=lambda p, g: kin.exact_dot(g, p),
                 )
             else:
                 # Specified quantities stay names, as without AutoZ (Solve)

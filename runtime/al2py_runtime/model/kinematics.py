@@ -33,6 +33,7 @@ __all__ = [
     "ang_vel_in",
     "frame_path",
     "dot",
+    "exact_dot",
     "is_vector",
     "is_dyadic",
     "as_dyadic",
@@ -263,6 +264,36 @@ def named_product(
             flat[i * cols + j] = named[v]
         return cls(rows, cols, flat)
     return cls.from_dok(rows, cols, {ij: named[v] for ij, v in dok.items()})
+
+
+#: sympy's infinities: a product of 0 and an entry known to be infinite is
+#: ``nan``, which :func:`dot` does not form
+_INFINITIES = (
+    type(sp.S.Infinity),
+    type(sp.S.NegativeInfinity),
+    type(sp.S.ComplexInfinity),
+    type(sp.S.NaN),
+)
+
+
+def exact_dot(a: Vector, b: Vector) -> Any:
+    """``a & b``, exactly sympy's: :func:`dot` unless a measure number
+    holds an infinity (only then can an entry be known infinite: the
+    script's names are never declared infinite), else sympy's own.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x + sp.zoo * N.z
+    >>> exact_dot(a, b) == a & b, exact_dot(b, a) == b & a
+    (True, True)
+    """
+    for v in (a, b):
+        for m, _frame in v.args:
+            if any(walks.atoms(x, *_INFINITIES) for x in m):
+                return a & b
+    return dot(a, b)
 
 
 def dot(a: Vector, b: Vector) -> Any:
