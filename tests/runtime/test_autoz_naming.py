@@ -547,3 +547,68 @@ def test_the_rates_check_follows_the_rates(pool):
         assert any(d <= before for d in sets) and not all(d <= before for d in sets)
     finally:
         book.rates = before
+
+
+def _large_expressions(seed: int, n: int = 40) -> list:
+    """Large sums that share large parts (as AutoZ OFF's accelerations do),
+    some with accelerations that stay visible unless they are rates."""
+    rng = random.Random(seed)
+    atoms = [q1, q2, q3, u1, u2, L, M, sp.sin(q1), sp.cos(q2)]
+    shared = [
+        sp.Add(*[sp.Mul(*rng.sample(atoms, 3)) for _ in range(rng.randint(9, 14))])
+        for _ in range(6)
+    ]
+    shared[0] += u1.diff(t) * sp.Add(*atoms[:4])  # visible until u1' is a rate
+    out = []
+    for _ in range(n):
+        parts = rng.sample(shared, 3)
+        e = parts[0] * rng.choice(atoms) + parts[1] * parts[2] + rng.choice(atoms)
+        if rng.random() < 0.3:
+            e += u1.diff(t) * parts[0]
+        if rng.random() < 0.3:  # wide: still long once its parts are named
+            e = sp.Add(*[rng.choice(shared) * a for a in atoms[:4]]) + e * u2
+        if out and rng.random() < 0.3:  # an earlier whole, now a part
+            e = rng.choice(out) * rng.choice(atoms) + e * q2
+        out.append(e)
+    return out
+
+
+def _book_of(exprs, rates, monkeypatch=None) -> list:
+    """The book made by naming ``exprs``, ZEE_NOT ``q3`` for the first half
+    (its coefficients are named, not the parts that hold it) and ``rates``
+    for the second; ``monkeypatch``: each split walks afresh (the long
+    way)."""
+    book = Intermediates()
+    book.exclude = frozenset([q3])
+    if monkeypatch is not None:
+        split = Intermediates._split
+
+        def fresh(self, expr):
+            self._parts_for = None
+            return split(self, expr)
+
+        monkeypatch.setattr(Intermediates, "_split", fresh)
+    named = []
+    for k, e in enumerate(exprs):
+        if k == len(exprs) // 2:
+            book.rates, book.exclude = rates, frozenset()
+        named.append(book.name(e))
+    # (printed: each book has its own class of intermediates)
+    return [
+        [sp.srepr(z) for z in named],
+        [sp.srepr(book.canonical(k)) for k in range(1, len(book) + 1)],
+    ]
+
+
+def test_a_split_reads_the_parts_of_earlier_splits(monkeypatch):
+    """:meth:`_split` keeps what it made of each part for the next split
+    (until the rates or excluded quantities change): the book is the one
+    made by splitting each expression afresh, name for name."""
+    for seed in range(3):
+        exprs = _large_expressions(seed)
+        rates = frozenset([u1.diff(t)])
+        kept = _book_of(exprs, rates)
+        with monkeypatch.context() as m:
+            fresh = _book_of(exprs, rates, m)
+        assert len(kept[1]) > 20
+        assert kept == fresh

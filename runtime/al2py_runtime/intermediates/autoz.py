@@ -1285,6 +1285,11 @@ class Intermediates:
         #: rates :attr:`_rated_for`; reset when they change)
         self._rated: dict[frozenset, bool] = {}
         self._rated_for: frozenset | None = None
+        #: a part -> what :meth:`_split` makes of it (the part, its parts
+        #: named, and its size), for the rates and excluded quantities
+        #: :attr:`_parts_for` (reset when either changes)
+        self._parts: dict[Any, tuple[Any, int]] = {}
+        self._parts_for: tuple[frozenset, frozenset] | None = None
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1423,7 +1428,16 @@ class Intermediates:
                 break
         else:
             return expr  # no part is larger: the walk below changes nothing
-        memo: dict[Any, tuple[Any, int]] = {}
+        # one memo for every split: a part's answer depends on the part, on
+        # what is named already (a part named once is found again by
+        # :meth:`name`) and on the rates and excluded quantities, which
+        # :meth:`name` reads (a shared part of many large expressions is
+        # walked once, not once for each)
+        kept = self._parts_for
+        if kept is None or kept[0] is not self.rates or kept[1] is not self.exclude:
+            self._parts = {}
+            self._parts_for = (self.rates, self.exclude)
+        memo = self._parts
 
         def walk(e: Any, top: bool) -> tuple[Any, int]:
             if e.is_Atom or isinstance(e, one):
@@ -1452,7 +1466,8 @@ class Intermediates:
                     out = (named, 1)
                 elif (-named).func is Z:
                     out = (named, 3)
-            memo[e] = out
+            if not top:  # (the whole is not named here: not an answer for a part)
+                memo[e] = out
             return out
 
         return walk(expr, True)[0]
