@@ -15,6 +15,7 @@ through the runtime; then the growth exponent of each column.  ``FastKane``,
     python benchmarks/large.py                 # n = 2, 3, 4, 5, 6, 8
     python benchmarks/large.py 6 8 --budget 600
     python benchmarks/large.py 2 4 8 --autoz off --no-sympy   # only the import
+    python benchmarks/large.py 2 3 4 --autoz off --closed     # Constrain too
 """
 
 from __future__ import annotations
@@ -37,9 +38,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from budget import exponent, show, within  # noqa: E402
 
 
-def chain_source(n: int, autoz: str = "ON") -> str:
+def chain_source(n: int, autoz: str = "ON", closed: bool = False) -> str:
     """An Autolev script for a 3-D chain of n rigid bodies (3n speeds), with
-    ``AutoZ ON`` or ``OFF`` (Autolev's default)."""
+    ``AutoZ ON`` or ``OFF`` (Autolev's default); ``closed``: the last body's
+    mass center moves only along ``N3>`` (two velocity constraints, ``U1``
+    and ``U2`` dependent)."""
     lines = [
         f"% {n}-body spatial chain: body-123 angles, speeds = angular velocities",
         f"AutoZ {autoz}",
@@ -66,6 +69,12 @@ def chain_source(n: int, autoz: str = "ON") -> str:
         lines.append(f"V2pts(N, B{k}, {previous}, B{k}O)")
         lines.append(f"A2pts(N, B{k}, {previous}, B{k}O)")
         previous = f"B{k}O"
+    if closed:
+        lines += [
+            f"Dependent[1] = Dot(V_B{n}O_N>, N1>)",
+            f"Dependent[2] = Dot(V_B{n}O_N>, N2>)",
+            "Constrain(Dependent[U1, U2])",
+        ]
     lines += [
         "Gravity(-G*N3>)",
         "Zero = Fr() + FrStar()",
@@ -74,9 +83,9 @@ def chain_source(n: int, autoz: str = "ON") -> str:
     return "\n".join(lines) + "\n"
 
 
-def chain_inputs(n: int) -> dict:
+def chain_inputs(n: int, closed: bool = False) -> dict:
     """The same chain written directly in sympy mechanics (KanesMethod's
-    inputs)."""
+    inputs; ``closed``: with the two velocity constraints)."""
     q = me.dynamicsymbols(f"q1:{3 * n + 1}")
     u = me.dynamicsymbols(f"u1:{3 * n + 1}")
     length, mass, ia, it, g = sp.symbols("L M IA IT G")
@@ -98,34 +107,44 @@ def chain_inputs(n: int) -> dict:
         bodies.append(me.RigidBody(f"R{k + 1}", center, frame, mass, (inertia, center)))
         loads.append((center, -mass * g * frame_n.z))
         parent, previous = frame, center
-    return dict(frame=frame_n, q_ind=q, u_ind=u, kd_eqs=kd, bodies=bodies, loads=loads)
+    out = dict(frame=frame_n, q_ind=q, u_ind=u, kd_eqs=kd, bodies=bodies, loads=loads)
+    if closed:
+        v = previous.vel(frame_n)
+        out.update(
+            u_ind=u[2:],
+            u_dependent=u[:2],
+            velocity_constraints=[v.dot(frame_n.x), v.dot(frame_n.y)],
+        )
+    return out
 
 
-def kanesmethod_seconds(n: int) -> float:
+def kanesmethod_seconds(n: int, closed: bool = False) -> float:
     """Build the chain and derive it with ``KanesMethod`` (no intermediates)."""
     start = time.perf_counter()
-    inputs = chain_inputs(n)
+    inputs = chain_inputs(n, closed)
     bodies, loads = inputs.pop("bodies"), inputs.pop("loads")
     kane = me.KanesMethod(**inputs)
     kane.kanes_equations(bodies, loads)
     return time.perf_counter() - start
 
 
-def fastkane_seconds(n: int) -> float:
+def fastkane_seconds(n: int, closed: bool = False) -> float:
     """Build the chain and derive it with intermediates (FastKane)."""
     start = time.perf_counter()
-    inputs = chain_inputs(n)
+    inputs = chain_inputs(n, closed)
     bodies, loads = inputs.pop("bodies"), inputs.pop("loads")
     kane = FastKane(**inputs)
     kane.kanes_equations(bodies, loads)
     return time.perf_counter() - start
 
 
-def al2py_seconds(n: int, autoz: str = "ON") -> tuple[float, float, int]:
+def al2py_seconds(
+    n: int, autoz: str = "ON", closed: bool = False
+) -> tuple[float, float, int]:
     """Convert the Autolev chain and import (derive) the module."""
     with tempfile.TemporaryDirectory() as tmp:
         workdir = Path(tmp)
-        source = chain_source(n, autoz)
+        source = chain_source(n, autoz, closed)
         path = workdir / f"chain{n}.al"
         path.write_text(source)
         start = time.perf_counter()
@@ -141,8 +160,8 @@ def al2py_seconds(n: int, autoz: str = "ON") -> tuple[float, float, int]:
         return t_convert, t_import, len(module.al.value("ZERO"))
 
 
-def best(fn, n: int, repeats: int) -> float:
-    return min(fn(n) for _ in range(repeats))
+def best(fn, n: int, repeats: int, closed: bool = False) -> float:
+    return min(fn(n, closed) for _ in range(repeats))
 
 
 def main(argv: list[str]) -> int:
@@ -161,12 +180,19 @@ def main(argv: list[str]) -> int:
         help="the chain script's AutoZ setting (default on)",
     )
     parser.add_argument(
+        "--closed",
+        action="store_true",
+        help="the last body's mass center moves only vertically: two velocity"
+        " constraints (Constrain in the script, u_dependent in sympy)",
+    )
+    parser.add_argument(
         "--no-sympy",
         action="store_true",
         help="skip the FastKane and KanesMethod columns",
     )
     args = parser.parse_args(argv)
-    print(f"chain scripts with AutoZ {args.autoz.upper()}", flush=True)
+    closed = ", closed by two velocity constraints" if args.closed else ""
+    print(f"chain scripts with AutoZ {args.autoz.upper()}{closed}", flush=True)
     print(
         f"{'bodies':>6} {'speeds':>6} {'FastKane s':>10} {'Kanes s':>8} {'ratio':>6} "
         f"{'convert s':>9} {'import s':>8}",
@@ -182,11 +208,11 @@ def main(argv: list[str]) -> int:
             fast_col = kane_col = "-"
         else:
             status_f, t_fast, _ = within(
-                args.budget, best, fastkane_seconds, n, 3 if n <= 4 else 1
+                args.budget, best, fastkane_seconds, n, 3 if n <= 4 else 1, args.closed
             )
             fast_col = show(status_f, t_fast if status_f == "ok" else 0, args.budget)
             t_fast = t_fast if status_f == "ok" else None
-            status, t_kane, _ = within(args.budget, kanesmethod_seconds, n)
+            status, t_kane, _ = within(args.budget, kanesmethod_seconds, n, args.closed)
             kane_col = show(status, t_kane if status == "ok" else 0, args.budget)
         if t_fast is None or args.no_sympy:
             ratio = "-"
@@ -198,7 +224,9 @@ def main(argv: list[str]) -> int:
             conv_col = imp_col = "-"
             t_imp = None
         else:
-            status_i, out, _ = within(args.budget, al2py_seconds, n, args.autoz.upper())
+            status_i, out, _ = within(
+                args.budget, al2py_seconds, n, args.autoz.upper(), args.closed
+            )
             conv_col = f"{out[0]:.2f}" if status_i == "ok" else "-"
             imp_col = show(status_i, out[1] if status_i == "ok" else 0, args.budget)
             t_imp = out[1] if status_i == "ok" else None
