@@ -39,7 +39,7 @@ from ..jobs.run import (
 )
 from ..jobs.tables import format_table
 from ..version import __version__
-from ..walks import xreplace
+from ..walks import allow_deep_recursion
 
 __all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 
@@ -618,28 +618,67 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None)
     every part it holds); it also keeps one object for each part formed
     (equal parts formed from different ones, say a definition's as the book
     gives it and an output's made numeric, are one object: printing and
-    ``cse`` compare them at once)."""
+    ``cse`` compare them at once).
+
+    The walk is :func:`..walks.xreplace`'s (a part in ``rule`` replaced,
+    an intermediate none of whose parts is in ``rule`` kept whole, any
+    other part rebuilt from its arguments when one of them changed), with
+    the rebuilding written into it: a program's intermediates are
+    thousands of short definitions, each walked once."""
+    if not isinstance(expr, sp.Basic) or not rule:
+        return expr
+    allow_deep_recursion()
     memo = {} if memo is None else memo
     same = memo.get(_SAME)
     if same is None:
         same = memo[_SAME] = {}
+    return _renamed(expr, rule, memo, same)[0]
 
-    def rebuild(e: Any, args: list[Any], changed: list[int]) -> Any:
-        new = _sorted_only(e, args, changed)
-        return same.setdefault(new, new)
 
-    return xreplace(expr, rule, memo, rebuild=rebuild)
+def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
+    """``e`` renamed by ``rule`` and whether it changed
+    (:func:`renamed_evaluated`)."""
+    found = rule.get(e)
+    if found is not None or e in rule:
+        return found, True
+    if e.is_Atom:
+        return e, False
+    known = memo.get(e)
+    if known is not None:
+        return known
+    if e.is_Function and hasattr(e, "walk_parts"):
+        # an intermediate: none of its parts is replaced
+        if rule.keys().isdisjoint(e.walk_parts()):
+            memo[e] = out = (e, False)
+            return out
+    args = e.args
+    new = None
+    for i, a in enumerate(args):
+        if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
+            continue
+        b, changed = _renamed(a, rule, memo, same)
+        if changed:
+            if new is None:
+                new = list(args)
+            new[i] = b
+    if new is None:
+        out = (e, False)
+    else:
+        part = _sorted_only(e, new)
+        out = (same.setdefault(part, part), True)
+    memo[e] = out
+    return out
 
 
 #: the key in :func:`renamed_evaluated`'s memo of the parts formed
 _SAME = ("renamed_evaluated", "formed parts")
 
 
-def _sorted_only(expr: Any, args: list[Any], changed: list[int]) -> Any:
+def _sorted_only(expr: Any, args: list[Any]) -> Any:
     """``expr.func(*args)``, a sum or product that evaluation would only
     sort formed from ``args`` sorted (:func:`renamed_evaluated`)."""
     cls = type(expr)
-    if cls is sp.Add or cls is sp.Mul:
+    if cls is sp.Mul or cls is sp.Add:
         kept = _kept_args(cls is sp.Mul, args)
         if kept is not None:
             return cls._from_args(kept, True)
@@ -657,38 +696,64 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
     numbers combine, ``exp`` factors combine (their base is ``E``), a
     product's powers (and a sum's term ``c*s`` of one factor) are
     evaluated again.  With none of these, the result is ``args`` sorted by
-    sympy's key, the number first."""
+    sympy's key, the number first.
+
+    A name (most factors) and a sum's product (most terms) are asked only
+    what these conditions ask of them, first."""
     number = None
     rest = []
-    keys: set[Any] = set()
+    keys: list[Any] = []
     for a in args:
-        if a.is_Number:
-            if number is not None or not a.is_finite or a == 0 or (mul and a == 1):
+        kind = type(a)
+        if kind is _NAME:
+            if not a.is_commutative:
+                return None
+            key: Any = a if mul else (a,)
+        elif kind is _MUL and not mul:
+            if not a.is_commutative:
+                return None
+            key = a.args
+            if key[0].is_Number:
+                key = key[1:]
+                if len(key) == 1 and not _plain_factor(key[0], True):
+                    return None  # c*s: Mul(c, s) is evaluated again
+        elif a.is_Number:
+            if number is not None:
+                return None
+            if a is not _MINUS_ONE and (
+                not a.is_finite or a == 0 or (mul and a == 1)
+            ):
                 return None
             number = a
             continue
-        if not a.is_commutative or not _plain_factor(a, mul):
-            return None
-        if mul:
-            key: Any = a.args[0] if a.is_Pow else a
-        elif a.is_Mul:
-            key = a.args[1:] if a.args[0].is_Number else a.args
-            if len(key) == 1 and not _plain_factor(key[0], True):
-                return None  # c*s: Mul(c, s) is evaluated again
-        elif a.is_Add:
-            return None
         else:
-            key = (a,)
-        if key in keys:
-            return None
-        keys.add(key)
+            if not a.is_commutative or not _plain_factor(a, mul):
+                return None
+            if mul:
+                key = a.args[0] if a.is_Pow else a
+            elif a.is_Add:
+                return None
+            else:
+                key = (a,)
+        keys.append(key)
         rest.append(a)
+    if len(keys) > 1 and len(set(keys)) != len(keys):
+        return None  # equal bases or terms combine
     if mul and number is not None and len(rest) == 1 and rest[0].is_Add:
         return None  # 2*(x + y) is distributed
-    rest.sort(key=_args_sortkey)
+    if len(rest) == 2:
+        if rest[0].compare(rest[1]) > 0:  # sympy's key, once
+            rest.reverse()
+    elif len(rest) > 2:
+        rest.sort(key=_args_sortkey)
     if number is not None:
         rest.insert(0, number)
     return rest
+
+
+_NAME = sp.Symbol
+_MUL = sp.Mul
+_MINUS_ONE = sp.S.NegativeOne
 
 
 def _plain_factor(a: Any, mul: bool) -> bool:

@@ -160,6 +160,8 @@ class _Slots:
         self.intermediates: list[tuple[sp.Dummy, Any]] = []
         #: parts of definitions renamed by :meth:`_definition` (see there)
         self._renamed: dict[Any, Any] = {}
+        #: what :meth:`_definition` does with a part of each class met
+        self._kinds: dict[type, int] = {}
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -217,54 +219,66 @@ class _Slots:
         Parameters are made in the general path's order."""
         zs, derivs, funcs, syms = [], [], [], []
         known = self.known
+        kinds = self._kinds
         stack = [body]  # plain parts
         inner = []  # parts inside a function's arguments
         while stack:
             e = stack.pop()
-            if isinstance(e, autoz.Intermediate):
+            kind = kinds.get(type(e))
+            if kind is None:
+                kind = kinds[type(e)] = _part_kind(type(e))
+            if kind == _WALKED:
+                stack.extend(e.args)
+            elif kind == _INTERMEDIATE:
                 if e not in known:
                     return self.numeric(body, what)
                 zs.append(e)
-            elif isinstance(e, sp.Derivative):
+            elif kind == _DERIVATIVE:
                 derivs.append(e)
-            elif isinstance(e, AppliedUndef):
+            elif kind == _FUNCTION:
                 funcs.append(e)
                 inner.extend(e.args)
-            elif e.is_Symbol:
+            elif kind == _SYMBOL:
                 syms.append(e)
-            elif not e.is_Atom:
-                stack.extend(e.args)
         while inner:  # a function's arguments: its symbols go with it
             e = inner.pop()
-            if isinstance(e, autoz.Intermediate):
+            kind = kinds.get(type(e))
+            if kind is None:
+                kind = kinds[type(e)] = _part_kind(type(e))
+            if kind == _INTERMEDIATE:
                 if e not in known:
                     return self.numeric(body, what)
                 zs.append(e)
-            elif isinstance(e, sp.Derivative):  # the general path
+            elif kind == _DERIVATIVE:  # the general path
                 return self.numeric(body, what)
-            elif isinstance(e, AppliedUndef):
+            elif kind == _FUNCTION:
                 funcs.append(e)
                 inner.extend(e.args)
-            elif not e.is_Atom:
+            elif kind == _WALKED:
                 inner.extend(e.args)
-        for obj in sorted(
-            {d for d in derivs if d not in known}, key=sp.default_sort_key
-        ):
-            self._derivative_param(obj, what)
-        for obj in sorted(
-            {f for f in funcs if f not in known}, key=sp.default_sort_key
-        ):
-            self._param(obj)
-        # the new parameters among the symbols (the known ones, the dummies
-        # and T stay, t becomes T), in the general path's order
-        fresh = {
-            sym
-            for sym in syms
-            if sym not in known and sym not in self._dummies and sym is not self.time
-        }
-        for sym in sorted(fresh, key=sp.default_sort_key):
-            if sym != t:
-                self._param(sym)
+        if derivs:
+            for obj in sorted(
+                {d for d in derivs if d not in known}, key=sp.default_sort_key
+            ):
+                self._derivative_param(obj, what)
+        if funcs:
+            for obj in sorted(
+                {f for f in funcs if f not in known}, key=sp.default_sort_key
+            ):
+                self._param(obj)
+        if syms:
+            # the new parameters among the symbols (the known ones, the
+            # dummies and T stay, t becomes T), in the general path's order
+            fresh = {
+                sym
+                for sym in syms
+                if sym not in known
+                and sym not in self._dummies
+                and sym is not self.time
+            }
+            for sym in sorted(fresh, key=sp.default_sort_key):
+                if sym != t:
+                    self._param(sym)
         # One memo for every definition: each rule maps an object as
         # ``known`` does (or leaves a dummy, T, as it is), and a part that
         # the renaming reaches holds its objects at the same level in any
@@ -303,6 +317,29 @@ class _Slots:
 
     def label(self, obj: Any) -> str:
         return label_of(obj, self.job.names)
+
+
+#: what :meth:`_Slots._definition` does with a part (:func:`_part_kind`)
+_WALKED, _INTERMEDIATE, _DERIVATIVE, _FUNCTION, _SYMBOL, _ATOM = range(6)
+
+
+def _part_kind(cls: type) -> int:
+    """What :meth:`_Slots._definition` does with a part of class ``cls``:
+    an intermediate, a derivative, a function of time and a symbol are
+    noted, another atom left, anything else walked into (the tests
+    :meth:`_Slots._definition` made of each part, in their order, asked
+    once per class)."""
+    if issubclass(cls, autoz.Intermediate):
+        return _INTERMEDIATE
+    if issubclass(cls, sp.Derivative):
+        return _DERIVATIVE
+    if issubclass(cls, AppliedUndef):
+        return _FUNCTION
+    if cls.is_Symbol:
+        return _SYMBOL
+    if cls.is_Atom:
+        return _ATOM
+    return _WALKED
 
 
 def renamed(expr: Any, rule: Mapping[Any, Any], memo: dict | None = None) -> Any:
