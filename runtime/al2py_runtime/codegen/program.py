@@ -720,9 +720,7 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
         elif a.is_Number:
             if number is not None:
                 return None
-            if a is not _MINUS_ONE and (
-                not a.is_finite or a == 0 or (mul and a == 1)
-            ):
+            if a is not _MINUS_ONE and (not a.is_finite or a == 0 or (mul and a == 1)):
                 return None
             number = a
             continue
