@@ -99,12 +99,15 @@ def _name(symbol: Any) -> str:
     return symbol.name
 
 
-def _code(printer: Any, expr: Any, target: str) -> str:
+def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:
+    """The statement ``target = expr`` (``symbol``: the target's, when the
+    program has it: assigned to as the name ``target`` is)."""
     found = printer.statements.get((expr, target))
     if found is not None:
         return found
+    to = target if symbol is None else symbol
     try:
-        text = printer.doprint(sp.sympify(expr), assign_to=target)
+        text = printer.doprint(sp.sympify(expr), assign_to=to)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
         what = str(exc).split("\n")[0]
         raise NumericsError(f"MATLAB cannot print {expr}: {what}") from None
@@ -131,7 +134,7 @@ def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
             lines.append(f"  {a.target[2]} = ud({a.target[1] + 1});")
             continue
         target = one_based_target(a)
-        lines.append("  " + _code(printer, a.expr, target))
+        lines.append("  " + _code(printer, a.expr, target, a.symbol))
     if block is program.eqns and program.solve_at == len(block) and n:
         lines += solve
     return lines

@@ -162,12 +162,13 @@ class ProgramPrinter:
     def is_plain(self, expr: Any, assign_to: Any) -> bool:
         """Whether ``doprint(expr, assign_to)`` is printed here: a sum,
         product or name holding none of ``re``, ``IndexedBase`` and number
-        constants, assigned to nothing, a name or a symbol."""
-        return (
-            type(expr) in self._own
-            and (assign_to is None or isinstance(assign_to, str | sp.Symbol))
-            and not holds_instance(expr, _SPECIAL, self._special)
-        )
+        constants, or an integer (``out(3) = 0``: its text is the same at
+        any depth), assigned to nothing, a name or a symbol."""
+        if assign_to is not None and not isinstance(assign_to, str | sp.Symbol):
+            return False
+        if type(expr) in self._own:
+            return not holds_instance(expr, _SPECIAL, self._special)
+        return isinstance(expr, sp.Integer)
 
 
 class Remembering(ProgramPrinter):

@@ -230,6 +230,9 @@ class Assign:
 
     target: tuple
     expr: Any
+    #: a ``("tmp", name)`` target's symbol, when the program has it (the
+    #: printers assign to it rather than form it again)
+    symbol: Any = field(default=None, compare=False, repr=False)
 
 
 @dataclass
@@ -836,7 +839,7 @@ def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assi
     if not names:
         return []
     used = _free([sp.sympify(a.expr) for a in block], [], memo)
-    return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
+    return [Assign(("tmp", s.name), sp.Integer(0), s) for s in names if s in used]
 
 
 def iter_names(prefix: str, taken: set[str]) -> Any:
@@ -875,14 +878,14 @@ def assignments(
     defined = set(defined)
     for s, body in backends.needed(inter, exprs, memo):
         if s not in defined:
-            out.append(Assign(("tmp", s.name), body))
+            out.append(Assign(("tmp", s.name), body, s))
             defined.add(s)
     if exprs:
         temps, reduced = sp.cse(
             exprs, symbols=(sp.Symbol(x, real=True) for x in names), order="none"
         )
         for s, e in temps:
-            out.append(Assign(("tmp", s.name), e))
+            out.append(Assign(("tmp", s.name), e, s))
             defined.add(s)
         for target, e in zip(targets, reduced, strict=True):
             out.append(Assign(target, e))
