@@ -182,7 +182,12 @@ class _Slots:
             book = next(iter(zs)).book
             expr = book.rebase(expr)
             for z in book.ordered([expr], self.known):
-                body = self._definition(book.definition(z), what)
+                definition = book.definition(z)
+                if self.deferred and self._variables_known(z):
+                    # its walk would find only known objects (see there)
+                    body = Deferred(definition, self.known, self.time)
+                else:
+                    body = self._definition(definition, what)
                 d = sp.Dummy(f"z{len(self.intermediates)}")
                 self.known[z] = d
                 self._dummies.add(d)
@@ -208,6 +213,27 @@ class _Slots:
         if expr.has(sp.Derivative):
             raise NumericsError(f"{self.job.where}: cannot evaluate {what}")
         return expr
+
+    def _variables_known(self, z: Any) -> bool:
+        """Whether every object in ``z``'s definition is known: then
+        :meth:`_definition`'s walk of a deferred definition would make no
+        parameter and take no other path (the intermediates it holds come
+        before it, :meth:`~..intermediates.autoz.Intermediates.ordered`).
+
+        An intermediate's arguments after its number are the variables its
+        definition depends on (derivatives, functions of time and symbols,
+        each outside the others, its intermediates' too: the book's
+        ``_walk``), or, taken at other arguments, what stands for them: so
+        when each is a known object, and a function of time among them is
+        one of symbols (its arguments hold nothing the walk would note),
+        the walk meets only known objects (and ``t``, which it leaves)."""
+        known = self.known
+        for a in z.args[1:]:
+            if a not in known:
+                return False
+            if isinstance(a, AppliedUndef) and not all(x.is_Symbol for x in a.args):
+                return False
+        return True
 
     def _definition(self, body: Any, what: str) -> Any:
         """:meth:`numeric` of an intermediate's definition, in one walk.
