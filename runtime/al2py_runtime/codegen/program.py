@@ -641,8 +641,8 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None)
 def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
     """``e`` renamed by ``rule`` and whether it changed
     (:func:`renamed_evaluated`)."""
-    found = rule.get(e)
-    if found is not None or e in rule:
+    found = rule.get(e, _ABSENT)
+    if found is not _ABSENT:
         return found, True
     if e.is_Atom:
         return e, False
@@ -675,6 +675,8 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
 
 #: the key in :func:`renamed_evaluated`'s memo of the parts formed
 _SAME = ("renamed_evaluated", "formed parts")
+#: what ``rule.get`` gives for a part not in the rule
+_ABSENT = object()
 
 
 def _sorted_only(expr: Any, args: list[Any]) -> Any:

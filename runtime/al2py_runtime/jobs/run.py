@@ -162,6 +162,8 @@ class _Slots:
         self._renamed: dict[Any, Any] = {}
         #: what :meth:`_definition` does with a part of each class met
         self._kinds: dict[type, int] = {}
+        #: the known variables of intermediates (:meth:`_variables_known`)
+        self._variables: set[Any] = set()
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -227,12 +229,15 @@ class _Slots:
         when each is a known object, and a function of time among them is
         one of symbols (its arguments hold nothing the walk would note),
         the walk meets only known objects (and ``t``, which it leaves)."""
-        known = self.known
+        known, seen = self.known, self._variables
         for a in z.args[1:]:
+            if a in seen:
+                continue
             if a not in known:
                 return False
             if isinstance(a, AppliedUndef) and not all(x.is_Symbol for x in a.args):
                 return False
+            seen.add(a)  # known for good (``known`` only grows)
         return True
 
     def _definition(self, body: Any, what: str) -> Any:
