@@ -40,7 +40,7 @@ class _Printer(Remembering, OctaveCodePrinter):
         # and sort keys remembered
         order = None if self.order in ("old", "none") else self.remembered_factors
         names = backends.signed_names(expr) if order is not None else None
-        if names is not None and all(a.is_commutative for a in names[1]):
+        if names is not None and _commute(names[1]):
             # names alone, or -1 and names (most products): ordered by name
             # (remembered_factors), each as it is, joined by .*
             ordered = sorted(names[1], key=_name)
@@ -97,6 +97,14 @@ class _Printer(Remembering, OctaveCodePrinter):
 
 def _name(symbol: Any) -> str:
     return symbol.name
+
+
+def _commute(names: tuple) -> bool:
+    """Whether all of ``names`` commute."""
+    for a in names:
+        if not a.is_commutative:
+            return False
+    return True
 
 
 def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:

@@ -241,6 +241,8 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
+            if type(a) is _NAME and not _NAME_HELD.get(kinds, True):
+                continue  # a name (most arguments), not one of kinds
             if isinstance(a, sp.Atom):
                 held = isinstance(a, kinds)  # (an atom's answer is not kept)
             else:
@@ -252,6 +254,12 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
                 break
     memo[expr] = found
     return found
+
+
+_NAME = sp.Symbol
+#: whether a name is one of the kinds :func:`holds_instance` is asked of
+#: (the printers ask of ``_SPECIAL`` alone)
+_NAME_HELD = {_SPECIAL: issubclass(sp.Symbol, _SPECIAL)}
 
 
 def _complex(x: Any, memo: dict) -> complex:
