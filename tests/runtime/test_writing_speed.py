@@ -124,6 +124,14 @@ def test_renamed_unevaluated_parts_are_xreplaces():
         _same(e, rule)
 
 
+def test_names_that_do_not_commute_keep_their_order():
+    a, b = OBJECTS[:2]
+    p, q = sp.symbols("p q", commutative=False)
+    rule = {a: NAMES[0], b: NAMES[1], p: sp.Symbol("n1", commutative=False)}
+    for e in (a * q, -a * q, q * a, p * q, q * p, -p * q, a * b * q, b * p + a * q):
+        _same(e, rule)
+
+
 def test_objects_renamed_to_one_name_combine():
     """Not a renaming: terms and factors that become equal combine, as
     sympy's evaluation combines them."""

@@ -704,7 +704,12 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
     sympy's key, the number first.
 
     A name (most factors) and a sum's product (most terms) are asked only
-    what these conditions ask of them, first."""
+    what these conditions ask of them, first; a product of two names (or
+    of -1 and two names: most of a program's products) at once."""
+    if mul:
+        pair = _two_names(args)
+        if pair is not None:
+            return pair
     number = None
     rest = []
     keys: list[Any] = []
@@ -752,6 +757,25 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
     if number is not None:
         rest.insert(0, number)
     return rest
+
+
+def _two_names(args: list[Any]) -> list[Any] | None:
+    """:func:`_kept_args` of a product's arguments that are two names of
+    different spellings (so not equal) that commute, after -1 or not;
+    else None (:func:`_kept_args` decides)."""
+    if len(args) == 2:
+        first, a, b = None, args[0], args[1]
+    elif len(args) == 3 and args[0] is _MINUS_ONE:
+        first, a, b = args
+    else:
+        return None
+    if type(a) is not _NAME or type(b) is not _NAME or a.name == b.name:
+        return None
+    if not (a.is_commutative and b.is_commutative):
+        return None
+    if a.compare(b) > 0:  # sympy's key, once
+        a, b = b, a
+    return [a, b] if first is None else [first, a, b]
 
 
 _NAME = sp.Symbol
