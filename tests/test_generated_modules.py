@@ -168,22 +168,20 @@ def test_module_runs_as_a_script(path, tmp_path):
 
 def test_import_leaves_the_process_as_it_found_it(tmp_path):
     """While a module derives, the garbage collector's thresholds are raised;
-    the import puts them back, also when it fails, and leaves sympy's cache
-    empty (the derivation's passing expressions are not kept)."""
+    the import puts them back, also when it fails.  sympy's cache is left as
+    the derivation leaves it, as after any sympy work: emptying it freed its
+    expressions one by one (a third of a second of DAS3's import) and gave
+    back no memory (docs/performance.md)."""
     result = _converted_or_skip_unsupported(SHARED / "tutor6.al")
     (tmp_path / f"{result.module}.py").write_text(result.code)
     broken = result.code.replace("al.names()", "1 / 0\nal.names()", 1)
     assert broken != result.code
     (tmp_path / "broken.py").write_text(broken)
     probe = f"""
-import gc, sympy
-from sympy.core.cache import CACHE
+import gc
 gc.set_threshold(900, 11, 12)
-sympy.sin(sympy.Symbol("x")) + 1
-assert sum(f.cache_info().currsize for f in CACHE) > 0
 import {result.module}
 assert gc.get_threshold() == (900, 11, 12), gc.get_threshold()
-assert sum(f.cache_info().currsize for f in CACHE) == 0
 try:
     import broken
 except ZeroDivisionError:

@@ -23,7 +23,7 @@ from sympy.physics.vector import Dyadic, Vector
 
 from . import walks
 from .matrices import as_matrix
-from .model.kinematics import is_small, vmap
+from .model.kinematics import is_small
 
 __all__ = [
     "expand",
@@ -54,7 +54,7 @@ def _elementwise(func: Callable[[sp.Expr], sp.Expr], y: Any) -> Any:
     """Apply ``func`` to ``y``, to each element of a matrix ``y``, or to each
     measure number of a vector or dyadic ``y`` (``Replace(W_DA_N>, ...)``)."""
     if isinstance(y, sp.MatrixBase | Vector | Dyadic):
-        return vmap(y, func)
+        return walks.vmap(y, func)
     return func(sp.sympify(y))
 
 

@@ -10,6 +10,8 @@ arguments, kept) is answered from that set rather than walked.  Each gives sympy
 answer for a part depends only on the part (sympy's ``==``, which the
 memo's lookup uses, is structural), and parts are rebuilt exactly when
 sympy rebuilds them.
+
+:func:`vmap` maps a function over the scalars of a vector, dyadic or matrix.
 """
 
 from __future__ import annotations
@@ -19,8 +21,9 @@ from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
+from sympy.physics.vector import Dyadic, Vector
 
-__all__ = ["appearing", "atoms", "replace", "xreplace"]
+__all__ = ["appearing", "atoms", "replace", "vmap", "xreplace"]
 
 
 def allow_deep_recursion() -> None:
@@ -179,3 +182,17 @@ def atoms(expr: Any, *types: type) -> set:
                 seen.add(a)
                 stack.append(a)
     return found
+
+
+def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
+    """Apply ``f`` to every scalar of a Vector, Dyadic, Matrix or scalar."""
+    if isinstance(x, Vector):
+        return Vector([(m.applyfunc(f), frame) for m, frame in x.args])
+    if isinstance(x, Dyadic):
+        out = Dyadic(0)
+        for c, a, b in x.args:
+            out += f(c) * (a | b)
+        return out
+    if isinstance(x, sp.MatrixBase):
+        return sp.Matrix(x).applyfunc(f)
+    return f(x)

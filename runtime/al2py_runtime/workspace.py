@@ -28,14 +28,13 @@ from dataclasses import replace
 from typing import Any
 
 import sympy as sp
-from sympy.core.cache import clear_cache
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, collector, matrices, progress, walks
 from .jobs.numerics import Numerics
-from .model.kinematics import doit_derivatives, is_small, one_or_tuple, vmap
+from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
@@ -574,9 +573,7 @@ class Workspace(Mapping):
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
         if _is_vectorial(value):
-            from .model.kinematics import vmap
-
-            return vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
+            return walks.vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
         if isinstance(value, list | tuple):
             if any(_is_vectorial(v) for v in value):
                 return tuple(self.normalize(v, rearrange=rearrange) for v in value)
@@ -730,10 +727,6 @@ class Workspace(Mapping):
         self._watch.stop()
         if self._collector is not None:
             self._collector.restore()
-            # sympy's cache now holds the derivation's passing expressions
-            # (its least recently used calls): freed here rather than kept
-            # for the process's life, which also shortens its exit
-            clear_cache()
             # the derived model lives as long as its module: moved out of
             # the collector's sight (``gc.freeze``), so that no later
             # collection -- nor the several at the process's exit, a
@@ -786,22 +779,17 @@ class Workspace(Mapping):
         # the printer's memos make many small objects that all stay: the
         # garbage collector, run at its default pace, walks them again and
         # again (a fifth of the printing) and finds nothing
-        try:
-            with (
-                collector.Quiet(),
-                progress.task("printing the transcript", unit="responses") as task,
-            ):
-                task.doing("naming intermediates")
-                shown = self._with_intermediates(self.responses)
-                task.doing("")
-                task.update(0, len(shown))
-                out = transcript_lines(
-                    lines, shown, self.model.displayed, tick=task.advance
-                )
-        finally:
-            # as after deriving: sympy's cache now holds the printing's
-            # passing expressions, freed here rather than at the exit
-            clear_cache()
+        with (
+            collector.Quiet(),
+            progress.task("printing the transcript", unit="responses") as task,
+        ):
+            task.doing("naming intermediates")
+            shown = self._with_intermediates(self.responses)
+            task.doing("")
+            task.update(0, len(shown))
+            out = transcript_lines(
+                lines, shown, self.model.displayed, tick=task.advance
+            )
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 
@@ -1275,7 +1263,7 @@ def _named_for_display(book: Any, value: Any) -> Any:
 
     if not isinstance(value, sp.Basic | sp.MatrixBase | Vector | Dyadic):
         return value
-    return vmap(value, one)
+    return walks.vmap(value, one)
 
 
 class _Partial:

@@ -52,7 +52,7 @@ from sympy.physics.vector import dynamicsymbols
 
 from ..linear import linear_terms
 from ..vocabulary import complex_functions
-from ..walks import allow_deep_recursion, appearing, atoms, xreplace
+from ..walks import allow_deep_recursion, appearing, atoms, vmap, xreplace
 from .elimination import eliminate
 
 __all__ = [
@@ -2722,8 +2722,6 @@ class Intermediates:
     def expand(self, expr: Any) -> Any:
         """``expr`` with every intermediate replaced by what it stands for
         (a matrix or vector: each element)."""
-        from ..model.kinematics import vmap
-
         if isinstance(expr, sp.MatrixBase):
             return expr.applyfunc(self.expand)
         if not isinstance(expr, sp.Basic):

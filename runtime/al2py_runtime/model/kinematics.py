@@ -25,6 +25,8 @@ from sympy.physics.vector import Dyadic, ReferenceFrame, Vector, dynamicsymbols
 from sympy.utilities.iterables import iterable
 
 from .. import walks
+from ..intermediates.autoz import Intermediate
+from ..walks import vmap
 
 __all__ = [
     "vmap",
@@ -116,20 +118,6 @@ def _zero_or(kind: type, x: Any, what: str) -> Any:
     raise TypeError(f"expected a {what}, not {x!r}")
 
 
-def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
-    """Apply ``f`` to every scalar of a Vector, Dyadic, Matrix or scalar."""
-    if isinstance(x, Vector):
-        return Vector([(m.applyfunc(f), frame) for m, frame in x.args])
-    if isinstance(x, Dyadic):
-        out = Dyadic(0)
-        for c, a, b in x.args:
-            out += f(c) * (a | b)
-        return out
-    if isinstance(x, sp.MatrixBase):
-        return sp.Matrix(x).applyfunc(f)
-    return f(x)
-
-
 def _row_times(row: list, b: sp.MatrixBase) -> list:
     """The entries of ``r * b`` for the row ``r`` of entries ``row``, as
     sympy sums them (``Add`` of the nonzero products), without its test
@@ -157,7 +145,7 @@ def _zero_times_is_zero(x: Any) -> bool:
 def _finite_intermediate(x: Any) -> bool:
     """An intermediate whose assumptions come from ``commutative`` and
     ``real`` only (:meth:`Intermediates.facts`): never known infinite."""
-    if not hasattr(x, "walk_parts"):  # (Intermediate's own method)
+    if not isinstance(x, Intermediate):
         return False
     args = x.args[1:]
     return (

@@ -16,7 +16,7 @@ from sympy.physics.vector import (
 from . import kinematics as kin
 from .state import SPEED_NAME, ModelPart, command, mentions, t
 
-__all__ = ["Speeds"]
+__all__ = ["LinearPartials", "Speeds"]
 
 
 class Speeds(ModelPart):
@@ -182,7 +182,10 @@ class Speeds(ModelPart):
         ``speeds``, with every other right-hand side substituted."""
         keep = speeds + [sp.Derivative(u, t) for u in speeds]
         v = self.actual_value(v, keep)
-        return [kin.vmap(v, lambda e, u=u: sp.diff(e, u)) for u in speeds]
+        partials = LinearPartials(speeds)
+        return [
+            kin.vmap(v, lambda e, k=k: partials.of(e)[k]) for k in range(len(speeds))
+        ]
 
     @command
     def partials(self, v: Any, *speeds: Any) -> Any:
@@ -204,3 +207,76 @@ class Speeds(ModelPart):
         return self.tidier.vector(
             kin.vmap(v, lambda e: e.xreplace(dict.fromkeys(speeds, 0)))
         )
+
+
+class LinearPartials:
+    """``sp.diff(e, u)`` for each of some speeds ``u``: the same
+    expressions, formed from one reading of ``e``'s terms.
+
+    A velocity's measure numbers are sums of products in which a speed is a
+    factor of its own (``L*u1*sin(q2)``).  sympy differentiates a sum term
+    by term, and a product ``c*u`` (``u`` in no other factor) by the Leibniz
+    rule (``Mul._eval_derivative_n_times``): every other factor's
+    derivative is 0, so the derivative is the product of the other
+    factors, ``Mul(*others)``, and the sum's is the ``Add`` of those.  Each
+    term is read once for all the speeds.  A speed met anywhere else (a
+    power, inside a function, a sum or a derivative) is left to
+    ``sp.diff``, for that speed only.
+
+    >>> from sympy.physics.vector import dynamicsymbols
+    >>> u1, u2, q = dynamicsymbols("u1 u2 q")
+    >>> e = 2 * u1 * sp.sin(q) + u2 * (u1 + q) + q
+    >>> LinearPartials([u1, u2]).of(e) == [sp.diff(e, u1), sp.diff(e, u2)]
+    True
+    """
+
+    __slots__ = ("_index", "_speeds", "_held", "_done")
+
+    def __init__(self, speeds: list) -> None:
+        self._speeds = list(speeds)
+        self._index = {u: k for k, u in enumerate(self._speeds)}
+        #: a factor -> the numbers of the speeds it holds (not as itself)
+        self._held: dict[Any, frozenset[int]] = {}
+        #: an expression -> its partials
+        self._done: dict[Any, list[Any]] = {}
+
+    def of(self, e: Any) -> list[Any]:
+        """``[sp.diff(e, u) for u in speeds]``."""
+        e = sp.sympify(e)
+        found = self._done.get(e)
+        if found is None:
+            found = self._done[e] = self._partials(e)
+        return found
+
+    def _partials(self, e: Any) -> list[Any]:
+        index = self._index
+        parts: list[list[Any]] = [[] for _ in self._speeds]
+        slow: set[int] = set()
+        for term in e.args if e.is_Add else (e,):
+            factors = term.args if term.is_Mul else (term,)
+            direct = []
+            inside: set[int] = set()
+            for i, f in enumerate(factors):
+                k = index.get(f)
+                if k is not None:
+                    direct.append((i, k))
+                else:
+                    inside |= self._holds(f)
+            slow |= inside  # (their terms below are then not used)
+            for i, k in direct:
+                parts[k].append(sp.Mul(*factors[:i], *factors[i + 1 :]))
+        return [
+            sp.diff(e, u) if k in slow else sp.Add(*parts[k])
+            for k, u in enumerate(self._speeds)
+        ]
+
+    def _holds(self, f: Any) -> frozenset[int]:
+        """The numbers of the speeds anywhere in ``f``."""
+        found = self._held.get(f)
+        if found is None:
+            k = self._index.get(f)
+            out: set[int] = set() if k is None else {k}
+            for a in f.args:
+                out |= self._holds(a)
+            found = self._held[f] = frozenset(out)
+        return found
