@@ -509,16 +509,16 @@ class Workspace(Mapping):
                 self.table.by_obj[sym] = key.name
             sym = entry.obj
             old = self.table.rhs.get(sym)
-            if old is not None and isinstance(value, sp.Basic) and value.has(sym):
+            if walks.appearing(value, [sym]):  # (shared parts walked once)
+                if old is None:
+                    raise ValueError(f"{key.name} is defined in terms of itself")
                 value = value.xreplace({sym: old})
-            elif isinstance(value, sp.Basic) and value.has(sym):
-                raise ValueError(f"{key.name} is defined in terms of itself")
             self.table.set_rhs(sym, value)
             return sym
         if entry.kind in OBJECT_DECLS:
             raise ValueError(f"{key.name} is a {entry.kind}, not a scalar")
         rkey = self.table.rhs_key(key.name, key.primes)
-        if isinstance(value, sp.Basic) and value.has(rkey) and rkey in self.table.rhs:
+        if rkey in self.table.rhs and walks.appearing(value, [rkey]):
             value = value.xreplace({rkey: self.table.rhs[rkey]})
         if key.primes > entry.order:
             entry.order = key.primes

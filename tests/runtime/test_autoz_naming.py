@@ -403,3 +403,147 @@ def test_ordering_keeps_no_book_alive():
     sp.core.cache.clear_cache()
     gc.collect()
     assert gone() is None
+
+
+# ----------------------------------------------- what naming keeps (i35z)
+
+
+def _fresh(z):
+    """An instance equal to ``z``, made anew (not sympy's cached one): no
+    hash and no facts kept on it yet."""
+    return sp.Basic.__new__(type(z), *z.args)
+
+
+def _hash_mismatches(book, zs) -> int:
+    """How many intermediates hash otherwise than equal instances made
+    anew, or are not found by them in a dict."""
+    bad = 0
+    for z in zs:
+        other = _fresh(z)
+        assert other == z and other is not z
+        if hash(other) != hash(z) or {z: 1}.get(other) != 1:
+            bad += 1
+    return bad
+
+
+def test_equal_intermediates_hash_alike(pool):
+    """An intermediate at its own variables hashes its number and its kept
+    set of variables: an equal instance made by sympy (or anew) hashes
+    alike, whether it was hashed before its facts were kept or after; an
+    intermediate taken elsewhere hashes as sympy's ``Basic.__hash__``."""
+    _, book, parts, stray = pool
+    zs = [book.Z(k, *book.canonical(k)[0]) for k in range(1, len(book) + 1)]
+    zs += [p for p in parts if isinstance(p, book.Z)]
+    assert _hash_mismatches(book, zs) == 0
+    for z in zs:
+        assert hash(z) == hash(
+            (type(z).__name__, z.args[0].p, book._varsets[z.args[0].p])
+        )
+    strays = [
+        e for s in stray for e in autoz.atoms(s, book.Z) if not book._canonical(e)
+    ]
+    assert strays
+    for z in strays:
+        other = _fresh(z)
+        assert hash(other) == hash((type(z).__name__,) + z._hashable_content())
+        assert hash(other) == hash(z)
+
+
+def test_the_check_finds_a_wrong_hash(pool, monkeypatch):
+    """Instances made by sympy that hash as sympy's (not told they are at
+    their own variables) are told apart from the book's own."""
+    _, book, _, _ = pool
+    zs = [book.Z(k, *book.canonical(k)[0]) for k in range(1, len(book) + 1)]
+    for z in zs:
+        hash(z)
+    monkeypatch.setattr(Intermediates, "own_variables", lambda self, z: None)
+    assert _hash_mismatches(book, zs) > 20
+
+
+def _nodes(book, e) -> int:
+    """Tree nodes as ``_split`` counts them (:func:`_tree_size`)."""
+    return _tree_size(book, e)
+
+
+def test_within_counts_the_tree(pool):
+    """``_within(e, limit)``, which counts an expression's leaves when it
+    meets their parent, is ``_split``'s count of tree nodes against the
+    limit, for every part of random expressions and every limit near it."""
+    book, cases = _cases(pool, 150)
+    seen = 0
+    for e in cases:
+        for part in sp.preorder_traversal(e):
+            n = _nodes(book, part)
+            for limit in {0, 1, n - 2, n - 1, n, n + 1, book.LIMIT}:
+                if limit >= 0:
+                    assert book._within(part, limit) == (n <= limit), (part, limit)
+                    seen += 1
+    assert seen > 2000
+
+
+def _sets_made_anew(book, cases) -> tuple[int, int]:
+    """How many of the sets of variables ``_walk`` finds in ``cases`` are
+    another object when met again (another way), and how many were
+    checked; each holds exactly what sympy finds."""
+    anew = met = 0
+    for e in cases:
+        variables, derivatives, bad, _ = book._walk(e)
+        if bad or not isinstance(variables, frozenset):
+            continue
+        assert variables == _variables(e)
+        assert derivatives == {x for x in variables if isinstance(x, sp.Derivative)}
+        again = book._walk(sp.Add(e, 1, evaluate=False))[0]
+        anew += again is not variables
+        anew += book._shared_variables(set(variables))[1] is not variables
+        met += 1
+    for k in range(1, len(book) + 1):
+        own = book._varsets[k]
+        anew += book._union({own})[0] is not own
+        anew += book._shared_variables(set(own))[1] is not own
+    return anew, met
+
+
+def test_a_set_of_variables_is_one_object(pool):
+    """The sets of variables the walk finds are the book's kept objects:
+    an intermediate's own, a union of several intermediates' (kept once per
+    combination), and a union with variables outside them are the same
+    object whichever way they are met (by ``_walk`` or by
+    ``_shared_variables``), and hold exactly what sympy finds."""
+    book, cases = _cases(pool, 300)
+    anew, met = _sets_made_anew(book, cases)
+    assert anew == 0 and met > 100
+
+
+def test_the_check_finds_sets_made_anew(pool, monkeypatch):
+    """Without one kept object per set, equal sets met two ways are two
+    objects, and are told apart."""
+    _, book, _, _ = pool
+    monkeypatch.setattr(Intermediates, "_one_set", lambda self, v: v)
+    for kept in ["_unions", "_mets", "_orders"]:
+        monkeypatch.setattr(book, kept, dict(getattr(book, kept)))
+        getattr(book, kept).clear()
+    # (the intermediates' own sets stay the keys of their order)
+    for k in range(1, len(book) + 1):
+        book._shared_variables(book._varsets[k])
+    book, cases = _cases(pool, 300)
+    anew, met = _sets_made_anew(book, cases)
+    assert anew > 50 and met > 100
+
+
+def test_the_rates_check_follows_the_rates(pool):
+    """``_all_rates`` is ``derivatives <= rates``, also after the rates
+    change (its answers are kept per set of rates)."""
+    _, book, _, _ = pool
+    sets = {d for _, d in book._unions.values() if d}
+    sets |= {frozenset([q1.diff(t)]), frozenset([q1.diff(t), q3.diff(t)])}
+    assert len(sets) > 3
+    before = book.rates
+    try:
+        for rates in [before, frozenset([q1.diff(t)]), frozenset(), before]:
+            book.rates = rates
+            answers = [book._all_rates(d) for d in sets]
+            assert answers == [d <= rates for d in sets]
+            assert answers == [book._all_rates(set(d)) for d in sets]
+        assert any(d <= before for d in sets) and not all(d <= before for d in sets)
+    finally:
+        book.rates = before

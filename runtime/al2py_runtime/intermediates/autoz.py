@@ -179,6 +179,25 @@ class Intermediate(sp.Function):
     def _eval_is_real(self) -> bool | None:
         return self.book.is_real(self)
 
+    def __hash__(self) -> int:
+        """sympy's hash is of the class's name and every argument (one call
+        of each argument's ``__hash__``: 45 for an intermediate over 45
+        variables, the most of any object a partial derivative makes).
+        An intermediate at its own variables hashes its class's name, its
+        number and its book's set of its variables (one object, which
+        keeps its hash); any other instance hashes as sympy's.  Equal
+        instances have equal arguments, so both are at the intermediate's
+        own variables or neither: they hash alike."""
+        h = self._mhash
+        if h is None:
+            varset = self.__dict__.get("_varset")
+            if varset is None:
+                varset = self.book.own_variables(self)
+            if varset is None:
+                return super().__hash__()
+            h = self._mhash = hash((type(self).__name__, self.args[0].p, varset))
+        return h
+
     # sympy's assumption properties, answered from the book's one table of
     # facts for the intermediate's number (Intermediates.facts) when it has
     # one; ``is_commutative`` is found once per instance.
@@ -639,7 +658,11 @@ def _compare(a: Any, b: Any) -> int:
         if na != nb:
             if not isinstance(b, sp.Basic):
                 return -1
-            return 1 if _class_place(na) > _class_place(nb) else -1
+            # (_class_place, without the calls once both are known)
+            pa, pb = _PLACES.get(na), _PLACES.get(nb)
+            if pa is None or pb is None:
+                pa, pb = _class_place(na), _class_place(nb)
+            return 1 if pa > pb else -1
     elif ta.compare is _Z_COMPARE:
         x, y = a.args, b.args
         if len(x) != len(y):
@@ -831,7 +854,11 @@ def _sort_by_compare(items: list) -> None:
 def _product(args: Sequence[Any]) -> Any:
     """A product of commutative arguments already in sympy's canonical form
     and order (``Mul._from_args``, told they commute)."""
-    return sp.Mul._from_args(args, is_commutative=True)
+    return _MUL_FROM_ARGS(args, True)
+
+
+#: ``Mul._from_args``, looked up once (called for every product formed)
+_MUL_FROM_ARGS = sp.Mul._from_args
 
 
 def _plain_base(a: Any) -> Any:
@@ -1249,6 +1276,15 @@ class Intermediates:
         #: sets of variables of intermediates -> (their union, the
         #: derivatives among them), for :meth:`_scan`
         self._unions: dict[frozenset, tuple[frozenset, frozenset]] = {}
+        #: a set of variables -> the one object kept for it (:meth:`_one_set`)
+        self._sets: dict[frozenset, frozenset] = {}
+        #: (variables outside intermediates, the intermediates' union) ->
+        #: :meth:`_met`'s answer
+        self._mets: dict[tuple, tuple[frozenset, frozenset]] = {}
+        #: a set of derivatives -> whether all are :attr:`rates` (for the
+        #: rates :attr:`_rated_for`; reset when they change)
+        self._rated: dict[frozenset, bool] = {}
+        self._rated_for: frozenset | None = None
 
     def __len__(self) -> int:
         return len(self._defs) - 1
@@ -1291,7 +1327,7 @@ class Intermediates:
         when the caller knows it (it holds while no part is split off), and
         ``short``: no part of ``expr`` has more than :attr:`LIMIT` nodes
         (:meth:`_split` leaves it as it is)."""
-        if derivatives and not derivatives <= self.rates:
+        if derivatives and not self._all_rates(derivatives):
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
             # ZEE_NOT: these quantities stay explicit (Kane(F1, F2) solves for
@@ -1314,6 +1350,21 @@ class Intermediates:
         if negative:
             return minus(self._name(minus(expr), variables))
         return self._new_name(expr, variables, original, split=False)
+
+    def _all_rates(self, derivatives: set | frozenset) -> bool:
+        """``derivatives <= self.rates``, kept per set of derivatives (most
+        are one of the book's kept sets, :meth:`_union`, found by
+        identity; a derivative may be an object equal to a rate's but
+        not the same, compared by sympy's ``__eq__``)."""
+        rates = self.rates
+        if type(derivatives) is not frozenset:
+            return derivatives <= rates
+        if self._rated_for is not rates:
+            self._rated, self._rated_for = {}, rates
+        found = self._rated.get(derivatives)
+        if found is None:
+            found = self._rated[derivatives] = derivatives <= rates
+        return found
 
     def _in_parts(self, expr: Any) -> tuple[Any, Any, Any]:
         """``expr`` named in parts (:meth:`_split`), so that a derivative or
@@ -1411,15 +1462,20 @@ class Intermediates:
         counts them (an intermediate, a function of time or a derivative is
         one node), counting no further than ``limit + 1``."""
         one = self._one_node
+        if e.is_Atom or isinstance(e, one):
+            return limit >= 1
+        # a node's arguments are counted when it is met, and only those
+        # with arguments of their own are stacked (most are leaves)
         stack = [e]
-        n = 0
+        n = 1
         while stack:
-            x = stack.pop()
-            n += 1
+            args = stack.pop().args
+            n += len(args)
             if n > limit:
                 return False
-            if not (x.is_Atom or isinstance(x, one)):
-                stack.extend(x.args)
+            for a in args:
+                if not (a.is_Atom or isinstance(a, one)):
+                    stack.append(a)
         return True
 
     def time_rate(self, x: Any) -> Any:
@@ -1429,6 +1485,22 @@ class Intermediates:
         if found is _UNKNOWN:
             found = self._time_rates[x] = x.diff(_T) if x.has(_T) else None
         return found
+
+    def own_variables(self, z: Intermediate) -> frozenset | None:
+        """The set of variables of ``z``'s intermediate if ``z`` is taken at
+        its own variables (kept on the instance), else None (for
+        :meth:`Intermediate.__hash__`: also for an instance whose first
+        argument is not the number of one of the book's intermediates)."""
+        args = z.args
+        first = args[0] if args else None
+        if not (
+            first is not None and first.is_Integer and 0 < first.p < len(self._defs)
+        ):
+            return None
+        if not self._canonical(z):
+            return None
+        varset = z.__dict__["_varset"] = self._varsets[first.p]
+        return varset
 
     def _canonical(self, z: Intermediate) -> bool:
         """Whether ``z`` is taken at its own variables (kept per instance:
@@ -1532,17 +1604,22 @@ class Intermediates:
         ``found`` outside the canonical intermediates (``among``: the
         derivatives among them) and those intermediates' sets of variables
         ``shared``."""
-        variables, derivatives = found, among
         if not shared:
-            return variables, derivatives
+            return found, among
         union, within = self._union(shared)
-        if not variables or variables <= union:
+        if not found or found <= union:
             # (the derivatives are among its own)
             return union, within
-        variables |= union
-        if within:
-            derivatives |= within
-        return variables, derivatives
+        # kept per combination (the union is one object per combination
+        # of sets, :meth:`_union`; ``among`` is the derivatives in
+        # ``found``): the sets returned are then one object for one set,
+        # which :meth:`_shared_variables` finds by identity
+        key = (frozenset(found), union)
+        met = self._mets.get(key)
+        if met is None:
+            variables = self._one_set(union | found)
+            met = self._mets[key] = (variables, within | among if among else within)
+        return met
 
     def _stray(self, expr: Any) -> list:
         """The intermediates in ``expr`` taken elsewhere than at their own
@@ -1577,14 +1654,23 @@ class Intermediates:
         key = frozenset(shared)
         found = self._unions.get(key)
         if found is None:
-            orders = self._orders
             if len(key) == 1:
                 (union,) = key
+                among = frozenset(self._orders[union][2])
             else:
-                union = frozenset().union(*key)
-            among = frozenset().union(*[orders[varset][2] for varset in key])
+                union = self._one_set(frozenset().union(*key))
+                # (the derivatives of each set, kept as a set: no hashing)
+                among = frozenset().union(*[self._union({s})[1] for s in key])
             found = self._unions[key] = (union, among)
         return found
+
+    def _one_set(self, variables: frozenset) -> frozenset:
+        """The one object kept for the set of variables ``variables``
+        (the first met): the book's dicts keyed by sets of variables then
+        find it by identity, without comparing its variables (a
+        derivative met twice may be two equal objects, compared by
+        sympy's ``__eq__``)."""
+        return self._sets.setdefault(variables, variables)
 
     def _shared_variables(self, variables: set) -> tuple[tuple, frozenset, tuple]:
         """``variables`` sorted by ``default_sort_key``, as a set, and the
@@ -1593,6 +1679,7 @@ class Intermediates:
         key = frozenset(variables)
         found = self._orders.get(key)
         if found is None:
+            key = self._one_set(key)
             ordered = tuple(sorted(variables, key=self._sort_key))
             derivatives = tuple(a for a in ordered if isinstance(a, sp.Derivative))
             found = self._orders[key] = (ordered, key, derivatives)

@@ -8,15 +8,17 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
+from sympy.core.function import AppliedUndef, ArgumentIndexError
 from sympy.physics.vector import (
     Dyadic,
     Vector,
 )
 
+from ..walks import allow_deep_recursion
 from . import kinematics as kin
 from .state import SPEED_NAME, ModelPart, command, mentions, t
 
-__all__ = ["LinearPartials", "Speeds"]
+__all__ = ["SpeedPartials", "Speeds"]
 
 
 class Speeds(ModelPart):
@@ -182,7 +184,7 @@ class Speeds(ModelPart):
         ``speeds``, with every other right-hand side substituted."""
         keep = speeds + [sp.Derivative(u, t) for u in speeds]
         v = self.actual_value(v, keep)
-        partials = LinearPartials(speeds)
+        partials = SpeedPartials(speeds)
         return [
             kin.vmap(v, lambda e, k=k: partials.of(e)[k]) for k in range(len(speeds))
         ]
@@ -209,66 +211,93 @@ class Speeds(ModelPart):
         )
 
 
-class LinearPartials:
-    """``sp.diff(e, u)`` for each of some speeds ``u``: the same
-    expressions, formed from one reading of ``e``'s terms.
+class SpeedPartials:
+    """``sp.diff(e, u)`` for each of some speeds ``u``: the same expressions,
+    each part of ``e`` differentiated once.
 
-    A velocity's measure numbers are sums of products in which a speed is a
-    factor of its own (``L*u1*sin(q2)``).  sympy differentiates a sum term
-    by term, and a product ``c*u`` (``u`` in no other factor) by the Leibniz
-    rule (``Mul._eval_derivative_n_times``): every other factor's
-    derivative is 0, so the derivative is the product of the other
-    factors, ``Mul(*others)``, and the sum's is the ``Add`` of those.  Each
-    term is read once for all the speeds.  A speed met anywhere else (a
-    power, inside a function, a sum or a derivative) is left to
-    ``sp.diff``, for that speed only.
+    sympy's ``diff`` by a function of time puts a dummy symbol for it,
+    walks the whole expression for each derivative it takes (``has``,
+    ``free_symbols``) and substitutes the function back; a velocity
+    resolved through dependent speeds (``Constrain``) shares large parts
+    that it differentiates again at each use.  Here each distinct part is
+    differentiated once per speed, and a part that holds no speed is 0 at
+    once.  A part is differentiated by sympy's own rules, with sympy's
+    constructors, so the result is sympy's expression: a sum term by term
+    (``Add._eval_derivative``), a product by the Leibniz rule
+    (``Mul._eval_derivative_n_times``: the sum of the products with one
+    factor differentiated), a power with a constant exponent as
+    ``Pow._eval_derivative`` (``b**x * (db*x/b)``), a function of one or
+    more arguments as ``Function._eval_derivative`` (``fdiff`` times the
+    argument's derivative).  Anything else that holds a speed (a
+    derivative, a function of time of a speed, a power with a speed in its
+    exponent) is left to ``sp.diff``.
 
     >>> from sympy.physics.vector import dynamicsymbols
     >>> u1, u2, q = dynamicsymbols("u1 u2 q")
-    >>> e = 2 * u1 * sp.sin(q) + u2 * (u1 + q) + q
-    >>> LinearPartials([u1, u2]).of(e) == [sp.diff(e, u1), sp.diff(e, u2)]
+    >>> e = 2 * u1 * sp.sin(q) + u2 * (u1 + q) ** 2 / (q + u1) + sp.cos(u2 * q)
+    >>> SpeedPartials([u1, u2]).of(e) == [sp.diff(e, u1), sp.diff(e, u2)]
     True
     """
 
-    __slots__ = ("_index", "_speeds", "_held", "_done")
+    __slots__ = ("_index", "_speeds", "_held", "_done", "_derived")
 
     def __init__(self, speeds: list) -> None:
         self._speeds = list(speeds)
         self._index = {u: k for k, u in enumerate(self._speeds)}
-        #: a factor -> the numbers of the speeds it holds (not as itself)
+        #: a part -> the numbers of the speeds anywhere in it
         self._held: dict[Any, frozenset[int]] = {}
         #: an expression -> its partials
         self._done: dict[Any, list[Any]] = {}
+        #: for each speed, a part -> its derivative
+        self._derived: list[dict[Any, Any]] = [{} for _ in self._speeds]
 
     def of(self, e: Any) -> list[Any]:
         """``[sp.diff(e, u) for u in speeds]``."""
         e = sp.sympify(e)
         found = self._done.get(e)
         if found is None:
-            found = self._done[e] = self._partials(e)
+            allow_deep_recursion()
+            found = [self._d(e, k) for k in range(len(self._speeds))]
+            self._done[e] = found
         return found
 
-    def _partials(self, e: Any) -> list[Any]:
-        index = self._index
-        parts: list[list[Any]] = [[] for _ in self._speeds]
-        slow: set[int] = set()
-        for term in e.args if e.is_Add else (e,):
-            factors = term.args if term.is_Mul else (term,)
-            direct = []
-            inside: set[int] = set()
-            for i, f in enumerate(factors):
-                k = index.get(f)
-                if k is not None:
-                    direct.append((i, k))
-                else:
-                    inside |= self._holds(f)
-            slow |= inside  # (their terms below are then not used)
-            for i, k in direct:
-                parts[k].append(sp.Mul(*factors[:i], *factors[i + 1 :]))
-        return [
-            sp.diff(e, u) if k in slow else sp.Add(*parts[k])
-            for k, u in enumerate(self._speeds)
-        ]
+    def _d(self, e: Any, k: int) -> Any:
+        """``sp.diff(e, speeds[k])``."""
+        if k not in self._holds(e):
+            return sp.S.Zero
+        memo = self._derived[k]
+        found = memo.get(e)
+        if found is None:
+            found = memo[e] = self._new_d(e, k)
+        return found
+
+    def _new_d(self, e: Any, k: int) -> Any:
+        if self._index.get(e) == k:
+            return sp.S.One
+        args = e.args
+        if e.is_Add:
+            return sp.Add(*[self._d(a, k) for a in args])
+        if e.is_Mul and not any(a.is_Number and not a.is_finite for a in args):
+            terms = []
+            for i, a in enumerate(args):
+                if k in self._holds(a):
+                    terms.append(sp.Mul(*args[:i], self._d(a, k), *args[i + 1 :]))
+            return sp.Add(*terms)
+        if e.is_Pow and k not in self._holds(e.exp):
+            base, x = args
+            return e * (self._d(base, k) * x / base)
+        if isinstance(e, sp.Function) and not isinstance(e, AppliedUndef):
+            terms = []
+            for i, a in enumerate(args, 1):
+                if k not in self._holds(a):
+                    continue  # (its derivative is 0)
+                try:
+                    df = e.fdiff(i)
+                except ArgumentIndexError:
+                    df = sp.Function.fdiff(e, i)
+                terms.append(df * self._d(a, k))
+            return sp.Add(*terms)
+        return sp.diff(e, self._speeds[k])
 
     def _holds(self, f: Any) -> frozenset[int]:
         """The numbers of the speeds anywhere in ``f``."""

@@ -1,7 +1,6 @@
-"""``LinearPartials`` (``model/speeds.py``): the partial velocities without
-AutoZ, one reading of each measure number for all the speeds, give exactly
-``sp.diff``'s expressions (same tree, same order), and take the short way
-for measure numbers linear in the speeds."""
+"""``SpeedPartials`` (``model/speeds.py``): the partial velocities without
+AutoZ, each part of a measure number differentiated once per speed, are
+exactly ``sp.diff``'s expressions (same tree, same order)."""
 
 from __future__ import annotations
 
@@ -9,7 +8,7 @@ import random
 
 import pytest
 import sympy as sp
-from al2py_runtime.model.speeds import LinearPartials
+from al2py_runtime.model.speeds import SpeedPartials
 from sympy.physics.vector import dynamicsymbols
 
 U = list(dynamicsymbols("u1:5"))
@@ -18,11 +17,11 @@ L, M = sp.symbols("l m")
 
 
 def _factor(rng: random.Random, depth: int, nonlinear: bool) -> sp.Expr:
-    """A random factor free of speeds, or (``nonlinear``) one that may
-    hold a speed the way the short way must decline (power, function,
-    sum, derivative)."""
-    pick = rng.randrange(8 if nonlinear else 6)
+    """A random factor free of speeds, or (``nonlinear``) one that may hold
+    a speed anywhere: in a power, a function, a sum or a derivative."""
+    pick = rng.randrange(13 if nonlinear else 6)
     q = rng.choice(Q)
+    u = rng.choice(U)
     if pick == 0:
         return sp.sin(q)
     if pick == 1:
@@ -36,8 +35,18 @@ def _factor(rng: random.Random, depth: int, nonlinear: bool) -> sp.Expr:
     if pick == 5:
         return q
     if pick == 6:
-        return rng.choice(U) ** 2
-    return rng.choice([sp.sin(rng.choice(U)), sp.Derivative(rng.choice(U), q.args[0])])
+        return u ** rng.choice([2, -1, sp.Rational(1, 2)])
+    if pick == 7:
+        return rng.choice([sp.sin, sp.cos, sp.exp, sp.tan])(u * q + L)
+    if pick == 8:
+        return sp.Derivative(u, q.args[0])
+    if pick == 9:
+        return rng.choice([u**q, q**u])
+    if pick == 10:
+        return sp.sqrt(L**2 + rng.choice(U) * u)
+    if pick == 11:
+        return sp.atan2(u, q + L)
+    return 1 / (q + u * L)
 
 
 def _term(rng: random.Random, depth: int, nonlinear: bool) -> sp.Expr:
@@ -59,7 +68,7 @@ def test_the_partials_are_sympys_diff(nonlinear):
     rng = random.Random(20261128 + nonlinear)
     exprs = [_expression(rng, nonlinear) for _ in range(150)]
     exprs += [sp.S.Zero, sp.S(3), U[0], 2 * U[1], L * U[0], U[0] * U[1], -U[2]]
-    partials = LinearPartials(U)
+    partials = SpeedPartials(U)
     for e in exprs:
         found = partials.of(e)
         assert len(found) == len(U)
@@ -67,23 +76,24 @@ def test_the_partials_are_sympys_diff(nonlinear):
             assert _same(d, sp.diff(e, u)), (e, u, d)
 
 
-def test_a_linear_measure_number_takes_the_short_way(monkeypatch):
-    """Linear in the speeds, nothing is left to ``sp.diff``; a speed inside
-    a function is, for that speed only."""
+def test_each_part_is_differentiated_here(monkeypatch):
+    """Sums, products, powers with constant exponents and functions are
+    differentiated here; only what the rules do not cover (a derivative, a
+    speed in an exponent) is left to ``sp.diff``, that part alone."""
     calls = []
     real = sp.diff
 
     def counted(e, u):
-        calls.append(u)
+        calls.append((e, u))
         return real(e, u)
 
     e = L * U[0] * sp.sin(Q[0]) + 2 * U[1] * U[0] * sp.cos(Q[1]) - M * U[2] + Q[2]
+    e += sp.sin(U[3] * Q[0]) * U[1] + sp.sqrt(1 + U[0] ** 2) / (Q[1] + U[2])
     expected = [real(e, u) for u in U]
     monkeypatch.setattr(sp, "diff", counted)
-    assert all(
-        _same(a, b) for a, b in zip(LinearPartials(U).of(e), expected, strict=True)
-    )
+    found = SpeedPartials(U).of(e)
+    assert all(_same(a, b) for a, b in zip(found, expected, strict=True))
     assert calls == []
-    f = e + sp.sin(U[3]) * U[1]
-    LinearPartials(U).of(f)
-    assert calls == [U[3]]
+    d = sp.Derivative(U[3], Q[0].args[0])
+    SpeedPartials(U).of(e + d * U[1])
+    assert calls == [(d, U[3])]
