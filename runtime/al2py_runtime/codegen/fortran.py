@@ -86,11 +86,15 @@ def _d(x: float) -> str:
     return repr(x).replace("e", "d") if "e" in repr(x) else f"{x!r}d0"
 
 
-def _code(printer: _Printer, expr: Any, target: str) -> list[str]:
+def _code(printer: _Printer, expr: Any, target: str, symbol: Any = None) -> list[str]:
+    """The statement ``target = expr`` (``symbol``: a name's, when the
+    program has it, the real symbol ``target`` names)."""
     found = printer.statements.get((expr, target))
     if found is not None:
         return list(found)
-    to: Any = target if "(" in target else sp.Symbol(target, real=True)
+    to: Any = symbol
+    if to is None:
+        to = target if "(" in target else sp.Symbol(target, real=True)
     try:
         text = printer.doprint(sp.sympify(expr), assign_to=to)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
@@ -169,7 +173,7 @@ def _steps(program: Program, block: list[Assign], printer: _Printer) -> list[_St
         target = one_based_target(a)
         uses = {s.name for s in program.free_symbols(a.expr)}
         defines = [a.target[1]] if kind == "tmp" else []
-        steps.append(_Step(_code(printer, a.expr, target), defines, uses, a))
+        steps.append(_Step(_code(printer, a.expr, target, a.symbol), defines, uses, a))
     if block is program.eqns and program.solve_at == len(block) and n:
         steps.append(_Step(list(solve), [], set(), None))
     return steps

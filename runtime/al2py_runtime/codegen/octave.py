@@ -40,7 +40,7 @@ class _Printer(Remembering, OctaveCodePrinter):
         # and sort keys remembered
         order = None if self.order in ("old", "none") else self.remembered_factors
         names = backends.signed_names(expr) if order is not None else None
-        if names is not None and all(a.is_commutative for a in names[1]):
+        if names is not None and _commute(names[1]):
             # names alone, or -1 and names (most products): ordered by name
             # (remembered_factors), each as it is, joined by .*
             ordered = sorted(names[1], key=_name)
@@ -99,12 +99,23 @@ def _name(symbol: Any) -> str:
     return symbol.name
 
 
-def _code(printer: Any, expr: Any, target: str) -> str:
+def _commute(names: tuple) -> bool:
+    """Whether all of ``names`` commute."""
+    for a in names:
+        if not a.is_commutative:
+            return False
+    return True
+
+
+def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:
+    """The statement ``target = expr`` (``symbol``: the target's, when the
+    program has it: assigned to as the name ``target`` is)."""
     found = printer.statements.get((expr, target))
     if found is not None:
         return found
+    to = target if symbol is None else symbol
     try:
-        text = printer.doprint(sp.sympify(expr), assign_to=target)
+        text = printer.doprint(sp.sympify(expr), assign_to=to)
     except Exception as exc:  # noqa: BLE001 - PrintMethodNotImplementedError, ...
         what = str(exc).split("\n")[0]
         raise NumericsError(f"MATLAB cannot print {expr}: {what}") from None
@@ -131,7 +142,7 @@ def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
             lines.append(f"  {a.target[2]} = ud({a.target[1] + 1});")
             continue
         target = one_based_target(a)
-        lines.append("  " + _code(printer, a.expr, target))
+        lines.append("  " + _code(printer, a.expr, target, a.symbol))
     if block is program.eqns and program.solve_at == len(block) and n:
         lines += solve
     return lines

@@ -162,12 +162,13 @@ class ProgramPrinter:
     def is_plain(self, expr: Any, assign_to: Any) -> bool:
         """Whether ``doprint(expr, assign_to)`` is printed here: a sum,
         product or name holding none of ``re``, ``IndexedBase`` and number
-        constants, assigned to nothing, a name or a symbol."""
-        return (
-            type(expr) in self._own
-            and (assign_to is None or isinstance(assign_to, str | sp.Symbol))
-            and not holds_instance(expr, _SPECIAL, self._special)
-        )
+        constants, or an integer (``out(3) = 0``: its text is the same at
+        any depth), assigned to nothing, a name or a symbol."""
+        if assign_to is not None and not isinstance(assign_to, str | sp.Symbol):
+            return False
+        if type(expr) in self._own:
+            return not holds_instance(expr, _SPECIAL, self._special)
+        return isinstance(expr, sp.Integer)
 
 
 class Remembering(ProgramPrinter):
@@ -240,6 +241,8 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
+            if type(a) is _NAME and not _NAME_HELD.get(kinds, True):
+                continue  # a name (most arguments), not one of kinds
             if isinstance(a, sp.Atom):
                 held = isinstance(a, kinds)  # (an atom's answer is not kept)
             else:
@@ -251,6 +254,12 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
                 break
     memo[expr] = found
     return found
+
+
+_NAME = sp.Symbol
+#: whether a name is one of the kinds :func:`holds_instance` is asked of
+#: (the printers ask of ``_SPECIAL`` alone)
+_NAME_HELD = {_SPECIAL: issubclass(sp.Symbol, _SPECIAL)}
 
 
 def _complex(x: Any, memo: dict) -> complex:

@@ -39,7 +39,7 @@ from ..jobs.run import (
 )
 from ..jobs.tables import format_table
 from ..version import __version__
-from ..walks import xreplace
+from ..walks import allow_deep_recursion
 
 __all__ = ["Assign", "Entry", "OutputTable", "Program", "describe", "one_based_target"]
 
@@ -230,6 +230,9 @@ class Assign:
 
     target: tuple
     expr: Any
+    #: a ``("tmp", name)`` target's symbol, when the program has it (the
+    #: printers assign to it rather than form it again)
+    symbol: Any = field(default=None, compare=False, repr=False)
 
 
 @dataclass
@@ -618,28 +621,69 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None)
     every part it holds); it also keeps one object for each part formed
     (equal parts formed from different ones, say a definition's as the book
     gives it and an output's made numeric, are one object: printing and
-    ``cse`` compare them at once)."""
+    ``cse`` compare them at once).
+
+    The walk is :func:`..walks.xreplace`'s (a part in ``rule`` replaced,
+    an intermediate none of whose parts is in ``rule`` kept whole, any
+    other part rebuilt from its arguments when one of them changed), with
+    the rebuilding written into it: a program's intermediates are
+    thousands of short definitions, each walked once."""
+    if not isinstance(expr, sp.Basic) or not rule:
+        return expr
+    allow_deep_recursion()
     memo = {} if memo is None else memo
     same = memo.get(_SAME)
     if same is None:
         same = memo[_SAME] = {}
+    return _renamed(expr, rule, memo, same)[0]
 
-    def rebuild(e: Any, args: list[Any], changed: list[int]) -> Any:
-        new = _sorted_only(e, args, changed)
-        return same.setdefault(new, new)
 
-    return xreplace(expr, rule, memo, rebuild=rebuild)
+def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
+    """``e`` renamed by ``rule`` and whether it changed
+    (:func:`renamed_evaluated`)."""
+    found = rule.get(e, _ABSENT)
+    if found is not _ABSENT:
+        return found, True
+    if e.is_Atom:
+        return e, False
+    known = memo.get(e)
+    if known is not None:
+        return known
+    if e.is_Function and hasattr(e, "walk_parts"):
+        # an intermediate: none of its parts is replaced
+        if rule.keys().isdisjoint(e.walk_parts()):
+            memo[e] = out = (e, False)
+            return out
+    args = e.args
+    new = None
+    for i, a in enumerate(args):
+        if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
+            continue
+        b, changed = _renamed(a, rule, memo, same)
+        if changed:
+            if new is None:
+                new = list(args)
+            new[i] = b
+    if new is None:
+        out = (e, False)
+    else:
+        part = _sorted_only(e, new)
+        out = (same.setdefault(part, part), True)
+    memo[e] = out
+    return out
 
 
 #: the key in :func:`renamed_evaluated`'s memo of the parts formed
 _SAME = ("renamed_evaluated", "formed parts")
+#: what ``rule.get`` gives for a part not in the rule
+_ABSENT = object()
 
 
-def _sorted_only(expr: Any, args: list[Any], changed: list[int]) -> Any:
+def _sorted_only(expr: Any, args: list[Any]) -> Any:
     """``expr.func(*args)``, a sum or product that evaluation would only
     sort formed from ``args`` sorted (:func:`renamed_evaluated`)."""
     cls = type(expr)
-    if cls is sp.Add or cls is sp.Mul:
+    if cls is sp.Mul or cls is sp.Add:
         kept = _kept_args(cls is sp.Mul, args)
         if kept is not None:
             return cls._from_args(kept, True)
@@ -657,38 +701,86 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
     numbers combine, ``exp`` factors combine (their base is ``E``), a
     product's powers (and a sum's term ``c*s`` of one factor) are
     evaluated again.  With none of these, the result is ``args`` sorted by
-    sympy's key, the number first."""
+    sympy's key, the number first.
+
+    A name (most factors) and a sum's product (most terms) are asked only
+    what these conditions ask of them, first; a product of two names (or
+    of -1 and two names: most of a program's products) at once."""
+    if mul:
+        pair = _two_names(args)
+        if pair is not None:
+            return pair
     number = None
     rest = []
-    keys: set[Any] = set()
+    keys: list[Any] = []
     for a in args:
-        if a.is_Number:
-            if number is not None or not a.is_finite or a == 0 or (mul and a == 1):
+        kind = type(a)
+        if kind is _NAME:
+            if not a.is_commutative:
+                return None
+            key: Any = a if mul else (a,)
+        elif kind is _MUL and not mul:
+            if not a.is_commutative:
+                return None
+            key = a.args
+            if key[0].is_Number:
+                key = key[1:]
+                if len(key) == 1 and not _plain_factor(key[0], True):
+                    return None  # c*s: Mul(c, s) is evaluated again
+        elif a.is_Number:
+            if number is not None:
+                return None
+            if a is not _MINUS_ONE and (not a.is_finite or a == 0 or (mul and a == 1)):
                 return None
             number = a
             continue
-        if not a.is_commutative or not _plain_factor(a, mul):
-            return None
-        if mul:
-            key: Any = a.args[0] if a.is_Pow else a
-        elif a.is_Mul:
-            key = a.args[1:] if a.args[0].is_Number else a.args
-            if len(key) == 1 and not _plain_factor(key[0], True):
-                return None  # c*s: Mul(c, s) is evaluated again
-        elif a.is_Add:
-            return None
         else:
-            key = (a,)
-        if key in keys:
-            return None
-        keys.add(key)
+            if not a.is_commutative or not _plain_factor(a, mul):
+                return None
+            if mul:
+                key = a.args[0] if a.is_Pow else a
+            elif a.is_Add:
+                return None
+            else:
+                key = (a,)
+        keys.append(key)
         rest.append(a)
+    if len(keys) > 1 and len(set(keys)) != len(keys):
+        return None  # equal bases or terms combine
     if mul and number is not None and len(rest) == 1 and rest[0].is_Add:
         return None  # 2*(x + y) is distributed
-    rest.sort(key=_args_sortkey)
+    if len(rest) == 2:
+        if rest[0].compare(rest[1]) > 0:  # sympy's key, once
+            rest.reverse()
+    elif len(rest) > 2:
+        rest.sort(key=_args_sortkey)
     if number is not None:
         rest.insert(0, number)
     return rest
+
+
+def _two_names(args: list[Any]) -> list[Any] | None:
+    """:func:`_kept_args` of a product's arguments that are two names of
+    different spellings (so not equal) that commute, after -1 or not;
+    else None (:func:`_kept_args` decides)."""
+    if len(args) == 2:
+        first, a, b = None, args[0], args[1]
+    elif len(args) == 3 and args[0] is _MINUS_ONE:
+        first, a, b = args
+    else:
+        return None
+    if type(a) is not _NAME or type(b) is not _NAME or a.name == b.name:
+        return None
+    if not (a.is_commutative and b.is_commutative):
+        return None
+    if a.compare(b) > 0:  # sympy's key, once
+        a, b = b, a
+    return [a, b] if first is None else [first, a, b]
+
+
+_NAME = sp.Symbol
+_MUL = sp.Mul
+_MINUS_ONE = sp.S.NegativeOne
 
 
 def _plain_factor(a: Any, mul: bool) -> bool:
@@ -773,7 +865,7 @@ def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assi
     if not names:
         return []
     used = _free([sp.sympify(a.expr) for a in block], [], memo)
-    return [Assign(("tmp", s.name), sp.Integer(0)) for s in names if s in used]
+    return [Assign(("tmp", s.name), sp.Integer(0), s) for s in names if s in used]
 
 
 def iter_names(prefix: str, taken: set[str]) -> Any:
@@ -812,14 +904,14 @@ def assignments(
     defined = set(defined)
     for s, body in backends.needed(inter, exprs, memo):
         if s not in defined:
-            out.append(Assign(("tmp", s.name), body))
+            out.append(Assign(("tmp", s.name), body, s))
             defined.add(s)
     if exprs:
         temps, reduced = sp.cse(
             exprs, symbols=(sp.Symbol(x, real=True) for x in names), order="none"
         )
         for s, e in temps:
-            out.append(Assign(("tmp", s.name), e))
+            out.append(Assign(("tmp", s.name), e, s))
             defined.add(s)
         for target, e in zip(targets, reduced, strict=True):
             out.append(Assign(target, e))

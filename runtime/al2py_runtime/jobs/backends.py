@@ -343,10 +343,12 @@ def needed(
     for e in exprs:
         want |= free_symbols_of(e, memo)
     keep = []
+    known = {} if memo is None else memo
     for sym, expr in reversed(list(intermediates)):
         if sym in want:
             keep.append((sym, expr))
-            want |= free_symbols_of(expr, memo)
+            found = known.get(expr)  # (most are remembered)
+            want |= free_symbols_of(expr, memo) if found is None else found
     return keep[::-1]
 
 

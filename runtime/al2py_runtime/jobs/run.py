@@ -160,6 +160,10 @@ class _Slots:
         self.intermediates: list[tuple[sp.Dummy, Any]] = []
         #: parts of definitions renamed by :meth:`_definition` (see there)
         self._renamed: dict[Any, Any] = {}
+        #: what :meth:`_definition` does with a part of each class met
+        self._kinds: dict[type, int] = {}
+        #: the known variables of intermediates (:meth:`_variables_known`)
+        self._variables: set[Any] = set()
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -180,7 +184,12 @@ class _Slots:
             book = next(iter(zs)).book
             expr = book.rebase(expr)
             for z in book.ordered([expr], self.known):
-                body = self._definition(book.definition(z), what)
+                definition = book.definition(z)
+                if self.deferred and self._variables_known(z):
+                    # its walk would find only known objects (see there)
+                    body = Deferred(definition, self.known, self.time)
+                else:
+                    body = self._definition(definition, what)
                 d = sp.Dummy(f"z{len(self.intermediates)}")
                 self.known[z] = d
                 self._dummies.add(d)
@@ -207,6 +216,30 @@ class _Slots:
             raise NumericsError(f"{self.job.where}: cannot evaluate {what}")
         return expr
 
+    def _variables_known(self, z: Any) -> bool:
+        """Whether every object in ``z``'s definition is known: then
+        :meth:`_definition`'s walk of a deferred definition would make no
+        parameter and take no other path (the intermediates it holds come
+        before it, :meth:`~..intermediates.autoz.Intermediates.ordered`).
+
+        An intermediate's arguments after its number are the variables its
+        definition depends on (derivatives, functions of time and symbols,
+        each outside the others, its intermediates' too: the book's
+        ``_walk``), or, taken at other arguments, what stands for them: so
+        when each is a known object, and a function of time among them is
+        one of symbols (its arguments hold nothing the walk would note),
+        the walk meets only known objects (and ``t``, which it leaves)."""
+        known, seen = self.known, self._variables
+        for a in z.args[1:]:
+            if a in seen:
+                continue
+            if a not in known:
+                return False
+            if isinstance(a, AppliedUndef) and not all(x.is_Symbol for x in a.args):
+                return False
+            seen.add(a)  # known for good (``known`` only grows)
+        return True
+
     def _definition(self, body: Any, what: str) -> Any:
         """:meth:`numeric` of an intermediate's definition, in one walk.
 
@@ -217,54 +250,66 @@ class _Slots:
         Parameters are made in the general path's order."""
         zs, derivs, funcs, syms = [], [], [], []
         known = self.known
+        kinds = self._kinds
         stack = [body]  # plain parts
         inner = []  # parts inside a function's arguments
         while stack:
             e = stack.pop()
-            if isinstance(e, autoz.Intermediate):
+            kind = kinds.get(type(e))
+            if kind is None:
+                kind = kinds[type(e)] = _part_kind(type(e))
+            if kind == _WALKED:
+                stack.extend(e.args)
+            elif kind == _INTERMEDIATE:
                 if e not in known:
                     return self.numeric(body, what)
                 zs.append(e)
-            elif isinstance(e, sp.Derivative):
+            elif kind == _DERIVATIVE:
                 derivs.append(e)
-            elif isinstance(e, AppliedUndef):
+            elif kind == _FUNCTION:
                 funcs.append(e)
                 inner.extend(e.args)
-            elif e.is_Symbol:
+            elif kind == _SYMBOL:
                 syms.append(e)
-            elif not e.is_Atom:
-                stack.extend(e.args)
         while inner:  # a function's arguments: its symbols go with it
             e = inner.pop()
-            if isinstance(e, autoz.Intermediate):
+            kind = kinds.get(type(e))
+            if kind is None:
+                kind = kinds[type(e)] = _part_kind(type(e))
+            if kind == _INTERMEDIATE:
                 if e not in known:
                     return self.numeric(body, what)
                 zs.append(e)
-            elif isinstance(e, sp.Derivative):  # the general path
+            elif kind == _DERIVATIVE:  # the general path
                 return self.numeric(body, what)
-            elif isinstance(e, AppliedUndef):
+            elif kind == _FUNCTION:
                 funcs.append(e)
                 inner.extend(e.args)
-            elif not e.is_Atom:
+            elif kind == _WALKED:
                 inner.extend(e.args)
-        for obj in sorted(
-            {d for d in derivs if d not in known}, key=sp.default_sort_key
-        ):
-            self._derivative_param(obj, what)
-        for obj in sorted(
-            {f for f in funcs if f not in known}, key=sp.default_sort_key
-        ):
-            self._param(obj)
-        # the new parameters among the symbols (the known ones, the dummies
-        # and T stay, t becomes T), in the general path's order
-        fresh = {
-            sym
-            for sym in syms
-            if sym not in known and sym not in self._dummies and sym is not self.time
-        }
-        for sym in sorted(fresh, key=sp.default_sort_key):
-            if sym != t:
-                self._param(sym)
+        if derivs:
+            for obj in sorted(
+                {d for d in derivs if d not in known}, key=sp.default_sort_key
+            ):
+                self._derivative_param(obj, what)
+        if funcs:
+            for obj in sorted(
+                {f for f in funcs if f not in known}, key=sp.default_sort_key
+            ):
+                self._param(obj)
+        if syms:
+            # the new parameters among the symbols (the known ones, the
+            # dummies and T stay, t becomes T), in the general path's order
+            fresh = {
+                sym
+                for sym in syms
+                if sym not in known
+                and sym not in self._dummies
+                and sym is not self.time
+            }
+            for sym in sorted(fresh, key=sp.default_sort_key):
+                if sym != t:
+                    self._param(sym)
         # One memo for every definition: each rule maps an object as
         # ``known`` does (or leaves a dummy, T, as it is), and a part that
         # the renaming reaches holds its objects at the same level in any
@@ -303,6 +348,29 @@ class _Slots:
 
     def label(self, obj: Any) -> str:
         return label_of(obj, self.job.names)
+
+
+#: what :meth:`_Slots._definition` does with a part (:func:`_part_kind`)
+_WALKED, _INTERMEDIATE, _DERIVATIVE, _FUNCTION, _SYMBOL, _ATOM = range(6)
+
+
+def _part_kind(cls: type) -> int:
+    """What :meth:`_Slots._definition` does with a part of class ``cls``:
+    an intermediate, a derivative, a function of time and a symbol are
+    noted, another atom left, anything else walked into (the tests
+    :meth:`_Slots._definition` made of each part, in their order, asked
+    once per class)."""
+    if issubclass(cls, autoz.Intermediate):
+        return _INTERMEDIATE
+    if issubclass(cls, sp.Derivative):
+        return _DERIVATIVE
+    if issubclass(cls, AppliedUndef):
+        return _FUNCTION
+    if cls.is_Symbol:
+        return _SYMBOL
+    if cls.is_Atom:
+        return _ATOM
+    return _WALKED
 
 
 def renamed(expr: Any, rule: Mapping[Any, Any], memo: dict | None = None) -> Any:
