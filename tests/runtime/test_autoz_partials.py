@@ -45,6 +45,24 @@ def _keep_named(book: Intermediates, zs: list, terms: list) -> None:
         zs.append(z)
 
 
+def _grown(book, rng, leaves, more, rounds, most, extra=None) -> list:
+    """The intermediates named by ``rounds`` sums of 2 to ``most`` products
+    of one to three pieces (the ``leaves`` until six are named, then the
+    last twenty and ``more``), each times a coefficient; ``extra`` may add a
+    factor to each product (:func:`_keep_named` keeps them)."""
+    zs: list = []
+    for _ in range(rounds):
+        pieces = leaves if len(zs) < 6 else zs[-20:] + more
+        terms = []
+        for _ in range(rng.randint(2, most)):
+            factors = rng.sample(pieces, rng.randint(1, 3))
+            if extra is not None:
+                extra(factors, pieces, zs)
+            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
+        _keep_named(book, zs, terms)
+    return zs
+
+
 def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     """A book of intermediates whose later definitions are sums of
     products of earlier ones, symbols and numbers (some with a sine or a
@@ -268,14 +286,7 @@ def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, l
     book = _new_book(shortcut)
     sums = [q1 * L**2 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
     leaves = [book.name(e) for e in sums] + [M * L, K]
-    zs: list = []
-    for _ in range(60):
-        pieces = leaves if len(zs) < 6 else zs[-20:] + [L, M, K, sp.cos(q1)]
-        terms = []
-        for _ in range(rng.randint(2, 6)):
-            factors = rng.sample(pieces, rng.randint(1, 3))
-            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
-        _keep_named(book, zs, terms)
+    zs = _grown(book, rng, leaves, [L, M, K, sp.cos(q1)], 60, 6)
     found = [book.derivative(z, x) for z in zs[-25:] for x in [q1, q2, q3, L, M, K]]
     return book, found
 
@@ -349,17 +360,13 @@ def _build_sums(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     rng = random.Random(seed)
     book = _new_book(shortcut)
     leaves = [q1 * L + u1, sp.sin(q2) * K + q3, sp.cos(q3) * M + q1 * q2, u1 * P]
-    zs: list = []
-    for _ in range(45):
-        pieces = leaves if len(zs) < 6 else zs[-20:] + [L, M, K, sp.sin(q1)]
-        terms = []
-        for _ in range(rng.randint(2, 5)):
-            factors = rng.sample(pieces, rng.randint(1, 3))
-            if rng.random() < 0.4 and len(zs) > 6:
-                a, b = rng.sample(pieces, 2)
-                factors.append(a + rng.choice(COEFFICIENTS) * b)
-            terms.append(rng.choice(COEFFICIENTS) * sp.Mul(*factors))
-        _keep_named(book, zs, terms)
+
+    def with_a_sum(factors: list, pieces: list, zs: list) -> None:
+        if rng.random() < 0.4 and len(zs) > 6:
+            a, b = rng.sample(pieces, 2)
+            factors.append(a + rng.choice(COEFFICIENTS) * b)
+
+    zs = _grown(book, rng, leaves, [L, M, K, sp.sin(q1)], 45, 5, with_a_sum)
     found = [book.derivative(z, x) for z in zs[-12:] for x in VARIABLES]
     return book, found
 
