@@ -21,7 +21,7 @@ import os  # part of the module interface (tests patch cli.os)
 import sys
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING, NoReturn
+from typing import TYPE_CHECKING
 
 from .lines import split_lines
 
@@ -198,22 +198,28 @@ def main(argv: list[str] | None = None) -> int:
         print("al2py: interrupted", file=sys.stderr)
         status = EXIT_INTERRUPTED
     if argv is None and status == EXIT_INTERRUPTED:
-        _exit_interrupted()
+        # its work is unwound already (the ``finally`` blocks have run); a
+        # process interrupted while Python imported modules was otherwise
+        # sometimes ended by SIGINT during the interpreter's teardown,
+        # whatever status it gave (Python 3.11, ``python -m al2py code``:
+        # about a third of the interrupts in the tenth of a second after
+        # the copy that converts is forked)
+        return end_process(status)
     return status
 
 
-def _exit_interrupted() -> NoReturn:
-    """End the ``al2py`` process, interrupted, with status 130 once its
-    output is flushed, without the interpreter's teardown: its work is
-    unwound already (the ``finally`` blocks have run), and a process
-    interrupted while Python imported modules was otherwise sometimes ended
-    by SIGINT during that teardown, whatever status it gave (Python 3.11,
-    ``python -m al2py code``: about a third of the interrupts in the tenth
-    of a second after the copy that converts is forked)."""
-    with contextlib.suppress(OSError, ValueError):
+def end_process(status: int) -> int:
+    """End the process with ``status`` once its output is flushed, without
+    the interpreter's teardown (``al2py code`` after its work, and any
+    command interrupted).  Only for the process's own command (``al2py``,
+    ``python -m al2py``): a caller in the same process gets ``main``'s
+    status."""
+    try:
         sys.stdout.flush()
         sys.stderr.flush()
-    os._exit(EXIT_INTERRUPTED)
+    except (OSError, ValueError):  # a closed or broken stream: exit as usual
+        return status
+    os._exit(status)
 
 
 def _dispatch(argv: list[str] | None) -> int:

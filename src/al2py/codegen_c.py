@@ -23,7 +23,6 @@ import argparse
 import contextlib
 import importlib
 import linecache
-import os
 import sys
 import types
 from collections.abc import Callable, Sequence
@@ -32,6 +31,8 @@ from functools import partial
 from pathlib import Path
 
 from al2py_runtime import collector, copies
+
+from .cli import end_process
 
 __all__ = ["converted", "end_process", "main", "parser", "run_alone"]
 
@@ -257,7 +258,9 @@ def _convert_in_copy(text: str, filename: str) -> str | None:
 
 def run_alone(command: Callable[[], int]) -> int:
     """Run ``command`` (``al2py code``'s :func:`main`) as the whole work of
-    this process and end it with its status (:func:`end_process`).
+    this process and end it with its status (:func:`.cli.end_process`:
+    freeing the derived model object by object and the collections at exit
+    take a tenth of the command, and nothing is left to do).
 
     Without the cyclic garbage collector: the derivation and the programs
     make millions of objects that live until the end, which its passes
@@ -269,18 +272,3 @@ def run_alone(command: Callable[[], int]) -> int:
     with collector.paused():
         status = command()
     return end_process(status)
-
-
-def end_process(status: int) -> int:
-    """End the ``al2py code`` process with ``status`` once its output is
-    flushed, without the interpreter's teardown: freeing the derived model
-    object by object and the collections at exit take a tenth of the
-    command, and nothing is left to do (the programs are written and
-    closed).  Only for the process's own command (``al2py``, ``python -m
-    al2py``): a caller in the same process gets ``main``'s status."""
-    try:
-        sys.stdout.flush()
-        sys.stderr.flush()
-    except (OSError, ValueError):  # a closed or broken stream: exit as usual
-        return status
-    os._exit(status)
