@@ -583,7 +583,7 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
             nonlinear = True
             return None
         args = e.args
-        parts = [walk(a) for a in args]
+        parts = [walk(a) for a in args]  # noqa: F821 - deleted after the walk
         if nonlinear:
             return None
         held = [i for i, p in enumerate(parts) if p is not None]
@@ -614,7 +614,10 @@ def _linear_parts(w: Any, xs: Sequence[Any]) -> tuple[list[Any], Any] | None:
         memo[e] = out
         return out
 
-    top = walk(w)
+    try:
+        top = walk(w)
+    finally:
+        del walk  # it refers to itself: freed now with its memo, not by a collection
     if nonlinear:
         return None
     if top is None:
@@ -1447,7 +1450,7 @@ class Intermediates:
                 return found
             args, size, changed = [], 1, []
             for i, a in enumerate(e.args):
-                b, n = walk(a, False)
+                b, n = walk(a, False)  # noqa: F821 - deleted after the walk
                 args.append(b)
                 size += n
                 if b is not a:
@@ -1470,7 +1473,10 @@ class Intermediates:
                 memo[e] = out
             return out
 
-        return walk(expr, True)[0]
+        try:
+            return walk(expr, True)[0]
+        finally:
+            del walk  # it refers to itself: freed now, not by a collection
 
     def _within(self, e: Any, limit: int) -> bool:
         """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
