@@ -167,27 +167,46 @@ def test_module_runs_as_a_script(path, tmp_path):
 
 
 def test_import_leaves_the_process_as_it_found_it(tmp_path):
-    """While a module derives, the garbage collector's thresholds are raised;
-    the import puts them back, also when it fails.  sympy's cache is left as
-    the derivation leaves it, as after any sympy work: emptying it freed its
-    expressions one by one (a third of a second of DAS3's import) and gave
-    back no memory (docs/performance.md)."""
+    """While a module derives, each statement pauses the garbage collector
+    and then moves what it made out of the collector's sight (``gc.freeze``,
+    as the end of the import does); the collector is left running at the
+    thresholds it had, also when the import fails in a statement or outside
+    one, and a statement that fails gives back what was frozen, so that the
+    failed model is collected.  sympy's cache is left as the derivation
+    leaves it, as after any sympy work: emptying it freed its expressions
+    one by one (a third of a second of DAS3's import) and gave back no
+    memory (docs/performance.md)."""
     result = _converted_or_skip_unsupported(SHARED / "tutor6.al")
     (tmp_path / f"{result.module}.py").write_text(result.code)
     broken = result.code.replace("al.names()", "1 / 0\nal.names()", 1)
     assert broken != result.code
     (tmp_path / "broken.py").write_text(broken)
+    # a statement that fails (Solve: more equations than unknowns)
+    script = tmp_path / "failing.al"
+    script.write_text(
+        "Variables X, Y\nZ = [X + Y - 1; X - Y; X + 2*Y]\nSolve(Z, X, Y)\n"
+    )
+    (tmp_path / "failing.py").write_text(_converted_or_skip_unsupported(script).code)
     probe = f"""
 import gc
 gc.set_threshold(900, 11, 12)
 import {result.module}
 assert gc.get_threshold() == (900, 11, 12), gc.get_threshold()
+assert gc.isenabled()
+assert gc.get_freeze_count() > 1000, gc.get_freeze_count()
+try:
+    import failing
+except ValueError as exc:
+    assert exc.line == 3, exc
+else:
+    raise AssertionError("failing imported")
+assert gc.isenabled() and gc.get_threshold() == (900, 11, 12)
+assert gc.get_freeze_count() == 0, gc.get_freeze_count()
 try:
     import broken
 except ZeroDivisionError:
     pass
-gc.collect()
-assert gc.get_threshold() == (900, 11, 12), gc.get_threshold()
+assert gc.isenabled() and gc.get_threshold() == (900, 11, 12)
 print("ok")
 """
     run = subprocess.run(

@@ -34,6 +34,8 @@ from collections.abc import Callable, Sequence
 from types import TracebackType
 from typing import Any, TypeVar
 
+from .collector import settled
+
 __all__ = [
     "AutolevRuntimeError",
     "MissingValueWarning",
@@ -502,13 +504,16 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 class Statements:
     """Where a workspace's statement calls stand: the generated module it
-    serves (``module_file``, None for a workspace made by hand) and how deep
-    the current statement's calls are (only the outermost call locates)."""
+    serves (``module_file``, None for a workspace made by hand), how deep
+    the current statement's calls are (only the outermost call locates) and
+    whether a derivation's statements run :func:`~.collector.settled`
+    (``settle``: while a generated module derives)."""
 
     def __init__(self, filename: str, module_file: str | None) -> None:
         self.filename = filename
         self.module_file = module_file
         self.depth = 0
+        self.settle = False
 
 
 def statement(method: F) -> F:
@@ -523,26 +528,37 @@ def statement(method: F) -> F:
         where: Statements | None = self.statements
         if where is None:  # not a workspace's (settings made by hand)
             return method(self, *args, **kw)
-        where.depth += 1
-        try:
-            return method(self, *args, **kw)
-        except Exception as exc:
-            if (
-                where.depth > 1
-                or where.module_file is None
-                or (isinstance(exc, AutolevRuntimeError) and exc.filename is not None)
-            ):
-                raise
-            line = kw.get("line")
-            if isinstance(line, int):
-                raise located(exc, where.filename, where.module_file, line) from exc
-            # an expression's call (``al.d(...)`` inside a statement): its
-            # line is placed from the traceback once it leaves the module
-            raise AutolevRuntimeError(describe(exc), where.filename) from exc
-        finally:
-            where.depth -= 1
+        if where.settle and where.depth == 0:
+            with settled():
+                return _located(where, method, self, args, kw)
+        return _located(where, method, self, args, kw)
 
     return call  # type: ignore[return-value]
+
+
+def _located(
+    where: Statements, method: Callable[..., Any], obj: Any, args: tuple, kw: dict
+) -> Any:
+    """``method(obj, *args, **kw)``, an exception escaping the outermost
+    statement call located (see :func:`statement`)."""
+    where.depth += 1
+    try:
+        return method(obj, *args, **kw)
+    except Exception as exc:
+        if (
+            where.depth > 1
+            or where.module_file is None
+            or (isinstance(exc, AutolevRuntimeError) and exc.filename is not None)
+        ):
+            raise
+        line = kw.get("line")
+        if isinstance(line, int):
+            raise located(exc, where.filename, where.module_file, line) from exc
+        # an expression's call (``al.d(...)`` inside a statement): its
+        # line is placed from the traceback once it leaves the module
+        raise AutolevRuntimeError(describe(exc), where.filename) from exc
+    finally:
+        where.depth -= 1
 
 
 # ------------------------------------------------------------ the hook

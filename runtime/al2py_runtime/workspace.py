@@ -69,11 +69,14 @@ class Workspace(Mapping):
         #: a progress line while a long import derives (stopped by names())
         self._watch = ImportWatch(filename, module_file)
         self._watch.start()
-        #: while a generated module derives, the cyclic garbage collector runs
-        #: less often (sympy's expressions are trees: its passes over
-        #: millions of new objects find nothing, and took a tenth of a
-        #: bicycle's import); names() or the workspace's end restores it
-        self._collector = collector.Quiet() if generated else None
+        #: while a generated module derives, each of its statements runs
+        #: with the cyclic garbage collector paused, and what it made is
+        #: then moved out of the collector's sight
+        #: (:func:`~.collector.settled`): sympy's expressions are trees and
+        #: the model keeps them, so passes over millions of new objects
+        #: found nothing (a tenth of a bicycle's import, a twentieth of
+        #: DAS3's); names() ends it
+        self.statements.settle = generated
         self.settings = Settings(statements=self.statements)
         self.responses: list[Response] = []
         #: the script's names (:class:`~.names.table.NameTable`)
@@ -725,15 +728,16 @@ class Workspace(Mapping):
         """A read-only, case-insensitive view: Autolev name -> current value
         (a generated module asks for it last: its derivation is done)."""
         self._watch.stop()
-        if self._collector is not None:
-            self._collector.restore()
+        if self.statements.settle:
+            self.statements.settle = False
             # the derived model lives as long as its module: moved out of
-            # the collector's sight (``gc.freeze``), so that no later
-            # collection -- nor the several at the process's exit, a
-            # tenth of a bicycle's import -- walks its objects again.  A
-            # derivation leaves next to no cyclic garbage behind (a
-            # collection here finds a handful of objects), so nothing of
-            # note is kept that a collection would have freed.
+            # the collector's sight (``gc.freeze``), as each statement's
+            # objects were, so that no later collection -- nor the several
+            # at the process's exit, a tenth of a bicycle's import -- walks
+            # its objects again.  A derivation leaves next to no cyclic
+            # garbage behind (a few thousand small objects for DAS3's
+            # million), so nothing of note is kept that a collection would
+            # have freed.
             gc.freeze()
         return AutolevNames(self)
 

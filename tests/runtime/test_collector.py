@@ -58,3 +58,34 @@ def test_paused_is_undone_by_an_exception(saved_gc):
     with pytest.raises(ZeroDivisionError), collector.paused():
         raise ZeroDivisionError
     assert gc.isenabled()
+
+
+def test_settled_pauses_then_freezes_what_it_made(saved_gc):
+    gc.enable()
+    gc.unfreeze()
+    with collector.settled():
+        assert not gc.isenabled()
+        made = [[i] for i in range(1000)]
+    assert gc.isenabled()
+    assert gc.get_freeze_count() >= len(made)
+    gc.unfreeze()
+
+
+def test_settled_gives_back_what_was_frozen_when_it_fails(saved_gc):
+    gc.enable()
+    gc.freeze()  # an earlier statement's objects
+    assert gc.get_freeze_count() > 0
+    with pytest.raises(KeyboardInterrupt), collector.settled():
+        raise KeyboardInterrupt
+    assert gc.isenabled()
+    assert gc.get_freeze_count() == 0
+
+
+def test_settled_inside_paused_stays_paused(saved_gc):
+    gc.enable()
+    with collector.paused():
+        with collector.settled():
+            assert not gc.isenabled()
+        assert not gc.isenabled()
+    assert gc.isenabled()
+    gc.unfreeze()
