@@ -1262,6 +1262,9 @@ class Intermediates:
         self.exclude: frozenset = frozenset()
         self._rebased: dict[Any, Any] = {}
         self._children: dict[Any, Any] = {}  # k, or a z not at its own variables
+        #: an intermediate not at its own variables -> its definition there
+        #: (:meth:`definition`; a program's writer asks for it many times)
+        self._elsewhere: dict[Any, Any] = {}
         self._numbers: dict[Any, Any] = {}
         self._keys: dict[Any, Any] = {}
         self._name_keys: dict[Any, tuple[int, str]] = {}
@@ -1970,7 +1973,12 @@ class Intermediates:
         body = self._defs[k]
         if self._canonical(z):
             return body
-        return substitute(body, dict(zip(self._vars[k], z.args[1:], strict=True)))
+        found = self._elsewhere.get(z)
+        if found is None:
+            found = self._elsewhere[z] = substitute(
+                body, dict(zip(self._vars[k], z.args[1:], strict=True))
+            )
+        return found
 
     def is_real(self, z: Intermediate) -> bool | None:
         k = _number(z)
