@@ -11,10 +11,11 @@ from typing import Any
 import sympy as sp
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
+from sympy.printing.precedence import PRECEDENCE
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering
+from .printers import Remembering, names_sorted
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -33,7 +34,48 @@ class _Printer(Remembering, OctaveCodePrinter):
     :class:`.printers.Remembering`)."""
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
-        return self.print_ordered_add(expr, order)
+        if order is not None or self.order is not None:
+            return self.print_ordered_add(expr, order)
+        found = names_sorted(expr.args)
+        if found is None:
+            return self.print_unnamed_add(expr)
+        return self._names_sum(expr, found)
+
+    def _names_sum(self, expr: Any, found: list) -> str:
+        """``print_ordered_add(expr)`` of a sum of names and products of
+        names (after a number), most sums of a program: the
+        terms in ``as_ordered_terms``'s order (:func:`.printers.names_sorted`)
+        and each product of names (after -1 or nothing) printed as
+        :meth:`_print_Mul` prints it, its names sorted by name and joined by
+        ``.*`` (``found``: :func:`.printers.names_sorted` of its terms).
+
+        None of these terms is put in parentheses: a name's precedence is
+        an atom's, a product's of names (after a number) a product's or,
+        after a negative number, a sum's, none below the sum's own."""
+        prec = self.remembered_precedence(expr)
+        if prec > PRECEDENCE["Add"]:  # pragma: no cover - a sum's is Add's
+            return self.joined_terms(expr, [term for term, _names in found])
+        part = self.print_part
+        out = []
+        for term, names in found:
+            if type(term) is sp.Symbol:
+                t = part(term)
+            else:
+                first = term.args[0]
+                if first is _MINUS_ONE:
+                    t = "-" + ".*".join([part(a) for a in names])
+                elif first.is_Number:
+                    t = part(term)
+                else:
+                    t = ".*".join([part(a) for a in names])
+            if t.startswith("-"):
+                out.append(" - " if out else "-")
+                out.append(t[1:])
+            else:
+                if out:
+                    out.append(" + ")
+                out.append(t)
+        return "".join(out)
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
@@ -97,6 +139,9 @@ class _Printer(Remembering, OctaveCodePrinter):
 
 def _name(symbol: Any) -> str:
     return symbol.name
+
+
+_MINUS_ONE = sp.S.NegativeOne
 
 
 def _commute(names: tuple) -> bool:

@@ -30,7 +30,7 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["ProgramPrinter", "Remembering", "holds_instance"]
+__all__ = ["ProgramPrinter", "Remembering", "holds_instance", "names_sorted"]
 
 #: what a statement holding one of is printed by sympy's ``doprint``, and
 #: a part holding one of is printed each time (see ProgramPrinter)
@@ -225,6 +225,16 @@ class Remembering(ProgramPrinter):
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
         """``StrPrinter._print_Add``."""
         terms = self._as_ordered_terms(expr, order=order)
+        return self.joined_terms(expr, terms)
+
+    def print_unnamed_add(self, expr: Any) -> str:
+        """:meth:`print_ordered_add` of a sum (``order`` and the printer's
+        None) that :func:`names_sorted` does not order."""
+        terms = _ordered_terms(expr, self._keys, self._numbers, self._powers, False)
+        return self.joined_terms(expr, terms)
+
+    def joined_terms(self, expr: Any, terms: list) -> str:
+        """The text of the sum ``expr`` of ``terms`` in that order."""
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
@@ -272,16 +282,20 @@ def _complex(x: Any, memo: dict) -> complex:
     return found
 
 
-def _ordered_terms(expr: Any, keys: dict, numbers: dict, powers: dict) -> list:
+def _ordered_terms(
+    expr: Any, keys: dict, numbers: dict, powers: dict, named: bool = True
+) -> list:
     """``expr.as_ordered_terms()`` of a sum (sympy's lexicographic order of
     monomials in the generators sorted by ``default_sort_key``), the same
     list, with the sort keys, number tests and factors' powers remembered
-    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_monomials`;
-    else sympy's ``as_terms``)."""
+    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_names`
+    unless ``named`` is False: the caller found it gives None; then
+    :func:`_ordered_by_monomials`; else sympy's ``as_terms``)."""
 
-    named = _ordered_by_names(expr.args)
-    if named is not None:
-        return named
+    if named:
+        by_names = _ordered_by_names(expr.args)
+        if by_names is not None:
+            return by_names
 
     def plain(x: Any) -> bool:
         return not isinstance(x, sp.Number | sp.NumberSymbol)
@@ -400,6 +414,14 @@ def _ordered_by_names(terms: tuple) -> list | None:
     None (two names alike, two terms of one monomial) or sympy sorts
     otherwise (a number term, a power, a function, a name twice in a
     term, a factor that does not commute)."""
+    found = names_sorted(terms)
+    return None if found is None else [term for term, _names in found]
+
+
+def names_sorted(terms: tuple) -> list[tuple[Any, list]] | None:
+    """:func:`_ordered_by_names`'s order of ``terms``, each with its names
+    sorted by name (how a product of names is printed); None where that
+    gives None."""
     seen: dict[str, Any] = {}
     keyed = []
     for term in terms:
@@ -417,17 +439,17 @@ def _ordered_by_names(terms: tuple) -> list | None:
                 return None
             if seen.setdefault(f.name, f) != f:
                 return None  # two names alike
-            key.append((0, f.name))
-        if not key or len(set(key)) != len(key):
+            key.append(((0, f.name), f))
+        if not key or len({k for k, _f in key}) != len(key):
             return None
-        key.sort()
-        key.append((1, ""))
-        keyed.append((tuple(key), term))
+        key.sort(key=_first)
+        names = [f for _k, f in key]
+        keyed.append((tuple([k for k, _f in key] + [(1, "")]), term, names))
     keyed.sort(key=_first)
     for i in range(1, len(keyed)):
         if keyed[i][0] == keyed[i - 1][0]:
             return None
-    return [term for _, term in keyed]
+    return [(term, names) for _, term, names in keyed]
 
 
 def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
