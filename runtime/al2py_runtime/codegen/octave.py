@@ -81,12 +81,10 @@ class _Printer(Remembering, OctaveCodePrinter):
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
         order = None if self.order in ("old", "none") else self.remembered_factors
-        names = backends.signed_names(expr) if order is not None else None
-        if names is not None and _commute(names[1]):
-            # names alone, or -1 and names (most products): ordered by name
-            # (remembered_factors), each as it is, joined by .*
-            ordered = sorted(names[1], key=_name)
-            return names[0] + ".*".join([self.print_part(a) for a in ordered])
+        if order is not None:
+            text = self.names_product(expr)
+            if text is not None:
+                return text
         number = self.remembered_number
         if (
             number(expr)
@@ -116,6 +114,30 @@ class _Printer(Remembering, OctaveCodePrinter):
             return sign + multjoin(a, a_str) + divsym + b_str[0]
         divsym = "/" if all(number(bi) for bi in b) else "./"
         return sign + multjoin(a, a_str) + divsym + f"({multjoin(b, b_str)})"
+
+    def names_product(self, expr: Any) -> str | None:
+        """:meth:`_print_Mul`'s text of a product of names alone, or of -1
+        and names, that commute (most products), when the printer orders
+        factors: ordered by name (``remembered_factors``), each as it is,
+        joined by ``.*``; None for any other product."""
+        if self.order in ("old", "none"):
+            return None
+        names = backends.signed_names(expr)
+        if names is None or not _commute(names[1]):
+            return None
+        ordered = sorted(names[1], key=_name)
+        return names[0] + ".*".join([self.print_part(a) for a in ordered])
+
+    def joined_terms(self, expr: Any, terms: list) -> str:
+        """The text of the sum ``expr`` of ``terms`` in that order (its
+        products of names printed at once: :meth:`names_product`)."""
+        return backends.join_sum(
+            self,
+            terms,
+            self.remembered_precedence(expr),
+            self.remembered_precedence,
+            self.names_product,
+        )
 
     def _print_Pow(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Pow with the number tests and precedences
