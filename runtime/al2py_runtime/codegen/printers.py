@@ -262,17 +262,23 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = memo.get(expr)
     if found is not None:
         return found
+    return _holds(expr, kinds, memo, not _NAME_HELD.get(kinds, True))
+
+
+def _holds(expr: Any, kinds: Any, memo: dict, skip_names: bool) -> bool:
+    """:func:`holds_instance` of a part not in ``memo`` (``skip_names``:
+    a name is not one of ``kinds``)."""
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
-            if type(a) is _NAME and not _NAME_HELD.get(kinds, True):
+            if skip_names and type(a) is _NAME:
                 continue  # a name (most arguments), not one of kinds
             if isinstance(a, sp.Atom):
                 held = isinstance(a, kinds)  # (an atom's answer is not kept)
             else:
                 held = memo.get(a)
                 if held is None:
-                    held = holds_instance(a, kinds, memo)
+                    held = _holds(a, kinds, memo, skip_names)
             if held:
                 found = True
                 break

@@ -872,12 +872,15 @@ class CompareKeys:
         content_of = cls._hashable_content
         if content_of in _ARGS_CONTENT:
             items = []
+            parts = self.parts
             for a in e.args:
-                if not isinstance(a, sp.Basic):
-                    return None
-                key = self.key(a)
+                key = parts.get(a)  # (most arguments: names keyed before)
                 if key is None:
-                    return None
+                    if not isinstance(a, sp.Basic):
+                        return None
+                    key = self.key(a)
+                    if key is None:
+                        return None
                 items.append(key)
             content: tuple = tuple(items)
         elif content_of in _PLAIN_CONTENT:
