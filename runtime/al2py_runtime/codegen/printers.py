@@ -140,29 +140,16 @@ class ProgramPrinter:
         self._plain = True
         try:
             if assign_to is None:
-                text = self.print_whole(expr)
+                text = self._print(expr)  # type: ignore[attr-defined]
             else:
                 lhs = sp.Symbol(assign_to) if isinstance(assign_to, str) else assign_to
-                lhs_code = self.print_whole(lhs)
-                rhs_code = self.print_whole(expr)
+                # a name's text is the same at any depth (its own, remembered)
+                lhs_code = self.print_part(lhs)
+                rhs_code = self._print(expr)  # type: ignore[attr-defined]
                 text = self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
         finally:
             self._plain = False
         return "\n".join(self.plain_lines(text))
-
-    def print_whole(self, expr: Any) -> str:
-        """sympy's ``_print(expr)`` of a statement's side: a sum, product or
-        name (:data:`OWN`) with the method ``_print`` finds for its class
-        (as :meth:`print_part` does), one level deeper as ``_print`` goes
-        (a Float within it is printed as one within a statement)."""
-        method = self._own.get(type(expr))
-        if method is None:
-            return self._print(expr)  # type: ignore[attr-defined]
-        self._print_level += 1  # type: ignore[has-type]
-        try:
-            return method(expr)
-        finally:
-            self._print_level -= 1
 
     def plain_lines(self, text: str) -> list[str]:
         """The lines of a plain statement's ``text``, formatted as sympy's

@@ -983,7 +983,10 @@ def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assi
     ``block`` uses (Autolev's "Quantities to be specified")."""
     if not names:
         return []
-    used = _free([sp.sympify(a.expr) for a in block], [], memo)
+    wanted = set(names)
+    used: set[Any] = set()
+    for a in block:  # (each statement's names meet the few wanted)
+        used |= wanted.intersection(backends.free_symbols_of(sp.sympify(a.expr), memo))
     return [Assign(("tmp", s.name), sp.Integer(0), s) for s in names if s in used]
 
 

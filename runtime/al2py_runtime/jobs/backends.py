@@ -387,7 +387,8 @@ def _free_of_parts(expr: Any, memo: dict) -> frozenset:
             if a.is_Symbol:
                 out.add(a)
             elif a.args or type(a).free_symbols is not _UNITED:
-                out |= _free_of_parts(a, memo)
+                part = memo.get(a)  # (a shared part: found before)
+                out |= _free_of_parts(a, memo) if part is None else part
         found = frozenset(out)
     memo[expr] = found
     return found
