@@ -20,6 +20,7 @@ program, so the keys were formed again down to the leaves.
 
 from __future__ import annotations
 
+import operator
 from typing import Any
 
 import sympy as sp
@@ -440,18 +441,21 @@ def names_sorted(terms: tuple) -> list[tuple[Any, list]] | None:
                 factors = factors[1:]
         else:
             return None
-        key = []
         for f in factors:
             if type(f) is not sp.Symbol or not f.is_commutative:
                 return None
-            if seen.setdefault(f.name, f) != f:
+            known = seen.setdefault(f.name, f)
+            if known is not f and known != f:
                 return None  # two names alike
-            key.append(((0, f.name), f))
-        if not key or len({k for k, _f in key}) != len(key):
+        if not factors:
             return None
-        key.sort(key=_first)
-        names = [f for _k, f in key]
-        keyed.append((tuple([k for k, _f in key] + [(1, "")]), term, names))
+        names = sorted(factors, key=_BY_NAME)
+        key = [(0, f.name) for f in names]
+        for i in range(1, len(key)):
+            if key[i] == key[i - 1]:
+                return None  # a name twice
+        key.append((1, ""))
+        keyed.append((tuple(key), term, names))
     keyed.sort(key=_first)
     for i in range(1, len(keyed)):
         if keyed[i][0] == keyed[i - 1][0]:
@@ -468,6 +472,9 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
     if is_number_in(factor, numbers) or not factor.is_commutative:
         return False
     return decompose_power(factor)
+
+
+_BY_NAME = operator.attrgetter("name")
 
 
 def _first(pair: tuple) -> Any:
