@@ -151,6 +151,7 @@ def _compared_parts(n: int, seed: int) -> list[sp.Basic]:
     rng = random.Random(seed)
     atoms = [*MIXED, sp.Integer(2), sp.Integer(-3), sp.S.NegativeOne, sp.S.One]
     atoms += [sp.S.Zero, sp.S.Half, sp.Rational(-2, 7), sp.Float(1.5), sp.Float(-2)]
+    atoms += [sp.Float(1.5, 30), sp.Float(2), sp.Integer(3) / 2]
     atoms += [sp.pi, sp.E, sp.I, sp.Symbol("n", commutative=False)]
 
     def grow(depth: int) -> sp.Basic:
