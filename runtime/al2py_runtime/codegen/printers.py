@@ -305,16 +305,13 @@ def _ordered_terms(
         if by_names is not None:
             return by_names
 
-    def plain(x: Any) -> bool:
-        return not isinstance(x, sp.Number | sp.NumberSymbol)
-
-    add_args = sorted(expr.args, key=plain)
+    add_args = sorted(expr.args, key=_not_numeric)
     if (
         len(add_args) == 2
-        and isinstance(add_args[0], sp.Number | sp.NumberSymbol)
+        and isinstance(add_args[0], _NUMERIC)
         and isinstance(add_args[1], sp.Mul)
     ):
-        mul_args = sorted(sp.Mul.make_args(add_args[1]), key=plain)
+        mul_args = sorted(sp.Mul.make_args(add_args[1]), key=_not_numeric)
         if (
             len(mul_args) == 2
             and isinstance(mul_args[0], sp.Number)
@@ -475,6 +472,12 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
 
 
 _BY_NAME = operator.attrgetter("name")
+#: the terms ``_ordered_terms`` puts first (as ``Expr.as_ordered_terms`` does)
+_NUMERIC = (sp.Number, sp.NumberSymbol)
+
+
+def _not_numeric(x: Any) -> bool:
+    return not isinstance(x, _NUMERIC)
 
 
 def _first(pair: tuple) -> Any:
