@@ -197,3 +197,22 @@ def test_c_products_of_names_print_as_sympy():
         for part in [e, *e.args]:
             assert mine.doprint(part) == theirs.doprint(part), part
             assert program.doprint(part) == theirs.doprint(part), part
+
+
+def test_holds_instance_is_sympys_walk():
+    """``holds_instance`` (each part asked once per memo) answers as
+    sympy's walk of every part, for the printers' kinds (names are never
+    one of them) and for names themselves."""
+    from al2py_runtime.codegen.printers import _SPECIAL, holds_instance
+    from sympy.core.traversal import iterargs
+
+    rng = random.Random(12)
+    base = sp.IndexedBase("v")
+    extra = [sp.re(A), sp.pi * X, base[1], sp.E + Y, sp.GoldenRatio]
+    exprs = list(EXPRS) + [e * rng.choice(extra) for e in EXPRS[:150]]
+    exprs += [e + rng.choice(extra) for e in EXPRS[150:]]
+    for kinds in (_SPECIAL, (sp.Symbol,), (sp.cos, sp.Float)):
+        memo: dict = {}
+        for e in exprs:
+            want = any(isinstance(x, kinds) for x in iterargs(e))
+            assert holds_instance(e, kinds, memo) is want, (e, kinds)

@@ -26,10 +26,11 @@ from al2py_runtime.codegen.fortran import _code as fortran_code
 from al2py_runtime.codegen.fortran import _Printer as FortranPrinter
 from al2py_runtime.codegen.octave import _code as octave_code
 from al2py_runtime.codegen.octave import _Printer as OctavePrinter
-from al2py_runtime.codegen.program import renamed_evaluated
+from al2py_runtime.codegen.program import CompareKeys, renamed_evaluated
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.jobs import run
 from conftest import ROOT
+from sympy.core.basic import _args_sortkey
 from sympy.core.function import AppliedUndef
 
 from al2py.transpile import convert
@@ -122,6 +123,94 @@ def test_renamed_unevaluated_parts_are_xreplaces():
         sp.Add(sp.Mul(3, sp.exp(k), **un), a, **un),
     ):
         _same(e, rule)
+
+
+#: names of the same spelling class with other assumptions (their
+#: ``_hashable_content`` is shorter or longer: Basic.compare orders by its
+#: length before the name)
+MIXED = [
+    *NAMES,
+    *sp.symbols("z3 Z3 b2", positive=True),
+    *sp.symbols("z4 a1 x"),
+    sp.Symbol("n2", integer=True),
+    sp.Dummy("z5"),
+]
+
+
+def test_renamed_to_names_of_other_assumptions_is_xreplace():
+    rng = random.Random(5)
+    for e in _random_sums(600, 5):
+        names = rng.sample(MIXED, len(OBJECTS))
+        _same(e, dict(zip(OBJECTS, names, strict=True)))
+
+
+def _compared_parts(n: int, seed: int) -> list[sp.Basic]:
+    """Random parts as a program's sums and products hold them: names of
+    other assumptions, dummies, numbers of each class, products, sums,
+    powers, functions, unevaluated ones, and tuples of them."""
+    rng = random.Random(seed)
+    atoms = [*MIXED, sp.Integer(2), sp.Integer(-3), sp.S.NegativeOne, sp.S.One]
+    atoms += [sp.S.Zero, sp.S.Half, sp.Rational(-2, 7), sp.Float(1.5), sp.Float(-2)]
+    atoms += [sp.Float(1.5, 30), sp.Float(2), sp.Integer(3) / 2]
+    atoms += [sp.pi, sp.E, sp.I, sp.Symbol("n", commutative=False)]
+
+    def grow(depth: int) -> sp.Basic:
+        if depth == 0:
+            return rng.choice(atoms)
+        kind = rng.randrange(7)
+        parts = [grow(depth - 1) for _ in range(rng.randrange(1, 4))]
+        if kind == 0:
+            return sp.Add(*parts)
+        if kind == 1:
+            return sp.Mul(*parts)
+        if kind == 2:
+            return sp.Mul(*parts, evaluate=False)
+        if kind == 3:
+            return sp.Pow(parts[0], rng.choice([2, -1, sp.Rational(1, 2)]))
+        if kind == 4:
+            return rng.choice([sp.sin, sp.cos, sp.Abs])(parts[0])
+        if kind == 5:
+            return sp.Pow(parts[0], parts[-1], evaluate=False)
+        return sp.Add(*parts, evaluate=False)
+
+    out = [grow(rng.randrange(0, 4)) for _ in range(n)]
+    return out + [sp.Tuple(*rng.sample(out, 2)) for _ in range(n // 10)]
+
+
+def test_compare_keys_order_as_basic_compare():
+    """``CompareKeys`` orders parts exactly as ``Basic.compare``: below,
+    equal and above alike, each pair of many random parts (the order in
+    which a renamed sum's or product's arguments are sorted)."""
+    keys = CompareKeys()
+    parts = _compared_parts(300, 3)
+    parts += [sp.Subs(MIXED[0] ** 2, MIXED[0], 1)]  # content not known
+    unknown = 0
+    for a in parts:
+        for b in parts:
+            ka, kb = keys.key(a), keys.key(b)
+            if ka is None or kb is None:
+                unknown += 1
+                continue
+            assert (ka > kb) - (ka < kb) == a.compare(b), (a, b)
+    assert unknown and unknown < len(parts) * 3
+    assert keys.key(parts[-1]) is None
+
+
+def test_canonical_sort_is_sympys_sort():
+    """Lists of random parts sorted with ``CompareKeys`` (or by
+    ``Basic.compare`` where a part has no key) as sympy sorts a sum's and
+    a product's arguments."""
+    from al2py_runtime.codegen.program import _sort_canonically
+
+    keys = CompareKeys()
+    rng = random.Random(4)
+    parts = _compared_parts(400, 4) + [sp.Subs(MIXED[0] ** 2, MIXED[0], 1)]
+    for _ in range(400):
+        some = rng.sample(parts, rng.randrange(2, 9))
+        got = list(some)
+        _sort_canonically(got, keys)
+        want = sorted(some, key=_args_sortkey)
+        assert [id(x) for x in got] == [id(x) for x in want], some
 
 
 def test_names_that_do_not_commute_keep_their_order():

@@ -11,10 +11,11 @@ from typing import Any
 import sympy as sp
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
+from sympy.printing.precedence import PRECEDENCE
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering
+from .printers import Remembering, names_sorted
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -33,18 +34,57 @@ class _Printer(Remembering, OctaveCodePrinter):
     :class:`.printers.Remembering`)."""
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
-        return self.print_ordered_add(expr, order)
+        if order is not None or self.order is not None:
+            return self.print_ordered_add(expr, order)
+        found = names_sorted(expr.args)
+        if found is None:
+            return self.print_unnamed_add(expr)
+        return self._names_sum(expr, found)
+
+    def _names_sum(self, expr: Any, found: list) -> str:
+        """``print_ordered_add(expr)`` of a sum of names and products of
+        names (after a number), most sums of a program: the
+        terms in ``as_ordered_terms``'s order (:func:`.printers.names_sorted`)
+        and each product of names (after -1 or nothing) printed as
+        :meth:`_print_Mul` prints it, its names sorted by name and joined by
+        ``.*`` (``found``: :func:`.printers.names_sorted` of its terms).
+
+        None of these terms is put in parentheses: a name's precedence is
+        an atom's, a product's of names (after a number) a product's or,
+        after a negative number, a sum's, none below the sum's own."""
+        prec = self.remembered_precedence(expr)
+        if prec > PRECEDENCE["Add"]:  # pragma: no cover - a sum's is Add's
+            return self.joined_terms(expr, [term for term, _names in found])
+        part = self.print_part
+        out = []
+        for term, names in found:
+            if type(term) is sp.Symbol:
+                t = part(term)
+            else:
+                first = term.args[0]
+                if first is _MINUS_ONE:
+                    t = "-" + ".*".join([part(a) for a in names])
+                elif first.is_Number:
+                    t = part(term)
+                else:
+                    t = ".*".join([part(a) for a in names])
+            if t.startswith("-"):
+                out.append(" - " if out else "-")
+                out.append(t[1:])
+            else:
+                if out:
+                    out.append(" + ")
+                out.append(t)
+        return "".join(out)
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
         order = None if self.order in ("old", "none") else self.remembered_factors
-        names = backends.signed_names(expr) if order is not None else None
-        if names is not None and _commute(names[1]):
-            # names alone, or -1 and names (most products): ordered by name
-            # (remembered_factors), each as it is, joined by .*
-            ordered = sorted(names[1], key=_name)
-            return names[0] + ".*".join([self.print_part(a) for a in ordered])
+        if order is not None:
+            text = self.names_product(expr)
+            if text is not None:
+                return text
         number = self.remembered_number
         if (
             number(expr)
@@ -75,6 +115,30 @@ class _Printer(Remembering, OctaveCodePrinter):
         divsym = "/" if all(number(bi) for bi in b) else "./"
         return sign + multjoin(a, a_str) + divsym + f"({multjoin(b, b_str)})"
 
+    def names_product(self, expr: Any) -> str | None:
+        """:meth:`_print_Mul`'s text of a product of names alone, or of -1
+        and names, that commute (most products), when the printer orders
+        factors: ordered by name (``remembered_factors``), each as it is,
+        joined by ``.*``; None for any other product."""
+        if self.order in ("old", "none"):
+            return None
+        names = backends.signed_names(expr)
+        if names is None or not _commute(names[1]):
+            return None
+        ordered = sorted(names[1], key=_name)
+        return names[0] + ".*".join([self.print_part(a) for a in ordered])
+
+    def joined_terms(self, expr: Any, terms: list) -> str:
+        """The text of the sum ``expr`` of ``terms`` in that order (its
+        products of names printed at once: :meth:`names_product`)."""
+        return backends.join_sum(
+            self,
+            terms,
+            self.remembered_precedence(expr),
+            self.remembered_precedence,
+            self.names_product,
+        )
+
     def _print_Pow(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Pow with the number tests and precedences
         # remembered
@@ -97,6 +161,9 @@ class _Printer(Remembering, OctaveCodePrinter):
 
 def _name(symbol: Any) -> str:
     return symbol.name
+
+
+_MINUS_ONE = sp.S.NegativeOne
 
 
 def _commute(names: tuple) -> bool:

@@ -20,6 +20,7 @@ program, so the keys were formed again down to the leaves.
 
 from __future__ import annotations
 
+import operator
 from typing import Any
 
 import sympy as sp
@@ -30,7 +31,7 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["ProgramPrinter", "Remembering", "holds_instance"]
+__all__ = ["ProgramPrinter", "Remembering", "holds_instance", "names_sorted"]
 
 #: what a statement holding one of is printed by sympy's ``doprint``, and
 #: a part holding one of is printed each time (see ProgramPrinter)
@@ -143,7 +144,8 @@ class ProgramPrinter:
                 text = self._print(expr)  # type: ignore[attr-defined]
             else:
                 lhs = sp.Symbol(assign_to) if isinstance(assign_to, str) else assign_to
-                lhs_code = self._print(lhs)  # type: ignore[attr-defined]
+                # a name's text is the same at any depth (its own, remembered)
+                lhs_code = self.print_part(lhs)
                 rhs_code = self._print(expr)  # type: ignore[attr-defined]
                 text = self._get_statement(f"{lhs_code} = {rhs_code}")  # type: ignore
         finally:
@@ -225,6 +227,16 @@ class Remembering(ProgramPrinter):
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
         """``StrPrinter._print_Add``."""
         terms = self._as_ordered_terms(expr, order=order)
+        return self.joined_terms(expr, terms)
+
+    def print_unnamed_add(self, expr: Any) -> str:
+        """:meth:`print_ordered_add` of a sum (``order`` and the printer's
+        None) that :func:`names_sorted` does not order."""
+        terms = _ordered_terms(expr, self._keys, self._numbers, self._powers, False)
+        return self.joined_terms(expr, terms)
+
+    def joined_terms(self, expr: Any, terms: list) -> str:
+        """The text of the sum ``expr`` of ``terms`` in that order."""
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
@@ -238,17 +250,23 @@ def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
     found = memo.get(expr)
     if found is not None:
         return found
+    return _holds(expr, kinds, memo, not _NAME_HELD.get(kinds, True))
+
+
+def _holds(expr: Any, kinds: Any, memo: dict, skip_names: bool) -> bool:
+    """:func:`holds_instance` of a part not in ``memo`` (``skip_names``:
+    a name is not one of ``kinds``)."""
     found = isinstance(expr, kinds)
     if not found:
         for a in expr.args:
-            if type(a) is _NAME and not _NAME_HELD.get(kinds, True):
+            if skip_names and type(a) is _NAME:
                 continue  # a name (most arguments), not one of kinds
             if isinstance(a, sp.Atom):
                 held = isinstance(a, kinds)  # (an atom's answer is not kept)
             else:
                 held = memo.get(a)
                 if held is None:
-                    held = holds_instance(a, kinds, memo)
+                    held = _holds(a, kinds, memo, skip_names)
             if held:
                 found = True
                 break
@@ -272,27 +290,28 @@ def _complex(x: Any, memo: dict) -> complex:
     return found
 
 
-def _ordered_terms(expr: Any, keys: dict, numbers: dict, powers: dict) -> list:
+def _ordered_terms(
+    expr: Any, keys: dict, numbers: dict, powers: dict, named: bool = True
+) -> list:
     """``expr.as_ordered_terms()`` of a sum (sympy's lexicographic order of
     monomials in the generators sorted by ``default_sort_key``), the same
     list, with the sort keys, number tests and factors' powers remembered
-    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_monomials`;
-    else sympy's ``as_terms``)."""
+    in ``keys``, ``numbers`` and ``powers`` (:func:`_ordered_by_names`
+    unless ``named`` is False: the caller found it gives None; then
+    :func:`_ordered_by_monomials`; else sympy's ``as_terms``)."""
 
-    named = _ordered_by_names(expr.args)
-    if named is not None:
-        return named
+    if named:
+        by_names = _ordered_by_names(expr.args)
+        if by_names is not None:
+            return by_names
 
-    def plain(x: Any) -> bool:
-        return not isinstance(x, sp.Number | sp.NumberSymbol)
-
-    add_args = sorted(expr.args, key=plain)
+    add_args = sorted(expr.args, key=_not_numeric)
     if (
         len(add_args) == 2
-        and isinstance(add_args[0], sp.Number | sp.NumberSymbol)
+        and isinstance(add_args[0], _NUMERIC)
         and isinstance(add_args[1], sp.Mul)
     ):
-        mul_args = sorted(sp.Mul.make_args(add_args[1]), key=plain)
+        mul_args = sorted(sp.Mul.make_args(add_args[1]), key=_not_numeric)
         if (
             len(mul_args) == 2
             and isinstance(mul_args[0], sp.Number)
@@ -400,6 +419,14 @@ def _ordered_by_names(terms: tuple) -> list | None:
     None (two names alike, two terms of one monomial) or sympy sorts
     otherwise (a number term, a power, a function, a name twice in a
     term, a factor that does not commute)."""
+    found = names_sorted(terms)
+    return None if found is None else [term for term, _names in found]
+
+
+def names_sorted(terms: tuple) -> list[tuple[Any, list]] | None:
+    """:func:`_ordered_by_names`'s order of ``terms``, each with its names
+    sorted by name (how a product of names is printed); None where that
+    gives None."""
     seen: dict[str, Any] = {}
     keyed = []
     for term in terms:
@@ -411,23 +438,26 @@ def _ordered_by_names(terms: tuple) -> list | None:
                 factors = factors[1:]
         else:
             return None
-        key = []
         for f in factors:
             if type(f) is not sp.Symbol or not f.is_commutative:
                 return None
-            if seen.setdefault(f.name, f) != f:
+            known = seen.setdefault(f.name, f)
+            if known is not f and known != f:
                 return None  # two names alike
-            key.append((0, f.name))
-        if not key or len(set(key)) != len(key):
+        if not factors:
             return None
-        key.sort()
+        names = sorted(factors, key=_BY_NAME)
+        key = [(0, f.name) for f in names]
+        for i in range(1, len(key)):
+            if key[i] == key[i - 1]:
+                return None  # a name twice
         key.append((1, ""))
-        keyed.append((tuple(key), term))
+        keyed.append((tuple(key), term, names))
     keyed.sort(key=_first)
     for i in range(1, len(keyed)):
         if keyed[i][0] == keyed[i - 1][0]:
             return None
-    return [term for _, term in keyed]
+    return [(term, names) for _, term, names in keyed]
 
 
 def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
@@ -439,6 +469,15 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
     if is_number_in(factor, numbers) or not factor.is_commutative:
         return False
     return decompose_power(factor)
+
+
+_BY_NAME = operator.attrgetter("name")
+#: the terms ``_ordered_terms`` puts first (as ``Expr.as_ordered_terms`` does)
+_NUMERIC = (sp.Number, sp.NumberSymbol)
+
+
+def _not_numeric(x: Any) -> bool:
+    return not isinstance(x, _NUMERIC)
 
 
 def _first(pair: tuple) -> Any:

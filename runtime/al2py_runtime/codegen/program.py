@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
+from sympy.core import basic as _sympy_basic
 from sympy.core.basic import _args_sortkey
 from sympy.functions.elementary.exponential import ExpBase
 
@@ -635,6 +636,7 @@ def renamed_evaluated(expr: Any, rule: dict[Any, Any], memo: dict | None = None)
     same = memo.get(_SAME)
     if same is None:
         same = memo[_SAME] = {}
+        memo[_KEYS] = CompareKeys()
     return _renamed(expr, rule, memo, same)[0]
 
 
@@ -659,15 +661,22 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
     for i, a in enumerate(args):
         if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
             continue
-        b, changed = _renamed(a, rule, memo, same)
-        if changed:
-            if new is None:
-                new = list(args)
-            new[i] = b
+        # a renamed object or an atom (most arguments) here, as the call
+        # below would answer
+        b = rule.get(a, _ABSENT)
+        if b is _ABSENT:
+            if a.is_Atom:
+                continue
+            b, changed = _renamed(a, rule, memo, same)
+            if not changed:
+                continue
+        if new is None:
+            new = list(args)
+        new[i] = b
     if new is None:
         out = (e, False)
     else:
-        part = _sorted_only(e, new)
+        part = _sorted_only(e, new, memo[_KEYS])
         out = (same.setdefault(part, part), True)
     memo[e] = out
     return out
@@ -675,24 +684,30 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
 
 #: the key in :func:`renamed_evaluated`'s memo of the parts formed
 _SAME = ("renamed_evaluated", "formed parts")
+#: the key in :func:`renamed_evaluated`'s memo of its :class:`CompareKeys`
+_KEYS = ("renamed_evaluated", "compare keys")
 #: what ``rule.get`` gives for a part not in the rule
 _ABSENT = object()
 
 
-def _sorted_only(expr: Any, args: list[Any]) -> Any:
+def _sorted_only(expr: Any, args: list[Any], keys: CompareKeys) -> Any:
     """``expr.func(*args)``, a sum or product that evaluation would only
-    sort formed from ``args`` sorted (:func:`renamed_evaluated`)."""
+    sort formed from ``args`` sorted (:func:`renamed_evaluated`; ``keys``:
+    the program's)."""
     cls = type(expr)
     if cls is sp.Mul or cls is sp.Add:
-        kept = _kept_args(cls is sp.Mul, args)
+        kept = _kept_args(cls is sp.Mul, args, keys)
         if kept is not None:
             return cls._from_args(kept, True)
     return expr.func(*args)
 
 
-def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
+def _kept_args(
+    mul: bool, args: list[Any], order: CompareKeys | None = None
+) -> list[Any] | None:
     """The arguments of ``Mul(*args)`` (``mul``) or ``Add(*args)`` when
-    sympy's evaluation only sorts ``args``, else None.
+    sympy's evaluation only sorts ``args``, else None (``order``: sympy's
+    order of the arguments, :class:`CompareKeys`).
 
     The conditions follow ``Mul.flatten`` and ``Add.flatten``: numbers
     combine (and 1 or 0 goes), a product's equal bases and a sum's equal
@@ -706,6 +721,7 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
     A name (most factors) and a sum's product (most terms) are asked only
     what these conditions ask of them, first; a product of two names (or
     of -1 and two names: most of a program's products) at once."""
+    order = CompareKeys() if order is None else order
     if mul:
         pair = _two_names(args)
         if pair is not None:
@@ -749,11 +765,8 @@ def _kept_args(mul: bool, args: list[Any]) -> list[Any] | None:
         return None  # equal bases or terms combine
     if mul and number is not None and len(rest) == 1 and rest[0].is_Add:
         return None  # 2*(x + y) is distributed
-    if len(rest) == 2:
-        if rest[0].compare(rest[1]) > 0:  # sympy's key, once
-            rest.reverse()
-    elif len(rest) > 2:
-        rest.sort(key=_args_sortkey)
+    if len(rest) > 1:
+        _sort_canonically(rest, order)
     if number is not None:
         rest.insert(0, number)
     return rest
@@ -773,7 +786,10 @@ def _two_names(args: list[Any]) -> list[Any] | None:
         return None
     if not (a.is_commutative and b.is_commutative):
         return None
-    if a.compare(b) > 0:  # sympy's key, once
+    # ``Basic.compare`` of two names of one class: the lengths of their
+    # ``_hashable_content()`` (the name, then the assumptions), then the
+    # names, which differ
+    if (len(a._hashable_content()), a.name) > (len(b._hashable_content()), b.name):
         a, b = b, a
     return [a, b] if first is None else [first, a, b]
 
@@ -781,6 +797,109 @@ def _two_names(args: list[Any]) -> list[Any] | None:
 _NAME = sp.Symbol
 _MUL = sp.Mul
 _MINUS_ONE = sp.S.NegativeOne
+
+
+def _sort_canonically(parts: list[Any], keys: CompareKeys) -> None:
+    """Sort ``parts`` (two or more) in place by sympy's ``Basic.compare``
+    (``_args_sortkey``, the order ``Mul.flatten`` and ``Add.flatten`` give)
+    with their :class:`CompareKeys`; by ``compare`` itself when a part has
+    no such key."""
+    found = []
+    for a in parts:
+        key = keys.key(a)
+        if key is None:
+            parts.sort(key=_args_sortkey)
+            return
+        found.append(key)
+    if len(parts) == 2:
+        if found[0] > found[1]:
+            parts.reverse()
+        return
+    order = sorted(range(len(parts)), key=found.__getitem__)
+    parts[:] = [parts[i] for i in order]
+
+
+#: ``_hashable_content`` methods that return the object's arguments (all
+#: sympy objects)
+_ARGS_CONTENT = (sp.Basic._hashable_content, sp.Expr._hashable_content)
+#: ``_hashable_content`` methods that return plain values (strings, numbers
+#: and tuples of them), compared as Python compares them
+_PLAIN_CONTENT = (
+    sp.Symbol._hashable_content,
+    sp.Dummy._hashable_content,
+    sp.Rational._hashable_content,
+    sp.Float._hashable_content,
+)
+
+
+class CompareKeys:
+    """Keys whose order is sympy's ``Basic.compare`` (the order of a
+    canonical sum's or product's arguments), each part's formed once.
+
+    ``compare`` orders two objects by class (:func:`_class_key`), then by
+    the length of their ``_hashable_content()``, then by its items in turn
+    (sympy objects by ``compare``, other values as Python orders them).  An
+    object's key is ``(class key, length, items)`` with each sympy item's
+    own key, which Python's tuples order the same way: ``a``'s key is below
+    ``b``'s exactly when ``a.compare(b) < 0``, and equal when it is 0.  One
+    instance serves one program (its names and products are keyed again
+    and again); a number is remembered with its class (sympy's ``==``
+    may hold between numbers of different classes)."""
+
+    __slots__ = ("classes", "numbers", "parts")
+
+    def __init__(self) -> None:
+        self.parts: dict = {}
+        self.numbers: dict = {}  # (class, number) -> its key
+        self.classes: dict = {}
+
+    def key(self, e: Any) -> tuple | None:
+        """``e``'s key, or None when ``e`` (or a part of it) is of a class
+        whose content this does not know (then use ``Basic.compare``)."""
+        if e.is_Number:
+            part: Any = (type(e), e)
+            known = self.numbers
+        else:
+            part = e
+            known = self.parts
+        found = known.get(part)
+        if found is not None:
+            return found
+        cls = type(e)
+        head = self.classes.get(cls)
+        if head is None:
+            head = self.classes[cls] = _class_key(cls)
+        content_of = cls._hashable_content
+        if content_of in _ARGS_CONTENT:
+            items = []
+            parts = self.parts
+            for a in e.args:
+                key = parts.get(a)  # (most arguments: names keyed before)
+                if key is None:
+                    if not isinstance(a, sp.Basic):
+                        return None
+                    key = self.key(a)
+                    if key is None:
+                        return None
+                items.append(key)
+            content: tuple = tuple(items)
+        elif content_of in _PLAIN_CONTENT:
+            content = e._hashable_content()
+        else:
+            return None
+        found = known[part] = (head, len(content), content)
+        return found
+
+
+def _class_key(cls: type) -> tuple[int, str]:
+    """The order of ``cls`` in ``Basic.compare`` (sympy's ``_cmp_name``):
+    the classes named in ``ordering_of_classes`` in its order, then the
+    others by name."""
+    order = _sympy_basic.ordering_of_classes
+    name = cls.__name__
+    if name in order:
+        return order.index(name), ""
+    return len(order) + 1, name
 
 
 def _plain_factor(a: Any, mul: bool) -> bool:
@@ -864,7 +983,10 @@ def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assi
     ``block`` uses (Autolev's "Quantities to be specified")."""
     if not names:
         return []
-    used = _free([sp.sympify(a.expr) for a in block], [], memo)
+    wanted = set(names)
+    used: set[Any] = set()
+    for a in block:  # (each statement's names meet the few wanted)
+        used |= wanted.intersection(backends.free_symbols_of(sp.sympify(a.expr), memo))
     return [Assign(("tmp", s.name), sp.Integer(0), s) for s in names if s in used]
 
 

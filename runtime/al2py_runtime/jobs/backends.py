@@ -387,7 +387,8 @@ def _free_of_parts(expr: Any, memo: dict) -> frozenset:
             if a.is_Symbol:
                 out.add(a)
             elif a.args or type(a).free_symbols is not _UNITED:
-                out |= _free_of_parts(a, memo)
+                part = memo.get(a)  # (a shared part: found before)
+                out |= _free_of_parts(a, memo) if part is None else part
         found = frozenset(out)
     memo[expr] = found
     return found
@@ -689,16 +690,28 @@ class CPrinter(C99CodePrinter):
         # StrPrinter._print_Add (terms in their own order) with precedences
         # kept per class: sympy's precedence() of a product forms its
         # negative to compare (a third of printing a large model)
-        return join_sum(self, expr.args, _precedence(expr), _precedence)
+        return join_sum(
+            self, expr.args, _precedence(expr), _precedence, self.names_product
+        )
+
+    def names_product(self, expr: Any) -> str | None:
+        """:meth:`_print_Mul`'s text of a product of names (after -1 or
+        nothing), each as it is; None for any other product."""
+        if expr in self.math_macros:
+            return None
+        names = signed_names(expr)
+        if names is None:
+            return None
+        return names[0] + "*".join([self.print_part(a) for a in names[1]])
 
     def _print_Mul(self, expr: Any, **kwargs: Any) -> str:
         # C89CodePrinter._print_Mul: CodePrinter._print_Mul (factors in
         # their own order) with precedences kept per class
         if expr in self.math_macros:
             return super()._print_Mul(expr, **kwargs)
-        names = signed_names(expr)
+        names = self.names_product(expr)
         if names is not None:  # most products: each name as it is
-            return names[0] + "*".join([self.print_part(a) for a in names[1]])
+            return names
         sign, a_str, b_str = product_parts(self, expr, _precedence(expr))[::2]
         return join_product(sign, a_str, b_str)
 
@@ -862,13 +875,32 @@ def magnitude_factors(expr: Any) -> tuple[str, list]:
 
 
 def join_sum(
-    printer: Any, terms: Iterable[Any], prec: int, precedence: Callable[[Any], int]
+    printer: Any,
+    terms: Iterable[Any],
+    prec: int,
+    precedence: Callable[[Any], int],
+    names_text: Callable[[Any], str | None] | None = None,
 ) -> str:
     """``StrPrinter._print_Add``'s text of a sum of ``terms`` in that order,
     with ``precedence`` the printer's (shared by the C, Fortran and MATLAB
-    printers, each term printed by their ``print_part``)."""
+    printers, each term printed by their ``print_part``).
+
+    ``names_text``: the printer's text of a product of names (after -1),
+    None for any other product (most terms of a program are such
+    products: printed by it at once).  Such a product is never put in
+    parentheses in a sum: its precedence is a product's, or a sum's after
+    -1."""
     out = []
+    direct = names_text is not None and prec <= PRECEDENCE["Add"]
     for term in terms:
+        if direct and type(term) is sp.Mul:
+            t = names_text(term)  # type: ignore[misc]
+            if t is not None:
+                if t.startswith("-"):
+                    out.extend(["-", t[1:]])
+                else:
+                    out.extend(["+", t])
+                continue
         t = printer.print_part(term)
         if t.startswith("-") and not term.is_Add:
             sign = "-"
