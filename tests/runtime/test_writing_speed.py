@@ -196,6 +196,20 @@ def test_compare_keys_order_as_basic_compare():
     assert keys.key(parts[-1]) is None
 
 
+def test_compare_keys_leave_a_class_with_its_own_compare_to_it():
+    """A class that compares in its own way (an intermediate's) has no key,
+    nor has a part that holds it: sympy then calls its ``compare``."""
+
+    class Own(sp.Symbol):
+        def compare(self, other):  # the reverse of sympy's order
+            return -sp.Basic.compare(self, other)
+
+    keys = CompareKeys()
+    assert keys.key(Own("a")) is None
+    assert keys.key(Own("a") + sp.Symbol("b")) is None
+    assert keys.key(sp.Symbol("b")) is not None
+
+
 def test_canonical_sort_is_sympys_sort():
     """Lists of random parts sorted with ``CompareKeys`` (or by
     ``Basic.compare`` where a part has no key) as sympy sorts a sum's and

@@ -855,7 +855,8 @@ class CompareKeys:
 
     def key(self, e: Any) -> tuple | None:
         """``e``'s key, or None when ``e`` (or a part of it) is of a class
-        whose content this does not know (then use ``Basic.compare``)."""
+        whose content this does not know, or that compares in its own way
+        (then use ``compare``)."""
         if e.is_Number:
             part: Any = (type(e), e)
             known = self.numbers
@@ -866,9 +867,13 @@ class CompareKeys:
         if found is not None:
             return found
         cls = type(e)
-        head = self.classes.get(cls)
+        head = self.classes.get(cls, _ABSENT)
+        if head is _ABSENT:
+            # (a class with a compare of its own, an intermediate's: None)
+            own = cls.compare is not sp.Basic.compare
+            head = self.classes[cls] = None if own else _class_key(cls)
         if head is None:
-            head = self.classes[cls] = _class_key(cls)
+            return None
         content_of = cls._hashable_content
         if content_of in _ARGS_CONTENT:
             items = []
