@@ -1,0 +1,138 @@
+"""Shortcuts of the script's substitutions and kinematics (issue 35, DAS3's
+import): each gives sympy's own result, the same objects, checked against
+sympy on random expressions."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime.workspace import _power
+from sympy.physics.mechanics import dynamicsymbols
+
+Q = dynamicsymbols("q1:4")
+X = sp.Symbol("x")
+R = sp.symbols("r1:3", real=True)
+P = sp.Symbol("p", positive=True)
+N = sp.Symbol("n", negative=True)
+Z = sp.Symbol("z", zero=True)
+W = sp.Symbol("w", infinite=True)
+V = sp.Symbol("v", extended_real=True, infinite=True)
+K = sp.Symbol("k", integer=True)
+M = sp.Symbol("m", commutative=False)
+IU = sp.S.ImaginaryUnit
+
+#: atoms of the random terms: every kind sympy's powers of sums treat apart
+#: (infinities, the imaginary unit, numbers, assumptions, non-commutative)
+ATOMS = [
+    *Q,
+    X,
+    *R,
+    P,
+    N,
+    Z,
+    W,
+    V,
+    K,
+    M,
+    sp.oo,
+    -sp.oo,
+    sp.zoo,
+    sp.nan,
+    IU,
+    sp.pi,
+    sp.E,
+    sp.sqrt(2),
+    sp.Integer(2),
+    sp.Integer(-3),
+    sp.Rational(1, 2),
+    sp.Float(0.5),
+    sp.Float(-1.25),
+]
+
+EXPONENTS = [
+    sp.S.Zero,
+    sp.S.One,
+    sp.S.NegativeOne,
+    sp.Integer(2),
+    sp.Integer(3),
+    sp.Integer(-2),
+    sp.Rational(1, 2),
+    sp.Rational(-1, 2),
+    sp.Rational(3, 2),
+    sp.Rational(1, 3),
+    sp.Float(0.5),
+    sp.Float(2.0),
+    X,
+    K,
+    sp.oo,
+    sp.zoo,
+    IU,
+    K + 1,
+    sp.pi,
+]
+
+
+def _term(rng: random.Random, depth: int = 0) -> sp.Expr:
+    """A random term: an atom, a product, a power, a function or a sum."""
+    kind = rng.randrange(8 if depth < 2 else 1)
+    if kind <= 2:
+        return rng.choice(ATOMS)
+    if kind == 3:
+        return sp.Mul(_term(rng, depth + 1), _term(rng, depth + 1))
+    if kind == 4:
+        return rng.choice(ATOMS) * IU
+    if kind == 5:
+        return sp.Pow(_term(rng, depth + 1), rng.choice(EXPONENTS[:10]))
+    if kind == 6:
+        return rng.choice([sp.sin, sp.cos, sp.exp, sp.log])(_term(rng, depth + 1))
+    return sp.Add(_term(rng, depth + 1), _term(rng, depth + 1))
+
+
+def _base(rng: random.Random) -> sp.Expr:
+    if rng.random() < 0.1:  # an unevaluated sum: its terms may be sums
+        return sp.Add(_term(rng), _term(rng), evaluate=False)
+    return sp.Add(*[_term(rng) for _ in range(rng.choice([2, 2, 2, 3]))])
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_power_is_sympys_power(seed):
+    """``_power`` (the resolver's power of a replaced base) is sympy's
+    ``Pow``: the same tree, for sums with and without infinite terms, the
+    imaginary unit, numbers and every kind of exponent."""
+    rng = random.Random(seed)
+    fast = 0
+    for _ in range(400):
+        base, exp = _base(rng), rng.choice(EXPONENTS)
+        with sp.core.parameters.evaluate(True):
+            want = sp.Pow(base, exp)
+        got = _power(base, exp)
+        assert sp.srepr(got) == sp.srepr(want), (base, exp)
+        assert type(got) is type(want)
+        assert got.is_commutative == want.is_commutative
+        fast += type(base) is sp.Add and exp.is_Rational and exp not in (0, 1)
+    assert fast > 40  # the shortcut itself was checked
+
+
+def test_power_with_infinite_terms():
+    """The cases that decide the shortcut: a literal ``a + I*b`` with an
+    infinite term has a value (sympy's, so no shortcut); without ``I`` a
+    sum with an infinite term stays a power, as with none."""
+    a, b = sp.Symbol("a", real=True), sp.Symbol("b", real=True)
+    bases = (
+        V + IU * b,
+        IU * V + a,
+        V + 2 * IU,
+        W + IU * b,
+        V + b,
+        sp.oo * a + b,
+        V + Q[0],
+    )
+    exps = (sp.Integer(-1), sp.Integer(2), sp.Rational(1, 2), sp.Rational(-3, 2))
+    for base in bases:
+        for exp in exps:
+            assert sp.srepr(_power(base, exp)) == sp.srepr(sp.Pow(base, exp))
+    # sympy's values, kept: oo + I*b is infinite in any power
+    assert _power(V + IU * b, sp.Integer(-1)) == 0
+    assert _power(IU * V + a, sp.Integer(2)) == sp.zoo
