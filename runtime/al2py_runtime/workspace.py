@@ -572,15 +572,23 @@ class Workspace(Mapping):
 
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
+        # Floats are looked for once in all of a vector's or a matrix's
+        # entries, whose parts are mostly shared (the entries of a Jacobian
+        # over the same intermediates), rather than entry by entry.
+        return self._normalized(value, rearrange, _may_hold_floats(value))
+
+    def _normalized(self, value: Any, rearrange: bool, floats: bool) -> Any:
+        """:meth:`normalize`; ``floats``: whether ``value`` may hold a
+        float (if not, :meth:`_numbers` would change nothing)."""
         if _is_vectorial(value):
-            return walks.vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
+            return walks.vmap(value, lambda e: self._normalized(e, rearrange, floats))
         if isinstance(value, list | tuple):
             if any(_is_vectorial(v) for v in value):
-                return tuple(self.normalize(v, rearrange=rearrange) for v in value)
+                return tuple(self._normalized(v, rearrange, floats) for v in value)
             value = sp.Matrix(value)
         if isinstance(value, sp.MatrixBase):
             return sp.Matrix(value).applyfunc(
-                lambda e: self.normalize(e, rearrange=rearrange)
+                lambda e: self._normalized(e, rearrange, floats)
             )
         if not isinstance(value, sp.Basic):
             try:
@@ -589,7 +597,8 @@ class Workspace(Mapping):
                 return value
         if not isinstance(value, sp.Expr):
             return value
-        value = self._numbers(value)
+        if floats:
+            value = self._numbers(value)
         if self._autotaylor is not None:
             from .algebra import taylor
 
@@ -1282,6 +1291,36 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
         return e
 
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
+
+
+def _may_hold_floats(value: Any) -> bool:
+    """False only when no scalar of ``value`` (a sympy object, or a vector,
+    dyadic, matrix or list of them) holds a ``Float``: every distinct part
+    of all of them walked once."""
+    roots: list = []
+    todo = [value]
+    while todo:
+        v = todo.pop()
+        if isinstance(v, Vector):
+            roots.extend(x for m, _ in v.args for x in m)
+        elif isinstance(v, Dyadic):
+            roots.extend(c for c, _, _ in v.args)
+        elif isinstance(v, sp.MatrixBase | list | tuple):
+            todo.extend(v)
+        elif isinstance(v, sp.Basic):
+            roots.append(v)
+        else:  # sympified later (a Python float is a Float)
+            return True
+    seen = set(roots)
+    while roots:
+        e = roots.pop()
+        if isinstance(e, sp.Float):
+            return True
+        for a in e.args:
+            if a not in seen:
+                seen.add(a)
+                roots.append(a)
+    return False
 
 
 def _is_vectorial(value: Any) -> bool:

@@ -136,3 +136,45 @@ def test_power_with_infinite_terms():
     # sympy's values, kept: oo + I*b is infinite in any power
     assert _power(V + IU * b, sp.Integer(-1)) == 0
     assert _power(IU * V + a, sp.Integer(2)) == sp.zoo
+
+
+def _scalar(rng: random.Random) -> sp.Expr:
+    """A random entry over shared parts, sometimes with a float (one that
+    Autolev's rounding turns into an integer or a fraction, or keeps)."""
+    e = sp.Add(*[rng.choice(Q) * rng.choice(R) for _ in range(rng.randrange(1, 4))])
+    e = e * sp.sin(rng.choice(Q)) + X
+    if rng.random() < 0.15:
+        e = e * rng.choice([sp.Float(0.5), sp.Float(2.0000000001), sp.Float(0.1234567)])
+    return e
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_normalize_looks_for_floats_once(tmp_path, seed):
+    """A matrix, a vector, a dyadic or a list is normalized entry by entry
+    as before (its floats made exact numbers), though its floats are looked
+    for once in all its entries (``_may_hold_floats``)."""
+    from al2py_runtime import Workspace
+    from sympy.physics.vector import ReferenceFrame
+
+    al = Workspace("snip.al", str(tmp_path / "snip.py"))
+    rng = random.Random(seed)
+    frame_a, frame_b = ReferenceFrame("A"), ReferenceFrame("B")
+    changed = 0
+    for _ in range(30):
+        entries = [_scalar(rng) for _ in range(6)]
+        alone = [al.normalize(e) for e in entries]
+        changed += alone != entries
+        m = al.normalize(sp.Matrix(2, 3, entries))
+        assert [sp.srepr(x) for x in m] == [sp.srepr(x) for x in alone]
+        lst = al.normalize(list(entries))
+        assert [sp.srepr(x) for x in lst] == [sp.srepr(x) for x in alone]
+        v = al.normalize(
+            entries[0] * frame_a.x + entries[1] * frame_a.y + entries[2] * frame_b.z
+        )
+        want = alone[0] * frame_a.x + alone[1] * frame_a.y + alone[2] * frame_b.z
+        assert sp.srepr(v.args) == sp.srepr(want.args)
+        d = al.normalize(entries[3] * (frame_a.x | frame_b.y))
+        assert sp.srepr(d.args) == sp.srepr((alone[3] * (frame_a.x | frame_b.y)).args)
+    assert changed > 5  # floats were met, and made exact
+    # a Python float in a list is a float too
+    assert list(al.normalize([0.5, X])) == [sp.Rational(1, 2), X]
