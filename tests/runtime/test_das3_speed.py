@@ -178,3 +178,42 @@ def test_normalize_looks_for_floats_once(tmp_path, seed):
     assert changed > 5  # floats were met, and made exact
     # a Python float in a list is a float too
     assert list(al.normalize([0.5, X])) == [sp.Rational(1, 2), X]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_vector_sum_is_sympys_sum(seed):
+    """``_vector_sum`` (a chain of positions, ``pos``) is sympy's
+    ``Vector(0) + v1 + v2 + ...``: the same components, in the same
+    order, also where a frame's component cancels and comes back."""
+    from al2py_runtime.model.points import _vector_sum
+    from sympy.physics.vector import ReferenceFrame, Vector
+
+    rng = random.Random(seed)
+    frames = [ReferenceFrame(n) for n in "ABCD"]
+    pool = [sp.S.Zero, sp.Integer(1), X, *R, Q[0], sp.cos(Q[1])]
+    reordered = 0
+    for _ in range(200):
+        vectors, previous = [], []
+        for _ in range(rng.randrange(0, 7)):
+            if previous and rng.random() < 0.3:  # cancels an earlier one
+                v = -rng.choice(previous)
+            else:
+                v = Vector(0)
+                for f in rng.sample(frames, rng.randrange(0, 3)):
+                    v += sum(rng.choice(pool) * e for e in (f.x, f.y, f.z))
+            previous.append(v)
+            vectors.append(v)
+        want = Vector(0)
+        for v in vectors:
+            want += v
+        got = _vector_sum(vectors)
+        assert [f for _, f in got.args] == [f for _, f in want.args]
+        assert sp.srepr([m for m, _ in got.args]) == sp.srepr([m for m, _ in want.args])
+        once = {}
+        for v in vectors:
+            for _, f in v.args:
+                once.setdefault(f, len(once))
+        reordered += [f for _, f in want.args] != sorted(
+            [f for _, f in want.args], key=once.get
+        )
+    assert reordered > 3  # components that cancelled and came back were met

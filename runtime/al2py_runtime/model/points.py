@@ -24,6 +24,26 @@ from .state import ModelPart, command, t
 __all__ = ["Kinematics"]
 
 
+def _vector_sum(vectors: list[Vector]) -> Vector:
+    """``Vector(0) + v1 + v2 + ...``, the same vector: sympy's sum of two
+    vectors is a new vector of both's components, those in one frame
+    added (the earlier matrix first), a component in a new frame appended,
+    and then every component that is zero dropped; a component that is
+    dropped and reappears is appended again.  Here the components are kept
+    in one dictionary from step to step, and only those a step changed are
+    tested for zero (sympy tests all of them at every step, with a new zero
+    matrix each time: the cost of a long chain of positions)."""
+    zero = sp.ImmutableMatrix([0, 0, 0])
+    found: dict = {}
+    for v in vectors:
+        for m, frame in v.args:
+            found[frame] = found[frame] + m if frame in found else m
+        for _, frame in v.args:
+            if not found[frame] != zero:
+                del found[frame]
+    return Vector([(m, frame) for frame, m in found.items()])
+
+
 class Kinematics(ModelPart):
     """Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet)."""
 
@@ -62,10 +82,8 @@ class Kinematics(ModelPart):
         path = self._path(p, q)
         if path is None:
             raise ValueError(f"P_{p.name}_{q.name}> is not defined")
-        out = Vector(0)
-        for a, b in zip(path, path[1:], strict=False):
-            out += b._pos_dict[a]  # P_A_B>, as given
-        return out
+        steps = zip(path, path[1:], strict=False)
+        return _vector_sum([b._pos_dict[a] for a, b in steps])  # P_A_B>, as given
 
     # ------------------------------------------------------- resolution
 
