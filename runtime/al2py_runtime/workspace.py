@@ -369,6 +369,7 @@ class Workspace(Mapping):
         keep = {sp.sympify(k) for k in keep}
         table = {k: v for k, v in self.table.rhs.items() if k not in keep}
         memo: dict = {}  # xreplace's, for this table
+        done: set = set()  # parts with no derivative to evaluate
 
         def apply(expr: Any) -> Any:
             for _ in range(100 if table else 0):
@@ -379,7 +380,7 @@ class Workspace(Mapping):
             else:
                 if table:  # pragma: no cover - assign() prevents cycles
                     raise RecursionError("right-hand sides refer to each other")
-            return doit_derivatives(expr)
+            return _derivatives_done(expr, done)
 
         return apply
 
@@ -1204,6 +1205,28 @@ def _xreplace(expr: Any, table: dict, memo: dict | None = None) -> Any:
         return walks.xreplace(expr, table, memo, rebuild=_rebuilt)
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
+    return expr
+
+
+def _derivatives_done(expr: Any, done: set) -> Any:
+    """``doit_derivatives(expr)``, which gives ``expr`` itself when none of
+    its derivatives is one to evaluate.  ``done``: parts found to hold no
+    derivative to evaluate by earlier calls (the resolved expressions of
+    one resolver share most of their parts); not walked again, and the
+    parts of ``expr`` join them when it holds none either."""
+    if not isinstance(expr, sp.Basic) or isinstance(expr, sp.MatrixBase):
+        return doit_derivatives(expr)
+    seen = {expr}
+    todo = [] if expr in done else [expr]
+    while todo:
+        e = todo.pop()
+        if isinstance(e, sp.Derivative) and doit_derivatives(e) is not e:
+            return doit_derivatives(expr)
+        for a in e.args:
+            if a not in seen and a not in done:
+                seen.add(a)
+                todo.append(a)
+    done.update(seen)
     return expr
 
 

@@ -217,3 +217,42 @@ def test_vector_sum_is_sympys_sum(seed):
             [f for _, f in want.args], key=once.get
         )
     assert reordered > 3  # components that cancelled and came back were met
+
+
+def _with_derivatives(rng: random.Random, depth: int = 0) -> sp.Expr:
+    """A random expression over shared parts, with derivatives kept
+    (``q1'``) and to evaluate (of a product, of a sum)."""
+    t = dynamicsymbols._t
+    kind = rng.randrange(6 if depth < 3 else 2)
+    if kind == 0:
+        return rng.choice([*Q, X, *R])
+    if kind == 1:
+        return sp.Derivative(rng.choice(Q), t)
+    if kind == 2:
+        inner = rng.choice(Q) * rng.choice([*Q, *R])
+        return sp.Derivative(inner, t) if rng.random() < 0.2 else sp.cos(inner)
+    if kind == 3:
+        return sp.Derivative(_with_derivatives(rng, depth + 1), t, evaluate=False)
+    parts = [_with_derivatives(rng, depth + 1) for _ in range(2)]
+    return sp.Add(*parts) if kind == 4 else sp.Mul(*parts)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_derivatives_done_is_doit_derivatives(seed):
+    """The resolver's last step (``_derivatives_done``, remembering parts
+    with no derivative to evaluate) gives ``doit_derivatives``' result, for
+    a run of expressions sharing parts."""
+    from al2py_runtime.model.kinematics import doit_derivatives
+    from al2py_runtime.workspace import _derivatives_done
+
+    rng = random.Random(seed)
+    done: set = set()
+    kept = evaluated = 0
+    for _ in range(150):
+        e = _with_derivatives(rng)
+        want = doit_derivatives(e)
+        got = _derivatives_done(e, done)
+        assert sp.srepr(got) == sp.srepr(want)
+        kept += want is e
+        evaluated += want is not e
+    assert kept > 20 and evaluated > 20
