@@ -33,6 +33,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, collector, matrices, progress, walks
+from .intermediates.autoz import product_with, total
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import Model
@@ -1235,8 +1236,6 @@ def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
     :func:`~al2py_runtime.intermediates.autoz.substitute` rebuilds a part (a
     product with one factor replaced by ``product_with``, a sum by
     ``total``), and a power by :func:`_power`."""
-    from .intermediates.autoz import product_with, total
-
     if e.is_Mul and len(changed) == 1:
         i = changed[0]
         return product_with(e.args, i, new[i])
