@@ -256,3 +256,31 @@ def test_derivatives_done_is_doit_derivatives(seed):
         kept += want is e
         evaluated += want is not e
     assert kept > 20 and evaluated > 20
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_vector_is_sympys_vector(seed):
+    """``_vector(pairs)`` (the kinematics' vectors: resolved, summed) is
+    sympy's ``Vector(pairs)``: each frame's measure numbers summed, in the
+    order the frames come, zero sums dropped."""
+    from al2py_runtime.model.points import _vector
+    from sympy.physics.vector import ReferenceFrame, Vector
+
+    rng = random.Random(seed)
+    frames = [ReferenceFrame(n) for n in "ABC"]
+    pool = [sp.S.Zero] * 6 + [sp.Integer(1), X, -X, R[0], sp.Float(0.0)]
+    dropped = 0
+    for _ in range(300):
+        pairs = [
+            (
+                sp.ImmutableMatrix([rng.choice(pool) for _ in range(3)]),
+                rng.choice(frames),
+            )
+            for _ in range(rng.randrange(0, 5))
+        ]
+        want, got = Vector(pairs), _vector(pairs)
+        assert type(got) is Vector
+        assert [f for _, f in got.args] == [f for _, f in want.args]
+        assert sp.srepr([m for m, _ in got.args]) == sp.srepr([m for m, _ in want.args])
+        dropped += len(want.args) < len({f for _, f in pairs})
+    assert dropped > 20
