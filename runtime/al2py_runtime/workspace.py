@@ -33,6 +33,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, collector, matrices, progress, walks
+from .intermediates.autoz import product_with, total
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import Model
@@ -372,6 +373,7 @@ class Workspace(Mapping):
         keep = {sp.sympify(k) for k in keep}
         table = {k: v for k, v in self.table.rhs.items() if k not in keep}
         memo: dict = {}  # xreplace's, for this table
+        done: set = set()  # parts with no derivative to evaluate
 
         def apply(expr: Any) -> Any:
             for _ in range(100 if table else 0):
@@ -382,7 +384,7 @@ class Workspace(Mapping):
             else:
                 if table:  # pragma: no cover - assign() prevents cycles
                     raise RecursionError("right-hand sides refer to each other")
-            return doit_derivatives(expr)
+            return _derivatives_done(expr, done)
 
         return apply
 
@@ -575,15 +577,23 @@ class Workspace(Mapping):
 
     def normalize(self, value: Any, *, rearrange: bool = False) -> Any:
         """Apply Autolev's automatic treatment of a new value."""
+        # Floats are looked for once in all of a vector's or a matrix's
+        # entries, whose parts are mostly shared (the entries of a Jacobian
+        # over the same intermediates), rather than entry by entry.
+        return self._normalized(value, rearrange, _may_hold_floats(value))
+
+    def _normalized(self, value: Any, rearrange: bool, floats: bool) -> Any:
+        """:meth:`normalize`; ``floats``: whether ``value`` may hold a
+        float (if not, :meth:`_numbers` would change nothing)."""
         if _is_vectorial(value):
-            return walks.vmap(value, lambda e: self.normalize(e, rearrange=rearrange))
+            return walks.vmap(value, lambda e: self._normalized(e, rearrange, floats))
         if isinstance(value, list | tuple):
             if any(_is_vectorial(v) for v in value):
-                return tuple(self.normalize(v, rearrange=rearrange) for v in value)
+                return tuple(self._normalized(v, rearrange, floats) for v in value)
             value = sp.Matrix(value)
         if isinstance(value, sp.MatrixBase):
             return sp.Matrix(value).applyfunc(
-                lambda e: self.normalize(e, rearrange=rearrange)
+                lambda e: self._normalized(e, rearrange, floats)
             )
         if not isinstance(value, sp.Basic):
             try:
@@ -592,7 +602,8 @@ class Workspace(Mapping):
                 return value
         if not isinstance(value, sp.Expr):
             return value
-        value = self._numbers(value)
+        if floats:
+            value = self._numbers(value)
         if self._autotaylor is not None:
             from .algebra import taylor
 
@@ -1196,12 +1207,79 @@ def _xreplace(expr: Any, table: dict, memo: dict | None = None) -> Any:
     if isinstance(expr, sp.Basic):
         # sympy's result, shared parts once, the products and sums rebuilt
         # without sympy's general case where their parts allow
-        from .intermediates.autoz import substitute
-
-        return substitute(expr, table, memo)
+        return walks.xreplace(expr, table, memo, rebuild=_rebuilt)
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr
+
+
+def _derivatives_done(expr: Any, done: set) -> Any:
+    """``doit_derivatives(expr)``, which gives ``expr`` itself when none of
+    its derivatives is one to evaluate.  ``done``: parts found to hold no
+    derivative to evaluate by earlier calls (the resolved expressions of
+    one resolver share most of their parts); not walked again, and the
+    parts of ``expr`` join them when it holds none either."""
+    if not isinstance(expr, sp.Basic) or isinstance(expr, sp.MatrixBase):
+        return doit_derivatives(expr)
+    seen = {expr}
+    todo = [] if expr in done else [expr]
+    while todo:
+        e = todo.pop()
+        if isinstance(e, sp.Derivative) and doit_derivatives(e) is not e:
+            return doit_derivatives(expr)
+        for a in e.args:
+            if a not in seen and a not in done:
+                seen.add(a)
+                todo.append(a)
+    done.update(seen)
+    return expr
+
+
+def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
+    """``e.func(*new)`` for :func:`_xreplace`: as
+    :func:`~al2py_runtime.intermediates.autoz.substitute` rebuilds a part (a
+    product with one factor replaced by ``product_with``, a sum by
+    ``total``), and a power by :func:`_power`."""
+    if e.is_Mul and len(changed) == 1:
+        i = changed[0]
+        return product_with(e.args, i, new[i])
+    if e.is_Add:
+        return total(new)
+    if e.func is sp.Pow:
+        return _power(*new)
+    return e.func(*new)
+
+
+def _power(base: Any, exp: Any) -> Any:
+    """``sp.Pow(base, exp)``, the same power, without sympy's question
+    whether a term of a two-term sum is infinite, which walks every part of
+    the terms (a resolved length, ``sqrt(x**2 + y**2)`` over a
+    musculoskeletal model's positions) for each of a dozen facts.
+
+    ``Pow.__new__`` with a rational exponent other than 0 and 1 and a sum
+    for base goes straight to ``Add._eval_power`` (its other cases are for
+    other exponents, or for a number or a product for base).  For a sum of
+    two terms, that asks whether a term is infinite: if one is, it returns
+    a value only for a literal ``a + I*b`` (``b.coeff(I)`` nonzero: a term
+    with the imaginary unit as a factor); otherwise (and for any other
+    sum), only for a number ``a + I*b`` (``pure_complex``: again a term
+    with the factor ``I``).  So for a sum none of whose terms has the
+    factor ``I``, the answer is nothing either way, and sympy forms the
+    power unevaluated: ``Pow(base, exp, evaluate=False)``, its same last
+    step."""
+    if (
+        type(base) is sp.Add
+        and exp.is_Rational
+        and exp is not sp.S.Zero
+        and exp is not sp.S.One
+        and not any(
+            sp.S.ImaginaryUnit in sp.Mul.make_args(term)
+            for a in base.args
+            for term in sp.Add.make_args(a)
+        )
+    ):
+        return sp.Pow(base, exp, evaluate=False)
+    return sp.Pow(base, exp)
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -1239,6 +1317,36 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
         return e
 
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
+
+
+def _may_hold_floats(value: Any) -> bool:
+    """False only when no scalar of ``value`` (a sympy object, or a vector,
+    dyadic, matrix or list of them) holds a ``Float``: every distinct part
+    of all of them walked once."""
+    roots: list = []
+    todo = [value]
+    while todo:
+        v = todo.pop()
+        if isinstance(v, Vector):
+            roots.extend(x for m, _ in v.args for x in m)
+        elif isinstance(v, Dyadic):
+            roots.extend(c for c, _, _ in v.args)
+        elif isinstance(v, sp.MatrixBase | list | tuple):
+            todo.extend(v)
+        elif isinstance(v, sp.Basic):
+            roots.append(v)
+        else:  # sympified later (a Python float is a Float)
+            return True
+    seen = set(roots)
+    while roots:
+        e = roots.pop()
+        if isinstance(e, sp.Float):
+            return True
+        for a in e.args:
+            if a not in seen:
+                seen.add(a)
+                roots.append(a)
+    return False
 
 
 def _is_vectorial(value: Any) -> bool:

@@ -24,6 +24,42 @@ from .state import ModelPart, command, t
 __all__ = ["Kinematics"]
 
 
+#: the zero measure numbers a vector's components are compared with
+_ZERO = sp.ImmutableMatrix([0, 0, 0])
+
+
+def _vector(components: list) -> Vector:
+    """``Vector(components)`` (pairs of measure numbers and frame): sympy's
+    vector of the sums of each frame's measure numbers, in the order the
+    frames come, but those that are zero.  sympy compares each sum with a
+    zero matrix it makes anew (most of the cost of a vector of short
+    components); here with one."""
+    found: dict = {}
+    for m, frame in components:
+        found[frame] = found[frame] + m if frame in found else m
+    out = Vector(0)
+    out.args = [(m, frame) for frame, m in found.items() if m != _ZERO]
+    return out
+
+
+def _vector_sum(vectors: list[Vector]) -> Vector:
+    """``Vector(0) + v1 + v2 + ...``, the same vector: sympy's sum of two
+    vectors is a new vector of both's components, those in one frame
+    added (the earlier matrix first), a component in a new frame appended,
+    and then every component that is zero dropped; a component that is
+    dropped and reappears is appended again.  Here the components are kept
+    in one dictionary from step to step, and only those a step changed are
+    tested for zero (sympy tests all of them at every step)."""
+    found: dict = {}
+    for v in vectors:
+        for m, frame in v.args:
+            found[frame] = found[frame] + m if frame in found else m
+        for _, frame in v.args:
+            if not found[frame] != _ZERO:
+                del found[frame]
+    return _vector([(m, frame) for frame, m in found.items()])
+
+
 class Kinematics(ModelPart):
     """Positions (reversing and chaining), velocities and accelerations (given, formed or differentiated), orientations and angular velocities, and the two-point formulas (``V2pts``, ``A2pts``, ``V1pt``, ``A1pt``, deferred when a term is not known yet)."""
 
@@ -62,16 +98,17 @@ class Kinematics(ModelPart):
         path = self._path(p, q)
         if path is None:
             raise ValueError(f"P_{p.name}_{q.name}> is not defined")
-        out = Vector(0)
-        for a, b in zip(path, path[1:], strict=False):
-            out += b._pos_dict[a]  # P_A_B>, as given
-        return out
+        steps = zip(path, path[1:], strict=False)
+        return _vector_sum([b._pos_dict[a] for a, b in steps])  # P_A_B>, as given
 
     # ------------------------------------------------------- resolution
 
     def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
-        return kin.vmap(x, self.resolutions.resolver(keep))
+        resolve = self.resolutions.resolver(keep)
+        if isinstance(x, Vector):  # kin.vmap's vector, formed by _vector
+            return _vector([(m.applyfunc(resolve), frame) for m, frame in x.args])
+        return kin.vmap(x, resolve)
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
@@ -381,10 +418,12 @@ class Kinematics(ModelPart):
     def _a2pts(self, n, a, o, p) -> Vector:
         w = self.ang_vel(a, n)
         r = self.pos(o, p)
-        v = (
-            self.acc(o, n)
-            + kin.cross(self.ang_acc(a, n), r)
-            + kin.cross(w, kin.cross(w, r))
+        v = _vector_sum(
+            [
+                self.acc(o, n),
+                kin.cross(self.ang_acc(a, n), r),
+                kin.cross(w, kin.cross(w, r)),
+            ]
         )
         return self._tidyv(v)
 
