@@ -33,7 +33,7 @@ from sympy.physics.mechanics import dynamicsymbols
 from sympy.physics.vector import Dyadic, Vector
 
 from . import algebra, collector, matrices, progress, walks
-from .intermediates.autoz import product_with, total
+from .intermediates.autoz import substitute
 from .jobs.numerics import Numerics
 from .model.kinematics import doit_derivatives, is_small, one_or_tuple
 from .model.model import Model
@@ -1207,7 +1207,7 @@ def _xreplace(expr: Any, table: dict, memo: dict | None = None) -> Any:
     if isinstance(expr, sp.Basic):
         # sympy's result, shared parts once, the products and sums rebuilt
         # without sympy's general case where their parts allow
-        return walks.xreplace(expr, table, memo, rebuild=_rebuilt)
+        return substitute(expr, table, memo)
     if hasattr(expr, "xreplace"):
         return expr.xreplace(table)
     return expr
@@ -1233,53 +1233,6 @@ def _derivatives_done(expr: Any, done: set) -> Any:
                 todo.append(a)
     done.update(seen)
     return expr
-
-
-def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
-    """``e.func(*new)`` for :func:`_xreplace`: as
-    :func:`~al2py_runtime.intermediates.autoz.substitute` rebuilds a part (a
-    product with one factor replaced by ``product_with``, a sum by
-    ``total``), and a power by :func:`_power`."""
-    if e.is_Mul and len(changed) == 1:
-        i = changed[0]
-        return product_with(e.args, i, new[i])
-    if e.is_Add:
-        return total(new)
-    if e.func is sp.Pow:
-        return _power(*new)
-    return e.func(*new)
-
-
-def _power(base: Any, exp: Any) -> Any:
-    """``sp.Pow(base, exp)``, the same power, without sympy's question
-    whether a term of a two-term sum is infinite, which walks every part of
-    the terms (a resolved length, ``sqrt(x**2 + y**2)`` over a
-    musculoskeletal model's positions) for each of a dozen facts.
-
-    ``Pow.__new__`` with a rational exponent other than 0 and 1 and a sum
-    for base goes straight to ``Add._eval_power`` (its other cases are for
-    other exponents, or for a number or a product for base).  For a sum of
-    two terms, that asks whether a term is infinite: if one is, it returns
-    a value only for a literal ``a + I*b`` (``b.coeff(I)`` nonzero: a term
-    with the imaginary unit as a factor); otherwise (and for any other
-    sum), only for a number ``a + I*b`` (``pure_complex``: again a term
-    with the factor ``I``).  So for a sum none of whose terms has the
-    factor ``I``, the answer is nothing either way, and sympy forms the
-    power unevaluated: ``Pow(base, exp, evaluate=False)``, its same last
-    step."""
-    if (
-        type(base) is sp.Add
-        and exp.is_Rational
-        and exp is not sp.S.Zero
-        and exp is not sp.S.One
-        and not any(
-            sp.S.ImaginaryUnit in sp.Mul.make_args(term)
-            for a in base.args
-            for term in sp.Add.make_args(a)
-        )
-    ):
-        return sp.Pow(base, exp, evaluate=False)
-    return sp.Pow(base, exp)
 
 
 def _same(a: Any, b: Any) -> bool:

@@ -8,7 +8,7 @@ import random
 
 import pytest
 import sympy as sp
-from al2py_runtime.workspace import _power
+from al2py_runtime.intermediates.autoz import power as _power
 from sympy.physics.mechanics import dynamicsymbols
 
 Q = dynamicsymbols("q1:4")

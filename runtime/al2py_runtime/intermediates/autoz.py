@@ -642,7 +642,41 @@ def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
         return product_with(e.args, i, new[i])
     if e.is_Add:
         return total(new)
+    if e.func is sp.Pow:
+        return power(*new)
     return e.func(*new)
+
+
+def power(base: Any, exp: Any) -> Any:
+    """``sp.Pow(base, exp)``, the same power, without sympy's question
+    whether a term of a two-term sum is infinite, which walks every part of
+    the terms (a resolved length, ``sqrt(x**2 + y**2)`` over a
+    musculoskeletal model's positions) for each of a dozen facts.
+
+    ``Pow.__new__`` with a rational exponent other than 0 and 1 and a sum
+    for base goes straight to ``Add._eval_power`` (its other cases are for
+    other exponents, or for a number or a product for base).  For a sum of
+    two terms, that asks whether a term is infinite: if one is, it returns
+    a value only for a literal ``a + I*b`` (``b.coeff(I)`` nonzero: a term
+    with the imaginary unit as a factor); otherwise (and for any other
+    sum), only for a number ``a + I*b`` (``pure_complex``: again a term
+    with the factor ``I``).  So for a sum none of whose terms has the
+    factor ``I``, the answer is nothing either way, and sympy forms the
+    power unevaluated: ``Pow(base, exp, evaluate=False)``, its same last
+    step."""
+    if (
+        type(base) is sp.Add
+        and exp.is_Rational
+        and exp is not sp.S.Zero
+        and exp is not sp.S.One
+        and not any(
+            sp.S.ImaginaryUnit in sp.Mul.make_args(term)
+            for a in base.args
+            for term in sp.Add.make_args(a)
+        )
+    ):
+        return sp.Pow(base, exp, evaluate=False)
+    return sp.Pow(base, exp)
 
 
 def _compare(a: Any, b: Any) -> int:
