@@ -184,10 +184,28 @@ def atoms(expr: Any, *types: type) -> set:
     return found
 
 
+#: the zero measure numbers a vector's components are compared with
+ZERO_MEASURES = sp.ImmutableMatrix([0, 0, 0])
+
+
+def vector(components: list) -> Vector:
+    """``Vector(components)`` (pairs of measure numbers and frame): sympy's
+    vector of the sums of each frame's measure numbers, in the order the
+    frames come, but those that are zero.  sympy compares each sum with a
+    zero matrix it makes anew (most of the cost of a vector of short
+    components); here with one, :data:`ZERO_MEASURES`."""
+    found: dict = {}
+    for m, frame in components:
+        found[frame] = found[frame] + m if frame in found else m
+    out = Vector(0)
+    out.args = [(m, frame) for frame, m in found.items() if m != ZERO_MEASURES]
+    return out
+
+
 def vmap(x: Any, f: Callable[[Any], Any]) -> Any:
     """Apply ``f`` to every scalar of a Vector, Dyadic, Matrix or scalar."""
     if isinstance(x, Vector):
-        return Vector([(m.applyfunc(f), frame) for m, frame in x.args])
+        return vector([(m.applyfunc(f), frame) for m, frame in x.args])
     if isinstance(x, Dyadic):
         out = Dyadic(0)
         for c, a, b in x.args:

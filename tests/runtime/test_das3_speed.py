@@ -260,10 +260,10 @@ def test_derivatives_done_is_doit_derivatives(seed):
 
 @pytest.mark.parametrize("seed", range(4))
 def test_vector_is_sympys_vector(seed):
-    """``_vector(pairs)`` (the kinematics' vectors: resolved, summed) is
+    """``walks.vector(pairs)`` (the kinematics' vectors: resolved, summed) is
     sympy's ``Vector(pairs)``: each frame's measure numbers summed, in the
     order the frames come, zero sums dropped."""
-    from al2py_runtime.model.points import _vector
+    from al2py_runtime.walks import vector as _vector
     from sympy.physics.vector import ReferenceFrame, Vector
 
     rng = random.Random(seed)

@@ -17,29 +17,12 @@ from sympy.physics.vector import (
     time_derivative,
 )
 
+from .. import walks
 from . import kinematics as kin
 from .arrange import solve_speeds
 from .state import ModelPart, command, t
 
 __all__ = ["Kinematics"]
-
-
-#: the zero measure numbers a vector's components are compared with
-_ZERO = sp.ImmutableMatrix([0, 0, 0])
-
-
-def _vector(components: list) -> Vector:
-    """``Vector(components)`` (pairs of measure numbers and frame): sympy's
-    vector of the sums of each frame's measure numbers, in the order the
-    frames come, but those that are zero.  sympy compares each sum with a
-    zero matrix it makes anew (most of the cost of a vector of short
-    components); here with one."""
-    found: dict = {}
-    for m, frame in components:
-        found[frame] = found[frame] + m if frame in found else m
-    out = Vector(0)
-    out.args = [(m, frame) for frame, m in found.items() if m != _ZERO]
-    return out
 
 
 def _vector_sum(vectors: list[Vector]) -> Vector:
@@ -55,9 +38,9 @@ def _vector_sum(vectors: list[Vector]) -> Vector:
         for m, frame in v.args:
             found[frame] = found[frame] + m if frame in found else m
         for _, frame in v.args:
-            if not found[frame] != _ZERO:
+            if not found[frame] != walks.ZERO_MEASURES:
                 del found[frame]
-    return _vector([(m, frame) for frame, m in found.items()])
+    return walks.vector([(m, frame) for frame, m in found.items()])
 
 
 class Kinematics(ModelPart):
@@ -106,9 +89,7 @@ class Kinematics(ModelPart):
     def actual_value(self, x: Any, keep: Any = ()) -> Any:
         """``x`` with every right-hand side substituted (except ``keep``)."""
         resolve = self.resolutions.resolver(keep)
-        if isinstance(x, Vector):  # kin.vmap's vector, formed by _vector
-            return _vector([(m.applyfunc(resolve), frame) for m, frame in x.args])
-        return kin.vmap(x, resolve)
+        return walks.vmap(x, resolve)
 
     def _tidyv(self, v: Any) -> Any:
         """Light simplification of a result, skipped while AutoZ is ON (it is
