@@ -93,6 +93,22 @@ def test_named_product_keeps_sympys_infinities():
     assert _dok(got) == _dok(want)
 
 
+@pytest.mark.parametrize("seed", range(40))
+def test_zero_times_an_entry_is_sympys(seed):
+    """``_zero_times_is_zero`` answers as sympy's ``0 * x == 0`` for random
+    entries, with sympy's infinities among their parts or not."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    specials = [sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Integer(3), sp.pi]
+    for _ in range(30):
+        x = _entry(rng, book)
+        if rng.random() < 0.5:
+            x = x * _entry(rng, book) + rng.choice(specials) * _entry(rng, book)
+        if rng.random() < 0.3:
+            x = sp.sqrt(x + rng.choice(C) ** 2) / (1 + rng.choice(specials))
+        assert kin._zero_times_is_zero(x) is (sp.S.Zero * x == sp.S.Zero), x
+
+
 def test_named_product_of_numbers_is_sympys():
     book = Intermediates()
     a = sp.Matrix([[0, 1, 0], [-1, 0, 0], [0, 0, 1]])

@@ -134,11 +134,22 @@ def _zero_times_is_zero(x: Any) -> bool:
     (``0 * oo`` is ``nan``), answered without sympy's assumptions for a
     commutative intermediate over variables, whose facts follow from
     ``commutative`` and ``real`` alone (never ``finite=False``), or a
-    rational multiple of one."""
+    rational multiple of one, and for an entry that holds no infinity
+    (only then can it be known infinite, as for :func:`exact_dot`: the
+    script's names are never declared infinite); sympy's query walks the
+    whole of a large entry (a rotation about a vector's axis) for each of
+    several facts.
+
+    >>> q = sp.Symbol("q")
+    >>> _zero_times_is_zero(sp.sin(q) / (1 + q**2)), _zero_times_is_zero(q + sp.oo)
+    (True, False)
+    """
     if x.is_Mul:
         if all(f.is_Rational or _finite_intermediate(f) for f in x.args):
             return True
     elif _finite_intermediate(x):
+        return True
+    if not walks.atoms(x, *_INFINITIES):
         return True
     return sp.S.Zero * x == sp.S.Zero
 
