@@ -109,6 +109,25 @@ def test_zero_times_an_entry_is_sympys(seed):
         assert kin._zero_times_is_zero(x) is (sp.S.Zero * x == sp.S.Zero), x
 
 
+@pytest.mark.parametrize("seed", range(20))
+def test_frame_dyadic_is_sympys_sum(seed):
+    """``frame_dyadic`` gives the dyadic sympy's sum of ``m[i, j] * (u_i |
+    u_j)`` gives: the same terms, coefficients and unit vectors, in order."""
+    rng = random.Random(seed)
+    book = Intermediates()
+    n = ReferenceFrame("N")
+    m = sp.Matrix(3, 3, lambda i, j: _entry(rng, book) if rng.random() < 0.7 else 0)
+    want = sp.S.Zero * (n.x | n.x)
+    for i, u in enumerate((n.x, n.y, n.z)):
+        for j, v in enumerate((n.x, n.y, n.z)):
+            if m[i, j] != 0:
+                want += m[i, j] * (u | v)
+    got = kin.frame_dyadic(n, m)
+    assert [(sp.srepr(c), a, b) for c, a, b in got.args] == [
+        (sp.srepr(c), a, b) for c, a, b in want.args
+    ]
+
+
 def test_named_product_of_numbers_is_sympys():
     book = Intermediates()
     a = sp.Matrix([[0, 1, 0], [-1, 0, 0], [0, 0, 1]])

@@ -862,10 +862,25 @@ def frame_vector(frame: ReferenceFrame, measures: Iterable[Any]) -> Vector:
 
 
 def frame_dyadic(frame: ReferenceFrame, m: sp.Matrix) -> Dyadic:
+    """The dyadic whose measure numbers in ``frame`` are ``m``: the sum of
+    ``m[i, j] * (u_i | u_j)`` over the nonzero entries, in order, as sympy
+    forms it (each term's coefficient ``m[i, j] * 1``, the pairs distinct),
+    without the outer products' nine-term sums and ``Dyadic``'s comparison
+    of each pair with the earlier ones by their printed text.
+
+    >>> from sympy.physics.vector import ReferenceFrame
+    >>> a, b = sp.symbols("a b")
+    >>> N = ReferenceFrame("N")
+    >>> m = sp.Matrix([[a, 0, 0], [0, b, 1], [0, 0, 0]])
+    >>> frame_dyadic(N, m).args == (a * (N.x | N.x) + b * (N.y | N.y) + (N.y | N.z)).args
+    True
+    """
     units = (frame.x, frame.y, frame.z)
     out = Dyadic(0)
-    for i in range(3):
-        for j in range(3):
-            if m[i, j] != 0:
-                out += m[i, j] * (units[i] | units[j])
+    out.args = [
+        (m[i, j] * sp.S.One, units[i], units[j])
+        for i in range(3)
+        for j in range(3)
+        if m[i, j] != 0
+    ]
     return out
