@@ -40,6 +40,9 @@ def pools():
         z1, z2, z3, z4, q1, q2, u1, u2, L, M, q1.diff(t),
         sp.sin(q1), sp.cos(q2), L + M, z1 + q1, z2**2, L**2,
         sp.sqrt(L), sp.exp(q1), sp.sqrt(2),
+        # powers of sums (a resolved length; the factor I: sympy's rules)
+        sp.sqrt(L**2 + M**2), 1 / (z1 + q1), (L + M) ** sp.Rational(-3, 2),
+        (L + sp.I * M) ** 2, (z2 - sp.I * z1 * L) ** sp.Rational(1, 3),
     ]  # fmt: skip
     derivatives = [
         z1, z2, z3, z4, sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.S(2),

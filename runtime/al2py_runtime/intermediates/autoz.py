@@ -664,7 +664,16 @@ def power(base: Any, exp: Any) -> Any:
     factor ``I``, the answer is nothing either way, and sympy forms the
     power unevaluated: ``Pow(base, exp, evaluate=False)``, its same last
     step."""
-    if (
+    if _stays_power(base, exp):
+        return sp.Pow(base, exp, evaluate=False)
+    return sp.Pow(base, exp)
+
+
+def _stays_power(base: Any, exp: Any) -> bool:
+    """Whether sympy's ``Pow(base, exp)`` is ``base**exp`` unevaluated,
+    found without its queries (see :func:`power`): a sum, a rational
+    exponent other than 0 and 1, and no term with the factor ``I``."""
+    return (
         type(base) is sp.Add
         and exp.is_Rational
         and exp is not sp.S.Zero
@@ -674,9 +683,7 @@ def power(base: Any, exp: Any) -> Any:
             for a in base.args
             for term in sp.Add.make_args(a)
         )
-    ):
-        return sp.Pow(base, exp, evaluate=False)
-    return sp.Pow(base, exp)
+    )
 
 
 def _compare(a: Any, b: Any) -> int:
@@ -1164,6 +1171,11 @@ def total(terms: Sequence[Any]) -> Any:
         elif len(key) > 1:
             out.append(_product((c, *key)))
         elif key[0].is_Add:  # 2*(a + b) stays a product, as in Add.flatten
+            out.append(sp.Mul(c, key[0], evaluate=False))
+        elif type(key[0]) is sp.Pow and _stays_power(*key[0].args):
+            # c * (a + b)**r: Mul.flatten forms Pow(a + b, r) again, which
+            # is the power itself (asking each term whether it is
+            # infinite), and puts the number first
             out.append(sp.Mul(c, key[0], evaluate=False))
         else:
             out.append(sp.Mul(c, key[0]))
