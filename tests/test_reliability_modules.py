@@ -206,6 +206,21 @@ def test_run_time_errors_name_the_al_line(tmp_path, text, line, message):
         pytest.fail("importing the module did not raise")
 
 
+def test_an_interrupt_names_the_al_line_without_a_traceback(tmp_path):
+    """Ctrl-C while a module derives (here raised after its third
+    statement) ends it with ``FILE.al:LINE: interrupted`` and status 130,
+    as ``al2py`` ends when interrupted, from ``python model.py`` and from
+    an ``import`` in a script; never with Python's traceback."""
+    mod = module(tmp_path, "stop", "Variables X, Y\nZ = X + Y\nW = Z^2\n")
+    text = mod.read_text()
+    stopped = text.replace("AUTOLEV = al.names()", "raise KeyboardInterrupt", 1)
+    assert stopped != text
+    mod.write_text(stopped)
+    for run in (run_module(mod), import_module(mod)):
+        assert run.returncode == 130, run.stderr
+        assert run.stderr == "stop.al:3: interrupted\n", run.stderr
+
+
 @pytest.mark.parametrize("debug", [False, True])
 def test_library_failures_are_worded_by_al2py(tmp_path, monkeypatch, debug):
     """A failure inside sympy that al2py did not foresee names the .al line

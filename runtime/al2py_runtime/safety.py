@@ -18,6 +18,9 @@ never a Python traceback:
   which also locates exceptions raised by the module's own arithmetic
   (``M + V`` with mismatched shapes).  Exceptions that do not pass through a
   generated module go to the previous ``sys.excepthook`` untouched.
+* An interrupt (Ctrl-C) that stops a generated module's derivation is
+  printed as ``model.al:12: interrupted`` (the statement it stopped), and
+  the process exits with status 130, as ``al2py`` itself does.
 
 The ``.al`` line of a failing Python line is the statement's ``line=`` argument
 when it has one, else the line whose text the ``# al>`` comment above it echoes.
@@ -568,6 +571,29 @@ def report(exc: BaseException) -> str | None:
     """The located message for ``exc`` if it came from a generated module."""
     if isinstance(exc, AutolevRuntimeError) and exc.filename is not None:
         return str(exc)
+    found = _module_line(exc)
+    if found is None:
+        return None
+    if isinstance(exc, BrokenPipeError):
+        return ""
+    name, line, source = found
+    return str(AutolevRuntimeError(describe(exc), name, line, source))
+
+
+def interrupted(exc: BaseException) -> str | None:
+    """``FILE.al:LINE: interrupted`` for an interrupt (Ctrl-C) that stopped
+    a generated module (the statement it was deriving), else None."""
+    found = _module_line(exc)
+    if found is None:
+        return None
+    name, line, _source = found
+    return f"{name}:{line}: interrupted" if line else f"{name}: interrupted"
+
+
+def _module_line(exc: BaseException) -> tuple[str, int | None, str] | None:
+    """The ``.al`` file, line and source of the generated module's statement
+    that ``exc`` left (its outermost frame of the module's body), or None
+    when it did not pass through a generated module."""
     tb = exc.__traceback__
     best = None
     line_no = 0
@@ -578,12 +604,9 @@ def report(exc: BaseException) -> str | None:
         tb = tb.tb_next
     if best is None:
         return None
-    if isinstance(exc, BrokenPipeError):
-        return ""
     module_file = best.f_code.co_filename
     line, source = al_line(module_file, line_no, best.f_globals)
-    name = _MODULES[module_file]
-    return str(AutolevRuntimeError(describe(exc), name, line, source))
+    return _MODULES[module_file], line, source
 
 
 def excepthook(
@@ -592,11 +615,19 @@ def excepthook(
     tb: TracebackType | None,
 ) -> None:
     """Print errors of generated modules as ``FILE.al:LINE: error: ...`` and
-    exit with status 2; hand everything else to the previous hook."""
+    exit with status 2, and an interrupt (Ctrl-C) of one as ``FILE.al:LINE:
+    interrupted`` with status 130, as ``al2py`` itself ends when
+    interrupted; hand everything else to the previous hook."""
     if exc.__traceback__ is None:
         exc = exc.with_traceback(tb)
+    status = 2
     try:
-        message = report(exc) if issubclass(exc_type, Exception) else None
+        if issubclass(exc_type, Exception):
+            message = report(exc)
+        elif issubclass(exc_type, KeyboardInterrupt):
+            message, status = interrupted(exc), 130
+        else:
+            message = None
     except Exception:  # noqa: BLE001 - never fail while reporting
         message = None
     if message is None:
@@ -614,4 +645,4 @@ def excepthook(
             stream.flush()
         except (OSError, ValueError):
             pass
-    os._exit(0 if isinstance(exc, BrokenPipeError) else 2)
+    os._exit(0 if isinstance(exc, BrokenPipeError) else status)
