@@ -11,7 +11,6 @@ from typing import Any
 import sympy as sp
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
-from sympy.printing.precedence import PRECEDENCE
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
@@ -43,39 +42,28 @@ class _Printer(Remembering, OctaveCodePrinter):
 
     def _names_sum(self, expr: Any, found: list) -> str:
         """``print_ordered_add(expr)`` of a sum of names and products of
-        names (after a number), most sums of a program: the
-        terms in ``as_ordered_terms``'s order (:func:`.printers.names_sorted`)
-        and each product of names (after -1 or nothing) printed as
-        :meth:`_print_Mul` prints it, its names sorted by name and joined by
-        ``.*`` (``found``: :func:`.printers.names_sorted` of its terms).
-
-        None of these terms is put in parentheses: a name's precedence is
-        an atom's, a product's of names (after a number) a product's or,
-        after a negative number, a sum's, none below the sum's own."""
-        prec = self.remembered_precedence(expr)
-        if prec > PRECEDENCE["Add"]:  # pragma: no cover - a sum's is Add's
-            return self.joined_terms(expr, [term for term, _names in found])
+        names (after a number), most sums of a program: the terms in
+        ``as_ordered_terms``'s order (``found``: :func:`.printers.names_sorted`
+        of its terms, each with its names sorted by name), joined by
+        :func:`~al2py_runtime.jobs.backends.join_sum`, which is given each
+        product of names (after -1 or nothing) as :meth:`names_product`
+        prints it, from those sorted names (not sorted again)."""
         part = self.print_part
-        out = []
+        texts = {}
         for term, names in found:
-            if type(term) is sp.Symbol:
-                t = part(term)
-            else:
+            if type(term) is sp.Mul:
                 first = term.args[0]
                 if first is _MINUS_ONE:
-                    t = "-" + ".*".join([part(a) for a in names])
-                elif first.is_Number:
-                    t = part(term)
-                else:
-                    t = ".*".join([part(a) for a in names])
-            if t.startswith("-"):
-                out.append(" - " if out else "-")
-                out.append(t[1:])
-            else:
-                if out:
-                    out.append(" + ")
-                out.append(t)
-        return "".join(out)
+                    texts[term] = "-" + ".*".join([part(a) for a in names])
+                elif not first.is_Number:
+                    texts[term] = ".*".join([part(a) for a in names])
+        return backends.join_sum(
+            self,
+            [term for term, _names in found],
+            self.remembered_precedence(expr),
+            self.remembered_precedence,
+            texts.get,
+        )
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
