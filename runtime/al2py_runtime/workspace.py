@@ -93,6 +93,14 @@ class Workspace(Mapping):
         #: the table's changes and the kept quantities it was made for
         #: (:meth:`_simple_rhs`)
         self._simple: tuple[int, frozenset, dict] | None = None
+        #: :meth:`resolver`'s substitution tables, each with the memo of its
+        #: substitutions, by the kept quantities that have a right-hand
+        #: side, for the count of the table's changes they were made at
+        #: (a resolve per ``D()`` of a bicycle, all with one table)
+        self._tables: tuple[int, dict[frozenset, tuple[dict, dict]]] | None = None
+        #: the parts found to hold no derivative to evaluate
+        #: (:func:`_derivatives_done`: it depends on the part only)
+        self._no_derivatives: set = set()
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(
             self,
@@ -370,10 +378,8 @@ class Workspace(Mapping):
     def resolver(self, keep: Iterable[Any] = ()) -> Callable[[Any], Any]:
         """:meth:`resolve` with the substitution table built once, for applying
         to many expressions (the measure numbers of a vector)."""
-        keep = {sp.sympify(k) for k in keep}
-        table = {k: v for k, v in self.table.rhs.items() if k not in keep}
-        memo: dict = {}  # xreplace's, for this table
-        done: set = set()  # parts with no derivative to evaluate
+        table, memo = self._table_without(keep)
+        done = self._no_derivatives  # parts with no derivative to evaluate
 
         def apply(expr: Any) -> Any:
             for _ in range(100 if table else 0):
@@ -387,6 +393,26 @@ class Workspace(Mapping):
             return _derivatives_done(expr, done)
 
         return apply
+
+    def _table_without(self, keep: Iterable[Any]) -> tuple[dict, dict]:
+        """The right-hand sides but those of ``keep``, and the memo of
+        substitutions by them (a part's answer depends on the part and the
+        table only): kept while the table does not change, when every
+        right-hand side is a sympy object (a mutable matrix may change in
+        place).  A kept quantity without a right-hand side changes
+        nothing, so the tables are found by those with one."""
+        rhs = self.table.rhs
+        kept = frozenset(k for k in (sp.sympify(x) for x in keep) if k in rhs)
+        changes = self.table.rhs_changes
+        tables = self._tables
+        if tables is None or tables[0] != changes:
+            tables = self._tables = (changes, {})
+        found = tables[1].get(kept)
+        if found is None:
+            found = ({k: v for k, v in rhs.items() if k not in kept}, {})
+            if all(isinstance(v, sp.Basic) for v in rhs.values()):
+                tables[1][kept] = found
+        return found
 
     # ------------------------------------------------------------ assignment
 
