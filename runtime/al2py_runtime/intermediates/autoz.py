@@ -1354,19 +1354,20 @@ class Intermediates:
         expression)."""
         return self._name(sp.sympify(expr), None)
 
-    def _name(self, expr: Any, negated: set | None) -> Any:
+    def _name(self, expr: Any, negated: set | None, small: bool = False) -> Any:
         """:meth:`name`; ``negated``: the variables of ``-expr``, which was
         being named when its sign was taken out (``expr`` then needs no
         scan, and its sign is not taken out again: sympy's
         ``could_extract_minus_sign`` is not true of both an expression and
-        its negation)."""
+        its negation); ``small``: no argument of ``expr`` has more than
+        :attr:`LIMIT` nodes (:meth:`_split` would leave it as it is)."""
         if not isinstance(expr, sp.Expr) or trivial(expr):
             return expr
         found = self._named.get(expr)
         if found is not None:
             return found
         if negated is not None:
-            return self._new_name(expr, negated, None, split=True)
+            return self._new_name(expr, negated, None, split=not small)
         return self._name_walked(expr, *self._walk(expr))
 
     def _name_walked(
@@ -1405,7 +1406,17 @@ class Intermediates:
         if negative is None or original is not None:
             negative = minus_first(expr, self._sort_key)
         if negative:
-            return minus(self._name(minus(expr), variables))
+            # ``-expr``'s arguments (a sum's terms negated, a product's
+            # factors with the coefficient negated) have at most two nodes
+            # more than ``expr``'s, each of which has at most ``size`` less
+            # the number of arguments (the root and one node for each other
+            # argument): below the limit, ``-expr`` is not split
+            small = (
+                original is None
+                and (expr.is_Add or expr.is_Mul)
+                and size - len(expr.args) + 2 <= self.LIMIT
+            )
+            return minus(self._name(minus(expr), variables, small))
         return self._new_name(expr, variables, original, split=False)
 
     def _all_rates(self, derivatives: set | frozenset) -> bool:
