@@ -101,6 +101,9 @@ class Workspace(Mapping):
         #: the parts found to hold no derivative to evaluate
         #: (:func:`_derivatives_done`: it depends on the part only)
         self._no_derivatives: set = set()
+        #: the parts found to hold no ``Float`` (:func:`_may_hold_floats`:
+        #: the values normalized share most of their parts)
+        self._no_floats: set = set()
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(
             self,
@@ -606,7 +609,9 @@ class Workspace(Mapping):
         # Floats are looked for once in all of a vector's or a matrix's
         # entries, whose parts are mostly shared (the entries of a Jacobian
         # over the same intermediates), rather than entry by entry.
-        return self._normalized(value, rearrange, _may_hold_floats(value))
+        return self._normalized(
+            value, rearrange, _may_hold_floats(value, self._no_floats)
+        )
 
     def _normalized(self, value: Any, rearrange: bool, floats: bool) -> Any:
         """:meth:`normalize`; ``floats``: whether ``value`` may hold a
@@ -1298,10 +1303,12 @@ def degrees_pass(expr: sp.Expr) -> sp.Expr:
     return expr.replace(lambda e: isinstance(e, _TRIG + _ATRIG), convert)
 
 
-def _may_hold_floats(value: Any) -> bool:
+def _may_hold_floats(value: Any, clean: set) -> bool:
     """False only when no scalar of ``value`` (a sympy object, or a vector,
     dyadic, matrix or list of them) holds a ``Float``: every distinct part
-    of all of them walked once."""
+    of all of them walked once, but those in ``clean`` (parts found to hold
+    none by earlier calls), which the parts walked join when none holds
+    one."""
     roots: list = []
     todo = [value]
     while todo:
@@ -1316,15 +1323,17 @@ def _may_hold_floats(value: Any) -> bool:
             roots.append(v)
         else:  # sympified later (a Python float is a Float)
             return True
-    seen = set(roots)
+    seen = {e for e in roots if e not in clean}
+    roots = list(seen)
     while roots:
         e = roots.pop()
         if isinstance(e, sp.Float):
             return True
         for a in e.args:
-            if a not in seen:
+            if a not in seen and a not in clean:
                 seen.add(a)
                 roots.append(a)
+    clean.update(seen)
     return False
 
 
