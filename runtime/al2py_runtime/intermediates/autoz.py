@@ -1486,10 +1486,7 @@ class Intermediates:
         (bottom-up), so that no definition is long."""
         Z = self.Z
         one = self._one_node
-        for a in expr.args:
-            if not (a.is_Atom or isinstance(a, one) or self._within(a, self.LIMIT)):
-                break
-        else:
+        if self._parts_within(expr.args, one):
             return expr  # no part is larger: the walk below changes nothing
         # one memo for every split: a part's answer depends on the part, on
         # what is named already (a part named once is found again by
@@ -1537,6 +1534,24 @@ class Intermediates:
             return walk(expr, True)[0]
         finally:
             del walk  # it refers to itself: freed now, not by a collection
+
+    def _parts_within(self, parts: tuple, one: tuple) -> bool:
+        """Whether each of ``parts`` has at most :attr:`LIMIT` nodes
+        (:meth:`_within` of each, in one loop: a part whose arguments are
+        all leaves, as most are, is counted without a walk)."""
+        limit = self.LIMIT
+        for a in parts:
+            if a.is_Atom or isinstance(a, one):
+                continue
+            args = a.args
+            if len(args) >= limit:
+                return False  # (1 + its arguments > limit)
+            for b in args:
+                if not (b.is_Atom or isinstance(b, one)):
+                    if not self._within(a, limit):
+                        return False
+                    break
+        return True
 
     def _within(self, e: Any, limit: int) -> bool:
         """Whether ``e`` has at most ``limit`` tree nodes as :meth:`_split`
