@@ -104,6 +104,10 @@ class Workspace(Mapping):
         #: the parts found to hold no ``Float`` (:func:`_may_hold_floats`:
         #: the values normalized share most of their parts)
         self._no_floats: set = set()
+        #: a sum Factoring rearranges -> what it becomes (sympy's
+        #: ``factor_terms`` if it is small, else itself): a bicycle
+        #: rearranges a third of its sums more than once
+        self._factored: dict[Any, Any] = {}
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
         self.model = Model(
             self,
@@ -652,8 +656,12 @@ class Workspace(Mapping):
             simple = self._simple_rhs(kept)
             if simple:
                 value = _xreplace(value, simple)
-        if rearrange and self.settings.factoring and value.is_Add and is_small(value):
-            value = sp.factor_terms(value)
+        if rearrange and self.settings.factoring and value.is_Add:
+            found = self._factored.get(value)
+            if found is None:
+                found = sp.factor_terms(value) if is_small(value) else value
+                self._factored[value] = found
+            value = found
         return value
 
     def _simple_rhs(self, kept: list) -> dict:
