@@ -1331,17 +1331,24 @@ def _may_hold_floats(value: Any, clean: set) -> bool:
             roots.append(v)
         else:  # sympified later (a Python float is a Float)
             return True
-    seen = {e for e in roots if e not in clean}
-    roots = list(seen)
-    while roots:
-        e = roots.pop()
+    # the parts met join ``clean`` as they are met (one lookup each), and
+    # leave it again if a Float is found (seldom)
+    met = []
+    for e in roots:
+        if e not in clean:
+            clean.add(e)
+            met.append(e)
+    todo = list(met)
+    while todo:
+        e = todo.pop()
         if isinstance(e, sp.Float):
+            clean.difference_update(met)
             return True
         for a in e.args:
-            if a not in seen and a not in clean:
-                seen.add(a)
-                roots.append(a)
-    clean.update(seen)
+            if a not in clean:
+                clean.add(a)
+                met.append(a)
+                todo.append(a)
     return False
 
 
