@@ -320,7 +320,18 @@ def minus_first(expr: Any, key: Callable[[Any], Any] | None = None) -> bool:
     if not expr.is_Add:
         return expr.could_extract_minus_sign()
     args = expr.args
-    negative = sum(1 for a in args if _minus_term(a))
+    negative = 0
+    for a in args:  # (_minus_term of each, without a call for each)
+        if a.is_Mul:
+            c = a.args[0]
+            if not c.is_Number:
+                continue
+            if c.is_Rational:
+                if c.p < 0:
+                    negative += 1
+                continue
+        if a.could_extract_minus_sign():
+            negative += 1
     if 2 * negative != len(args):
         return 2 * negative > len(args)
     if any(a.is_Number or a.is_NumberSymbol for a in args):
