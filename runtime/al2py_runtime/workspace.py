@@ -104,8 +104,8 @@ class Workspace(Mapping):
         #: the parts found to hold no ``Float`` (:func:`_may_hold_floats`:
         #: the values normalized share most of their parts)
         self._no_floats: set = set()
-        #: a sum Factoring rearranges -> what it becomes (sympy's
-        #: ``factor_terms`` if it is small, else itself): a bicycle
+        #: a sum without floats Factoring rearranges -> what it becomes
+        #: (sympy's ``factor_terms`` if it is small, else itself): a bicycle
         #: rearranges a third of its sums more than once
         self._factored: dict[Any, Any] = {}
         #: Frames, points, bodies, loads and Kane's method (mechanics.py).
@@ -657,10 +657,14 @@ class Workspace(Mapping):
             if simple:
                 value = _xreplace(value, simple)
         if rearrange and self.settings.factoring and value.is_Add:
-            found = self._factored.get(value)
+            # kept only for a value without floats (sympy's == of floats
+            # does not see their precision, which their text shows)
+            plain = not _may_hold_floats(value, self._no_floats)
+            found = self._factored.get(value) if plain else None
             if found is None:
                 found = sp.factor_terms(value) if is_small(value) else value
-                self._factored[value] = found
+                if plain:
+                    self._factored[value] = found
             value = found
         return value
 

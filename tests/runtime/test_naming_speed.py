@@ -240,3 +240,12 @@ def test_factoring_keeps_sympys_factor_terms():
             got = al._normalized(e, True, False)
             want = sp.factor_terms(e) if e.is_Add and is_small(e) else e
             assert sp.srepr(got) == sp.srepr(want)
+
+
+def test_factoring_of_floats_is_sympys_at_each_precision():
+    al, q, r, u, w, c = _script()
+    al.settings.factoring = True
+    for digits in (15, 30, 15):
+        e = -sp.Float(0.5, digits) * u * c - w
+        got = al._normalized(e, True, False)
+        assert sp.srepr(got) == sp.srepr(sp.factor_terms(e))
