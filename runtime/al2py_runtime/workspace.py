@@ -104,7 +104,7 @@ class Workspace(Mapping):
         #: the parts found to hold no ``Float`` (:func:`_may_hold_floats`:
         #: the values normalized share most of their parts)
         self._no_floats: set = set()
-        #: a sum without floats Factoring rearranges -> what it becomes
+        #: a sum Factoring rearranges -> what it becomes
         #: (sympy's ``factor_terms`` if it is small, else itself): a bicycle
         #: rearranges a third of its sums more than once
         self._factored: dict[Any, Any] = {}
@@ -657,14 +657,12 @@ class Workspace(Mapping):
             if simple:
                 value = _xreplace(value, simple)
         if rearrange and self.settings.factoring and value.is_Add:
-            # kept only for a value without floats (sympy's == of floats
-            # does not see their precision, which their text shows)
-            plain = not _may_hold_floats(value, self._no_floats)
-            found = self._factored.get(value) if plain else None
+            # (sympy's == tells floats of two precisions apart: a value is
+            # found only by one with the same text)
+            found = self._factored.get(value)
             if found is None:
                 found = sp.factor_terms(value) if is_small(value) else value
-                if plain:
-                    self._factored[value] = found
+                self._factored[value] = found
             value = found
         return value
 
