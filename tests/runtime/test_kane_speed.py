@@ -1,0 +1,194 @@
+"""Shortcuts of the model's light simplification (issue 35): each gives
+sympy's result, written alike (the same arguments in the same order),
+checked on random expressions shaped like a named model's measure numbers.
+Each test also counts how often the shortcut was taken, so it cannot pass
+by always asking sympy."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from al2py_runtime.intermediates.autoz import Intermediates
+from al2py_runtime.model import kinematics as kin
+from sympy.physics.mechanics import dynamicsymbols
+from sympy.simplify.fu import TR10i
+
+T = dynamicsymbols._t
+U = dynamicsymbols("U1:5")
+Q = dynamicsymbols("Q1:4")
+S = [
+    sp.Symbol("RF"),
+    sp.Symbol("RR", positive=True),
+    sp.Symbol("D1", real=True),
+    sp.Symbol("K", negative=True),
+]
+
+
+def _tree(e) -> str:
+    """``e`` written with every argument in its stored order (sympy's
+    printers, ``srepr`` too, sort a sum's terms)."""
+    if isinstance(e, tuple):
+        return "(" + ",".join(_tree(a) for a in e) + ")"
+    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
+        return type(e).__name__ + "(" + ",".join(_tree(a) for a in e.args) + ")"
+    return sp.srepr(e)
+
+
+def _book_atoms() -> list:
+    book = Intermediates("Z")
+    zs = [
+        book.name(sp.cos(Q[0]) * sp.sin(Q[1]) + S[0] * sp.cos(Q[2])),
+        book.name(sp.sin(Q[0]) * U[0] - S[1] * sp.cos(Q[1])),
+        book.name(S[2] * sp.sin(Q[2]) + sp.cos(Q[0]) * sp.cos(Q[1])),
+        book.name(U[1] * sp.cos(Q[2]) + S[0] * sp.sin(Q[1]) * S[1]),
+    ]
+    return zs
+
+
+ZS = _book_atoms()
+
+
+def _plain(rng: random.Random) -> sp.Expr:
+    """A factor ``factor_terms`` and ``TR10i`` leave alone."""
+    kind = rng.randrange(6)
+    if kind == 0:
+        return rng.choice(U)
+    if kind == 1:
+        return sp.Derivative(rng.choice(U), T)
+    if kind == 2:
+        return rng.choice(S)
+    if kind == 3:
+        return rng.choice(ZS)
+    if kind == 4:
+        return rng.choice(Q)
+    return rng.choice([sp.sin, sp.cos])(rng.choice(Q + S[:1]))
+
+
+def _other(rng: random.Random) -> sp.Expr:
+    """A factor of another kind (a power, a square root, an angle with
+    ``pi``, a number)."""
+    z = rng.choice(ZS)
+    return rng.choice(
+        [
+            1 / sp.sqrt(1 - z**2),
+            z**2,
+            sp.sqrt(2),
+            sp.sqrt(3),
+            sp.Rational(1, 2),
+            2,
+            sp.sin(rng.choice(Q) + sp.pi / 4),
+            sp.cos(rng.choice(Q)) ** 2,
+            sp.sqrt(rng.choice(S[:2])),
+        ]
+    )
+
+
+def _monomial(rng: random.Random, plain: float) -> sp.Expr:
+    coef = rng.choice([1, 1, 1, 1, -1, -1, -1, 2, -3])
+    factors = [_plain(rng) for _ in range(rng.randrange(1, 4))]
+    if rng.random() > plain:
+        factors.append(_other(rng))
+    return coef * sp.Mul(*factors)
+
+
+def _trig_pair(rng: random.Random) -> sp.Expr:
+    """Two terms ``TR10i`` joins (or might)."""
+    a, b = rng.sample(Q, 2)
+    c = rng.choice([1, -1, sp.sqrt(3), rng.choice(S), rng.choice(ZS)])
+    pairs = [
+        sp.cos(a) * sp.cos(b) + sp.sin(a) * sp.sin(b),
+        sp.cos(a) * sp.sin(b) - sp.sin(a) * sp.cos(b),
+        sp.cos(a) + sp.sin(a),
+        sp.sqrt(3) * sp.cos(a) + sp.sin(a),
+        sp.cos(a) * rng.choice(U) + sp.sin(a) * rng.choice(U),
+    ]
+    return sp.expand(c * rng.choice(pairs))
+
+
+def _expression(rng: random.Random) -> sp.Expr:
+    plain = rng.choice([1.0, 1.0, 0.8, 0.5])
+    terms = [_monomial(rng, plain) for _ in range(rng.randrange(1, 6))]
+    if rng.random() < 0.25:  # a product with a sum (not expanded)
+        inner = sp.Add(*[_monomial(rng, plain) for _ in range(rng.randrange(2, 4))])
+        outer = _plain(rng) * inner
+        if rng.random() < 0.5:
+            outer = outer / sp.sqrt(1 - rng.choice(ZS) ** 2)
+        terms.append(outer)
+    if rng.random() < 0.2:
+        terms.append(_trig_pair(rng))
+    if rng.random() < 0.1:  # all terms negative, or a common factor
+        f = rng.choice([-1, _plain(rng)])
+        return sp.expand(f * sp.Add(*terms))
+    return sp.Add(*terms)
+
+
+def _reference_tidy_one(expr: sp.Expr) -> sp.Expr:
+    """``_tidy_one`` as it was, all sympy's."""
+    if not isinstance(expr, sp.Expr) or expr.is_number:
+        return expr
+    if expr.has(sp.sin, sp.cos):
+        ops = sp.count_ops(expr)
+        if ops <= kin.TRIGSIMP_LIMIT:
+            new = kin._trig(expr)
+            if sp.count_ops(new) <= ops:
+                expr = new
+    return sp.factor_terms(expr)
+
+
+def _undone(e: sp.Expr) -> sp.Expr:
+    """The rest of :func:`kin._trig` after ``TR10i``."""
+    return e.replace(
+        lambda f: isinstance(f, sp.sin | sp.cos) and f.args[0].has(sp.pi),
+        lambda f: sp.expand_trig(f),
+    )
+
+
+SEEDS = range(600)
+
+
+def test_tidy_one_is_sympys():
+    fast = 0
+    for seed in SEEDS:
+        e = _expression(random.Random(seed))
+        assert _tree(kin._tidy_one(e)) == _tree(_reference_tidy_one(e)), (seed, e)
+        fast += kin._factors_fixed(e) or kin._tr10i_fixed(sp.expand(e))
+    assert fast > len(SEEDS) // 3
+
+
+def test_tr10i_fixed_means_unchanged():
+    fixed = declined = 0
+    for seed in SEEDS:
+        e = sp.expand(_expression(random.Random(seed)))
+        if kin._tr10i_fixed(e):
+            fixed += 1
+            assert _tree(_undone(TR10i(e))) == _tree(e), (seed, e)
+        else:
+            declined += 1
+    assert fixed > len(SEEDS) // 2 and declined > 20
+
+
+def test_factors_fixed_means_unchanged():
+    fixed = declined = 0
+    for seed in SEEDS:
+        e = _expression(random.Random(seed))
+        if kin._factors_fixed(e):
+            fixed += 1
+            assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
+        else:
+            declined += 1
+    assert fixed > len(SEEDS) // 10 and declined > 50
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [
+        -U[0] * ZS[0] - U[1] * ZS[2],  # all negative: -1 is taken out
+        U[0] * ZS[0] + U[1] * ZS[0],  # a common factor
+        sp.cos(Q[0]) * U[0] + sp.sin(Q[0]) * U[0],  # joined by TR10i
+    ],
+)
+def test_declined_where_sympy_changes(expr):
+    assert _tree(kin._tidy_one(expr)) == _tree(_reference_tidy_one(expr))
+    assert _tree(kin._tidy_one(expr)) != _tree(expr)
