@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
+from sympy.core.mul import _keep_coeff
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.simplify.fu import TR10i
 
@@ -110,11 +111,13 @@ def _trig_pair(rng: random.Random) -> sp.Expr:
 def _expression(rng: random.Random) -> sp.Expr:
     plain = rng.choice([1.0, 1.0, 0.8, 0.5])
     terms = [_monomial(rng, plain) for _ in range(rng.randrange(1, 6))]
-    if rng.random() < 0.25:  # a product with a sum (not expanded)
+    if rng.random() < 0.4:  # a product with a sum (not expanded)
         inner = sp.Add(*[_monomial(rng, plain) for _ in range(rng.randrange(2, 4))])
-        outer = _plain(rng) * inner
-        if rng.random() < 0.5:
+        outer = rng.choice([1, -1]) * _plain(rng) * inner
+        if rng.random() < 0.3:
             outer = outer / sp.sqrt(1 - rng.choice(ZS) ** 2)
+        elif rng.random() < 0.3:  # as factor_terms writes -(a + b)
+            outer = _keep_coeff(sp.S.NegativeOne, inner, sign=True)
         terms.append(outer)
     if rng.random() < 0.2:
         terms.append(_trig_pair(rng))
@@ -179,6 +182,40 @@ def test_factors_fixed_means_unchanged():
         else:
             declined += 1
     assert fixed > len(SEEDS) // 10 and declined > 50
+
+
+def _plain_sum(rng: random.Random, depth: int) -> sp.Expr:
+    """A sum of products of plain factors, -1 or none, and (``depth`` > 0)
+    sums of the same kind; now and then all negative, or with a common
+    factor, or written as factor_terms writes ``-(a + b)``."""
+    terms = []
+    for _ in range(rng.randrange(1, 5)):
+        factors = [_plain(rng) for _ in range(rng.randrange(1, 3))]
+        if depth and rng.random() < 0.5:
+            factors.append(_plain_sum(rng, depth - 1))
+        terms.append(rng.choice([1, 1, -1]) * sp.Mul(*factors))
+    e = sp.Add(*terms)
+    r = rng.random()
+    if r < 0.1:
+        return sp.expand(-e) if e.is_Add else -e
+    if r < 0.2:
+        return sp.expand(rng.choice(ZS[::2]) * e)
+    if r < 0.3 and e.is_Add:
+        return _keep_coeff(sp.S.NegativeOne, e, sign=True)
+    return e
+
+
+def test_factors_fixed_on_nested_sums():
+    fixed = declined = 0
+    for seed in range(600):
+        e = _plain_sum(random.Random(seed), 2)
+        if kin._factors_fixed(e):
+            fixed += 1
+            assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
+        else:
+            declined += 1
+        assert _tree(kin._tidy_one(e)) == _tree(_reference_tidy_one(e)), (seed, e)
+    assert fixed > 200 and declined > 50
 
 
 @pytest.mark.parametrize(

@@ -720,8 +720,10 @@ def _plain_factor(f: Any) -> bool:
 
 def _monomial(term: Any) -> frozenset | None:
     """The factors of a term that is a plain factor (:func:`_plain_factor`)
-    or a product of plain factors, with -1 or no number: None for any
-    other term."""
+    or a product of plain factors and sums ``factor_terms`` leaves alone
+    (:func:`_factors_fixed`), with -1 or no number: None for any other
+    term.  ``-1`` times one sum alone is declined (sympy's ``Mul`` of the
+    two would distribute it)."""
     if _plain_factor(term):
         return frozenset((term,))
     if not term.is_Mul:
@@ -729,7 +731,9 @@ def _monomial(term: Any) -> frozenset | None:
     args = term.args
     if args[0] is sp.S.NegativeOne:
         args = args[1:]
-    if all(_plain_factor(f) for f in args) and _in_order(args):
+        if len(args) == 1 and args[0].is_Add:
+            return None
+    if all(_plain_factor(f) or _factors_fixed(f) for f in args) and _in_order(args):
         return frozenset(args)
     return None
 
