@@ -741,7 +741,7 @@ def _monomial(term: Any) -> frozenset | None:
 def _in_order(args: tuple) -> bool:
     """Whether ``args`` are in the order sympy's ``Add`` and ``Mul`` sort
     them (``Basic.compare``), which ``factor_terms`` rebuilds them in."""
-    return all(sp.Basic.compare(a, b) < 0 for a, b in zip(args, args[1:]))
+    return all(sp.Basic.compare(a, b) < 0 for a, b in zip(args, args[1:], strict=False))
 
 
 def _factors_fixed(expr: sp.Expr) -> bool:
