@@ -294,3 +294,52 @@ def test_holds_inertia_reads_unit_vectors_as_written():
     before = _body_state(body)
     body.inertia = (again, o)
     assert _body_state(body) != before
+
+
+# ---------------------------------------------------------- vector sums
+
+
+def _vector_args(v) -> list:
+    return [(type(m).__name__, _tree(tuple(m)), f) for m, f in v.args]
+
+
+def test_add_vectors_is_sympys_sum():
+    from sympy.physics.mechanics import ReferenceFrame
+    from sympy.physics.vector import Vector
+
+    n = ReferenceFrame("N")
+    a = n.orientnew("A", "Axis", [Q[0], n.z])
+    b = a.orientnew("B", "Axis", [Q[1], a.x])
+    frames = [n, a, b]
+    entries = [0, 0, 1, -1, *S, *ZS, *U, sp.Float(0.0), sp.cos(Q[2])]
+    sums = cancelled = 0
+    for seed in range(400):
+        rng = random.Random(seed)
+
+        def vector(rng: random.Random = rng):
+            kind = rng.randrange(4)
+            if kind == 0:
+                return Vector(0)
+            if kind == 1:  # a sympy unit vector, times a number
+                return rng.choice([1, -1, 2]) * rng.choice(frames).x
+            parts = [
+                (sp.Matrix([rng.choice(entries) for _ in range(3)]), rng.choice(frames))
+                for _ in range(rng.randrange(1, 4))
+            ]
+            v = Vector(parts)
+            if kind == 3:  # opposite terms: a frame's sum is zero
+                v = v + Vector([(-m, f) for m, f in parts[: rng.randrange(1, 3)]])
+            return v
+
+        want = got = Vector(0)
+        for _ in range(rng.randrange(1, 5)):
+            v = vector()
+            if want.args and rng.random() < 0.3:  # cancels a frame's sum
+                m, f = rng.choice(want.args)
+                v = Vector([(-m, f)]) + v
+            want = want + v
+            got = kin.add_vectors(got, v)
+            sums += bool(v.args)
+            cancelled += len(want.args) < len({f for _, f in want.args + v.args})
+        assert _vector_args(got) == _vector_args(want), seed
+    assert sums > 400 and cancelled > 30

@@ -395,7 +395,38 @@ def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
         return b.ang_vel_in(a)  # sympy's error: no path
     out = Vector(0)
     for x, y in zip(path, path[1:], strict=False):
-        out += x._ang_vel_dict[y]
+        out = add_vectors(out, x._ang_vel_dict[y])
+    return out
+
+
+#: sympy's zero measure numbers, which ``Vector`` drops (compared, never
+#: changed)
+_ZERO3 = sp.ImmutableMatrix([0, 0, 0])
+
+
+def add_vectors(a: Vector, b: Any) -> Vector:
+    """``a + b`` of a vector and a vector, the same ``Vector`` as sympy's
+    ``Vector.__add__`` forms (``b`` zero: ``a`` itself; else the measure
+    numbers of each frame summed in the order met, and a frame whose sum
+    is zero left out), without its new zero matrix for each frame's test.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x - u * N.x
+    >>> add_vectors(a, b).args == (a + b).args
+    True
+    """
+    if not isinstance(b, Vector):
+        return a + b  # sympy's answer (0) or its error
+    if not b.args:
+        return a
+    d: dict = {}
+    for m, f in a.args + b.args:
+        d[f] = d[f] + m if f in d else m
+    out = Vector(0)
+    out.args = [(m, f) for f, m in d.items() if m != _ZERO3]
     return out
 
 
@@ -466,9 +497,17 @@ def frame_dt(
     ``time_derivative``, whose scalar derivative is sympy's ``diff``)."""
     out = Vector(0)
     for m, f in v.args:
-        out += Vector([(m.applyfunc(scalar_dt), f)])
+        out = add_vectors(out, _frame_vector(m.applyfunc(scalar_dt), f))
         if f != frame:
-            out += cross(ang_vel_in(f, frame), Vector([(m, f)]))
+            out = add_vectors(out, cross(ang_vel_in(f, frame), _frame_vector(m, f)))
+    return out
+
+
+def _frame_vector(m: sp.MatrixBase, f: ReferenceFrame) -> Vector:
+    """``Vector([(m, f)])``: zero when ``m`` is."""
+    out = Vector(0)
+    if m != _ZERO3:
+        out.args = [(m, f)]
     return out
 
 
