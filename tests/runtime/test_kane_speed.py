@@ -49,11 +49,20 @@ def _book_atoms() -> list:
 
 
 ZS = _book_atoms()
+#: an intermediate and a function of time whose arguments hold a sum that
+#: factor_terms factors (a Specified quantity's value: 10*sin(2*pi*t + pi/6))
+ODD = [
+    ZS[0].func(*ZS[0].args, 10 * sp.sin(2 * sp.pi * T + sp.pi / 6)),
+    sp.Function("F")(2 * sp.pi * T + sp.pi / 6),
+    sp.Function("G")(T, 2 * S[0] + 2 * S[2]),
+]
 
 
 def _plain(rng: random.Random) -> sp.Expr:
     """A factor ``factor_terms`` and ``TR10i`` leave alone."""
-    kind = rng.randrange(6)
+    kind = rng.randrange(7)
+    if kind == 6:
+        return rng.choice(ODD if rng.random() < 0.5 else U)
     if kind == 0:
         return rng.choice(U)
     if kind == 1:
@@ -181,7 +190,7 @@ def test_factors_fixed_means_unchanged():
             assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
         else:
             declined += 1
-    assert fixed > len(SEEDS) // 10 and declined > 50
+    assert fixed > 40 and declined > 50
 
 
 def _plain_sum(rng: random.Random, depth: int) -> sp.Expr:
@@ -215,7 +224,7 @@ def test_factors_fixed_on_nested_sums():
         else:
             declined += 1
         assert _tree(kin._tidy_one(e)) == _tree(_reference_tidy_one(e)), (seed, e)
-    assert fixed > 200 and declined > 50
+    assert fixed > 120 and declined > 50
 
 
 @pytest.mark.parametrize(
@@ -248,7 +257,7 @@ def test_holds_inertia_means_setting_again_changes_nothing():
     from sympy.physics.mechanics import Point, ReferenceFrame, RigidBody, inertia
 
     held = 0
-    for seed in range(300):
+    for seed in range(200):
         rng = random.Random(seed)
         n = ReferenceFrame("N")
         b = n.orientnew("B", "Axis", [Q[0], n.z])
@@ -273,7 +282,7 @@ def test_holds_inertia_means_setting_again_changes_nothing():
             before = _body_state(body)
             body.inertia = (again, body.masscenter)
             assert _body_state(body) == before, seed
-    assert held > 50
+    assert held > 30
 
 
 def test_holds_inertia_reads_unit_vectors_as_written():

@@ -746,15 +746,29 @@ def _factor_terms(expr: sp.Expr) -> sp.Expr:
 
 
 def _plain_factor(f: Any) -> bool:
-    """A symbol, a function of time, an intermediate, the derivative of a
-    function of time, or the sine or cosine of a symbol or function of
-    time: a factor ``factor_terms`` leaves as it is (its content is 1)."""
+    """A plain atom (:func:`_plain_atom`), or the sine or cosine of one: a
+    factor ``factor_terms`` leaves as it is (its content is 1, and nothing
+    in it is a sum or a product)."""
     if isinstance(f, sp.sin | sp.cos):
-        f = f.args[0]
-        return isinstance(f, sp.Symbol | AppliedUndef)
+        return _plain_atom(f.args[0])
+    return _plain_atom(f)
+
+
+def _plain_atom(f: Any) -> bool:
+    """A symbol, a function of symbols (a function of time), its
+    derivative by symbols, or an intermediate at such arguments (its
+    number first): ``factor_terms`` rebuilds nothing inside (a function's
+    argument may hold a sum it would factor: ``10*sin(2*pi*t + pi/6)``)."""
+    if isinstance(f, sp.Symbol):
+        return True
+    if isinstance(f, AppliedUndef):
+        return all(a.is_Symbol for a in f.args)
     if isinstance(f, sp.Derivative):
-        return isinstance(f.expr, AppliedUndef)
-    return isinstance(f, sp.Symbol | AppliedUndef | Intermediate)
+        return _plain_atom(f.expr) and all(v.is_Symbol for v in f.variables)
+    if isinstance(f, Intermediate):
+        args = f.args
+        return bool(args) and args[0].is_Integer and all(map(_plain_atom, args[1:]))
+    return False
 
 
 def _monomial(term: Any) -> frozenset | None:
