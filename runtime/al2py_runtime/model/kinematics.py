@@ -395,7 +395,38 @@ def ang_vel_in(b: ReferenceFrame, a: ReferenceFrame) -> Vector:
         return b.ang_vel_in(a)  # sympy's error: no path
     out = Vector(0)
     for x, y in zip(path, path[1:], strict=False):
-        out += x._ang_vel_dict[y]
+        out = add_vectors(out, x._ang_vel_dict[y])
+    return out
+
+
+#: sympy's zero measure numbers, which ``Vector`` drops (compared, never
+#: changed)
+_ZERO3 = sp.ImmutableMatrix([0, 0, 0])
+
+
+def add_vectors(a: Vector, b: Any) -> Vector:
+    """``a + b`` of a vector and a vector, the same ``Vector`` as sympy's
+    ``Vector.__add__`` forms (``b`` zero: ``a`` itself; else the measure
+    numbers of each frame summed in the order met, and a frame whose sum
+    is zero left out), without its new zero matrix for each frame's test.
+
+    >>> from sympy.physics.vector import ReferenceFrame, dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [q, N.z])
+    >>> a, b = u * N.x + q * A.y, 2 * A.x - u * N.x
+    >>> add_vectors(a, b).args == (a + b).args
+    True
+    """
+    if not isinstance(b, Vector):
+        return a + b  # sympy's answer (0) or its error
+    if not b.args:
+        return a
+    d: dict = {}
+    for m, f in a.args + b.args:
+        d[f] = d[f] + m if f in d else m
+    out = Vector(0)
+    out.args = [(m, f) for f, m in d.items() if m != _ZERO3]
     return out
 
 
@@ -466,9 +497,17 @@ def frame_dt(
     ``time_derivative``, whose scalar derivative is sympy's ``diff``)."""
     out = Vector(0)
     for m, f in v.args:
-        out += Vector([(m.applyfunc(scalar_dt), f)])
+        out = add_vectors(out, _frame_vector(m.applyfunc(scalar_dt), f))
         if f != frame:
-            out += cross(ang_vel_in(f, frame), Vector([(m, f)]))
+            out = add_vectors(out, cross(ang_vel_in(f, frame), _frame_vector(m, f)))
+    return out
+
+
+def _frame_vector(m: sp.MatrixBase, f: ReferenceFrame) -> Vector:
+    """``Vector([(m, f)])``: zero when ``m`` is."""
+    out = Vector(0)
+    if m != _ZERO3:
+        out.args = [(m, f)]
     return out
 
 
@@ -625,10 +664,157 @@ def _tidy_one(expr: sp.Expr) -> sp.Expr:
     if expr.has(sp.sin, sp.cos):
         ops = sp.count_ops(expr)
         if ops <= TRIGSIMP_LIMIT:
-            new = _trig(expr)
-            if sp.count_ops(new) <= ops:
-                expr = new
+            expr = _trig_tidied(expr, ops)
+    return _factor_terms(expr)
+
+
+def _trig_tidied(expr: sp.Expr, ops: int) -> sp.Expr:
+    """``new if sp.count_ops(new) <= ops else expr`` for ``new = _trig(expr)``
+    (``ops`` is ``expr``'s count), without sympy's ``TR10i`` where it is
+    known to change nothing (:func:`_tr10i_fixed`): ``new`` is then the
+    expansion of ``expr``, and ``expr`` itself when that is already
+    expanded (most measure numbers of a named velocity)."""
+    try:
+        ex = sp.expand(expr)
+    except Exception:  # pragma: no cover - _trig's best effort: expr
+        return expr
+    if not _tr10i_fixed(ex):
+        new = _trig(expr)
+        return new if sp.count_ops(new) <= ops else expr
+    if ex == expr:
+        return expr
+    return ex if sp.count_ops(ex) <= ops else expr
+
+
+#: factors that ``TR10i`` (``trig_split``) can never read as a sine, a
+#: cosine or a square root
+_BLOCKING = (sp.Symbol, AppliedUndef, Intermediate, sp.Derivative)
+
+
+def _tr10i_fixed(e: sp.Expr) -> bool:
+    """Whether ``TR10i(e)`` is ``e`` and the undoing ``replace`` of
+    :func:`_trig` finds nothing (no sine or cosine of an angle holding
+    ``pi``).
+
+    ``TR10i`` changes a sum only where ``trig_split(a, b, two=True)``
+    succeeds for two of its terms: each of ``a`` and ``b``, once their
+    common factors are divided out, must be a sine or cosine, times at
+    most one more sine, cosine or square root and a number.  That fails
+    when one of the two holds no sine or cosine at all, or has a factor
+    (a symbol, a function of time, an intermediate, a derivative) that
+    the other does not hold anywhere: that factor stays in its quotient.
+    When that is so for every two terms of every sum in ``e``, no sum
+    changes, and ``TR10i``'s ``bottom_up`` rebuilds nothing."""
+    seen: set = set()
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if x in seen:
+            continue
+        seen.add(x)
+        if isinstance(x, sp.sin | sp.cos) and x.args[0].has(sp.pi):
+            return False
+        if x.is_Add:
+            trig = [a for a in x.args if a.has(sp.sin, sp.cos)]
+            for i, a in enumerate(trig):
+                for b in trig[i + 1 :]:
+                    if not (_splits_never(a, b) or _splits_never(b, a)):
+                        return False
+        stack.extend(x.args)
+    return True
+
+
+def _splits_never(a: sp.Expr, b: sp.Expr) -> bool:
+    """Whether ``a`` has a factor of :data:`_BLOCKING` that ``b`` does not
+    hold anywhere (see :func:`_tr10i_fixed`)."""
+    inside = None
+    for f in sp.Mul.make_args(a):
+        if isinstance(f, _BLOCKING):
+            if inside is None:
+                inside = _nodes(b)
+            if f not in inside:
+                return True
+    return False
+
+
+def _factor_terms(expr: sp.Expr) -> sp.Expr:
+    """``sp.factor_terms(expr)``: ``expr`` itself where that is known to
+    change nothing (:func:`_factors_fixed`), else sympy's."""
+    if _factors_fixed(expr):
+        return expr
     return sp.factor_terms(expr)
+
+
+def _plain_factor(f: Any) -> bool:
+    """A plain atom (:func:`_plain_atom`), or the sine or cosine of one: a
+    factor ``factor_terms`` leaves as it is (its content is 1, and nothing
+    in it is a sum or a product)."""
+    if isinstance(f, sp.sin | sp.cos):
+        return _plain_atom(f.args[0])
+    return _plain_atom(f)
+
+
+def _plain_atom(f: Any) -> bool:
+    """A symbol, a function of symbols (a function of time), its
+    derivative by symbols, or an intermediate at such arguments (its
+    number first): ``factor_terms`` rebuilds nothing inside (a function's
+    argument may hold a sum it would factor: ``10*sin(2*pi*t + pi/6)``)."""
+    if isinstance(f, sp.Symbol):
+        return True
+    if isinstance(f, AppliedUndef):
+        return all(a.is_Symbol for a in f.args)
+    if isinstance(f, sp.Derivative):
+        return _plain_atom(f.expr) and all(v.is_Symbol for v in f.variables)
+    if isinstance(f, Intermediate):
+        args = f.args
+        return bool(args) and args[0].is_Integer and all(map(_plain_atom, args[1:]))
+    return False
+
+
+def _monomial(term: Any) -> frozenset | None:
+    """The factors of a term that is a plain factor (:func:`_plain_factor`)
+    or a product of plain factors and sums ``factor_terms`` leaves alone
+    (:func:`_factors_fixed`), with -1 or no number: None for any other
+    term.  ``-1`` times one sum alone is declined (sympy's ``Mul`` of the
+    two would distribute it)."""
+    if _plain_factor(term):
+        return frozenset((term,))
+    if not term.is_Mul:
+        return None
+    args = term.args
+    if args[0] is sp.S.NegativeOne:
+        args = args[1:]
+        if len(args) == 1 and args[0].is_Add:
+            return None
+    if all(_plain_factor(f) or _factors_fixed(f) for f in args) and _in_order(args):
+        return frozenset(args)
+    return None
+
+
+def _in_order(args: tuple) -> bool:
+    """Whether ``args`` are in the order sympy's ``Add`` and ``Mul`` sort
+    them (``Basic.compare``), which ``factor_terms`` rebuilds them in."""
+    return all(sp.Basic.compare(a, b) < 0 for a, b in zip(args, args[1:], strict=False))
+
+
+def _factors_fixed(expr: sp.Expr) -> bool:
+    """Whether ``sp.factor_terms(expr)`` is ``expr``: for a term as in
+    :func:`_monomial` (its content is 1), or a sum of such terms that are
+    not all negative (else ``-1`` is taken out) with no factor common to
+    all (else it is taken out)."""
+    if not expr.is_Add:
+        return _monomial(expr) is not None
+    if not _in_order(expr.args):
+        return False
+    common = None
+    negative = True
+    for term in expr.args:
+        factors = _monomial(term)
+        if factors is None:
+            return False
+        common = factors if common is None else common & factors
+        negative = negative and term.is_Mul and term.args[0] is sp.S.NegativeOne
+    return not common and not negative
 
 
 def _trig(expr: sp.Expr) -> sp.Expr:

@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 import sympy as sp
-from sympy.physics.mechanics import Force, Particle, RigidBody, Torque
+from sympy.physics.mechanics import Force, Inertia, Particle, RigidBody, Torque
 from sympy.physics.vector import (
     Dyadic,
     Point,
@@ -170,7 +170,8 @@ class Objects(ModelPart):
                 # Inertia about a point whose position (or the mass) is not
                 # given yet: kanes_method() gives the body its actual values.
                 return
-            body.inertia = (central, body.masscenter)
+            if not _holds_inertia(body, central):
+                body.inertia = (central, body.masscenter)
 
     @command
     def points(self, *names: str) -> Any:
@@ -478,3 +479,37 @@ def _replace_loads(loads: list, where: Any, load: Any) -> None:
         loads[at[0]] = load
     else:
         loads.append(load)
+
+
+def _holds_inertia(body: Any, central: Any) -> bool:
+    """Whether ``body.inertia = (central, body.masscenter)`` would leave a
+    sympy ``RigidBody`` as it is: it holds that inertia about its mass
+    center already, and its central inertia is that dyadic too (the same
+    terms in the same order, each unit vector by its measure numbers and
+    frame: a Vector's == is mathematical equality).
+
+    sympy's setter keeps the pair and takes as the central inertia the
+    dyadic less the inertia of a point mass at the pair's point, which is
+    zero at the mass center whatever the mass: ``Dyadic(central.args)``,
+    which is ``central`` itself when ``central`` is the body's central
+    inertia (a ``Dyadic`` made by sympy's constructor, which forms it
+    again unchanged).  A mass given later (``Mass C=MC`` after ``Inertia
+    C, ...``) changes nothing."""
+    if type(body).inertia is not RigidBody.inertia:
+        return False
+    held = body.inertia
+    if not isinstance(held, Inertia) or held.point is not body.masscenter:
+        return False
+    return _same_terms(held.dyadic, central) and _same_terms(
+        body.central_inertia, central
+    )
+
+
+def _same_terms(a: Dyadic, b: Dyadic) -> bool:
+    """``a`` and ``b`` have the same terms in the same order, written alike."""
+    if a is b:
+        return True
+    return len(a.args) == len(b.args) and all(
+        x[0] == y[0] and x[1].args == y[1].args and x[2].args == y[2].args
+        for x, y in zip(a.args, b.args, strict=True)
+    )
