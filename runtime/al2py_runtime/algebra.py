@@ -23,7 +23,7 @@ from sympy.physics.vector import Dyadic, Vector
 
 from . import walks
 from .matrices import as_matrix
-from .model.kinematics import is_small
+from .model.kinematics import factor_terms, is_small
 
 __all__ = [
     "expand",
@@ -581,7 +581,7 @@ _FACTOR_LIMIT = 300
 def _factor_small(expr: sp.Expr) -> sp.Expr:
     """``factor_terms(expr)`` for an expression of at most
     :data:`_FACTOR_LIMIT` tree nodes; a larger one as it is."""
-    return sp.factor_terms(expr) if is_small(expr, _FACTOR_LIMIT) else expr
+    return factor_terms(expr) if is_small(expr, _FACTOR_LIMIT) else expr
 
 
 def _linear_system(

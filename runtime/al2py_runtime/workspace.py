@@ -35,7 +35,7 @@ from sympy.physics.vector import Dyadic, Vector
 from . import algebra, collector, matrices, progress, walks
 from .intermediates.autoz import substitute
 from .jobs.numerics import Numerics
-from .model.kinematics import doit_derivatives, is_small, one_or_tuple
+from .model.kinematics import doit_derivatives, factor_terms, is_small, one_or_tuple
 from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
@@ -661,7 +661,7 @@ class Workspace(Mapping):
             # found only by one with the same text)
             found = self._factored.get(value)
             if found is None:
-                found = sp.factor_terms(value) if is_small(value) else value
+                found = factor_terms(value) if is_small(value) else value
                 self._factored[value] = found
             value = found
         return value

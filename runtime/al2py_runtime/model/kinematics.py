@@ -665,7 +665,7 @@ def _tidy_one(expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
         if ops <= TRIGSIMP_LIMIT:
             expr = _trig_tidied(expr, ops)
-    return _factor_terms(expr)
+    return factor_terms(expr)
 
 
 def _trig_tidied(expr: sp.Expr, ops: int) -> sp.Expr:
@@ -737,9 +737,16 @@ def _splits_never(a: sp.Expr, b: sp.Expr) -> bool:
     return False
 
 
-def _factor_terms(expr: sp.Expr) -> sp.Expr:
+def factor_terms(expr: sp.Expr) -> sp.Expr:
     """``sp.factor_terms(expr)``: ``expr`` itself where that is known to
-    change nothing (:func:`_factors_fixed`), else sympy's."""
+    change nothing (:func:`_factors_fixed`), else sympy's.  Used by
+    :func:`tidy`, Factoring's rearranging and closed-form solutions.
+
+    >>> x, y = sp.symbols("x y")
+    >>> e = x * y - x
+    >>> factor_terms(e) == sp.factor_terms(e), factor_terms(x - y) == x - y
+    (True, True)
+    """
     if _factors_fixed(expr):
         return expr
     return sp.factor_terms(expr)
