@@ -811,9 +811,18 @@ _SINE_COSINE = frozenset([sp.sin, sp.cos])
 _PLAN_Z, _PLAN_SINE, _PLAN_OTHER, _PLAN_SUM = range(4)
 #: a sum's place in sympy's order of classes
 _ADD_PLACE = _class_place("Add")
+#: a power's place in sympy's order of classes
+_POW_PLACE = _class_place("Pow")
 #: the walk facts of a sum (:meth:`Intermediates._products_pd` leaves its
 #: derivative to be walked when it is named)
 _SUM_FACTS = object()
+_EMPTY: frozenset = frozenset()
+
+
+def _base_key(key: tuple) -> tuple:
+    """The tuple of a factor's base (:meth:`Intermediates._plain_key`):
+    a power's base's, else the factor's own."""
+    return key[2] if key[0] == _POW_PLACE else key
 
 
 def _plain_factor_key(f: Any) -> tuple | None:
@@ -2168,14 +2177,13 @@ class Intermediates:
         order, places = plan
         one = sp.S.One
         key_of = self._plain_key
-        z_type = self.Z
-        varsets = self._varsets
         number = _ZERO
         #: the factors' keys -> [coefficient, factors, the rest's facts,
-        #: the new factor's facts]
+        #: the new factors' facts]
         collected: dict[tuple, list] = {}
         # only the factors that hold x (an intermediate over it, a sine of
-        # it, x itself): the others' derivatives are 0, and name nothing
+        # it, x itself, a power of one): the others' derivatives are 0, and
+        # name nothing
         xi = self._ids.get(x)
         for at_factor, (f, kind, held) in enumerate(order):
             if held is not None:
@@ -2187,43 +2195,64 @@ class Intermediates:
                 if d is None:
                     # _pd_new of a canonical intermediate of this book
                     d = memo[f] = self.partial(f, j)
-            elif kind == _PLAN_SINE or kind == _PLAN_SUM:
+            elif kind == _PLAN_OTHER:
+                d = one
+            else:  # a sine or cosine, a sum, a power: as _pd takes it
                 d = memo.get(f)
                 if d is None:
                     d = self._pd_new(f, x, memo, None, None)
-            else:
-                d = one
             if d is _ZERO:
                 continue
             if d.is_Rational:
-                n, new = d, None
+                n, news = d, ()
             else:
                 n, new = one, d
-                if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
-                    n, new = d.args
-                new_key = key_of(new)
-                if new_key is None:
-                    return None
-                if type(new) is z_type:
-                    facts = (varsets[new.args[0].p], None, None)
-                elif type(new) in _SINE_COSINE:
-                    facts = (None, new.args[0], new)
-                elif new.is_Add:
-                    facts = _SUM_FACTS
-                else:
-                    facts = (None, new, None)
-            for c, rest, rest_keys, rest_facts in places[at_factor]:
+                if d.is_Mul:
+                    first = d.args[0]
+                    if len(d.args) == 2 and first.is_Rational:
+                        n, new = d.args
+                    else:
+                        # several factors (a power's derivative)
+                        many = self._new_factors(d)
+                        if many is None:
+                            return None
+                        n, news, new_keys, facts = many
+                        new = None
                 if new is not None:
+                    new_key = key_of(new)
+                    if new_key is None:
+                        return None
+                    news, new_keys = (new,), (new_key,)
+                    new_base = _base_key(new_key)
+                    facts = self._factor_facts(new)
+            for c, rest, rest_keys, rest_facts, bases in places[at_factor]:
+                coeff = n if c is one else c if n is one else c * n
+                if not news:
+                    entry = [coeff, rest, rest_facts, None]
+                    at = -1
+                elif new is None:
+                    at = -1  # several new factors
+                elif bases is None:  # no power among the rest: its bases
+                    at = bisect.bisect_left(rest_keys, new_base)
+                    if at < len(rest_keys) and rest_keys[at] == new_base:
+                        at = -1  # a common base: they combine
+                    elif new_base is not new_key:
+                        at = bisect.bisect_left(rest_keys, new_key)
+                elif new_base in bases:
+                    at = -1
+                else:
                     at = bisect.bisect_left(rest_keys, new_key)
-                    if at < len(rest_keys) and rest_keys[at] == new_key:
-                        return None  # sympy makes a power
+                if at >= 0:
+                    # the common case: one new factor of its own base
                     rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
                     rest = (*rest[:at], new, *rest[at:])
-                    entry = [n if c is one else c if n is one else c * n]
-                    entry += (rest, rest_facts, facts)
-                else:
-                    entry = [n if c is one else c if n is one else c * n]
-                    entry += (rest, rest_facts, None)
+                    entry = [coeff, rest, rest_facts, facts]
+                elif news:
+                    merged = self._merged(rest, rest_keys, bases, news, new_keys)
+                    if merged is None:
+                        return None
+                    rest, rest_keys = merged
+                    entry = [coeff, rest, self._rest_facts(rest), None]
                 if not rest:
                     number += entry[0]
                     continue
@@ -2257,10 +2286,10 @@ class Intermediates:
             return (terms[0] if terms else _ZERO), ()
         d = sp.Add._from_args(terms, is_commutative=True)
         # :meth:`_walk`: each product's arguments are met once (the terms
-        # are distinct), and a sine's (its one argument, a variable) unless
-        # it was met before; variables are recorded, a canonical
-        # intermediate brings its set of variables (read off each rest's
-        # facts and the new factor's)
+        # are distinct), and a sine's or power's (its arguments) unless it
+        # was met before; variables are recorded, a canonical intermediate
+        # brings its set of variables (read off each rest's facts and the
+        # new factors')
         size: int | float = 1 + len(terms)
         found_vars, among, shared, seen = set(), set(), set(), set()
         short = True
@@ -2268,33 +2297,44 @@ class Intermediates:
         for coeff, rest, rest_facts, facts in kept:
             if rest_facts is None or facts is _SUM_FACTS:
                 return d, ()  # a sum among the factors: walked when named
-            r_shared, r_found, r_among, r_sines = rest_facts
+            r_shared, r_found, r_among, r_stacked, extra = rest_facts
             shared |= r_shared
             found_vars |= r_found
             among |= r_among
-            sines = len(r_sines)
-            for f in r_sines:
+            for f in r_stacked:
                 if f in seen:
                     size = math.inf
                 seen.add(f)
-            if facts is not None:
+            if facts is None:
+                pass
+            elif len(facts) == 3:  # one plain factor (:meth:`_factor_facts`)
                 varset, variable, sine = facts
                 if varset is not None:
                     shared.add(varset)
                 else:
                     found_vars.add(variable)
                     if sine is not None:
-                        sines += 1
+                        extra += 1
                         if sine in seen:
                             size = math.inf
                         seen.add(sine)
                     elif type(variable) is sp.Derivative:
                         among.add(variable)
+            else:
+                f_shared, f_found, f_among, f_stacked, f_extra = facts
+                shared |= f_shared
+                found_vars |= f_found
+                among |= f_among
+                extra += f_extra
+                for f in f_stacked:
+                    if f in seen:
+                        size = math.inf
+                    seen.add(f)
             n = len(rest) if coeff is one else len(rest) + 1  # its arguments
             if n > 1:
                 size += n
-            size += sines
-            if n + sines >= limit:
+            size += extra
+            if n + extra >= limit:
                 short = False
         return d, (
             *self._met(found_vars, among, shared),
@@ -2304,23 +2344,108 @@ class Intermediates:
             short,
         )
 
+    def _new_factors(self, d: Any) -> tuple | None:
+        """The product ``d`` (a power's derivative by the chain rule) as
+        :meth:`_products_pd` takes a factor's derivative: its rational
+        coefficient, its other factors, their tuples (:meth:`_plain_key`)
+        and their walk facts (:meth:`_factor_facts`); None when a factor
+        has no tuple."""
+        args = d.args
+        n = sp.S.One
+        if args[0].is_Rational:
+            n, args = args[0], args[1:]
+        if not d.is_commutative:
+            return None
+        keys = []
+        for a in args:
+            key = self._plain_key(a)
+            if key is None:
+                return None
+            keys.append(key)
+        facts = self._rest_facts(args)
+        return n, args, tuple(keys), _SUM_FACTS if facts is None else facts
+
+    def _factor_facts(self, f: Any) -> Any:
+        """What :meth:`_walk` finds in the one new factor ``f``: for an
+        intermediate, ``(its set of variables, None, None)``; for a sine or
+        cosine ``(None, its argument, itself)``; for a power
+        :meth:`_rest_facts`; for another plain factor ``(None, itself,
+        None)``; :data:`_SUM_FACTS` for a sum or a power of one."""
+        kind = type(f)
+        if kind is self.Z:
+            return (self._varsets[f.args[0].p], None, None)
+        if kind in _SINE_COSINE:
+            return (None, f.args[0], f)
+        if kind is sp.Pow:
+            found = self._rest_facts((f,))
+            return _SUM_FACTS if found is None else found
+        if f.is_Add:
+            return _SUM_FACTS
+        return (None, f, None)
+
+    def _merged(
+        self, rest: tuple, rest_keys: tuple, bases: dict, news: tuple, new_keys: tuple
+    ) -> tuple[tuple, tuple] | None:
+        """The factors ``rest`` (tuples ``rest_keys``, ``bases``: the
+        places of their bases' tuples) times the factors ``news`` (tuples
+        ``new_keys``), none numbers, as ``Mul.flatten`` forms the product:
+        the exponents of a common base added (``b*b`` is ``b**2``, ``b**-1*b``
+        is 1, ``b**-2*b`` is ``b**-1``), each power formed by ``Pow``, and
+        the factors sorted by their tuples.  ``(factors, tuples)``; None when
+        sympy's power is not ``Pow(base, exponent)`` itself, or has no
+        tuple."""
+        rest, rest_keys = list(rest), list(rest_keys)
+        key_of = self._plain_key
+        for new, new_key in zip(news, new_keys, strict=True):
+            base_key = _base_key(new_key)
+            at = None
+            if bases is None or base_key in bases:
+                for at, key in enumerate(rest_keys):  # noqa: B007 - used below
+                    if _base_key(key) == base_key:
+                        break
+                else:
+                    at = None
+            if at is not None:
+                old = rest[at]
+                del rest[at], rest_keys[at]
+                base, e = old.args if type(old) is sp.Pow else (old, sp.S.One)
+                e = e + (new.args[1] if type(new) is sp.Pow else sp.S.One)
+                if e.is_zero:
+                    continue
+                if e is sp.S.One:
+                    new = base
+                else:
+                    new = sp.Pow(base, e)
+                    if type(new) is not sp.Pow or new.args != (base, e):
+                        return None
+                new_key = key_of(new)
+                if new_key is None:
+                    return None
+            at = bisect.bisect_left(rest_keys, new_key)
+            if at < len(rest_keys) and rest_keys[at] == new_key:
+                return None
+            rest.insert(at, new)
+            rest_keys.insert(at, new_key)
+            bases = {_base_key(key) for key in rest_keys}
+        return tuple(rest), tuple(rest_keys)
+
     def _products_plan(self, e: Any) -> tuple[tuple, tuple] | None:
         """What :meth:`_products_pd` needs of the sum of products ``e``
         whatever the variable (kept per definition): ``(order, places)``.
         ``order``: the distinct factors, in the order of :meth:`_pd`'s
         walk, each with its kind (a canonical intermediate, a sine or
-        cosine, or another plain factor) and the numbers (:attr:`_ids`) of
-        the variables it holds, each with its place among an
-        intermediate's arguments (:meth:`position`; -1 for another
-        factor): its derivative by another variable is 0.  ``places``: for
-        each factor, its places in the terms, as the term's rational
-        coefficient, the other factors and their tuples
-        (:meth:`_plain_key`), and what :meth:`_walk` finds in those
-        (:meth:`_rest_facts`).  None when a factor has no tuple."""
+        cosine, a sum or a power, or another plain factor) and the numbers
+        (:attr:`_ids`) of the variables it holds, each with its place among
+        an intermediate's arguments (:meth:`position`; -1 for another
+        factor): its derivative by another variable is 0 (None: taken by
+        every variable).  ``places``: for each factor, its places in the
+        terms, as the term's rational coefficient, the other factors and
+        their tuples (:meth:`_plain_key`), what :meth:`_walk` finds in
+        those (:meth:`_rest_facts`) and the set of their bases' tuples
+        (:func:`_base_key`).  None when a factor has no tuple."""
         one = sp.S.One
         key_of = self._plain_key
         z_type = self.Z
-        ids = self._ids
         index: dict[Any, int] = {}
         order: list = []
         places: list[list] = []
@@ -2346,15 +2471,35 @@ class Intermediates:
                         # (its derivative is taken by every variable: 0
                         # when it holds none, naming nothing)
                         kind, held = _PLAN_SUM, None
+                    elif type(f) is sp.Pow:
+                        # (taken as _pd takes it, by its base's variables)
+                        kind, held = _PLAN_SUM, self._held(f.args[0])
+                    elif type(f) in _SINE_COSINE:
+                        kind, held = _PLAN_SINE, self._held(f)
                     else:
-                        kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
-                        a = f.args[0] if kind == _PLAN_SINE else f
-                        held = {ids.setdefault(a, len(ids)): -1}
+                        kind, held = _PLAN_OTHER, self._held(f)
                     order.append((f, kind, held))
                 rest = factors[:i] + factors[i + 1 :]
                 rest_keys = keys[:i] + keys[i + 1 :]
-                places[at].append((c, rest, rest_keys, self._rest_facts(rest)))
+                # (None: no power among them, whose base is another's)
+                bases = None
+                if any(type(f) is sp.Pow for f in rest):
+                    bases = frozenset([_base_key(key) for key in rest_keys])
+                places[at].append((c, rest, rest_keys, self._rest_facts(rest), bases))
         return tuple(order), tuple(map(tuple, places))
+
+    def _held(self, f: Any) -> dict[int, int] | None:
+        """For :meth:`_products_plan`: the variables the plain factor ``f``
+        holds, by their numbers (:attr:`_ids`), each with its place among
+        an intermediate's arguments (-1 for a sine's argument or a
+        variable itself); None for a sum (every variable)."""
+        if type(f) is self.Z:
+            return self._variable_places(f)
+        if f.is_Add:
+            return None
+        ids = self._ids
+        a = f.args[0] if type(f) in _SINE_COSINE else f
+        return {ids.setdefault(a, len(ids)): -1}
 
     def _variable_places(self, z: Intermediate) -> dict[int, int]:
         """The places of the canonical intermediate ``z``'s variables among
@@ -2373,25 +2518,39 @@ class Intermediates:
         """What :meth:`_walk` finds in the plain factors ``rest`` (no
         number among them), for :meth:`_products_plan`: the sets of
         variables of the intermediates, the variables (a sine's or
-        cosine's argument), the derivatives among them, the sines and
-        cosines; None when a sum is among them (a derivative with it is
-        walked when it is named)."""
+        cosine's argument, a power's base), the derivatives among them,
+        the parts the walk stacks (sines, cosines and powers, and a
+        power's sine or cosine) and their count of nodes beyond the
+        factors themselves; None when a sum is among them (a derivative
+        with it is walked when it is named)."""
         z_type = self.Z
         varsets = self._varsets
-        shared, found, among, sines = set(), set(), set(), []
+        shared, found, among, stacked = set(), set(), set(), []
+        extra = 0
         for f in rest:
+            if type(f) is sp.Pow:
+                stacked.append(f)
+                extra += 2  # (its base and exponent; a rational: an atom)
+                f = f.args[0]
             if f.is_Add:
                 return None  # (walked when the derivative is named)
             if type(f) is z_type:
                 shared.add(varsets[f.args[0].p])
             elif type(f) in _SINE_COSINE:
-                sines.append(f)
+                stacked.append(f)
+                extra += 1
                 found.add(f.args[0])
             else:
                 found.add(f)
                 if type(f) is sp.Derivative:
                     among.add(f)
-        return frozenset(shared), frozenset(found), frozenset(among), tuple(sines)
+        return (
+            frozenset(shared),
+            frozenset(found),
+            frozenset(among),
+            tuple(stacked),
+            extra,
+        )
 
     def _products_sign(self, keyed: list, number: Any) -> bool | None:
         """:func:`minus_first` of a sum of :meth:`_products_pd`'s
@@ -2428,7 +2587,11 @@ class Intermediates:
                         return None
                     keys.append((_SYMBOL_CLASS, f.name))
                 elif type(f) is z_type:
+                    if len(f.args) == 1:
+                        return None  # (a number to sympy's as_terms)
                     keys.append((z_class, len(f.args), f.args[0].p))
+                elif type(f) is sp.Pow:
+                    return None  # (a generator with an exponent)
                 elif not f.is_Rational:
                     key = self._sort_key(f)
                     if key[0] == z_class or key[0] == _SYMBOL_CLASS:
@@ -2452,7 +2615,7 @@ class Intermediates:
             if found is _UNKNOWN:
                 args = f.args
                 found = None
-                if len(args) > 1 and self._canonical(f) and f.is_commutative:
+                if self._canonical(f) and f.is_commutative:
                     found = (self._z_place, len(args), args[0].p)
                 f.__dict__["_plain_key"] = found
             return found
@@ -2460,10 +2623,25 @@ class Intermediates:
         if found is None and f not in self._plain_keys:
             if f.is_Add:
                 found = self._sum_key(f)
+            elif type(f) is sp.Pow:
+                found = self._power_key(f)
             else:
                 found = _plain_factor_key(f)
             self._plain_keys[f] = found
         return found
+
+    def _power_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a power: its class's place, 2 and the
+        tuples of its base and exponent (its hashable content), for a
+        rational exponent and a base that has a tuple and is not a number,
+        a power or a product; None for another."""
+        base, exp = f.args
+        if not exp.is_Rational or not f.is_commutative or base.is_Pow or base.is_Mul:
+            return None
+        base_key = self._plain_key(base)
+        if base_key is None:
+            return None
+        return (_POW_PLACE, 2, base_key, _plain_atom_key(exp))
 
     def _sum_key(self, f: Any) -> tuple | None:
         """:meth:`_plain_key` of a sum: its class's place, its count of
