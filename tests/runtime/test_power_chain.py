@@ -62,7 +62,8 @@ def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
         if len(zs) < 8:
             pieces = leaves
         else:
-            pieces = zs[-25:] + [L, M, K, sp.cos(q1), constant]
+            pieces = zs[-25:] + [L, M, K, sp.cos(q1), constant, sp.tan(L)]
+            pieces += [sp.cos(L + q1), sp.sin(L + q2)]
             if rng.random() < 0.2:
                 a, b = rng.sample(zs[-10:], 2)
                 pieces.append(1 - a**2 + rng.choice(COEFFICIENTS) * b)
@@ -283,6 +284,8 @@ def test_the_tuples_of_powers_order_as_compare():
     book = Intermediates()
     pool = _pool(book)
     pool += [book.name(sp.sqrt(2) + 1), book.name(sp.sqrt(2) + 1) ** -1]
+    pool += [sp.tan(L), sp.tan(q1), sp.cos(L + q1), sp.sin(L + q1), sp.tan(L + M)]
+    pool += [sp.sin(L + q1) ** 2, sp.sin(L - M), sp.cos(q1 + 2 * q2) ** -1]
     keys = {f: book._plain_key(f) for f in pool}
     assert None not in keys.values()
     assert len(set(keys.values())) == len(keys)
@@ -291,5 +294,82 @@ def test_the_tuples_of_powers_order_as_compare():
     for _ in range(400):
         chosen = rng.sample(list(keys), rng.randint(2, 8))
         assert sorted(chosen, key=keys.__getitem__) == sorted(chosen, key=by_compare)
-    for bad in [L**K, (L * M) ** sp.S.Half, sp.sqrt(2) ** L, q1 ** sp.Float(2.5)]:
+    unkeyed = [L**K, (L * M) ** sp.S.Half, sp.sqrt(2) ** L, q1 ** sp.Float(2.5)]
+    for bad in [*unkeyed, sp.sin(L * q1), sp.tan(sp.tan(L)), sp.cos(L + sp.exp(M))]:
         assert book._plain_key(bad) is None
+
+
+def _replaced_cases(n: int = 700) -> list:
+    """``n`` seeded products (their arguments) with two or more factors
+    replaced: by intermediates, symbols, dummies, numbers (0, rationals, a
+    float, infinity, ``I``), products with coefficients, sums and powers,
+    now and then one of the product's other factors (a common base)."""
+    book = Intermediates()
+    rng = random.Random(12)
+    zs = [book.name(e) for e in [q1 * L + M, sp.sin(q2) * K + u1, q3 * M + L * u1]]
+    zs += [book.Z(sp.Integer(2), sp.Dummy("a"), q2, q3, L, u1)]
+    pool = [*zs, L, M, K, q1, u1, sp.sin(q1), sp.cos(q2), sp.Dummy("b"), L + M]
+    pool += [zs[0] ** 2, zs[1] ** -1, (L + zs[0]) ** sp.Rational(-1, 2), 2 * L + M]
+    numbers = [sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.Rational(3, 2), sp.Float(2)]
+    numbers += [sp.oo, sp.I]
+    cases = []
+    while len(cases) < n:
+        product = rng.choice([1, 1, 2, -1, sp.Rational(-1, 3), sp.Float(1.5)]) * sp.Mul(
+            *rng.sample(pool, rng.randint(2, 5))
+        )
+        if not product.is_Mul:
+            continue
+        args = product.args
+        changed = sorted(
+            rng.sample(range(len(args)), rng.randint(2, min(3, len(args))))
+        )
+        new = list(args)
+        for i in changed:
+            kind = rng.random()
+            if kind < 0.15:
+                new[i] = rng.choice(numbers)
+            elif kind < 0.3:
+                new[i] = rng.choice(COEFFICIENTS) * rng.choice(pool)
+            elif kind < 0.4:
+                new[i] = rng.choice(args)
+            else:
+                new[i] = rng.choice(pool)
+        cases.append((args, new, changed))
+    return cases
+
+
+def _replaced_mismatches(products_with, cases: list) -> list:
+    return [
+        (args, new)
+        for args, new, changed in cases
+        if sp.srepr(products_with(args, new, changed)) != sp.srepr(sp.Mul(*new))
+    ]
+
+
+def test_products_with_is_sympys_mul(monkeypatch):
+    """A product rebuilt with several factors replaced (as ``substitute``
+    rebuilds one) is sympy's ``Mul`` of the new arguments; most are formed
+    without it."""
+    cases = _replaced_cases()
+    formed = []
+    real = autoz._product
+
+    def counted(args):
+        formed.append(args)
+        return real(args)
+
+    monkeypatch.setattr(autoz, "_product", counted)
+    assert _replaced_mismatches(autoz.products_with, cases) == []
+    assert len(formed) > 150
+
+
+def test_the_replaced_check_finds_unsorted_factors():
+    """A rebuild that keeps the factors in their places is found."""
+
+    def unsorted(args, new, changed):
+        kept = [a for a in new if a is not sp.S.One]
+        if any(a.is_Number or a.is_Mul or a.is_Add for a in kept) or len(kept) < 2:
+            return sp.Mul(*new)
+        return sp.Mul._from_args(kept)
+
+    assert len(_replaced_mismatches(unsorted, _replaced_cases(300))) > 20

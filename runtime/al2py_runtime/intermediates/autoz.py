@@ -637,14 +637,87 @@ def substitute(expr: Any, rule: dict, memo: dict | None = None) -> Any:
 
 def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
     """``e.func(*new)`` for :func:`substitute`."""
-    if e.is_Mul and len(changed) == 1:
-        i = changed[0]
-        return product_with(e.args, i, new[i])
+    if e.is_Mul:
+        if len(changed) == 1:
+            i = changed[0]
+            return product_with(e.args, i, new[i])
+        return products_with(e.args, new, changed)
     if e.is_Add:
         return total(new)
     if e.func is sp.Pow:
         return power(*new)
     return e.func(*new)
+
+
+def products_with(args: tuple, new: list, changed: list[int]) -> Any:
+    """``sp.Mul(*new)``, where ``args`` are a product's (canonical)
+    arguments and ``new`` the same with the factors at ``changed`` (two or
+    more) replaced, each by a rational number, a plain factor or a
+    rational times plain factors (:func:`_plain_base`), as
+    :func:`product_with` takes one.
+
+    sympy's ``Mul.flatten`` then multiplies the rational coefficients and
+    sorts the factors (by ``Basic.compare``), when no factor is a number
+    or a power of one and no two share a base, and the result is not a
+    number times one sum (sympy distributes it): that is done here
+    directly.  Otherwise sympy forms the product."""
+    first = args[0]
+    start = 1 if first.is_Number else 0
+    if (
+        (start and (changed[0] == 0 or not first.is_Rational))
+        or not all(a.is_commutative for a in new)
+        or not global_parameters.evaluate
+    ):
+        return sp.Mul(*new)
+    coeff = first if start else sp.S.One
+    kept = [a for j, a in enumerate(args) if j >= start and j not in changed]
+    bases = set()
+    for a in kept:
+        base = _plain_base(a)
+        if base is None or base in bases:
+            return sp.Mul(*new)
+        bases.add(base)
+    factors = list(kept)
+    for i in changed:
+        d = new[i]
+        if isinstance(d, Intermediate):
+            parts: tuple = (d,)
+        elif d.is_Rational:
+            coeff = coeff * d
+            continue
+        elif d.is_Mul:
+            parts = d.args
+            if parts[0].is_Number:
+                if not parts[0].is_Rational:
+                    return sp.Mul(*new)
+                coeff = coeff * parts[0]
+                parts = parts[1:]
+        elif d.is_Number:
+            return sp.Mul(*new)
+        else:
+            parts = (d,)
+        for a in parts:
+            base = _plain_base(a)
+            if base is None or base in bases:
+                return sp.Mul(*new)
+            bases.add(base)
+            factors.append(a)
+    if coeff is sp.S.Zero:
+        return sp.Mul(*new)  # (0, or nan with an infinite factor)
+    if len(factors) == 1 and factors[0].is_Add and coeff is not sp.S.One:
+        return sp.Mul(*new)  # sympy distributes it
+    if len(factors) == 2:  # the one comparison sort makes, without its keys
+        if _compare(factors[1], factors[0]) < 0:
+            factors.reverse()
+    else:
+        factors.sort(key=_BY_COMPARE)
+    if coeff is not sp.S.One:
+        factors.insert(0, coeff)
+    if not factors:
+        return sp.S.One
+    if len(factors) == 1:
+        return factors[0]
+    return _product(factors)
 
 
 def power(base: Any, exp: Any) -> Any:
@@ -806,6 +879,9 @@ _END = ((math.inf,),)
 #: the functions whose values :meth:`Intermediates._products_pd` takes as
 #: factors (of a variable)
 _SINE_COSINE = frozenset([sp.sin, sp.cos])
+#: the functions whose values :meth:`Intermediates._products_pd` takes as
+#: factors (of a variable or of a sum)
+_TRIG_OF = frozenset([sp.sin, sp.cos, sp.tan])
 
 #: the kinds of factors of :meth:`Intermediates._products_plan`
 _PLAN_Z, _PLAN_SINE, _PLAN_OTHER, _PLAN_SUM = range(4)
@@ -2177,6 +2253,8 @@ class Intermediates:
         order, places = plan
         one = sp.S.One
         key_of = self._plain_key
+        z_type = self.Z
+        varsets = self._varsets
         number = _ZERO
         #: the factors' keys -> [coefficient, factors, the rest's facts,
         #: the new factors' facts]
@@ -2223,8 +2301,16 @@ class Intermediates:
                     if new_key is None:
                         return None
                     news, new_keys = (new,), (new_key,)
-                    new_base = _base_key(new_key)
-                    facts = self._factor_facts(new)
+                    # (_base_key and _factor_facts, without the calls for
+                    # an intermediate, most new factors)
+                    if type(new) is z_type:
+                        new_base = new_key
+                        facts = (varsets[new.args[0].p], None, None)
+                    else:
+                        new_base = new_key
+                        if new_key[0] == _POW_PLACE:
+                            new_base = new_key[2]
+                        facts = self._factor_facts(new)
             for c, rest, rest_keys, rest_facts, bases in places[at_factor]:
                 coeff = n if c is one else c if n is one else c * n
                 if not news:
@@ -2374,8 +2460,8 @@ class Intermediates:
         kind = type(f)
         if kind is self.Z:
             return (self._varsets[f.args[0].p], None, None)
-        if kind in _SINE_COSINE:
-            return (None, f.args[0], f)
+        if kind in _TRIG_OF:
+            return _SUM_FACTS if f.args[0].is_Add else (None, f.args[0], f)
         if kind is sp.Pow:
             found = self._rest_facts((f,))
             return _SUM_FACTS if found is None else found
@@ -2460,6 +2546,9 @@ class Intermediates:
             keys = tuple([key_of(f) for f in factors])
             if None in keys:
                 return None
+            # (a power among the factors: the places of the others' bases
+            # are kept, else None: their bases are their own)
+            powers = any(key[0] == _POW_PLACE for key in keys)
             for i, f in enumerate(factors):
                 at = index.get(f)
                 if at is None:
@@ -2474,16 +2563,15 @@ class Intermediates:
                     elif type(f) is sp.Pow:
                         # (taken as _pd takes it, by its base's variables)
                         kind, held = _PLAN_SUM, self._held(f.args[0])
-                    elif type(f) in _SINE_COSINE:
+                    elif type(f) in _TRIG_OF:
                         kind, held = _PLAN_SINE, self._held(f)
                     else:
                         kind, held = _PLAN_OTHER, self._held(f)
                     order.append((f, kind, held))
                 rest = factors[:i] + factors[i + 1 :]
                 rest_keys = keys[:i] + keys[i + 1 :]
-                # (None: no power among them, whose base is another's)
                 bases = None
-                if any(type(f) is sp.Pow for f in rest):
+                if powers:
                     bases = frozenset([_base_key(key) for key in rest_keys])
                 places[at].append((c, rest, rest_keys, self._rest_facts(rest), bases))
         return tuple(order), tuple(map(tuple, places))
@@ -2495,10 +2583,10 @@ class Intermediates:
         variable itself); None for a sum (every variable)."""
         if type(f) is self.Z:
             return self._variable_places(f)
-        if f.is_Add:
+        a = f.args[0] if type(f) in _TRIG_OF else f
+        if a.is_Add:
             return None
         ids = self._ids
-        a = f.args[0] if type(f) in _SINE_COSINE else f
         return {ids.setdefault(a, len(ids)): -1}
 
     def _variable_places(self, z: Intermediate) -> dict[int, int]:
@@ -2536,7 +2624,9 @@ class Intermediates:
                 return None  # (walked when the derivative is named)
             if type(f) is z_type:
                 shared.add(varsets[f.args[0].p])
-            elif type(f) in _SINE_COSINE:
+            elif type(f) in _TRIG_OF:
+                if f.args[0].is_Add:
+                    return None  # (walked when the derivative is named)
                 stacked.append(f)
                 extra += 1
                 found.add(f.args[0])
@@ -2623,12 +2713,31 @@ class Intermediates:
         if found is None and f not in self._plain_keys:
             if f.is_Add:
                 found = self._sum_key(f)
+            elif type(f) in _TRIG_OF:
+                found = self._trig_key(f)
             elif type(f) is sp.Pow:
                 found = self._power_key(f)
             else:
                 found = _plain_factor_key(f)
             self._plain_keys[f] = found
         return found
+
+    def _trig_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a sine, cosine or tangent: the tuple of a
+        function of one argument (its class's place, 1 and its argument's
+        tuple), for an argument that is a symbol, a function of time (as
+        :func:`_plain_factor_key` takes them) or a sum with a tuple; None
+        for another."""
+        if not f.is_commutative:
+            return None
+        arg = f.args[0]
+        if arg.is_Add:
+            arg_key = self._plain_key(arg)
+        elif arg.is_Symbol or isinstance(arg, AppliedUndef):
+            arg_key = _plain_factor_key(arg)
+        else:
+            return None
+        return None if arg_key is None else _nested_key(f, [arg_key])
 
     def _power_key(self, f: Any) -> tuple | None:
         """:meth:`_plain_key` of a power: its class's place, 2 and the
