@@ -8,7 +8,9 @@ books are built with and without the shortcut and must agree on every
 intermediate (number, variables, definition) and every derivative; each
 derivative it forms, and what it says ``_walk`` finds in it, is checked
 against ``_pd`` and ``_walk``; the product of factors with common bases
-(:meth:`Intermediates._merged`) against sympy's ``Mul``, and the tuples of
+(:meth:`Intermediates._merged`) and a product rebuilt with several
+factors replaced (:func:`autoz.products_with`) against sympy's ``Mul``,
+argument by argument in their order, and the tuples of
 powers against ``Basic.compare``.  Each check is shown to find a broken
 shortcut."""
 
@@ -87,6 +89,9 @@ def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
 
 
 def _tree(e) -> str:
+    """``e`` written out with its arguments in their order (``srepr`` sorts
+    a product's factors and a sum's terms; the two books' intermediates
+    are of different classes, so they are compared by text)."""
     if isinstance(e, tuple):
         return f"({', '.join(map(_tree, e))})"
     if not e.args:
@@ -246,7 +251,7 @@ def _merge_mismatches(book: Intermediates, cases: list) -> tuple[list, int]:
         args, keys = got
         assert keys == tuple(key_of(f) for f in args)
         mine = args[0] if len(args) == 1 else autoz._product(args) if args else 1
-        if sp.srepr(mine) != sp.srepr(sp.Mul(*rest, *news)):
+        if _tree(mine) != _tree(sp.Mul(*rest, *news)):
             wrong.append((rest, news))
     return wrong, formed
 
@@ -342,7 +347,7 @@ def _replaced_mismatches(products_with, cases: list) -> list:
     return [
         (args, new)
         for args, new, changed in cases
-        if sp.srepr(products_with(args, new, changed)) != sp.srepr(sp.Mul(*new))
+        if _tree(products_with(args, new, changed)) != _tree(sp.Mul(*new))
     ]
 
 

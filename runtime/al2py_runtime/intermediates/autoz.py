@@ -2548,7 +2548,11 @@ class Intermediates:
                 return None
             # (a power among the factors: the places of the others' bases
             # are kept, else None: their bases are their own)
-            powers = any(key[0] == _POW_PLACE for key in keys)
+            powers = False
+            for f in factors:
+                if type(f) is sp.Pow:
+                    powers = True
+                    break
             for i, f in enumerate(factors):
                 at = index.get(f)
                 if at is None:
