@@ -892,7 +892,6 @@ _POW_PLACE = _class_place("Pow")
 #: the walk facts of a sum (:meth:`Intermediates._products_pd` leaves its
 #: derivative to be walked when it is named)
 _SUM_FACTS = object()
-_EMPTY: frozenset = frozenset()
 
 
 def _base_key(key: tuple) -> tuple:
