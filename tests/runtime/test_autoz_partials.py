@@ -267,11 +267,12 @@ def test_the_factors_tuples_order_as_compare():
         assert (key < keys[chosen[0]]) == (sp.Basic.compare(args[0], chosen[0]) < 0)
     assert len(set(keys.values())) == len(plain)
     for bad in [
-        sp.sin(q1 + L),
-        q1**2,
+        sp.sin(q1 * L),
+        q1**L,
+        q1**2.5,
         sp.exp(q1),
-        L**2 + M,
-        zs[0] * sp.cos(q1 + L) + 1,
+        L**K + M,
+        zs[0] * sp.cos(q1 * L) + 1,
         sp.Symbol("A", commutative=False),
     ]:
         assert book._plain_key(bad) is None
@@ -279,12 +280,14 @@ def test_the_factors_tuples_order_as_compare():
 
 def _build_declining(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     """A book as :func:`_build` makes, whose leaves also give partials that
-    the shortcut cannot place: ``q1*L**2`` (a power, by ``q1``) and
-    ``L*M*q3`` against a factor ``M`` (a square of ``M``, by ``L``); and
-    sums with factors that hold none of the variables asked (skipped)."""
+    the shortcut cannot place: ``q1*L**2.5`` and ``q2*K**1.5`` (powers to
+    a float, by ``q1`` and ``q2``); ``L*M*q3`` against a factor ``M`` (a square of ``M``, by
+    ``L``, which it forms); and sums with factors that hold none of the
+    variables asked (skipped)."""
     rng = random.Random(seed)
     book = _new_book(shortcut)
-    sums = [q1 * L**2 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
+    sums = [q1 * L**2.5 + M, L * M * q3 + q2, sp.sin(q2) * K + q1, q1 * q3 + u1]
+    sums.append(q2 * K**1.5 + L)
     leaves = [book.name(e) for e in sums] + [M * L, K]
     zs = _grown(book, rng, leaves, [L, M, K, sp.cos(q1)], 60, 6)
     found = [book.derivative(z, x) for z in zs[-25:] for x in [q1, q2, q3, L, M, K]]

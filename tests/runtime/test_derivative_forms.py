@@ -182,6 +182,8 @@ def test_the_calls_of_a_models_derivatives_are_sympys(pools, monkeypatch):
         b.derivative(e, x)
     b.total_dt(e)
     monkeypatch.undo()
-    assert len(products) > 300 and len(sums) > 300
+    # (powers of plain factors go by ``_products_pd`` too, held to the long
+    # way in ``test_power_chain.py``)
+    assert len(products) > 100 and len(sums) > 100
     assert _product_mismatches(autoz.product_with, products) == []
     assert _sum_mismatches(autoz.total, sums) == []

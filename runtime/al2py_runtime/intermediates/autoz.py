@@ -648,14 +648,87 @@ def substitute(expr: Any, rule: dict, memo: dict | None = None) -> Any:
 
 def _rebuilt(e: Any, new: list, changed: list[int]) -> Any:
     """``e.func(*new)`` for :func:`substitute`."""
-    if e.is_Mul and len(changed) == 1:
-        i = changed[0]
-        return product_with(e.args, i, new[i])
+    if e.is_Mul:
+        if len(changed) == 1:
+            i = changed[0]
+            return product_with(e.args, i, new[i])
+        return products_with(e.args, new, changed)
     if e.is_Add:
         return total(new)
     if e.func is sp.Pow:
         return power(*new)
     return e.func(*new)
+
+
+def products_with(args: tuple, new: list, changed: list[int]) -> Any:
+    """``sp.Mul(*new)``, where ``args`` are a product's (canonical)
+    arguments and ``new`` the same with the factors at ``changed`` (two or
+    more) replaced, each by a rational number, a plain factor or a
+    rational times plain factors (:func:`_plain_base`), as
+    :func:`product_with` takes one.
+
+    sympy's ``Mul.flatten`` then multiplies the rational coefficients and
+    sorts the factors (by ``Basic.compare``), when no factor is a number
+    or a power of one and no two share a base, and the result is not a
+    number times one sum (sympy distributes it): that is done here
+    directly.  Otherwise sympy forms the product."""
+    first = args[0]
+    start = 1 if first.is_Number else 0
+    if (
+        (start and (changed[0] == 0 or not first.is_Rational))
+        or not all(a.is_commutative for a in new)
+        or not global_parameters.evaluate
+    ):
+        return sp.Mul(*new)
+    coeff = first if start else sp.S.One
+    kept = [a for j, a in enumerate(args) if j >= start and j not in changed]
+    bases = set()
+    for a in kept:
+        base = _plain_base(a)
+        if base is None or base in bases:
+            return sp.Mul(*new)
+        bases.add(base)
+    factors = list(kept)
+    for i in changed:
+        d = new[i]
+        if isinstance(d, Intermediate):
+            parts: tuple = (d,)
+        elif d.is_Rational:
+            coeff = coeff * d
+            continue
+        elif d.is_Mul:
+            parts = d.args
+            if parts[0].is_Number:
+                if not parts[0].is_Rational:
+                    return sp.Mul(*new)
+                coeff = coeff * parts[0]
+                parts = parts[1:]
+        elif d.is_Number:
+            return sp.Mul(*new)
+        else:
+            parts = (d,)
+        for a in parts:
+            base = _plain_base(a)
+            if base is None or base in bases:
+                return sp.Mul(*new)
+            bases.add(base)
+            factors.append(a)
+    if coeff is sp.S.Zero:
+        return sp.Mul(*new)  # (0, or nan with an infinite factor)
+    if len(factors) == 1 and factors[0].is_Add and coeff is not sp.S.One:
+        return sp.Mul(*new)  # sympy distributes it
+    if len(factors) == 2:  # the one comparison sort makes, without its keys
+        if _compare(factors[1], factors[0]) < 0:
+            factors.reverse()
+    else:
+        factors.sort(key=_BY_COMPARE)
+    if coeff is not sp.S.One:
+        factors.insert(0, coeff)
+    if not factors:
+        return sp.S.One
+    if len(factors) == 1:
+        return factors[0]
+    return _product(factors)
 
 
 def power(base: Any, exp: Any) -> Any:
@@ -817,14 +890,25 @@ _END = ((math.inf,),)
 #: the functions whose values :meth:`Intermediates._products_pd` takes as
 #: factors (of a variable)
 _SINE_COSINE = frozenset([sp.sin, sp.cos])
+#: the functions whose values :meth:`Intermediates._products_pd` takes as
+#: factors (of a variable or of a sum)
+_TRIG_OF = frozenset([sp.sin, sp.cos, sp.tan])
 
 #: the kinds of factors of :meth:`Intermediates._products_plan`
 _PLAN_Z, _PLAN_SINE, _PLAN_OTHER, _PLAN_SUM = range(4)
 #: a sum's place in sympy's order of classes
 _ADD_PLACE = _class_place("Add")
+#: a power's place in sympy's order of classes
+_POW_PLACE = _class_place("Pow")
 #: the walk facts of a sum (:meth:`Intermediates._products_pd` leaves its
 #: derivative to be walked when it is named)
 _SUM_FACTS = object()
+
+
+def _base_key(key: tuple) -> tuple:
+    """The tuple of a factor's base (:meth:`Intermediates._plain_key`):
+    a power's base's, else the factor's own."""
+    return key[2] if key[0] == _POW_PLACE else key
 
 
 def _plain_factor_key(f: Any) -> tuple | None:
@@ -2209,10 +2293,11 @@ class Intermediates:
         varsets = self._varsets
         number = _ZERO
         #: the factors' keys -> [coefficient, factors, the rest's facts,
-        #: the new factor's facts]
+        #: the new factors' facts]
         collected: dict[tuple, list] = {}
         # only the factors that hold x (an intermediate over it, a sine of
-        # it, x itself): the others' derivatives are 0, and name nothing
+        # it, x itself, a power of one): the others' derivatives are 0, and
+        # name nothing
         xi = self._ids.get(x)
         for at_factor, (f, kind, held) in enumerate(order):
             if held is not None:
@@ -2224,43 +2309,72 @@ class Intermediates:
                 if d is None:
                     # _pd_new of a canonical intermediate of this book
                     d = memo[f] = self.partial(f, j)
-            elif kind == _PLAN_SINE or kind == _PLAN_SUM:
+            elif kind == _PLAN_OTHER:
+                d = one
+            else:  # a sine or cosine, a sum, a power: as _pd takes it
                 d = memo.get(f)
                 if d is None:
                     d = self._pd_new(f, x, memo, None, None)
-            else:
-                d = one
             if d is _ZERO:
                 continue
             if d.is_Rational:
-                n, new = d, None
+                n, news = d, ()
             else:
                 n, new = one, d
-                if d.is_Mul and len(d.args) == 2 and d.args[0].is_Rational:
-                    n, new = d.args
-                new_key = key_of(new)
-                if new_key is None:
-                    return None
-                if type(new) is z_type:
-                    facts = (varsets[new.args[0].p], None, None)
-                elif type(new) in _SINE_COSINE:
-                    facts = (None, new.args[0], new)
-                elif new.is_Add:
-                    facts = _SUM_FACTS
-                else:
-                    facts = (None, new, None)
-            for c, rest, rest_keys, rest_facts in places[at_factor]:
+                if d.is_Mul:
+                    first = d.args[0]
+                    if len(d.args) == 2 and first.is_Rational:
+                        n, new = d.args
+                    else:
+                        # several factors (a power's derivative)
+                        many = self._new_factors(d)
+                        if many is None:
+                            return None
+                        n, news, new_keys, facts = many
+                        new = None
                 if new is not None:
+                    new_key = key_of(new)
+                    if new_key is None:
+                        return None
+                    news, new_keys = (new,), (new_key,)
+                    # (_base_key and _factor_facts, without the calls for
+                    # an intermediate, most new factors)
+                    if type(new) is z_type:
+                        new_base = new_key
+                        facts = (varsets[new.args[0].p], None, None)
+                    else:
+                        new_base = new_key
+                        if new_key[0] == _POW_PLACE:
+                            new_base = new_key[2]
+                        facts = self._factor_facts(new)
+            for c, rest, rest_keys, rest_facts, bases in places[at_factor]:
+                coeff = n if c is one else c if n is one else c * n
+                if not news:
+                    entry = [coeff, rest, rest_facts, None]
+                    at = -1
+                elif new is None:
+                    at = -1  # several new factors
+                elif bases is None:  # no power among the rest: its bases
+                    at = bisect.bisect_left(rest_keys, new_base)
+                    if at < len(rest_keys) and rest_keys[at] == new_base:
+                        at = -1  # a common base: they combine
+                    elif new_base is not new_key:
+                        at = bisect.bisect_left(rest_keys, new_key)
+                elif new_base in bases:
+                    at = -1
+                else:
                     at = bisect.bisect_left(rest_keys, new_key)
-                    if at < len(rest_keys) and rest_keys[at] == new_key:
-                        return None  # sympy makes a power
+                if at >= 0:
+                    # the common case: one new factor of its own base
                     rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
                     rest = (*rest[:at], new, *rest[at:])
-                    entry = [n if c is one else c if n is one else c * n]
-                    entry += (rest, rest_facts, facts)
-                else:
-                    entry = [n if c is one else c if n is one else c * n]
-                    entry += (rest, rest_facts, None)
+                    entry = [coeff, rest, rest_facts, facts]
+                elif news:
+                    merged = self._merged(rest, rest_keys, bases, news, new_keys)
+                    if merged is None:
+                        return None
+                    rest, rest_keys = merged
+                    entry = [coeff, rest, self._rest_facts(rest), None]
                 if not rest:
                     number += entry[0]
                     continue
@@ -2294,10 +2408,10 @@ class Intermediates:
             return (terms[0] if terms else _ZERO), ()
         d = sp.Add._from_args(terms, is_commutative=True)
         # :meth:`_walk`: each product's arguments are met once (the terms
-        # are distinct), and a sine's (its one argument, a variable) unless
-        # it was met before; variables are recorded, a canonical
-        # intermediate brings its set of variables (read off each rest's
-        # facts and the new factor's)
+        # are distinct), and a sine's or power's (its arguments) unless it
+        # was met before; variables are recorded, a canonical intermediate
+        # brings its set of variables (read off each rest's facts and the
+        # new factors')
         size: int | float = 1 + len(terms)
         found_vars, among, shared, seen = set(), set(), set(), set()
         short = True
@@ -2305,33 +2419,44 @@ class Intermediates:
         for coeff, rest, rest_facts, facts in kept:
             if rest_facts is None or facts is _SUM_FACTS:
                 return d, ()  # a sum among the factors: walked when named
-            r_shared, r_found, r_among, r_sines = rest_facts
+            r_shared, r_found, r_among, r_stacked, extra = rest_facts
             shared |= r_shared
             found_vars |= r_found
             among |= r_among
-            sines = len(r_sines)
-            for f in r_sines:
+            for f in r_stacked:
                 if f in seen:
                     size = math.inf
                 seen.add(f)
-            if facts is not None:
+            if facts is None:
+                pass
+            elif len(facts) == 3:  # one plain factor (:meth:`_factor_facts`)
                 varset, variable, sine = facts
                 if varset is not None:
                     shared.add(varset)
                 else:
                     found_vars.add(variable)
                     if sine is not None:
-                        sines += 1
+                        extra += 1
                         if sine in seen:
                             size = math.inf
                         seen.add(sine)
                     elif type(variable) is sp.Derivative:
                         among.add(variable)
+            else:
+                f_shared, f_found, f_among, f_stacked, f_extra = facts
+                shared |= f_shared
+                found_vars |= f_found
+                among |= f_among
+                extra += f_extra
+                for f in f_stacked:
+                    if f in seen:
+                        size = math.inf
+                    seen.add(f)
             n = len(rest) if coeff is one else len(rest) + 1  # its arguments
             if n > 1:
                 size += n
-            size += sines
-            if n + sines >= limit:
+            size += extra
+            if n + extra >= limit:
                 short = False
         return d, (
             *self._met(found_vars, among, shared),
@@ -2341,23 +2466,108 @@ class Intermediates:
             short,
         )
 
+    def _new_factors(self, d: Any) -> tuple | None:
+        """The product ``d`` (a power's derivative by the chain rule) as
+        :meth:`_products_pd` takes a factor's derivative: its rational
+        coefficient, its other factors, their tuples (:meth:`_plain_key`)
+        and their walk facts (:meth:`_factor_facts`); None when a factor
+        has no tuple."""
+        args = d.args
+        n = sp.S.One
+        if args[0].is_Rational:
+            n, args = args[0], args[1:]
+        if not d.is_commutative:
+            return None
+        keys = []
+        for a in args:
+            key = self._plain_key(a)
+            if key is None:
+                return None
+            keys.append(key)
+        facts = self._rest_facts(args)
+        return n, args, tuple(keys), _SUM_FACTS if facts is None else facts
+
+    def _factor_facts(self, f: Any) -> Any:
+        """What :meth:`_walk` finds in the one new factor ``f``: for an
+        intermediate, ``(its set of variables, None, None)``; for a sine or
+        cosine ``(None, its argument, itself)``; for a power
+        :meth:`_rest_facts`; for another plain factor ``(None, itself,
+        None)``; :data:`_SUM_FACTS` for a sum or a power of one."""
+        kind = type(f)
+        if kind is self.Z:
+            return (self._varsets[f.args[0].p], None, None)
+        if kind in _TRIG_OF:
+            return _SUM_FACTS if f.args[0].is_Add else (None, f.args[0], f)
+        if kind is sp.Pow:
+            found = self._rest_facts((f,))
+            return _SUM_FACTS if found is None else found
+        if f.is_Add:
+            return _SUM_FACTS
+        return (None, f, None)
+
+    def _merged(
+        self, rest: tuple, rest_keys: tuple, bases: dict, news: tuple, new_keys: tuple
+    ) -> tuple[tuple, tuple] | None:
+        """The factors ``rest`` (tuples ``rest_keys``, ``bases``: the
+        places of their bases' tuples) times the factors ``news`` (tuples
+        ``new_keys``), none numbers, as ``Mul.flatten`` forms the product:
+        the exponents of a common base added (``b*b`` is ``b**2``, ``b**-1*b``
+        is 1, ``b**-2*b`` is ``b**-1``), each power formed by ``Pow``, and
+        the factors sorted by their tuples.  ``(factors, tuples)``; None when
+        sympy's power is not ``Pow(base, exponent)`` itself, or has no
+        tuple."""
+        rest, rest_keys = list(rest), list(rest_keys)
+        key_of = self._plain_key
+        for new, new_key in zip(news, new_keys, strict=True):
+            base_key = _base_key(new_key)
+            at = None
+            if bases is None or base_key in bases:
+                for at, key in enumerate(rest_keys):  # noqa: B007 - used below
+                    if _base_key(key) == base_key:
+                        break
+                else:
+                    at = None
+            if at is not None:
+                old = rest[at]
+                del rest[at], rest_keys[at]
+                base, e = old.args if type(old) is sp.Pow else (old, sp.S.One)
+                e = e + (new.args[1] if type(new) is sp.Pow else sp.S.One)
+                if e.is_zero:
+                    continue
+                if e is sp.S.One:
+                    new = base
+                else:
+                    new = sp.Pow(base, e)
+                    if type(new) is not sp.Pow or new.args != (base, e):
+                        return None
+                new_key = key_of(new)
+                if new_key is None:
+                    return None
+            at = bisect.bisect_left(rest_keys, new_key)
+            if at < len(rest_keys) and rest_keys[at] == new_key:
+                return None
+            rest.insert(at, new)
+            rest_keys.insert(at, new_key)
+            bases = {_base_key(key) for key in rest_keys}
+        return tuple(rest), tuple(rest_keys)
+
     def _products_plan(self, e: Any) -> tuple[tuple, tuple] | None:
         """What :meth:`_products_pd` needs of the sum of products ``e``
         whatever the variable (kept per definition): ``(order, places)``.
         ``order``: the distinct factors, in the order of :meth:`_pd`'s
         walk, each with its kind (a canonical intermediate, a sine or
-        cosine, or another plain factor) and the numbers (:attr:`_ids`) of
-        the variables it holds, each with its place among an
-        intermediate's arguments (:meth:`position`; -1 for another
-        factor): its derivative by another variable is 0.  ``places``: for
-        each factor, its places in the terms, as the term's rational
-        coefficient, the other factors and their tuples
-        (:meth:`_plain_key`), and what :meth:`_walk` finds in those
-        (:meth:`_rest_facts`).  None when a factor has no tuple."""
+        cosine, a sum or a power, or another plain factor) and the numbers
+        (:attr:`_ids`) of the variables it holds, each with its place among
+        an intermediate's arguments (:meth:`position`; -1 for another
+        factor): its derivative by another variable is 0 (None: taken by
+        every variable).  ``places``: for each factor, its places in the
+        terms, as the term's rational coefficient, the other factors and
+        their tuples (:meth:`_plain_key`), what :meth:`_walk` finds in
+        those (:meth:`_rest_facts`) and the set of their bases' tuples
+        (:func:`_base_key`).  None when a factor has no tuple."""
         one = sp.S.One
         key_of = self._plain_key
         z_type = self.Z
-        ids = self._ids
         index: dict[Any, int] = {}
         order: list = []
         places: list[list] = []
@@ -2372,6 +2582,13 @@ class Intermediates:
             keys = tuple([key_of(f) for f in factors])
             if None in keys:
                 return None
+            # (a power among the factors: the places of the others' bases
+            # are kept, else None: their bases are their own)
+            powers = False
+            for f in factors:
+                if type(f) is sp.Pow:
+                    powers = True
+                    break
             for i, f in enumerate(factors):
                 at = index.get(f)
                 if at is None:
@@ -2383,15 +2600,34 @@ class Intermediates:
                         # (its derivative is taken by every variable: 0
                         # when it holds none, naming nothing)
                         kind, held = _PLAN_SUM, None
+                    elif type(f) is sp.Pow:
+                        # (taken as _pd takes it, by its base's variables)
+                        kind, held = _PLAN_SUM, self._held(f.args[0])
+                    elif type(f) in _TRIG_OF:
+                        kind, held = _PLAN_SINE, self._held(f)
                     else:
-                        kind = _PLAN_SINE if type(f) in _SINE_COSINE else _PLAN_OTHER
-                        a = f.args[0] if kind == _PLAN_SINE else f
-                        held = {ids.setdefault(a, len(ids)): -1}
+                        kind, held = _PLAN_OTHER, self._held(f)
                     order.append((f, kind, held))
                 rest = factors[:i] + factors[i + 1 :]
                 rest_keys = keys[:i] + keys[i + 1 :]
-                places[at].append((c, rest, rest_keys, self._rest_facts(rest)))
+                bases = None
+                if powers:
+                    bases = frozenset([_base_key(key) for key in rest_keys])
+                places[at].append((c, rest, rest_keys, self._rest_facts(rest), bases))
         return tuple(order), tuple(map(tuple, places))
+
+    def _held(self, f: Any) -> dict[int, int] | None:
+        """For :meth:`_products_plan`: the variables the plain factor ``f``
+        holds, by their numbers (:attr:`_ids`), each with its place among
+        an intermediate's arguments (-1 for a sine's argument or a
+        variable itself); None for a sum (every variable)."""
+        if type(f) is self.Z:
+            return self._variable_places(f)
+        a = f.args[0] if type(f) in _TRIG_OF else f
+        if a.is_Add:
+            return None
+        ids = self._ids
+        return {ids.setdefault(a, len(ids)): -1}
 
     def _variable_places(self, z: Intermediate) -> dict[int, int]:
         """The places of the canonical intermediate ``z``'s variables among
@@ -2410,25 +2646,41 @@ class Intermediates:
         """What :meth:`_walk` finds in the plain factors ``rest`` (no
         number among them), for :meth:`_products_plan`: the sets of
         variables of the intermediates, the variables (a sine's or
-        cosine's argument), the derivatives among them, the sines and
-        cosines; None when a sum is among them (a derivative with it is
-        walked when it is named)."""
+        cosine's argument, a power's base), the derivatives among them,
+        the parts the walk stacks (sines, cosines and powers, and a
+        power's sine or cosine) and their count of nodes beyond the
+        factors themselves; None when a sum is among them (a derivative
+        with it is walked when it is named)."""
         z_type = self.Z
         varsets = self._varsets
-        shared, found, among, sines = set(), set(), set(), []
+        shared, found, among, stacked = set(), set(), set(), []
+        extra = 0
         for f in rest:
+            if type(f) is sp.Pow:
+                stacked.append(f)
+                extra += 2  # (its base and exponent; a rational: an atom)
+                f = f.args[0]
             if f.is_Add:
                 return None  # (walked when the derivative is named)
             if type(f) is z_type:
                 shared.add(varsets[f.args[0].p])
-            elif type(f) in _SINE_COSINE:
-                sines.append(f)
+            elif type(f) in _TRIG_OF:
+                if f.args[0].is_Add:
+                    return None  # (walked when the derivative is named)
+                stacked.append(f)
+                extra += 1
                 found.add(f.args[0])
             else:
                 found.add(f)
                 if type(f) is sp.Derivative:
                     among.add(f)
-        return frozenset(shared), frozenset(found), frozenset(among), tuple(sines)
+        return (
+            frozenset(shared),
+            frozenset(found),
+            frozenset(among),
+            tuple(stacked),
+            extra,
+        )
 
     def _products_sign(self, keyed: list, number: Any) -> bool | None:
         """:func:`minus_first` of a sum of :meth:`_products_pd`'s
@@ -2465,7 +2717,11 @@ class Intermediates:
                         return None
                     keys.append((_SYMBOL_CLASS, f.name))
                 elif type(f) is z_type:
+                    if len(f.args) == 1:
+                        return None  # (a number to sympy's as_terms)
                     keys.append((z_class, len(f.args), f.args[0].p))
+                elif type(f) is sp.Pow:
+                    return None  # (a generator with an exponent)
                 elif not f.is_Rational:
                     key = self._sort_key(f)
                     if key[0] == z_class or key[0] == _SYMBOL_CLASS:
@@ -2489,7 +2745,7 @@ class Intermediates:
             if found is _UNKNOWN:
                 args = f.args
                 found = None
-                if len(args) > 1 and self._canonical(f) and f.is_commutative:
+                if self._canonical(f) and f.is_commutative:
                     found = (self._z_place, len(args), args[0].p)
                 f.__dict__["_plain_key"] = found
             return found
@@ -2497,10 +2753,44 @@ class Intermediates:
         if found is None and f not in self._plain_keys:
             if f.is_Add:
                 found = self._sum_key(f)
+            elif type(f) in _TRIG_OF:
+                found = self._trig_key(f)
+            elif type(f) is sp.Pow:
+                found = self._power_key(f)
             else:
                 found = _plain_factor_key(f)
             self._plain_keys[f] = found
         return found
+
+    def _trig_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a sine, cosine or tangent: the tuple of a
+        function of one argument (its class's place, 1 and its argument's
+        tuple), for an argument that is a symbol, a function of time (as
+        :func:`_plain_factor_key` takes them) or a sum with a tuple; None
+        for another."""
+        if not f.is_commutative:
+            return None
+        arg = f.args[0]
+        if arg.is_Add:
+            arg_key = self._plain_key(arg)
+        elif arg.is_Symbol or isinstance(arg, AppliedUndef):
+            arg_key = _plain_factor_key(arg)
+        else:
+            return None
+        return None if arg_key is None else _nested_key(f, [arg_key])
+
+    def _power_key(self, f: Any) -> tuple | None:
+        """:meth:`_plain_key` of a power: its class's place, 2 and the
+        tuples of its base and exponent (its hashable content), for a
+        rational exponent and a base that has a tuple and is not a number,
+        a power or a product; None for another."""
+        base, exp = f.args
+        if not exp.is_Rational or not f.is_commutative or base.is_Pow or base.is_Mul:
+            return None
+        base_key = self._plain_key(base)
+        if base_key is None:
+            return None
+        return (_POW_PLACE, 2, base_key, _plain_atom_key(exp))
 
     def _sum_key(self, f: Any) -> tuple | None:
         """:meth:`_plain_key` of a sum: its class's place, its count of
