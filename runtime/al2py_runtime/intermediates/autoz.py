@@ -2236,7 +2236,9 @@ class Intermediates:
         found = self._partials.get(key)
         if found is None:
             x = self._vars[k][j]
-            memo = self._pd_memos.setdefault(x, {})
+            memo = self._pd_memos.get(x)
+            if memo is None:
+                memo = self._pd_memos[x] = {}
             body = self._defs[k]
             formed = None if body in memo else self._products_pd(body, x, memo)
             if formed is None:
@@ -2322,9 +2324,9 @@ class Intermediates:
             else:
                 n, new = one, d
                 if d.is_Mul:
-                    first = d.args[0]
-                    if len(d.args) == 2 and first.is_Rational:
-                        n, new = d.args
+                    args = d.args
+                    if len(args) == 2 and args[0].is_Rational:
+                        n, new = args
                     else:
                         # several factors (a power's derivative)
                         many = self._new_factors(d)
@@ -2333,15 +2335,23 @@ class Intermediates:
                         n, news, new_keys, facts = many
                         new = None
                 if new is not None:
-                    new_key = key_of(new)
+                    new_z = type(new) is z_type
+                    if new_z:
+                        # (:meth:`_plain_key`, read where it keeps it)
+                        new_key = new.__dict__.get("_plain_key", _UNKNOWN)
+                        if new_key is _UNKNOWN:
+                            new_key = key_of(new)
+                    else:
+                        new_key = key_of(new)
                     if new_key is None:
                         return None
                     news, new_keys = (new,), (new_key,)
                     # (_base_key and _factor_facts, without the calls for
-                    # an intermediate, most new factors)
-                    if type(new) is z_type:
+                    # an intermediate, most new factors: its tuple ends
+                    # with its number)
+                    if new_z:
                         new_base = new_key
-                        facts = (varsets[new.args[0].p], None, None)
+                        facts = (varsets[new_key[2]], None, None)
                     else:
                         new_base = new_key
                         if new_key[0] == _POW_PLACE:
