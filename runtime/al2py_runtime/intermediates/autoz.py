@@ -2301,6 +2301,8 @@ class Intermediates:
         # it, x itself, a power of one): the others' derivatives are 0, and
         # name nothing
         xi = self._ids.get(x)
+        bisect_left = bisect.bisect_left
+        new_z = False
         for at_factor, (f, kind, held) in enumerate(order):
             if held is not None:
                 j = held.get(xi)
@@ -2320,9 +2322,9 @@ class Intermediates:
             if d is _ZERO:
                 continue
             if d.is_Rational:
-                n, news = d, ()
+                n, news, new_z = d, (), False
             else:
-                n, new = one, d
+                n, new, new_z = one, d, False
                 if d.is_Mul:
                     args = d.args
                     if len(args) == 2 and args[0].is_Rational:
@@ -2357,6 +2359,52 @@ class Intermediates:
                         if new_key[0] == _POW_PLACE:
                             new_base = new_key[2]
                         facts = self._factor_facts(new)
+            if new_z:
+                # (the common case, as below: one new intermediate, its own
+                # base, inserted among the rest unless a factor has its base)
+                for c, rest, rest_keys, rest_facts, bases in places[at_factor]:
+                    coeff = n if c is one else c if n is one else c * n
+                    if bases is None:  # no power among the rest: its bases
+                        at = bisect_left(rest_keys, new_key)
+                        if at < len(rest_keys) and rest_keys[at] == new_key:
+                            at = -1  # a common base: they combine
+                    elif new_key in bases:
+                        at = -1
+                    else:
+                        at = bisect_left(rest_keys, new_key)
+                    if at >= 0:
+                        if not rest:
+                            rest_keys, rest = new_keys, news
+                        elif len(rest) == 1:
+                            if at:
+                                rest_keys, rest = (rest_keys[0], new_key), (
+                                    rest[0],
+                                    new,
+                                )
+                            else:
+                                rest_keys, rest = (new_key, rest_keys[0]), (
+                                    new,
+                                    rest[0],
+                                )
+                        else:
+                            rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
+                            rest = (*rest[:at], new, *rest[at:])
+                        entry = [coeff, rest, rest_facts, facts]
+                    else:
+                        merged = self._merged(rest, rest_keys, bases, news, new_keys)
+                        if merged is None:
+                            return None
+                        rest, rest_keys = merged
+                        entry = [coeff, rest, self._rest_facts(rest), None]
+                        if not rest:
+                            number += coeff
+                            continue
+                        if len(rest) == 1 and rest[0].is_Add:
+                            return None
+                    found = collected.setdefault(rest_keys, entry)
+                    if found is not entry:
+                        found[0] += coeff
+                continue
             for c, rest, rest_keys, rest_facts, bases in places[at_factor]:
                 coeff = n if c is one else c if n is one else c * n
                 if not news:
@@ -2365,15 +2413,15 @@ class Intermediates:
                 elif new is None:
                     at = -1  # several new factors
                 elif bases is None:  # no power among the rest: its bases
-                    at = bisect.bisect_left(rest_keys, new_base)
+                    at = bisect_left(rest_keys, new_base)
                     if at < len(rest_keys) and rest_keys[at] == new_base:
                         at = -1  # a common base: they combine
                     elif new_base is not new_key:
-                        at = bisect.bisect_left(rest_keys, new_key)
+                        at = bisect_left(rest_keys, new_key)
                 elif new_base in bases:
                     at = -1
                 else:
-                    at = bisect.bisect_left(rest_keys, new_key)
+                    at = bisect_left(rest_keys, new_key)
                 if at >= 0:
                     # the common case: one new factor of its own base
                     rest_keys = (*rest_keys[:at], new_key, *rest_keys[at:])
