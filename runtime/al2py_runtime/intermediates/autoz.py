@@ -1380,6 +1380,9 @@ class Intermediates:
         self._partials: dict[tuple[int, int], Any] = {}
         #: definition -> what :meth:`_products_pd` needs of it (or None)
         self._plans: dict[Any, tuple | None] = {}
+        #: factors -> :meth:`_rest_facts` of them (for :meth:`_products_plan`:
+        #: many definitions share a factor, or a pair)
+        self._kept_facts: dict[tuple, tuple | None] = {}
         #: variable -> a number of its own, and an intermediate's set of
         #: variables -> their places by their numbers (:meth:`_variable_places`)
         self._ids: dict[Any, int] = {}
@@ -2626,6 +2629,7 @@ class Intermediates:
         one = sp.S.One
         key_of = self._plain_key
         z_type = self.Z
+        kept_facts = self._kept_facts
         index: dict[Any, int] = {}
         order: list = []
         places: list[list] = []
@@ -2671,7 +2675,10 @@ class Intermediates:
                 bases = None
                 if powers:
                     bases = frozenset([_base_key(key) for key in rest_keys])
-                places[at].append((c, rest, rest_keys, self._rest_facts(rest), bases))
+                facts = kept_facts.get(rest, _UNKNOWN)
+                if facts is _UNKNOWN:
+                    facts = kept_facts[rest] = self._rest_facts(rest)
+                places[at].append((c, rest, rest_keys, facts, bases))
         return tuple(order), tuple(map(tuple, places))
 
     def _held(self, f: Any) -> dict[int, int] | None:
