@@ -1383,6 +1383,9 @@ class Intermediates:
         #: factors -> :meth:`_rest_facts` of them (for :meth:`_products_plan`:
         #: many definitions share a factor, or a pair)
         self._kept_facts: dict[tuple, tuple | None] = {}
+        #: (class, numerator, denominator) of a rational coefficient -> its
+        #: :func:`_plain_atom_key` (for :meth:`_products_pd`)
+        self._coeff_keys: dict[tuple, tuple] = {}
         #: variable -> a number of its own, and an intermediate's set of
         #: variables -> their places by their numbers (:meth:`_variable_places`)
         self._ids: dict[Any, int] = {}
@@ -2448,6 +2451,7 @@ class Intermediates:
                     found[0] += entry[0]
         keyed = []
         kept = []
+        coeff_keys = self._coeff_keys
         for fkeys, entry in collected.items():
             coeff, rest = entry[0], entry[1]
             if coeff is _ZERO:
@@ -2459,7 +2463,11 @@ class Intermediates:
                     continue
                 args, akeys = rest, fkeys
             else:
-                args, akeys = (coeff, *rest), (_plain_atom_key(coeff), *fkeys)
+                coeff_id = (type(coeff), coeff.p, coeff.q)
+                coeff_key = coeff_keys.get(coeff_id)
+                if coeff_key is None:
+                    coeff_key = coeff_keys[coeff_id] = _plain_atom_key(coeff)
+                args, akeys = (coeff, *rest), (coeff_key, *fkeys)
             keyed.append(((_MUL_PLACE, len(args), *akeys), args))
         keyed.sort(key=_KEY)
         terms = [args[0] if len(args) == 1 else _product(args) for _, args in keyed]
