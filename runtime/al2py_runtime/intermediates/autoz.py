@@ -2738,11 +2738,12 @@ class Intermediates:
             if type(f) is z_type:
                 shared.add(varsets[f.args[0].p])
             elif type(f) in _TRIG_OF:
-                if f.args[0].is_Add:
+                a = f.args[0]
+                if a.is_Add:
                     return None  # (walked when the derivative is named)
                 stacked.append(f)
                 extra += 1
-                found.add(f.args[0])
+                found.add(a)
             else:
                 found.add(f)
                 if type(f) is sp.Derivative:
@@ -2790,9 +2791,10 @@ class Intermediates:
                         return None
                     keys.append((_SYMBOL_CLASS, f.name))
                 elif type(f) is z_type:
-                    if len(f.args) == 1:
+                    f_args = f.args
+                    if len(f_args) == 1:
                         return None  # (a number to sympy's as_terms)
-                    keys.append((z_class, len(f.args), f.args[0].p))
+                    keys.append((z_class, len(f_args), f_args[0].p))
                 elif type(f) is sp.Pow:
                     return None  # (a generator with an exponent)
                 elif not f.is_Rational:
