@@ -2237,7 +2237,7 @@ class Intermediates:
 
         Most definitions are sums of products of intermediates: their
         derivative is formed, and named, by :meth:`_products_pd`."""
-        k = _number(z)
+        k = z.args[0].p  # (_number)
         key = (k, j)
         found = self._partials.get(key)
         if found is None:
@@ -2256,7 +2256,10 @@ class Intermediates:
                 if found is None:
                     found = self._name_walked(d, *walked) if walked else self.name(d)
             self._partials[key] = found
-        if not self._canonical(z):
+        canonical = z.__dict__.get("_canonical")  # (kept by _canonical)
+        if canonical is None:
+            canonical = self._canonical(z)
+        if not canonical:
             args = tuple(z.args[1:])
             found = found.xreplace(dict(zip(self._vars[k], args, strict=True)))
         return found
@@ -2649,7 +2652,18 @@ class Intermediates:
                 factors = term.args
                 if factors[0].is_Rational:
                     c, factors = factors[0], factors[1:]
-            keys = tuple([key_of(f) for f in factors])
+            keys = tuple(
+                [
+                    (
+                        f.__dict__.get("_plain_key", _UNKNOWN)
+                        if type(f) is z_type
+                        else _UNKNOWN
+                    )
+                    for f in factors
+                ]
+            )
+            if _UNKNOWN in keys:
+                keys = tuple([key_of(f) for f in factors])
             if None in keys:
                 return None
             # (a power among the factors: the places of the others' bases
