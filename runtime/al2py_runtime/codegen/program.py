@@ -648,6 +648,12 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
         return found, True
     if e.is_Atom:
         return e, False
+    return _renamed_part(e, rule, memo, same)
+
+
+def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
+    """:func:`_renamed` of ``e``, a part not in ``rule`` and not an atom
+    (its arguments are asked here, once each)."""
     known = memo.get(e)
     if known is not None:
         return known
@@ -667,7 +673,7 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
         if b is _ABSENT:
             if a.is_Atom:
                 continue
-            b, changed = _renamed(a, rule, memo, same)
+            b, changed = _renamed_part(a, rule, memo, same)
             if not changed:
                 continue
         if new is None:
@@ -805,8 +811,11 @@ def _sort_canonically(parts: list[Any], keys: CompareKeys) -> None:
     with their :class:`CompareKeys`; by ``compare`` itself when a part has
     no such key."""
     found = []
+    known = keys.parts  # (most parts: keyed before; no number is here)
     for a in parts:
-        key = keys.key(a)
+        key = known.get(a)
+        if key is None:
+            key = keys.key(a)
         if key is None:
             parts.sort(key=_args_sortkey)
             return
