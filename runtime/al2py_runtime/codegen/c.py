@@ -56,13 +56,10 @@ def _assign(a: Assign, printer: Any, n: int, texts: dict) -> str:
 
 
 def _unpack(program: Program, block: list[Assign]) -> list[str]:
-    lines = [
-        f"    const double {e.ident} = p[{i}];  /* {e.name} */"
-        for i, e in program.params_used(block)
-    ]
+    params, states = program.entries_used(block)
+    lines = [f"    const double {e.ident} = p[{i}];  /* {e.name} */" for i, e in params]
     lines += [
-        f"    const double {e.ident} = y[{i}];  /* {e.name} */"
-        for i, e in program.states_used(block)
+        f"    const double {e.ident} = y[{i}];  /* {e.name} */" for i, e in states
     ]
     return lines
 

@@ -180,8 +180,9 @@ def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:
 
 def _body(program: Program, block: list[Assign], printer: Any) -> list[str]:
     n = program.nu
-    lines = [f"  {e.ident} = p({i + 1});" for i, e in program.params_used(block)]
-    lines += [f"  {e.ident} = y({i + 1});" for i, e in program.states_used(block)]
+    params, states = program.entries_used(block)
+    lines = [f"  {e.ident} = p({i + 1});" for i, e in params]
+    lines += [f"  {e.ident} = y({i + 1});" for i, e in states]
     solve = [
         "  if rcond(mm) == 0 || any(~isfinite(mm(:)))",
         "    ierr = 1;",

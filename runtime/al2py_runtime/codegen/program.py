@@ -362,6 +362,16 @@ class Program:
     def states_used(self, block: Iterable[Assign]) -> list[tuple[int, Entry]]:
         return _used(self.initials, block, self.free)
 
+    def entries_used(
+        self, block: Iterable[Assign]
+    ) -> tuple[list[tuple[int, Entry]], list[tuple[int, Entry]]]:
+        """(:meth:`params_used`, :meth:`states_used`) of ``block``, its
+        statements' names gathered once for both."""
+        names = _names_used(block, self.free)
+        return _entries_named(self.constants, names), _entries_named(
+            self.initials, names
+        )
+
     def free_symbols(self, expr: Any) -> frozenset:
         """``expr.free_symbols`` of one of this program's expressions,
         remembered (:attr:`free`)."""
@@ -383,10 +393,18 @@ def one_based_target(a: Assign) -> str:
 def _used(
     entries: list[Entry], block: Iterable[Assign], free: dict
 ) -> list[tuple[int, Entry]]:
+    return _entries_named(entries, _names_used(block, free))
+
+
+def _names_used(block: Iterable[Assign], free: dict) -> set[str]:
+    """The names of the free symbols of ``block``'s statements."""
     symbols: set[Any] = set()
     for a in block:
         symbols |= backends.free_symbols_of(a.expr, free)
-    names = {s.name for s in symbols}
+    return {s.name for s in symbols}
+
+
+def _entries_named(entries: list[Entry], names: set[str]) -> list[tuple[int, Entry]]:
     return [(i, e) for i, e in enumerate(entries) if e.ident in names]
 
 
@@ -648,6 +666,12 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
         return found, True
     if e.is_Atom:
         return e, False
+    return _renamed_part(e, rule, memo, same)
+
+
+def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
+    """:func:`_renamed` of ``e``, a part not in ``rule`` and not an atom
+    (its arguments are asked here, once each)."""
     known = memo.get(e)
     if known is not None:
         return known
@@ -667,7 +691,7 @@ def _renamed(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool]:
         if b is _ABSENT:
             if a.is_Atom:
                 continue
-            b, changed = _renamed(a, rule, memo, same)
+            b, changed = _renamed_part(a, rule, memo, same)
             if not changed:
                 continue
         if new is None:
@@ -723,7 +747,7 @@ def _kept_args(
     of -1 and two names: most of a program's products) at once."""
     order = CompareKeys() if order is None else order
     if mul:
-        pair = _two_names(args)
+        pair = _two_names(args, order)
         if pair is not None:
             return pair
     number = None
@@ -772,10 +796,11 @@ def _kept_args(
     return rest
 
 
-def _two_names(args: list[Any]) -> list[Any] | None:
+def _two_names(args: list[Any], keys: CompareKeys) -> list[Any] | None:
     """:func:`_kept_args` of a product's arguments that are two names of
     different spellings (so not equal) that commute, after -1 or not;
-    else None (:func:`_kept_args` decides)."""
+    else None (:func:`_kept_args` decides); ``keys``: the program's
+    :class:`CompareKeys`."""
     if len(args) == 2:
         first, a, b = None, args[0], args[1]
     elif len(args) == 3 and args[0] is _MINUS_ONE:
@@ -788,8 +813,11 @@ def _two_names(args: list[Any]) -> list[Any] | None:
         return None
     # ``Basic.compare`` of two names of one class: the lengths of their
     # ``_hashable_content()`` (the name, then the assumptions), then the
-    # names, which differ
-    if (len(a._hashable_content()), a.name) > (len(b._hashable_content()), b.name):
+    # names, which differ; their keys (each name's formed once) say it
+    known = keys.parts
+    key_a = known.get(a) or keys.key(a)
+    key_b = known.get(b) or keys.key(b)
+    if key_a > key_b:  # type: ignore[operator]
         a, b = b, a
     return [a, b] if first is None else [first, a, b]
 
@@ -805,8 +833,11 @@ def _sort_canonically(parts: list[Any], keys: CompareKeys) -> None:
     with their :class:`CompareKeys`; by ``compare`` itself when a part has
     no such key."""
     found = []
+    known = keys.parts  # (most parts: keyed before; no number is here)
     for a in parts:
-        key = keys.key(a)
+        key = known.get(a)
+        if key is None:
+            key = keys.key(a)
         if key is None:
             parts.sort(key=_args_sortkey)
             return
@@ -991,7 +1022,7 @@ def _zeros(names: list[sp.Symbol], block: list[Assign], memo: dict) -> list[Assi
     wanted = set(names)
     used: set[Any] = set()
     for a in block:  # (each statement's names meet the few wanted)
-        used |= wanted.intersection(backends.free_symbols_of(sp.sympify(a.expr), memo))
+        used |= wanted.intersection(backends.free_symbols_of(a.expr, memo))
     return [Assign(("tmp", s.name), sp.Integer(0), s) for s in names if s in used]
 
 

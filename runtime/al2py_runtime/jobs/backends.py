@@ -379,16 +379,22 @@ def _free_of_parts(expr: Any, memo: dict) -> frozenset:
     found = memo.get(expr)
     if found is not None:
         return found
-    if type(expr).free_symbols is not _UNITED or not expr.args:
+    return _free_of_new(expr, memo)
+
+
+def _free_of_new(expr: Any, memo: dict) -> frozenset:
+    """:func:`_free_of_parts` of a part not in ``memo``."""
+    args = expr.args
+    if type(expr).free_symbols is not _UNITED or not args:
         found = frozenset(expr.free_symbols)
     else:
         out: set[Any] = set()
-        for a in expr.args:
+        for a in args:
             if a.is_Symbol:
                 out.add(a)
             elif a.args or type(a).free_symbols is not _UNITED:
                 part = memo.get(a)  # (a shared part: found before)
-                out |= _free_of_parts(a, memo) if part is None else part
+                out |= _free_of_new(a, memo) if part is None else part
         found = frozenset(out)
     memo[expr] = found
     return found
