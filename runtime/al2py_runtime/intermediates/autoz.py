@@ -722,13 +722,7 @@ def products_with(args: tuple, new: list, changed: list[int]) -> Any:
             factors.reverse()
     else:
         factors.sort(key=_BY_COMPARE)
-    if coeff is not sp.S.One:
-        factors.insert(0, coeff)
-    if not factors:
-        return sp.S.One
-    if len(factors) == 1:
-        return factors[0]
-    return _product(factors)
+    return _product_of(coeff, factors)
 
 
 def power(base: Any, exp: Any) -> Any:
@@ -1000,6 +994,20 @@ def _product(args: Sequence[Any]) -> Any:
 _MUL_FROM_ARGS = sp.Mul._from_args
 
 
+def _product_of(coeff: Any, factors: list) -> Any:
+    """The product of the rational ``coeff`` and ``factors`` (distinct
+    bases, sorted by ``Basic.compare``), as ``Mul.flatten`` leaves it: the
+    coefficient first unless it is 1; 1 for no factor, and a factor alone
+    as itself.  (``factors`` is changed.)"""
+    if coeff is not sp.S.One:
+        factors.insert(0, coeff)
+    if not factors:
+        return sp.S.One
+    if len(factors) == 1:
+        return factors[0]
+    return _product(factors)  # these arguments as they are
+
+
 def _plain_base(a: Any) -> Any:
     """The base of ``a`` if ``a`` is a factor that ``Mul.flatten`` only
     sorts (given that no other factor has its base): not a number, not a
@@ -1149,13 +1157,7 @@ def product_with(args: tuple, i: int, d: Any, factors: _Factors | None = None) -
         new = [*rest[:lo], z, *rest[lo:]]
     else:
         new = sorted((*rest, *new_factors), key=_BY_COMPARE)
-    if coeff is not sp.S.One:
-        new.insert(0, coeff)
-    if not new:
-        return sp.S.One
-    if len(new) == 1:
-        return new[0]
-    return _product(new)  # these arguments as they are
+    return _product_of(coeff, new)
 
 
 def minus(expr: Any) -> Any:
