@@ -2402,11 +2402,13 @@ class Intermediates:
                             rest = (*rest[:at], new, *rest[at:])
                         entry = [coeff, rest, rest_facts, facts]
                     else:
-                        merged = self._merged(rest, rest_keys, bases, news, new_keys)
+                        merged = self._merged_entry(
+                            coeff, rest, rest_keys, bases, news, new_keys
+                        )
                         if merged is None:
                             return None
-                        rest, rest_keys = merged
-                        entry = [coeff, rest, self._rest_facts(rest), None]
+                        entry, rest_keys = merged
+                        rest = entry[1]
                         if not rest:
                             number += coeff
                             continue
@@ -2439,11 +2441,13 @@ class Intermediates:
                     rest = (*rest[:at], new, *rest[at:])
                     entry = [coeff, rest, rest_facts, facts]
                 elif news:
-                    merged = self._merged(rest, rest_keys, bases, news, new_keys)
+                    merged = self._merged_entry(
+                        coeff, rest, rest_keys, bases, news, new_keys
+                    )
                     if merged is None:
                         return None
-                    rest, rest_keys = merged
-                    entry = [coeff, rest, self._rest_facts(rest), None]
+                    entry, rest_keys = merged
+                    rest = entry[1]
                 if not rest:
                     number += entry[0]
                     continue
@@ -2539,6 +2543,25 @@ class Intermediates:
             self._products_sign(keyed, number),
             short,
         )
+
+    def _merged_entry(
+        self,
+        coeff: Any,
+        rest: tuple,
+        rest_keys: tuple,
+        bases: Any,
+        news: tuple,
+        new_keys: tuple,
+    ) -> tuple[list, tuple] | None:
+        """A term of :meth:`_products_pd` whose new factors share a base with
+        the rest's (:meth:`_merged`): ``(entry, its factors' keys)``, the
+        entry as the chain rule's others (coefficient, factors, their walk
+        facts, no new factor's facts); None when :meth:`_merged` declines."""
+        merged = self._merged(rest, rest_keys, bases, news, new_keys)
+        if merged is None:
+            return None
+        rest, rest_keys = merged
+        return [coeff, rest, self._rest_facts(rest), None], rest_keys
 
     def _new_factors(self, d: Any) -> tuple | None:
         """The product ``d`` (a power's derivative by the chain rule) as
