@@ -47,3 +47,23 @@ class ExpressionMaker:
         if kind == 5 and self.intermediate is not None:
             return self.intermediate(rng, parts)
         return sp.Add(*[rng.choice(self.coefficients) * p for p in parts])
+
+
+def written_tree(e: Any) -> str:
+    """``e`` written with every argument in its stored order, for comparing
+    two ways of forming an expression node for node (sympy's printers,
+    ``srepr`` too, sort a sum's terms and a product's factors; two books'
+    intermediates are of different classes, so they are compared by text).
+    A tuple is written as its items.
+
+    >>> x, y = sp.symbols("x y")
+    >>> written_tree(sp.Add(x, y, evaluate=False))
+    "Add(Symbol('x'),Symbol('y'))"
+    >>> written_tree(sp.Add(y, x, evaluate=False))
+    "Add(Symbol('y'),Symbol('x'))"
+    """
+    if isinstance(e, tuple):
+        return "(" + ",".join(written_tree(a) for a in e) + ")"
+    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
+        return type(e).__name__ + "(" + ",".join(written_tree(a) for a in e.args) + ")"
+    return sp.srepr(e)

@@ -16,6 +16,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.intermediates.autoz import Intermediates
+from random_exprs import written_tree
 from sympy.physics.mechanics import dynamicsymbols
 
 q1, q2, q3, u1 = dynamicsymbols("q1 q2 q3 u1")
@@ -93,21 +94,10 @@ def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     return book, found
 
 
-def _tree(e) -> str:
-    """``e`` written out with its arguments in their order (sympy's
-    printers sort a sum's terms; the two books' intermediates are of
-    different classes, so they are compared by text)."""
-    if isinstance(e, tuple):
-        return f"({', '.join(map(_tree, e))})"
-    if not e.args:
-        return sp.srepr(e)
-    return f"{type(e).__name__}({', '.join(_tree(a) for a in e.args)})"
-
-
 def _record(book: Intermediates) -> list:
     """Each intermediate's name, variables and definition."""
     return [
-        (book.label_of(k), *map(_tree, book.canonical(k)))
+        (book.label_of(k), *map(written_tree, book.canonical(k)))
         for k in range(1, len(book) + 1)
     ]
 
@@ -137,7 +127,7 @@ def _checked(book: Intermediates) -> tuple[int, int]:
             formed += 1
             d, walked = got
             want = book._pd(body, x, {})
-            assert _tree(d) == _tree(want), (body, x)
+            assert written_tree(d) == written_tree(want), (body, x)
             if walked:
                 sums += 1
                 variables_, derivatives, bad, size = book._walk(d)
@@ -188,7 +178,7 @@ def test_the_check_finds_a_wrong_order(monkeypatch):
 
 def _written(built: tuple[Intermediates, list]) -> tuple[list, list]:
     book, found = built
-    return _record(book), [_tree(d) for d in found]
+    return _record(book), [written_tree(d) for d in found]
 
 
 def test_the_check_finds_wrong_variables(monkeypatch):

@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
+from random_exprs import written_tree
 from sympy.core.mul import _keep_coeff
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.simplify.fu import TR10i
@@ -25,16 +26,6 @@ S = [
     sp.Symbol("D1", real=True),
     sp.Symbol("K", negative=True),
 ]
-
-
-def _tree(e) -> str:
-    """``e`` written with every argument in its stored order (sympy's
-    printers, ``srepr`` too, sort a sum's terms)."""
-    if isinstance(e, tuple):
-        return "(" + ",".join(_tree(a) for a in e) + ")"
-    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
-        return type(e).__name__ + "(" + ",".join(_tree(a) for a in e.args) + ")"
-    return sp.srepr(e)
 
 
 def _book_atoms() -> list:
@@ -164,7 +155,10 @@ def test_tidy_one_is_sympys():
     fast = 0
     for seed in SEEDS:
         e = _expression(random.Random(seed))
-        assert _tree(kin._tidy_one(e)) == _tree(_reference_tidy_one(e)), (seed, e)
+        assert written_tree(kin._tidy_one(e)) == written_tree(_reference_tidy_one(e)), (
+            seed,
+            e,
+        )
         fast += kin._factors_fixed(e) or kin._tr10i_fixed(sp.expand(e))
     assert fast > len(SEEDS) // 3
 
@@ -175,7 +169,7 @@ def test_tr10i_fixed_means_unchanged():
         e = sp.expand(_expression(random.Random(seed)))
         if kin._tr10i_fixed(e):
             fixed += 1
-            assert _tree(_undone(TR10i(e))) == _tree(e), (seed, e)
+            assert written_tree(_undone(TR10i(e))) == written_tree(e), (seed, e)
         else:
             declined += 1
     assert fixed > len(SEEDS) // 2 and declined > 20
@@ -187,7 +181,7 @@ def test_factors_fixed_means_unchanged():
         e = _expression(random.Random(seed))
         if kin._factors_fixed(e):
             fixed += 1
-            assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
+            assert written_tree(sp.factor_terms(e)) == written_tree(e), (seed, e)
         else:
             declined += 1
     assert fixed > 40 and declined > 50
@@ -220,10 +214,13 @@ def test_factors_fixed_on_nested_sums():
         e = _plain_sum(random.Random(seed), 2)
         if kin._factors_fixed(e):
             fixed += 1
-            assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
+            assert written_tree(sp.factor_terms(e)) == written_tree(e), (seed, e)
         else:
             declined += 1
-        assert _tree(kin._tidy_one(e)) == _tree(_reference_tidy_one(e)), (seed, e)
+        assert written_tree(kin._tidy_one(e)) == written_tree(_reference_tidy_one(e)), (
+            seed,
+            e,
+        )
     assert fixed > 120 and declined > 50
 
 
@@ -236,8 +233,8 @@ def test_factors_fixed_on_nested_sums():
     ],
 )
 def test_declined_where_sympy_changes(expr):
-    assert _tree(kin._tidy_one(expr)) == _tree(_reference_tidy_one(expr))
-    assert _tree(kin._tidy_one(expr)) != _tree(expr)
+    assert written_tree(kin._tidy_one(expr)) == written_tree(_reference_tidy_one(expr))
+    assert written_tree(kin._tidy_one(expr)) != written_tree(expr)
 
 
 # ------------------------------------------------- a body's inertia again
@@ -246,9 +243,9 @@ def test_declined_where_sympy_changes(expr):
 def _body_state(body) -> tuple:
     inertia = body.inertia
     return (
-        [(_tree(c), v.args, w.args) for c, v, w in inertia.dyadic.args],
+        [(written_tree(c), v.args, w.args) for c, v, w in inertia.dyadic.args],
         inertia.point,
-        [(_tree(c), v.args, w.args) for c, v, w in body.central_inertia.args],
+        [(written_tree(c), v.args, w.args) for c, v, w in body.central_inertia.args],
     )
 
 
@@ -309,7 +306,7 @@ def test_holds_inertia_reads_unit_vectors_as_written():
 
 
 def _vector_args(v) -> list:
-    return [(type(m).__name__, _tree(tuple(m)), f) for m, f in v.args]
+    return [(type(m).__name__, written_tree(tuple(m)), f) for m, f in v.args]
 
 
 def test_add_vectors_is_sympys_sum():

@@ -10,6 +10,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
+from random_exprs import written_tree
 from sympy.physics.mechanics import ReferenceFrame, dynamicsymbols
 
 Q = dynamicsymbols("q1:5")
@@ -48,7 +49,7 @@ def _matrix(rng: random.Random, book: Intermediates) -> sp.Matrix:
 
 
 def _dok(m: sp.Matrix) -> list:
-    return [(ij, _tree(v)) for ij, v in m.todok().items()]
+    return [(ij, written_tree(v)) for ij, v in m.todok().items()]
 
 
 class _Recorder:
@@ -76,7 +77,9 @@ def test_named_product_is_sympys_product_named_in_its_order(seed):
     assert _dok(got) == _dok(want)
     assert _dok(got.T) == _dok(want.T)
     # named in the same order: the intermediates are numbered the same
-    assert [_tree(e) for e in short_name.calls] == [_tree(e) for e in long_name.calls]
+    assert [written_tree(e) for e in short_name.calls] == [
+        written_tree(e) for e in long_name.calls
+    ]
     assert len(books[1]) > 0
     assert _definitions(books[1]) == _definitions(books[0])
     assert rng.random() >= 0  # (the seed drives the matrices above)
@@ -177,18 +180,8 @@ def _big(rng: random.Random, book: Intermediates, depth: int = 0) -> sp.Expr:
     return sp.Add(*terms)
 
 
-def _tree(e) -> str:
-    """``e`` written with every argument in its stored order (sympy's
-    printers, ``srepr`` too, sort a sum's terms)."""
-    if isinstance(e, tuple):
-        return "(" + ",".join(_tree(a) for a in e) + ")"
-    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
-        return type(e).__name__ + "(" + ",".join(_tree(a) for a in e.args) + ")"
-    return sp.srepr(e)
-
-
 def _definitions(book: Intermediates) -> list:
-    return [_tree(book.canonical(k)) for k in range(1, len(book) + 1)]
+    return [written_tree(book.canonical(k)) for k in range(1, len(book) + 1)]
 
 
 @pytest.mark.parametrize("seed", range(30))
@@ -204,7 +197,7 @@ def test_named_in_parts_as_sympy_rebuilds_them(seed, monkeypatch):
         m.setattr(autoz, "_rebuilt", lambda e, new, changed: e.func(*new))
         slow = Intermediates()
         want = [slow.name(_big(random.Random(seed * 11 + k), slow)) for k in range(4)]
-    assert [_tree(e) for e in got] == [_tree(e) for e in want]
+    assert [written_tree(e) for e in got] == [written_tree(e) for e in want]
     assert _definitions(fast) == _definitions(slow)
     assert len(fast) > 8  # named in parts
 
@@ -258,8 +251,8 @@ def test_name_linear_terms_is_linear_terms_of_name_linear(seed):
             assert got is None
             continue
         assert got is not None
-        assert [_tree(c) for c in got[0]] == [_tree(c) for c in want[0]]
-        assert _tree(got[1]) == _tree(want[1])
+        assert [written_tree(c) for c in got[0]] == [written_tree(c) for c in want[0]]
+        assert written_tree(got[1]) == written_tree(want[1])
     assert _definitions(fast) == _definitions(slow)
 
 
@@ -279,8 +272,8 @@ def test_name_linear_terms_keeps_zee_not_quantities_in_the_rest():
         want is None
         and got is None
         or (
-            [_tree(c) for c in got[0]] == [_tree(c) for c in want[0]]
-            and _tree(got[1]) == _tree(want[1])
+            [written_tree(c) for c in got[0]] == [written_tree(c) for c in want[0]]
+            and written_tree(got[1]) == written_tree(want[1])
         )
     )
     assert _definitions(fast) == _definitions(slow)
@@ -304,7 +297,7 @@ def test_doit_derivatives_is_sympys_replace(seed):
         lambda x: x.doit(),
     )
     got = kin.doit_derivatives(e)
-    assert _tree(got) == _tree(want)
+    assert written_tree(got) == written_tree(want)
     if not seed % 2:
         assert got is e
 

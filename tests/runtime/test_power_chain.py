@@ -23,6 +23,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.intermediates.autoz import Intermediates
+from random_exprs import written_tree
 from sympy.physics.mechanics import dynamicsymbols
 
 q1, q2, q3, u1 = dynamicsymbols("q1 q2 q3 u1")
@@ -88,24 +89,13 @@ def _build(seed: int, shortcut: bool = True) -> tuple[Intermediates, list]:
     return book, found
 
 
-def _tree(e) -> str:
-    """``e`` written out with its arguments in their order (``srepr`` sorts
-    a product's factors and a sum's terms; the two books' intermediates
-    are of different classes, so they are compared by text)."""
-    if isinstance(e, tuple):
-        return f"({', '.join(map(_tree, e))})"
-    if not e.args:
-        return sp.srepr(e)
-    return f"{type(e).__name__}({', '.join(_tree(a) for a in e.args)})"
-
-
 def _written(built: tuple[Intermediates, list]) -> tuple[list, list]:
     book, found = built
     record = [
-        (book.label_of(k), *map(_tree, book.canonical(k)))
+        (book.label_of(k), *map(written_tree, book.canonical(k)))
         for k in range(1, len(book) + 1)
     ]
-    return record, [_tree(d) for d in found]
+    return record, [written_tree(d) for d in found]
 
 
 def _with_powers(e) -> bool:
@@ -148,7 +138,7 @@ def _checked(book: Intermediates) -> int:
                 continue
             d, walked = got
             want = book._pd(body, x, {})
-            assert _tree(d) == _tree(want), (body, x)
+            assert written_tree(d) == written_tree(want), (body, x)
             formed += _with_powers(body)
             if walked:
                 walked_powers += _with_powers(d)
@@ -251,7 +241,7 @@ def _merge_mismatches(book: Intermediates, cases: list) -> tuple[list, int]:
         args, keys = got
         assert keys == tuple(key_of(f) for f in args)
         mine = args[0] if len(args) == 1 else autoz._product(args) if args else 1
-        if _tree(mine) != _tree(sp.Mul(*rest, *news)):
+        if written_tree(mine) != written_tree(sp.Mul(*rest, *news)):
             wrong.append((rest, news))
     return wrong, formed
 
@@ -347,7 +337,7 @@ def _replaced_mismatches(products_with, cases: list) -> list:
     return [
         (args, new)
         for args, new, changed in cases
-        if _tree(products_with(args, new, changed)) != _tree(sp.Mul(*new))
+        if written_tree(products_with(args, new, changed)) != written_tree(sp.Mul(*new))
     ]
 
 
