@@ -45,7 +45,7 @@ import subprocess
 import sys
 import tempfile
 import threading
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -1049,8 +1049,18 @@ def c_model_source(spec: DynamicsSpec, api: str = "") -> str:
     const double *p, double *out)`` writes every output, table after table.
     ``api`` prefixes both (``static`` for a standalone program)."""
     spec, names = _c_form(spec)
-    printer = CPrinter(names=names)
-    lines = _rhs_lines(spec, printer, api, "static ")
+    return _source(spec, CPrinter(names=names), api)
+
+
+def _source(
+    spec: DynamicsSpec,
+    printer: CPrinter,
+    api: str,
+    mf: tuple[list[str], list[str]] | None = None,
+) -> str:
+    """:func:`c_model_source` of a spec in C form (``mf``: see
+    :func:`_rhs_lines`)."""
+    lines = _rhs_lines(spec, printer, api, "static ", mf)
     lines += _out_head(spec, api)
     all_out = [e for row in spec.outputs for e in row]
     lines += _intermediates(spec, all_out, printer, "    ")
@@ -1079,25 +1089,44 @@ _MF = (
 )
 
 
+def _mf_exprs(spec: DynamicsSpec) -> tuple[list[Any], list[str]]:
+    """What ``al_mf`` computes (``M``, ``f``, the state derivatives free of
+    ``ud``) and where it writes them."""
+    n = len(spec.accels)
+    free = _plan(spec)[0]
+    targets = [f"m[{k}]" for k in range(n * n)] + [f"f[{k}]" for k in range(n)]
+    targets += [f"dy[{i}]" for i in free]
+    exprs = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
+    return exprs, targets
+
+
 def _rhs_lines(
-    spec: DynamicsSpec, printer: CPrinter, api: str, mf_api: str
+    spec: DynamicsSpec,
+    printer: CPrinter,
+    api: str,
+    mf_api: str,
+    mf: tuple[list[str], list[str]] | None = None,
 ) -> list[str]:
     """The header, ``al_mf`` (``M``, ``f`` and the state derivatives free of
-    ``ud``) and ``al_rhs``."""
+    ``ud``) and ``al_rhs``.  ``mf``: the declarations that precede ``al_mf``
+    and its body (:func:`_mf_parts`), when it is not printed here."""
     n = len(spec.accels)
-    free, uses, _plan_ = _plan(spec)
+    _free, uses, _plan_ = _plan(spec)
     lines = _header(spec)
+    if mf is not None:
+        lines += mf[0]
     lines += [
         "/* M (row-major), f, and the state derivatives that do not need ud */",
         mf_api + _MF,
         "{",
         "    (void)t; (void)y; (void)p; (void)m; (void)f; (void)dy;",
     ]
-    targets = [f"m[{k}]" for k in range(n * n)] + [f"f[{k}]" for k in range(n)]
-    targets += [f"dy[{i}]" for i in free]
-    exprs = [*spec.mass, *spec.forcing, *(spec.derivs[i] for i in free)]
-    lines += _intermediates(spec, exprs, printer, "    ")
-    lines += _block(exprs, targets, printer, "x", "    ")
+    if mf is None:
+        exprs, targets = _mf_exprs(spec)
+        lines += _intermediates(spec, exprs, printer, "    ")
+        lines += _block(exprs, targets, printer, "x", "    ")
+    else:
+        lines += mf[1]
     lines += ["}", ""]
     lines += [
         f"{api}int al_rhs(double t, const double *y, const double *p, double *dy)",
@@ -1154,6 +1183,24 @@ def _out_tail(spec: DynamicsSpec, printer: CPrinter) -> list[str]:
 #: ``al_out`` needing more intermediates than this is compiled apart from
 #: the right-hand side: in parts, in parallel, with ``OUT_FLAGS``.
 SPLIT = 400
+#: ``al_mf`` (the right-hand side but the accelerations) needing more
+#: intermediates than this is compiled in parts, in parallel, with -O2.  gcc
+#: compiles a function of up to about 650 of the Whipple bicycle's
+#: intermediates in about 1.4 ms each (processor time), and grows faster
+#: beyond: all 855 in 3.3 s, in parts 1.3-1.9 s shared by two cores.  The
+#: parts keep the intermediates in an array, and an evaluation takes about
+#: 20% more instructions: below this, one function is worth its wait
+RHS_SPLIT = 600
+#: above this many elements the array of the right-hand side's intermediates
+#: (on the stack of ``al_mf``) is too large: the right-hand side stays whole
+_RHS_STACK = 1 << 15
+#: intermediates per part of the right-hand side: two parts or more (the
+#: two compile side by side, the first while the second is printed), four
+#: at most
+_RHS_PART = 400
+#: statements per C function in the parts of the right-hand side (at most:
+#: each part has one function or more)
+_RHS_CHUNK = 100
 #: statements per C function in the parts (compile time grows faster than
 #: the size of a function)
 _CHUNK = 50
@@ -1165,25 +1212,38 @@ _CHUNK = 50
 OUT_FLAGS = ("-Og",)
 
 
-def c_model_units(spec: DynamicsSpec) -> list[tuple[str, tuple[str, ...]]]:
+def c_model_units(
+    spec: DynamicsSpec, split: int | None = None, rhs_split: int | None = None
+) -> list[tuple[str, tuple[str, ...]]]:
     """See :func:`c_model_stream`, as a list."""
-    return list(c_model_stream(spec))
+    return list(c_model_stream(spec, split, rhs_split))
 
 
-def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
+def c_model_stream(
+    spec: DynamicsSpec, split: int | None = None, rhs_split: int | None = None
+) -> Iterator[tuple[str, tuple[str, ...]]]:
     """``spec`` as C translation units with their optimisation flags: the
-    right-hand side (``-O2``), and when the outputs need more than
-    :data:`SPLIT` intermediates, ``al_out`` and its intermediates in parts
-    (kept in one array ``z``, functions of :data:`_CHUNK` statements)."""
+    right-hand side (``-O2``), and when the outputs need more than ``split``
+    (:data:`SPLIT`) intermediates, ``al_out`` and its intermediates in parts
+    (kept in one array ``z``, functions of :data:`_CHUNK` statements).  When
+    ``al_mf`` needs more than ``rhs_split`` (:data:`RHS_SPLIT`)
+    intermediates, they are computed likewise, in parts compiled with -O2
+    before the unit of the right-hand side."""
+    split = SPLIT if split is None else split
+    rhs_split = RHS_SPLIT if rhs_split is None else rhs_split
     spec, names = _c_form(spec)
     printer = CPrinter(names=names)
     all_out = [e for row in spec.outputs for e in row]
     zs = needed(spec.intermediates, all_out, spec.free)
-    if len(zs) <= SPLIT:
-        yield (c_model_source(spec), ("-O2",))
+    mf = yield from _mf_parts(spec, names, rhs_split)
+    if len(zs) <= split:
+        if mf is None:
+            yield (c_model_source(spec), ("-O2",))
+        else:
+            yield (_source(spec, printer, "", mf), ("-O2",))
         return
-    yield ("\n".join(_rhs_lines(spec, printer, "", "")), ("-O2",))
-    size = max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
+    yield ("\n".join(_rhs_lines(spec, printer, "", "", mf)), ("-O2",))
+    size = _z_size(zs, names)
     # sin(q1) and the like, used all over the parts: computed once, first
     hoist = {spec.time, *spec.states, *spec.params}
     arrays = CPrinter(z_array=True, names=names, hoist=(hoist, size))
@@ -1192,22 +1252,9 @@ def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     # up to 4 parts, whatever the cores: each is compiled while the next is
     # printed, so that the compiler starts early and the last part is short
     parts = max(1, min(4, len(zs) // 1000))
-    per = -(-count // parts)  # functions per part
-    bodies: list[str] = []
-    for j, k in enumerate(range(0, len(zs), _CHUNK)):
-        lines = [
-            f"void al_z{j}({args})",
-            "{",
-            "    (void)t; (void)y; (void)p; (void)ud;",
-        ]
-        for sym, expr in zs[k : k + _CHUNK]:
-            lines.append(
-                f"    {c_expression(sym, arrays)} = {c_expression(expr, arrays)};"
-            )
-        bodies.append("\n".join([*lines, "}", ""]))
-        if len(bodies) % per == 0 or j == count - 1:
-            first = (len(bodies) - 1) // per * per
-            yield ("#include <math.h>\n\n" + "\n".join(bodies[first:]), OUT_FLAGS)
+    voids = "    (void)t; (void)y; (void)p; (void)ud;"
+    head = f"al_z{{}}({args})"
+    yield from _z_units(zs, arrays, head, voids, (parts, _CHUNK), OUT_FLAGS)
     tail = _out_tail(spec, arrays)
     size += len(arrays.hoisted)
     main = _header(spec)
@@ -1222,6 +1269,75 @@ def c_model_stream(spec: DynamicsSpec) -> Iterator[tuple[str, tuple[str, ...]]]:
     ]
     main += [*tail[:-3], "    free(z);", *tail[-3:]]
     yield ("\n".join(main), OUT_FLAGS)
+
+
+def _z_size(zs: list[tuple[Any, Any]], names: dict[Any, str]) -> int:
+    """The length of an array ``z`` that holds the intermediates ``zs``."""
+    return max(int(names.get(s, str(s))[1:]) for s, _e in zs) + 1
+
+
+def _z_units(
+    zs: list[tuple[Any, Any]],
+    arrays: CPrinter,
+    head: str,
+    voids: str,
+    split: tuple[int, int],
+    flags: tuple[str, ...],
+) -> Iterator[tuple[str, tuple[str, ...]]]:
+    """Translation units (``split = (parts, chunk)``: ``parts`` of them, with
+    ``flags``) of the functions ``head`` (numbered ``0, 1, ...``) that store
+    the intermediates ``zs`` in the array ``z``, ``chunk`` statements each;
+    each unit is given as soon as it is printed."""
+    parts, chunk = split
+    count = -(-len(zs) // chunk)  # functions
+    per = -(-count // parts)  # functions per part
+    bodies: list[str] = []
+    for j, k in enumerate(range(0, len(zs), chunk)):
+        lines = [f"void {head.format(j)}", "{", voids]
+        for sym, expr in zs[k : k + chunk]:
+            lines.append(
+                f"    {c_expression(sym, arrays)} = {c_expression(expr, arrays)};"
+            )
+        bodies.append("\n".join([*lines, "}", ""]))
+        if len(bodies) % per == 0 or j == count - 1:
+            first = (len(bodies) - 1) // per * per
+            yield ("#include <math.h>\n\n" + "\n".join(bodies[first:]), flags)
+
+
+def _mf_parts(
+    spec: DynamicsSpec, names: dict[Any, str], rhs_split: int
+) -> Generator[tuple[str, tuple[str, ...]], None, tuple[list[str], list[str]] | None]:
+    """When ``al_mf`` needs more than ``rhs_split`` intermediates: the units
+    (-O2) of functions ``al_rK`` that store them in an array ``z`` on the
+    stack of ``al_mf``, each given as soon as it is printed; then returns
+    the declarations and the body of ``al_mf`` (for :func:`_rhs_lines`),
+    which computes the functions of the states and parameters alone first,
+    once, calls the parts, and assembles ``M``, ``f`` and ``dy`` as
+    :func:`_block` does.  Else gives nothing and returns ``None``."""
+    exprs, targets = _mf_exprs(spec)
+    zs = needed(spec.intermediates, exprs, spec.free)
+    if len(zs) <= rhs_split or _z_size(zs, names) > _RHS_STACK:
+        return None
+    size = _z_size(zs, names)
+    hoist = {spec.time, *spec.states, *spec.params}
+    arrays = CPrinter(z_array=True, names=names, hoist=(hoist, size))
+    args = "double t, const double *y, const double *p, double *z"
+    parts = max(2, min(4, len(zs) // _RHS_PART))
+    chunk = min(_RHS_CHUNK, -(-len(zs) // parts))
+    count = -(-len(zs) // chunk)  # functions
+    voids = "    (void)t; (void)y; (void)p;"
+    head = f"al_r{{}}({args})"
+    yield from _z_units(zs, arrays, head, voids, (parts, chunk), ("-O2",))
+    block = _block(exprs, targets, arrays, "x", "    ")
+    size += len(arrays.hoisted)
+    decls = [f"void al_r{j}({args});" for j in range(count)]
+    body = [
+        f"    double z[{size}];",
+        *(f"    {at} = {text};" for text, at in arrays.hoisted.items()),
+        *(f"    al_r{j}(t, y, p, z);" for j in range(count)),
+        *block,
+    ]
+    return [*decls, ""], body
 
 
 def _intermediates(
