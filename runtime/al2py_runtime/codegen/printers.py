@@ -221,7 +221,8 @@ class Remembering(ProgramPrinter):
             cpart[first:] = sorted(cpart[first:], key=_name)
         else:
             keys = self._keys
-            cpart.sort(key=lambda x: sort_key_in(x, keys))
+            # (a key found is read here: most factors were keyed before)
+            cpart.sort(key=lambda x: keys.get(x) or sort_key_in(x, keys))
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -380,9 +381,12 @@ def _ordered_by_monomials(
     # a plain symbol's key is its class's, then its name
     plain = all(type(g) is sp.Symbol for g in gens)
     listed = list(gens)
-    marked = sorted(
-        [(g.name if plain else sort_key_in(g, keys), i) for i, g in enumerate(listed)]
-    )
+    if plain:
+        marked = sorted([(g.name, i) for i, g in enumerate(listed)])
+    else:  # (a key found is read here: most generators were keyed before)
+        marked = sorted(
+            [(keys.get(g) or sort_key_in(g, keys), i) for i, g in enumerate(listed)]
+        )
     for i in range(1, len(marked)):
         if marked[i][0] == marked[i - 1][0]:
             return None  # two keys alike: sympy's order of them is the set's

@@ -827,6 +827,10 @@ _MUL = sp.Mul
 _MINUS_ONE = sp.S.NegativeOne
 
 
+def _first(pair: tuple) -> Any:
+    return pair[0]
+
+
 def _sort_canonically(parts: list[Any], keys: CompareKeys) -> None:
     """Sort ``parts`` (two or more) in place by sympy's ``Basic.compare``
     (``_args_sortkey``, the order ``Mul.flatten`` and ``Add.flatten`` give)
@@ -846,8 +850,8 @@ def _sort_canonically(parts: list[Any], keys: CompareKeys) -> None:
         if found[0] > found[1]:
             parts.reverse()
         return
-    order = sorted(range(len(parts)), key=found.__getitem__)
-    parts[:] = [parts[i] for i in order]
+    # (by the keys alone, stably: as sorting the positions by them)
+    parts[:] = [a for _key, a in sorted(zip(found, parts, strict=True), key=_first)]
 
 
 #: ``_hashable_content`` methods that return the object's arguments (all
@@ -877,12 +881,15 @@ class CompareKeys:
     and again); a number is remembered with its class (sympy's ``==``
     may hold between numbers of different classes)."""
 
-    __slots__ = ("classes", "numbers", "parts")
+    __slots__ = ("classes", "numbers", "parts", "sign")
 
     def __init__(self) -> None:
         self.parts: dict = {}
         self.numbers: dict = {}  # (class, number) -> its key
         self.classes: dict = {}
+        #: -1's key (the first argument of most products that have a
+        #: number), read without hashing -1 again and again
+        self.sign: tuple | None = None
 
     def key(self, e: Any) -> tuple | None:
         """``e``'s key, or None when ``e`` (or a part of it) is of a class
@@ -910,6 +917,14 @@ class CompareKeys:
             items = []
             parts = self.parts
             for a in e.args:
+                if a is _MINUS_ONE:  # a product's sign: its key kept apart
+                    key = self.sign
+                    if key is None:
+                        key = self.sign = self.key(a)
+                        if key is None:
+                            return None
+                    items.append(key)
+                    continue
                 key = parts.get(a)  # (most arguments: names keyed before)
                 if key is None:
                     if not isinstance(a, sp.Basic):
