@@ -1482,12 +1482,16 @@ class Intermediates:
         size: int | float,
         negative: bool | None = None,
         short: bool = False,
+        opposite: tuple | None = None,
     ) -> Any:
         """:meth:`_name` of ``expr`` (not trivial, not named yet), given
         what :meth:`_walk` finds in it; ``negative``: ``minus_first(expr)``
-        when the caller knows it (it holds while no part is split off), and
+        when the caller knows it (it holds while no part is split off),
         ``short``: no part of ``expr`` has more than :attr:`LIMIT` nodes
-        (:meth:`_split` leaves it as it is)."""
+        (:meth:`_split` leaves it as it is), and ``opposite``: the terms
+        :meth:`_products_pd` formed ``expr`` from, of which
+        :meth:`_products_opposite` forms ``minus(expr)`` (while no part is
+        split off)."""
         if derivatives and not self._all_rates(derivatives):
             return expr  # accelerations stay visible
         if self.exclude and expr.has(*self.exclude):
@@ -1519,7 +1523,11 @@ class Intermediates:
                 and (expr.is_Add or expr.is_Mul)
                 and size - len(expr.args) + 2 <= self.LIMIT
             )
-            return minus(self._name(minus(expr), variables, small))
+            if opposite is not None and original is None and not bad:
+                negated = self._products_opposite(*opposite)
+            else:
+                negated = minus(expr)
+            return minus(self._name(negated, variables, small))
         return self._new_name(expr, variables, original, split=False)
 
     def _all_rates(self, derivatives: set | frozenset) -> bool:
@@ -2483,14 +2491,23 @@ class Intermediates:
         if number is not _ZERO:
             terms.insert(0, number)
         if len(terms) < 2:
-            return (terms[0] if terms else _ZERO), ()
-        d = sp.Add._from_args(terms, is_commutative=True)
+            if not terms:
+                return _ZERO, ()
+            d = terms[0]
+            # one product of two factors or more (not a number, nor one
+            # factor, nor trivial: named the long way): walked as a sum's
+            # term is, below, without the sum
+            if number is not _ZERO or len(keyed[0][1]) < 2 or trivial(d):
+                return d, ()
+            size: int | float = 1
+        else:
+            d = sp.Add._from_args(terms, is_commutative=True)
+            size = 1 + len(terms)
         # :meth:`_walk`: each product's arguments are met once (the terms
         # are distinct), and a sine's or power's (its arguments) unless it
         # was met before; variables are recorded, a canonical intermediate
         # brings its set of variables (read off each rest's facts and the
         # new factors')
-        size: int | float = 1 + len(terms)
         found_vars, among, shared, seen = set(), set(), set(), set()
         short = True
         limit = self.LIMIT
@@ -2536,13 +2553,61 @@ class Intermediates:
             size += extra
             if n + extra >= limit:
                 short = False
+        if len(terms) < 2:
+            # a product's parts are its factors, none larger than
+            # :attr:`LIMIT`; its sign is its rational coefficient's (sympy's
+            # could_extract_minus_sign: a finite product is not its negation)
+            c = keyed[0][1][0]
+            return d, (
+                *self._met(found_vars, among, shared),
+                [],
+                size,
+                c.is_Rational and c.p < 0,
+                True,
+                None,
+            )
+        sign = self._products_sign(keyed, number)
         return d, (
             *self._met(found_vars, among, shared),
             [],
             size,
-            self._products_sign(keyed, number),
+            sign,
             short,
+            (collected, number) if sign else None,
         )
+
+    def _products_opposite(self, collected: dict, number: Any) -> Any:
+        """``minus(d)`` of the sum ``d`` that :meth:`_products_pd` formed
+        from the terms ``collected`` (the factors' tuples -> [coefficient,
+        factors, ...]) and ``number``: each coefficient negated, the terms
+        ordered by their tuples as :meth:`_products_pd` orders ``d``'s
+        (:func:`minus` negates each term by its coefficient and sorts the
+        terms by ``Basic.compare``, which the tuples follow)."""
+        one = sp.S.One
+        coeff_keys = self._coeff_keys
+        keyed = []
+        for fkeys, entry in collected.items():
+            coeff = entry[0]
+            if coeff is _ZERO:
+                continue
+            coeff, rest = -coeff, entry[1]
+            if coeff is one:
+                if len(rest) == 1:
+                    keyed.append((fkeys[0], rest))
+                    continue
+                args, akeys = rest, fkeys
+            else:
+                coeff_id = (type(coeff), coeff.p, coeff.q)
+                coeff_key = coeff_keys.get(coeff_id)
+                if coeff_key is None:
+                    coeff_key = coeff_keys[coeff_id] = _plain_atom_key(coeff)
+                args, akeys = (coeff, *rest), (coeff_key, *fkeys)
+            keyed.append(((_MUL_PLACE, len(args), *akeys), args))
+        keyed.sort(key=_KEY)
+        terms = [args[0] if len(args) == 1 else _product(args) for _, args in keyed]
+        if number is not _ZERO:
+            terms.insert(0, -number)
+        return sp.Add._from_args(terms, is_commutative=True)
 
     def _merged_entry(
         self,
