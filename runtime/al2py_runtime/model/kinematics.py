@@ -755,10 +755,28 @@ def factor_terms(expr: sp.Expr) -> sp.Expr:
 def _plain_factor(f: Any) -> bool:
     """A plain atom (:func:`_plain_atom`), or the sine or cosine of one: a
     factor ``factor_terms`` leaves as it is (its content is 1, and nothing
-    in it is a sum or a product)."""
+    in it is a sum or a product); or a rational power of one of those or of
+    a sum ``factor_terms`` leaves alone (``1/sqrt(1 - Z38**2)``, ``Z5**2``):
+    ``factor_terms`` rebuilds a power from its base and exponent, and
+    ``gcd_terms`` splits it into its base's root and an integer exponent
+    (:func:`_factor_key` finds a base common to the terms of a sum)."""
     if isinstance(f, sp.sin | sp.cos):
         return _plain_atom(f.args[0])
+    if f.is_Pow:
+        b = f.base
+        if not f.exp.is_Rational:
+            return False
+        if isinstance(b, sp.sin | sp.cos):
+            return _plain_atom(b.args[0])
+        return _plain_atom(b) or (b.is_Add and _factors_fixed(b))
     return _plain_atom(f)
+
+
+def _factor_key(f: Any) -> Any:
+    """What a factor of a term is compared by with the other terms'
+    (:func:`_factors_fixed`): a power's base (``x`` and ``x**2`` share
+    ``x``, which ``gcd_terms`` takes out), else the factor itself."""
+    return f.base if f.is_Pow else f
 
 
 def _plain_atom(f: Any) -> bool:
@@ -779,13 +797,14 @@ def _plain_atom(f: Any) -> bool:
 
 
 def _monomial(term: Any) -> frozenset | None:
-    """The factors of a term that is a plain factor (:func:`_plain_factor`)
-    or a product of plain factors and sums ``factor_terms`` leaves alone
+    """The factors (by :func:`_factor_key`) of a term that is a plain
+    factor (:func:`_plain_factor`) or a product of plain factors and sums
+    ``factor_terms`` leaves alone
     (:func:`_factors_fixed`), with -1 or no number: None for any other
     term.  ``-1`` times one sum alone is declined (sympy's ``Mul`` of the
     two would distribute it)."""
     if _plain_factor(term):
-        return frozenset((term,))
+        return frozenset((_factor_key(term),))
     if not term.is_Mul:
         return None
     args = term.args
@@ -794,7 +813,7 @@ def _monomial(term: Any) -> frozenset | None:
         if len(args) == 1 and args[0].is_Add:
             return None
     if all(_plain_factor(f) or _factors_fixed(f) for f in args) and _in_order(args):
-        return frozenset(args)
+        return frozenset(map(_factor_key, args))
     return None
 
 
@@ -806,9 +825,9 @@ def _in_order(args: tuple) -> bool:
 
 def _factors_fixed(expr: sp.Expr) -> bool:
     """Whether ``sp.factor_terms(expr)`` is ``expr``: for a term as in
-    :func:`_monomial` (its content is 1), or a sum of such terms that are
-    not all negative (else ``-1`` is taken out) with no factor common to
-    all (else it is taken out)."""
+    :func:`_monomial` (its content is 1), or a sum of such terms (and the
+    number 1) that are not all negative (else ``-1`` is taken out) with no
+    factor common to all (else it is taken out)."""
     if not expr.is_Add:
         return _monomial(expr) is not None
     if not _in_order(expr.args):
@@ -816,7 +835,8 @@ def _factors_fixed(expr: sp.Expr) -> bool:
     common = None
     negative = True
     for term in expr.args:
-        factors = _monomial(term)
+        # the number 1 is a term with no factor (its content is 1)
+        factors = frozenset() if term is sp.S.One else _monomial(term)
         if factors is None:
             return False
         common = factors if common is None else common & factors
