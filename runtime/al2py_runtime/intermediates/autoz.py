@@ -2468,24 +2468,12 @@ class Intermediates:
                     found[0] += entry[0]
         keyed = []
         kept = []
-        coeff_keys = self._coeff_keys
         for fkeys, entry in collected.items():
-            coeff, rest = entry[0], entry[1]
+            coeff = entry[0]
             if coeff is _ZERO:
                 continue
             kept.append(entry)
-            if coeff is one:
-                if len(rest) == 1:
-                    keyed.append((fkeys[0], rest))
-                    continue
-                args, akeys = rest, fkeys
-            else:
-                coeff_id = (type(coeff), coeff.p, coeff.q)
-                coeff_key = coeff_keys.get(coeff_id)
-                if coeff_key is None:
-                    coeff_key = coeff_keys[coeff_id] = _plain_atom_key(coeff)
-                args, akeys = (coeff, *rest), (coeff_key, *fkeys)
-            keyed.append(((_MUL_PLACE, len(args), *akeys), args))
+            keyed.append(self._keyed_term(coeff, entry[1], fkeys))
         keyed.sort(key=_KEY)
         terms = [args[0] if len(args) == 1 else _product(args) for _, args in keyed]
         if number is not _ZERO:
@@ -2583,31 +2571,34 @@ class Intermediates:
         ordered by their tuples as :meth:`_products_pd` orders ``d``'s
         (:func:`minus` negates each term by its coefficient and sorts the
         terms by ``Basic.compare``, which the tuples follow)."""
-        one = sp.S.One
-        coeff_keys = self._coeff_keys
-        keyed = []
-        for fkeys, entry in collected.items():
-            coeff = entry[0]
-            if coeff is _ZERO:
-                continue
-            coeff, rest = -coeff, entry[1]
-            if coeff is one:
-                if len(rest) == 1:
-                    keyed.append((fkeys[0], rest))
-                    continue
-                args, akeys = rest, fkeys
-            else:
-                coeff_id = (type(coeff), coeff.p, coeff.q)
-                coeff_key = coeff_keys.get(coeff_id)
-                if coeff_key is None:
-                    coeff_key = coeff_keys[coeff_id] = _plain_atom_key(coeff)
-                args, akeys = (coeff, *rest), (coeff_key, *fkeys)
-            keyed.append(((_MUL_PLACE, len(args), *akeys), args))
+        keyed = [
+            self._keyed_term(-entry[0], entry[1], fkeys)
+            for fkeys, entry in collected.items()
+            if entry[0] is not _ZERO
+        ]
         keyed.sort(key=_KEY)
         terms = [args[0] if len(args) == 1 else _product(args) for _, args in keyed]
         if number is not _ZERO:
             terms.insert(0, -number)
         return sp.Add._from_args(terms, is_commutative=True)
+
+    def _keyed_term(self, coeff: Any, rest: tuple, fkeys: tuple) -> tuple:
+        """The term ``coeff`` times the factors ``rest`` (not zero; ``fkeys``:
+        the factors' keys) as :meth:`_products_pd` sorts a sum's terms: its
+        key (``Basic.compare``'s order) and its arguments (one factor alone,
+        or a product's, the coefficient first unless it is 1)."""
+        if coeff is sp.S.One:
+            if len(rest) == 1:
+                return fkeys[0], rest
+            args, akeys = rest, fkeys
+        else:
+            coeff_keys = self._coeff_keys
+            coeff_id = (type(coeff), coeff.p, coeff.q)
+            coeff_key = coeff_keys.get(coeff_id)
+            if coeff_key is None:
+                coeff_key = coeff_keys[coeff_id] = _plain_atom_key(coeff)
+            args, akeys = (coeff, *rest), (coeff_key, *fkeys)
+        return (_MUL_PLACE, len(args), *akeys), args
 
     def _merged_entry(
         self,
