@@ -67,3 +67,38 @@ def written_tree(e: Any) -> str:
     if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
         return type(e).__name__ + "(" + ",".join(written_tree(a) for a in e.args) + ")"
     return sp.srepr(e)
+
+
+def plain_factor(
+    rng: random.Random,
+    pools: tuple[Sequence, Sequence, Sequence, Sequence, Any],
+    odd: Sequence | None = None,
+) -> sp.Expr:
+    """A factor that sympy's light simplifications (``factor_terms``,
+    ``TR10i``) leave alone, from ``pools = (rates, angles, constants,
+    intermediates, t)``: a rate, its derivative, a constant, an
+    intermediate, an angle, or the sine or cosine of an angle or of the
+    first constant.  With ``odd``, one more kind: half the time one of
+    ``odd`` (factors whose arguments hold a sum those simplifications
+    would change), else a rate.
+
+    >>> t = sp.Symbol("t")
+    >>> f = plain_factor(random.Random(1), ([t], [t], [t], [t], t))
+    >>> f.has(t)
+    True
+    """
+    rates, angles, constants, intermediates, t = pools
+    kind = rng.randrange(6 if odd is None else 7)
+    if kind == 6:
+        return rng.choice(odd if rng.random() < 0.5 else rates)
+    if kind == 0:
+        return rng.choice(rates)
+    if kind == 1:
+        return sp.Derivative(rng.choice(rates), t)
+    if kind == 2:
+        return rng.choice(constants)
+    if kind == 3:
+        return rng.choice(intermediates)
+    if kind == 4:
+        return rng.choice(angles)
+    return rng.choice([sp.sin, sp.cos])(rng.choice(list(angles) + list(constants[:1])))

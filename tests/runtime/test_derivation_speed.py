@@ -10,6 +10,7 @@ import random
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
+from random_exprs import plain_factor, written_tree
 from sympy.core.mul import _keep_coeff
 from sympy.physics.mechanics import dynamicsymbols
 
@@ -30,27 +31,9 @@ ODD = [
 ]
 
 
-def _tree(e) -> str:
-    """``e`` written with every argument in its stored order."""
-    if isinstance(e, sp.Basic) and e.args and not e.is_Atom:
-        return type(e).__name__ + "(" + ",".join(_tree(a) for a in e.args) + ")"
-    return sp.srepr(e)
-
-
 def _plain(rng: random.Random) -> sp.Expr:
     """A factor ``factor_terms`` leaves alone."""
-    kind = rng.randrange(6)
-    if kind == 0:
-        return rng.choice(U)
-    if kind == 1:
-        return sp.Derivative(rng.choice(U), T)
-    if kind == 2:
-        return rng.choice(S)
-    if kind == 3:
-        return rng.choice(ZS)
-    if kind == 4:
-        return rng.choice(Q)
-    return rng.choice([sp.sin, sp.cos])(rng.choice(Q + S[:1]))
+    return plain_factor(rng, (U, Q, S, ZS, T))
 
 
 SEEDS = range(300)
@@ -106,10 +89,13 @@ def test_factors_fixed_with_powers_and_ones():
         if kin._factors_fixed(e):
             fixed += 1
             powers += e.has(sp.Pow)
-            assert _tree(sp.factor_terms(e)) == _tree(e), (seed, e)
+            assert written_tree(sp.factor_terms(e)) == written_tree(e), (seed, e)
         else:
             declined += 1
-        assert _tree(kin.factor_terms(e)) == _tree(sp.factor_terms(e)), (seed, e)
+        assert written_tree(kin.factor_terms(e)) == written_tree(sp.factor_terms(e)), (
+            seed,
+            e,
+        )
     assert fixed > 40 and declined > 100 and powers > 30, (fixed, declined, powers)
 
 
@@ -122,7 +108,7 @@ def test_common_power_base_is_declined():
         z**2 * u + z * U[1] + z,
     ]:
         assert not kin._factors_fixed(e), e
-        assert _tree(kin.factor_terms(e)) == _tree(sp.factor_terms(e))
+        assert written_tree(kin.factor_terms(e)) == written_tree(sp.factor_terms(e))
     e = -u * (U[1] * sp.cos(Q[0]) - U[2] * z) / sp.sqrt(1 - z**2) + U[3]
     assert kin._factors_fixed(e)
-    assert _tree(sp.factor_terms(e)) == _tree(e)
+    assert written_tree(sp.factor_terms(e)) == written_tree(e)

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
-from random_exprs import written_tree
+from random_exprs import plain_factor, written_tree
 from sympy.core.mul import _keep_coeff
 from sympy.physics.mechanics import dynamicsymbols
 from sympy.simplify.fu import TR10i
@@ -51,20 +51,7 @@ ODD = [
 
 def _plain(rng: random.Random) -> sp.Expr:
     """A factor ``factor_terms`` and ``TR10i`` leave alone."""
-    kind = rng.randrange(7)
-    if kind == 6:
-        return rng.choice(ODD if rng.random() < 0.5 else U)
-    if kind == 0:
-        return rng.choice(U)
-    if kind == 1:
-        return sp.Derivative(rng.choice(U), T)
-    if kind == 2:
-        return rng.choice(S)
-    if kind == 3:
-        return rng.choice(ZS)
-    if kind == 4:
-        return rng.choice(Q)
-    return rng.choice([sp.sin, sp.cos])(rng.choice(Q + S[:1]))
+    return plain_factor(rng, (U, Q, S, ZS, T), ODD)
 
 
 def _other(rng: random.Random) -> sp.Expr:
