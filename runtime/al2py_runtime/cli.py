@@ -323,7 +323,11 @@ def _main(ws: Any, source_lines: Sequence[str], argv: Sequence[str] | None) -> i
         if not ws.numerics.jobs:
             print(f"error: {ws.filename} has no CODE statement", file=sys.stderr)
         return 2 if errors or not written else 0
-    ws.print_transcript(source_lines)
+    # the process's own command: a long transcript printed on two
+    # processors where it may (none of the caller's threads to fork with)
+    from .names.responses import side_by_side
+
+    ws.print_transcript(source_lines, side_by_side())
     if args.no_run:
         return 0  # --no-run writes nothing
     outdir = Path(args.outdir)

@@ -5,7 +5,9 @@ model, the runtime's tables) so that only results travel back.
 
 ``al2py code`` forms its programs in such copies (``codegen.Formers``) and
 converts its script in one while it imports the runtime
-(``al2py.codegen_c.converted``).  Both start and end their copies here:
+(``al2py.codegen_c.converted``); ``python model.py`` prints a long
+transcript with one (``names.responses``).  All start and end their copies
+here:
 
 * :func:`fork_pool`: the pool, or None where ``fork`` is missing or no
   process can be made (the work is then done in this process);
@@ -21,14 +23,16 @@ sympy is imported).
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
+import os
 import signal
 from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor
 from contextlib import contextmanager
 from typing import Any
 
-__all__ = ["end_pool", "fork_pool", "forking", "started"]
+__all__ = ["end_pool", "fork_pool", "forking", "processors", "started"]
 
 #: the signals a copy acts on as :func:`started` says, held back meanwhile
 _HELD = tuple(
@@ -36,6 +40,15 @@ _HELD = tuple(
     for name in ("SIGINT", "SIGTERM", "SIGHUP")
     if hasattr(signal, name)
 )
+
+
+def processors() -> int:
+    """The processors this process may run on (at least 1)."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    if affinity is not None:
+        with contextlib.suppress(OSError):
+            return max(1, len(affinity(0)))
+    return os.cpu_count() or 1
 
 
 def fork_pool(

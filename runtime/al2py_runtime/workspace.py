@@ -820,8 +820,14 @@ class Workspace(Mapping):
         """``Exit``/``Quit``: the script ends here (the transcript stops too)."""
         self._exit_line = line
 
-    def transcript(self, source: Iterable[str]) -> list[str]:
-        """The transcript lines Autolev would print for ``source``."""
+    def transcript(self, source: Iterable[str], copies: int = 1) -> list[str]:
+        """The transcript lines Autolev would print for ``source``.
+
+        ``copies`` 2: a long transcript is printed by this process and a
+        forked copy of it at once (:mod:`.names.responses`; ``python
+        model.py`` asks for it where it may, :func:`.names.responses.side_by_side`):
+        the same lines."""
+        from .names.responses import ResponseLines
         from .names.transcript import transcript_lines
 
         lines = list(source)
@@ -835,17 +841,17 @@ class Workspace(Mapping):
         # the printer's memos make many small objects that all stay: the
         # garbage collector, run at its default pace, walks them again and
         # again (a fifth of the printing) and finds nothing
-        with (
-            collector.Quiet(),
-            progress.task("printing the transcript", unit="responses") as task,
-        ):
-            task.doing("naming intermediates")
-            shown = self._with_intermediates(self.responses)
-            task.doing("")
-            task.update(0, len(shown))
-            out = transcript_lines(
-                lines, shown, self.model.displayed, tick=task.advance
-            )
+        with collector.Quiet():
+            with progress.task("printing the transcript", unit="responses") as task:
+                task.doing("naming intermediates")
+                shown = self._with_intermediates(self.responses)
+            # a copy is forked (if any) before the next progress line's
+            # thread starts
+            printed = ResponseLines(shown, self.model.displayed, copies)
+            with progress.task(
+                "printing the transcript", len(shown), unit="responses"
+            ) as task:
+                out = transcript_lines(lines, shown, printed=printed, tick=task.advance)
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 
@@ -885,8 +891,9 @@ class Workspace(Mapping):
                 out.append(r)
         return out
 
-    def print_transcript(self, source: Iterable[str]) -> None:
-        for line in self.transcript(source):
+    def print_transcript(self, source: Iterable[str], copies: int = 1) -> None:
+        """Print :meth:`transcript` (``copies``: as there)."""
+        for line in self.transcript(source, copies):
             print(line)
 
     def write_saved_files(self, source: Iterable[str], outdir: str = ".") -> list[str]:

@@ -17,8 +17,6 @@ equations only (no driver).  One description of the program
 
 from __future__ import annotations
 
-import contextlib
-import os
 from collections.abc import Mapping
 from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
@@ -304,14 +302,7 @@ DEFAULT_WORKERS = 4
 def available_workers() -> int:
     """``al2py code``'s default number of workers: the processors this
     process may run on, at most :data:`DEFAULT_WORKERS`."""
-    affinity = getattr(os, "sched_getaffinity", None)
-    count = None
-    if affinity is not None:
-        with contextlib.suppress(OSError):
-            count = len(affinity(0))
-    if count is None:
-        count = os.cpu_count() or 1
-    return max(1, min(count, DEFAULT_WORKERS))
+    return max(1, min(copies.processors(), DEFAULT_WORKERS))
 
 
 class Formers:

@@ -14,9 +14,12 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .settings import Response
+
+if TYPE_CHECKING:
+    from .responses import ResponseLines
 
 __all__ = ["logical_lines", "transcript_lines"]
 
@@ -47,34 +50,32 @@ def transcript_lines(
     source: Sequence[str],
     responses: Iterable[Response],
     form: Callable[[Any], Any] | None = None,
-    tick: Callable[[], None] | None = None,
+    tick: Callable[[int], None] | None = None,
+    printed: ResponseLines | None = None,
 ) -> list[str]:
     """The full transcript as text lines.  ``form(value)`` forms each value
-    that is not verbatim just before it is printed; ``tick()`` after each
-    response is printed (progress)."""
-    from .printing import Printing
+    that is not verbatim just before it is printed; ``tick(n)`` after each
+    ``n`` responses are printed (progress).  ``printed``: the printer of
+    these responses already made (:class:`.responses.ResponseLines`, which
+    may share the printing with a forked copy; ``form`` is its own)."""
+    from .responses import ResponseLines
 
-    by_line: dict[int | None, list[Response]] = defaultdict(list)
-    for r in responses:
-        by_line[r.line].append(r)
+    responses = list(responses)
+    if printed is None:
+        printed = ResponseLines(responses, form)
+    texts = printed.lines(tick)
+    by_line: dict[int | None, list[int]] = defaultdict(list)
+    for i, r in enumerate(responses):
+        by_line[r.line].append(i)
     out: list[str] = []
-    printing = Printing()
-
-    def lines_of(r: Response) -> list[str]:
-        value = r.value if form is None or r.verbatim else form(r.value)
-        lines = printing.format_response(r.label, value, r.digits)
-        if tick is not None:
-            tick()
-        return lines
-
-    _interleave(source, by_line, lines_of, out)
+    _interleave(source, by_line, texts.__getitem__, out)
     return out
 
 
 def _interleave(
     source: Sequence[str],
-    by_line: dict[int | None, list[Response]],
-    lines_of: Callable[[Response], list[str]],
+    by_line: dict[int | None, list[int]],
+    lines_of: Callable[[int], list[str]],
     out: list[str],
 ) -> None:
     """The numbered input lines, each followed by its responses' lines."""
