@@ -134,6 +134,26 @@ def test_nested_tasks_show_the_innermost_and_echo_clears_first(monkeypatch):
 
 
 @pytest.mark.parametrize("terminal", [True, False])
+def test_converting_a_script(tmp_path, terminal):
+    shutil.copy(TUTOR6, tmp_path / "tutor6.al")
+    status, err = _run(
+        [sys.executable, "-m", "al2py", "tutor6.al", "-o", "t6.py"],
+        cwd=tmp_path,
+        terminal=terminal,
+    )
+    assert status == 0
+    assert (tmp_path / "t6.py").read_text() == convert(
+        TUTOR6.read_text(), "tutor6.al"
+    ).code
+    if terminal:
+        for k, step in enumerate(["parsing", "expanding", "analysing", "generating"]):
+            assert f"\rconverting tutor6.al {k} of 5 steps ({20 * k}%): {step}," in err
+        assert err.endswith("\r")  # cleared
+    else:
+        assert err == ""
+
+
+@pytest.mark.parametrize("terminal", [True, False])
 def test_printing_a_transcript(tutor6, terminal):
     status, err = _run(
         [sys.executable, "tutor6.py", "--no-run"], cwd=tutor6, terminal=terminal

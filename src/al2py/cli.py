@@ -21,11 +21,13 @@ import os  # part of the module interface (tests patch cli.os)
 import sys
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .lines import split_lines
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from . import batch
 
 __all__ = ["main"]
@@ -375,6 +377,22 @@ def _live(what: str, total: int, unit: str):
     return progress.task(what, total, unit=unit)
 
 
+def _stepper(task: Any) -> Callable[[str], None] | None:
+    """The ``step`` of a conversion shown by ``task`` (:func:`_live`'s,
+    None when not shown): the step named, those before it counted done."""
+    if task is None:
+        return None
+    count = 0
+
+    def step(what: str) -> None:
+        nonlocal count
+        task.update(count)
+        count += 1
+        task.doing(what)
+
+    return step
+
+
 def _echo(line: str) -> None:
     """A line on standard error that does not mix with the live line."""
     from al2py_runtime import progress
@@ -498,10 +516,12 @@ def _convert_file(source: str, output: str | None) -> int:
         filename = source
     from .errors import AutolevError
     from .static_checks import too_deep, too_large, with_source_line
-    from .transpile import convert  # sympy: only when a command needs it
+    from .transpile import STEPS, convert  # sympy: only when a command needs it
 
     try:
-        result = convert(text, filename)
+        # a large script takes seconds: its step on a terminal (not for "-")
+        with _live(f"converting {Path(filename).name}", len(STEPS), "steps") as task:
+            result = convert(text, filename, step=_stepper(task))
     except AutolevError as exc:
         raise with_source_line(exc, filename, split_lines(text)) from None
     except RecursionError:

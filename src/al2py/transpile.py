@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import sys
 import textwrap
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache, partial
 from pathlib import Path
@@ -124,10 +125,12 @@ def convert(
     script_dir: Path | None = None,
     autolevpath: str | None = None,
     formatted: bool = True,
+    step: Callable[[str], None] | None = None,
 ) -> Conversion:
     """Convert Autolev source ``text`` into the source of a Python module
     (formatted by black unless ``formatted`` is false: ``al2py code`` runs
     the module without showing it, as modules over :data:`BLACK_LIMIT` are).
+    ``step(what)`` is told as each of the :data:`STEPS` begins (progress).
 
     Raises :class:`al2py.errors.AutolevError` (with a source span) for input
     that is malformed or not supported.
@@ -139,7 +142,17 @@ def convert(
     # 180 kB script); the conversion's cyclic garbage waits for the next
     # collection (a tenth more memory at the peak)
     with collector.paused():
-        return _convert(text, filename, script_dir, autolevpath, formatted)
+        return _convert(
+            text, filename, script_dir, autolevpath, formatted, step or _no_step
+        )
+
+
+#: the steps of a conversion, as ``convert`` tells its ``step``
+STEPS = ("parsing", "expanding", "analysing", "generating", "formatting")
+
+
+def _no_step(what: str) -> None:
+    pass
 
 
 def _convert(
@@ -148,10 +161,12 @@ def _convert(
     script_dir: Path | None,
     autolevpath: str | None,
     formatted: bool,
+    step: Callable[[str], None],
 ) -> Conversion:
     text = text.removeprefix("\ufeff")  # a byte-order mark (Windows editors)
     # Long flat sums make deep (left-leaning) trees; give the walk room.
     sys.setrecursionlimit(max(sys.getrecursionlimit(), 20_000))
+    step("parsing")
     static_checks.check_text(text, filename)
     script, errors = parse_partial(text, filename)
     if script_dir is None:
@@ -159,7 +174,9 @@ def _convert(
             Path(filename).parent if filename not in ("-", "<stdin>") else Path.cwd()
         )
     try:
+        step("expanding")
         stmts = expand(script, parse, script_dir=script_dir, autolevpath=autolevpath)
+        step("analysing")
         for check in (static_checks.check_statements, static_checks.check_orientations):
             try:
                 check(stmts)
@@ -172,6 +189,7 @@ def _convert(
         for err in errors:
             _attach_line(err, script.lines, filename)
         raise errors[0] if len(errors) == 1 else ErrorList(errors)
+    step("generating")
     generator = Generator(facts, script.lines)
     try:
         body = generator.body(stmts)
@@ -199,6 +217,7 @@ def _convert(
     )
     try:
         if formatted and len(code) <= BLACK_LIMIT:
+            step("formatting")
             code = _black(code)
         code = attach_echoes(code)  # after black: only lines that fit move
         # Python itself must load the module: an expression nested too deeply
