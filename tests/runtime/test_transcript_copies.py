@@ -119,3 +119,20 @@ def test_transcript_numbers_lines_after_shared_printing() -> None:
     assert alone[0] == "(1) Z1 = something"
     assert alone[1].startswith("-> (2) Z1 = ")
     assert alone[-1].startswith(f"-> ({len(alone)}) Z{len(responses)} = ")
+
+
+def test_no_copy_while_another_thread_runs() -> None:
+    import threading
+
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait)
+    other.start()
+    try:
+        assert R.side_by_side() == 1
+    finally:
+        stop.set()
+        other.join()
+    if threading.active_count() == 1:  # this process alone again
+        from al2py_runtime.copies import processors
+
+        assert R.side_by_side() == min(2, processors())
