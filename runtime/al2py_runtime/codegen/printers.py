@@ -214,15 +214,9 @@ class Remembering(ProgramPrinter):
             and cpart[0] is not sp.S.NegativeOne
         ):
             cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
+        # a number's key comes before any other's
         first = 1 if cpart and cpart[0].is_Number else 0
-        if all(type(x) is sp.Symbol for x in cpart[first:]):
-            # a number's key comes before any other, a plain symbol's is
-            # its class's, then its name
-            cpart[first:] = sorted(cpart[first:], key=_name)
-        else:
-            keys = self._keys
-            # (a key found is read here: most factors were keyed before)
-            cpart.sort(key=lambda x: keys.get(x) or sort_key_in(x, keys))
+        cpart[first:] = key_order(cpart[first:], self._keys)  # type: ignore
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -378,19 +372,9 @@ def _ordered_by_monomials(
             monomial.append(power)
             gens.add(power[0])
         found.append(monomial)
-    # a plain symbol's key is its class's, then its name
-    plain = all(type(g) is sp.Symbol for g in gens)
-    listed = list(gens)
-    if plain:
-        marked = sorted([(g.name, i) for i, g in enumerate(listed)])
-    else:  # (a key found is read here: most generators were keyed before)
-        marked = sorted(
-            [(keys.get(g) or sort_key_in(g, keys), i) for i, g in enumerate(listed)]
-        )
-    for i in range(1, len(marked)):
-        if marked[i][0] == marked[i - 1][0]:
-            return None  # two keys alike: sympy's order of them is the set's
-    ordered = [listed[i] for _, i in marked]
+    ordered = key_order(gens, keys, True)
+    if ordered is None:
+        return None  # two keys alike: sympy's order of them is the set's
     rank = {g: i for i, g in enumerate(ordered)}
     size = len(rank)
     keyed = []
@@ -407,6 +391,68 @@ def _ordered_by_monomials(
         if keyed[i][0] == keyed[i - 1][0]:
             return None
     return [term for _, term in keyed]
+
+
+def key_order(items: Any, keys: dict, distinct: bool = False) -> list | None:
+    """``sorted(items, key=default_sort_key)`` (equal keys in their order
+    in ``items``), each key formed once per ``keys``; with ``distinct``,
+    None when two keys are equal.
+
+    A plain name's key is its class's key (``Symbol.class_key()``), then
+    its name: names are sorted by name alone.  When every other item's key
+    begins with a class key above the names' (a sum, a function, their
+    powers: :func:`_head`), the names come first, then the others by their
+    keys, and a lone other item's key is not formed."""
+    names = []
+    others = []
+    for x in items:
+        if type(x) is _NAME:
+            names.append(x)
+        else:
+            others.append(x)
+    names.sort(key=_BY_NAME)
+    if distinct:
+        for i in range(1, len(names)):
+            if names[i].name == names[i - 1].name:
+                return None
+    if not others:
+        return names
+    if len(others) == 1:
+        if not names or _head(others[0], keys) > _NAME_CLASS_KEY:
+            return names + others
+        return _by_keys(list(items), keys, distinct)
+    ordered = _by_keys(others, keys, distinct)
+    if not names or ordered is None:
+        return ordered
+    if keys[ordered[0]][0] > _NAME_CLASS_KEY:
+        return names + ordered
+    return _by_keys(list(items), keys, distinct)
+
+
+def _by_keys(items: list, keys: dict, distinct: bool) -> list | None:
+    """:func:`key_order` of ``items`` by their keys."""
+    # (a key found is read here: most were keyed before)
+    marked = [(keys.get(x) or sort_key_in(x, keys), i) for i, x in enumerate(items)]
+    marked.sort(key=_first)
+    if distinct:
+        for i in range(1, len(marked)):
+            if marked[i][0] == marked[i - 1][0]:
+                return None
+    return [items[i] for _, i in marked]
+
+
+def _head(item: Any, keys: dict) -> tuple:
+    """``default_sort_key(item)[0]`` (the class key sympy's key begins
+    with): a sum's or a function's class key, read off its class (its
+    key, ``Expr.sort_key``, begins with it: the coefficient 1, not a
+    power), else its key's, formed once per ``keys``."""
+    found = keys.get(item)
+    if found is not None:
+        return found[0]
+    cls = type(item)
+    if cls.sort_key is _EXPR_SORT_KEY and (cls is sp.Add or isinstance(item, _FUNCTION)):
+        return cls.class_key()
+    return sort_key_in(item, keys)[0]
 
 
 def _ordered_by_names(terms: tuple) -> list | None:
@@ -476,6 +522,9 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
 
 
 _BY_NAME = operator.attrgetter("name")
+_NAME_CLASS_KEY = sp.Symbol.class_key()
+_EXPR_SORT_KEY = sp.Expr.sort_key
+_FUNCTION = sp.Function
 #: the terms ``_ordered_terms`` puts first (as ``Expr.as_ordered_terms`` does)
 _NUMERIC = (sp.Number, sp.NumberSymbol)
 

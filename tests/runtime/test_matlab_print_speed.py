@@ -1,0 +1,124 @@
+"""The MATLAB printer's shorter ways (issue 35: ``al2py code`` faster, the
+same bytes) give sympy's order and text: names ordered by name before the
+other items of a sum's generators or a product's factors
+(``printers.key_order``, a lone other item's key not formed), on seeded
+random sums and products compared with sympy's ``default_sort_key``,
+``as_ordered_terms`` and ``OctaveCodePrinter``."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+from al2py_runtime.codegen.octave import _Printer as OctavePrinter
+from al2py_runtime.codegen.printers import _head, _ordered_terms, key_order
+from random_exprs import ExpressionMaker
+from sympy.printing.octave import OctaveCodePrinter
+
+#: names that sort apart by digits and case, one name twice with other
+#: assumptions (two keys alike)
+NAMES = list(sp.symbols("Q1 Q10 Q2 U4 z1 z12 z2 LAM ibxx IBxx", real=True))
+NAMES += [sp.Symbol("z1"), sp.Symbol("a")]
+X, Y = NAMES[0], NAMES[4]
+#: items whose keys begin above a name's, and some that do not (powers of
+#: names, number constants, a dummy, numbers)
+OTHERS = [
+    sp.sin(X),
+    sp.cos(X + Y),
+    sp.exp(Y),
+    sp.Abs(X),
+    sp.tan(sp.Symbol("LAM", real=True)),
+    sp.Function("f")(X),
+    1 - Y**2,
+    X + Y + 1,
+    sp.sqrt(1 - Y**2),
+    (X + Y) ** sp.Rational(3, 2),
+    X**2,
+    Y ** sp.Rational(1, 2),
+    sp.pi,
+    sp.Dummy("d"),
+    sp.Integer(3),
+    sp.Rational(-1, 2),
+]
+
+
+def _items(rng: random.Random) -> list:
+    pool = NAMES * 2 + OTHERS
+    return [rng.choice(pool) for _ in range(rng.randint(1, 7))]
+
+
+def test_heads_are_sympys():
+    for item in NAMES + OTHERS:
+        assert _head(item, {}) == sp.default_sort_key(item)[0], item
+        keys: dict = {}
+        sp.default_sort_key(item)
+        assert _head(item, keys) == _head(item, keys), item
+
+
+def test_key_order_is_sympys():
+    rng = random.Random(35)
+    for _ in range(3000):
+        items = _items(rng)
+        want = sorted(items, key=sp.default_sort_key)
+        got = key_order(items, {})
+        assert [sp.srepr(x) for x in got] == [sp.srepr(x) for x in want], items
+        keyed = [sp.default_sort_key(x) for x in want]
+        alike = any(a == b for a, b in zip(keyed, keyed[1:], strict=False))
+        distinct = key_order(items, {}, True)
+        if alike:
+            assert distinct is None, items
+        else:
+            assert distinct == got, items
+
+
+def test_key_order_with_keys_known():
+    # one memo for all: a key found before is read, not formed again
+    rng = random.Random(36)
+    keys: dict = {}
+    for _ in range(1000):
+        items = _items(rng)
+        want = sorted(items, key=sp.default_sort_key)
+        assert key_order(items, keys) == want, items
+
+
+def test_sums_are_ordered_as_sympys():
+    rng = random.Random(37)
+    factors = NAMES + OTHERS[:12]
+    for _ in range(2000):
+        terms = []
+        for _ in range(rng.randint(2, 8)):
+            powers = [
+                rng.choice(factors) ** rng.choice([1, 1, 1, 2, -1, -2])
+                for _ in range(rng.randint(0, 4))
+            ]
+            terms.append(rng.choice([1, 1, -1, 2, sp.Rational(-3, 2)]) * sp.Mul(*powers))
+        expr = sp.Add(*terms)
+        if not expr.is_Add or expr.has(sp.zoo, sp.nan):
+            continue
+        for named in (True, False):
+            got = _ordered_terms(expr, {}, {}, {}, named)
+            assert got == expr.as_ordered_terms(), expr
+
+
+MAKER = ExpressionMaker(
+    leaves=NAMES + OTHERS[:8] + [sp.Integer(2), sp.Float(0.25)],
+    coefficients=[sp.Integer(2), sp.Integer(-3), sp.Rational(1, 2), -1],
+    exponents=[2, 3, -1, -2, sp.Rational(1, 2), sp.Rational(-3, 2)],
+    leaf_chance=0.25,
+)
+
+
+def test_random_statements_print_as_sympys():
+    rng = random.Random(38)
+    ours = OctavePrinter({"strict": True})
+    count = 0
+    while count < 600:
+        expr = MAKER.make(rng, 4)
+        if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or expr.has(sp.Function("f")):
+            continue
+        count += 1
+        theirs = OctaveCodePrinter({"strict": True})
+        target = f"z{count}"
+        assert ours.doprint(expr, assign_to=target) == theirs.doprint(
+            expr, assign_to=target
+        ), expr
