@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import random
 
+import pytest
 import sympy as sp
 from al2py_runtime.codegen.octave import _Printer as OctavePrinter
 from al2py_runtime.codegen.printers import _head, _ordered_terms, key_order
@@ -91,7 +92,9 @@ def test_sums_are_ordered_as_sympys():
                 rng.choice(factors) ** rng.choice([1, 1, 1, 2, -1, -2])
                 for _ in range(rng.randint(0, 4))
             ]
-            terms.append(rng.choice([1, 1, -1, 2, sp.Rational(-3, 2)]) * sp.Mul(*powers))
+            terms.append(
+                rng.choice([1, 1, -1, 2, sp.Rational(-3, 2)]) * sp.Mul(*powers)
+            )
         expr = sp.Add(*terms)
         if not expr.is_Add or expr.has(sp.zoo, sp.nan):
             continue
@@ -122,3 +125,41 @@ def test_random_statements_print_as_sympys():
         assert ours.doprint(expr, assign_to=target) == theirs.doprint(
             expr, assign_to=target
         ), expr
+
+
+def _with_special(rng: random.Random) -> sp.Expr:
+    """A random statement, a third of them holding a part that makes it not
+    plain (a number constant, ``re``, an element of an ``IndexedBase``),
+    or ``sinc`` (printed with ``pi``, held by none of its parts)."""
+    v = sp.IndexedBase("v")
+    special = [sp.pi * X, sp.re(sp.Symbol("a")), v[1] * Y, sp.E + Y, sp.sinc(X)]
+    expr = MAKER.make(rng, 3)
+    if rng.random() < 0.35:
+        part = rng.choice(special)
+        expr = rng.choice([expr + part, expr * part, part, part + Y])
+    return expr
+
+
+def test_watched_statements_print_as_sympys():
+    """One printer for all statements (the plain ones printed watching for
+    the parts that make a statement not plain, each part's text
+    remembered), sympy's printer afresh for each; a statement sympy cannot
+    print raises in both."""
+    rng = random.Random(39)
+    ours = OctavePrinter({"strict": True})
+    count = 0
+    while count < 800:
+        expr = _with_special(rng)
+        if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or expr.has(sp.Function("f")):
+            continue
+        count += 1
+        target = rng.choice([f"z{count}", sp.Symbol(f"z{count}"), None])
+        try:
+            want = OctaveCodePrinter({"strict": True}).doprint(expr, assign_to=target)
+        except Exception as exc:  # noqa: BLE001
+            with pytest.raises(type(exc)):
+                ours.doprint(expr, assign_to=target)
+            continue
+        assert ours.doprint(expr, assign_to=target) == want, expr
+        # again: the statement's parts remembered
+        assert ours.doprint(expr, assign_to=target) == want, expr

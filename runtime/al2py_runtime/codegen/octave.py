@@ -11,10 +11,11 @@ from typing import Any
 import sympy as sp
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
+from sympy.tensor.indexed import Indexed
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import Remembering, names_sorted
+from .printers import _SPECIAL, Remembering, names_sorted
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -32,8 +33,56 @@ class _Printer(Remembering, OctaveCodePrinter):
     """sympy's MATLAB printer, the same text faster (see
     :class:`.printers.Remembering`)."""
 
+    def __init__(self, settings: dict | None = None) -> None:
+        super().__init__(settings)
+        #: sympy's ``order`` setting, read once (a property of the printer)
+        self._order_setting = self.order
+        #: whether the printer orders a product's factors
+        self._orders_factors = self._order_setting not in ("old", "none")
+        #: printing a statement as plain, watching for WATCHED parts; one seen
+        self._watching = self._watched = False
+
+    #: the parts whose printing makes a statement not plain
+    #: (:meth:`~.printers.ProgramPrinter.is_plain`): those it walks for,
+    #: and an element of an ``IndexedBase`` (printed by its label)
+    WATCHED = (*_SPECIAL, Indexed)
+
+    def doprint(self, expr: Any, assign_to: Any = None) -> str:
+        """``ProgramPrinter.doprint``, the same text, without walking a
+        statement for the parts that make it not plain: a sum, product or
+        name assigned to nothing, a name or a symbol is printed as a plain
+        statement while every part printed through sympy's ``_print`` (all
+        but sums, products and names, which hold none, and the parts
+        printed before, remembered only where they hold none) is watched
+        for those; when one is printed (or the printing fails), the parts'
+        texts remembered since are forgotten and the statement printed as
+        ``ProgramPrinter.doprint`` prints it."""
+        if type(expr) not in self._own or not (
+            assign_to is None or isinstance(assign_to, str | sp.Symbol)
+        ):
+            return super().doprint(expr, assign_to)
+        texts = self._texts
+        start = len(texts)
+        self._watching, self._watched = True, False
+        try:
+            text = self.plain_text(expr, assign_to)
+        except Exception:  # noqa: BLE001 - printed again as the rule prints it
+            self._watched = True
+        finally:
+            self._watching = False
+        if not self._watched:
+            return text
+        for _ in range(len(texts) - start):
+            texts.popitem()  # (the last remembered first)
+        return super().doprint(expr, assign_to)
+
+    def _print(self, expr: Any, **kwargs: Any) -> str:
+        if self._watching and isinstance(expr, self.WATCHED):
+            self._watched = True
+        return super()._print(expr, **kwargs)
+
     def _print_Add(self, expr: Any, order: Any = None) -> str:
-        if order is not None or self.order is not None:
+        if order is not None or self._order_setting is not None:
             return self.print_ordered_add(expr, order)
         found = names_sorted(expr.args)
         if found is None:
@@ -49,26 +98,31 @@ class _Printer(Remembering, OctaveCodePrinter):
         product of names (after -1 or nothing) as :meth:`names_product`
         prints it, from those sorted names (not sorted again)."""
         part = self.print_part
-        texts = {}
+        out = []
+        # (no term is put in parentheses: a name's precedence is an atom's,
+        # a product's after a number a product's or, after a negative one,
+        # a sum's, none below the sum's)
         for term, names in found:
+            text = None
             if type(term) is sp.Mul:
                 first = term.args[0]
                 if first is _MINUS_ONE:
-                    texts[term] = "-" + ".*".join([part(a) for a in names])
+                    text = "-" + ".*".join([part(a) for a in names])
                 elif not first.is_Number:
-                    texts[term] = ".*".join([part(a) for a in names])
-        return backends.join_sum(
-            self,
-            [term for term, _names in found],
-            self.remembered_precedence(expr),
-            self.remembered_precedence,
-            texts.get,
-        )
+                    text = ".*".join([part(a) for a in names])
+            if text is None:
+                text = part(term)
+            if text.startswith("-"):
+                out += ["-", text[1:]]
+            else:
+                out += ["+", text]
+        sign = out.pop(0)
+        return ("" if sign == "+" else sign) + " ".join(out)
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
-        order = None if self.order in ("old", "none") else self.remembered_factors
+        order = self.remembered_factors if self._orders_factors else None
         if order is not None:
             text = self.names_product(expr)
             if text is not None:
@@ -108,13 +162,19 @@ class _Printer(Remembering, OctaveCodePrinter):
         and names, that commute (most products), when the printer orders
         factors: ordered by name (``remembered_factors``), each as it is,
         joined by ``.*``; None for any other product."""
-        if self.order in ("old", "none"):
+        if not self._orders_factors:
             return None
-        names = backends.signed_names(expr)
-        if names is None or not _commute(names[1]):
+        args = expr.args  # (as backends.signed_names splits it)
+        sign = ""
+        if args[0] is _MINUS_ONE:
+            sign, args = "-", args[1:]
+        if not args:
             return None
-        ordered = sorted(names[1], key=_name)
-        return names[0] + ".*".join([self.print_part(a) for a in ordered])
+        for a in args:
+            if type(a) is not _NAME or not a.is_commutative:
+                return None
+        ordered = sorted(args, key=_name)
+        return sign + ".*".join([self.print_part(a) for a in ordered])
 
     def joined_terms(self, expr: Any, terms: list) -> str:
         """The text of the sum ``expr`` of ``terms`` in that order (its
@@ -152,14 +212,7 @@ def _name(symbol: Any) -> str:
 
 
 _MINUS_ONE = sp.S.NegativeOne
-
-
-def _commute(names: tuple) -> bool:
-    """Whether all of ``names`` commute."""
-    for a in names:
-        if not a.is_commutative:
-            return False
-    return True
+_NAME = sp.Symbol
 
 
 def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:

@@ -138,6 +138,11 @@ class ProgramPrinter:
         printed here (see :class:`ProgramPrinter`)."""
         if not self.is_plain(expr, assign_to):
             return super().doprint(expr, assign_to)  # type: ignore[misc]
+        return self.plain_text(expr, assign_to)
+
+    def plain_text(self, expr: Any, assign_to: Any) -> str:
+        """``doprint(expr, assign_to)`` of a plain statement (see
+        :meth:`is_plain`)."""
         self._plain = True
         try:
             if assign_to is None:
@@ -450,7 +455,9 @@ def _head(item: Any, keys: dict) -> tuple:
     if found is not None:
         return found[0]
     cls = type(item)
-    if cls.sort_key is _EXPR_SORT_KEY and (cls is sp.Add or isinstance(item, _FUNCTION)):
+    if cls.sort_key is _EXPR_SORT_KEY and (
+        cls is sp.Add or isinstance(item, _FUNCTION)
+    ):
         return cls.class_key()
     return sort_key_in(item, keys)[0]
 
