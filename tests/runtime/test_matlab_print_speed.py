@@ -163,3 +163,73 @@ def test_watched_statements_print_as_sympys():
         assert ours.doprint(expr, assign_to=target) == want, expr
         # again: the statement's parts remembered
         assert ours.doprint(expr, assign_to=target) == want, expr
+
+
+def _sums_of_names(rng: random.Random) -> sp.Expr:
+    """A sum of names and products of names (after a number): names that
+    sort apart by digits and case, one name twice with other assumptions,
+    a name that does not commute, a name after every other (its first
+    character the last one), a product holding a name twice."""
+    odd = [sp.Symbol("z1"), sp.Symbol("nc", commutative=False)]
+    odd += [sp.Symbol("\U0010ffffw"), sp.Mul(X, X, evaluate=False)]
+    pool = NAMES[:10] * 3 + odd
+
+    def term() -> sp.Expr:
+        coefficient = rng.choice([1, 1, 1, -1, -1, 2, sp.Rational(-1, 2)])
+        return sp.Mul(coefficient, *rng.sample(pool, rng.randrange(1, 4)))
+
+    expr = sp.Add(*[term() for _ in range(rng.randrange(1, 8))])
+    return expr + rng.choice([0, 0, 0, 1, sp.Rational(3, 2)])
+
+
+def test_sums_of_names_print_as_sympys():
+    """Sums of names printed from each name's entry, kept by one printer
+    for all statements, as sympy prints them."""
+    rng = random.Random(40)
+    ours = OctavePrinter({"strict": True})
+    for k in range(3000):
+        expr = _sums_of_names(rng)
+        want = OctaveCodePrinter({"strict": True}).doprint(expr, assign_to="r")
+        assert ours.doprint(expr, assign_to="r") == want, expr
+        for part in expr.args[:2]:
+            want = OctaveCodePrinter({"strict": True}).doprint(part, assign_to="r")
+            assert ours.doprint(part, assign_to="r") == want, (k, part)
+
+
+def test_function_statements_print_as_sympys():
+    """A statement of a function's value (printed as a plain statement by
+    a strict printer), with Floats within (printed without their zeros
+    below the statement's own part), as sympy prints it; a ``Piecewise``,
+    ``re`` and the functions strict MATLAB cannot print as sympy's
+    printer does."""
+    rng = random.Random(41)
+    f = sp.Float(1.5)
+    calls = [
+        lambda e: sp.sin(e),
+        lambda e: sp.cos(e * f),
+        lambda e: sp.exp(e + f),
+        lambda e: sp.Abs(e),
+        lambda e: sp.sign(e),
+        lambda e: sp.floor(e),
+        lambda e: sp.atan2(e, f),
+        lambda e: sp.Max(e, f),
+        lambda e: sp.sinc(e),
+        lambda e: sp.re(e),
+        lambda e: sp.Heaviside(e),
+        lambda e: sp.Piecewise((e, X > 0), (f, True)),
+        lambda e: sp.Function("g")(e),
+        lambda e: sp.tan(sp.pi * e),
+    ]
+    ours = OctavePrinter({"strict": True})
+    for k in range(600):
+        expr = rng.choice(calls)(MAKER.make(rng, 2))
+        if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not isinstance(expr, sp.Function):
+            continue
+        target = rng.choice([f"z{k}", sp.Symbol(f"z{k}"), None])
+        try:
+            want = OctaveCodePrinter({"strict": True}).doprint(expr, assign_to=target)
+        except Exception as exc:  # noqa: BLE001
+            with pytest.raises(type(exc)):
+                ours.doprint(expr, assign_to=target)
+            continue
+        assert ours.doprint(expr, assign_to=target) == want, expr

@@ -212,6 +212,16 @@ class Remembering(ProgramPrinter):
                 break
         else:
             cpart, ncpart = list(factors), []
+        return self._ordered_factors(cpart, ncpart)
+
+    def commuting_order(self, factors: list) -> list:
+        """:meth:`remembered_factors` of the factors of a product that
+        commutes (so do they all)."""
+        return self._ordered_factors(list(factors), [])
+
+    def _ordered_factors(self, cpart: list, ncpart: list) -> list:
+        """:meth:`remembered_factors` of the commutative factors ``cpart``
+        and the others ``ncpart``."""
         if (
             cpart
             and cpart[0].is_Number
