@@ -12,7 +12,7 @@ import random
 import pytest
 import sympy as sp
 from al2py_runtime.codegen.octave import _Printer as OctavePrinter
-from al2py_runtime.codegen.printers import _head, _ordered_terms, key_order
+from al2py_runtime.codegen.printers import _head, _key, _ordered_terms, key_order
 from random_exprs import ExpressionMaker
 from sympy.printing.octave import OctaveCodePrinter
 
@@ -233,3 +233,44 @@ def test_function_statements_print_as_sympys():
                 ours.doprint(expr, assign_to=target)
             continue
         assert ours.doprint(expr, assign_to=target) == want, expr
+
+
+def test_keys_of_sums_are_sympys():
+    """A sum's key and a power of a sum's, formed with the printer's order
+    of the sum's terms, equal sympy's; their class key is read off."""
+    rng = random.Random(42)
+    keys: dict = {}
+    sums = ({}, {})
+    count = 0
+    while count < 800:
+        expr = MAKER.make(rng, 3)
+        if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not expr.is_Add:
+            continue
+        count += 1
+        power = sp.Pow(expr, rng.choice([-1, 2, sp.Rational(1, 2), sp.Rational(-3, 2)]))
+        for item in (expr, power):
+            want = sp.default_sort_key(item)
+            assert _head(item, {}) == want[0], item
+            assert _key(item, {}, ({}, {})) == want, item
+            assert _key(item, keys, sums) == want, item  # memos shared
+
+
+def test_products_of_sums_print_as_sympys():
+    """Products of names, sums and powers of sums (their factors ordered
+    by the sums' keys formed by the printer)."""
+    rng = random.Random(43)
+    ours = OctavePrinter({"strict": True})
+    sums = [MAKER.make(rng, 2) for _ in range(40)]
+    sums = [e for e in sums if e.is_Add and not e.has(sp.zoo, sp.nan, sp.Function("f"))]
+    for k in range(1500):
+        factors = rng.sample(NAMES[:8], rng.randrange(0, 3))
+        for _ in range(rng.randrange(1, 4)):
+            factors.append(
+                rng.choice(sums) ** rng.choice([1, 1, -1, 2, sp.Rational(-3, 2)])
+            )
+        expr = rng.choice([1, -1, 2]) * sp.Mul(*factors)
+        expr = expr + rng.choice([0, X * Y, sp.sin(X) * rng.choice(sums)])
+        if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+            continue
+        want = OctaveCodePrinter({"strict": True}).doprint(expr, assign_to="r")
+        assert ours.doprint(expr, assign_to="r") == want, (k, expr)

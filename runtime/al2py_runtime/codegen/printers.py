@@ -231,7 +231,9 @@ class Remembering(ProgramPrinter):
             cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
         # a number's key comes before any other's
         first = 1 if cpart and cpart[0].is_Number else 0
-        cpart[first:] = key_order(cpart[first:], self._keys)  # type: ignore
+        cpart[first:] = key_order(  # type: ignore
+            cpart[first:], self._keys, sums=(self._numbers, self._powers)
+        )
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -387,7 +389,7 @@ def _ordered_by_monomials(
             monomial.append(power)
             gens.add(power[0])
         found.append(monomial)
-    ordered = key_order(gens, keys, True)
+    ordered = key_order(gens, keys, True, (numbers, powers))
     if ordered is None:
         return None  # two keys alike: sympy's order of them is the set's
     rank = {g: i for i, g in enumerate(ordered)}
@@ -408,7 +410,9 @@ def _ordered_by_monomials(
     return [term for _, term in keyed]
 
 
-def key_order(items: Any, keys: dict, distinct: bool = False) -> list | None:
+def key_order(
+    items: Any, keys: dict, distinct: bool = False, sums: tuple | None = None
+) -> list | None:
     """``sorted(items, key=default_sort_key)`` (equal keys in their order
     in ``items``), each key formed once per ``keys``; with ``distinct``,
     None when two keys are equal.
@@ -417,7 +421,9 @@ def key_order(items: Any, keys: dict, distinct: bool = False) -> list | None:
     its name: names are sorted by name alone.  When every other item's key
     begins with a class key above the names' (a sum, a function, their
     powers: :func:`_head`), the names come first, then the others by their
-    keys, and a lone other item's key is not formed."""
+    keys, and a lone other item's key is not formed.  ``sums``: the number
+    tests and factors' powers remembered (:func:`_ordered_terms`), with
+    which a sum's key is formed (:func:`_key`)."""
     names = []
     others = []
     for x in items:
@@ -435,25 +441,50 @@ def key_order(items: Any, keys: dict, distinct: bool = False) -> list | None:
     if len(others) == 1:
         if not names or _head(others[0], keys) > _NAME_CLASS_KEY:
             return names + others
-        return _by_keys(list(items), keys, distinct)
-    ordered = _by_keys(others, keys, distinct)
+        return _by_keys(list(items), keys, distinct, sums)
+    ordered = _by_keys(others, keys, distinct, sums)
     if not names or ordered is None:
         return ordered
     if keys[ordered[0]][0] > _NAME_CLASS_KEY:
         return names + ordered
-    return _by_keys(list(items), keys, distinct)
+    return _by_keys(list(items), keys, distinct, sums)
 
 
-def _by_keys(items: list, keys: dict, distinct: bool) -> list | None:
+def _by_keys(
+    items: list, keys: dict, distinct: bool, sums: tuple | None
+) -> list | None:
     """:func:`key_order` of ``items`` by their keys."""
     # (a key found is read here: most were keyed before)
-    marked = [(keys.get(x) or sort_key_in(x, keys), i) for i, x in enumerate(items)]
+    marked = [(keys.get(x) or _key(x, keys, sums), i) for i, x in enumerate(items)]
     marked.sort(key=_first)
     if distinct:
         for i in range(1, len(marked)):
             if marked[i][0] == marked[i - 1][0]:
                 return None
     return [items[i] for _, i in marked]
+
+
+def _key(item: Any, keys: dict, sums: tuple | None) -> tuple:
+    """``sort_key_in(item, keys)``; with ``sums`` (the number tests and
+    factors' powers remembered), the key of a sum or a power of a sum
+    formed here, sympy's ``Expr.sort_key`` of it (the sum's class key, the
+    keys of its terms in ``as_ordered_terms``'s order, the exponent's key,
+    the coefficient 1) with the terms ordered by :func:`_ordered_terms`
+    (sympy's ``as_ordered_terms`` walks the sum again each time)."""
+    if sums is not None:
+        kind = type(item)
+        if kind is sp.Add:
+            base, exp = item, _ONE
+        elif kind is sp.Pow and type(item.base) is sp.Add:
+            base, exp = item.args
+        else:
+            return sort_key_in(item, keys)
+        terms = _ordered_terms(base, keys, sums[0], sums[1])
+        args = tuple([sort_key_in(t, keys) for t in terms])
+        key = (_ADD_CLASS_KEY, (len(args), args), sort_key_in(exp, keys), _ONE)
+        keys[item] = key
+        return key
+    return sort_key_in(item, keys)
 
 
 def _head(item: Any, keys: dict) -> tuple:
@@ -469,6 +500,8 @@ def _head(item: Any, keys: dict) -> tuple:
         cls is sp.Add or isinstance(item, _FUNCTION)
     ):
         return cls.class_key()
+    if cls is sp.Pow and type(item.base) is sp.Add:
+        return _ADD_CLASS_KEY  # (a power's key is its base's, then ...)
     return sort_key_in(item, keys)[0]
 
 
@@ -542,6 +575,8 @@ _BY_NAME = operator.attrgetter("name")
 _NAME_CLASS_KEY = sp.Symbol.class_key()
 _EXPR_SORT_KEY = sp.Expr.sort_key
 _FUNCTION = sp.Function
+_ADD_CLASS_KEY = sp.Add.class_key()
+_ONE = sp.S.One
 #: the terms ``_ordered_terms`` puts first (as ``Expr.as_ordered_terms`` does)
 _NUMERIC = (sp.Number, sp.NumberSymbol)
 
