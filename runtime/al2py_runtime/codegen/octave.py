@@ -12,11 +12,10 @@ from typing import Any
 import sympy as sp
 from sympy.core.numbers import equal_valued
 from sympy.printing.octave import OctaveCodePrinter
-from sympy.tensor.indexed import Indexed
 
 from ..jobs import backends
 from ..jobs.run import NumericsError
-from .printers import _SPECIAL, Remembering, names_sorted
+from .printers import Remembering, names_sorted
 from .program import Assign, Program, one_based_target
 
 __all__ = ["octave_source"]
@@ -34,6 +33,11 @@ class _Printer(Remembering, OctaveCodePrinter):
     """sympy's MATLAB printer, the same text faster (see
     :class:`.printers.Remembering`)."""
 
+    # doprint prints a sum, product, name or function's value without
+    # walking it first (see ProgramPrinter.doprint)
+    watches = True
+    plain_calls = True
+
     def __init__(self, settings: dict | None = None) -> None:
         super().__init__(settings)
         #: sympy's ``order`` setting, read once (a property of the printer)
@@ -44,49 +48,6 @@ class _Printer(Remembering, OctaveCodePrinter):
         self._inverses: dict = {}
         #: name -> (name, its text, the symbol): see _name_entry
         self._named: dict[str, tuple] = {}
-        #: printing a statement as plain, watching for WATCHED parts; one seen
-        self._watching = self._watched = False
-
-    #: the parts whose printing makes a statement not plain
-    #: (:meth:`~.printers.ProgramPrinter.is_plain`): those it walks for,
-    #: and an element of an ``IndexedBase`` (printed by its label)
-    WATCHED = (*_SPECIAL, Indexed)
-
-    def doprint(self, expr: Any, assign_to: Any = None) -> str:
-        """``ProgramPrinter.doprint``, the same text, without walking a
-        statement for the parts that make it not plain: a sum, product or
-        name, or a function's value in a strict printer (see
-        :func:`_plain_call`), assigned to nothing, a name or a symbol is
-        printed as a plain statement while every part printed through sympy's ``_print`` (all
-        but sums, products and names, which hold none, and the parts
-        printed before, remembered only where they hold none) is watched
-        for those; when one is printed (or the printing fails), the parts'
-        texts remembered since are forgotten and the statement printed as
-        ``ProgramPrinter.doprint`` prints it."""
-        plain = type(expr) in self._own or (self._remembers and _plain_call(expr))
-        if not plain or not (
-            assign_to is None or isinstance(assign_to, str | sp.Symbol)
-        ):
-            return super().doprint(expr, assign_to)
-        texts = self._texts
-        start = len(texts)
-        self._watching, self._watched = True, False
-        try:
-            text = self.plain_text(expr, assign_to)
-        except Exception:  # noqa: BLE001 - printed again as the rule prints it
-            self._watched = True
-        finally:
-            self._watching = False
-        if not self._watched:
-            return text
-        for _ in range(len(texts) - start):
-            texts.popitem()  # (the last remembered first)
-        return super().doprint(expr, assign_to)
-
-    def _print(self, expr: Any, **kwargs: Any) -> str:
-        if self._watching and isinstance(expr, self.WATCHED):
-            self._watched = True
-        return super()._print(expr, **kwargs)
 
     def _print_Add(self, expr: Any, order: Any = None) -> str:
         if order is not None or self._order_setting is not None:
@@ -319,15 +280,6 @@ _END = "\U0010ffff"
 #: :meth:`_Printer._names_order` of a sum it does not decide
 _UNKNOWN = object()
 _first = operator.itemgetter(0)
-
-
-def _plain_call(expr: Any) -> bool:
-    """Whether ``expr`` is a function's value (``sin(Q3)``), not a
-    ``Piecewise`` (which an assignment prints apart): its text as a
-    statement is ``lhs = rhs`` (sympy's ``_print_Assignment``), ``rhs``
-    printed one level less deep than ``doprint`` prints it, which only a
-    Float's text depends on, not a function's."""
-    return isinstance(expr, sp.Function) and not isinstance(expr, sp.Piecewise)
 
 
 def _joined_sum(texts: list, printer: Any) -> str:

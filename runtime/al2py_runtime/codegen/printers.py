@@ -31,7 +31,13 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["ProgramPrinter", "Remembering", "holds_instance", "names_sorted"]
+__all__ = [
+    "ProgramPrinter",
+    "Remembering",
+    "holds_instance",
+    "key_order",
+    "names_sorted",
+]
 
 #: what a statement holding one of is printed by sympy's ``doprint``, and
 #: a part holding one of is printed each time (see ProgramPrinter)
@@ -78,6 +84,12 @@ class ProgramPrinter:
     #: method for the class (``_print_Add``, ...), as sympy's ``_print``
     #: finds it, directly: their text does not depend on how deep they are
     OWN = (sp.Add, sp.Mul, sp.Symbol)
+    #: whether :meth:`doprint` prints a plain statement without walking it
+    #: first, watching for the parts that make it not plain
+    #: (:meth:`_watched_text`), and whether a function's value is printed so
+    #: too (:func:`_plain_call`)
+    watches = False
+    plain_calls = False
 
     def __init__(self, settings: dict | None = None) -> None:
         super().__init__(settings)  # type: ignore[call-arg]
@@ -90,6 +102,8 @@ class ProgramPrinter:
         self._precs: dict = {}
         self._remembers = strict
         self._plain = False  # printing a plain statement: nothing special
+        #: printing a plain statement not walked first; a special part seen
+        self._watching = self._watched = False
         self._own = {
             kind: getattr(self, f"_print_{kind.__name__}") for kind in self.OWN
         }
@@ -106,6 +120,8 @@ class ProgramPrinter:
         method = self._own.get(type(expr))
         if method is None:
             text = self._print(expr)  # type: ignore[attr-defined]
+            if self._watching and holds_instance(expr, _SPECIAL, self._special):
+                self._watched = True
         else:
             text = method(expr)
         if self._remembers and (
@@ -136,9 +152,53 @@ class ProgramPrinter:
     def doprint(self, expr: Any, assign_to: Any = None) -> str:
         """sympy's ``CodePrinter.doprint``, the same text; a plain statement
         printed here (see :class:`ProgramPrinter`)."""
+        if self.watches and self._watchable(expr, assign_to):
+            text = self._watched_text(expr, assign_to)
+            if text is not None:
+                return text
         if not self.is_plain(expr, assign_to):
             return super().doprint(expr, assign_to)  # type: ignore[misc]
         return self.plain_text(expr, assign_to)
+
+    def _watchable(self, expr: Any, assign_to: Any) -> bool:
+        """Whether :meth:`_watched_text` prints ``doprint(expr,
+        assign_to)``: a sum, product or name, or (``plain_calls``, in a
+        strict printer) a function's value, assigned to nothing, a name or
+        a symbol."""
+        if not (
+            type(expr) in self._own
+            or (self.plain_calls and self._remembers and _plain_call(expr))
+        ):
+            return False
+        return assign_to is None or isinstance(assign_to, str | sp.Symbol)
+
+    def _watched_text(self, expr: Any, assign_to: Any) -> str | None:
+        """``doprint(expr, assign_to)`` printed as a plain statement without
+        walking the statement for the parts that make it not plain (as
+        :meth:`is_plain` does): a part that :meth:`print_part` prints
+        through sympy's ``_print`` is asked whether it holds one (what is
+        not printed so is a sum, product or name, none of them, or was
+        printed before and remembered, as only parts holding none are; a
+        function's value is asked first); None when one does (or the
+        printing fails), the parts' texts remembered since forgotten."""
+        if type(expr) not in self._own and holds_instance(
+            expr, _SPECIAL, self._special
+        ):
+            return None
+        texts = self._texts
+        start = len(texts)
+        self._watching, self._watched = True, False
+        try:
+            text = self.plain_text(expr, assign_to)
+        except Exception:  # noqa: BLE001 - printed again as the rule prints it
+            self._watched = True
+        finally:
+            self._watching = False
+        if not self._watched:
+            return text
+        for _ in range(len(texts) - start):
+            texts.popitem()  # (the last remembered first)
+        return None
 
     def plain_text(self, expr: Any, assign_to: Any) -> str:
         """``doprint(expr, assign_to)`` of a plain statement (see
@@ -252,6 +312,15 @@ class Remembering(ProgramPrinter):
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
+
+
+def _plain_call(expr: Any) -> bool:
+    """Whether ``expr`` is a function's value (``sin(Q3)``), not a
+    ``Piecewise`` (which an assignment prints apart): its text as a
+    statement is ``lhs = rhs`` (sympy's ``_print_Assignment``), ``rhs``
+    printed one level less deep than ``doprint`` prints it, which only a
+    Float's text depends on, not a function's."""
+    return isinstance(expr, sp.Function) and not isinstance(expr, sp.Piecewise)
 
 
 def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
