@@ -5,6 +5,7 @@ Octave (``octave --eval STEM``) without warnings."""
 from __future__ import annotations
 
 import math
+import operator
 import textwrap
 from typing import Any
 
@@ -32,13 +33,115 @@ class _Printer(Remembering, OctaveCodePrinter):
     """sympy's MATLAB printer, the same text faster (see
     :class:`.printers.Remembering`)."""
 
+    # doprint prints a sum, product, name or function's value without
+    # walking it first (see ProgramPrinter.doprint)
+    watches = True
+    plain_calls = True
+
+    def __init__(self, settings: dict | None = None) -> None:
+        super().__init__(settings)
+        #: sympy's ``order`` setting, read once (a property of the printer)
+        self._order_setting = self.order
+        #: whether the printer orders a product's factors
+        self._orders_factors = self._order_setting not in ("old", "none")
+        #: a power -> its inverse (backends.product_parts)
+        self._inverses: dict = {}
+        #: name -> (name, its text, the symbol): see _name_entry
+        self._named: dict[str, tuple] = {}
+
     def _print_Add(self, expr: Any, order: Any = None) -> str:
-        if order is not None or self.order is not None:
+        if order is not None or self._order_setting is not None:
             return self.print_ordered_add(expr, order)
+        keyed = self._names_order(expr.args)
+        if keyed is not _UNKNOWN:
+            if keyed is None:
+                return self.print_unnamed_add(expr)
+            return _joined_sum([(term, text) for _key, term, text in keyed], self)
         found = names_sorted(expr.args)
         if found is None:
             return self.print_unnamed_add(expr)
         return self._names_sum(expr, found)
+
+    def _names_order(self, terms: tuple) -> list | None | object:
+        """:func:`.printers.names_sorted`'s order of a sum's ``terms``
+        (None where it gives None) as ``(key, term, text)``, ``text`` the
+        term's as :meth:`_names_sum` prints a name or a product of names
+        after -1 or nothing (None for other terms), read off the names'
+        entries (:meth:`_name_entry`); ``_UNKNOWN`` for a sum of a name
+        without an entry, or of a symbol named as another's entry (then
+        ``names_sorted`` decides).
+
+        The key of a term is its names sorted, then the end, after every
+        name (names_sorted's keys, ``(0, name)`` for a name and ``(1, "")``
+        for the end, compare so)."""
+        for term in terms:  # (what names_sorted gives None for, first)
+            kind = type(term)
+            if kind is sp.Mul:
+                args = term.args
+                if type(args[0]) is not _NAME and not args[0].is_Number:
+                    return None
+                for f in args[1:]:
+                    if type(f) is not _NAME:
+                        return None
+            elif kind is not _NAME:
+                return None
+        named = self._named
+        keyed = []
+        for term in terms:
+            kind = type(term)
+            if kind is _NAME:
+                factors: tuple = (term,)
+                lead = None
+            elif kind is sp.Mul:
+                factors = term.args
+                lead = factors[0]
+                if lead.is_Number:
+                    factors = factors[1:]
+                else:
+                    lead = None
+                if not factors:
+                    return None
+            else:
+                return None
+            entries = []
+            for f in factors:
+                if type(f) is not _NAME:
+                    return None
+                entry = named.get(f.name)
+                if entry is None:
+                    entry = self._name_entry(f)
+                if entry is None or entry[2] is not f:
+                    return _UNKNOWN
+                entries.append(entry)
+            if len(entries) > 1:
+                entries.sort(key=_first)
+                for i in range(1, len(entries)):
+                    if entries[i][0] == entries[i - 1][0]:
+                        return None  # a name twice
+                key = (*[entry[0] for entry in entries], _END)
+                text = ".*".join([entry[1] for entry in entries])
+            else:
+                key = (entries[0][0], _END)
+                text = entries[0][1]
+            if lead is not None:
+                text = "-" + text if lead is _MINUS_ONE else None
+            keyed.append((key, term, text))
+        keyed.sort(key=_first)
+        for i in range(1, len(keyed)):
+            if keyed[i][0] == keyed[i - 1][0]:
+                return None  # two terms of one monomial
+        return keyed
+
+    def _name_entry(self, name: Any) -> tuple | None:
+        """A new entry ``(its name, its text, name)`` of a name (a plain
+        symbol) that commutes, whose name comes before ``_END``, kept per
+        name for the printer (the first such symbol of its name); None for
+        another."""
+        key = name.name
+        if not name.is_commutative or not key < _END or key in self._named:
+            return None
+        entry = self._named[key] = (key, self.print_part(name), name)
+        return entry
 
     def _names_sum(self, expr: Any, found: list) -> str:
         """``print_ordered_add(expr)`` of a sum of names and products of
@@ -49,26 +152,22 @@ class _Printer(Remembering, OctaveCodePrinter):
         product of names (after -1 or nothing) as :meth:`names_product`
         prints it, from those sorted names (not sorted again)."""
         part = self.print_part
-        texts = {}
+        texts = []
         for term, names in found:
+            text = None
             if type(term) is sp.Mul:
                 first = term.args[0]
                 if first is _MINUS_ONE:
-                    texts[term] = "-" + ".*".join([part(a) for a in names])
+                    text = "-" + ".*".join([part(a) for a in names])
                 elif not first.is_Number:
-                    texts[term] = ".*".join([part(a) for a in names])
-        return backends.join_sum(
-            self,
-            [term for term, _names in found],
-            self.remembered_precedence(expr),
-            self.remembered_precedence,
-            texts.get,
-        )
+                    text = ".*".join([part(a) for a in names])
+            texts.append((term, text))
+        return _joined_sum(texts, self)
 
     def _print_Mul(self, expr: Any) -> str:
         # OctaveCodePrinter._print_Mul with the number tests, precedences
         # and sort keys remembered
-        order = None if self.order in ("old", "none") else self.remembered_factors
+        order = self.remembered_factors if self._orders_factors else None
         if order is not None:
             text = self.names_product(expr)
             if text is not None:
@@ -84,9 +183,10 @@ class _Printer(Remembering, OctaveCodePrinter):
             self,
             expr,
             self.remembered_precedence(expr),
-            order,
+            order if order is None or not expr.is_commutative else self.commuting_order,
             rationals=True,
             lone_minus=False,
+            inverses=self._inverses,
         )
 
         def multjoin(a: list, a_str: list) -> str:
@@ -108,13 +208,34 @@ class _Printer(Remembering, OctaveCodePrinter):
         and names, that commute (most products), when the printer orders
         factors: ordered by name (``remembered_factors``), each as it is,
         joined by ``.*``; None for any other product."""
-        if self.order in ("old", "none"):
+        if not self._orders_factors:
             return None
-        names = backends.signed_names(expr)
-        if names is None or not _commute(names[1]):
+        args = expr.args  # (as backends.signed_names splits it)
+        sign = ""
+        if args[0] is _MINUS_ONE:
+            sign, args = "-", args[1:]
+        if not args:
             return None
-        ordered = sorted(names[1], key=_name)
-        return names[0] + ".*".join([self.print_part(a) for a in ordered])
+        named = self._named
+        entries = []
+        for a in args:
+            if type(a) is not _NAME:
+                return None
+            entry = named.get(a.name)
+            if entry is None:
+                entry = self._name_entry(a)
+            if entry is None or entry[2] is not a:
+                break  # (each name asked and printed below)
+            entries.append(entry)
+        else:
+            if len(entries) > 1:
+                entries.sort(key=_first)  # by name
+            return sign + ".*".join([entry[1] for entry in entries])
+        for a in args:
+            if type(a) is not _NAME or not a.is_commutative:
+                return None
+        ordered = sorted(args, key=_name)
+        return sign + ".*".join([self.print_part(a) for a in ordered])
 
     def joined_terms(self, expr: Any, terms: list) -> str:
         """The text of the sum ``expr`` of ``terms`` in that order (its
@@ -152,14 +273,33 @@ def _name(symbol: Any) -> str:
 
 
 _MINUS_ONE = sp.S.NegativeOne
+_NAME = sp.Symbol
+#: after every name in :meth:`_Printer._names_order`'s keys (a name that
+#: does not come before it has no entry)
+_END = "\U0010ffff"
+#: :meth:`_Printer._names_order` of a sum it does not decide
+_UNKNOWN = object()
+_first = operator.itemgetter(0)
 
 
-def _commute(names: tuple) -> bool:
-    """Whether all of ``names`` commute."""
-    for a in names:
-        if not a.is_commutative:
-            return False
-    return True
+def _joined_sum(texts: list, printer: Any) -> str:
+    """The text of a sum of names and products of names (after a number),
+    ``texts`` its terms in order with the text of each name or product of
+    names after -1 or nothing (else None: printed by ``printer``), as
+    :func:`~al2py_runtime.jobs.backends.join_sum` joins them.  No term is
+    put in parentheses: a name's precedence is an atom's, a product's
+    after a number a product's or, after a negative one, a sum's, none
+    below the sum's."""
+    out = []
+    for term, text in texts:
+        if text is None:
+            text = printer.print_part(term)
+        if text.startswith("-"):
+            out += ["-", text[1:]]
+        else:
+            out += ["+", text]
+    sign = out.pop(0)
+    return ("" if sign == "+" else sign) + " ".join(out)
 
 
 def _code(printer: Any, expr: Any, target: str, symbol: Any = None) -> str:

@@ -31,7 +31,13 @@ from ..intermediates.autoz import as_terms
 from ..jobs import backends
 from ..names.printing import is_number_in, sort_key_in
 
-__all__ = ["ProgramPrinter", "Remembering", "holds_instance", "names_sorted"]
+__all__ = [
+    "ProgramPrinter",
+    "Remembering",
+    "holds_instance",
+    "key_order",
+    "names_sorted",
+]
 
 #: what a statement holding one of is printed by sympy's ``doprint``, and
 #: a part holding one of is printed each time (see ProgramPrinter)
@@ -78,6 +84,12 @@ class ProgramPrinter:
     #: method for the class (``_print_Add``, ...), as sympy's ``_print``
     #: finds it, directly: their text does not depend on how deep they are
     OWN = (sp.Add, sp.Mul, sp.Symbol)
+    #: whether :meth:`doprint` prints a plain statement without walking it
+    #: first, watching for the parts that make it not plain
+    #: (:meth:`_watched_text`), and whether a function's value is printed so
+    #: too (:func:`_plain_call`)
+    watches = False
+    plain_calls = False
 
     def __init__(self, settings: dict | None = None) -> None:
         super().__init__(settings)  # type: ignore[call-arg]
@@ -90,6 +102,8 @@ class ProgramPrinter:
         self._precs: dict = {}
         self._remembers = strict
         self._plain = False  # printing a plain statement: nothing special
+        #: printing a plain statement not walked first; a special part seen
+        self._watching = self._watched = False
         self._own = {
             kind: getattr(self, f"_print_{kind.__name__}") for kind in self.OWN
         }
@@ -106,6 +120,8 @@ class ProgramPrinter:
         method = self._own.get(type(expr))
         if method is None:
             text = self._print(expr)  # type: ignore[attr-defined]
+            if self._watching and holds_instance(expr, _SPECIAL, self._special):
+                self._watched = True
         else:
             text = method(expr)
         if self._remembers and (
@@ -136,8 +152,57 @@ class ProgramPrinter:
     def doprint(self, expr: Any, assign_to: Any = None) -> str:
         """sympy's ``CodePrinter.doprint``, the same text; a plain statement
         printed here (see :class:`ProgramPrinter`)."""
+        if self.watches and self._watchable(expr, assign_to):
+            text = self._watched_text(expr, assign_to)
+            if text is not None:
+                return text
         if not self.is_plain(expr, assign_to):
             return super().doprint(expr, assign_to)  # type: ignore[misc]
+        return self.plain_text(expr, assign_to)
+
+    def _watchable(self, expr: Any, assign_to: Any) -> bool:
+        """Whether :meth:`_watched_text` prints ``doprint(expr,
+        assign_to)``: a sum, product or name, or (``plain_calls``, in a
+        strict printer) a function's value, assigned to nothing, a name or
+        a symbol."""
+        if not (
+            type(expr) in self._own
+            or (self.plain_calls and self._remembers and _plain_call(expr))
+        ):
+            return False
+        return assign_to is None or isinstance(assign_to, str | sp.Symbol)
+
+    def _watched_text(self, expr: Any, assign_to: Any) -> str | None:
+        """``doprint(expr, assign_to)`` printed as a plain statement without
+        walking the statement for the parts that make it not plain (as
+        :meth:`is_plain` does): a part that :meth:`print_part` prints
+        through sympy's ``_print`` is asked whether it holds one (what is
+        not printed so is a sum, product or name, none of them, or was
+        printed before and remembered, as only parts holding none are; a
+        function's value is asked first); None when one does (or the
+        printing fails), the parts' texts remembered since forgotten."""
+        if type(expr) not in self._own and holds_instance(
+            expr, _SPECIAL, self._special
+        ):
+            return None
+        texts = self._texts
+        start = len(texts)
+        self._watching, self._watched = True, False
+        try:
+            text = self.plain_text(expr, assign_to)
+        except Exception:  # noqa: BLE001 - printed again as the rule prints it
+            self._watched = True
+        finally:
+            self._watching = False
+        if not self._watched:
+            return text
+        for _ in range(len(texts) - start):
+            texts.popitem()  # (the last remembered first)
+        return None
+
+    def plain_text(self, expr: Any, assign_to: Any) -> str:
+        """``doprint(expr, assign_to)`` of a plain statement (see
+        :meth:`is_plain`)."""
         self._plain = True
         try:
             if assign_to is None:
@@ -207,6 +272,16 @@ class Remembering(ProgramPrinter):
                 break
         else:
             cpart, ncpart = list(factors), []
+        return self._ordered_factors(cpart, ncpart)
+
+    def commuting_order(self, factors: list) -> list:
+        """:meth:`remembered_factors` of the factors of a product that
+        commutes (so do they all)."""
+        return self._ordered_factors(list(factors), [])
+
+    def _ordered_factors(self, cpart: list, ncpart: list) -> list:
+        """:meth:`remembered_factors` of the commutative factors ``cpart``
+        and the others ``ncpart``."""
         if (
             cpart
             and cpart[0].is_Number
@@ -214,15 +289,11 @@ class Remembering(ProgramPrinter):
             and cpart[0] is not sp.S.NegativeOne
         ):
             cpart[:1] = [sp.S.NegativeOne, -cpart[0]]
+        # a number's key comes before any other's
         first = 1 if cpart and cpart[0].is_Number else 0
-        if all(type(x) is sp.Symbol for x in cpart[first:]):
-            # a number's key comes before any other, a plain symbol's is
-            # its class's, then its name
-            cpart[first:] = sorted(cpart[first:], key=_name)
-        else:
-            keys = self._keys
-            # (a key found is read here: most factors were keyed before)
-            cpart.sort(key=lambda x: keys.get(x) or sort_key_in(x, keys))
+        cpart[first:] = key_order(  # type: ignore
+            cpart[first:], self._keys, sums=(self._numbers, self._powers)
+        )
         return cpart + ncpart
 
     def print_ordered_add(self, expr: Any, order: Any = None) -> str:
@@ -241,6 +312,15 @@ class Remembering(ProgramPrinter):
         return backends.join_sum(
             self, terms, self.remembered_precedence(expr), self.remembered_precedence
         )
+
+
+def _plain_call(expr: Any) -> bool:
+    """Whether ``expr`` is a function's value (``sin(Q3)``), not a
+    ``Piecewise`` (which an assignment prints apart): its text as a
+    statement is ``lhs = rhs`` (sympy's ``_print_Assignment``), ``rhs``
+    printed one level less deep than ``doprint`` prints it, which only a
+    Float's text depends on, not a function's."""
+    return isinstance(expr, sp.Function) and not isinstance(expr, sp.Piecewise)
 
 
 def holds_instance(expr: Any, kinds: Any, memo: dict) -> bool:
@@ -378,19 +458,9 @@ def _ordered_by_monomials(
             monomial.append(power)
             gens.add(power[0])
         found.append(monomial)
-    # a plain symbol's key is its class's, then its name
-    plain = all(type(g) is sp.Symbol for g in gens)
-    listed = list(gens)
-    if plain:
-        marked = sorted([(g.name, i) for i, g in enumerate(listed)])
-    else:  # (a key found is read here: most generators were keyed before)
-        marked = sorted(
-            [(keys.get(g) or sort_key_in(g, keys), i) for i, g in enumerate(listed)]
-        )
-    for i in range(1, len(marked)):
-        if marked[i][0] == marked[i - 1][0]:
-            return None  # two keys alike: sympy's order of them is the set's
-    ordered = [listed[i] for _, i in marked]
+    ordered = key_order(gens, keys, True, (numbers, powers))
+    if ordered is None:
+        return None  # two keys alike: sympy's order of them is the set's
     rank = {g: i for i, g in enumerate(ordered)}
     size = len(rank)
     keyed = []
@@ -407,6 +477,101 @@ def _ordered_by_monomials(
         if keyed[i][0] == keyed[i - 1][0]:
             return None
     return [term for _, term in keyed]
+
+
+def key_order(
+    items: Any, keys: dict, distinct: bool = False, sums: tuple | None = None
+) -> list | None:
+    """``sorted(items, key=default_sort_key)`` (equal keys in their order
+    in ``items``), each key formed once per ``keys``; with ``distinct``,
+    None when two keys are equal.
+
+    A plain name's key is its class's key (``Symbol.class_key()``), then
+    its name: names are sorted by name alone.  When every other item's key
+    begins with a class key above the names' (a sum, a function, their
+    powers: :func:`_head`), the names come first, then the others by their
+    keys, and a lone other item's key is not formed.  ``sums``: the number
+    tests and factors' powers remembered (:func:`_ordered_terms`), with
+    which a sum's key is formed (:func:`_key`)."""
+    names = []
+    others = []
+    for x in items:
+        if type(x) is _NAME:
+            names.append(x)
+        else:
+            others.append(x)
+    names.sort(key=_BY_NAME)
+    if distinct:
+        for i in range(1, len(names)):
+            if names[i].name == names[i - 1].name:
+                return None
+    if not others:
+        return names
+    if len(others) == 1:
+        if not names or _head(others[0], keys) > _NAME_CLASS_KEY:
+            return names + others
+        return _by_keys(list(items), keys, distinct, sums)
+    ordered = _by_keys(others, keys, distinct, sums)
+    if not names or ordered is None:
+        return ordered
+    if keys[ordered[0]][0] > _NAME_CLASS_KEY:
+        return names + ordered
+    return _by_keys(list(items), keys, distinct, sums)
+
+
+def _by_keys(
+    items: list, keys: dict, distinct: bool, sums: tuple | None
+) -> list | None:
+    """:func:`key_order` of ``items`` by their keys."""
+    # (a key found is read here: most were keyed before)
+    marked = [(keys.get(x) or _key(x, keys, sums), i) for i, x in enumerate(items)]
+    marked.sort(key=_first)
+    if distinct:
+        for i in range(1, len(marked)):
+            if marked[i][0] == marked[i - 1][0]:
+                return None
+    return [items[i] for _, i in marked]
+
+
+def _key(item: Any, keys: dict, sums: tuple | None) -> tuple:
+    """``sort_key_in(item, keys)``; with ``sums`` (the number tests and
+    factors' powers remembered), the key of a sum or a power of a sum
+    formed here, sympy's ``Expr.sort_key`` of it (the sum's class key, the
+    keys of its terms in ``as_ordered_terms``'s order, the exponent's key,
+    the coefficient 1) with the terms ordered by :func:`_ordered_terms`
+    (sympy's ``as_ordered_terms`` walks the sum again each time)."""
+    if sums is not None:
+        kind = type(item)
+        if kind is sp.Add:
+            base, exp = item, _ONE
+        elif kind is sp.Pow and type(item.base) is sp.Add:
+            base, exp = item.args
+        else:
+            return sort_key_in(item, keys)
+        terms = _ordered_terms(base, keys, sums[0], sums[1])
+        args = tuple([sort_key_in(t, keys) for t in terms])
+        key = (_ADD_CLASS_KEY, (len(args), args), sort_key_in(exp, keys), _ONE)
+        keys[item] = key
+        return key
+    return sort_key_in(item, keys)
+
+
+def _head(item: Any, keys: dict) -> tuple:
+    """``default_sort_key(item)[0]`` (the class key sympy's key begins
+    with): a sum's or a function's class key, read off its class (its
+    key, ``Expr.sort_key``, begins with it: the coefficient 1, not a
+    power), else its key's, formed once per ``keys``."""
+    found = keys.get(item)
+    if found is not None:
+        return found[0]
+    cls = type(item)
+    if cls.sort_key is _EXPR_SORT_KEY and (
+        cls is sp.Add or isinstance(item, _FUNCTION)
+    ):
+        return cls.class_key()
+    if cls is sp.Pow and type(item.base) is sp.Add:
+        return _ADD_CLASS_KEY  # (a power's key is its base's, then ...)
+    return sort_key_in(item, keys)[0]
 
 
 def _ordered_by_names(terms: tuple) -> list | None:
@@ -476,6 +641,11 @@ def _base_and_exponent(factor: Any, numbers: dict) -> tuple | bool:
 
 
 _BY_NAME = operator.attrgetter("name")
+_NAME_CLASS_KEY = sp.Symbol.class_key()
+_EXPR_SORT_KEY = sp.Expr.sort_key
+_FUNCTION = sp.Function
+_ADD_CLASS_KEY = sp.Add.class_key()
+_ONE = sp.S.One
 #: the terms ``_ordered_terms`` puts first (as ``Expr.as_ordered_terms`` does)
 _NUMERIC = (sp.Number, sp.NumberSymbol)
 

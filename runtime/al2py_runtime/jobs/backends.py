@@ -792,6 +792,7 @@ def product_parts(
     *,
     rationals: bool = False,
     lone_minus: bool = True,
+    inverses: dict | None = None,
 ) -> tuple[str, list, list, list, list]:
     """``CodePrinter._print_Mul``'s split of a product, shared by the C,
     Fortran and MATLAB printers: ``(sign, numerator factors, their texts,
@@ -801,7 +802,8 @@ def product_parts(
     :func:`magnitude_factors`; None: as they are); ``rationals`` puts a
     rational's denominator below the line (MATLAB); ``lone_minus``
     parenthesizes a single negated factor as a power's level (C,
-    Fortran)."""
+    Fortran); ``inverses``: a memo of each power's inverse (a negative
+    power's in the denominator), kept by the printer."""
     sign, items = magnitude_factors(expr)
     if order is not None:
         items = order(items)
@@ -816,11 +818,21 @@ def product_parts(
             and item.exp.is_negative
         ):
             if item.exp != -1:
-                b.append(sp.Pow(item.base, -item.exp, evaluate=False))
+                inverse = None if inverses is None else inverses.get(item)
+                if inverse is None:
+                    inverse = sp.Pow(item.base, -item.exp, evaluate=False)
+                    if inverses is not None:
+                        inverses[item] = inverse
+                b.append(inverse)
             else:
                 if len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul):
                     pow_paren.append(item)
-                b.append(sp.Pow(item.base, -item.exp))
+                inverse = None if inverses is None else inverses.get(item)
+                if inverse is None:
+                    inverse = sp.Pow(item.base, -item.exp)
+                    if inverses is not None:
+                        inverses[item] = inverse
+                b.append(inverse)
         elif rationals and item.is_Rational and item is not sp.S.Infinity:
             if item.p != 1:
                 a.append(sp.Rational(item.p))
