@@ -1046,8 +1046,9 @@ def iter_names(prefix: str, taken: set[str]) -> Any:
     while True:
         k += 1
         name = f"{prefix}{k}"
-        if name.lower() not in taken and name.lower() not in _INTERNAL:
-            taken.add(name.lower())
+        low = name.lower()
+        if low not in taken and low not in _INTERNAL:
+            taken.add(low)
             yield name
 
 
