@@ -681,6 +681,19 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
             memo[e] = out = (e, False)
             return out
     args = e.args
+    if type(e) is _MUL and len(args) < 4:
+        # (most products: of two renamed objects, after -1 or not; as
+        # below, without the general walk of the arguments)
+        x, y = rule.get(args[-2]), rule.get(args[-1])
+        if type(x) is _NAME and type(y) is _NAME:
+            keys = memo[_KEYS]
+            named = _two_names_keyed([x, y] if len(args) == 2 else [args[0], x, y], keys)
+            if named is not None:
+                kept, content = named
+                part = _MUL._from_args(kept, True)
+                keys.learn(part, content)
+                memo[e] = out = (same.setdefault(part, part), True)
+                return out
     new = None
     for i, a in enumerate(args):
         if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
