@@ -687,7 +687,9 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
         x, y = rule.get(args[-2]), rule.get(args[-1])
         if type(x) is _NAME and type(y) is _NAME:
             keys = memo[_KEYS]
-            named = _two_names_keyed([x, y] if len(args) == 2 else [args[0], x, y], keys)
+            named = _two_names_keyed(
+                [x, y] if len(args) == 2 else [args[0], x, y], keys
+            )
             if named is not None:
                 kept, content = named
                 part = _MUL._from_args(kept, True)
