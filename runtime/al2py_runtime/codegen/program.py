@@ -681,6 +681,21 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
             memo[e] = out = (e, False)
             return out
     args = e.args
+    if type(e) is _MUL and len(args) < 4:
+        # (most products: of two renamed objects, after -1 or not; as
+        # below, without the general walk of the arguments)
+        x, y = rule.get(args[-2]), rule.get(args[-1])
+        if type(x) is _NAME and type(y) is _NAME:
+            keys = memo[_KEYS]
+            named = _two_names_keyed(
+                [x, y] if len(args) == 2 else [args[0], x, y], keys
+            )
+            if named is not None:
+                kept, content = named
+                part = _MUL._from_args(kept, True)
+                keys.learn(part, content)
+                memo[e] = out = (same.setdefault(part, part), True)
+                return out
     new = None
     for i, a in enumerate(args):
         if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
@@ -719,6 +734,15 @@ def _sorted_only(expr: Any, args: list[Any], keys: CompareKeys) -> Any:
     sort formed from ``args`` sorted (:func:`renamed_evaluated`; ``keys``:
     the program's)."""
     cls = type(expr)
+    if cls is sp.Mul:
+        # (most products: of two names; their key learned for the sums
+        # that hold them)
+        named = _two_names_keyed(args, keys)
+        if named is not None:
+            kept, content = named
+            part = cls._from_args(kept, True)
+            keys.learn(part, content)
+            return part
     if cls is sp.Mul or cls is sp.Add:
         kept = _kept_args(cls is sp.Mul, args, keys)
         if kept is not None:
@@ -801,6 +825,16 @@ def _two_names(args: list[Any], keys: CompareKeys) -> list[Any] | None:
     different spellings (so not equal) that commute, after -1 or not;
     else None (:func:`_kept_args` decides); ``keys``: the program's
     :class:`CompareKeys`."""
+    named = _two_names_keyed(args, keys)
+    return None if named is None else named[0]
+
+
+def _two_names_keyed(
+    args: list[Any], keys: CompareKeys
+) -> tuple[list[Any], tuple | None] | None:
+    """:func:`_two_names` and the keys of its answer's arguments, in order
+    (the product's content, :meth:`CompareKeys.learn`; None when -1 has no
+    key)."""
     if len(args) == 2:
         first, a, b = None, args[0], args[1]
     elif len(args) == 3 and args[0] is _MINUS_ONE:
@@ -819,7 +853,13 @@ def _two_names(args: list[Any], keys: CompareKeys) -> list[Any] | None:
     key_b = known.get(b) or keys.key(b)
     if key_a > key_b:  # type: ignore[operator]
         a, b = b, a
-    return [a, b] if first is None else [first, a, b]
+        key_a, key_b = key_b, key_a
+    if first is None:
+        return [a, b], (key_a, key_b)
+    sign = keys.sign
+    if sign is None:
+        sign = keys.sign = keys.key(first)
+    return [first, a, b], None if sign is None else (sign, key_a, key_b)
 
 
 _NAME = sp.Symbol
@@ -890,6 +930,20 @@ class CompareKeys:
         #: -1's key (the first argument of most products that have a
         #: number), read without hashing -1 again and again
         self.sign: tuple | None = None
+
+    def learn(self, part: Any, content: tuple | None) -> None:
+        """Remember the key of ``part``, a sum or product whose arguments'
+        keys are ``content`` (in order; None: not known), as :meth:`key`
+        would find it."""
+        if content is None:
+            return
+        cls = type(part)
+        head = self.classes.get(cls, _ABSENT)
+        if head is _ABSENT:
+            self.key(part)  # (the class's first: as key does)
+            return
+        if head is not None and cls._hashable_content in _ARGS_CONTENT:
+            self.parts[part] = (head, len(content), content)
 
     def key(self, e: Any) -> tuple | None:
         """``e``'s key, or None when ``e`` (or a part of it) is of a class
@@ -1046,8 +1100,9 @@ def iter_names(prefix: str, taken: set[str]) -> Any:
     while True:
         k += 1
         name = f"{prefix}{k}"
-        if name.lower() not in taken and name.lower() not in _INTERNAL:
-            taken.add(name.lower())
+        low = name.lower()
+        if low not in taken and low not in _INTERNAL:
+            taken.add(low)
             yield name
 
 

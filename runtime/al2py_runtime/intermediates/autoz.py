@@ -3347,7 +3347,7 @@ class Intermediates:
     def _uses(self, z: Intermediate) -> Any:
         """The intermediates in ``z``'s definition (kept for canonical ones)."""
         k = _number(z)
-        if tuple(z.args[1:]) != self._vars[k]:
+        if not self._canonical(z):  # (kept on the instance)
             found = self._children.get(z)
             if found is None:
                 found = self._children[z] = self._intermediates_in(self.definition(z))
@@ -3363,6 +3363,7 @@ class Intermediates:
         intermediate's arguments: they are its variables, which hold no
         intermediate, and most of a definition's nodes."""
         Z = self.Z
+        canonical = self._canonical
         found: set[Any] = set()
         stack = [expr]
         seen: set[Any] = set()
@@ -3370,12 +3371,15 @@ class Intermediates:
             e = stack.pop()
             if isinstance(e, Z):
                 found.add(e)
-                if self._canonical(e):
+                if canonical(e):
                     continue
             args = e.args
-            if args and e not in seen:
+            if args:
+                # (one hash: ``e`` is new when the set grows)
+                n = len(seen)
                 seen.add(e)
-                stack.extend(args)
+                if len(seen) != n:
+                    stack.extend(args)
         return found
 
     def expand(self, expr: Any) -> Any:

@@ -164,6 +164,9 @@ class _Slots:
         self._kinds: dict[type, int] = {}
         #: the known variables of intermediates (:meth:`_variables_known`)
         self._variables: set[Any] = set()
+        #: the sets of variables (the book's, :meth:`_variables_known`) all
+        #: of whose variables are known
+        self._variable_sets: set[frozenset] = set()
 
     def add(self, objs: Iterable[Any], prefix: str) -> list[sp.Dummy]:
         out = []
@@ -229,6 +232,13 @@ class _Slots:
         when each is a known object, and a function of time among them is
         one of symbols (its arguments hold nothing the walk would note),
         the walk meets only known objects (and ``t``, which it leaves)."""
+        # (an intermediate at its own variables: their set, one object the
+        # book keeps for each, answered once, as most sets serve many)
+        book = getattr(z, "book", None)
+        varset = None if book is None else book.own_variables(z)
+        sets = self._variable_sets
+        if varset is not None and varset in sets:
+            return True
         known, seen = self.known, self._variables
         for a in z.args[1:]:
             if a in seen:
@@ -238,6 +248,8 @@ class _Slots:
             if isinstance(a, AppliedUndef) and not all(x.is_Symbol for x in a.args):
                 return False
             seen.add(a)  # known for good (``known`` only grows)
+        if varset is not None:
+            sets.add(varset)
         return True
 
     def _definition(self, body: Any, what: str) -> Any:
