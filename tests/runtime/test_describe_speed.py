@@ -20,6 +20,7 @@ from al2py_runtime.codegen.program import CompareKeys, _sorted_only, renamed_eva
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.jobs import run
 from conftest import ROOT
+from program_texts import every_language
 
 from al2py.transpile import convert
 
@@ -102,25 +103,11 @@ def _jobs(text: str) -> list:
     return _workspace(text).numerics.jobs
 
 
-def _programs(jobs: list) -> list[str]:
-    from al2py_runtime.codegen import program_source, target_file
-    from al2py_runtime.codegen.program import describe
-    from al2py_runtime.codegen.static import describe_static
-
-    out = []
-    for job in jobs:
-        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
-        program = (describe_static if static else describe)(job)
-        for lang in ("c", "m", "f"):
-            out.append(program_source(program, target_file(job, lang)))
-    return out
-
-
 def test_variables_known_per_set_gives_the_same_programs(monkeypatch):
     text = (ROOT / "tests" / "models" / "rolling_disc.al").read_text()
     text += "E1 = ZERO[1]\nE3 = ZERO[3]\nEncode E1, E3\nCODE Algebraic() outs.m\n"
     jobs = _jobs(text)
-    quick = _programs(jobs)
+    quick = every_language(jobs)
     sets: list = []
     known = run._Slots._variables_known
 
@@ -129,7 +116,7 @@ def test_variables_known_per_set_gives_the_same_programs(monkeypatch):
         return known(self, z)
 
     monkeypatch.setattr(run._Slots, "_variables_known", counted)
-    assert _programs(_jobs(text)) == quick
+    assert every_language(_jobs(text)) == quick
     assert max(sets) > 0  # the memo served
     monkeypatch.setattr(autoz.Intermediates, "own_variables", lambda self, z: None)
-    assert _programs(_jobs(text)) == quick
+    assert every_language(_jobs(text)) == quick

@@ -30,6 +30,7 @@ from al2py_runtime.codegen.program import CompareKeys, renamed_evaluated
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.jobs import run
 from conftest import ROOT
+from program_texts import every_language
 from sympy.core.basic import _args_sortkey
 from sympy.core.function import AppliedUndef
 
@@ -329,20 +330,6 @@ def _jobs(text: str, tmp_path, name: str) -> list:
     return namespace["al"].numerics.jobs
 
 
-def _programs(jobs: list) -> list[str]:
-    from al2py_runtime.codegen import program_source, target_file
-    from al2py_runtime.codegen.program import describe
-    from al2py_runtime.codegen.static import describe_static
-
-    out = []
-    for job in jobs:
-        static = job.kind in ("ALGEBRAIC", "NONLINEAR")
-        program = (describe_static if static else describe)(job)
-        for lang in ("c", "m", "f"):
-            out.append(program_source(program, target_file(job, lang)))
-    return out
-
-
 @pytest.mark.parametrize("script", ["disc", "aux_spherical_pendulum", "tutor6"])
 def test_definitions_not_walked_give_the_same_programs(script, tmp_path, monkeypatch):
     if script == "disc":
@@ -360,14 +347,14 @@ def test_definitions_not_walked_give_the_same_programs(script, tmp_path, monkeyp
         return answers[-1]
 
     monkeypatch.setattr(run._Slots, "_variables_known", counted)
-    quick = _programs(jobs)
+    quick = every_language(jobs)
     # most definitions are not walked (and in the disc's, some make a
     # parameter of what they hold first)
     assert answers.count(True) > answers.count(False)
     if script == "disc":
         assert answers.count(False) > 0
     monkeypatch.setattr(run._Slots, "_variables_known", lambda self, z: False)
-    assert _programs(jobs) == quick
+    assert every_language(jobs) == quick
 
 
 # ----------------------------------------------------------- plain printing

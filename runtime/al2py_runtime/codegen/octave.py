@@ -103,16 +103,9 @@ class _Printer(Remembering, OctaveCodePrinter):
                     return None
             else:
                 return None
-            entries = []
-            for f in factors:
-                if type(f) is not _NAME:
-                    return None
-                entry = named.get(f.name)
-                if entry is None:
-                    entry = self._name_entry(f)
-                if entry is None or entry[2] is not f:
-                    return _UNKNOWN
-                entries.append(entry)
+            entries = self._entries(factors, named)
+            if type(entries) is not list:
+                return entries  # (None or _UNKNOWN)
             if len(entries) > 1:
                 entries.sort(key=_first)
                 for i in range(1, len(entries)):
@@ -131,6 +124,22 @@ class _Printer(Remembering, OctaveCodePrinter):
             if keyed[i][0] == keyed[i - 1][0]:
                 return None  # two terms of one monomial
         return keyed
+
+    def _entries(self, names: tuple, named: dict) -> list | None | object:
+        """The entries (:meth:`_name_entry`) of ``names``, in order; None
+        where one is not a name, ``_UNKNOWN`` where a name has no entry or
+        is not its entry's symbol (``named``: the printer's entries)."""
+        entries = []
+        for f in names:
+            if type(f) is not _NAME:
+                return None
+            entry = named.get(f.name)
+            if entry is None:
+                entry = self._name_entry(f)
+            if entry is None or entry[2] is not f:
+                return _UNKNOWN
+            entries.append(entry)
+        return entries
 
     def _name_entry(self, name: Any) -> tuple | None:
         """A new entry ``(its name, its text, name)`` of a name (a plain
@@ -216,22 +225,14 @@ class _Printer(Remembering, OctaveCodePrinter):
             sign, args = "-", args[1:]
         if not args:
             return None
-        named = self._named
-        entries = []
-        for a in args:
-            if type(a) is not _NAME:
-                return None
-            entry = named.get(a.name)
-            if entry is None:
-                entry = self._name_entry(a)
-            if entry is None or entry[2] is not a:
-                break  # (each name asked and printed below)
-            entries.append(entry)
-        else:
+        entries = self._entries(args, self._named)
+        if entries is None:
+            return None
+        if entries is not _UNKNOWN:
             if len(entries) > 1:
                 entries.sort(key=_first)  # by name
             return sign + ".*".join([entry[1] for entry in entries])
-        for a in args:
+        for a in args:  # (each name asked and printed here)
             if type(a) is not _NAME or not a.is_commutative:
                 return None
         ordered = sorted(args, key=_name)
