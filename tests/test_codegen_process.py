@@ -236,11 +236,12 @@ def test_jobs_must_be_a_whole_number_of_processes(tmp_path, capsys, value):
 
 
 def test_default_copies_are_the_processors_at_most_four(monkeypatch):
-    from al2py_runtime import codegen
+    from al2py_runtime import codegen, copies
 
-    monkeypatch.setattr(codegen.os, "sched_getaffinity", lambda pid: set(range(64)))
+    monkeypatch.setattr(copies.os, "sched_getaffinity", lambda pid: set(range(64)))
+    assert copies.processors() == 64
     assert codegen.available_workers() == codegen.DEFAULT_WORKERS == 4
-    monkeypatch.setattr(codegen.os, "sched_getaffinity", lambda pid: {0, 1})
+    monkeypatch.setattr(copies.os, "sched_getaffinity", lambda pid: {0, 1})
     assert codegen.available_workers() == 2
 
 
