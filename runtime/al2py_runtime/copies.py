@@ -14,8 +14,11 @@ here:
 * :func:`forking`: around the ``submit`` that forks the copies, the
   signals held back until each copy has its own actions for them;
 * :func:`started`: what each copy does first about signals;
-* :func:`end_pool`: the copies ended, at once when work is left (an error,
-  or an interrupt in this process).
+* :func:`submit_forking`: the first work given, which forks the copies
+  (under :func:`forking`);
+* :func:`end_pool` (and :func:`end`, which sees whether work is left): the
+  copies ended, at once when work is left (an error, or an interrupt in
+  this process).
 
 Only the standard library is imported here (the converter uses it before
 sympy is imported).
@@ -27,12 +30,20 @@ import contextlib
 import multiprocessing
 import os
 import signal
-from collections.abc import Callable, Iterator
-from concurrent.futures import ProcessPoolExecutor
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import Future, ProcessPoolExecutor
 from contextlib import contextmanager
 from typing import Any
 
-__all__ = ["end_pool", "fork_pool", "forking", "processors", "started"]
+__all__ = [
+    "end",
+    "end_pool",
+    "fork_pool",
+    "forking",
+    "processors",
+    "started",
+    "submit_forking",
+]
 
 #: the signals a copy acts on as :func:`started` says, held back meanwhile
 _HELD = tuple(
@@ -112,3 +123,32 @@ def end_pool(pool: ProcessPoolExecutor, *, work_left: bool) -> None:
         for child in multiprocessing.active_children():
             child.terminate()
     pool.shutdown(wait=True, cancel_futures=True)
+
+
+def submit_forking(
+    pool: ProcessPoolExecutor, calls: Iterable[tuple[Callable[..., Any], tuple]]
+) -> list[Future] | None:
+    """``pool.submit(fn, *args)`` for each ``(fn, args)`` of ``calls``, in
+    order; the first forks the pool's copies, under :func:`forking` (before
+    the pool's own thread starts).  The futures, or None when the copies
+    cannot be made (``OSError``: the pool is ended, the work is then done
+    in this process).  An interrupt held back while the copies were forked
+    comes through once they are made: they are ended before it leaves."""
+    futures: list[Future] = []
+    try:
+        with forking():
+            for fn, args in calls:
+                futures.append(pool.submit(fn, *args))
+    except OSError:
+        end(pool, futures)
+        return None
+    except BaseException:
+        end(pool, futures)
+        raise
+    return futures
+
+
+def end(pool: ProcessPoolExecutor, futures: Iterable[Future | None]) -> None:
+    """:func:`end_pool`, at once when one of ``futures`` is not done."""
+    left = any(f is not None and not f.done() for f in futures)
+    end_pool(pool, work_left=left)

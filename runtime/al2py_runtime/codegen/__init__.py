@@ -349,22 +349,15 @@ class Formers:
         # the largest first (of equal ones, the later: a script's later
         # jobs tend to be the larger)
         first.sort(key=lambda i: (work[i], i), reverse=True)
-        self._pool = copies.fork_pool(n, _copy_started, (jobs, lang, source))
-        if self._pool is None:
+        pool = copies.fork_pool(n, _copy_started, (jobs, lang, source))
+        if pool is None:
             return
-        try:
-            # the copies are forked at the first submit, before the pool's
-            # own thread starts
-            with copies.forking():
-                for i in first:
-                    self._futures[i] = self._pool.submit(_form_in_copy, i, None)
-        except OSError:
-            self.stop()
-        except BaseException:
-            # an interrupt held back while the copies were forked comes
-            # through once they are made: they are ended before it leaves
-            self.stop()
-            raise
+        futures = copies.submit_forking(
+            pool, [(_form_in_copy, (i, None)) for i in first]
+        )
+        if futures is not None:
+            self._pool = pool
+            self._futures = dict(zip(first, futures, strict=True))
 
     def formed(self, i: int, task: progress.Task | None = None) -> Formed | None:
         """Job ``i``'s program as a copy formed it (waiting for it, which
@@ -400,9 +393,9 @@ class Formers:
         pool, self._pool = self._pool, None
         if pool is None:
             return
-        left = any(not f.done() for f in self._futures.values())
+        futures = list(self._futures.values())
         self._futures.clear()
-        copies.end_pool(pool, work_left=left)
+        copies.end(pool, futures)
 
 
 def estimated_work(job: Job) -> int:

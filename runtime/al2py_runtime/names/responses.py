@@ -160,21 +160,16 @@ class _Sharing:
         pool = forked.fork_pool(1, _copy_started, (printer,))
         if pool is None:
             return None
-        sharing = cls(printer, pool, spans)
-        try:
-            # the copy is forked at the first submit, before the pool's
-            # own thread starts
-            with forked.forking():
-                for k in reversed(range(len(spans))):
-                    sharing.futures[k] = pool.submit(_part_in_copy, spans[k])
-        except OSError:
-            sharing.stop()
+        # the last part first: the copy takes them from the last one back
+        order = list(reversed(range(len(spans))))
+        futures = forked.submit_forking(
+            pool, [(_part_in_copy, (spans[k],)) for k in order]
+        )
+        if futures is None:
             return None
-        except BaseException:
-            # an interrupt held back while the copy was forked comes
-            # through once it is made: it is ended before it leaves
-            sharing.stop()
-            raise
+        sharing = cls(printer, pool, spans)
+        for k, future in zip(order, futures, strict=True):
+            sharing.futures[k] = future
         return sharing
 
     def lines(self, tick: Callable[[int], None] | None) -> list[list[str]]:
@@ -227,5 +222,4 @@ class _Sharing:
         pool, self.pool = self.pool, None
         if pool is None:
             return
-        left = any(f is not None and not f.done() for f in self.futures)
-        forked.end_pool(pool, work_left=left)
+        forked.end(pool, self.futures)
