@@ -828,7 +828,7 @@ class Workspace(Mapping):
         model.py`` asks for it where it may, :func:`.names.responses.side_by_side`):
         the same lines."""
         from .names.responses import ResponseLines
-        from .names.transcript import transcript_lines
+        from .names.transcript import printed_transcript
 
         lines = list(source)
         if self._exit_line is not None:
@@ -851,7 +851,7 @@ class Workspace(Mapping):
             with progress.task(
                 "printing the transcript", len(shown), unit="responses"
             ) as task:
-                out = transcript_lines(lines, shown, printed=printed, tick=task.advance)
+                out = printed_transcript(lines, printed, task.advance)
         self.__dict__["_transcript"] = (key, out)
         return list(out)
 

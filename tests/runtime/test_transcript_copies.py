@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.names import responses as R
 from al2py_runtime.names.settings import Response
-from al2py_runtime.names.transcript import transcript_lines
+from al2py_runtime.names.transcript import printed_transcript, transcript_lines
 
 pytestmark = pytest.mark.skipif(
     "fork" not in multiprocessing.get_all_start_methods(),
@@ -112,9 +112,7 @@ def test_transcript_numbers_lines_after_shared_printing() -> None:
     responses = _responses(R.MIN_SHARED + 3)
     source = [f"Z{i} = something" for i in range(1, responses[-1].line + 1)]
     alone = transcript_lines(source, responses)
-    shared = transcript_lines(
-        source, responses, printed=R.ResponseLines(responses, copies=2)
-    )
+    shared = printed_transcript(source, R.ResponseLines(responses, copies=2))
     assert shared == alone
     assert alone[0] == "(1) Z1 = something"
     assert alone[1].startswith("-> (2) Z1 = ")

@@ -80,6 +80,11 @@ class ResponseLines:
         if copies > 1 and len(responses) >= MIN_SHARED:
             self.shared = _Sharing.start(self.printer)
 
+    @property
+    def responses(self) -> Sequence[Response]:
+        """The responses printed, in order."""
+        return self.printer.responses
+
     def lines(self, tick: Callable[[int], None] | None = None) -> list[list[str]]:
         """Every response's lines, in order (``tick(n)`` as they come)."""
         if self.shared is not None:

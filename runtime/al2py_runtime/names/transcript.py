@@ -21,7 +21,7 @@ from .settings import Response
 if TYPE_CHECKING:
     from .responses import ResponseLines
 
-__all__ = ["logical_lines", "transcript_lines"]
+__all__ = ["logical_lines", "printed_transcript", "transcript_lines"]
 
 
 def logical_lines(source: Sequence[str]) -> Iterator[tuple[int, str]]:
@@ -51,18 +51,24 @@ def transcript_lines(
     responses: Iterable[Response],
     form: Callable[[Any], Any] | None = None,
     tick: Callable[[int], None] | None = None,
-    printed: ResponseLines | None = None,
 ) -> list[str]:
     """The full transcript as text lines.  ``form(value)`` forms each value
     that is not verbatim just before it is printed; ``tick(n)`` after each
-    ``n`` responses are printed (progress).  ``printed``: the printer of
-    these responses already made (:class:`.responses.ResponseLines`, which
-    may share the printing with a forked copy; ``form`` is its own)."""
+    ``n`` responses are printed (progress)."""
     from .responses import ResponseLines
 
-    responses = list(responses)
-    if printed is None:
-        printed = ResponseLines(responses, form)
+    return printed_transcript(source, ResponseLines(list(responses), form), tick)
+
+
+def printed_transcript(
+    source: Sequence[str],
+    printed: ResponseLines,
+    tick: Callable[[int], None] | None = None,
+) -> list[str]:
+    """:func:`transcript_lines` of the responses of ``printed``, their
+    printer already made (:class:`.responses.ResponseLines`, with its own
+    ``form``, which may share the printing with a forked copy)."""
+    responses = printed.responses
     texts = printed.lines(tick)
     by_line: dict[int | None, list[int]] = defaultdict(list)
     for i, r in enumerate(responses):
