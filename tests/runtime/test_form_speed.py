@@ -104,3 +104,22 @@ def test_names_products_are_the_names_texts():
             want = _names_product_as_before(theirs, expr)
             assert ours.names_product(expr) == want, expr
             assert ours.doprint(expr) == theirs.doprint(expr), expr
+
+
+def test_free_symbols_with_a_memo_are_sympys():
+    """One memo for many random expressions (products of names after a
+    number read at once): each answer is sympy's ``free_symbols``."""
+    rng = random.Random(11)
+    leaves = NAMES + [sp.Dummy("d"), sp.Function("f")(X), sp.pi, sp.Integer(2)]
+    maker = ExpressionMaker(
+        leaves=leaves,
+        coefficients=[-1, 2, sp.Rational(1, 2)],
+        exponents=[2, -1],
+        leaf_chance=0.3,
+    )
+    memo: dict = {}
+    for _ in range(_cases(900)):
+        expr = maker.make(rng, 3)
+        if rng.random() < 0.3:
+            expr = sp.Integral(expr, X) + Y
+        assert backends.free_symbols_of(expr, memo) == expr.free_symbols, expr

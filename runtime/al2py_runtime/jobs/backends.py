@@ -392,12 +392,29 @@ def _free_of_new(expr: Any, memo: dict) -> frozenset:
         for a in args:
             if a.is_Symbol:
                 out.add(a)
+            elif type(a) is _MUL_TYPE and _names_after_number(a.args):
+                # (most terms of a sum: a product of names, after a number
+                # or not; its names at once, not remembered apart)
+                out.update(a.args if a.args[0].is_Symbol else a.args[1:])
             elif a.args or type(a).free_symbols is not _UNITED:
                 part = memo.get(a)  # (a shared part: found before)
                 out |= _free_of_new(a, memo) if part is None else part
         found = frozenset(out)
     memo[expr] = found
     return found
+
+
+_MUL_TYPE = sp.Mul
+
+
+def _names_after_number(args: tuple) -> bool:
+    """Whether ``args`` (a product's) are names, after a number or not: the
+    product's free symbols are those names."""
+    first = 1 if args[0].is_Number else 0
+    for a in args[first:]:
+        if type(a) is not sp.Symbol:
+            return False
+    return True
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
