@@ -19,6 +19,11 @@ class _Printer(ProgramPrinter, backends.CPrinter):
     """The C backend's printer (strict), each part printed once per program
     (see :class:`.printers.ProgramPrinter`)."""
 
+    # doprint prints a sum, product, name or function's value without
+    # walking it first (see ProgramPrinter.doprint)
+    watches = True
+    plain_calls = True
+
     def __init__(self) -> None:
         backends.CPrinter.__init__(self)
         self.start_remembering(strict=True)

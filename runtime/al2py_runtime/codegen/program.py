@@ -681,6 +681,7 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
             memo[e] = out = (e, False)
             return out
     args = e.args
+    paired = True  # (whether _sorted_only may find two names)
     if type(e) is _MUL and len(args) < 4:
         # (most products: of two renamed objects, after -1 or not; as
         # below, without the general walk of the arguments)
@@ -696,6 +697,8 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
                 keys.learn(part, content)
                 memo[e] = out = (same.setdefault(part, part), True)
                 return out
+            # (the arguments below are these, the first when it is kept)
+            paired = False
     new = None
     for i, a in enumerate(args):
         if not isinstance(a, sp.Basic):  # pragma: no cover - sympy's are Basic
@@ -715,7 +718,9 @@ def _renamed_part(e: Any, rule: dict, memo: dict, same: dict) -> tuple[Any, bool
     if new is None:
         out = (e, False)
     else:
-        part = _sorted_only(e, new, memo[_KEYS])
+        if not paired and len(args) == 3 and new[0] is not args[0]:
+            paired = True  # (a first factor renamed: asked again)
+        part = _sorted_only(e, new, memo[_KEYS], paired)
         out = (same.setdefault(part, part), True)
     memo[e] = out
     return out
@@ -729,12 +734,15 @@ _KEYS = ("renamed_evaluated", "compare keys")
 _ABSENT = object()
 
 
-def _sorted_only(expr: Any, args: list[Any], keys: CompareKeys) -> Any:
+def _sorted_only(
+    expr: Any, args: list[Any], keys: CompareKeys, paired: bool = True
+) -> Any:
     """``expr.func(*args)``, a sum or product that evaluation would only
     sort formed from ``args`` sorted (:func:`renamed_evaluated`; ``keys``:
-    the program's)."""
+    the program's; ``paired`` False: the caller found :func:`_two_names`
+    gives None for ``args``)."""
     cls = type(expr)
-    if cls is sp.Mul:
+    if cls is sp.Mul and paired:
         # (most products: of two names; their key learned for the sums
         # that hold them)
         named = _two_names_keyed(args, keys)
@@ -744,14 +752,14 @@ def _sorted_only(expr: Any, args: list[Any], keys: CompareKeys) -> Any:
             keys.learn(part, content)
             return part
     if cls is sp.Mul or cls is sp.Add:
-        kept = _kept_args(cls is sp.Mul, args, keys)
+        kept = _kept_args(cls is sp.Mul, args, keys, paired=False)
         if kept is not None:
             return cls._from_args(kept, True)
     return expr.func(*args)
 
 
 def _kept_args(
-    mul: bool, args: list[Any], order: CompareKeys | None = None
+    mul: bool, args: list[Any], order: CompareKeys | None = None, paired: bool = True
 ) -> list[Any] | None:
     """The arguments of ``Mul(*args)`` (``mul``) or ``Add(*args)`` when
     sympy's evaluation only sorts ``args``, else None (``order``: sympy's
@@ -768,9 +776,10 @@ def _kept_args(
 
     A name (most factors) and a sum's product (most terms) are asked only
     what these conditions ask of them, first; a product of two names (or
-    of -1 and two names: most of a program's products) at once."""
+    of -1 and two names: most of a program's products) at once (``paired``
+    False: the caller found :func:`_two_names` gives None)."""
     order = CompareKeys() if order is None else order
-    if mul:
+    if mul and paired:
         pair = _two_names(args, order)
         if pair is not None:
             return pair

@@ -3361,26 +3361,40 @@ class Intermediates:
         """The intermediates in ``expr`` (``expr.atoms(self.Z)``), walking
         the tree directly (a shared subtree once) and not into a canonical
         intermediate's arguments: they are its variables, which hold no
-        intermediate, and most of a definition's nodes."""
+        intermediate, and most of a definition's nodes.
+
+        As :meth:`_walk`, a part is classified when it is met as an
+        argument (an atom, which holds no intermediate, is never stacked),
+        and the parts stacked are kept by identity (each is held by
+        ``expr`` meanwhile; an equal part elsewhere is walked again, to the
+        same answer): no sympy hash per part."""
         Z = self.Z
         canonical = self._canonical
         found: set[Any] = set()
-        stack = [expr]
-        seen: set[Any] = set()
-        while stack:
-            e = stack.pop()
-            if isinstance(e, Z):
-                found.add(e)
-                if canonical(e):
+        seen: set[int] = set()
+        stack: list = []
+        todo: Any = (expr,)
+        while True:
+            for a in todo:
+                if a.is_Atom:
                     continue
-            args = e.args
-            if args:
-                # (one hash: ``e`` is new when the set grows)
+                if a.is_Mul or a.is_Add:
+                    pass  # (most parts: walked into)
+                elif isinstance(a, Z):
+                    found.add(a)
+                    at_own = a.__dict__.get("_canonical")  # (kept by _canonical)
+                    if at_own is None:
+                        at_own = canonical(a)
+                    if at_own:
+                        continue
+                # (one lookup: ``a`` is new when the set grows)
                 n = len(seen)
-                seen.add(e)
+                seen.add(id(a))
                 if len(seen) != n:
-                    stack.extend(args)
-        return found
+                    stack.append(a)
+            if not stack:
+                return found
+            todo = stack.pop().args
 
     def expand(self, expr: Any) -> Any:
         """``expr`` with every intermediate replaced by what it stands for

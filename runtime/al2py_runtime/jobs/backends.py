@@ -392,12 +392,29 @@ def _free_of_new(expr: Any, memo: dict) -> frozenset:
         for a in args:
             if a.is_Symbol:
                 out.add(a)
+            elif type(a) is _MUL_TYPE and _names_after_number(a.args):
+                # (most terms of a sum: a product of names, after a number
+                # or not; its names at once, not remembered apart)
+                out.update(a.args if a.args[0].is_Symbol else a.args[1:])
             elif a.args or type(a).free_symbols is not _UNITED:
                 part = memo.get(a)  # (a shared part: found before)
                 out |= _free_of_new(a, memo) if part is None else part
         found = frozenset(out)
     memo[expr] = found
     return found
+
+
+_MUL_TYPE = sp.Mul
+
+
+def _names_after_number(args: tuple) -> bool:
+    """Whether ``args`` (a product's) are names, after a number or not: the
+    product's free symbols are those names."""
+    first = 1 if args[0].is_Number else 0
+    for a in args[first:]:
+        if type(a) is not sp.Symbol:
+            return False
+    return True
 
 
 def cse_with(intermediates: Sequence[tuple[Any, Any]]) -> Any:
@@ -655,6 +672,11 @@ class CPrinter(C99CodePrinter):
         #: with ``hoist = (symbols, base)``: each call of a function of those
         #: symbols alone, printed, and the element ``z[base + k]`` it is kept in
         self.hoisted: dict[str, str] = {}
+        #: whether a product may be one of ``math_macros`` (none is here)
+        self._macro_products = any(type(k) is sp.Mul for k in self.math_macros)
+        #: a name's text, by its spelling: (the symbol, its text), for
+        #: :meth:`names_product` (a str key: no sympy hash per factor)
+        self._name_texts: dict[str, tuple[Any, str]] = {}
 
     def hoisted_call(self, expr: Any, text: str) -> str:
         """``text``, the call ``expr`` printed, or where it is kept."""
@@ -703,17 +725,32 @@ class CPrinter(C99CodePrinter):
     def names_product(self, expr: Any) -> str | None:
         """:meth:`_print_Mul`'s text of a product of names (after -1 or
         nothing), each as it is; None for any other product."""
-        if expr in self.math_macros:
+        args = expr.args
+        sign = ""
+        if args and args[0] is sp.S.NegativeOne:
+            sign, args = "-", args[1:]
+        if not args:
             return None
-        names = signed_names(expr)
-        if names is None:
+        for a in args:
+            if type(a) is not sp.Symbol:
+                return None
+        if self._macro_products and expr in self.math_macros:
             return None
-        return names[0] + "*".join([self.print_part(a) for a in names[1]])
+        # (each name's text as print_part gives it: a name's text depends
+        # on the printer's settings alone)
+        texts = self._name_texts
+        out = []
+        for a in args:
+            found = texts.get(a.name)
+            if found is None or found[0] is not a:
+                found = texts[a.name] = (a, self.print_part(a))
+            out.append(found[1])
+        return sign + "*".join(out)
 
     def _print_Mul(self, expr: Any, **kwargs: Any) -> str:
         # C89CodePrinter._print_Mul: CodePrinter._print_Mul (factors in
         # their own order) with precedences kept per class
-        if expr in self.math_macros:
+        if self._macro_products and expr in self.math_macros:
             return super()._print_Mul(expr, **kwargs)
         names = self.names_product(expr)
         if names is not None:  # most products: each name as it is
