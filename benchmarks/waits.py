@@ -17,9 +17,13 @@ floor's.  Measured:
   to its import); ``al2py code Whipple.al`` (also to its import); its first
   ``run()`` of the Dynamics job with an empty compile cache (in the process
   that imported it, the import not counted; as a ratio to the import);
-* each public corpus script (``find CORPUS -name '*.al'``; the default
-  corpus is ``../corpus`` next to the checkout, or ``$AL2PY_CORPUS``):
-  converted in a copy of its own folder and imported.
+* each public corpus script: the 33 that ``../shared/corpus/manifest.tsv``
+  lists (``.al`` and ``.AL`` alike, where ``extract.py`` wrote them:
+  ``CORPUS/OWNER__NAME/<path>``), or without the manifest every ``.al`` or
+  ``.AL`` file under CORPUS; the default corpus is ``../corpus`` next to
+  the checkout, or ``$AL2PY_CORPUS``: converted in a copy of its own
+  folder and imported.  A script that does not convert (an error of its
+  own) or does not import is named, with its first or last error line.
 
 The targets of issue 35 are printed beside: the bicycle's import at most 3x
 the floor, its transcript and ``al2py code`` at most 1.5x its import, its
@@ -47,6 +51,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 WHIPPLE = "moorepants__AutolevToolKit/models/Whipple/Whipple.al"
+MANIFEST = ROOT.parent / "shared" / "corpus" / "manifest.tsv"
 FLOOR = "import sympy.physics.mechanics"
 
 RUN_CHILD = r"""
@@ -142,9 +147,29 @@ def whipple(series: Series, corpus: Path, work: Path, repeats: int) -> None:
         series.add("  its import, same process", *times["import"])
 
 
+def listed_scripts(corpus: Path) -> list[Path]:
+    """The corpus scripts to measure: the manifest's (each where
+    ``extract.py`` writes it), else every ``.al``/``.AL`` file of
+    ``corpus``."""
+    if MANIFEST.exists():
+        rows = MANIFEST.read_text(encoding="utf-8").splitlines()[1:]
+        found = []
+        for row in rows:
+            cols = row.split("\t")
+            if len(cols) < 3:
+                continue
+            script = corpus / cols[1].replace("/", "__") / cols[2]
+            if script.exists():
+                found.append(script)
+            else:
+                print(f"  {cols[1]}/{cols[2]}: not extracted (skipped)")
+        return sorted(found)
+    return sorted(p for p in corpus.rglob("*") if p.suffix.lower() == ".al")
+
+
 def corpus_scripts(series: Series, corpus: Path, work: Path) -> list[str]:
     names = []
-    for k, script in enumerate(sorted(corpus.rglob("*.al"))):
+    for k, script in enumerate(listed_scripts(corpus)):
         folder = work / f"corpus{k}"
         folder.mkdir()
         for f in script.parent.iterdir():  # the script's own folder
@@ -158,7 +183,11 @@ def corpus_scripts(series: Series, corpus: Path, work: Path) -> list[str]:
             capture_output=True,
         )
         if convert.returncode:
-            print(f"  {name}: does not convert (exit {convert.returncode})")
+            first = convert.stderr.decode(errors="replace").strip().splitlines()
+            print(
+                f"  {name}: does not convert (exit {convert.returncode}):"
+                f" {(first or ['?'])[0][:100]}"
+            )
             continue
         cache_bytecode(folder / f"{module}.py")
         floor_turn(series, work)
