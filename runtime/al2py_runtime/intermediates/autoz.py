@@ -3364,14 +3364,12 @@ class Intermediates:
         intermediate, and most of a definition's nodes.
 
         As :meth:`_walk`, a part is classified when it is met as an
-        argument (an atom, which holds no intermediate, is never stacked),
-        and the parts stacked are kept by identity (each is held by
-        ``expr`` meanwhile; an equal part elsewhere is walked again, to the
-        same answer): no sympy hash per part."""
+        argument: an atom, which holds no intermediate, is never stacked
+        (nor hashed)."""
         Z = self.Z
         canonical = self._canonical
         found: set[Any] = set()
-        seen: set[int] = set()
+        seen: set[Any] = set()
         stack: list = []
         todo: Any = (expr,)
         while True:
@@ -3389,7 +3387,7 @@ class Intermediates:
                         continue
                 # (one lookup: ``a`` is new when the set grows)
                 n = len(seen)
-                seen.add(id(a))
+                seen.add(a)
                 if len(seen) != n:
                     stack.append(a)
             if not stack:
