@@ -392,7 +392,7 @@ def _free_of_new(expr: Any, memo: dict) -> frozenset:
         for a in args:
             if a.is_Symbol:
                 out.add(a)
-            elif type(a) is _MUL_TYPE and _names_after_number(a.args):
+            elif type(a) is sp.Mul and _names_after_number(a.args):
                 # (most terms of a sum: a product of names, after a number
                 # or not; its names at once, not remembered apart)
                 out.update(a.args if a.args[0].is_Symbol else a.args[1:])
@@ -402,9 +402,6 @@ def _free_of_new(expr: Any, memo: dict) -> frozenset:
         found = frozenset(out)
     memo[expr] = found
     return found
-
-
-_MUL_TYPE = sp.Mul
 
 
 def _names_after_number(args: tuple) -> bool:
@@ -725,15 +722,10 @@ class CPrinter(C99CodePrinter):
     def names_product(self, expr: Any) -> str | None:
         """:meth:`_print_Mul`'s text of a product of names (after -1 or
         nothing), each as it is; None for any other product."""
-        args = expr.args
-        sign = ""
-        if args and args[0] is sp.S.NegativeOne:
-            sign, args = "-", args[1:]
-        if not args:
+        named = signed_names(expr)
+        if named is None:
             return None
-        for a in args:
-            if type(a) is not sp.Symbol:
-                return None
+        sign, args = named
         if self._macro_products and expr in self.math_macros:
             return None
         # (each name's text as print_part gives it: a name's text depends
