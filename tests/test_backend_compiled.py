@@ -284,10 +284,13 @@ def test_module_command_line_backend_option(tmp_path):
     assert not suffixes & {".so", ".dll", ".c", ".o"}  # nothing beside the script
 
 
-@pytest.mark.slow
+@pytest.mark.full
 def test_numerics_suite_with_lambdify_forced(tmp_path):
     """The tutorial and numerics suites with ``AL2PY_BACKEND=lambdify``; the
-    normal run of the suite uses the default (compiled) backend."""
+    normal run of the suite uses the default (compiled) backend.  In the
+    full tier (``make test-full``): ``make test`` compares the lambdify
+    backend with the compiled ones case by case
+    (:func:`test_ode_function_integrates_to_run_results` and others)."""
     cache = tmp_path / "cache"
     env = {**os.environ, "AL2PY_BACKEND": "lambdify", "AL2PY_CACHE_DIR": str(cache)}
     tests = [

@@ -395,7 +395,9 @@ def _state(pid: int) -> str:
     """The state letter of process ``pid`` ('Z' for one that has ended and
     is not yet reaped; '' when it is gone)."""
     try:
-        return (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
+        return (
+            (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
+        )
     except (OSError, IndexError):
         return ""
 
