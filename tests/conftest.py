@@ -85,6 +85,18 @@ def full_tier() -> bool:
     return _FULL
 
 
+def tier_cases(n: int) -> int:
+    """``n`` random cases in the full tier (``make test-full``), a third of
+    them in ``make test``."""
+    return n if _FULL else n // 3
+
+
+def tier_step(step: int) -> int:
+    """Every case (a step of 1) in the full tier, every ``step``-th in
+    ``make test``."""
+    return 1 if _FULL else step
+
+
 def load_module(code: str, directory: Path, name: str):
     """Write ``code`` as ``name.py`` in ``directory`` and import it freshly."""
     path = directory / f"{name}.py"

@@ -378,15 +378,23 @@ def test_without_fork_the_script_is_converted_here(tmp_path, monkeypatch):
     assert code == codegen_c._convert(text, "tutor6.al")
 
 
+def _stat(entry: Path) -> list[str]:
+    """The fields of ``/proc/PID/stat`` after the command's name (the
+    state first, the process group third); [] when the process is gone."""
+    try:
+        return (entry / "stat").read_text().rsplit(")", 1)[1].split()
+    except (OSError, IndexError):
+        return []
+
+
 def _group(pgid: int) -> list[int]:
     """The processes of process group ``pgid`` (Linux's /proc)."""
     found = []
     for entry in Path("/proc").iterdir():
-        try:
-            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
-        except (OSError, IndexError):
+        if not entry.name.isdigit():
             continue
-        if entry.name.isdigit() and int(fields[2]) == pgid:
+        fields = _stat(entry)
+        if fields and int(fields[2]) == pgid:
             found.append(int(entry.name))
     return found
 
@@ -394,12 +402,7 @@ def _group(pgid: int) -> list[int]:
 def _state(pid: int) -> str:
     """The state letter of process ``pid`` ('Z' for one that has ended and
     is not yet reaped; '' when it is gone)."""
-    try:
-        return (
-            (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
-        )
-    except (OSError, IndexError):
-        return ""
+    return (_stat(Path("/proc") / str(pid)) or [""])[0]
 
 
 def _interrupted_at(tmp_path: Path, when: str) -> tuple[int, int, str, str] | None:

@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.intermediates.autoz import Intermediates
-from conftest import full_tier
+from conftest import tier_step
 from random_exprs import written_tree
 from sympy.physics.mechanics import dynamicsymbols
 
@@ -155,7 +155,7 @@ def test_the_shortcut_forms_pds_derivative_and_walk():
     """Every definition in the full tier (``make test-full``), every fourth
     in ``make test``."""
     book, _ = _build(11)
-    formed, sums = _checked(book, 1 if full_tier() else 4)
+    formed, sums = _checked(book, tier_step(4))
     assert formed > 300 and sums > 150
 
 

@@ -18,7 +18,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.codegen.c import _Printer as CProgramPrinter
 from al2py_runtime.jobs import backends
-from conftest import full_tier
+from conftest import tier_cases
 from random_exprs import ExpressionMaker
 
 NAMES = list(sp.symbols("Q1 Q10 Q2 U4 z1 z12 z2 LAM ibxx IBxx", real=True))
@@ -30,12 +30,6 @@ MAKER = ExpressionMaker(
     exponents=[2, 3, -1, -2, sp.Rational(1, 2), sp.Rational(-1, 2), 5],
     leaf_chance=0.3,
 )
-
-
-def _cases(n: int) -> int:
-    """``n`` random cases in the full tier (``make test-full``), a third of
-    them in ``make test``."""
-    return n if full_tier() else n // 3
 
 
 def _statement(rng: random.Random) -> sp.Expr:
@@ -60,7 +54,7 @@ def test_watched_c_statements_print_as_the_backends(seed):
     ours = CProgramPrinter()
     assert ours.watches and ours.plain_calls
     count = 0
-    while count < _cases(900):
+    while count < tier_cases(900):
         expr = _statement(rng)
         if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
             continue
@@ -118,7 +112,7 @@ def test_free_symbols_with_a_memo_are_sympys():
         leaf_chance=0.3,
     )
     memo: dict = {}
-    for _ in range(_cases(900)):
+    for _ in range(tier_cases(900)):
         expr = maker.make(rng, 3)
         if rng.random() < 0.3:
             expr = sp.Integral(expr, X) + Y

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates.autoz import Intermediates
 from al2py_runtime.model import kinematics as kin
-from conftest import full_tier
+from conftest import tier_step
 from random_exprs import plain_factor, written_tree
 from sympy.core.mul import _keep_coeff
 from sympy.physics.mechanics import dynamicsymbols
@@ -137,9 +137,8 @@ def _undone(e: sp.Expr) -> sp.Expr:
 
 
 def _seeds(n: int) -> range:
-    """``n`` seeds in the full tier (``make test-full``), every third of
-    them in ``make test``."""
-    return range(0, n, 1 if full_tier() else 3)
+    """``n`` seeds in the full tier, every third of them in ``make test``."""
+    return range(0, n, tier_step(3))
 
 
 SEEDS = _seeds(600)

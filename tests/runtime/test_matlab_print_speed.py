@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.codegen.octave import _Printer as OctavePrinter
 from al2py_runtime.codegen.printers import _head, _key, _ordered_terms, key_order
-from conftest import full_tier
+from conftest import tier_cases
 from random_exprs import ExpressionMaker
 from sympy.printing.octave import OctaveCodePrinter
 
@@ -44,12 +44,6 @@ OTHERS = [
 ]
 
 
-def _cases(n: int) -> int:
-    """``n`` random cases in the full tier (``make test-full``), a third of
-    them in ``make test``."""
-    return n if full_tier() else n // 3
-
-
 def _items(rng: random.Random) -> list:
     pool = NAMES * 2 + OTHERS
     return [rng.choice(pool) for _ in range(rng.randint(1, 7))]
@@ -65,7 +59,7 @@ def test_heads_are_sympys():
 
 def test_key_order_is_sympys():
     rng = random.Random(35)
-    for _ in range(_cases(3000)):
+    for _ in range(tier_cases(3000)):
         items = _items(rng)
         want = sorted(items, key=sp.default_sort_key)
         got = key_order(items, {})
@@ -83,7 +77,7 @@ def test_key_order_with_keys_known():
     # one memo for all: a key found before is read, not formed again
     rng = random.Random(36)
     keys: dict = {}
-    for _ in range(_cases(1000)):
+    for _ in range(tier_cases(1000)):
         items = _items(rng)
         want = sorted(items, key=sp.default_sort_key)
         assert key_order(items, keys) == want, items
@@ -92,7 +86,7 @@ def test_key_order_with_keys_known():
 def test_sums_are_ordered_as_sympys():
     rng = random.Random(37)
     factors = NAMES + OTHERS[:12]
-    for _ in range(_cases(2000)):
+    for _ in range(tier_cases(2000)):
         terms = []
         for _ in range(rng.randint(2, 8)):
             powers = [
@@ -122,7 +116,7 @@ def test_random_statements_print_as_sympys():
     rng = random.Random(38)
     ours = OctavePrinter({"strict": True})
     count = 0
-    while count < _cases(600):
+    while count < tier_cases(600):
         expr = MAKER.make(rng, 4)
         if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or expr.has(sp.Function("f")):
             continue
@@ -155,7 +149,7 @@ def test_watched_statements_print_as_sympys():
     rng = random.Random(39)
     ours = OctavePrinter({"strict": True})
     count = 0
-    while count < _cases(800):
+    while count < tier_cases(800):
         expr = _with_special(rng)
         if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or expr.has(sp.Function("f")):
             continue
@@ -201,7 +195,7 @@ def test_sums_of_names_print_as_sympys():
     for all statements, as sympy prints them."""
     rng = random.Random(40)
     ours = OctavePrinter({"strict": True})
-    for k in range(_cases(3000)):
+    for k in range(tier_cases(3000)):
         expr = _sums_of_names(rng)
         want = OctaveCodePrinter({"strict": True}).doprint(expr, assign_to="r")
         assert ours.doprint(expr, assign_to="r") == want, expr
@@ -235,7 +229,7 @@ def test_function_statements_print_as_sympys():
         lambda e: sp.tan(sp.pi * e),
     ]
     ours = OctavePrinter({"strict": True})
-    for k in range(_cases(600)):
+    for k in range(tier_cases(600)):
         expr = rng.choice(calls)(MAKER.make(rng, 2))
         if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not isinstance(expr, sp.Function):
             continue
@@ -250,7 +244,7 @@ def test_keys_of_sums_are_sympys():
     keys: dict = {}
     sums = ({}, {})
     count = 0
-    while count < _cases(800):
+    while count < tier_cases(800):
         expr = MAKER.make(rng, 3)
         if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not expr.is_Add:
             continue

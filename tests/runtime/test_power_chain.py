@@ -23,7 +23,7 @@ import pytest
 import sympy as sp
 from al2py_runtime.intermediates import autoz
 from al2py_runtime.intermediates.autoz import Intermediates
-from conftest import full_tier
+from conftest import tier_step
 from random_exprs import written_tree
 from sympy.physics.mechanics import dynamicsymbols
 
@@ -160,7 +160,7 @@ def _checked(book: Intermediates, step: int = 1) -> int:
 def test_the_shortcut_forms_pds_derivative_and_walk():
     """Every definition in the full tier (``make test-full``), every fourth
     in ``make test``."""
-    assert _checked(_build(11)[0], 1 if full_tier() else 4) > 60
+    assert _checked(_build(11)[0], tier_step(4)) > 60
 
 
 def test_the_check_finds_a_wrong_size(monkeypatch):

@@ -9,7 +9,7 @@ import random
 import pytest
 import sympy as sp
 from al2py_runtime.model.speeds import SpeedPartials
-from conftest import full_tier
+from conftest import tier_cases
 from sympy.physics.vector import dynamicsymbols
 
 U = list(dynamicsymbols("u1:5"))
@@ -67,8 +67,7 @@ def _same(a: sp.Expr, b: sp.Expr) -> bool:
 @pytest.mark.parametrize("nonlinear", [False, True])
 def test_the_partials_are_sympys_diff(nonlinear):
     rng = random.Random(20261128 + nonlinear)
-    # 150 random sums in the full tier (make test-full), 50 in make test
-    exprs = [_expression(rng, nonlinear) for _ in range(150 if full_tier() else 50)]
+    exprs = [_expression(rng, nonlinear) for _ in range(tier_cases(150))]
     exprs += [sp.S.Zero, sp.S(3), U[0], 2 * U[1], L * U[0], U[0] * U[1], -U[2]]
     partials = SpeedPartials(U)
     for e in exprs:
