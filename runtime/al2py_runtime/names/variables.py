@@ -25,19 +25,53 @@ from functools import reduce
 from typing import Any
 
 import sympy as sp
-from sympy.core.function import UndefinedFunction
+from sympy.core.function import AppliedUndef, UndefinedFunction
+from sympy.core.parameters import global_parameters
 from sympy.physics.vector import dynamicsymbols as _sympy_dynamicsymbols
 
-__all__ = ["TimeFunction", "dynamicsymbols", "time_function"]
+__all__ = ["TimeFunction", "TimeValue", "dynamicsymbols", "time_function"]
+
+#: time, as sympy's ``dynamicsymbols`` names it
+_T = _sympy_dynamicsymbols._t
+
+
+class TimeValue(AppliedUndef):
+    """A function of time's value (``Q1(t)``): sympy's ``AppliedUndef``,
+    whose rate ``diff(t)`` is formed once.
+
+    sympy forms ``Derivative(Q1(t), t)`` anew on every ``diff(t)`` (a
+    script's ``q1'`` and the chain rule of every time derivative of a sine
+    of it), a third of a millisecond each: the first one's answer is kept
+    and given again (it is the same object), while sympy evaluates
+    (``evaluate(False)`` forms it as sympy does).
+
+    >>> q = time_function("Q1", real=True)
+    >>> t = _sympy_dynamicsymbols._t
+    >>> q.diff(t) is q.diff(t), sp.diff(q, t) == sp.Derivative(q, t)
+    (True, True)
+    """
+
+    def diff(self, *symbols: Any, **assumptions: Any) -> Any:
+        if (
+            len(symbols) == 1
+            and symbols[0] is _T
+            and not assumptions
+            and global_parameters.evaluate
+        ):
+            found = self.__dict__.get("_rate")
+            if found is None:
+                found = self.__dict__["_rate"] = super().diff(_T)
+            return found
+        return super().diff(*symbols, **assumptions)
 
 
 class TimeFunction(UndefinedFunction):
     """sympy's ``UndefinedFunction`` whose hash is found once, at creation
     (it depends only on the name, the number of arguments and the
-    assumptions, which do not change)."""
+    assumptions, which do not change); its values are :class:`TimeValue`."""
 
     def __new__(mcl, name: str, **assumptions: Any) -> Any:
-        cls = super().__new__(mcl, name, **assumptions)
+        cls = super().__new__(mcl, name, bases=(TimeValue,), **assumptions)
         cls._al2py_hash = UndefinedFunction.__hash__(cls)
         return cls
 
