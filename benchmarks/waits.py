@@ -7,7 +7,11 @@
 The cheapest thing any sympy model does is ``import sympy.physics.mechanics``;
 every figure here is a ratio to that floor, measured in the same run, the
 floor taking its turn before each measurement (the machine may be shared:
-only ratios measured side by side mean anything).  Each measurement is a
+only ratios measured side by side mean anything).  Printed too, as
+"paired": the median over turns of each turn's ratio to the floor's turn
+just before it (and, for the transcript and ``al2py code``, of that ratio
+over the import's of the same round), which a change of the machine's
+speed between turns a minute apart does not sway.  Each measurement is a
 fresh process; printed are the median wall time and the median CPU time
 (user + system, less sensitive to other processes) and their ratios to the
 floor's.  Measured:
@@ -80,13 +84,23 @@ def timed(cmd: list[str], cwd: Path, env: dict | None = None) -> tuple[float, fl
 
 
 class Series:
-    """Turns of one measurement, each after a turn of the floor."""
+    """Turns of one measurement, each after a turn of the floor.
+
+    Besides each measurement's median, a turn is kept with the floor's turn
+    just before it (:meth:`paired`): this machine's speed changes by up to
+    twice for tens of seconds at a time, which two turns seconds apart
+    share, and turns a minute apart often do not."""
 
     def __init__(self) -> None:
         self.rows: dict[str, list[tuple[float, float]]] = {}
+        #: each measurement's turns as (its wall time, the floor's just before)
+        self.pairs: dict[str, list[tuple[float, float]]] = {}
 
     def add(self, name: str, wall: float, cpu: float) -> None:
         self.rows.setdefault(name, []).append((wall, cpu))
+        floor = self.rows.get("floor")
+        if name != "floor" and floor:
+            self.pairs.setdefault(name, []).append((wall, floor[-1][0]))
 
     def median(self, name: str) -> tuple[float, float]:
         turns = self.rows[name]
@@ -94,6 +108,21 @@ class Series:
             statistics.median(w for w, _ in turns),
             statistics.median(c for _, c in turns),
         )
+
+    def paired(self, name: str, to: str | None = None) -> float | None:
+        """The median over turns of ``name``'s wall time over the floor's
+        just before it; with ``to``, of that over the same for ``to``'s
+        turn of the same round (None: no such turns)."""
+        ours = self.pairs.get(name, [])
+        if to is None:
+            ratios = [w / f for w, f in ours]
+        else:
+            theirs = self.pairs.get(to, [])
+            ratios = [
+                (w / f) / (tw / tf)
+                for (w, f), (tw, tf) in zip(ours, theirs, strict=False)
+            ]
+        return statistics.median(ratios) if ratios else None
 
 
 def cache_bytecode(module: Path) -> None:
@@ -222,6 +251,11 @@ def main(argv: list[str] | None = None) -> int:
     fw, fc = series.median("floor")
     iw, ic = series.median("Whipple import")
     print(f"\nfloor: {FLOOR}: {fw:.2f} s wall, {fc:.2f} s CPU (median)\n")
+    print(
+        "(paired: the median over turns of each turn's ratio to the floor's"
+        " turn just before it,\n and to the import, of the two such ratios"
+        " in one round)\n"
+    )
     print(f"{'':44} {'wall':>7} {'x floor':>8} {'CPU':>7} {'x floor':>8}  target")
     targets = {
         "Whipple import": "<= 3x floor",
@@ -238,11 +272,32 @@ def main(argv: list[str] | None = None) -> int:
         elif name in targets:
             line += f"  ({targets[name]})"
         print(line)
+    print("\npaired (wall):")
+    first_run = "first run() (import not counted)"
+    for name in targets:
+        if name == first_run:
+            # measured in the process that imported: its own import's turn
+            runs = series.rows[name]
+            imports = series.rows["  its import, same process"]
+            ratio = statistics.median(
+                r / i for (r, _), (i, _) in zip(runs, imports, strict=True)
+            )
+            print(f"  {name:42} {ratio:.2f}x its import ({targets[name]})")
+            continue
+        to_floor = series.paired(name)
+        line = f"  {name:42} {to_floor:.2f}x floor"
+        if name != "Whipple import":
+            line += f", {series.paired(name, 'Whipple import'):.2f}x import"
+        print(f"{line} ({targets[name]})")
     if scripts:
         print(f"\ncorpus scripts' imports ({len(scripts)}; target <= 12x floor):")
         for name in sorted(scripts, key=lambda n: -series.median(n)[1]):
             w, c = series.median(name)
-            print(f"  {name[:60]:60} {w:7.2f} {w / fw:6.1f}x {c:7.2f} {c / fc:6.1f}x")
+            paired = series.paired(name)
+            print(
+                f"  {name[:60]:60} {w:7.2f} {w / fw:6.1f}x {c:7.2f} {c / fc:6.1f}x"
+                f"  paired {paired:5.1f}x"
+            )
     return 0
 
 
