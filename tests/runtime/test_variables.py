@@ -68,3 +68,44 @@ def test_the_books_derivative_by_an_equal_function_of_time():
     by_theirs = book.expand(book.derivative(e, theirs))
     assert sp.simplify(by_theirs - book.expand(e).diff(q)) == 0
     assert by_theirs != 0
+
+
+def test_the_kept_rate_is_sympys():
+    """``Q1(t).diff(t)`` is formed once (``TimeValue``): the kept answer is
+    what sympy forms, in every expression whose time derivative uses it,
+    and any other call of ``diff`` (or one under ``evaluate(False)``) is
+    sympy's own."""
+    q, u = time_function("Q7", real=True), time_function("U7", real=True)
+    theirs_q, theirs_u = dynamicsymbols("Q7 U7", real=True)
+    kept = q.diff(T)
+    assert q.diff(T) is kept and sp.diff(q, T) is kept
+    assert kept == theirs_q.diff(T) == sp.Derivative(theirs_q, T)
+    assert type(kept) is sp.Derivative and kept.args == (q, sp.Tuple(T, 1))
+    # time derivatives of expressions of both, at random points: the same
+    rng = __import__("random").Random(7)
+    x = sp.Symbol("x")
+    atoms = [q, u, x, sp.sin(q), sp.cos(u) * q, q * u, u**2, sp.exp(q)]
+    subs_of = {theirs_q: q, theirs_u: u}
+    for _ in range(60):
+        e = sp.Integer(rng.randint(1, 4))
+        for _ in range(rng.randint(1, 4)):
+            term = rng.choice(atoms) * rng.choice(atoms)
+            e = e + term if rng.random() < 0.5 else e * term
+        mine = e.diff(T)
+        sympys = e.xreplace({q: theirs_q, u: theirs_u}).diff(T).xreplace(subs_of)
+        assert mine == sympys  # the same expression, node for node
+        # and the chain rule's value: along q = sin(t) + 1/2, u = cos(2 t)
+        q_t, u_t = sp.sin(T) + sp.Rational(1, 2), sp.cos(2 * T)
+        along = {q.diff(T): q_t.diff(T), u.diff(T): u_t.diff(T), q: q_t, u: u_t}
+        at = {T: rng.uniform(-2, 2), x: rng.uniform(-2, 2)}
+        expected = complex(e.xreplace({q: q_t, u: u_t}).diff(T).evalf(subs=at))
+        got = complex(mine.xreplace(along).evalf(subs=at))
+        assert abs(got - expected) <= 1e-9 * max(1.0, abs(expected))
+    # other calls: sympy's
+    assert q.diff(T, 2) == theirs_q.diff(T, 2) and q.diff(q) == 1
+    assert q.diff(x) == 0 and q.diff(T, evaluate=False) == sp.Derivative(q, T)
+    with sp.evaluate(False):
+        unevaluated = q.diff(T)
+    with sp.evaluate(False):
+        assert unevaluated == theirs_q.diff(T).xreplace(subs_of)
+    assert unevaluated is not kept
