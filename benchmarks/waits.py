@@ -251,11 +251,6 @@ def main(argv: list[str] | None = None) -> int:
     fw, fc = series.median("floor")
     iw, ic = series.median("Whipple import")
     print(f"\nfloor: {FLOOR}: {fw:.2f} s wall, {fc:.2f} s CPU (median)\n")
-    print(
-        "(paired: the median over turns of each turn's ratio to the floor's"
-        " turn just before it,\n and to the import, of the two such ratios"
-        " in one round)\n"
-    )
     print(f"{'':44} {'wall':>7} {'x floor':>8} {'CPU':>7} {'x floor':>8}  target")
     targets = {
         "Whipple import": "<= 3x floor",
@@ -272,7 +267,11 @@ def main(argv: list[str] | None = None) -> int:
         elif name in targets:
             line += f"  ({targets[name]})"
         print(line)
-    print("\npaired (wall):")
+    print(
+        "\npaired (wall): the median over turns of each turn's ratio to the"
+        " floor's turn just before it,\nand to the import, of the two such"
+        " ratios in one round:"
+    )
     first_run = "first run() (import not counted)"
     for name in targets:
         if name == first_run:

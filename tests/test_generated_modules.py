@@ -29,11 +29,6 @@ IDS = [
     f"{'tutorial' if p.parent == SHARED else p.parent.name}/{p.name}" for p in SCRIPTS
 ]
 
-# Known al2py bugs (reported; tests kept out of this suite until fixed):
-# these modules fail ruff with I001 (``from al2py_runtime import t, Workspace``
-# is unsorted) and E741/F811 (Autolev names ``O``, ``I`` used as-is, ``I``
-# also shadowing ``from sympy import I``).
-RUFF_IDS = IDS
 # Scripts whose transcript ``python mod.py`` prints (no CODE jobs to run).
 GOLDEN_SCRIPTS = sorted(GOLDEN.glob("*.al"))
 
@@ -90,7 +85,7 @@ def test_black_check_command(path, tmp_path):
     assert run.returncode == 0, run.stderr
 
 
-@pytest.mark.parametrize("path", SCRIPTS, ids=RUFF_IDS)
+@pytest.mark.parametrize("path", SCRIPTS, ids=IDS)
 def test_ruff_finds_nothing(path, tmp_path):
     code = _converted_or_skip_unsupported(path).code
     target = tmp_path / f"{path.stem}.py"
