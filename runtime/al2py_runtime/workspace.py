@@ -35,7 +35,13 @@ from sympy.physics.vector import Dyadic, Vector
 from . import algebra, collector, matrices, progress, walks
 from .intermediates.autoz import substitute
 from .jobs.numerics import Numerics
-from .model.kinematics import doit_derivatives, factor_terms, is_small, one_or_tuple
+from .model.kinematics import (
+    doit_derivatives,
+    factor_terms,
+    is_small,
+    one_or_tuple,
+    scalar_dt,
+)
 from .model.model import Model
 from .names.keys import Key, parse_key
 from .names.settings import Response, Settings
@@ -990,8 +996,8 @@ class Workspace(Mapping):
             return self.model.vector_dt(self.resolve(self.val(y), keep), frame)
         y = self.resolve(self.val(y), keep)
         if isinstance(y, sp.MatrixBase):
-            return y.applyfunc(lambda e: sp.diff(e, t))
-        return sp.diff(y, t)
+            return y.applyfunc(scalar_dt)
+        return scalar_dt(y)
 
     @statement
     def evaluate(self, y: Any, subs: Mapping[Any, Any] | None = None) -> Any:

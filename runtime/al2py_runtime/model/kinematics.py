@@ -47,6 +47,7 @@ __all__ = [
     "angvel_from_dcm",
     "euler_parameter_rates",
     "euler_parameter_angvel",
+    "scalar_dt",
 ]
 
 t = dynamicsymbols._t
@@ -152,6 +153,60 @@ def _zero_times_is_zero(x: Any) -> bool:
     if not walks.atoms(x, *_INFINITIES):
         return True
     return sp.S.Zero * x == sp.S.Zero
+
+
+def scalar_dt(e: Any) -> Any:
+    """``sp.diff(e, t)``, the same expression, each distinct sum and
+    product differentiated once, as sympy's rules do: a sum's derivative is
+    the sum of its terms', a product's the sum over its factors of the
+    product with that factor's derivative in its place (the factors in
+    order, as sympy takes them: an intermediate named on the way gets the
+    same number).  Anything else is sympy's own ``diff``.
+
+    sympy builds a ``Derivative`` for every part, walks each part's free
+    symbols and its derivative's ``Derivative`` objects, asks each
+    derivative whether it is zero, and multiplies the factors' zero
+    derivatives by the other factors, asking each of those whether it is
+    infinite (``0 * oo`` is ``nan``).  Here a zero term is left out, which
+    is what sympy's product comes to when no factor is known infinite:
+    only an infinity in ``e`` makes one so (the script's names are never
+    declared infinite, and an intermediate's facts come from
+    ``commutative`` and ``real``), and then ``e`` is sympy's.
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> q, u = dynamicsymbols("q u")
+    >>> e = sp.sqrt(1 - sp.sin(q) ** 2) * u * (q + 2 * u**2) + q * t
+    >>> scalar_dt(e) == sp.diff(e, t)
+    True
+    >>> scalar_dt(sp.zoo * q * u + u) == sp.diff(sp.zoo * q * u + u, t)
+    True
+    """
+    if not isinstance(e, sp.Expr) or walks.atoms(e, *_INFINITIES):
+        return sp.diff(e, t)
+    memo: dict = {}
+    zero = sp.S.Zero
+
+    def walk(x: Any) -> Any:
+        if x.is_Atom:
+            return sp.S.One if x == t else zero
+        if not (x.is_Add or x.is_Mul):
+            return x.diff(t)
+        found = memo.get(x)
+        if found is None:
+            args = x.args
+            if x.is_Add:
+                found = sp.Add(*[walk(a) for a in args])
+            else:
+                terms = []
+                for i, a in enumerate(args):
+                    d = walk(a)
+                    if d is not zero:
+                        terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
+                found = sp.Add(*terms)
+            memo[x] = found
+        return found
+
+    return walk(e)
 
 
 def _finite_intermediate(x: Any) -> bool:
