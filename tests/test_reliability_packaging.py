@@ -40,12 +40,16 @@ def _setup_requirements() -> tuple[str, list[str], dict[str, list[str]]]:
 def test_the_version_is_written_once():
     """runtime/al2py_runtime/version.py is the one place: both projects'
     metadata, the pin on al2py-runtime and ``al2py.__version__`` follow it."""
+    from importlib.metadata import version as installed
+
     import al2py_runtime
 
     import al2py
 
     version, deps, extras = _setup_requirements()
     assert version == al2py_runtime.__version__ == al2py.__version__
+    # what pip installed says the same (al2py reads the runtime's file)
+    assert installed("al2py") == installed("al2py-runtime") == version
     assert f"al2py-runtime=={version}" in deps
     assert all(f"=={version}" in d for d in extras["plot"] + extras["fast"])
     for project in (ROOT, ROOT / "runtime"):
