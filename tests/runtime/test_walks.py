@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import random
 
+import pytest
 import sympy as sp
 from al2py_runtime import walks
 from al2py_runtime.intermediates.autoz import (
@@ -222,6 +223,9 @@ def test_linear_splits_by_the_books_walk_are_sympys():
 def test_cross_products_and_inertia_matrices_are_sympys():
     """``kinematics.cross`` and ``kinematics.dyadic_matrix`` give sympy's
     own expressions (``a ^ b``, ``d.to_matrix(F)``), entry for entry."""
+    import operator
+
+    from al2py_runtime.model import kinematics
     from al2py_runtime.model.kinematics import cross, dyadic_matrix
     from sympy.physics.vector import ReferenceFrame, Vector, outer
 
@@ -245,6 +249,25 @@ def test_cross_products_and_inertia_matrices_are_sympys():
         assert len(mine.args) == len(sympys.args)
         for (m1, f1), (m2, f2) in zip(mine.args, sympys.args, strict=True):
             assert f1 == f2 and list(m1) == list(m2)
+            assert [sp.srepr(x) for x in m1] == [sp.srepr(x) for x in m2]
+    # With an infinity among the measure numbers (sympy's own cross then
+    # makes a vector of one nan): the products are plain ``a * b``'s, so
+    # a zero times an infinity is nan, as sympy's product is.
+    finite = list(pool)
+    pool += [C[0] + sp.oo, sp.zoo * Q[0]]
+    found_nan = False
+    for _ in range(40):
+        v, w = vector(), vector()
+        mine = cross(v, w)
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(kinematics, "_times", operator.mul)
+            plain = cross(v, w)
+        assert [(list(m), f) for m, f in mine.args] == [
+            (list(m), f) for m, f in plain.args
+        ]
+        found_nan = found_nan or any(m.has(sp.nan) for m, _f in mine.args)
+    assert found_nan  # an infinity met a zero
+    pool[:] = finite
     for _ in range(30):
         f = rng.choice(frames)
         d = sum(

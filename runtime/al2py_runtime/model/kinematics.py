@@ -51,6 +51,7 @@ __all__ = [
 ]
 
 t = dynamicsymbols._t
+_ZERO = sp.S.Zero
 
 #: Size above which ``tidy`` does not try ``trigsimp`` (it gets slow).
 TRIGSIMP_LIMIT = 300
@@ -207,6 +208,23 @@ def scalar_dt(e: Any) -> Any:
         return found
 
     return walk(e)
+
+
+def _times(a: Any, b: Any) -> Any:
+    """``a * b``, the same product: a zero times an entry that
+    :func:`_zero_times_is_zero` clears is zero, without sympy's query of
+    the entry's assumptions (``0 * oo`` is ``nan``), which walks the whole
+    of a large entry the first time it is asked.
+
+    >>> q = sp.Symbol("q")
+    >>> _times(sp.S.Zero, sp.sin(q) * q), _times(q + sp.oo, sp.S.Zero)
+    (0, nan)
+    """
+    if a is _ZERO:
+        return a if _zero_times_is_zero(b) else a * b
+    if b is _ZERO:
+        return b if _zero_times_is_zero(a) else a * b
+    return a * b
 
 
 def _finite_intermediate(x: Any) -> bool:
@@ -410,15 +428,15 @@ def cross(a: Vector, b: Vector) -> Vector:
         for k in range(3):
             total = sp.S.Zero
             for d, m1 in parts:
-                total += sp.Add(*[d[k, j] * m1[j] for j in range(3)])
+                total += sp.Add(*[_times(d[k, j], m1[j]) for j in range(3)])
             w.append(total)
         out.append(
             (
                 sp.Matrix(
                     [
-                        w[1] * m[2] - w[2] * m[1],
-                        w[2] * m[0] - w[0] * m[2],
-                        w[0] * m[1] - w[1] * m[0],
+                        _times(w[1], m[2]) - _times(w[2], m[1]),
+                        _times(w[2], m[0]) - _times(w[0], m[2]),
+                        _times(w[0], m[1]) - _times(w[1], m[0]),
                     ]
                 ),
                 f,
