@@ -72,6 +72,23 @@ def test_the_command_line_converts_without_sympy(tmp_path, command):
         assert "def " in (tmp_path / "tutor6.py").read_text()
 
 
+def test_code_export_writes_its_programs_without_numpy(tmp_path):
+    """``al2py code`` derives and prints (sympy), but never evaluates: the
+    0.2 s numpy takes to import is not on its way (issue 35), neither in
+    the process that derives nor in the copies that write the programs
+    (the same imports in one process, ``-j 1``)."""
+    (tmp_path / "tutor6.al").write_text(TUTOR6.read_text())
+    program = (
+        "import contextlib, io\n"
+        "from al2py.codegen_c import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        "    assert main(['tutor6.al', '-j', '1']) == 0\n"
+    )
+    loaded = _loaded(program, tmp_path)
+    assert "sympy" in loaded and "numpy" not in loaded, loaded
+    assert (tmp_path / "tutor6.c").read_text().count("main") >= 1
+
+
 def test_the_runtime_exports_its_names_on_first_use(tmp_path):
     """``import al2py_runtime`` alone loads no sympy; its exported names are
     all there (``dir``, ``__all__``) and import the workspace when used."""

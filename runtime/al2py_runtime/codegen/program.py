@@ -28,7 +28,6 @@ from ..jobs.run import (
     Column,
     Deferred,
     Job,
-    Table,
     dynamics_equations,
     initial_state,
     input_values,
@@ -38,7 +37,7 @@ from ..jobs.run import (
     normalize_name,
     output_factors,
 )
-from ..jobs.tables import format_table
+from ..jobs.tables import table_heading
 from ..version import __version__
 from ..walks import allow_deep_recursion
 
@@ -1079,9 +1078,8 @@ def output_tables(
     for number, (cols, fac, w) in enumerate(
         zip(columns, factors, written, strict=True), start=1
     ):
-        empty = Table(number, cols, _no_rows(len(cols)), job.line)
-        header = format_table(empty, job.digits, f"{job.stem}.{number}", us.time_unit)
-        width = _width(cols, job.digits, us.time_unit)
+        name = f"{job.stem}.{number}"
+        header, width = table_heading(cols, job.digits, name, us.time_unit)
         tables.append(OutputTable(number, header, len(cols), width, fac, w))
     return tables
 
@@ -1153,25 +1151,6 @@ def assignments(
         for target, e in zip(targets, reduced, strict=True):
             out.append(Assign(target, e))
     return out, defined
-
-
-def _no_rows(n: int) -> Any:
-    import numpy as np
-
-    return np.zeros((0, n))
-
-
-def _width(cols: list[Column], digits: int, time_unit: str | None) -> int:
-    """The column width :func:`format_table` uses."""
-    labels, units = [], []
-    for col in cols:
-        unit = col.unit
-        if unit is None and normalize_name(col.label) == "T" and time_unit:
-            unit = time_unit
-        labels.append(col.label)
-        units.append(f"({unit})" if unit else "(UNITS)")
-    width = max(digits + 8, 12)
-    return max([width] + [len(s) + 2 for s in labels + units])
 
 
 def finite(x: float) -> float:

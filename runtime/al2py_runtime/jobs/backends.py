@@ -48,9 +48,8 @@ import threading
 from collections.abc import Callable, Generator, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 from sympy.core.mul import _keep_coeff
 from sympy.printing.c import C99CodePrinter
@@ -59,6 +58,9 @@ from sympy.printing.precedence import PRECEDENCE, PRECEDENCE_FUNCTIONS, preceden
 from .. import progress
 from ..vocabulary import numeric_namespace
 from .kutta import ADVANCE_C, StepError
+
+if TYPE_CHECKING:  # numpy is imported where it is used (issue 35)
+    import numpy as np
 
 __all__ = [
     "BACKENDS",
@@ -126,6 +128,8 @@ class Bound:
     def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
         """Every output (all tables side by side) at each time, the states
         ``ys[:, i]``; ``clock[0]`` is the time being evaluated."""
+        import numpy as np
+
         rows = []
         for i, tt in enumerate(times):
             clock[0] = float(tt)
@@ -484,6 +488,8 @@ def _undummied(
 
 def _solve(n: int, v: list[float], t: float) -> list[float]:
     """``M ud = f`` from ``v = [*M (row-major), *f, ...]``."""
+    import numpy as np
+
     if n == 0:
         return []
     if n == 1:
@@ -502,6 +508,8 @@ class _PyBound(Bound):
     ``late(t, y, ud, p) -> derivatives using ud``."""
 
     def __init__(self, n, ny, mf, late, plan, outs, p) -> None:
+        import numpy as np
+
         p = list(p)
         nf = n * n + n
 
@@ -579,6 +587,7 @@ _LLVM_INLINE = 200
 def _build_llvm(spec: DynamicsSpec) -> Compiled:
     import time
 
+    import numpy as np
     import symengine as se
 
     start = time.perf_counter()
@@ -1607,6 +1616,8 @@ def _run_compiler(cmds: list[list[str]]) -> None:
 
 class _CBound(Bound):
     def __init__(self, lib: Any, ny: int, nout: int, rows: list[int], p) -> None:
+        import numpy as np
+
         self._p = np.ascontiguousarray(p, dtype=float).reshape(-1)
         self._pp = self._p.ctypes.data if self._p.size else None
         self._lib = lib
@@ -1648,6 +1659,8 @@ class _CBound(Bound):
         return self._outs(t, y)
 
     def table(self, times: Sequence[float], ys: np.ndarray, clock: list) -> np.ndarray:
+        import numpy as np
+
         out = np.empty((len(times), max(self._nout, 1)))
         yt = np.ascontiguousarray(ys.T, dtype=float)
         c_out, pp = self._lib.al_out, self._pp
@@ -1678,6 +1691,8 @@ class CStepper:
     ``evals`` counts the evaluations so far."""
 
     def __init__(self, lib, p, t0, y0, step, abserr, relerr) -> None:
+        import numpy as np
+
         self._lib, self._p = lib, p  # the array stays alive for its address
         self._pp = p.ctypes.data if p.size else None
         self.y = np.array(y0, dtype=float)

@@ -24,9 +24,11 @@ step is shorter and lands on ``TFINAL`` (``run()``'s last row is at
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
+if TYPE_CHECKING:  # numpy is imported where it is used (issue 35)
+    pass
+
 
 __all__ = ["ADVANCE_C", "KUTTA_C", "KuttaMerson", "StepError"]
 
@@ -180,6 +182,8 @@ class KuttaMerson:
         abserr: float,
         relerr: float,
     ) -> None:
+        import numpy as np
+
         self.f = f
         self.t = float(t0)
         self.y = np.array(y0, dtype=float)
@@ -200,6 +204,8 @@ class KuttaMerson:
                 self.t = target
 
     def _kutta(self, big: float) -> None:
+        import numpy as np
+
         f, y, abserr, relerr = self.f, self.y, self.abserr, self.relerr
         tend = self.t + big
         if self.hc * big < 0.0:

@@ -19,9 +19,8 @@ import os
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
@@ -42,6 +41,9 @@ from .records import (
 )
 from .tables import Column, Result, Table, fmt_number
 from .units import UnitError
+
+if TYPE_CHECKING:  # numpy is imported where it is used (issue 35)
+    import numpy as np
 
 __all__ = [
     "NumericsError",
@@ -744,6 +746,8 @@ def evaluate_with_inputs(
     ``run()``: a Specified quantity, a variable and a derivative with no
     equation are 0, warned (:class:`MissingValueWarning`); a constant stops
     with its name and line (``zero_missing``: 0, warned)."""
+    import numpy as np
+
     given = {normalize_name(k): v for k, v in overrides.items()}
     settable = {
         k: v for k, v in given.items() if k in job.inputs or k in INTEGRATION_DEFAULTS
@@ -902,6 +906,8 @@ def integration_parameters(vals: _Values) -> dict[str, float]:
 def output_times(t0: float, t1: float, step: float) -> np.ndarray:
     """``t0, t0+step, ...`` up to and including ``t1`` (``t1`` is always the
     last row)."""
+    import numpy as np
+
     span = t1 - t0
     if span == 0:
         return np.array([t0])
@@ -1214,6 +1220,7 @@ def ode_system(
     """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
     where ``run()`` turns the equations into a numeric function, through the
     backend chosen: see :mod:`.backends`)."""
+
     try:
         c = _compiled(job, keep, backend, vals)
     except backends.BackendError as exc:
@@ -1278,6 +1285,8 @@ def ode_function(
 def _run_dynamics(
     job: Job, vals: _Values, keep: set, backend: str | None = None
 ) -> Result:
+    import numpy as np
+
     ip = integration_parameters(vals)
     system = ode_system(job, vals, keep, ip["TINITIAL"], backend)
     c, clock = system.compiled, system.clock
@@ -1366,6 +1375,8 @@ def evaluate_rows(motion: Motion, exprs: Sequence[Any], what: str) -> np.ndarray
     named intermediates they need, each computed once), then one
     ``lambdify``'d numpy function (built once per job and expressions)
     computes all rows at once."""
+    import numpy as np
+
     job = motion.job
     exprs = [sp.sympify(e) for e in exprs]
     key = ("rows", motion.keep, tuple(exprs))
@@ -1422,6 +1433,8 @@ def _integrate(
     """The states at ``times`` (one column each) and the number of
     right-hand-side evaluations: Kutta-Merson with Autolev's step control
     (:mod:`.kutta`), compiled with the equations when the backend is ``c``."""
+    import numpy as np
+
     t0, t1, clock = float(times[0]), float(times[-1]), system.clock
     args = (t0, system.y0, ip["INTEGSTP"], ip["ABSERR"], ip["RELERR"])
     ys = np.empty((len(system.y0), len(times)))
@@ -1609,6 +1622,8 @@ def _static_result(
     rows: list[tuple[list[float], list[float]]],
 ) -> Result:
     """Tables from ``rows`` of (unknown values, parameter values)."""
+    import numpy as np
+
     us = job.unit_system
     solution = {}
     units = {}
@@ -1641,6 +1656,7 @@ def _static_result(
 
 
 def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
+    import numpy as np
     from scipy.optimize import root
 
     c = _static(job, keep, vals)
@@ -1689,6 +1705,8 @@ def _run_nonlinear(job: Job, vals: _Values, keep: set) -> Result:
 
 
 def _run_algebraic(job: Job, vals: _Values, keep: set) -> Result:
+    import numpy as np
+
     c = _static(job, keep, vals)
     sweep_obj = job.sweep[0] if job.sweep is not None else None
     vals.require([obj for obj in c.params if obj != sweep_obj])

@@ -5,15 +5,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from ..names.printing import element_labels
 from .records import NumericsError, normalize_name
 from .results import ResultViews, TableViews
 
-__all__ = ["Column", "Table", "Result", "fmt_number", "format_table"]
+if TYPE_CHECKING:  # numpy is imported where it is used (issue 35)
+    import numpy as np
+
+__all__ = ["Column", "Table", "Result", "fmt_number", "format_table", "table_heading"]
 
 
 # ------------------------------------------------------------------ results
@@ -88,6 +89,8 @@ class Result(ResultViews):
     source: str | None = None
 
     def _encoded(self, key: str) -> np.ndarray:
+        import numpy as np
+
         m, n = self.encoded[key]
         cols = [self[label] for label in element_labels(key, m, n)]
         return np.stack(cols, axis=-1).reshape(len(cols[0]), m, n)
@@ -234,6 +237,8 @@ class Result(ResultViews):
     def abscissa(self, table: Table) -> tuple[np.ndarray, str, list[int]]:
         """``(x, x label, columns to plot)`` for a plot of ``table``: time
         where there is one, else the row number."""
+        import numpy as np
+
         for j, col in enumerate(table.columns):
             if normalize_name(col.label) == "T":
                 others = [k for k in range(len(table.columns)) if k != j]
@@ -266,13 +271,14 @@ def fmt_number(x: float, digits: int) -> str:
     return f"{x:.{digits}g}"
 
 
-def format_table(
-    table: Table, digits: int, name: str, time_unit: str | None = None
-) -> str:
-    """The text of one output file."""
+def table_heading(
+    columns: Sequence[Column], digits: int, name: str, time_unit: str | None = None
+) -> tuple[str, int]:
+    """The heading of an output file (its text before the first row) and
+    the width of each of its columns."""
     width = max(digits + 8, 12)
     labels, units = [], []
-    for col in table.columns:
+    for col in columns:
         unit = col.unit
         if unit is None and normalize_name(col.label) == "T" and time_unit:
             unit = time_unit
@@ -286,8 +292,16 @@ def format_table(
         "%" + "".join(s.center(width) for s in units).rstrip(),
         "",
     ]
-    for row in table.data:
-        lines.append(
-            " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip()
-        )
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n", width
+
+
+def format_table(
+    table: Table, digits: int, name: str, time_unit: str | None = None
+) -> str:
+    """The text of one output file."""
+    heading, width = table_heading(table.columns, digits, name, time_unit)
+    rows = [
+        " " + "".join(f"{v:.{digits - 1}E}".rjust(width) for v in row).rstrip() + "\n"
+        for row in table.data
+    ]
+    return heading + "".join(rows)
