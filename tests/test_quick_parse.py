@@ -97,7 +97,7 @@ def test_the_first_stage_reports_nothing():
     lines = ("x = [1, 2", "y = 3")
     logical = parser.join_continuations(lines)
     stream = parser.CommonTokenStream(
-        parser.AutolevLexer(parser.InputStream(logical.text))
+        parser.Lexer(parser.InputStream(logical.text))
     )
     stream.fill()
     listener = parser._ErrorListener("f.al", lines, stream)

@@ -34,10 +34,10 @@ from antlr4.error.ErrorStrategy import BailErrorStrategy, DefaultErrorStrategy
 from antlr4.tree.Tree import TerminalNode
 
 from . import ir
-from ._antlr.AutolevLexer import AutolevLexer
 from ._antlr.AutolevParser import AutolevParser
 from ._antlr.AutolevVisitor import AutolevVisitor
 from .errors import AutolevError, InternalError, ParseError, ParseErrorList
+from .lexer import Lexer
 from .lines import split_lines
 
 __all__ = ["parse", "parse_partial", "span_text", "join_continuations"]
@@ -157,11 +157,10 @@ def _parse(
     lines: tuple[str, ...], filename: str
 ) -> tuple[ir.Script, list[AutolevError]]:
     logical = join_continuations(lines)
-    lexer = AutolevLexer(InputStream(logical.text))
-    stream = CommonTokenStream(lexer)
+    # (every character is a token, ERRCHAR at worst: the lexer reports
+    # nothing, the parser reports what it cannot use)
+    stream = CommonTokenStream(Lexer(InputStream(logical.text)))
     listener = _ErrorListener(filename, lines, stream)
-    lexer.removeErrorListeners()
-    lexer.addErrorListener(listener)
     stream.fill()
     logical.relocate(stream.tokens)
     parser = AutolevParser(stream)
@@ -532,12 +531,9 @@ class _ErrorListener(ErrorListener):
         end = tokens[k].start if k < len(tokens) and tokens[k].start >= 0 else None
         stop = (end if end is not None else stream.size) - 1
         rest = stream.getText(tok.start, stop)
-        lexer = AutolevLexer(InputStream(rest))
-        lexer.removeErrorListeners()
-        parser = AutolevParser(CommonTokenStream(lexer))
+        parser = AutolevParser(CommonTokenStream(Lexer(InputStream(rest))))
         parser.removeErrorListeners()
         counter = _CountingListener()
-        lexer.addErrorListener(counter)
         parser.addErrorListener(counter)
         try:
             ctx = parser.statement()
