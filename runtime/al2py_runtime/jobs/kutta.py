@@ -24,11 +24,7 @@ step is shorter and lands on ``TFINAL`` (``run()``'s last row is at
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:  # numpy is imported where it is used (issue 35)
-    pass
-
+from typing import Any
 
 __all__ = ["ADVANCE_C", "KUTTA_C", "KuttaMerson", "StepError"]
 

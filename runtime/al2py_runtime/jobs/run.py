@@ -1220,7 +1220,6 @@ def ode_system(
     """The right-hand side ``y' = f(t, y)`` of a dynamics job (the one place
     where ``run()`` turns the equations into a numeric function, through the
     backend chosen: see :mod:`.backends`)."""
-
     try:
         c = _compiled(job, keep, backend, vals)
     except backends.BackendError as exc:

@@ -184,30 +184,33 @@ def scalar_dt(e: Any) -> Any:
     """
     if not isinstance(e, sp.Expr) or walks.atoms(e, *_INFINITIES):
         return sp.diff(e, t)
+    walks.allow_deep_recursion()  # (as deep as sympy's own walk)
     memo: dict = {}
-    zero = sp.S.Zero
 
     def walk(x: Any) -> Any:
         if x.is_Atom:
-            return sp.S.One if x == t else zero
+            return sp.S.One if x == t else _ZERO
         if not (x.is_Add or x.is_Mul):
             return x.diff(t)
         found = memo.get(x)
         if found is None:
             args = x.args
             if x.is_Add:
-                found = sp.Add(*[walk(a) for a in args])
+                found = sp.Add(*[walk(a) for a in args])  # noqa: F821
             else:
                 terms = []
                 for i, a in enumerate(args):
-                    d = walk(a)
-                    if d is not zero:
+                    d = walk(a)  # noqa: F821 - deleted after the walk
+                    if d is not _ZERO:
                         terms.append(sp.Mul(*args[:i], d, *args[i + 1 :]))
                 found = sp.Add(*terms)
             memo[x] = found
         return found
 
-    return walk(e)
+    try:
+        return walk(e)
+    finally:
+        del walk  # it refers to itself: freed now with its memo, not by a collection
 
 
 def _times(a: Any, b: Any) -> Any:
