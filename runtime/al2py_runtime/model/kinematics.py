@@ -14,6 +14,7 @@ Conventions (Kane & Levinson, as Autolev):
 
 from __future__ import annotations
 
+import operator
 from collections import deque
 from collections.abc import Callable, Iterable
 from typing import Any
@@ -214,20 +215,26 @@ def scalar_dt(e: Any) -> Any:
 
 
 def _times(a: Any, b: Any) -> Any:
-    """``a * b``, the same product: a zero times an entry that
-    :func:`_zero_times_is_zero` clears is zero, without sympy's query of
-    the entry's assumptions (``0 * oo`` is ``nan``), which walks the whole
-    of a large entry the first time it is asked.
+    """``a * b`` where neither is known infinite (:func:`_holds_infinity`
+    found none): a zero times anything is zero, without sympy's query of
+    the other factor's assumptions (``0 * oo`` is ``nan``), which walks the
+    whole of a large factor the first time it is asked.
 
     >>> q = sp.Symbol("q")
-    >>> _times(sp.S.Zero, sp.sin(q) * q), _times(q + sp.oo, sp.S.Zero)
-    (0, nan)
+    >>> _times(sp.S.Zero, sp.sin(q) * q), _times(q, sp.S.Zero), _times(2, q)
+    (0, 0, 2*q)
     """
-    if a is _ZERO:
-        return a if _zero_times_is_zero(b) else a * b
-    if b is _ZERO:
-        return b if _zero_times_is_zero(a) else a * b
+    if a is _ZERO or b is _ZERO:
+        return _ZERO
     return a * b
+
+
+def _holds_infinity(matrices: Iterable[Any]) -> bool:
+    """Whether an entry of ``matrices`` holds an infinity: only then can an
+    entry be known infinite (the script's names are never declared
+    infinite, and an intermediate's facts come from ``commutative`` and
+    ``real``)."""
+    return any(walks.atoms(x, *_INFINITIES) for m in matrices for x in m)
 
 
 def _finite_intermediate(x: Any) -> bool:
@@ -376,10 +383,8 @@ def exact_dot(a: Vector, b: Vector) -> Any:
     >>> exact_dot(a, b) == a & b, exact_dot(b, a) == b & a
     (True, True)
     """
-    for v in (a, b):
-        for m, _frame in v.args:
-            if any(walks.atoms(x, *_INFINITIES) for x in m):
-                return a & b
+    if _holds_infinity(m for v in (a, b) for m, _frame in v.args):
+        return a & b
     return dot(a, b)
 
 
@@ -425,21 +430,25 @@ def cross(a: Vector, b: Vector) -> Vector:
     if not b.args:
         return Vector(0)
     out = []
+    a_infinite = _holds_infinity(m1 for m1, _f1 in a.args)
     for m, f in b.args:
         parts = [(f.dcm(f1), m1) for m1, f1 in a.args]  # each frame's once
+        # sympy's own products where a factor may be infinite (0 * oo: nan)
+        infinite = a_infinite or _holds_infinity([m, *(d for d, _m1 in parts)])
+        times = operator.mul if infinite else _times
         w = []
         for k in range(3):
             total = sp.S.Zero
             for d, m1 in parts:
-                total += sp.Add(*[_times(d[k, j], m1[j]) for j in range(3)])
+                total += sp.Add(*[times(d[k, j], m1[j]) for j in range(3)])
             w.append(total)
         out.append(
             (
                 sp.Matrix(
                     [
-                        _times(w[1], m[2]) - _times(w[2], m[1]),
-                        _times(w[2], m[0]) - _times(w[0], m[2]),
-                        _times(w[0], m[1]) - _times(w[1], m[0]),
+                        times(w[1], m[2]) - times(w[2], m[1]),
+                        times(w[2], m[0]) - times(w[0], m[2]),
+                        times(w[0], m[1]) - times(w[1], m[0]),
                     ]
                 ),
                 f,
